@@ -1,0 +1,55 @@
+// arbc: compile, verify, run and document port-arbitrated robot applications.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string_view>
+
+#include "cli/commands.h"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: arbc <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  check  SPEC...                parse and semantic checks\n"
+    "  verify [SPEC | APP.json]...   prove that at most one rule per arbitrated port is selected\n"
+    "  build  SPEC [-o DIR]          verify, then write app.json and the Lua monitors\n"
+    "  run    DIR|SPEC [options]     run the application on the embedded runtime\n"
+    "  docs   SPEC [-o DIR]          Markdown, Graphviz DOT and SVG, Mermaid\n"
+    "\n"
+    "`arbc <command> --help` describes a command's options.\n"
+    "exit codes: 0 fine, 1 refuted or unknown, 2 bad input, 3 run-time failure\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace arbc::cli;
+  if (argc < 2) {
+    std::fputs(kUsage, stderr);
+    return kExitBadInput;
+  }
+  std::string_view command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  }
+  if (command == "--version") {
+    std::printf("arbc %s\n", ARBC_VERSION);
+    return kExitOk;
+  }
+  std::span<char*> args(argv + 1, static_cast<size_t>(argc - 1));
+  try {
+    if (command == "check") return check_command(args);
+    if (command == "verify") return verify_command(args);
+    if (command == "build") return build_command(args);
+    if (command == "run") return run_command(args);
+    if (command == "docs") return docs_command(args);
+  } catch (const std::exception& e) {
+    // A bug, not a user error: say so plainly rather than dying on a signal.
+    std::fprintf(stderr, "arbc: internal error: %s\n", e.what());
+    return kExitRuntimeFailure;
+  }
+  std::fprintf(stderr, "arbc: unknown command '%s'\n\n%s", argv[1], kUsage);
+  return kExitBadInput;
+}

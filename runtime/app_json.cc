@@ -1,0 +1,385 @@
+#include "runtime/app_json.h"
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace arbc::model {
+
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Json location_json(const SourceLocation& loc) {
+  Json j;
+  j["file"] = loc.file;
+  j["line"] = loc.line;
+  j["column"] = loc.column;
+  j["end_line"] = loc.end_line;
+  j["end_column"] = loc.end_column;
+  return j;
+}
+
+const char* op_name(Constraint::Op op) {
+  switch (op) {
+    case Constraint::Op::True: return "true";
+    case Constraint::Op::False: return "false";
+    case Constraint::Op::Event: return "event";
+    case Constraint::Op::Not: return "not";
+    case Constraint::Op::And: return "and";
+    case Constraint::Op::Or: return "or";
+  }
+  return "?";
+}
+
+Json constraint_tree(const Constraint& c) {
+  Json j;
+  j["op"] = op_name(c.op);
+  if (c.op == Constraint::Op::Event) j["event"] = c.event;
+  if (!c.args.empty()) {
+    j["args"] = Json::array();
+    for (const Constraint& a : c.args) j["args"].push_back(constraint_tree(a));
+  }
+  return j;
+}
+
+Json constraint_json(const Constraint& c) {
+  Json j;
+  j["text"] = c.to_string();
+  j["tree"] = constraint_tree(c);
+  return j;
+}
+
+const char* kind_name(ConnectionKind k) {
+  switch (k) {
+    case ConnectionKind::Rule: return "rule";
+    case ConnectionKind::Feed: return "feed";
+    case ConnectionKind::Connect: return "connect";
+  }
+  return "?";
+}
+
+// Reading: each helper throws LoadError with the JSON path of the offending value.
+struct LoadError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const Json& member(const Json& j, const std::string& path, const char* key) {
+  if (!j.is_object()) throw LoadError(path + ": expected an object");
+  auto it = j.find(key);
+  if (it == j.end()) throw LoadError(path + ": missing \"" + key + "\"");
+  return *it;
+}
+
+std::string get_string(const Json& j, const std::string& path, const char* key) {
+  const Json& v = member(j, path, key);
+  if (!v.is_string()) throw LoadError(path + "." + key + ": expected a string");
+  return v.get<std::string>();
+}
+
+std::string opt_string(const Json& j, const std::string& path, const char* key) {
+  if (!j.contains(key)) return {};
+  return get_string(j, path, key);
+}
+
+std::optional<double> opt_number(const Json& j, const std::string& path, const char* key) {
+  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+  if (!j[key].is_number()) throw LoadError(path + "." + key + ": expected a number or null");
+  return j[key].get<double>();
+}
+
+bool opt_bool(const Json& j, const std::string& path, const char* key) {
+  if (!j.contains(key)) return false;
+  if (!j[key].is_boolean()) throw LoadError(path + "." + key + ": expected true or false");
+  return j[key].get<bool>();
+}
+
+const Json& array_member(const Json& j, const std::string& path, const char* key) {
+  const Json& v = member(j, path, key);
+  if (!v.is_array()) throw LoadError(path + "." + key + ": expected an array");
+  return v;
+}
+
+std::vector<std::string> string_list(const Json& j, const std::string& path, const char* key) {
+  std::vector<std::string> out;
+  if (!j.contains(key)) return out;
+  const Json& arr = array_member(j, path, key);
+  for (size_t i = 0; i < arr.size(); ++i) {
+    if (!arr[i].is_string())
+      throw LoadError(path + "." + key + "[" + std::to_string(i) + "]: expected a string");
+    out.push_back(arr[i].get<std::string>());
+  }
+  return out;
+}
+
+SourceLocation read_location(const Json& j, const std::string& path) {
+  SourceLocation loc;
+  if (!j.contains("loc")) return loc;
+  const Json& l = j["loc"];
+  std::string p = path + ".loc";
+  loc.file = opt_string(l, p, "file");
+  auto num = [&](const char* key) {
+    if (!l.contains(key)) return 0;
+    if (!l[key].is_number_integer()) throw LoadError(p + "." + key + ": expected an integer");
+    return l[key].get<int>();
+  };
+  loc.line = num("line");
+  loc.column = num("column");
+  loc.end_line = num("end_line");
+  loc.end_column = num("end_column");
+  return loc;
+}
+
+// The text form is authoritative; the tree is for tools that do not want to parse.
+Constraint read_constraint(const Json& j, const std::string& path, const char* key) {
+  const Json& c = member(j, path, key);
+  std::string p = path + "." + key;
+  std::string text = get_string(c, p, "text");
+  ConstraintParse parsed = parse_constraint(text);
+  if (!parsed.ok)
+    throw LoadError(p + ".text: " + parsed.error + " at offset " + std::to_string(parsed.offset));
+  return parsed.constraint;
+}
+
+TypePtr read_type(const Json& j, const std::string& path) {
+  std::string text = get_string(j, path, "type");
+  std::string error;
+  TypePtr t = parse_type(text, &error);
+  if (!t) throw LoadError(path + ".type: " + error);
+  return t;
+}
+
+App read_app(const Json& root) {
+  App app;
+  const std::string r = "app.json";
+  if (!root.is_object()) throw LoadError(r + ": expected a JSON object");
+  const Json& version = member(root, r, "schema_version");
+  if (!version.is_number_integer()) throw LoadError(r + ".schema_version: expected an integer");
+  app.schema_version = version.get<int>();
+  if (app.schema_version != kSchemaVersion)
+    throw LoadError(r + ".schema_version: this arbc reads version " +
+                    std::to_string(kSchemaVersion) + ", the file has " +
+                    std::to_string(app.schema_version) + "; rebuild it with this arbc");
+  app.name = get_string(root, r, "name");
+  app.description = opt_string(root, r, "description");
+  app.spec_file = opt_string(root, r, "spec_file");
+
+  const Json& modules = array_member(root, r, "modules");
+  for (size_t i = 0; i < modules.size(); ++i) {
+    std::string p = "modules[" + std::to_string(i) + "]";
+    Module m;
+    m.name = get_string(modules[i], p, "name");
+    m.doc = opt_string(modules[i], p, "doc");
+    m.loc = read_location(modules[i], p);
+    const Json& ports = array_member(modules[i], p, "ports");
+    for (size_t k = 0; k < ports.size(); ++k) {
+      std::string pp = p + ".ports[" + std::to_string(k) + "]";
+      Port port;
+      port.name = get_string(ports[k], pp, "name");
+      std::string dir = get_string(ports[k], pp, "direction");
+      if (dir != "in" && dir != "out") throw LoadError(pp + ".direction: expected \"in\" or \"out\"");
+      port.direction = dir == "in" ? Direction::In : Direction::Out;
+      port.type = read_type(ports[k], pp);
+      port.loc = read_location(ports[k], pp);
+      m.ports.push_back(std::move(port));
+    }
+    app.modules.push_back(std::move(m));
+  }
+
+  if (root.contains("events")) {
+    const Json& events = array_member(root, r, "events");
+    for (size_t i = 0; i < events.size(); ++i) {
+      std::string p = "events[" + std::to_string(i) + "]";
+      Event e;
+      e.name = get_string(events[i], p, "name");
+      e.lifetime = opt_number(events[i], p, "lifetime");
+      e.source = opt_string(events[i], p, "source");
+      e.loc = read_location(events[i], p);
+      app.events.push_back(std::move(e));
+    }
+  }
+
+  const Json& connections = array_member(root, r, "connections");
+  for (size_t i = 0; i < connections.size(); ++i) {
+    std::string p = "connections[" + std::to_string(i) + "]";
+    const Json& cj = connections[i];
+    Connection c;
+    c.name = get_string(cj, p, "name");
+    c.source = get_string(cj, p, "source");
+    c.destination = get_string(cj, p, "destination");
+    std::string kind = get_string(cj, p, "kind");
+    if (kind == "rule") c.kind = ConnectionKind::Rule;
+    else if (kind == "feed") c.kind = ConnectionKind::Feed;
+    else if (kind == "connect") c.kind = ConnectionKind::Connect;
+    else throw LoadError(p + ".kind: expected \"rule\", \"feed\" or \"connect\"");
+    c.generated = opt_bool(cj, p, "generated");
+    c.constraint = read_constraint(cj, p, "constraint");
+    c.sets = string_list(cj, p, "sets");
+    c.unsets = string_list(cj, p, "unsets");
+    c.must_set = string_list(cj, p, "must_set");
+    c.must_unset = string_list(cj, p, "must_unset");
+    c.opaque = opt_bool(cj, p, "opaque");
+    c.trig_interval = opt_number(cj, p, "trig_interval");
+    c.throttle = opt_number(cj, p, "throttle");
+    c.monitor = opt_string(cj, p, "monitor");
+    c.loc = read_location(cj, p);
+    app.connections.push_back(std::move(c));
+  }
+
+  if (root.contains("arbitrated_ports")) {
+    const Json& ports = array_member(root, r, "arbitrated_ports");
+    for (size_t i = 0; i < ports.size(); ++i) {
+      std::string p = "arbitrated_ports[" + std::to_string(i) + "]";
+      ArbitratedPort a;
+      a.port = get_string(ports[i], p, "port");
+      a.by_priority = opt_bool(ports[i], p, "by_priority");
+      a.complete = opt_bool(ports[i], p, "complete");
+      a.rules = string_list(ports[i], p, "rules");
+      a.loc = read_location(ports[i], p);
+      if (ports[i].contains("asserts")) {
+        const Json& asserts = array_member(ports[i], p, "asserts");
+        for (size_t k = 0; k < asserts.size(); ++k) {
+          std::string ap = p + ".asserts[" + std::to_string(k) + "]";
+          Assertion as;
+          as.rule = get_string(asserts[k], ap, "rule");
+          as.property = read_constraint(asserts[k], ap, "property");
+          as.loc = read_location(asserts[k], ap);
+          a.asserts.push_back(std::move(as));
+        }
+      }
+      app.arbitrated_ports.push_back(std::move(a));
+    }
+  }
+
+  if (root.contains("exclusive_groups")) {
+    const Json& groups = array_member(root, r, "exclusive_groups");
+    for (size_t i = 0; i < groups.size(); ++i) {
+      std::string p = "exclusive_groups[" + std::to_string(i) + "]";
+      ExclusiveGroup g;
+      g.events = string_list(groups[i], p, "events");
+      g.loc = read_location(groups[i], p);
+      app.exclusive_groups.push_back(std::move(g));
+    }
+  }
+  if (root.contains("invariants")) {
+    const Json& invs = array_member(root, r, "invariants");
+    for (size_t i = 0; i < invs.size(); ++i) {
+      std::string p = "invariants[" + std::to_string(i) + "]";
+      Invariant inv;
+      inv.formula = read_constraint(invs[i], p, "formula");
+      inv.loc = read_location(invs[i], p);
+      app.invariants.push_back(std::move(inv));
+    }
+  }
+  return app;
+}
+
+Json optional_number(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+
+}  // namespace
+
+std::string to_app_json(const App& app) {
+  Json root;
+  root["schema_version"] = app.schema_version;
+  root["name"] = app.name;
+  root["description"] = app.description;
+  root["spec_file"] = app.spec_file;
+  root["modules"] = Json::array();
+  for (const Module& m : app.modules) {
+    Json mj;
+    mj["name"] = m.name;
+    mj["doc"] = m.doc;
+    mj["ports"] = Json::array();
+    for (const Port& p : m.ports) {
+      Json pj;
+      pj["name"] = p.name;
+      pj["direction"] = p.direction == Direction::In ? "in" : "out";
+      pj["type"] = p.type ? p.type->to_string() : "";
+      pj["loc"] = location_json(p.loc);
+      mj["ports"].push_back(pj);
+    }
+    mj["loc"] = location_json(m.loc);
+    root["modules"].push_back(mj);
+  }
+  root["events"] = Json::array();
+  for (const Event& e : app.events) {
+    Json ej;
+    ej["name"] = e.name;
+    ej["lifetime"] = optional_number(e.lifetime);
+    ej["source"] = e.source;
+    ej["loc"] = location_json(e.loc);
+    root["events"].push_back(ej);
+  }
+  root["connections"] = Json::array();
+  for (const Connection& c : app.connections) {
+    Json cj;
+    cj["name"] = c.name;
+    cj["source"] = c.source;
+    cj["destination"] = c.destination;
+    cj["kind"] = kind_name(c.kind);
+    cj["generated"] = c.generated;
+    cj["constraint"] = constraint_json(c.constraint);
+    cj["sets"] = c.sets;
+    cj["unsets"] = c.unsets;
+    cj["must_set"] = c.must_set;
+    cj["must_unset"] = c.must_unset;
+    cj["opaque"] = c.opaque;
+    cj["trig_interval"] = optional_number(c.trig_interval);
+    cj["throttle"] = optional_number(c.throttle);
+    cj["monitor"] = c.monitor;
+    cj["loc"] = location_json(c.loc);
+    root["connections"].push_back(cj);
+  }
+  root["arbitrated_ports"] = Json::array();
+  for (const ArbitratedPort& a : app.arbitrated_ports) {
+    Json aj;
+    aj["port"] = a.port;
+    aj["by_priority"] = a.by_priority;
+    aj["complete"] = a.complete;
+    aj["rules"] = a.rules;
+    aj["asserts"] = Json::array();
+    for (const Assertion& as : a.asserts) {
+      Json sj;
+      sj["rule"] = as.rule;
+      sj["property"] = constraint_json(as.property);
+      sj["loc"] = location_json(as.loc);
+      aj["asserts"].push_back(sj);
+    }
+    aj["loc"] = location_json(a.loc);
+    root["arbitrated_ports"].push_back(aj);
+  }
+  root["exclusive_groups"] = Json::array();
+  for (const ExclusiveGroup& g : app.exclusive_groups) {
+    Json gj;
+    gj["events"] = g.events;
+    gj["loc"] = location_json(g.loc);
+    root["exclusive_groups"].push_back(gj);
+  }
+  root["invariants"] = Json::array();
+  for (const Invariant& inv : app.invariants) {
+    Json ij;
+    ij["formula"] = constraint_json(inv.formula);
+    ij["loc"] = location_json(inv.loc);
+    root["invariants"].push_back(ij);
+  }
+  return root.dump(2) + "\n";
+}
+
+AppLoad from_app_json(std::string_view text) {
+  AppLoad result;
+  Json root = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
+  if (root.is_discarded()) {
+    result.error = "app.json: not valid JSON";
+    return result;
+  }
+  try {
+    result.app = read_app(root);
+    result.ok = true;
+  } catch (const LoadError& e) {
+    result.error = e.what();
+  } catch (const Json::exception& e) {
+    result.error = std::string("app.json: ") + e.what();
+  }
+  return result;
+}
+
+}  // namespace arbc::model

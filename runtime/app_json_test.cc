@@ -1,0 +1,63 @@
+#include "runtime/app_json.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc::model {
+namespace {
+
+App small_app() {
+  App app;
+  app.name = "demo";
+  app.description = "two sources into one port";
+  app.spec_file = "specs/demo.spec";
+  Module a{"A", "a source", {{"out", Direction::Out, parse_type("vec3"), {"demo.spec", 3, 12}}}, {"demo.spec", 3, 1}};
+  Module h{"H", "", {{"gaze", Direction::In, parse_type("vec3"), {}}}, {}};
+  app.modules = {a, h};
+  app.events.push_back({"e_face", 1.0, "", {"demo.spec", 5, 7}});
+  Connection c;
+  c.name = "track";
+  c.source = "A.out";
+  c.destination = "H.gaze";
+  c.constraint = parse_constraint("not e_face or e_face_2").constraint;
+  c.must_set = {"e_face"};
+  c.trig_interval = 0.5;
+  c.monitor = "monitors/H.gaze__track.lua";
+  app.connections.push_back(c);
+  ArbitratedPort port;
+  port.port = "H.gaze";
+  port.rules = {"track"};
+  port.asserts.push_back({"track", parse_constraint("e_face").constraint, {"demo.spec", 9, 1}});
+  app.arbitrated_ports.push_back(port);
+  app.exclusive_groups.push_back({{"e_face", "e_face_2"}, {}});
+  app.invariants.push_back({parse_constraint("e_face or not e_face_2").constraint, {}});
+  return app;
+}
+
+TEST(AppJsonTest, RoundTripsByteForByte) {
+  std::string text = to_app_json(small_app());
+  AppLoad loaded = from_app_json(text);
+  ASSERT_TRUE(loaded.ok) << loaded.error;
+  EXPECT_EQ(to_app_json(loaded.app), text);
+  EXPECT_EQ(loaded.app.connections[0].constraint.to_string(), "not e_face or e_face_2");
+  EXPECT_EQ(*loaded.app.connections[0].trig_interval, 0.5);
+  EXPECT_EQ(loaded.app.modules[0].loc.line, 3);
+}
+
+TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
+  EXPECT_EQ(from_app_json("{").error, "app.json: not valid JSON");
+  EXPECT_EQ(from_app_json("[]").error, "app.json: expected a JSON object");
+  std::string text = to_app_json(small_app());
+  std::string bad = text;
+  bad.replace(bad.find("\"not e_face or e_face_2\""), 24, "\"not (e_face\"");
+  EXPECT_EQ(from_app_json(bad).error, "connections[0].constraint.text: expected ')' at offset 11");
+  bad = text;
+  bad.replace(bad.find("\"vec3\""), 6, "\"quat\"");
+  EXPECT_EQ(from_app_json(bad).error, "modules[0].ports[0].type: unknown type 'quat'");
+  bad = text;
+  bad.replace(bad.find("\"schema_version\": 1"), 19, "\"schema_version\": 7");
+  EXPECT_NE(from_app_json(bad).error.find("this arbc reads version 1, the file has 7"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace arbc::model

@@ -1,0 +1,126 @@
+// The core model: what an application is after lowering (DESIGN.md section 2).
+//
+// The compiler produces it, app.json serialises it (round trip), the verifier and the code
+// generators read it, and the runtime runs it. It lives in runtime/ because the runtime loads
+// app.json without the compiler; nothing here knows about the spec language's syntax.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/constraint.h"
+#include "runtime/type.h"
+
+namespace arbc::model {
+
+inline constexpr int kSchemaVersion = 1;
+
+// A place in the spec, for diagnostics and the source map. Lines and columns count from 1;
+// 0 means unknown (e.g. a model loaded from a hand-written app.json).
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  int end_line = 0;
+  int end_column = 0;
+};
+
+enum class Direction { In, Out };
+
+struct Port {
+  std::string name;
+  Direction direction = Direction::In;
+  TypePtr type;
+  SourceLocation loc;
+};
+
+struct Module {
+  std::string name;
+  std::string doc;
+  std::vector<Port> ports;
+  SourceLocation loc;
+};
+
+// An event any container may hold. `source` is "Module.port" for events fed from a stream
+// (`events from`, derived events) and empty for events set by hand-written monitor code.
+struct Event {
+  std::string name;
+  std::optional<double> lifetime;  // seconds; none: until unset
+  std::string source;
+  SourceLocation loc;
+};
+
+enum class ConnectionKind {
+  Rule,     // a user's rule into an arbitrated port
+  Feed,     // generated: carries events into an arbitrated port's container, never delivers
+  Connect,  // a monitored connection into a port that is not arbitrated
+};
+
+struct Connection {
+  std::string name;         // rule name ("take"), or a generated name for feeds
+  std::string source;       // "Module.port"
+  std::string destination;  // "Module.port"
+  ConnectionKind kind = ConnectionKind::Rule;
+  bool generated = false;   // written by the compiler rather than by the user
+  Constraint constraint;    // selection constraint; false for feeds, true for plain connects
+  // Events the monitor can set / unset on some path, and on every accepting path
+  // (DESIGN.md section 5: the effective guard uses must_set and must_unset).
+  std::vector<std::string> sets, unsets;
+  std::vector<std::string> must_set, must_unset;
+  bool opaque = false;                  // a `script` rule: its code is not analysed
+  std::optional<double> trig_interval;  // seconds, from `every`
+  std::optional<double> throttle;       // seconds, from `throttle`
+  std::string monitor;                  // Lua file relative to the app directory; empty: none
+  SourceLocation loc;
+};
+
+// `assert PORT: rule -> property;`
+struct Assertion {
+  std::string rule;
+  Constraint property;
+  SourceLocation loc;
+};
+
+struct ArbitratedPort {
+  std::string port;  // "Module.port"
+  bool by_priority = false;
+  bool complete = false;
+  std::vector<std::string> rules;  // names of the Rule connections into it, in spec order
+  std::vector<Assertion> asserts;
+  SourceLocation loc;
+};
+
+// `exclusive { a, b, c };`: at most one of the events is present.
+struct ExclusiveGroup {
+  std::vector<std::string> events;
+  SourceLocation loc;
+};
+
+// `invariant EXPR;`: EXPR over events always holds.
+struct Invariant {
+  Constraint formula;
+  SourceLocation loc;
+};
+
+struct App {
+  int schema_version = kSchemaVersion;
+  std::string name;
+  std::string description;
+  std::string spec_file;
+  std::vector<Module> modules;
+  std::vector<Event> events;
+  std::vector<Connection> connections;
+  std::vector<ArbitratedPort> arbitrated_ports;
+  std::vector<ExclusiveGroup> exclusive_groups;
+  std::vector<Invariant> invariants;
+
+  const Module* find_module(std::string_view name) const;
+  const Port* find_port(std::string_view qualified) const;  // "Module.port"
+  const Event* find_event(std::string_view name) const;
+  const ArbitratedPort* find_arbitrated(std::string_view port) const;
+  // All connections whose destination is `port`, in model order.
+  std::vector<const Connection*> connections_into(std::string_view port) const;
+};
+
+}  // namespace arbc::model

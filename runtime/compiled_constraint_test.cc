@@ -1,0 +1,70 @@
+#include "runtime/compiled_constraint.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace arbc {
+namespace {
+
+// Compiled evaluation must agree with the reference tree walk on every event state.
+void expect_agrees_everywhere(const std::string& text) {
+  ConstraintParse p = parse_constraint(text);
+  ASSERT_TRUE(p.ok) << p.error;
+  EventIndex index;
+  CompiledConstraint compiled = CompiledConstraint::compile(p.constraint, index);
+  int n = index.size();
+  ASSERT_LE(n, 12);
+  for (int state = 0; state < (1 << n); ++state) {
+    EventMask mask;
+    std::set<std::string> present;
+    for (int i = 0; i < n; ++i) {
+      if (state & (1 << i)) {
+        mask.set(i);
+        present.insert(index.name(i));
+      }
+    }
+    EXPECT_EQ(compiled.evaluate(mask), evaluate(p.constraint, present))
+        << text << " in state " << state;
+  }
+}
+
+TEST(CompiledConstraintTest, CubesAndProgramsAgreeWithTheTree) {
+  expect_agrees_everywhere("true");
+  expect_agrees_everywhere("false");
+  expect_agrees_everywhere("not e_taken and e_arm_idle and e_pull_idle");
+  expect_agrees_everywhere("a and not a");
+  expect_agrees_everywhere("(a or b) and not (c and d) or e");
+  expect_agrees_everywhere("e or e_ball and not e1 or e10 and a");
+}
+
+TEST(CompiledConstraintTest, EventsBeyondSixtyFourBits) {
+  EventIndex index;
+  for (int i = 0; i < 100; ++i) index.intern("pad" + std::to_string(i));
+  CompiledConstraint c =
+      CompiledConstraint::compile(parse_constraint("pad99 and not pad3").constraint, index);
+  EventMask mask;
+  EXPECT_FALSE(c.evaluate(mask));
+  mask.set(99);
+  EXPECT_TRUE(c.evaluate(mask));
+  mask.set(3);
+  EXPECT_FALSE(c.evaluate(mask));
+}
+
+TEST(CompiledConstraintTest, DeepProgramsUseTheHeapStack) {
+  std::string text = "a";
+  for (int i = 0; i < 150; ++i) text = "(" + text + " or b" + std::to_string(i % 3) + ") and c";
+  ConstraintParse p = parse_constraint(text);
+  ASSERT_TRUE(p.ok);
+  EventIndex index;
+  CompiledConstraint c = CompiledConstraint::compile(p.constraint, index);
+  EventMask mask;
+  mask.set(index.find("a"));
+  mask.set(index.find("c"));
+  EXPECT_TRUE(c.evaluate(mask));
+  mask.reset(index.find("c"));
+  EXPECT_FALSE(c.evaluate(mask));
+}
+
+}  // namespace
+}  // namespace arbc

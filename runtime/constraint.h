@@ -1,0 +1,54 @@
+// Selection constraints: boolean formulas over event names (DESIGN.md section 4).
+//
+// Text form, as passed to PortMonitor.setConstraint and stored in app.json:
+//   constraint := or ;  or := and ('or' and)* ;  and := unary ('and' unary)* ;
+//   unary := 'not' unary | '(' or ')' | 'true' | 'false' | EVENT
+// EVENT is an identifier [A-Za-z_][A-Za-z0-9_]* other than the keywords. Names are whole
+// tokens, so `e` and `e_ball` never interfere (YARP's substring substitution does).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace arbc {
+
+struct Constraint {
+  enum class Op { True, False, Event, Not, And, Or };
+  Op op = Op::True;
+  std::string event;            // Op::Event
+  std::vector<Constraint> args;  // Op::Not: one; Op::And / Op::Or: two or more
+
+  static Constraint constant(bool value);
+  static Constraint event_ref(std::string name);
+  static Constraint negate(Constraint c);
+  static Constraint conjunction(std::vector<Constraint> args);  // flattens; empty means true
+  static Constraint disjunction(std::vector<Constraint> args);  // flattens; empty means false
+
+  // Canonical text with the fewest parentheses: "not e_taken and (a or b)".
+  std::string to_string() const;
+  void collect_events(std::set<std::string>& out) const;
+  bool operator==(const Constraint&) const = default;
+};
+
+// The result of parsing constraint text; an error is a value, not an exception.
+struct ConstraintParse {
+  bool ok = false;
+  Constraint constraint;
+  std::string error;   // what is wrong, for the user
+  size_t offset = 0;   // byte offset of the error in the text
+};
+
+// Nesting deeper than this is rejected, so hostile text cannot exhaust the stack.
+inline constexpr int kMaxConstraintDepth = 200;
+
+ConstraintParse parse_constraint(std::string_view text);
+
+// Evaluates the tree directly against a set of present events. Slow; a reference for tests
+// and tools. The message path uses CompiledConstraint.
+bool evaluate(const Constraint& c, const std::set<std::string>& present);
+
+}  // namespace arbc

@@ -1,0 +1,62 @@
+#include "runtime/constraint.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc {
+namespace {
+
+Constraint parse_ok(std::string_view text) {
+  ConstraintParse p = parse_constraint(text);
+  EXPECT_TRUE(p.ok) << text << ": " << p.error;
+  return p.constraint;
+}
+
+TEST(ConstraintTest, PrintsWithFewestParentheses) {
+  EXPECT_EQ(parse_ok("not e_taken and e_arm_idle and e_pull_idle").to_string(),
+            "not e_taken and e_arm_idle and e_pull_idle");
+  EXPECT_EQ(parse_ok("(a or b) and not (c and d)").to_string(), "(a or b) and not (c and d)");
+  EXPECT_EQ(parse_ok("a or (b and c)").to_string(), "a or b and c");
+  EXPECT_EQ(parse_ok("((a))").to_string(), "a");
+}
+
+TEST(ConstraintTest, TextRoundTrips) {
+  for (const char* text : {"true", "false", "not not a", "a and (b or c or not d)", "e or e_ball"}) {
+    Constraint c = parse_ok(text);
+    EXPECT_EQ(parse_ok(c.to_string()), c) << text;
+  }
+}
+
+TEST(ConstraintTest, NamesAreWholeTokens) {
+  Constraint c = parse_ok("e and not e_ball");
+  EXPECT_TRUE(evaluate(c, {"e"}));
+  EXPECT_FALSE(evaluate(c, {"e", "e_ball"}));
+  EXPECT_FALSE(evaluate(c, {"e_ball"}));
+  Constraint keywordish = parse_ok("nota and andy");
+  EXPECT_TRUE(evaluate(keywordish, {"nota", "andy"}));
+}
+
+TEST(ConstraintTest, ReportsErrorsWithOffsets) {
+  ConstraintParse p = parse_constraint("a and (b or");
+  EXPECT_FALSE(p.ok);
+  EXPECT_EQ(p.error, "expected an event name, 'not', 'true', 'false' or '('");
+  EXPECT_EQ(p.offset, 11u);
+  p = parse_constraint("a b");
+  EXPECT_FALSE(p.ok);
+  EXPECT_EQ(p.error, "unexpected 'b' after the end of the constraint");
+  p = parse_constraint("a & b");
+  EXPECT_FALSE(p.ok);
+  EXPECT_EQ(p.offset, 2u);
+}
+
+TEST(ConstraintTest, DeepNestingIsAnErrorNotACrash) {
+  std::string deep(100000, '(');
+  ConstraintParse p = parse_constraint(deep + "a" + std::string(100000, ')'));
+  EXPECT_FALSE(p.ok);
+  EXPECT_EQ(p.error, "constraint nested too deeply");
+  std::string nots;
+  for (int i = 0; i < 100000; ++i) nots += "not ";
+  EXPECT_FALSE(parse_constraint(nots + "a").ok);
+}
+
+}  // namespace
+}  // namespace arbc
