@@ -1,0 +1,52 @@
+// Diagnostics as values (DESIGN.md section 8): severity, location, message, check id, notes.
+// Rendered like a compiler's:
+//   specs/x.spec:12:3: error: unknown event 'e_tken' [unknown-name]
+//     take: from ObjectDetector.objects when not e_tken
+//                                                ^~~~~~
+//   note: did you mean 'e_taken'?
+// Used by the front end (`arbc check`) and by `arbc verify`.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/app_model.h"
+
+namespace arbc {
+
+enum class Severity { Error, Warning, Note };
+
+const char* severity_name(Severity s);
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  model::SourceLocation loc;
+  std::string message;
+  std::string id;               // stable check id, e.g. "unknown-name", "exclusive"
+  std::vector<Diagnostic> notes;  // extra lines: "did you mean", "why each side holds"
+};
+
+// Source text by file name, to quote lines under diagnostics. Files are read on demand;
+// a file that cannot be read is quoted as nothing.
+class SourceCache {
+ public:
+  void add(std::string file, std::string text);  // text already in memory (e.g. the spec)
+  // The 1-based line, without its newline; empty when unknown.
+  std::string_view line(const std::string& file, int line);
+
+ private:
+  struct Text {
+    std::string content;
+    std::vector<size_t> line_starts;
+  };
+  Text& load(const std::string& file);
+  std::map<std::string, Text> texts_;
+};
+
+// Renders one diagnostic (and its notes) as text ending in a newline. `sources` may be null:
+// then no source line is quoted.
+std::string render(const Diagnostic& d, SourceCache* sources);
+
+}  // namespace arbc
