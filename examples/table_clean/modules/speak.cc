@@ -9,7 +9,7 @@ class Speak : public arbc::Module {
   Speak() { in("text", "string"); }
   void start() override { world_ = find_world(*this); }
   void on_message(const std::string& port, const arbc::Value& text) override {
-    context().log("Speak: \"" + text.as_string() + "\"");
+    context().log("says \"" + text.as_string() + "\"");
     if (world_) world_->person().hear(text.as_string(), now());
   }
 
