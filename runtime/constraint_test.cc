@@ -20,8 +20,7 @@ TEST(ConstraintTest, PrintsWithFewestParentheses) {
 }
 
 TEST(ConstraintTest, TextRoundTrips) {
-  for (const char* text :
-       {"true", "false", "not not a", "a and (b or c or not d)", "e or e_ball"}) {
+  for (const char* text : {"true", "false", "not not a", "a and (b or c or not d)", "e or e_ball"}) {
     Constraint c = parse_ok(text);
     EXPECT_EQ(parse_ok(c.to_string()), c) << text;
   }
