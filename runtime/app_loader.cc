@@ -16,8 +16,9 @@ AppDirLoad load_app_dir(const std::string& dir) {
   fs::path file = fs::path(dir) / "app.json";
   std::ifstream in(file, std::ios::binary);
   if (!fs::is_directory(dir)) {
-    load.errors.push_back(dir + ": not a directory; give the directory `arbc build` wrote "
-                                "(it holds app.json and monitors/)");
+    load.errors.push_back(dir +
+                          ": not a directory; give the directory `arbc build` wrote "
+                          "(it holds app.json and monitors/)");
     return load;
   }
   if (!in) {
@@ -29,8 +30,7 @@ AppDirLoad load_app_dir(const std::string& dir) {
   text << in.rdbuf();
   model::AppLoad parsed = model::from_app_json(text.str());
   if (!parsed.ok) {
-    load.errors.push_back(file.string() + ": " + parsed.error +
-                          " (rebuild it with `arbc build`)");
+    load.errors.push_back(file.string() + ": " + parsed.error + " (rebuild it with `arbc build`)");
     return load;
   }
   for (const model::Connection& c : parsed.app.connections) {

@@ -18,14 +18,22 @@ inline constexpr int kDropReasonCount = 8;
 
 inline const char* drop_reason_name(DropReason r) {
   switch (r) {
-    case DropReason::Rejected: return "rejected";
-    case DropReason::NoValue: return "no-value";
-    case DropReason::NotSelected: return "not-selected";
-    case DropReason::Throttled: return "throttled";
-    case DropReason::Feed: return "feed";
-    case DropReason::MonitorError: return "monitor-error";
-    case DropReason::Quarantined: return "quarantined";
-    case DropReason::QueueFull: return "queue-full";
+    case DropReason::Rejected:
+      return "rejected";
+    case DropReason::NoValue:
+      return "no-value";
+    case DropReason::NotSelected:
+      return "not-selected";
+    case DropReason::Throttled:
+      return "throttled";
+    case DropReason::Feed:
+      return "feed";
+    case DropReason::MonitorError:
+      return "monitor-error";
+    case DropReason::Quarantined:
+      return "quarantined";
+    case DropReason::QueueFull:
+      return "queue-full";
   }
   return "?";
 }

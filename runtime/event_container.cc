@@ -7,7 +7,8 @@ namespace arbc {
 void EventContainer::set(int event, int owner, double expiry) {
   if (static_cast<int>(entries_.size()) <= event) entries_.resize(static_cast<size_t>(event) + 1);
   std::vector<Entry>& list = entries_[static_cast<size_t>(event)];
-  auto it = std::find_if(list.begin(), list.end(), [&](const Entry& e) { return e.owner == owner; });
+  auto it =
+      std::find_if(list.begin(), list.end(), [&](const Entry& e) { return e.owner == owner; });
   if (it == list.end()) {
     list.push_back({owner, expiry});
   } else {
@@ -20,7 +21,8 @@ void EventContainer::set(int event, int owner, double expiry) {
 bool EventContainer::unset(int event, int owner) {
   if (event < 0 || static_cast<int>(entries_.size()) <= event) return false;
   std::vector<Entry>& list = entries_[static_cast<size_t>(event)];
-  auto it = std::find_if(list.begin(), list.end(), [&](const Entry& e) { return e.owner == owner; });
+  auto it =
+      std::find_if(list.begin(), list.end(), [&](const Entry& e) { return e.owner == owner; });
   if (it == list.end()) return false;
   list.erase(it);
   if (list.empty()) present_.reset(event);

@@ -148,8 +148,7 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   }
   LuaCall ran = m->sandbox_->run_chunk(script, file);
   if (!ran.ok()) {
-    *error = ran.status == LuaCall::Status::NoValue ? file + ": novalue() at top level"
-                                                    : ran.error;
+    *error = ran.status == LuaCall::Status::NoValue ? file + ": novalue() at top level" : ran.error;
     if (error->rfind(file, 0) != 0) *error = file + ": " + *error;
     return nullptr;
   }
@@ -207,8 +206,8 @@ int LuaMonitor::run_update(lua_State* L) {
   std::string why;
   auto value = read_value(L, -1, *call->destination, &why);
   if (!value) {
-    call->type_error = (has_update ? "update returned a value that does not fit the destination (" :
-                                     "the message does not fit the destination (") +
+    call->type_error = (has_update ? "update returned a value that does not fit the destination ("
+                                   : "the message does not fit the destination (") +
                        why + ")";
     return 0;
   }

@@ -44,8 +44,8 @@ int open_libraries(lua_State* L) {
   open_library(L, LUA_MATHLIBNAME, luaopen_math);
   open_library(L, LUA_UTF8LIBNAME, luaopen_utf8);
   open_library(L, LUA_COLIBNAME, luaopen_coroutine);
-  for (const char* name : {"load", "loadstring", "loadfile", "dofile", "require", "io", "os",
-                           "debug", "package"}) {
+  for (const char* name :
+       {"load", "loadstring", "loadfile", "dofile", "require", "io", "os", "debug", "package"}) {
     remove_global(L, name);
   }
   lua_getglobal(L, LUA_STRLIBNAME);
@@ -147,8 +147,7 @@ LuaCall LuaSandbox::finish_call(int rc) {
                  ": instruction budget of " + std::to_string(limits_.instructions) +
                  " exceeded (an endless loop?)";
   } else if (rc == LUA_ERRMEM) {
-    call.error = "memory cap of " + std::to_string(limits_.memory_bytes / 1024) +
-                 " KiB exceeded";
+    call.error = "memory cap of " + std::to_string(limits_.memory_bytes / 1024) + " KiB exceeded";
   } else if (lua_islightuserdata(L_, -1) && lua_touserdata(L_, -1) == &novalue_key) {
     call.status = LuaCall::Status::NoValue;
   } else if (lua_type(L_, -1) == LUA_TSTRING) {

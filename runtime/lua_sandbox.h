@@ -20,8 +20,8 @@ struct lua_Debug;
 namespace arbc {
 
 struct SandboxLimits {
-  size_t memory_bytes = 8u << 20;         // per lua_State
-  long long instructions = 1'000'000;     // per callback (checked every instruction batch)
+  size_t memory_bytes = 8u << 20;      // per lua_State
+  long long instructions = 1'000'000;  // per callback (checked every instruction batch)
 };
 
 // The outcome of one protected call into a script.

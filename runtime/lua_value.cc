@@ -31,16 +31,26 @@ std::optional<double> read_number(lua_State* L, int index) {
 void push_value(lua_State* L, const Value& v) {
   luaL_checkstack(L, 4, "message too deeply nested");
   switch (v.kind()) {
-    case Value::Kind::None: lua_pushnil(L); break;
-    case Value::Kind::Bool: lua_pushboolean(L, v.as_bool()); break;
-    case Value::Kind::Int: lua_pushinteger(L, v.as_int()); break;
-    case Value::Kind::Float: lua_pushnumber(L, v.as_float()); break;
+    case Value::Kind::None:
+      lua_pushnil(L);
+      break;
+    case Value::Kind::Bool:
+      lua_pushboolean(L, v.as_bool());
+      break;
+    case Value::Kind::Int:
+      lua_pushinteger(L, v.as_int());
+      break;
+    case Value::Kind::Float:
+      lua_pushnumber(L, v.as_float());
+      break;
     case Value::Kind::String: {
       const std::string& s = v.as_string();
       lua_pushlstring(L, s.data(), s.size());
       break;
     }
-    case Value::Kind::Vec3: push_vec3(L, v.as_vec3()); break;
+    case Value::Kind::Vec3:
+      push_vec3(L, v.as_vec3());
+      break;
     case Value::Kind::List: {
       const ValueList& items = v.as_list();
       lua_createtable(L, static_cast<int>(items.size()), 0);
@@ -109,8 +119,8 @@ std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::str
         auto d = read_number(L, -1);
         lua_pop(L, 1);
         if (!d) {
-          *why = std::string("expected vec3 ({x=, y=, z=} or {x, y, z}), component ") +
-                 kNames[k] + " is not a number";
+          *why = std::string("expected vec3 ({x=, y=, z=} or {x, y, z}), component ") + kNames[k] +
+                 " is not a number";
           return std::nullopt;
         }
         xyz[k] = *d;

@@ -157,8 +157,8 @@ void Runtime::monitor_failed(Connection& c, const LuaCall& call, const char* cal
            " (the message is dropped; this error is reported once)");
   }
   if (may_quarantine && !c.quarantined && c.consecutive_errors >= options_.quarantine_after) {
-    quarantine(c, std::to_string(c.consecutive_errors) + " failures in a row, the last: " +
-                      call.error);
+    quarantine(
+        c, std::to_string(c.consecutive_errors) + " failures in a row, the last: " + call.error);
   }
 }
 

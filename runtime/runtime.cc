@@ -107,7 +107,8 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
     if (!factory) {
       *error = "module '" + m.name +
                "' is not registered; load the plugin that provides it with --plugin LIB "
-               "(registered modules: " + join(registry.module_names()) + ")";
+               "(registered modules: " +
+               join(registry.module_names()) + ")";
       return nullptr;
     }
     auto slot = std::make_unique<ModuleSlot>();
@@ -193,8 +194,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       c->has_update = c->monitor->defines("update");
       c->has_trig = c->monitor->defines("trig");
     }
-    if (!c->has_update && !c->is_feed &&
-        !same_type(*c->source->type, *c->destination->type)) {
+    if (!c->has_update && !c->is_feed && !same_type(*c->source->type, *c->destination->type)) {
       *error = where + ": " + mc.source + " carries " + c->source->type->to_string() + " but " +
                mc.destination + " takes " + c->destination->type->to_string() +
                ", and no monitor update converts it";

@@ -21,8 +21,8 @@ std::map<std::string, size_t> Runtime::monitor_memory() const {
 
 std::string Runtime::stats_table() const {
   static const DropReason kColumns[] = {
-      DropReason::Rejected, DropReason::NoValue,      DropReason::NotSelected,
-      DropReason::Throttled, DropReason::Feed,        DropReason::MonitorError,
+      DropReason::Rejected,    DropReason::NoValue,   DropReason::NotSelected,
+      DropReason::Throttled,   DropReason::Feed,      DropReason::MonitorError,
       DropReason::Quarantined, DropReason::QueueFull,
   };
   size_t width = 10;
@@ -46,8 +46,7 @@ std::string Runtime::stats_table() const {
     out += cell;
     for (DropReason r : kColumns) {
       int w = static_cast<int>(std::string_view(drop_reason_name(r)).size());
-      std::snprintf(cell, sizeof cell, " %*llu", w,
-                    static_cast<unsigned long long>(s.drops(r)));
+      std::snprintf(cell, sizeof cell, " %*llu", w, static_cast<unsigned long long>(s.drops(r)));
       out += cell;
     }
     std::snprintf(cell, sizeof cell, " %6llu%s\n", static_cast<unsigned long long>(s.errors),

@@ -42,8 +42,7 @@ void Trace::end() {
   std::fwrite(line_.data(), 1, line_.size(), file_);
 }
 
-void Trace::delivery(double t, std::string_view connection, std::string_view port,
-                     const Value& v) {
+void Trace::delivery(double t, std::string_view connection, std::string_view port, const Value& v) {
   if (!file_) return;
   begin(t, "deliver");
   field("connection", connection);

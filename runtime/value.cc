@@ -1,10 +1,10 @@
 #include "runtime/value.h"
 
-#include "runtime/json_text.h"
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+
+#include "runtime/json_text.h"
 
 namespace arbc {
 
@@ -22,11 +22,21 @@ const std::string& empty_string() {
 
 void append_json(std::string& out, const Value& v) {
   switch (v.kind()) {
-    case Value::Kind::None: out += "null"; break;
-    case Value::Kind::Bool: out += v.as_bool() ? "true" : "false"; break;
-    case Value::Kind::Int: out += std::to_string(v.as_int()); break;
-    case Value::Kind::Float: append_json_double(out, v.as_float()); break;
-    case Value::Kind::String: append_json_string(out, v.as_string()); break;
+    case Value::Kind::None:
+      out += "null";
+      break;
+    case Value::Kind::Bool:
+      out += v.as_bool() ? "true" : "false";
+      break;
+    case Value::Kind::Int:
+      out += std::to_string(v.as_int());
+      break;
+    case Value::Kind::Float:
+      append_json_double(out, v.as_float());
+      break;
+    case Value::Kind::String:
+      append_json_string(out, v.as_string());
+      break;
     case Value::Kind::Vec3: {
       const Eigen::Vector3d& p = v.as_vec3();
       out += "{\"x\":";
@@ -67,14 +77,22 @@ void append_json(std::string& out, const Value& v) {
 
 const char* kind_text(Value::Kind k) {
   switch (k) {
-    case Value::Kind::None: return "no value";
-    case Value::Kind::Bool: return "bool";
-    case Value::Kind::Int: return "int";
-    case Value::Kind::Float: return "float";
-    case Value::Kind::String: return "string";
-    case Value::Kind::Vec3: return "vec3";
-    case Value::Kind::List: return "list";
-    case Value::Kind::Record: return "record";
+    case Value::Kind::None:
+      return "no value";
+    case Value::Kind::Bool:
+      return "bool";
+    case Value::Kind::Int:
+      return "int";
+    case Value::Kind::Float:
+      return "float";
+    case Value::Kind::String:
+      return "string";
+    case Value::Kind::Vec3:
+      return "vec3";
+    case Value::Kind::List:
+      return "list";
+    case Value::Kind::Record:
+      return "record";
   }
   return "?";
 }
@@ -190,14 +208,22 @@ std::string Value::to_json() const {
 bool operator==(const Value& a, const Value& b) {
   if (a.kind() != b.kind()) return false;
   switch (a.kind()) {
-    case Value::Kind::None: return true;
-    case Value::Kind::Bool: return a.as_bool() == b.as_bool();
-    case Value::Kind::Int: return a.as_int() == b.as_int();
-    case Value::Kind::Float: return a.as_float() == b.as_float();
-    case Value::Kind::String: return a.as_string() == b.as_string();
-    case Value::Kind::Vec3: return a.as_vec3() == b.as_vec3();
-    case Value::Kind::List: return a.as_list() == b.as_list();
-    case Value::Kind::Record: return a.as_record() == b.as_record();
+    case Value::Kind::None:
+      return true;
+    case Value::Kind::Bool:
+      return a.as_bool() == b.as_bool();
+    case Value::Kind::Int:
+      return a.as_int() == b.as_int();
+    case Value::Kind::Float:
+      return a.as_float() == b.as_float();
+    case Value::Kind::String:
+      return a.as_string() == b.as_string();
+    case Value::Kind::Vec3:
+      return a.as_vec3() == b.as_vec3();
+    case Value::Kind::List:
+      return a.as_list() == b.as_list();
+    case Value::Kind::Record:
+      return a.as_record() == b.as_record();
   }
   return false;
 }
@@ -211,11 +237,16 @@ bool conforms(const Value& v, const Type& t, std::string* why) {
     return fail("expected " + t.to_string() + ", got " + kind_text(v.kind()));
   };
   switch (t.kind) {
-    case Type::Kind::Bool: return v.is_bool() || mismatch();
-    case Type::Kind::Int: return v.is_int() || mismatch();
-    case Type::Kind::Float: return v.is_number() || mismatch();
-    case Type::Kind::String: return v.is_string() || mismatch();
-    case Type::Kind::Vec3: return v.is_vec3() || mismatch();
+    case Type::Kind::Bool:
+      return v.is_bool() || mismatch();
+    case Type::Kind::Int:
+      return v.is_int() || mismatch();
+    case Type::Kind::Float:
+      return v.is_number() || mismatch();
+    case Type::Kind::String:
+      return v.is_string() || mismatch();
+    case Type::Kind::Vec3:
+      return v.is_vec3() || mismatch();
     case Type::Kind::List: {
       if (!v.is_list()) return mismatch();
       const ValueList& items = v.as_list();
@@ -269,11 +300,21 @@ void append_json_string(std::string& out, std::string_view s) {
   out += '"';
   for (unsigned char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (c < 0x20) {
           char buf[8];
