@@ -56,6 +56,8 @@ class Lowerer {
     if (spec_.app) {
       app.name = spec_.app->name;
       app.description = spec_.app->doc;
+    } else {  // no `app` declaration: the spec file's name, as in specs/<app>.spec
+      app.name = std::filesystem::path(spec_.file).stem().string();
     }
     lower_modules();
     lower_events();
