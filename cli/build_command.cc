@@ -1,7 +1,6 @@
 // `arbc build SPEC [-o DIR] [--target embedded] [--no-verify]` (DESIGN.md sections 6, 8):
 // compile the spec, prove it, then write DIR/<app>/app.json and DIR/<app>/monitors/*.lua.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -12,6 +11,7 @@
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
+#include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 
 namespace arbc::cli {
@@ -38,8 +38,7 @@ int build_command(std::span<char*> args) {
   bool no_verify = false;
   bool strict = false;
   cli.add_option("SPEC", spec, "the spec file, e.g. specs/table_clean.spec")->required();
-  cli.add_option("-o,--output", out_dir, "directory to write DIR/<app>/ into")
-      ->default_val("out");
+  cli.add_option("-o,--output", out_dir, "directory to write DIR/<app>/ into")->default_val("out");
   cli.add_option("--target", target_name, "code-generation target: " + target_list())
       ->default_val(std::string(codegen::kDefaultTarget));
   cli.add_flag("--no-verify", no_verify, "write the artifacts without running the proof");
@@ -61,8 +60,7 @@ int build_command(std::span<char*> args) {
   }
 
   lower::CompiledSpec compiled = lower::compile_spec(spec);
-  for (const Diagnostic& d : compiled.diagnostics)
-    std::fputs(render(d, &compiled.sources).c_str(), stderr);
+  std::fputs(frontend::render_diagnostics(compiled.diagnostics, &compiled.sources).c_str(), stderr);
   if (!compiled.ok) {
     std::fprintf(stderr, "arbc build: %s has errors; nothing was written\n", spec.c_str());
     return kExitBadInput;

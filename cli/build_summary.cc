@@ -34,9 +34,9 @@ std::string build_summary(const model::App& app, const std::string& spec,
   std::string dir = out_dir + "/" + app.name;
   std::string out = "arbc build: " + spec + " -> " + dir + "/\n";
   out += "  " + verified + "\n";
-  out += "  app.json and " + std::to_string(app.connections.size()) + " monitors: " +
-         std::to_string(written) + " connections you wrote, " + std::to_string(generated) +
-         " generated\n";
+  out += "  app.json and " + std::to_string(app.connections.size()) +
+         " monitors: " + std::to_string(written) + " connections you wrote, " +
+         std::to_string(generated) + " generated\n";
   for (const std::string& port : ports) {
     bool arbitrated = app.find_arbitrated(port) != nullptr;
     out += "\n  " + port + (arbitrated ? " (arbitrated)" : "") + "\n";
@@ -44,12 +44,17 @@ std::string build_summary(const model::App& app, const std::string& spec,
       if (c.destination != port) continue;
       std::string what;
       switch (c.kind) {
-        case model::ConnectionKind::Rule: what = "rule, yours"; break;
-        case model::ConnectionKind::Connect: what = "connect, yours"; break;
-        case model::ConnectionKind::Feed: what = "feed, generated: " + join(c.sets); break;
+        case model::ConnectionKind::Rule:
+          what = "rule, yours";
+          break;
+        case model::ConnectionKind::Connect:
+          what = "connect, yours";
+          break;
+        case model::ConnectionKind::Feed:
+          what = "feed, generated: " + join(c.sets);
+          break;
       }
-      out += "    " + pad(c.name, name_w) + "  <- " + pad(c.source, source_w) + "  " + what +
-             "\n";
+      out += "    " + pad(c.name, name_w) + "  <- " + pad(c.source, source_w) + "  " + what + "\n";
     }
   }
   return out;

@@ -38,8 +38,8 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
     return gate;
   }
   gate.pass = true;
-  gate.summary = "verified: " + std::to_string(report.ports.size()) +
-                 " arbitrated port(s) proved exclusive";
+  gate.summary =
+      "verified: " + std::to_string(report.ports.size()) + " arbitrated port(s) proved exclusive";
 #else
   // This arbc was built without the verifier library; the lead wires it in by building
   // verify/ (CMake defines ARBC_HAVE_VERIFY when the arbc_verify target exists).

@@ -137,8 +137,13 @@ std::string LuaExprTranslator::expr(const ast::Expr& e) {
       return e.boolean ? "true" : "false";
     case Kind::Name:
       return name(e);
-    case Kind::Field:
-      return operand(*e.args[0]) + lua_field(e.text);
+    case Kind::Field: {
+      // Lua allows `.f` only after a name, call, index or parenthesised expression.
+      const ast::Expr& base = *e.args[0];
+      bool bare = base.kind == Kind::Name || base.kind == Kind::Call || base.kind == Kind::Field ||
+                  base.kind == Kind::Index;
+      return (bare ? expr(base) : "(" + expr(base) + ")") + lua_field(e.text);
+    }
     case Kind::Index:
       return helper(std::string(kIndexHelper)) + "(" + expr(*e.args[0]) + ", " + expr(*e.args[1]) +
              ")";

@@ -202,8 +202,7 @@ class MonitorWriter {
         w.line("if holds ~= arbc_NO_VALUE then error(holds, 0) end");
         w.line("reason = \"no-value\"  -- no value: the event is left as it was");
         w.dedent();
-        w.line("elseif holds then " + set + (otherwise.empty() ? "" : otherwise.substr(1)) + " end",
-               d.loc.line);
+        w.line("elseif holds then " + set + otherwise + " end", d.loc.line);
       } else {
         w.line("if arbc_holds_" + d.event + "(" + msg_ + ") then " + set + otherwise + " end",
                d.loc.line);
@@ -232,10 +231,18 @@ class MonitorWriter {
     for (const auto& s : b) stmt(*s, w, mode);
   }
 
+  // A duration as Lua seconds: the constant's name when the spec named one, else the number.
+  std::string duration(const ast::Duration& d) {
+    const ast::Expr* e = d.expr.get();
+    if (e && e->kind == ast::Expr::Kind::Name && e->name_kind == ast::NameKind::Const)
+      return tr_.expr(*e);
+    return lua_float(d.seconds);
+  }
+
   std::string set_event_call(const ast::Stmt& s) {
     std::optional<double> life;
     if (s.duration) {
-      life = s.duration->seconds;
+      return "PortMonitor.setEvent(" + lua_string(s.name) + ", " + duration(*s.duration) + ")";
     } else if (const ast::EventSymbol* sym = app_.spec->find_event(s.name)) {
       life = sym->lifetime;
     }
@@ -316,7 +323,7 @@ class MonitorWriter {
                           std::to_string(line) + "): counts deliveries",
                       line);
         declare_state("local " + passed + " = false");
-        w.line("if PortMonitor.now() - " + last + " < " + lua_float(s.duration->seconds) +
+        w.line("if PortMonitor.now() - " + last + " < " + duration(*s.duration) +
                    " then return false, \"throttled\" end",
                line);
         w.line(passed + " = true", line);
