@@ -129,6 +129,22 @@ SourceLocation read_location(const Json& j, const std::string& path) {
   return loc;
 }
 
+// `"source_map": [[monitor_line, spec_line], ...]`; optional (older files have none).
+std::vector<SourceMapEntry> read_source_map(const Json& j, const std::string& path) {
+  std::vector<SourceMapEntry> out;
+  if (!j.contains("source_map")) return out;
+  const Json& arr = array_member(j, path, "source_map");
+  for (size_t i = 0; i < arr.size(); ++i) {
+    const Json& pair = arr[i];
+    if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
+        !pair[1].is_number_integer())
+      throw LoadError(path + ".source_map[" + std::to_string(i) +
+                      "]: expected [monitor_line, spec_line]");
+    out.push_back({pair[0].get<int>(), pair[1].get<int>()});
+  }
+  return out;
+}
+
 // The text form is authoritative; the tree is for tools that do not want to parse.
 Constraint read_constraint(const Json& j, const std::string& path, const char* key) {
   const Json& c = member(j, path, key);
@@ -221,6 +237,7 @@ App read_app(const Json& root) {
     c.trig_interval = opt_number(cj, p, "trig_interval");
     c.throttle = opt_number(cj, p, "throttle");
     c.monitor = opt_string(cj, p, "monitor");
+    c.source_map = read_source_map(cj, p);
     c.loc = read_location(cj, p);
     app.connections.push_back(std::move(c));
   }
@@ -326,6 +343,9 @@ std::string to_app_json(const App& app) {
     cj["trig_interval"] = optional_number(c.trig_interval);
     cj["throttle"] = optional_number(c.throttle);
     cj["monitor"] = c.monitor;
+    cj["source_map"] = Json::array();
+    for (const SourceMapEntry& e : c.source_map)
+      cj["source_map"].push_back(Json::array({e.monitor_line, e.spec_line}));
     cj["loc"] = location_json(c.loc);
     root["connections"].push_back(cj);
   }

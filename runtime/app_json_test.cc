@@ -22,6 +22,7 @@ App small_app() {
   c.must_set = {"e_face"};
   c.trig_interval = 0.5;
   c.monitor = "monitors/H.gaze__track.lua";
+  c.source_map = {{12, 7}, {13, 8}};
   app.connections.push_back(c);
   ArbitratedPort port;
   port.port = "H.gaze";
@@ -41,6 +42,7 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
   EXPECT_EQ(loaded.app.connections[0].constraint.to_string(), "not e_face or e_face_2");
   EXPECT_EQ(*loaded.app.connections[0].trig_interval, 0.5);
   EXPECT_EQ(loaded.app.modules[0].loc.line, 3);
+  EXPECT_EQ(loaded.app.connections[0].source_map, (std::vector<SourceMapEntry>{{12, 7}, {13, 8}}));
 }
 
 TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {

@@ -51,6 +51,14 @@ struct Event {
   SourceLocation loc;
 };
 
+// One line of a generated monitor and the spec line it comes from, so a script error at
+// `monitors/x.lua:42` can be reported at the spec line that wrote it.
+struct SourceMapEntry {
+  int monitor_line = 0;
+  int spec_line = 0;
+  bool operator==(const SourceMapEntry&) const = default;
+};
+
 enum class ConnectionKind {
   Rule,     // a user's rule into an arbitrated port
   Feed,     // generated: carries events into an arbitrated port's container, never delivers
@@ -72,6 +80,7 @@ struct Connection {
   std::optional<double> trig_interval;  // seconds, from `every`
   std::optional<double> throttle;       // seconds, from `throttle`
   std::string monitor;                  // Lua file relative to the app directory; empty: none
+  std::vector<SourceMapEntry> source_map;  // monitor lines -> spec lines (of loc.file)
   SourceLocation loc;
 };
 

@@ -1,0 +1,63 @@
+#include "cli/build_summary.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace arbc::cli {
+
+namespace {
+
+std::string pad(std::string s, size_t width) {
+  if (s.size() < width) s.append(width - s.size(), ' ');
+  return s;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+}  // namespace
+
+std::string build_summary(const model::App& app, const std::string& spec,
+                          const std::string& out_dir, const std::string& verified) {
+  size_t written = 0, generated = 0, name_w = 4, source_w = 6;
+  std::vector<std::string> ports;  // destinations in first-seen order
+  for (const model::Connection& c : app.connections) {
+    (c.generated ? generated : written) += 1;
+    name_w = std::max(name_w, c.name.size());
+    source_w = std::max(source_w, c.source.size());
+    if (std::find(ports.begin(), ports.end(), c.destination) == ports.end())
+      ports.push_back(c.destination);
+  }
+  std::string dir = out_dir + "/" + app.name;
+  std::string out = "arbc build: " + spec + " -> " + dir + "/\n";
+  out += "  " + verified + "\n";
+  out += "  app.json and " + std::to_string(app.connections.size()) +
+         " monitors: " + std::to_string(written) + " connections you wrote, " +
+         std::to_string(generated) + " generated\n";
+  for (const std::string& port : ports) {
+    bool arbitrated = app.find_arbitrated(port) != nullptr;
+    out += "\n  " + port + (arbitrated ? " (arbitrated)" : "") + "\n";
+    for (const model::Connection& c : app.connections) {
+      if (c.destination != port) continue;
+      std::string what;
+      switch (c.kind) {
+        case model::ConnectionKind::Rule:
+          what = "rule, yours";
+          break;
+        case model::ConnectionKind::Connect:
+          what = "connect, yours";
+          break;
+        case model::ConnectionKind::Feed:
+          what = "feed, generated: " + join(c.sets);
+          break;
+      }
+      out += "    " + pad(c.name, name_w) + "  <- " + pad(c.source, source_w) + "  " + what + "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace arbc::cli

@@ -1,0 +1,14 @@
+// The summary `arbc build` prints: where the artifacts went, and every connection, grouped by
+// destination port, saying which the user wrote and which the compiler generated.
+#pragma once
+
+#include <string>
+
+#include "runtime/app_model.h"
+
+namespace arbc::cli {
+
+std::string build_summary(const model::App& app, const std::string& spec,
+                          const std::string& out_dir, const std::string& verified);
+
+}  // namespace arbc::cli

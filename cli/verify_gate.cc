@@ -1,0 +1,56 @@
+#include "cli/verify_gate.h"
+
+#include <cstdio>
+
+#include "cli/commands.h"
+
+#if ARBC_HAVE_VERIFY
+#include "verify/report_format.h"
+#include "verify/verify.h"
+#endif
+
+namespace arbc::cli {
+
+VerifyGate verify_before_writing(const model::App& app, const std::string& input,
+                                 SourceCache* sources, bool strict) {
+  VerifyGate gate;
+#if ARBC_HAVE_VERIFY
+  verify::VerifyOptions options;
+  options.strict = strict;
+  verify::VerifyResult result = verify::verify_app(app, options);
+  if (!result.ok) {
+    std::fprintf(stderr, "%s: error: cannot verify: %s\n", input.c_str(), result.error.c_str());
+    gate.exit_code = kExitBadInput;
+    return gate;
+  }
+  const verify::VerifyReport& report = result.report;
+  bool findings = report.count(Severity::Error) + report.count(Severity::Warning) > 0;
+  if (report.verdict != verify::Verdict::Proved || findings) {
+    std::string text = verify::format_text({{input, report}}, sources, /*stats=*/false);
+    std::fputs(text.c_str(), stderr);
+  }
+  if (report.verdict != verify::Verdict::Proved) {
+    std::fprintf(stderr,
+                 "arbc build: verification %s; nothing was written (fix the spec, or build "
+                 "anyway with --no-verify)\n",
+                 verify::verdict_name(report.verdict));
+    gate.exit_code = kExitRefuted;
+    return gate;
+  }
+  gate.pass = true;
+  gate.summary =
+      "verified: " + std::to_string(report.ports.size()) + " arbitrated port(s) proved exclusive";
+#else
+  // This arbc was built without the verifier library; the lead wires it in by building
+  // verify/ (CMake defines ARBC_HAVE_VERIFY when the arbc_verify target exists).
+  (void)app;
+  (void)input;
+  (void)sources;
+  (void)strict;
+  gate.pass = true;
+  gate.summary = "not verified: this arbc has no verifier (run `arbc verify` when it has)";
+#endif
+  return gate;
+}
+
+}  // namespace arbc::cli

@@ -1,0 +1,35 @@
+// The spec language's builtins (len, min_by, max_by, dist, norm, abs, min, max, now) as plain
+// Lua 5.4 local functions, copied into each generated monitor that uses them, so every monitor
+// is a self-contained file that needs nothing but the PortMonitor API (DESIGN.md section 6).
+//
+// "No value" (min_by of an empty list, an index out of range) is raised as the sentinel
+// `arbc_NO_VALUE` with error(); the monitor's accept catches it with pcall and rejects the
+// message with the drop reason "no-value" (docs/runtime.md) instead of a script error.
+#pragma once
+
+#include <set>
+#include <string>
+#include <string_view>
+
+namespace arbc::codegen {
+
+// Helper names, usable in `used` below. Builtins keep their spec names; helpers the generated
+// code needs internally start with "arbc_".
+inline constexpr std::string_view kNoValueHelper = "arbc_no_value";
+inline constexpr std::string_view kIndexHelper = "arbc_index";
+
+// True for the spec builtins this prelude implements.
+bool is_builtin(std::string_view name);
+
+// Names a spec variable must not take in generated Lua: builtins, Lua's standard globals the
+// generated code calls, PortMonitor, and anything starting with "arbc_".
+bool is_reserved_lua_name(std::string_view name);
+
+// `used` plus every helper they call.
+std::set<std::string> helper_closure(const std::set<std::string>& used);
+
+// Lua source defining the helpers in `used` (and what they depend on), in a fixed order, each
+// opened by a one-line comment. Empty when `used` is empty.
+std::string lua_prelude(const std::set<std::string>& used);
+
+}  // namespace arbc::codegen

@@ -1,0 +1,50 @@
+// Code-generation targets (DESIGN.md section 9). A target turns a lowered application into the
+// files of its artifact directory. `embedded` (the default) writes app.json and one Lua
+// monitor per connection for the bundled runtime; a `yarp` target (yarpmanager XML and
+// YARP-compatible monitors) is an addition to the registry in target.cc, not a rewrite.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/diagnostic.h"
+
+namespace arbc::lower {
+struct LoweredApp;
+}
+
+namespace arbc::codegen {
+
+// One generated file, its path relative to the application's directory ("app.json",
+// "monitors/PickAndPlace.cmd__take.lua").
+struct OutputFile {
+  std::string path;
+  std::string content;
+};
+
+struct CodegenResult {
+  bool ok = false;
+  std::vector<OutputFile> files;  // in a fixed order; the same input gives the same bytes
+  std::vector<Diagnostic> diagnostics;
+};
+
+class Target {
+ public:
+  virtual ~Target() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string_view description() const = 0;  // one line, for --help
+  // Generates every file. Deterministic; never throws for a checked, lowered application.
+  virtual CodegenResult generate(const lower::LoweredApp& app) const = 0;
+};
+
+inline constexpr std::string_view kDefaultTarget = "embedded";
+
+// The target called `name`, or null when there is none (list them with target_names()).
+std::unique_ptr<Target> make_target(std::string_view name);
+
+// Every registered target's name, in registry order.
+std::vector<std::string> target_names();
+
+}  // namespace arbc::codegen

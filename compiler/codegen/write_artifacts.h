@@ -1,0 +1,19 @@
+// Puts generated files on disk as one unit: everything is written into a staging directory
+// beside the destination first, and only then swapped in, so a failed build never leaves a
+// half-written application, and monitors of rules that no longer exist do not linger.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compiler/codegen/target.h"
+
+namespace arbc::codegen {
+
+// Writes `files` (paths relative to the app directory) into `out_dir`/`app_name`, replacing an
+// earlier build there. Refuses to replace a non-empty directory that has no app.json (it is not
+// an arbc build). Returns an error message, or empty on success.
+std::string write_artifacts(const std::string& out_dir, const std::string& app_name,
+                            const std::vector<OutputFile>& files);
+
+}  // namespace arbc::codegen

@@ -1,0 +1,43 @@
+#include "compiler/lower/compile_spec.h"
+
+#include <filesystem>
+
+#include "compiler/frontend/frontend.h"
+#include "compiler/lower/lower.h"
+
+namespace arbc::lower {
+
+namespace {
+
+// Lowers what the front end checked; appends lowering's own diagnostics.
+CompiledSpec finish(frontend::CheckResult checked, const std::string& file,
+                    const std::string& script_dir) {
+  CompiledSpec out;
+  out.sources.add(file, checked.source);
+  out.diagnostics = std::move(checked.diagnostics);
+  if (!checked.ok() || !checked.spec) return out;
+  std::shared_ptr<const ast::Spec> spec(std::move(checked.spec));
+  LowerOptions options;
+  options.script_dir = script_dir;
+  LowerResult lowered = lower_spec(spec, options);
+  for (Diagnostic& d : lowered.diagnostics) out.diagnostics.push_back(std::move(d));
+  if (!lowered.ok) return out;
+  lowered.lowered->spec_text = std::move(checked.source);
+  out.lowered = std::move(lowered.lowered);
+  out.ok = true;
+  return out;
+}
+
+}  // namespace
+
+CompiledSpec compile_spec_text(std::string_view text, const std::string& file,
+                               const std::string& script_dir) {
+  return finish(frontend::check_text(text, file), file, script_dir);
+}
+
+CompiledSpec compile_spec(const std::string& path) {
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  return finish(frontend::check_file(path), path, dir.empty() ? "." : dir.string());
+}
+
+}  // namespace arbc::lower

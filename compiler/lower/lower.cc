@@ -1,0 +1,403 @@
+#include "compiler/lower/lower.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "compiler/lower/event_effects.h"
+#include "compiler/lower/feeds.h"
+#include "compiler/lower/script_check.h"
+
+namespace arbc::lower {
+
+namespace {
+
+Diagnostic error_at(const model::SourceLocation& loc, std::string message, std::string id) {
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.loc = loc;
+  d.message = std::move(message);
+  d.id = std::move(id);
+  return d;
+}
+
+std::vector<std::string> sorted(const std::set<std::string>& s) { return {s.begin(), s.end()}; }
+
+// Visits every statement of a block, nested ones included.
+template <typename F>
+void for_each_stmt(const ast::Block& block, F&& f) {
+  for (const auto& s : block) {
+    f(*s);
+    for_each_stmt(s->body, f);
+    for_each_stmt(s->else_body, f);
+  }
+}
+
+// A rule of one arbitrated port while it is being lowered.
+struct RuleWork {
+  const ast::Rule* rule = nullptr;
+  size_t connection = 0;
+  std::string activity;  // activity event; empty outside `by priority` and for the lowest rule
+  EventEffects effects;
+  bool opaque = false;
+};
+
+class Lowerer {
+ public:
+  Lowerer(const ast::Spec& spec, const LowerOptions& options, LoweredApp& out,
+          std::vector<Diagnostic>& diagnostics)
+      : spec_(spec), options_(options), out_(out), diagnostics_(diagnostics) {}
+
+  void run() {
+    model::App& app = out_.app;
+    app.spec_file = spec_.file;
+    if (spec_.app) {
+      app.name = spec_.app->name;
+      app.description = spec_.app->doc;
+    } else {  // no `app` declaration: the spec file's name, as in specs/<app>.spec
+      app.name = std::filesystem::path(spec_.file).stem().string();
+    }
+    lower_modules();
+    lower_events();
+    for (const ast::ArbitrateDecl& a : spec_.arbitrations) lower_arbitration(a);
+    for (const ast::ConnectDecl& c : spec_.connects) lower_connect(c);
+    for (const ast::ExclusiveDecl& x : spec_.exclusives) {
+      model::ExclusiveGroup g;
+      for (const ast::EventName& e : x.events) g.events.push_back(e.name);
+      g.loc = x.loc;
+      app.exclusive_groups.push_back(std::move(g));
+    }
+    for (const ast::InvariantDecl& inv : spec_.invariants)
+      app.invariants.push_back({inv.constraint, inv.loc});
+  }
+
+ private:
+  void lower_modules() {
+    for (const ast::ModuleDecl& m : spec_.modules) {
+      model::Module mm;
+      mm.name = m.name;
+      mm.doc = m.doc;
+      mm.loc = m.loc;
+      for (const ast::PortDecl& p : m.ports)
+        mm.ports.push_back({p.name, p.direction, p.type.resolved, p.loc});
+      out_.app.modules.push_back(std::move(mm));
+    }
+  }
+
+  void lower_events() {
+    for (const ast::EventSymbol& e : spec_.event_symbols)
+      out_.app.events.push_back({e.name, e.lifetime, e.source, e.loc});
+  }
+
+  size_t add_connection(model::Connection c, MonitorPlan plan) {
+    plan.connection = out_.app.connections.size();
+    out_.app.connections.push_back(std::move(c));
+    out_.monitors.push_back(std::move(plan));
+    return plan.connection;
+  }
+
+  // Reads a `script "file.lua"` statement's file; reports and returns nullopt on failure.
+  std::optional<ScriptSource> read_script(const ast::Stmt& s) {
+    std::filesystem::path path(s.text);
+    if (path.is_relative()) path = std::filesystem::path(options_.script_dir) / path;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      diagnostics_.push_back(error_at(s.loc,
+                                      "cannot read script '" + s.text + "' (looked for '" +
+                                          path.lexically_normal().string() +
+                                          "'); script paths are relative to the spec's directory",
+                                      "script"));
+      return std::nullopt;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    ScriptSource script{path.lexically_normal().string(), text.str(), s.loc};
+    std::string error = check_lua_syntax(script.text, s.text);
+    if (!error.empty()) {
+      diagnostics_.push_back(
+          error_at(s.loc, "script '" + s.text + "' is not valid Lua: " + error, "script"));
+      return std::nullopt;
+    }
+    return script;
+  }
+
+  // Fills throttle, trig interval and the script of a rule or connect body; false on error.
+  bool lower_body_options(const ast::Block& body, model::Connection& c, MonitorPlan& plan) {
+    bool ok = true;
+    const ast::Stmt* every = nullptr;
+    const ast::Stmt* script = nullptr;
+    for_each_stmt(body, [&](const ast::Stmt& s) {
+      if (s.kind == ast::Stmt::Kind::Throttle && !c.throttle && s.duration)
+        c.throttle = s.duration->seconds;
+      if (s.kind == ast::Stmt::Kind::Every) {
+        if (every) {
+          Diagnostic d = error_at(s.loc,
+                                  "a monitor has one trig interval: use one `every` block per "
+                                  "rule",
+                                  "every");
+          d.notes.push_back(error_at(every->loc, "the first `every` is here", ""));
+          d.notes.back().severity = Severity::Note;
+          diagnostics_.push_back(std::move(d));
+          ok = false;
+        }
+        every = &s;
+        if (s.duration) c.trig_interval = s.duration->seconds;
+      }
+      if (s.kind == ast::Stmt::Kind::Script) script = &s;
+    });
+    if (script) {
+      if (body.size() != 1) {
+        diagnostics_.push_back(error_at(script->loc,
+                                        "`script` replaces the whole body: move the other "
+                                        "statements into the script or drop `script`",
+                                        "script"));
+        return false;
+      }
+      plan.script = read_script(*script);
+      if (!plan.script) return false;
+      c.opaque = true;
+    }
+    return ok;
+  }
+
+  void lower_arbitration(const ast::ArbitrateDecl& a) {
+    const std::string port = a.port.qualified();
+    model::ArbitratedPort ap;
+    ap.port = port;
+    ap.by_priority = a.by_priority;
+    ap.complete = a.complete;
+    ap.loc = a.loc;
+
+    std::vector<RuleWork> rules;
+    for (size_t k = 0; k < a.rules.size(); ++k) {
+      const ast::Rule& r = a.rules[k];
+      RuleWork w;
+      w.rule = &r;
+      bool lowest = k + 1 == a.rules.size();
+      if (a.by_priority && !lowest) {
+        w.activity = activity_event_name(r.name);
+        if (spec_.find_event(w.activity))
+          diagnostics_.push_back(error_at(
+              r.loc,
+              "rule '" + r.name + "' needs the activity event '" + w.activity +
+                  "' (by priority), but an event of that name is declared; rename one of them",
+              "priority"));
+        if (!r.hold)
+          diagnostics_.push_back(
+              error_at(r.loc,
+                       "rule '" + r.name +
+                           "' needs `hold D` under `by priority`: it suppresses the "
+                           "lower rules for D after each message it could deliver",
+                       "priority"));
+      }
+      model::Connection c;
+      c.name = r.name;
+      c.source = r.source.qualified();
+      c.destination = port;
+      c.kind = model::ConnectionKind::Rule;
+      c.loc = r.loc;
+      c.monitor = monitor_path(port, r.name);
+      MonitorPlan plan;
+      plan.kind = MonitorPlan::Kind::Rule;
+      plan.message_name = r.message_name.empty() ? r.source.port : r.message_name;
+      plan.body = &r.body;
+      lower_body_options(r.body, c, plan);
+      std::set<std::string> preset;
+      if (!w.activity.empty()) preset.insert(w.activity);
+      if (plan.script) {
+        w.effects = script_effects(plan.script->text);
+        w.effects.sets.insert(preset.begin(), preset.end());
+        w.effects.must_set = preset;
+        w.opaque = true;
+      } else {
+        w.effects = body_effects(r.body, preset);
+      }
+      if (a.by_priority) {
+        PriorityGuard g;
+        g.when = r.constraint;
+        g.activity_event = w.activity;
+        if (!w.activity.empty() && r.hold) g.hold = r.hold->seconds;
+        g.loc = r.loc;
+        plan.priority = g;
+      }
+      w.connection = add_connection(std::move(c), std::move(plan));
+      ap.rules.push_back(r.name);
+      if (!w.activity.empty()) {
+        std::optional<double> hold;
+        if (r.hold) hold = r.hold->seconds;
+        out_.app.events.push_back({w.activity, hold, "", r.loc});
+      }
+      rules.push_back(std::move(w));
+    }
+
+    // Constraints of the rules that are not `otherwise`.
+    for (size_t k = 0; k < rules.size(); ++k) {
+      if (rules[k].rule->otherwise) continue;
+      connection(rules[k]).constraint = priority_constraint(rules, k, rules[k].rule->constraint);
+    }
+    for (const ast::AssertDecl& as : spec_.asserts)
+      if (as.port.qualified() == port) ap.asserts.push_back({as.rule, as.constraint, as.loc});
+
+    // Feeds for what the constraints so far read; `otherwise` needs to know what they set.
+    std::set<std::string> read = events_read(rules, ap, /*with_otherwise=*/false);
+    std::set<std::string> fed = fed_events(read);
+    for (size_t k = 0; k < rules.size(); ++k) {
+      if (!rules[k].rule->otherwise) continue;
+      Constraint none = otherwise_constraint(rules, k, fed);
+      connection(rules[k]).constraint = priority_constraint(rules, k, none);
+      MonitorPlan& plan = out_.monitors[rules[k].connection];
+      if (plan.priority) plan.priority->when = none;
+    }
+    read = events_read(rules, ap, /*with_otherwise=*/true);
+
+    for (RuleWork& w : rules) {
+      model::Connection& c = connection(w);
+      c.sets = sorted(w.effects.sets);
+      c.unsets = sorted(w.effects.unsets);
+      c.must_set = sorted(w.effects.must_set);
+      c.must_unset = sorted(w.effects.must_unset);
+      c.opaque = w.opaque;
+    }
+
+    std::set<std::string> taken_names(ap.rules.begin(), ap.rules.end());
+    for (FeedGroup& g : plan_feeds(spec_, read)) {
+      model::Connection c;
+      c.name = unique_name(feed_name(g.source), taken_names);
+      c.source = g.source;
+      c.destination = port;
+      c.kind = model::ConnectionKind::Feed;
+      c.generated = true;
+      c.constraint = Constraint::constant(false);
+      c.sets = g.sets;
+      c.unsets = g.unsets;
+      c.loc = g.loc;
+      c.monitor = monitor_path(port, c.name);
+      g.plan.kind = MonitorPlan::Kind::Feed;
+      add_connection(std::move(c), std::move(g.plan));
+    }
+    out_.app.arbitrated_ports.push_back(std::move(ap));
+  }
+
+  model::Connection& connection(const RuleWork& w) { return out_.app.connections[w.connection]; }
+
+  // `when_k and act_k and not act_1 ... and not act_(k-1)` (DESIGN.md section 3, by priority);
+  // just `when_k` outside `by priority`.
+  Constraint priority_constraint(const std::vector<RuleWork>& rules, size_t k, Constraint when) {
+    std::vector<Constraint> parts{std::move(when)};
+    if (!rules[k].activity.empty()) parts.push_back(Constraint::event_ref(rules[k].activity));
+    for (size_t j = 0; j < k; ++j)
+      if (!rules[j].activity.empty())
+        parts.push_back(Constraint::negate(Constraint::event_ref(rules[j].activity)));
+    return Constraint::conjunction(std::move(parts));
+  }
+
+  // E_c of DESIGN.md section 5: G_c and what c sets on every accepting path and not what it
+  // unsets on every such path that no other connection of the port sets.
+  Constraint effective_guard(const std::vector<RuleWork>& rules, size_t c,
+                             const std::set<std::string>& fed) {
+    const RuleWork& w = rules[c];
+    std::vector<Constraint> parts{connection(w).constraint};
+    if (w.opaque) return parts[0];
+    for (const std::string& e : w.effects.must_set) parts.push_back(Constraint::event_ref(e));
+    for (const std::string& e : w.effects.must_unset) {
+      bool others_set = fed.count(e) > 0;
+      for (size_t j = 0; j < rules.size(); ++j)
+        if (j != c && rules[j].effects.sets.count(e)) others_set = true;
+      if (!others_set) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
+    }
+    return Constraint::conjunction(std::move(parts));
+  }
+
+  // `otherwise`: none of the other rules' effective guards holds.
+  Constraint otherwise_constraint(const std::vector<RuleWork>& rules, size_t k,
+                                  const std::set<std::string>& fed) {
+    std::vector<Constraint> others;
+    for (size_t j = 0; j < rules.size(); ++j)
+      if (j != k && !rules[j].rule->otherwise) others.push_back(effective_guard(rules, j, fed));
+    return Constraint::negate(Constraint::disjunction(std::move(others)));
+  }
+
+  std::set<std::string> events_read(const std::vector<RuleWork>& rules,
+                                    const model::ArbitratedPort& ap, bool with_otherwise) {
+    std::set<std::string> read;
+    for (const RuleWork& w : rules)
+      if (with_otherwise || !w.rule->otherwise) connection(w).constraint.collect_events(read);
+    for (const model::Assertion& as : ap.asserts) as.property.collect_events(read);
+    return read;
+  }
+
+  // The stream events (status flags, derived events) among `read`: what feeds will set.
+  std::set<std::string> fed_events(const std::set<std::string>& read) {
+    std::set<std::string> fed;
+    for (const std::string& e : read) {
+      const ast::EventSymbol* sym = spec_.find_event(e);
+      if (sym && sym->kind != ast::EventSymbol::Kind::Manual) fed.insert(e);
+    }
+    return fed;
+  }
+
+  static std::string feed_name(const std::string& source) {
+    std::string name = "feed_" + source;
+    for (char& ch : name)
+      if (ch == '.') ch = '_';
+    return name;
+  }
+
+  static std::string unique_name(const std::string& base, std::set<std::string>& taken) {
+    std::string name = base;
+    for (int i = 2; taken.count(name); ++i) name = base + "_" + std::to_string(i);
+    taken.insert(name);
+    return name;
+  }
+
+  void lower_connect(const ast::ConnectDecl& d) {
+    model::Connection c;
+    c.name = feed_name(d.source.qualified()).replace(0, 5, "from_");
+    c.source = d.source.qualified();
+    c.destination = d.destination.qualified();
+    c.kind = model::ConnectionKind::Connect;
+    c.constraint = Constraint::constant(true);
+    c.loc = d.loc;
+    c.monitor = monitor_path(c.destination, c.name);
+    MonitorPlan plan;
+    plan.kind = MonitorPlan::Kind::Connect;
+    plan.message_name = d.message_name.empty() ? d.source.port : d.message_name;
+    plan.body = &d.body;
+    lower_body_options(d.body, c, plan);
+    EventEffects effects = plan.script ? script_effects(plan.script->text) : body_effects(d.body);
+    c.sets = sorted(effects.sets);
+    c.unsets = sorted(effects.unsets);
+    c.must_set = sorted(effects.must_set);
+    c.must_unset = sorted(effects.must_unset);
+    add_connection(std::move(c), std::move(plan));
+  }
+
+  const ast::Spec& spec_;
+  const LowerOptions& options_;
+  LoweredApp& out_;
+  std::vector<Diagnostic>& diagnostics_;
+};
+
+}  // namespace
+
+std::string monitor_path(const std::string& port, const std::string& name) {
+  return "monitors/" + port + "__" + name + ".lua";
+}
+
+std::string activity_event_name(const std::string& rule) { return "act_" + rule; }
+
+LowerResult lower_spec(std::shared_ptr<const ast::Spec> spec, const LowerOptions& options) {
+  LowerResult result;
+  auto lowered = std::make_shared<LoweredApp>();
+  lowered->spec = spec;
+  Lowerer(*spec, options, *lowered, result.diagnostics).run();
+  result.ok = true;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == Severity::Error) result.ok = false;
+  if (result.ok) result.lowered = std::move(lowered);
+  return result;
+}
+
+}  // namespace arbc::lower
