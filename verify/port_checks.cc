@@ -63,9 +63,9 @@ Finding internal_error(const PortScope& scope, const std::string& what, const Ev
 
 class PortChecker {
  public:
-  PortChecker(const PortScope& scope, const VerifyOptions& options, Clock::time_point deadline,
-              PortResult& result)
-      : scope_(scope), options_(options), solver_(scope, deadline), result_(result) {}
+  PortChecker(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
+              Clock::time_point deadline, PortResult& result)
+      : scope_(scope), options_(options), solver_(scope, ctx, deadline), result_(result) {}
 
   void run() {
     check_dead();
@@ -247,7 +247,7 @@ class PortChecker {
 
 }  // namespace
 
-void run_port_checks(const PortScope& scope, const VerifyOptions& options,
+void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
                      Clock::time_point deadline, PortResult& result) {
   result.port = scope.port->port;
   result.by_priority = scope.port->by_priority;
@@ -263,7 +263,7 @@ void run_port_checks(const PortScope& scope, const VerifyOptions& options,
       ++result.exclusive_groups;
     }
   }
-  PortChecker(scope, options, deadline, result).run();
+  PortChecker(scope, options, ctx, deadline, result).run();
 }
 
 }  // namespace arbc::verify

@@ -11,7 +11,7 @@
 namespace arbc::verify {
 
 // Fills `result` (rules, events, invariants used, findings, verdict) for the port in `scope`.
-void run_port_checks(const PortScope& scope, const VerifyOptions& options,
+void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
                      Clock::time_point deadline, PortResult& result);
 
 }  // namespace arbc::verify

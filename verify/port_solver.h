@@ -23,7 +23,8 @@ enum class Answer { Sat, Unsat, Unknown };
 
 class PortSolver {
  public:
-  PortSolver(const PortScope& scope, Clock::time_point deadline);
+  // `ctx` is shared by all ports of a run: creating a Z3 context costs tens of milliseconds.
+  PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_point deadline);
 
   // Can at least two rules hold in one decision state?
   Answer at_least_two_hold();
@@ -52,7 +53,7 @@ class PortSolver {
 
   const PortScope& scope_;
   Clock::time_point deadline_;
-  z3::context ctx_;
+  z3::context& ctx_;
   z3::solver solver_;
   std::vector<z3::expr> event_vars_;  // parallel to scope_.events
   z3::expr_vector all_events_;

@@ -50,7 +50,7 @@ std::string port_line(const PortResult& p, bool stats) {
   }
   if (stats) {
     line += " [" + seconds_text(p.seconds) + ", " +
-            plural(static_cast<size_t>(p.solver_queries), "solver query") + "]";
+            std::to_string(p.solver_queries) + " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
   }
   return line + "\n";
 }

@@ -80,7 +80,7 @@ model::ArbitratedPort arbitrated_port(const std::string& name, std::vector<std::
 
 }  // namespace
 
-std::string table_clean_spec_path() { return ARBC_SOURCE_DIR "/tests/verify/table_clean.spec"; }
+std::string table_clean_spec_path() { return "tests/verify/table_clean.spec"; }
 
 Constraint parse(const std::string& text) {
   ConstraintParse p = parse_constraint(text);

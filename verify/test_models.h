@@ -10,7 +10,7 @@
 
 namespace arbc::verify::testing {
 
-// The spec these models come from, for quoting lines in diagnostics.
+// The spec these models come from, relative to the repository root (where golden tests run).
 std::string table_clean_spec_path();
 
 model::App table_clean_model();

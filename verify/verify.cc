@@ -38,10 +38,11 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
   std::vector<Finding> structural;
   run_structural_checks(app, options.strict, structural);
 
+  z3::context ctx;  // one per run: creating a context costs tens of milliseconds
   for (const PortScope& scope : scopes) {
     PortResult result;
     Clock::time_point port_start = Clock::now();
-    run_port_checks(scope, options, deadline, result);
+    run_port_checks(scope, options, ctx, deadline, result);
     for (Finding& f : structural) {
       if (f.port == result.port) result.findings.push_back(std::move(f));
     }
