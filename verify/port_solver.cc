@@ -5,7 +5,12 @@
 namespace arbc::verify {
 
 PortSolver::PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_point deadline)
-    : scope_(scope), deadline_(deadline), ctx_(ctx), solver_(ctx_), all_events_(ctx_), holds_(ctx_) {
+    : scope_(scope),
+      deadline_(deadline),
+      ctx_(ctx),
+      solver_(ctx_),
+      all_events_(ctx_),
+      holds_(ctx_) {
   for (const std::string& e : scope_.events) {
     event_vars_.push_back(ctx_.bool_const(e.c_str()));
     all_events_.push_back(event_vars_.back());

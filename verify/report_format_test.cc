@@ -31,11 +31,7 @@ std::string read(const std::string& path) {
   return s.str();
 }
 
-model::App take_mutant() {
-  model::App app = testing::table_clean_model();
-  testing::connection(app, "take").constraint = testing::parse("e_arm_idle and e_pull_idle");
-  return app;
-}
+model::App take_mutant() { return testing::table_clean_take_mutant(); }
 
 // Each fixture is the C++ model serialised; ARBC_UPDATE_GOLDEN=1 rewrites them.
 TEST(Fixtures, AppJsonFilesMatchTheModels) {
@@ -63,7 +59,10 @@ std::vector<InputReport> reports(const model::App& app, VerifyOptions options = 
 
 TEST(TextFormat, ProvedSaysWhatWasProvedWithoutTimings) {
   std::string text = format_text(reports(testing::table_clean_model()), nullptr, false);
-  EXPECT_THAT(text, HasSubstr("PickAndPlace.cmd: proved: at most one of 2 rules (take, put)"));
+  EXPECT_THAT(text,
+              HasSubstr("PickAndPlace.cmd: proved: rules take, put are never selected together"));
+  EXPECT_THAT(text,
+              HasSubstr("over 3 events (e_arm_idle, e_pull_idle, e_taken); invariants used: none"));
   EXPECT_THAT(text, HasSubstr("HeadControl.gaze (by priority): proved"));
   EXPECT_THAT(text, HasSubstr("3 asserts hold"));
   EXPECT_THAT(text, HasSubstr("proved: 4 ports, 6 rules; 0 errors, 0 warnings\n"));
@@ -73,11 +72,13 @@ TEST(TextFormat, ProvedSaysWhatWasProvedWithoutTimings) {
 
 TEST(TextFormat, RefutedQuotesTheRule) {
   SourceCache sources;
-  sources.add(testing::table_clean_spec_path(), read(fixture_path("table_clean.spec")));
+  sources.add("tests/verify/table_clean_take_mutant.spec",
+              read(fixture_path("table_clean_take_mutant.spec")));
   std::string text = format_text(reports(take_mutant()), &sources, false);
-  EXPECT_THAT(text, HasSubstr("tests/verify/table_clean.spec:31:3: error: rules 'take' and 'put' "
-                              "of PickAndPlace.cmd can both be selected in one state [exclusive]\n"
-                              "    take: from ObjectDetector.objects"));
+  EXPECT_THAT(text,
+              HasSubstr("tests/verify/table_clean_take_mutant.spec:31:3: error: rules 'take' "
+                        "and 'put' of PickAndPlace.cmd can both be selected in one state "
+                        "[exclusive]\n    take: from ObjectDetector.objects when e_arm_idle"));
   EXPECT_THAT(text, HasSubstr("present: e_arm_idle, e_pull_idle, e_taken; absent: none"));
   EXPECT_THAT(text, HasSubstr("refuted: 4 ports"));
 }
@@ -107,7 +108,7 @@ TEST(SarifFormat, OneResultPerFindingWithRuleIdAndLocation) {
   EXPECT_EQ(results[0]["ruleId"], "exclusive");
   EXPECT_EQ(results[0]["level"], "error");
   const auto& loc = results[0]["locations"][0]["physicalLocation"];
-  EXPECT_EQ(loc["artifactLocation"]["uri"], "tests/verify/table_clean.spec");
+  EXPECT_EQ(loc["artifactLocation"]["uri"], "tests/verify/table_clean_take_mutant.spec");
   EXPECT_EQ(loc["region"]["startLine"], 31);
   EXPECT_EQ(results[1]["ruleId"], "assert");
   bool documented = false;

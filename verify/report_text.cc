@@ -34,24 +34,30 @@ std::string port_line(const PortResult& p, bool stats) {
   line += ": ";
   line += verdict_name(p.verdict);
   if (p.verdict == Verdict::Proved) {
-    line += ": at most one of " + plural(p.rules.size(), "rule") + " (" + join(p.rules) +
-            ") is selected in every state of " + plural(p.events.size(), "event") + " (" +
-            join(p.events) + "); invariants used: " + join(p.invariants);
-    if (p.exclusive_groups)
-      line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
+    line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
+                                : ": rules " + join(p.rules) + " are never selected together";
     if (p.complete) line += "; some rule is selected in every state";
     if (p.asserts) line += "; " + plural(static_cast<size_t>(p.asserts), "assert") + " hold";
-  } else if (p.verdict == Verdict::Unknown) {
-    line += " (" + p.unknown_reason + ")";
+  } else {
+    if (p.verdict == Verdict::Unknown) line += " (" + p.unknown_reason + ")";
+    size_t errors = 0, warnings = 0;
+    for (const Finding& f : p.findings) {
+      errors += f.severity == Severity::Error;
+      warnings += f.severity == Severity::Warning;
+    }
+    line += ": " + plural(errors, "error") + ", " + plural(warnings, "warning");
   }
   if (p.overlapping_pairs) {
-    line += "; " + plural(static_cast<size_t>(p.overlapping_pairs), "overlapping pair") + ", " +
-            std::to_string(p.reported_pairs) + " shown";
+    line += "; " + plural(static_cast<size_t>(p.overlapping_pairs), "overlapping pair") + " (" +
+            std::to_string(p.reported_pairs) + " shown)";
   }
   if (stats) {
-    line += " [" + seconds_text(p.seconds) + ", " +
-            std::to_string(p.solver_queries) + " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
+    line += " [" + seconds_text(p.seconds) + ", " + std::to_string(p.solver_queries) +
+            " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
   }
+  line += "\n    over " + plural(p.events.size(), "event") + " (" + join(p.events) +
+          "); invariants used: " + join(p.invariants);
+  if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
   return line + "\n";
 }
 

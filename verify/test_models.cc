@@ -172,6 +172,21 @@ model::App table_clean_model() {
   return app;
 }
 
+model::App table_clean_take_mutant() {
+  model::App app = table_clean_model();
+  connection(app, "take").constraint = parse("e_arm_idle and e_pull_idle");
+  // Point every location at the mutated spec, so diagnostics quote the line as changed.
+  const std::string spec = "tests/verify/table_clean_take_mutant.spec";
+  app.spec_file = spec;
+  for (model::Event& e : app.events) e.loc.file = spec;
+  for (model::Connection& c : app.connections) c.loc.file = spec;
+  for (model::ArbitratedPort& p : app.arbitrated_ports) {
+    p.loc.file = spec;
+    for (model::Assertion& a : p.asserts) a.loc.file = spec;
+  }
+  return app;
+}
+
 model::App search_and_track_model() {
   using model::Direction;
   model::App app;

@@ -14,6 +14,9 @@ namespace arbc::verify::testing {
 std::string table_clean_spec_path();
 
 model::App table_clean_model();
+// table_clean with `not e_taken and` removed from `take`
+// (tests/verify/table_clean_take_mutant.spec).
+model::App table_clean_take_mutant();
 model::App search_and_track_model();
 
 // Helpers to edit models in tests.
