@@ -65,7 +65,11 @@ class PortChecker {
  public:
   PortChecker(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
               Clock::time_point deadline, PortResult& result)
-      : scope_(scope), options_(options), solver_(scope, ctx, deadline), result_(result) {}
+      : scope_(scope),
+        options_(options),
+        solver_(scope, ctx, deadline),
+        shortcut_(scope),
+        result_(result) {}
 
   void run() {
     check_dead();
@@ -99,7 +103,9 @@ class PortChecker {
 
   void check_dead() {
     for (size_t i = 0; i < scope_.rules.size(); ++i) {
-      Answer a = solver_.can_hold(static_cast<int>(i));
+      Known known = shortcut_.can_hold(static_cast<int>(i));
+      if (known == Known::Yes) continue;
+      Answer a = known == Known::No ? Answer::Unsat : solver_.can_hold(static_cast<int>(i));
       if (a == Answer::Unknown)
         return unknown("whether rule '" + rule_name(scope_.rules[i]) + "' can be selected");
       if (a == Answer::Sat) continue;
@@ -125,7 +131,8 @@ class PortChecker {
     if (a == Answer::Unknown) return unknown("whether two rules can be selected together");
     if (a == Answer::Unsat) return;
     std::vector<std::pair<int, int>> pairs;
-    if (solver_.overlapping_pairs(pairs) == Answer::Unknown) {
+    auto known = [this](int i, int j) { return shortcut_.can_hold_together(i, j); };
+    if (solver_.overlapping_pairs(known, pairs) == Answer::Unknown) {
       unknown("which rules overlap");
     }
     result_.overlapping_pairs = static_cast<int>(pairs.size());
@@ -242,6 +249,7 @@ class PortChecker {
   const PortScope& scope_;
   const VerifyOptions& options_;
   PortSolver solver_;
+  CubeShortcut shortcut_;
   PortResult& result_;
 };
 

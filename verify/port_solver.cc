@@ -98,12 +98,23 @@ Answer PortSolver::can_hold(int rule) {
   return run(assumptions);
 }
 
-Answer PortSolver::overlapping_pairs(std::vector<std::pair<int, int>>& pairs) {
+Answer PortSolver::overlapping_pairs(const std::function<Known(int, int)>& known,
+                                     std::vector<std::pair<int, int>>& pairs) {
   int n = static_cast<int>(holds_.size());
   for (int i = 0; i < n; ++i) {
-    std::vector<int> candidates;
-    for (int j = i + 1; j < n; ++j) candidates.push_back(j);
-    std::vector<int> found;
+    std::vector<int> candidates, found;
+    for (int j = i + 1; j < n; ++j) {
+      switch (known(i, j)) {
+        case Known::Yes:
+          found.push_back(j);
+          break;
+        case Known::No:
+          break;
+        case Known::Unknown:
+          candidates.push_back(j);
+          break;
+      }
+    }
     while (!candidates.empty()) {
       // One query finds every partner of i that holds in the model at once.
       z3::expr_vector partners(ctx_);

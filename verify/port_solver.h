@@ -9,10 +9,12 @@
 #include <z3++.h>
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "verify/cube_shortcut.h"
 #include "verify/port_scope.h"
 
 namespace arbc::verify {
@@ -31,8 +33,10 @@ class PortSolver {
   // Can rule i hold at all?
   Answer can_hold(int rule);
   // All pairs (i, j), i < j, of rules that can hold together, in lexicographic order; Unknown
-  // when a query gave no answer (the pairs found so far are kept).
-  Answer overlapping_pairs(std::vector<std::pair<int, int>>& pairs);
+  // when a query gave no answer (the pairs found so far are kept). `known` settles pairs
+  // without a query where it can (see CubeShortcut).
+  Answer overlapping_pairs(const std::function<Known(int, int)>& known,
+                           std::vector<std::pair<int, int>>& pairs);
 
   // A state with the fewest events present in which the given rules hold, the rules in
   // `must_fail` do not hold, and `extra_false` (e.g. an assert's property) is false. Sorted
