@@ -8,7 +8,7 @@ PortSolver::PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_poi
     : scope_(scope),
       deadline_(deadline),
       ctx_(ctx),
-      solver_(ctx_),
+      solver_(ctx_, "QF_FD"),
       all_events_(ctx_),
       holds_(ctx_) {
   for (const std::string& e : scope_.events) {
