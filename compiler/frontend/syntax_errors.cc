@@ -3,6 +3,7 @@
 #include <ArbcParser.h>
 #include <antlr4-runtime.h>
 
+#include <algorithm>
 #include <set>
 
 #include "compiler/frontend/suggest.h"
@@ -176,7 +177,10 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && has("}") &&
                kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
-    } else if (wanted.size() == 1 && wanted[0] == "';'") {
+    } else if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
+               (wanted.size() == 1 ||
+                (previous && (previous->getLine() < offending->getLine() ||
+                              offending->getType() == antlr4::Token::EOF)))) {
       d.message = "expected ';' after " + context;
       // Point just past the previous token, where the ';' belongs, as compilers do.
       if (previous && (previous->getLine() != offending->getLine() ||
