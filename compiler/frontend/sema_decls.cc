@@ -104,8 +104,12 @@ class TypeResolver {
     TypePtr t = resolve(decl.type);
     active_.erase(&decl);
     done_.insert(&decl);
-    // A named record or list keeps its name in messages ("Cmd", not its fields).
-    if (t && !sema_.type_names_.count(t.get())) sema_.type_names_[t.get()] = decl.name;
+    // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
+    // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
+    bool creates = decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
+    bool registered = sema_.types_.count(decl.name) && sema_.types_.at(decl.name) == &decl;
+    if (t && creates && registered && !sema_.type_names_.count(t.get()))
+      sema_.type_names_[t.get()] = decl.name;
     return t;
   }
 

@@ -1,6 +1,7 @@
 // Semantic analysis of expressions: name resolution, types, durations, constants and
 // constraints. Every checked Expr records its type and what its names refer to (ast.h).
 #include <cmath>
+#include <cstdio>
 
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
@@ -410,7 +411,9 @@ void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, const
 void Sema::check_duration(Duration& d, const std::string& what) {
   Expr& e = *d.expr;
   if (e.kind == Expr::Kind::Number) {
-    std::string n = e.is_int ? std::to_string(static_cast<long long>(e.number)) : "0.5";
+    char n_text[32];
+    std::snprintf(n_text, sizeof n_text, "%g", e.number);
+    std::string n = n_text;
     error(e.loc, what + " needs a unit: write e.g. " + n + "s, " + n + "ms or " + n + "min",
           "duration");
     return;

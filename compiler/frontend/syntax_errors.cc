@@ -3,6 +3,7 @@
 #include <ArbcParser.h>
 #include <antlr4-runtime.h>
 
+#include <algorithm>
 #include <set>
 
 #include "compiler/frontend/suggest.h"
@@ -104,6 +105,16 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
     if (!parser || !offending) return;
     first_ = describe(parser, offending);
+    // At the real end of the file, point just past the last token rather than at an EOF
+    // token whose position the chunked parse may have guessed.
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    if (offending->getType() == antlr4::Token::EOF && !next_declaration_ && previous &&
+        first_->loc.line == static_cast<int>(offending->getLine()) &&
+        first_->loc.column == static_cast<int>(offending->getCharPositionInLine()) + 1) {
+      first_->loc = token_location(previous, file_);
+      first_->loc.column = first_->loc.end_column;
+      first_->loc.end_column = first_->loc.column + 1;
+    }
     if (offending->getType() == antlr4::Token::EOF && next_declaration_) {
       first_->loc = token_location(next_declaration_, file_);
       const std::string eof = "the end of the file";
@@ -176,7 +187,10 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && has("}") &&
                kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
-    } else if (wanted.size() == 1 && wanted[0] == "';'") {
+    } else if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
+               (wanted.size() == 1 ||
+                (previous && (previous->getLine() < offending->getLine() ||
+                              offending->getType() == antlr4::Token::EOF)))) {
       d.message = "expected ';' after " + context;
       // Point just past the previous token, where the ';' belongs, as compilers do.
       if (previous && (previous->getLine() != offending->getLine() ||
@@ -188,6 +202,15 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       } else {
         d.message += ", found " + found;
       }
+    } else if (wanted.size() == 1 && wanted[0] == "'='" && previous &&
+               previous->getType() == ArbcParser::ID && ctx->getRuleIndex() == ArbcParser::RuleStmt) {
+      // `emitt face;` parses as the start of an assignment `emitt = ...`.
+      d.loc = token_location(previous, file_);
+      d.message = "unknown statement '" + previous->getText() +
+                  "': a statement is let, var, accept, set, unset, if, emit, throttle, every, "
+                  "script, or an assignment NAME = VALUE;";
+      suggest_keyword(previous, {"let", "var", "accept", "set", "unset", "if", "emit",
+                                 "throttle", "every", "script"}, d);
     } else if (wanted.size() == 1 && kinds.count(ArbcParser::ID)) {
       d.message = "expected a name in " + context + ", found " + found;
       if (is_keyword(vocabulary, offending))
