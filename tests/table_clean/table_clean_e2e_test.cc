@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -118,6 +119,9 @@ struct Mutation {
   const char* from2 = nullptr;
   const char* to2 = nullptr;
 };
+
+// Names the mutation in test output (instead of its bytes).
+void PrintTo(const Mutation& m, std::ostream* os) { *os << m.name; }
 
 void replace_once(std::string& text, const std::string& from, const std::string& to) {
   const size_t at = text.find(from);
