@@ -10,3 +10,9 @@ echo "== arbc check specs/*.spec"
 "$arbc" check specs/*.spec
 echo "== arbc verify specs/*.spec"
 "$arbc" verify specs/*.spec
+build="${ARBC_BUILD_DIR:-$root/build}"
+echo "== arbc build specs/table_clean.spec -o out   (compile, prove, write the monitors)"
+"$arbc" build specs/table_clean.spec -o out
+echo "== arbc run out/table_clean --scenario mixed   (the paper's experiment in simulation)"
+"$arbc" run out/table_clean --plugin "$build/examples/table_clean/libarbc_table_clean.so" \
+  --scenario mixed --seed 1 --duration 120s
