@@ -5,6 +5,8 @@
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
 // was quarantined).
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -55,6 +57,21 @@ bool prepare_app_dir(const std::string& input, std::string* dir, std::string* er
            ": not an app directory (one with app.json and monitors/, written by "
            "`arbc build`) nor a .spec file";
   return false;
+}
+
+// Ctrl-C ends the run cleanly (counters, summary, trace) instead of killing it.
+std::atomic<bool> interrupted{false};
+
+void on_interrupt(int) { interrupted = true; }
+
+void watch_for_interrupt(Runtime& runtime, double period) {
+  runtime.executor().post(runtime.now() + period, [&runtime, period] {
+    if (interrupted) {
+      runtime.executor().stop();
+      return;
+    }
+    watch_for_interrupt(runtime, period);
+  });
 }
 
 void print_errors(const std::vector<std::string>& errors) {
@@ -120,7 +137,13 @@ int run_command(std::span<char*> args) {
     return kExitBadInput;
   }
 
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  watch_for_interrupt(*runtime, options.realtime ? 0.05 : 1.0);
   runtime->run();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (interrupted) std::fputs("arbc run: interrupted\n", stderr);
 
   std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", load.app.name.c_str(),
               runtime->scenario().c_str(), static_cast<unsigned long long>(options.seed),
