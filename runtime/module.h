@@ -69,11 +69,12 @@ class ModuleContext {
 };
 
 // Who delivered a message: an input port may be fed by several connections (arbitration).
+// The references are valid during the callback only.
 struct Delivery {
-  std::string port;  // this module's input port
+  const std::string& port;  // this module's input port
   const Value& value;
-  std::string connection;  // the connection's name in app.json ("take", "search", ...)
-  std::string source;      // "Module.port" it came from
+  const std::string& connection;  // the connection's name in app.json ("take", "search", ...)
+  const std::string& source;      // "Module.port" it came from
   double time = 0;
 };
 

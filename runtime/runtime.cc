@@ -268,15 +268,17 @@ void Runtime::start() {
   for (auto& m : modules_) m->module->start();
   for (auto& m : modules_) {
     double period = m->module->tick_period();
-    if (period > 0) schedule_tick(*m, period);
+    if (period > 0) schedule_tick(*m, now(), period, 1);
   }
 }
 
-void Runtime::schedule_tick(ModuleSlot& m, double period) {
-  m.tick_task = executor_->post(now() + period, [this, &m, period] {
-    m.module->tick();
-    schedule_tick(m, period);
-  });
+// Tick k runs at origin + k * period (no drift from adding the period up).
+void Runtime::schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k) {
+  m.tick_task =
+      executor_->post(origin + static_cast<double>(k) * period, [this, &m, origin, period, k] {
+        m.module->tick();
+        schedule_tick(m, origin, period, k + 1);
+      });
 }
 
 void Runtime::advance(double until) { executor_->run(until); }
@@ -299,8 +301,11 @@ void Runtime::shutdown() {
     }
   }
   if (environment_) environment_->finish();
-  // Let the trace show every lapse up to the end of the run.
+  // Let the trace show every lapse up to the end of the run, and what was left queued.
   double end = now();
+  for (auto& cp : connections_) {
+    if (!cp->queue.empty()) trace_.pending(end, cp->name, cp->queue.size());
+  }
   for (auto& in : in_ports_) in->container.present(end);
   trace_.close();
 }

@@ -49,6 +49,7 @@ struct RunOptions {
 struct ConnectionStats {
   std::string name, source, destination;
   uint64_t arrived = 0, delivered = 0, errors = 0;
+  uint64_t pending = 0;  // still queued when the run ended (arrived = delivered + drops + pending)
   std::array<uint64_t, kDropReasonCount> dropped{};
   bool quarantined = false;
   uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
@@ -113,7 +114,7 @@ class Runtime {
   // Takes c out of service; calls its destroy() when `destroy` (the monitor was created).
   void quarantine(Connection& c, const std::string& why, bool destroy = true);
   void schedule_trig(Connection& c);
-  void schedule_tick(ModuleSlot& m, double period);
+  void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
   void publish_from(ModuleSlot& m, std::string_view port, Value v);
 
   model::App app_;

@@ -7,7 +7,10 @@ namespace arbc {
 
 std::vector<ConnectionStats> Runtime::stats() const {
   std::vector<ConnectionStats> out;
-  for (const auto& c : connections_) out.push_back(c->stats);
+  for (const auto& c : connections_) {
+    out.push_back(c->stats);
+    out.back().pending = c->queue.size();
+  }
   return out;
 }
 
@@ -36,7 +39,7 @@ std::string Runtime::stats_table() const {
     std::snprintf(cell, sizeof cell, " %s", drop_reason_name(r));
     out += cell;
   }
-  out += " errors\n";
+  out += " pending errors\n";
   for (const auto& c : connections_) {
     const ConnectionStats& s = c->stats;
     std::snprintf(cell, sizeof cell, "%-*s", static_cast<int>(width), s.name.c_str());
@@ -49,8 +52,8 @@ std::string Runtime::stats_table() const {
       std::snprintf(cell, sizeof cell, " %*llu", w, static_cast<unsigned long long>(s.drops(r)));
       out += cell;
     }
-    std::snprintf(cell, sizeof cell, " %6llu%s\n", static_cast<unsigned long long>(s.errors),
-                  s.quarantined ? "  QUARANTINED" : "");
+    std::snprintf(cell, sizeof cell, " %7zu %6llu%s\n", c->queue.size(),
+                  static_cast<unsigned long long>(s.errors), s.quarantined ? "  QUARANTINED" : "");
     out += cell;
   }
   return out;

@@ -109,4 +109,12 @@ void Trace::publish_error(double t, std::string_view port, std::string_view mess
   end();
 }
 
+void Trace::pending(double t, std::string_view connection, size_t count) {
+  if (!file_) return;
+  begin(t, "pending");
+  field("connection", connection);
+  line_ += ",\"count\":" + std::to_string(count);
+  end();
+}
+
 }  // namespace arbc
