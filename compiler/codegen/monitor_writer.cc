@@ -468,7 +468,8 @@ class MonitorWriter {
     if (is_rule())
       w.line("PortMonitor.setConstraint(" + lua_string(conn_.constraint.to_string()) + ")",
              conn_.loc.line);
-    w.line("if arbc_script.create then return arbc_script.create(options) end");
+    w.line("local f = rawget(arbc_script, \"create\")");
+    w.line("if f then return f(options) end");
     w.line("return true");
     w.dedent();
     w.line("end");
@@ -476,27 +477,31 @@ class MonitorWriter {
     w.line("PortMonitor.accept = function(" + msg_ + ")");
     w.indent();
     priority_guard(w);
-    w.line("if arbc_script.accept then return arbc_script.accept(" + msg_ + ") end");
+    w.line("local f = rawget(arbc_script, \"accept\")");
+    w.line("if f then return f(" + msg_ + ") end");
     w.line("return true");
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.update = function(" + msg_ + ")");
     w.indent();
-    w.line("if arbc_script.update then return arbc_script.update(" + msg_ + ") end");
+    w.line("local f = rawget(arbc_script, \"update\")");
+    w.line("if f then return f(" + msg_ + ") end");
     w.line("return " + msg_);
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.trig = function()");
     w.indent();
-    w.line("if arbc_script.trig then return arbc_script.trig() end");
+    w.line("local f = rawget(arbc_script, \"trig\")");
+    w.line("if f then return f() end");
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.destroy = function()");
     w.indent();
-    w.line("if arbc_script.destroy then return arbc_script.destroy() end");
+    w.line("local f = rawget(arbc_script, \"destroy\")");
+    w.line("if f then return f() end");
     w.dedent();
     w.line("end");
   }
