@@ -59,6 +59,8 @@ class App {
     auto h = std::make_unique<LuaMonitorHarness>(files_[path], path, &this->port(port), name);
     EXPECT_EQ(h->load_error(), "") << path;
     EXPECT_TRUE(h->create().ok) << path;
+    for (const model::Connection& c : model().connections)
+      if (c.destination == port && c.name == name) h->set_throttle(c.throttle);
     return *(monitors_[key] = std::move(h));
   }
 
