@@ -81,6 +81,7 @@ class Sema {
   std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
   std::map<const Type*, std::string> type_names_;
   std::map<std::string, size_t> events_;  // name -> index in spec_.event_symbols
+  std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each
   std::vector<std::string> event_names_;
 
  private:

@@ -140,7 +140,8 @@ namespace {
 // Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
 // empty (no check). Returns false if it did not resolve.
 bool resolve_port(Sema& sema, PortRef& ref, const char* role, const std::string& use) {
-  ref.module_decl = sema.spec_.find_module(ref.module);
+  auto found = sema.modules_.find(ref.module);
+  ref.module_decl = found == sema.modules_.end() ? nullptr : found->second;
   if (!ref.module_decl) {
     std::vector<std::string> names;
     for (const ModuleDecl& m : sema.spec_.modules) names.push_back(m.name);
@@ -223,7 +224,7 @@ void Sema::run() {
   for (size_t i = 0; i < spec_.consts.size(); ++i) check_const(i);
 
   // Modules and ports.
-  std::map<std::string, const ModuleDecl*> modules;
+  std::map<std::string, const ModuleDecl*>& modules = modules_;
   for (ModuleDecl& m : spec_.modules) {
     if (modules.count(m.name)) {
       error(m.loc, "module '" + m.name + "' is already defined at " +
