@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-
 namespace arbc::frontend {
 namespace {
 
@@ -166,7 +165,8 @@ TEST(Frontend, StatusFlagsMapToEvents) {
 }
 
 TEST(Frontend, IntWidensToFloatButNotTheOtherWay) {
-  std::string head = "app t;\nmodule A { out x: float; }\nmodule B { in y: int; }\nmodule C { in z: float; }\n";
+  std::string head =
+      "app t;\nmodule A { out x: float; }\nmodule B { in y: int; }\nmodule C { in z: float; }\n";
   EXPECT_TRUE(check_text(head + "connect A.x -> C.z { emit 1; }\n", "w.spec").ok());
   CheckResult r = check_text(head + "connect A.x -> B.y { emit x; }\n", "w.spec");
   EXPECT_EQ(ids(r), "emit-type ");

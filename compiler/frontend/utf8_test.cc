@@ -20,11 +20,11 @@ TEST(Utf8, ReportsTheFirstInvalidByteWithLineAndColumn) {
 }
 
 TEST(Utf8, RejectsOverlongSurrogatesTruncatedAndOutOfRange) {
-  EXPECT_TRUE(find_invalid_utf8("\xC0\xAF"));              // overlong '/'
-  EXPECT_TRUE(find_invalid_utf8("\xED\xA0\x80"));          // surrogate U+D800
-  EXPECT_TRUE(find_invalid_utf8("\xE2\x82"));              // truncated
-  EXPECT_TRUE(find_invalid_utf8("\xF4\x90\x80\x80"));      // above U+10FFFF
-  EXPECT_TRUE(find_invalid_utf8("\x80"));                  // lone continuation byte
+  EXPECT_TRUE(find_invalid_utf8("\xC0\xAF"));          // overlong '/'
+  EXPECT_TRUE(find_invalid_utf8("\xED\xA0\x80"));      // surrogate U+D800
+  EXPECT_TRUE(find_invalid_utf8("\xE2\x82"));          // truncated
+  EXPECT_TRUE(find_invalid_utf8("\xF4\x90\x80\x80"));  // above U+10FFFF
+  EXPECT_TRUE(find_invalid_utf8("\x80"));              // lone continuation byte
 }
 
 }  // namespace

@@ -37,8 +37,8 @@ class CheckRobustness : public ::testing::Test {
   // Runs `arbc check ARGS`, with a time limit so a hang fails instead of blocking the suite.
   Outcome check(const std::string& args) {
     fs::path out = dir_ / "output.txt";
-    std::string command = "timeout 60 " + std::string(ARBC_BINARY_DIR) + "/cli/arbc check " +
-                          args + " > " + out.string() + " 2>&1";
+    std::string command = "timeout 60 " + std::string(ARBC_BINARY_DIR) + "/cli/arbc check " + args +
+                          " > " + out.string() + " 2>&1";
     int status = std::system(command.c_str());
     Outcome r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -71,9 +71,10 @@ TEST_F(CheckRobustness, RandomBytes) {
 
 TEST_F(CheckRobustness, RandomAsciiTokens) {
   // Valid UTF-8 built from the language's own vocabulary: exercises the parser's recovery.
-  const char* words[] = {"app", "module", "{", "}", "(", ")", ";", ":", ".", "->", "=>", "in",
-                         "out", "arbitrate", "when", "not", "and", "x", "1s", "\"s\"", "emit",
-                         "if", "else", "[", "]", ",", "=", "+", "event", "otherwise", "0.5"};
+  const char* words[] = {"app", "module", "{",  "}",     "(",     ")",         ";",    ":",
+                         ".",   "->",     "=>", "in",    "out",   "arbitrate", "when", "not",
+                         "and", "x",      "1s", "\"s\"", "emit",  "if",        "else", "[",
+                         "]",   ",",      "=",  "+",     "event", "otherwise", "0.5"};
   std::mt19937 rng(7);
   for (int i = 0; i < 30; ++i) {
     std::string text;
@@ -92,8 +93,8 @@ TEST_F(CheckRobustness, NotUtf8) {
 }
 
 TEST_F(CheckRobustness, TenThousandNestedParentheses) {
-  std::string spec = "app t;\nconst C = " + std::string(10000, '(') + "1" +
-                     std::string(10000, ')') + ";\n";
+  std::string spec =
+      "app t;\nconst C = " + std::string(10000, '(') + "1" + std::string(10000, ')') + ";\n";
   Outcome r = check(write("deep.spec", spec));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("nesting is deeper than 100 levels"), std::string::npos) << r.output;
@@ -131,7 +132,8 @@ TEST_F(CheckRobustness, TenMegabyteSpecIsValid) {
     spec += "module A" + std::to_string(ports) + " { in c: float; }\narbitrate A" +
             std::to_string(ports) + ".c {\n";
     for (int k = 0; k < 100; ++k)
-      spec += "  r" + std::to_string(k) + ": from S.v when false { accept v > 0.5; emit v * 2.0; }\n";
+      spec +=
+          "  r" + std::to_string(k) + ": from S.v when false { accept v > 0.5; emit v * 2.0; }\n";
     spec += "}\n";
     ++ports;
   }
