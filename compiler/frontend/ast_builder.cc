@@ -4,29 +4,33 @@
 #include <antlr4-runtime.h>
 
 #include <cstdlib>
+#include <typeinfo>
 
 #include "compiler/frontend/token_checks.h"
+#include "compiler/frontend/token_text.h"
 
 namespace arbc::frontend {
 
 using arbc_grammar::ArbcParser;
 using namespace ast;
 
-namespace {
+// The parse tree node as a `T` if it is exactly one (labelled alternatives are leaf classes),
+// else null. typeid comparison is much cheaper than dynamic_cast on large specs.
+template <typename T, typename Node>
+T* as(Node* node) {
+  return node && typeid(*node) == typeid(T) ? static_cast<T*>(node) : nullptr;
+}
 
 class Builder {
  public:
-  Builder(const std::string& file, std::vector<Diagnostic>& out) : file_(file), out_(out) {}
+  Builder(const std::string& file, std::string_view source, std::vector<Diagnostic>& out)
+      : file_(file), text_(source), out_(out) {}
 
-  // spec : decl* EOF ;
-  std::unique_ptr<Spec> build(ArbcParser::SpecContext* ctx) {
-    auto spec = std::make_unique<Spec>();
-    spec->file = file_;
-    for (ArbcParser::DeclContext* decl : ctx->decl()) add_decl(*spec, decl);
-    return spec;
-  }
+  // decl : appDecl | typeDecl | ... | assertDecl ;   (add_decl, below)
 
- private:
+  std::string tx(antlr4::Token* token) const { return text_.text(token); }
+  std::string tx(antlr4::tree::TerminalNode* node) const { return text_.text(node->getSymbol()); }
+
   // ---- locations --------------------------------------------------------------------------
   Loc loc(antlr4::Token* token) const { return token_location(token, file_); }
   Loc loc(antlr4::tree::TerminalNode* node) const { return loc(node->getSymbol()); }
@@ -34,9 +38,10 @@ class Builder {
     Loc l = loc(ctx->getStart());
     antlr4::Token* stop = ctx->getStop();
     if (stop && stop->getTokenIndex() >= ctx->getStart()->getTokenIndex()) {
-      Loc end = loc(stop);
-      l.end_line = end.end_line;
-      l.end_column = end.end_column;
+      // The end of the stop token, computed without building a second location.
+      l.end_line = static_cast<int>(stop->getLine());
+      l.end_column = static_cast<int>(stop->getCharPositionInLine()) + 1 +
+                     static_cast<int>(stop->getStopIndex() + 1 - stop->getStartIndex());
     }
     return l;
   }
@@ -52,7 +57,7 @@ class Builder {
   // ---- literals -----------------------------------------------------------------------------
   // STRING : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;   escapes: \" \\ \n \t \r
   std::string decode_string(antlr4::tree::TerminalNode* node) {
-    std::string raw = node->getText();
+    std::string raw = tx(node);
     std::string out;
     for (size_t i = 1; i + 1 < raw.size(); ++i) {
       if (raw[i] != '\\') {
@@ -61,11 +66,21 @@ class Builder {
       }
       char c = raw[++i];
       switch (c) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
+        case '"':
+          out += '"';
+          break;
+        case '\\':
+          out += '\\';
+          break;
+        case 'n':
+          out += '\n';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'r':
+          out += '\r';
+          break;
         default: {
           Loc where = loc(node);
           where.column += static_cast<int>(i) - 1;
@@ -100,11 +115,13 @@ class Builder {
       t.kind = TypeExpr::Kind::Bool;
       return t;
     }
-    if (auto* named = dynamic_cast<ArbcParser::NamedTypeContext*>(ctx)) {
-      std::string name = named->ID()->getText();
+    if (auto* named = as<ArbcParser::NamedTypeContext>(ctx)) {
+      std::string name = tx(named->ID());
       static const std::pair<const char*, TypeExpr::Kind> kScalars[] = {
-          {"bool", TypeExpr::Kind::Bool},     {"int", TypeExpr::Kind::Int},
-          {"float", TypeExpr::Kind::Float},   {"string", TypeExpr::Kind::String},
+          {"bool", TypeExpr::Kind::Bool},
+          {"int", TypeExpr::Kind::Int},
+          {"float", TypeExpr::Kind::Float},
+          {"string", TypeExpr::Kind::String},
           {"vec3", TypeExpr::Kind::Vec3}};
       if (name == "list") {
         t.kind = TypeExpr::Kind::List;
@@ -122,15 +139,15 @@ class Builder {
       for (auto [scalar, kind] : kScalars)
         if (name == scalar) t.kind = kind;
       if (named->typeExpr())
-        error(loc(named->typeExpr()), "type '" + name + "' takes no type argument; only list<T> does",
-              "bad-type");
+        error(loc(named->typeExpr()),
+              "type '" + name + "' takes no type argument; only list<T> does", "bad-type");
       return t;
     }
-    auto* record = dynamic_cast<ArbcParser::RecordTypeContext*>(ctx);
+    auto* record = as<ArbcParser::RecordTypeContext>(ctx);
     t.kind = TypeExpr::Kind::Record;
     for (ArbcParser::FieldTypeContext* field : record->fieldType()) {
-      t.fields.emplace_back(field->ID()->getText(), std::make_unique<TypeExpr>(type_expr(
-                                                        field->typeExpr(), depth + 1)));
+      t.fields.emplace_back(tx(field->ID()),
+                            std::make_unique<TypeExpr>(type_expr(field->typeExpr(), depth + 1)));
       t.field_locs.push_back(loc(field->ID()));
     }
     return t;
@@ -167,35 +184,34 @@ class Builder {
   ExprPtr expr(ArbcParser::ExprContext* ctx, int depth) {
     Loc where = loc(ctx);
     if (too_deep(depth, where)) return placeholder(where);
-    if (auto* c = dynamic_cast<ArbcParser::PrimaryExprContext*>(ctx))
-      return primary(c->primary(), depth);
-    if (auto* c = dynamic_cast<ArbcParser::FieldExprContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx)) return primary(c->primary(), depth);
+    if (auto* c = as<ArbcParser::FieldExprContext>(ctx)) {
       auto e = make(Expr::Kind::Field, where);
-      e->text = c->ID()->getText();
+      e->text = tx(c->ID());
       e->args.push_back(expr(c->expr(), depth + 1));
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::IndexExprContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::IndexExprContext>(ctx)) {
       auto e = make(Expr::Kind::Index, where);
       e->args.push_back(expr(c->expr(0), depth + 1));
       e->args.push_back(expr(c->expr(1), depth + 1));
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::NegExprContext*>(ctx)) return unary("-", c->expr(), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::NotExprContext*>(ctx)) return unary("not", c->expr(), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::MulExprContext*>(ctx))
-      return binary(c->op->getText(), c->expr(0), c->expr(1), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::AddExprContext*>(ctx))
-      return binary(c->op->getText(), c->expr(0), c->expr(1), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::CompareExprContext*>(ctx))
-      return binary(c->op->getText(), c->expr(0), c->expr(1), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::AndExprContext*>(ctx))
+    if (auto* c = as<ArbcParser::NegExprContext>(ctx)) return unary("-", c->expr(), where, depth);
+    if (auto* c = as<ArbcParser::NotExprContext>(ctx)) return unary("not", c->expr(), where, depth);
+    if (auto* c = as<ArbcParser::MulExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::AddExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::CompareExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::AndExprContext>(ctx))
       return binary("and", c->expr(0), c->expr(1), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::OrExprContext*>(ctx))
+    if (auto* c = as<ArbcParser::OrExprContext>(ctx))
       return binary("or", c->expr(0), c->expr(1), where, depth);
-    if (auto* c = dynamic_cast<ArbcParser::LambdaExprContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::LambdaExprContext>(ctx)) {
       auto e = make(Expr::Kind::Lambda, where);
-      e->text = c->ID()->getText();
+      e->text = tx(c->ID());
       e->field_locs.push_back(loc(c->ID()));  // the parameter's location
       e->args.push_back(expr(c->expr(), depth + 1));
       return e;
@@ -224,57 +240,55 @@ class Builder {
   //         | ID '(' args ')' | ID | '(' expr ')' | '{' fieldInits '}' | '[' exprs ']' ;
   ExprPtr primary(ArbcParser::PrimaryContext* ctx, int depth) {
     Loc where = loc(ctx);
-    if (auto* c = dynamic_cast<ArbcParser::NumberLitContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::NumberLitContext>(ctx)) {
       auto e = make(Expr::Kind::Number, where);
-      std::string text = c->NUMBER()->getText();
+      std::string text = tx(c->NUMBER());
       e->number = std::strtod(text.c_str(), nullptr);
       e->is_int = text.find_first_of(".eE") == std::string::npos;
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::DurationLitContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
       auto e = make(Expr::Kind::Duration, where);
-      e->number = seconds_of_duration(c->DURATION()->getText());
+      e->number = seconds_of_duration(tx(c->DURATION()));
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::StringLitContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::StringLitContext>(ctx)) {
       auto e = make(Expr::Kind::String, where);
       e->text = decode_string(c->STRING());
       return e;
     }
-    if (dynamic_cast<ArbcParser::TrueLitContext*>(ctx) ||
-        dynamic_cast<ArbcParser::FalseLitContext*>(ctx)) {
+    if (as<ArbcParser::TrueLitContext>(ctx) || as<ArbcParser::FalseLitContext>(ctx)) {
       auto e = make(Expr::Kind::Bool, where);
-      e->boolean = dynamic_cast<ArbcParser::TrueLitContext*>(ctx) != nullptr;
+      e->boolean = as<ArbcParser::TrueLitContext>(ctx) != nullptr;
       return e;
     }
-    if (dynamic_cast<ArbcParser::OtherwiseLitContext*>(ctx))
-      return make(Expr::Kind::Otherwise, where);
-    if (auto* c = dynamic_cast<ArbcParser::CallExprContext*>(ctx)) {
+    if (as<ArbcParser::OtherwiseLitContext>(ctx)) return make(Expr::Kind::Otherwise, where);
+    if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
       auto e = make(Expr::Kind::Call, where);
-      e->text = c->ID()->getText();
+      e->text = tx(c->ID());
       e->field_locs.push_back(loc(c->ID()));  // the callee's location
       for (ArbcParser::ExprContext* arg : c->expr()) e->args.push_back(expr(arg, depth + 1));
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::NameExprContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::NameExprContext>(ctx)) {
       auto e = make(Expr::Kind::Name, where);
-      e->text = c->ID()->getText();
+      e->text = tx(c->ID());
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::ParenExprContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::ParenExprContext>(ctx)) {
       ExprPtr inner = expr(c->expr(), depth + 1);
       return inner;
     }
-    if (auto* c = dynamic_cast<ArbcParser::RecordLitContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::RecordLitContext>(ctx)) {
       auto e = make(Expr::Kind::Record, where);
       for (ArbcParser::FieldInitContext* field : c->fieldInit()) {
-        e->field_names.push_back(field->ID()->getText());
+        e->field_names.push_back(tx(field->ID()));
         e->field_locs.push_back(loc(field->ID()));
         e->args.push_back(expr(field->expr(), depth + 1));
       }
       return e;
     }
-    if (auto* c = dynamic_cast<ArbcParser::ListLitContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::ListLitContext>(ctx)) {
       auto e = make(Expr::Kind::List, where);
       for (ArbcParser::ExprContext* item : c->expr()) e->args.push_back(expr(item, depth + 1));
       return e;
@@ -288,15 +302,15 @@ class Builder {
     Loc where = loc(ctx);
     if (ctx->DURATION()) {
       d.expr = make(Expr::Kind::Duration, where);
-      d.expr->number = seconds_of_duration(ctx->DURATION()->getText());
+      d.expr->number = seconds_of_duration(tx(ctx->DURATION()));
     } else if (ctx->NUMBER()) {
       d.expr = make(Expr::Kind::Number, where);
-      std::string text = ctx->NUMBER()->getText();
+      std::string text = tx(ctx->NUMBER());
       d.expr->number = std::strtod(text.c_str(), nullptr);
       d.expr->is_int = text.find_first_of(".eE") == std::string::npos;
     } else {
       d.expr = make(Expr::Kind::Name, where);
-      d.expr->text = ctx->ID()->getText();
+      d.expr->text = tx(ctx->ID());
     }
     return d;
   }
@@ -323,64 +337,64 @@ class Builder {
   }
 
   void set_name(Stmt& s, antlr4::tree::TerminalNode* id) {
-    s.name = id->getText();
+    s.name = tx(id);
     s.name_loc = loc(id);
   }
 
   // stmt : let | var | assign | accept | set | unset | if | emit | throttle | every | script
   std::unique_ptr<Stmt> stmt(ArbcParser::StmtContext* ctx, int depth) {
-    if (auto* c = dynamic_cast<ArbcParser::LetStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::LetStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Let, c);
       set_name(*s, c->ID());
       s->expr = expr(c->expr(), depth + 1);
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::VarStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::VarStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Var, c);
       set_name(*s, c->ID());
       s->expr = expr(c->expr(), depth + 1);
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::AssignStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::AssignStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Assign, c);
       set_name(*s, c->ID());
       s->expr = expr(c->expr(), depth + 1);
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::AcceptStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::AcceptStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Accept, c);
       s->expr = expr(c->expr(), depth + 1);
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::SetStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::SetStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Set, c);
       set_name(*s, c->ID());
       s->duration = optional_duration(c->duration());
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::UnsetStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::UnsetStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Unset, c);
       set_name(*s, c->ID());
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::IfStmtContext*>(ctx)) return if_chain(c, depth);
-    if (auto* c = dynamic_cast<ArbcParser::EmitStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::IfStmtContext>(ctx)) return if_chain(c, depth);
+    if (auto* c = as<ArbcParser::EmitStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Emit, c);
       s->expr = expr(c->expr(), depth + 1);
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::ThrottleStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::ThrottleStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Throttle, c);
       s->duration = duration(c->duration());
       return s;
     }
-    if (auto* c = dynamic_cast<ArbcParser::EveryStmtContext*>(ctx)) {
+    if (auto* c = as<ArbcParser::EveryStmtContext>(ctx)) {
       auto s = make_stmt(Stmt::Kind::Every, c);
       s->duration = duration(c->duration());
       s->body = block(c->block(), depth + 1);
       return s;
     }
-    auto* c = dynamic_cast<ArbcParser::ScriptStmtContext*>(ctx);
+    auto* c = as<ArbcParser::ScriptStmtContext>(ctx);
     auto s = make_stmt(Stmt::Kind::Script, ctx);
     if (c) s->text = decode_string(c->STRING());
     return s;
@@ -399,8 +413,10 @@ class Builder {
     for (size_t i = conditions.size(); i-- > 0;) {
       auto s = make_stmt(Stmt::Kind::If, c);
       s->loc = loc(conditions[i]->getStart());
-      if (i > 0) s->loc = loc(conditions[i]);  // an else-if link: point at its condition
-      else s->loc = loc(c->getStart());
+      if (i > 0)
+        s->loc = loc(conditions[i]);  // an else-if link: point at its condition
+      else
+        s->loc = loc(c->getStart());
       int link_depth = depth + static_cast<int>(i);
       s->expr = expr(conditions[i], link_depth + 1);
       s->body = block(blocks[i], link_depth + 1);
@@ -419,48 +435,49 @@ class Builder {
   // ---- declarations -------------------------------------------------------------------------
   PortRef port_ref(ArbcParser::PortRefContext* ctx) {
     PortRef p;
-    p.module = ctx->ID(0)->getText();
-    p.port = ctx->ID(1)->getText();
+    p.module = tx(ctx->ID(0));
+    p.port = tx(ctx->ID(1));
     p.loc = loc(ctx);
     return p;
   }
 
   void add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
+    reported_depth_ = false;
     if (auto* c = ctx->appDecl()) {
       AppDecl app;
-      app.name = c->ID()->getText();
+      app.name = tx(c->ID());
       if (c->STRING()) app.doc = decode_string(c->STRING());
       app.loc = loc(c->ID());
       if (spec.app) {
-        error(app.loc, "the app is already declared as '" + spec.app->name + "' at line " +
-                           std::to_string(spec.app->loc.line) + ": a spec describes one app",
+        error(app.loc,
+              "the app is already declared as '" + spec.app->name + "' at line " +
+                  std::to_string(spec.app->loc.line) + ": a spec describes one app",
               "duplicate");
         return;
       }
       spec.app = std::move(app);
     } else if (auto* c = ctx->typeDecl()) {
       TypeDecl t;
-      t.name = c->ID()->getText();
+      t.name = tx(c->ID());
       t.loc = loc(c->ID());
       t.type = type_expr(c->typeExpr());
       spec.types.push_back(std::move(t));
     } else if (auto* c = ctx->constDecl()) {
       ConstDecl k;
-      k.name = c->ID()->getText();
+      k.name = tx(c->ID());
       k.loc = loc(c->ID());
       k.value = expr(c->expr(), 0);
       spec.consts.push_back(std::move(k));
     } else if (auto* c = ctx->moduleDecl()) {
       ModuleDecl m;
-      m.name = c->ID()->getText();
+      m.name = tx(c->ID());
       m.loc = loc(c->ID());
       if (c->STRING()) m.doc = decode_string(c->STRING());
       for (ArbcParser::PortDeclContext* p : c->portDecl()) {
         PortDecl port;
-        port.name = p->ID()->getText();
+        port.name = tx(p->ID());
         port.loc = loc(p->ID());
-        port.direction =
-            p->direction->getText() == "in" ? model::Direction::In : model::Direction::Out;
+        port.direction = tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
         port.type = type_expr(p->typeExpr());
         m.ports.push_back(std::move(port));
       }
@@ -468,12 +485,12 @@ class Builder {
     } else if (auto* c = ctx->eventDecl()) {
       EventDecl e;
       e.loc = loc(c);
-      for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({id->getText(), loc(id)});
+      for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({tx(id), loc(id)});
       e.lifetime = optional_duration(c->duration());
       spec.events.push_back(std::move(e));
     } else if (auto* c = ctx->derivedEventDecl()) {
       DerivedEventDecl e;
-      e.name = c->ID()->getText();
+      e.name = tx(c->ID());
       e.loc = loc(c->ID());
       e.source = port_ref(c->portRef());
       e.predicate = expr(c->expr(), 0);
@@ -485,7 +502,7 @@ class Builder {
       e.source = port_ref(c->portRef());
       for (ArbcParser::StatusEntryContext* entry : c->statusEntry()) {
         StatusEventDecl::Entry x;
-        x.event = entry->ID()->getText();
+        x.event = tx(entry->ID());
         x.flag = entry->STRING() ? decode_string(entry->STRING()) : x.event;
         x.loc = loc(entry);
         e.entries.push_back(std::move(x));
@@ -495,7 +512,7 @@ class Builder {
     } else if (auto* c = ctx->exclusiveDecl()) {
       ExclusiveDecl x;
       x.loc = loc(c);
-      for (antlr4::tree::TerminalNode* id : c->ID()) x.events.push_back({id->getText(), loc(id)});
+      for (antlr4::tree::TerminalNode* id : c->ID()) x.events.push_back({tx(id), loc(id)});
       spec.exclusives.push_back(std::move(x));
     } else if (auto* c = ctx->invariantDecl()) {
       InvariantDecl inv;
@@ -524,17 +541,19 @@ class Builder {
       AssertDecl a;
       a.loc = loc(c->getStart());
       a.port = port_ref(c->portRef());
-      a.rule = c->ID()->getText();
+      a.rule = tx(c->ID());
       a.rule_loc = loc(c->ID());
       a.property = expr(c->expr(), 0);
       spec.asserts.push_back(std::move(a));
     }
   }
 
+  // ---- rules (private below) --------------------------------------------------------------
+ private:
   // ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
   Rule rule(ArbcParser::RuleDeclContext* c) {
     Rule r;
-    r.name = c->ID()->getText();
+    r.name = tx(c->ID());
     r.loc = loc(c->ID());
     r.source = port_ref(c->portRef());
     if (c->expr()) r.when = expr(c->expr(), 0);
@@ -547,16 +566,23 @@ class Builder {
   }
 
   const std::string& file_;
+  TokenText text_;
   std::vector<Diagnostic>& out_;
   bool reported_depth_ = false;
 };
 
-}  // namespace
-
-std::unique_ptr<Spec> build_ast(void* tree, const std::string& file,
-                                std::vector<Diagnostic>& out) {
-  Builder builder(file, out);
-  return builder.build(static_cast<ArbcParser::SpecContext*>(tree));
+AstBuilder::AstBuilder(const std::string& file, std::string_view source,
+                       std::vector<Diagnostic>& out)
+    : builder_(std::make_unique<Builder>(file, source, out)), spec_(std::make_unique<Spec>()) {
+  spec_->file = file;
 }
+
+AstBuilder::~AstBuilder() = default;
+
+void AstBuilder::add_declaration(void* decl) {
+  builder_->add_decl(*spec_, static_cast<ArbcParser::DeclContext*>(decl));
+}
+
+std::unique_ptr<Spec> AstBuilder::finish() { return std::move(spec_); }
 
 }  // namespace arbc::frontend

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/diagnostic.h"
@@ -16,11 +17,25 @@ class ArbcParser;
 
 namespace arbc::frontend {
 
-// Builds the AST of a parse tree that has no syntax errors. Problems the grammar lets through
-// (bad string escapes, chains nested too deeply, malformed types) are appended to `out`; the
-// AST is still complete, with placeholders where those were.
-// `tree` is an ArbcParser::SpecContext*.
-std::unique_ptr<ast::Spec> build_ast(void* tree, const std::string& file,
-                                     std::vector<Diagnostic>& out);
+class Builder;
+
+// Builds the AST one top-level declaration at a time, so the caller can free each
+// declaration's parse tree before parsing the next. Problems the grammar lets through (bad
+// string escapes, chains nested too deeply, malformed types) are appended to `out`; the AST
+// is still complete, with placeholders where those were.
+class AstBuilder {
+ public:
+  // `source` is the text the parser read; it must outlive the builder.
+  AstBuilder(const std::string& file, std::string_view source, std::vector<Diagnostic>& out);
+  ~AstBuilder();
+  // `decl` is an ArbcParser::DeclContext* without syntax errors.
+  void add_declaration(void* decl);
+  // The spec built so far; the builder is spent afterwards.
+  std::unique_ptr<ast::Spec> finish();
+
+ private:
+  std::unique_ptr<Builder> builder_;
+  std::unique_ptr<ast::Spec> spec_;
+};
 
 }  // namespace arbc::frontend

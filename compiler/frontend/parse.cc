@@ -18,9 +18,9 @@ using arbc_grammar::ArbcParser;
 
 namespace {
 
-const std::set<std::string> kDeclStarts = {"app",       "type",      "const",   "module",
-                                           "event",     "events",    "exclusive", "invariant",
-                                           "arbitrate", "connect",   "assert"};
+const std::set<std::string> kDeclStarts = {"app",       "type",    "const",     "module",
+                                           "event",     "events",  "exclusive", "invariant",
+                                           "arbitrate", "connect", "assert"};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket
 // depth 0 starts a new one. Text before the first keyword is a range of its own.
@@ -66,6 +66,26 @@ void report_syntax_errors(const std::vector<antlr4::Token*>& tokens, const std::
   }
 }
 
+// ANTLR's input stream decodes UTF-8 with std::wstring_convert, which is slow on large specs.
+// The text is already validated, so decode it directly into the stream's UTF-32 buffer.
+class Utf8InputStream : public antlr4::ANTLRInputStream {
+ public:
+  explicit Utf8InputStream(std::string_view utf8) {
+    _data.clear();
+    _data.reserve(utf8.size());
+    for (size_t i = 0; i < utf8.size();) {
+      unsigned char b = static_cast<unsigned char>(utf8[i]);
+      size_t len = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
+      char32_t code = len == 1 ? b : len == 2 ? (b & 0x1F) : len == 3 ? (b & 0x0F) : (b & 0x07);
+      for (size_t k = 1; k < len && i + k < utf8.size(); ++k)
+        code = (code << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3F);
+      _data.push_back(code);
+      i += len;
+    }
+    p = 0;
+  }
+};
+
 Diagnostic file_error(const std::string& file, int line, int column, std::string message,
                       std::string id) {
   Diagnostic d;
@@ -86,15 +106,15 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   if (auto bad = find_invalid_utf8(text)) {
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad->offset]));
-    result.diagnostics.push_back(file_error(
-        file, bad->line, bad->column,
-        "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
-            std::to_string(bad->offset) + "): save it as UTF-8 text",
-        "invalid-utf8"));
+    result.diagnostics.push_back(
+        file_error(file, bad->line, bad->column,
+                   "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
+                       std::to_string(bad->offset) + "): save it as UTF-8 text",
+                   "invalid-utf8"));
     return result;
   }
 
-  antlr4::ANTLRInputStream input(text.data(), text.size());
+  Utf8InputStream input(text);
   ArbcLexer lexer(&input);
   lexer.removeErrorListeners();  // ERROR_CHAR catches everything the lexer cannot match
   antlr4::CommonTokenStream stream(&lexer);
@@ -106,35 +126,46 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   check_lexical(tokens, file, result.diagnostics);
   if (!result.diagnostics.empty()) return result;
   if (tokens.size() == 1) {  // only EOF
-    result.diagnostics.push_back(file_error(
-        file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
-        "empty-spec"));
+    result.diagnostics.push_back(
+        file_error(file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
+                   "empty-spec"));
     return result;
   }
-  if (!check_nesting(tokens, file, result.diagnostics)) return result;
+  if (!check_nesting(tokens, lexer.getVocabulary(), file, result.diagnostics)) return result;
 
-  // Fast path: SLL prediction, bail at the first error. Retried with full LL before we
-  // conclude that the text really has a syntax error.
+  // One declaration at a time: SLL prediction first (fast), full LL if SLL fails, and each
+  // declaration's parse tree is freed once its AST is built, so memory stays proportional to
+  // the AST rather than to ANTLR's much larger trees. Any failure switches to
+  // report_syntax_errors, which names one error per broken declaration.
   ArbcParser parser(&stream);
   parser.removeErrorListeners();
   parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
-  parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
-      antlr4::atn::PredictionMode::SLL);
-  ArbcParser::SpecContext* tree = nullptr;
-  try {
-    tree = parser.spec();
-  } catch (const antlr4::ParseCancellationException&) {
-    stream.seek(0);
-    parser.reset();
-    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
-        antlr4::atn::PredictionMode::LL);
-    try {
-      tree = parser.spec();
-    } catch (const antlr4::ParseCancellationException&) {
-      tree = nullptr;
+  auto* simulator = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
+  AstBuilder builder(file, text, result.diagnostics);
+  bool syntax_ok = true;
+  while (syntax_ok && stream.LA(1) != antlr4::Token::EOF) {
+    size_t start = stream.index();
+    ArbcParser::DeclContext* decl = nullptr;
+    for (auto mode : {antlr4::atn::PredictionMode::SLL, antlr4::atn::PredictionMode::LL}) {
+      simulator->setPredictionMode(mode);
+      try {
+        decl = parser.decl();
+        break;
+      } catch (const antlr4::ParseCancellationException&) {
+        parser.reset();
+        stream.seek(start);
+      }
     }
+    if (!decl) {
+      syntax_ok = false;
+      break;
+    }
+    builder.add_declaration(decl);
+    size_t next = stream.index();
+    parser.reset();  // frees this declaration's parse tree; also rewinds the stream
+    stream.seek(next);
   }
-  if (!tree) {
+  if (!syntax_ok) {
     report_syntax_errors(tokens, file, result.diagnostics);
     if (result.diagnostics.empty()) {  // cannot happen, but never stay silent
       result.diagnostics.push_back(
@@ -142,7 +173,10 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
     }
     return result;
   }
-  result.spec = build_ast(tree, file, result.diagnostics);
+  result.spec = builder.finish();
+  // Placeholders for over-deep expressions would only cause follow-on type errors.
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.id == "nesting-too-deep") result.spec.reset();
   return result;
 }
 

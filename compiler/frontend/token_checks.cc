@@ -16,8 +16,9 @@ model::SourceLocation token_location(const antlr4::Token* token, const std::stri
   size_t length = token->getType() == antlr4::Token::EOF
                       ? 1
                       : token->getStopIndex() + 1 - token->getStartIndex();
-  // A token spanning lines (a block comment) underlines only its first character.
-  if (token->getText().find('\n') != std::string::npos) length = 1;
+  // A token spanning lines (an unterminated comment) underlines only its first character.
+  // (getText() converts from UTF-32, so it is called only for the one token type that can.)
+  if (token->getType() == ArbcLexer::UNTERMINATED_COMMENT) length = 1;
   loc.end_column = loc.column + static_cast<int>(length);
   return loc;
 }
@@ -60,8 +61,8 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
                                "bad-number"));
         break;
       case ArbcLexer::UNTERMINATED_STRING:
-        out.push_back(error_at(t, file, "string literal is missing its closing '\"'",
-                               "unterminated-string"));
+        out.push_back(
+            error_at(t, file, "string literal is missing its closing '\"'", "unterminated-string"));
         break;
       case ArbcLexer::UNTERMINATED_COMMENT:
         out.push_back(error_at(t, file, "comment opened with '/*' is never closed with '*/'",
@@ -79,63 +80,61 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
   }
 }
 
-namespace {
-
-bool is_operand_end(size_t type) {
-  switch (type) {
-    case ArbcLexer::ID:
-    case ArbcLexer::NUMBER:
-    case ArbcLexer::DURATION:
-    case ArbcLexer::STRING:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
-
-bool check_nesting(const std::vector<antlr4::Token*>& tokens, const std::string& file,
+bool check_nesting(const std::vector<antlr4::Token*>& tokens,
+                   const antlr4::dfa::Vocabulary& vocabulary, const std::string& file,
                    std::vector<Diagnostic>& out) {
-  // Each open bracket is one level, and so is each prefix operator until the end of the
-  // list item or statement it starts (`,` `;` or the closing bracket).
-  struct Level {
-    int prefix_ops = 0;
-  };
-  std::vector<Level> levels(1);
-  int depth = 0;
-  std::string previous;
-  size_t previous_type = 0;
+  // Token types by role, looked up once: comparing types avoids converting every token's
+  // text back from UTF-32.
+  enum Role : char { kOther, kOpen, kClose, kPrefix, kMinus, kArrow, kOperandEnd };
+  std::vector<Role> role(vocabulary.getMaxTokenType() + 2, kOther);
+  for (size_t type = 0; type <= vocabulary.getMaxTokenType(); ++type) {
+    std::string literal = vocabulary.getLiteralName(type);
+    if (literal == "'('" || literal == "'['" || literal == "'{'") role[type] = kOpen;
+    if (literal == "')'" || literal == "']'" || literal == "'}'") role[type] = kClose;
+    if (literal == "'not'") role[type] = kPrefix;
+    if (literal == "'=>'") role[type] = kArrow;
+    if (literal == "'-'") role[type] = kMinus;
+    if (literal == "'true'" || literal == "'false'" || type == ArbcLexer::ID ||
+        type == ArbcLexer::NUMBER || type == ArbcLexer::DURATION || type == ArbcLexer::STRING)
+      role[type] = role[type] == kOther ? kOperandEnd : role[type];
+  }
+  // The parser recurses once per open bracket and once per prefix operator in an unbroken
+  // run (`not not -x`, `a => b => c`); a run ends at the first other token. An open bracket
+  // keeps the run before it on the stack until the bracket closes.
+  std::vector<int> frozen;  // per open bracket: 1 + the run of prefix operators before it
+  int depth = 0;            // sum of frozen
+  int run = 0;              // prefix operators in the current unbroken run
+  Role previous = kOther;
   for (const antlr4::Token* t : tokens) {
-    std::string text = t->getText();
     size_t type = t->getType();
-    bool prefix = false;
-    if (type != ArbcLexer::STRING) {
-      if (text == "(" || text == "[" || text == "{") {
-        levels.push_back({});
-        ++depth;
-      } else if (text == ")" || text == "]" || text == "}") {
-        if (levels.size() > 1) {
-          depth -= 1 + levels.back().prefix_ops;
-          levels.pop_back();
+    Role r = type < role.size() ? role[type] : kOther;
+    switch (r) {
+      case kOpen:
+        frozen.push_back(1 + run);
+        depth += frozen.back();
+        run = 0;
+        break;
+      case kClose:
+        if (!frozen.empty()) {
+          depth -= frozen.back();
+          frozen.pop_back();
         }
-      } else if (text == "," || text == ";") {
-        depth -= levels.back().prefix_ops;
-        levels.back().prefix_ops = 0;
-      } else if (text == "not" || text == "=>") {
-        prefix = true;
-      } else if (text == "-") {
-        bool after_operand = is_operand_end(previous_type) || previous == ")" ||
-                             previous == "]" || previous == "}" || previous == "true" ||
-                             previous == "false";
-        prefix = !after_operand;
-      }
+        run = 0;
+        break;
+      case kPrefix:
+      case kArrow:
+        ++run;
+        break;
+      case kMinus:
+        // Binary after an operand or a closing bracket, prefix otherwise.
+        run = (previous == kOperandEnd || previous == kClose) ? 0 : run + 1;
+        break;
+      default:
+        // A name right after `=>` may be the next lambda's parameter (`a => b => c`), so it
+        // keeps the run going; anything else ends it.
+        if (!(type == ArbcLexer::ID && previous == kArrow)) run = 0;
     }
-    if (prefix) {
-      ++levels.back().prefix_ops;
-      ++depth;
-    }
-    if (depth > kMaxNesting) {
+    if (depth + run > kMaxNesting) {
       out.push_back(error_at(t, file,
                              "nesting is deeper than " + std::to_string(kMaxNesting) +
                                  " levels (brackets and prefix operators): split the expression "
@@ -143,8 +142,7 @@ bool check_nesting(const std::vector<antlr4::Token*>& tokens, const std::string&
                              "nesting-too-deep"));
       return false;
     }
-    previous = std::move(text);
-    previous_type = type;
+    previous = r;
   }
   return true;
 }

@@ -11,7 +11,10 @@
 
 namespace antlr4 {
 class Token;
+namespace dfa {
+class Vocabulary;
 }
+}  // namespace antlr4
 
 namespace arbc::frontend {
 
@@ -25,7 +28,8 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
 
 // Appends one diagnostic if brackets or prefix operators nest deeper than kMaxNesting.
 // Returns false in that case (the parser must not run).
-bool check_nesting(const std::vector<antlr4::Token*>& tokens, const std::string& file,
+bool check_nesting(const std::vector<antlr4::Token*>& tokens,
+                   const antlr4::dfa::Vocabulary& vocabulary, const std::string& file,
                    std::vector<Diagnostic>& out);
 
 // The location of one token.
