@@ -69,11 +69,12 @@ class ModuleContext {
 };
 
 // Who delivered a message: an input port may be fed by several connections (arbitration).
+// The references are valid during the callback only.
 struct Delivery {
-  std::string port;        // this module's input port
+  const std::string& port;  // this module's input port
   const Value& value;
-  std::string connection;  // the connection's name in app.json ("take", "search", ...)
-  std::string source;      // "Module.port" it came from
+  const std::string& connection;  // the connection's name in app.json ("take", "search", ...)
+  const std::string& source;      // "Module.port" it came from
   double time = 0;
 };
 
@@ -197,11 +198,11 @@ std::string load_plugin(const std::string& path);
 #define ARBC_CONCAT_(a, b) ARBC_CONCAT_INNER_(a, b)
 
 // ARBC_REGISTER_MODULE(ClassName, "Name"): at load time, registers ClassName under "Name".
-#define ARBC_REGISTER_MODULE(Class, Name)                                               \
+#define ARBC_REGISTER_MODULE(Class, Name)                                              \
   [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_module_registered_, __LINE__) = \
       ::arbc::Registry::global().add_module(Name, [] { return std::make_unique<Class>(); })
 
 // ARBC_REGISTER_ENVIRONMENT(ClassName, "app_name"): registers an environment.
-#define ARBC_REGISTER_ENVIRONMENT(Class, Name)                                        \
+#define ARBC_REGISTER_ENVIRONMENT(Class, Name)                                      \
   [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_env_registered_, __LINE__) = \
       ::arbc::Registry::global().add_environment(Name, [] { return std::make_unique<Class>(); })

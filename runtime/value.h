@@ -63,8 +63,8 @@ class Value {
   // when the kind differs, so module code never crashes on a malformed message; check the
   // kind (or rely on the loader's port type checks) when the difference matters.
   bool as_bool() const;
-  int64_t as_int() const;    // a float is truncated
-  double as_float() const;   // an int is converted
+  int64_t as_int() const;   // a float is truncated
+  double as_float() const;  // an int is converted
   const std::string& as_string() const;
   const Eigen::Vector3d& as_vec3() const;
   const ValueList& as_list() const;

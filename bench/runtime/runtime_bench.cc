@@ -1,0 +1,177 @@
+// Runtime figures (issue 5; docs/benchmarks.md "Runtime (issue 5)"):
+//   constraint_decision  the container's present set at t + the compiled constraint
+//   yarp_decision        the same decision the YARP way: substitute event values into the
+//                        constraint text, luaL_loadstring + pcall, every message (baseline)
+//   monitored_delivery   publish -> queue -> Lua accept + update on a small record -> deliver
+//   bare_delivery        the same path with no monitor
+//   monitor_memory       bytes of one monitor's lua_State (reported as a counter)
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <lua.hpp>
+
+#include "runtime/event_container.h"
+#include "runtime/runtime.h"
+
+namespace {
+
+using namespace arbc;
+
+// The table-cleaning app's `track` guard, and its container after the feeds ran.
+const char* kConstraint = "e_unreachable and e_arm_idle and e_pull_idle and not e_taken";
+const char* kEvents[] = {"e_taken", "e_arm_idle", "e_pull_idle", "e_unreachable",
+                         "e_face_detected"};
+
+void BM_ConstraintDecision(benchmark::State& state) {
+  EventContainer box;
+  for (const char* e : kEvents) box.index().intern(e);
+  box.set(box.index().find("e_arm_idle"), 0, 1e9);
+  box.set(box.index().find("e_pull_idle"), 0, 1e9);
+  box.set(box.index().find("e_unreachable"), 1, 1e9);
+  CompiledConstraint c =
+      CompiledConstraint::compile(parse_constraint(kConstraint).constraint, box.index());
+  double t = 1.0;
+  for (auto _ : state) {
+    bool selected = c.evaluate(box.present(t));
+    benchmark::DoNotOptimize(selected);
+    t += 1e-9;
+  }
+}
+BENCHMARK(BM_ConstraintDecision);
+
+// YARP's PortMonitor arbitrator, restated: for each event name, replace its occurrences in the
+// constraint text with "true" or "false", then have Lua evaluate the result.
+void BM_YarpDecision(benchmark::State& state) {
+  lua_State* L = luaL_newstate();
+  luaL_openlibs(L);
+  std::set<std::string> present = {"e_arm_idle", "e_pull_idle", "e_unreachable"};
+  for (auto _ : state) {
+    std::string text = kConstraint;
+    for (const char* e : kEvents) {
+      std::string name = e, value = present.count(name) ? "true" : "false";
+      for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at)) {
+        text.replace(at, name.size(), value);
+        at += value.size();
+      }
+    }
+    std::string chunk = "return " + text;
+    bool selected = false;
+    if (luaL_loadstring(L, chunk.c_str()) == LUA_OK && lua_pcall(L, 0, 1, 0) == LUA_OK) {
+      selected = lua_toboolean(L, -1);
+    }
+    lua_settop(L, 0);
+    benchmark::DoNotOptimize(selected);
+  }
+  lua_close(L);
+}
+BENCHMARK(BM_YarpDecision);
+
+class Source : public Module {};
+class Sink : public Module {
+ public:
+  void on_message(const std::string&, const Value& v) override {
+    ++count;
+    benchmark::DoNotOptimize(v);
+  }
+  uint64_t count = 0;
+};
+
+const char* kMonitor =
+    "PortMonitor.accept = function(face)\n"
+    "  return face.certainty >= 0.8\n"
+    "end\n"
+    "PortMonitor.update = function(face)\n"
+    "  return face.pos\n"
+    "end\n";
+
+// One app: FaceDetector.face -> HeadControl.gaze, with or without the monitor above.
+std::unique_ptr<Runtime> face_app(bool monitored, Registry& registry, std::string* error) {
+  std::string dir = std::string(ARBC_BINARY_DIR) + "/bench_runtime_app";
+  std::filesystem::create_directories(dir + "/monitors");
+  std::ofstream(dir + "/monitors/track.lua") << kMonitor;
+  std::ofstream(dir + "/monitors/feed.lua")
+      << "PortMonitor.create = function(o) PortMonitor.setEvent('e_arm_idle') return true end\n";
+  registry.add_module("FaceDetector", [] { return std::make_unique<Source>(); });
+  registry.add_module("Arm", [] { return std::make_unique<Source>(); });
+  registry.add_module("HeadControl", [] { return std::make_unique<Sink>(); });
+  model::App app;
+  app.name = "bench";
+  model::Module face{"FaceDetector", "", {}, {}};
+  face.ports.push_back({"face",
+                        model::Direction::Out,
+                        parse_type(monitored ? "{pos: vec3, certainty: float}" : "vec3"),
+                        {}});
+  model::Module head{"HeadControl", "", {}, {}};
+  head.ports.push_back({"gaze", model::Direction::In, parse_type("vec3"), {}});
+  model::Module arm{"Arm", "", {}, {}};
+  arm.ports.push_back({"status", model::Direction::Out, parse_type("list<string>"), {}});
+  app.modules = {face, head, arm};
+  model::Connection c;
+  c.name = "track";
+  c.source = "FaceDetector.face";
+  c.destination = "HeadControl.gaze";
+  c.constraint = parse_constraint("e_arm_idle and not e_taken").constraint;
+  if (monitored) c.monitor = "monitors/track.lua";
+  app.connections.push_back(c);
+  // A feed whose create() sets e_arm_idle for good, so the guard holds.
+  model::Connection feed;
+  feed.name = "feed";
+  feed.kind = model::ConnectionKind::Feed;
+  feed.source = "Arm.status";
+  feed.destination = "HeadControl.gaze";
+  feed.constraint = Constraint::constant(false);
+  feed.monitor = "monitors/feed.lua";
+  app.connections.push_back(feed);
+  auto rt = Runtime::create(app, dir, RunOptions{}, error, registry);
+  return rt;
+}
+
+void delivery(benchmark::State& state, bool monitored) {
+  Registry registry;
+  std::string error;
+  auto rt = face_app(monitored, registry, &error);
+  if (!rt) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  rt->start();
+  Value msg = monitored ? Value::record({{"pos", Value::vec3(0.1, 0.2, 0.9)}, {"certainty", 0.93}})
+                        : Value::vec3(0.1, 0.2, 0.9);
+  double t = 0;
+  for (auto _ : state) {
+    rt->publish("FaceDetector", "face", msg);
+    t += 1e-6;
+    rt->advance(t);
+  }
+  auto stats = rt->stats();
+  state.counters["delivered"] = static_cast<double>(stats[0].delivered);
+  state.counters["not_selected"] = static_cast<double>(stats[0].drops(DropReason::NotSelected));
+}
+
+void BM_MonitoredDelivery(benchmark::State& state) { delivery(state, true); }
+void BM_BareDelivery(benchmark::State& state) { delivery(state, false); }
+BENCHMARK(BM_MonitoredDelivery);
+BENCHMARK(BM_BareDelivery);
+
+void BM_MonitorMemory(benchmark::State& state) {
+  Registry registry;
+  std::string error;
+  auto rt = face_app(true, registry, &error);
+  if (!rt) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  rt->start();
+  for (auto _ : state) {
+    rt->publish("FaceDetector", "face",
+                Value::record({{"pos", Value::vec3(0.1, 0.2, 0.9)}, {"certainty", 0.93}}));
+    rt->advance(rt->now() + 0.01);
+  }
+  state.counters["bytes"] = static_cast<double>(rt->monitor_memory().at("track"));
+}
+BENCHMARK(BM_MonitorMemory)->Iterations(1000);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,95 @@
+#include "runtime/app_loader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "runtime/app_json.h"
+
+namespace arbc {
+
+namespace fs = std::filesystem;
+
+AppDirLoad load_app_dir(const std::string& dir) {
+  AppDirLoad load;
+  load.dir = dir;
+  fs::path file = fs::path(dir) / "app.json";
+  std::ifstream in(file, std::ios::binary);
+  if (!fs::is_directory(dir)) {
+    load.errors.push_back(dir +
+                          ": not a directory; give the directory `arbc build` wrote "
+                          "(it holds app.json and monitors/)");
+    return load;
+  }
+  if (!in) {
+    load.errors.push_back(file.string() + ": cannot read; is " + dir +
+                          " an app directory written by `arbc build`?");
+    return load;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  model::AppLoad parsed = model::from_app_json(text.str());
+  if (!parsed.ok) {
+    load.errors.push_back(file.string() + ": " + parsed.error + " (rebuild it with `arbc build`)");
+    return load;
+  }
+  for (const model::Connection& c : parsed.app.connections) {
+    if (c.monitor.empty()) continue;
+    fs::path script = fs::path(dir) / c.monitor;
+    if (!fs::is_regular_file(script)) {
+      load.errors.push_back(file.string() + ": connection '" + c.name + "' names monitor " +
+                            c.monitor + ", but " + script.string() +
+                            " does not exist (rebuild the app with `arbc build`)");
+    }
+  }
+  load.app = std::move(parsed.app);
+  load.ok = load.errors.empty();
+  return load;
+}
+
+std::vector<std::string> check_modules(const model::App& app, const std::string& app_file,
+                                       const Registry& registry) {
+  std::vector<std::string> errors;
+  for (const model::Module& m : app.modules) {
+    const ModuleFactory* factory = registry.find_module(m.name);
+    if (!factory) {
+      std::string known;
+      for (const std::string& n : registry.module_names()) known += (known.empty() ? "" : ", ") + n;
+      errors.push_back(app_file + ": module '" + m.name +
+                       "' is not registered; load the plugin that provides it with --plugin LIB" +
+                       " (registered: " + (known.empty() ? "none" : known) + ")");
+      continue;
+    }
+    std::unique_ptr<Module> instance = (*factory)();
+    for (const model::Port& p : m.ports) {
+      const PortDecl* decl = nullptr;
+      for (const PortDecl& d : instance->ports()) {
+        if (d.name == p.name) decl = &d;
+      }
+      std::string where = app_file + ": port " + m.name + "." + p.name;
+      const char* want = p.direction == model::Direction::In ? "in" : "out";
+      if (!decl) {
+        errors.push_back(where + " (" + want + " " + p.type->to_string() +
+                         ") is not declared by the registered module " + m.name +
+                         "; declare it in the module's constructor or fix the spec");
+        continue;
+      }
+      if (decl->is_input != (p.direction == model::Direction::In)) {
+        errors.push_back(where + " is '" + want + "' in the app but '" +
+                         (decl->is_input ? "in" : "out") + "' in the module");
+      }
+      std::string type_error;
+      TypePtr declared = parse_type(decl->type, &type_error);
+      if (!declared) {
+        errors.push_back(where + ": the module declares an invalid type \"" + decl->type +
+                         "\": " + type_error);
+      } else if (!same_type(*declared, *p.type)) {
+        errors.push_back(where + " has type " + p.type->to_string() +
+                         " in the app but the module declares " + declared->to_string());
+      }
+    }
+  }
+  return errors;
+}
+
+}  // namespace arbc

@@ -1,0 +1,28 @@
+// Loading a built app directory (app.json + monitors/*.lua) and checking it against the
+// module registry before anything runs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "runtime/app_model.h"
+#include "runtime/module.h"
+
+namespace arbc {
+
+struct AppDirLoad {
+  bool ok = false;
+  model::App app;
+  std::string dir;
+  std::vector<std::string> errors;  // each names the file and says what to do
+};
+
+// Reads DIR/app.json and checks that every monitor file it names exists.
+AppDirLoad load_app_dir(const std::string& dir);
+
+// Checks that each module of the app is registered and declares the app's ports with the
+// same direction and type (same_type). Returns one message per problem; empty when fine.
+std::vector<std::string> check_modules(const model::App& app, const std::string& app_file,
+                                       const Registry& registry = Registry::global());
+
+}  // namespace arbc

@@ -1,0 +1,87 @@
+// Executors: who decides what runs when (DESIGN.md section 7).
+//
+// Both run tasks one at a time on the thread that called run(), in order of (time, posting
+// order), so everything the runtime and the modules do is serialised. The simulated executor
+// jumps from task to task (as fast as the CPU allows; deterministic). The real-time executor
+// sleeps until a task's wall-clock time; post() and cancel() may be called from any thread.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <unordered_set>
+
+namespace arbc {
+
+class Executor {
+ public:
+  using TaskId = uint64_t;
+  virtual ~Executor() = default;
+  virtual double now() const = 0;
+  // Runs fn at time `at` (not before now()). Returns an id for cancel().
+  virtual TaskId post(double at, std::function<void()> fn) = 0;
+  virtual void cancel(TaskId id) = 0;
+  // Runs tasks until time `until` is reached or stop() is called; now() is then `until`
+  // (or the time of the stop).
+  virtual void run(double until) = 0;
+  virtual void stop() = 0;
+  // Is the caller on the thread inside run() (or is run() not active)?
+  virtual bool on_executor_thread() const = 0;
+};
+
+// Tasks ordered by (time, sequence number): a priority queue kept as an ordered map.
+class TaskQueue {
+ public:
+  using TaskId = Executor::TaskId;
+  TaskId push(double at, std::function<void()> fn);
+  void cancel(TaskId id);
+  bool empty() const { return tasks_.empty(); }
+  double next_time() const { return tasks_.begin()->first.first; }
+  std::function<void()> pop();
+
+ private:
+  std::map<std::pair<double, TaskId>, std::function<void()>> tasks_;
+  std::map<TaskId, double> time_of_;
+  TaskId next_id_ = 1;
+};
+
+class SimulatedExecutor : public Executor {
+ public:
+  double now() const override { return now_; }
+  TaskId post(double at, std::function<void()> fn) override;
+  void cancel(TaskId id) override { queue_.cancel(id); }
+  void run(double until) override;
+  void stop() override { stopped_ = true; }
+  bool on_executor_thread() const override { return true; }
+
+ private:
+  TaskQueue queue_;
+  double now_ = 0;
+  bool stopped_ = false;
+};
+
+class RealtimeExecutor : public Executor {
+ public:
+  RealtimeExecutor() : start_(std::chrono::steady_clock::now()) {}
+  double now() const override;
+  TaskId post(double at, std::function<void()> fn) override;
+  void cancel(TaskId id) override;
+  void run(double until) override;
+  void stop() override;
+  bool on_executor_thread() const override;
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  TaskQueue queue_;
+  bool stopped_ = false;
+  std::thread::id runner_;
+};
+
+}  // namespace arbc

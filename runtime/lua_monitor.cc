@@ -1,0 +1,272 @@
+#include "runtime/lua_monitor.h"
+
+#include <lua.hpp>
+
+#include "runtime/lua_value.h"
+
+namespace arbc {
+
+namespace {
+
+char staged_message_key;  // registry slot of the message between accept and update
+
+MonitorHost* host_of(lua_State* L) {
+  return static_cast<MonitorHost*>(lua_touserdata(L, lua_upvalueindex(1)));
+}
+
+int api_set_event(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  std::optional<double> lifetime;
+  if (!lua_isnoneornil(L, 2)) {
+    double s = luaL_checknumber(L, 2);
+    if (!(s >= 0)) return luaL_error(L, "setEvent: lifetime must be >= 0 seconds, got %f", s);
+    lifetime = s;
+  }
+  host_of(L)->set_event(name, lifetime);
+  return 0;
+}
+
+int api_unset_event(lua_State* L) {
+  host_of(L)->unset_event(luaL_checkstring(L, 1));
+  return 0;
+}
+
+int api_has_event(lua_State* L) {
+  lua_pushboolean(L, host_of(L)->has_event(luaL_checkstring(L, 1)));
+  return 1;
+}
+
+int api_set_constraint(lua_State* L) {
+  std::string error = host_of(L)->set_constraint(luaL_checkstring(L, 1));
+  if (!error.empty()) return luaL_error(L, "setConstraint: %s", error.c_str());
+  return 0;
+}
+
+int api_get_constraint(lua_State* L) {
+  std::string text = host_of(L)->get_constraint();
+  lua_pushlstring(L, text.data(), text.size());
+  return 1;
+}
+
+int api_set_trig_interval(lua_State* L) {
+  double s = luaL_checknumber(L, 1);
+  if (!(s > 0)) return luaL_error(L, "setTrigInterval: interval must be > 0 seconds");
+  host_of(L)->set_trig_interval(s);
+  return 0;
+}
+
+int api_now(lua_State* L) {
+  lua_pushnumber(L, host_of(L)->now());
+  return 1;
+}
+
+int api_novalue(lua_State* L) {
+  LuaSandbox::push_novalue_marker(L);
+  return lua_error(L);
+}
+
+int api_print(lua_State* L) {
+  std::string line;
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    if (i > 1) line += '\t';
+    size_t len;
+    const char* s = luaL_tolstring(L, i, &len);
+    line.append(s, len);
+    lua_pop(L, 1);
+  }
+  host_of(L)->print(line);
+  return 0;
+}
+
+int install(lua_State* L) {
+  void* host = lua_touserdata(L, 1);
+  static const luaL_Reg api[] = {
+      {"setEvent", api_set_event},
+      {"unsetEvent", api_unset_event},
+      {"hasEvent", api_has_event},
+      {"setConstraint", api_set_constraint},
+      {"getConstraint", api_get_constraint},
+      {"setTrigInterval", api_set_trig_interval},
+      {"now", api_now},
+      {"novalue", api_novalue},
+      {nullptr, nullptr},
+  };
+  lua_newtable(L);
+  lua_pushlightuserdata(L, host);
+  luaL_setfuncs(L, api, 1);
+  lua_setglobal(L, "PortMonitor");
+  lua_pushlightuserdata(L, host);
+  lua_pushcclosure(L, api_print, 1);
+  lua_setglobal(L, "print");
+  return 0;
+}
+
+// Pushes PortMonitor[name]; returns whether it is a function (pushes nil otherwise).
+bool push_callback(lua_State* L, const char* name) {
+  if (lua_getglobal(L, "PortMonitor") != LUA_TTABLE) {
+    lua_pop(L, 1);
+    lua_pushnil(L);
+    return false;
+  }
+  bool is_function = lua_getfield(L, -1, name) == LUA_TFUNCTION;
+  lua_remove(L, -2);
+  return is_function;
+}
+
+std::string kind_of(lua_State* L, int index) {
+  return lua_isnoneornil(L, index) ? "nothing" : luaL_typename(L, index);
+}
+
+}  // namespace
+
+struct LuaMonitor::Call {
+  const char* callback = nullptr;
+  const Value* message = nullptr;
+  const Type* destination = nullptr;
+  const MonitorOptions* options = nullptr;
+  bool result = true;
+  Value output;
+  std::string type_error;
+};
+
+std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const std::string& file,
+                                             const SandboxLimits& limits, MonitorHost* host,
+                                             std::string* error) {
+  std::unique_ptr<LuaMonitor> m(new LuaMonitor());
+  m->sandbox_ = LuaSandbox::create(limits);
+  if (!m->sandbox_) {
+    *error = file + ": cannot create a Lua state within the memory cap";
+    return nullptr;
+  }
+  m->host_ = host;
+  m->file_ = file;
+  LuaCall installed = m->sandbox_->protected_call(install, host);
+  if (!installed.ok()) {
+    *error = file + ": " + installed.error;
+    return nullptr;
+  }
+  LuaCall ran = m->sandbox_->run_chunk(script, file);
+  if (!ran.ok()) {
+    *error = ran.status == LuaCall::Status::NoValue ? file + ": novalue() at top level" : ran.error;
+    if (error->rfind(file, 0) != 0) *error = file + ": " + *error;
+    return nullptr;
+  }
+  return m;
+}
+
+bool LuaMonitor::defines(const char* callback) const {
+  lua_State* L = sandbox_->state();
+  bool is_function = push_callback(L, callback);
+  lua_pop(L, 1);
+  return is_function;
+}
+
+int LuaMonitor::run_create(lua_State* L) {
+  auto* call = static_cast<Call*>(lua_touserdata(L, 1));
+  if (!push_callback(L, "create")) return 0;
+  lua_createtable(L, 0, 3);
+  lua_pushstring(L, call->options->source.c_str());
+  lua_setfield(L, -2, "source");
+  lua_pushstring(L, call->options->destination.c_str());
+  lua_setfield(L, -2, "destination");
+  lua_pushstring(L, call->options->connection.c_str());
+  lua_setfield(L, -2, "connection");
+  lua_call(L, 1, 1);
+  if (lua_isnil(L, -1)) return 0;  // a create that returns nothing accepts the connection
+  if (!lua_isboolean(L, -1)) {
+    call->type_error = "create must return a boolean, got " + kind_of(L, -1);
+    return 0;
+  }
+  call->result = lua_toboolean(L, -1);
+  return 0;
+}
+
+int LuaMonitor::run_accept(lua_State* L) {
+  auto* call = static_cast<Call*>(lua_touserdata(L, 1));
+  push_value(L, *call->message);
+  lua_pushvalue(L, -1);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &staged_message_key);
+  if (!push_callback(L, "accept")) return 0;
+  lua_pushvalue(L, -2);
+  lua_call(L, 1, 1);
+  if (!lua_isboolean(L, -1)) {
+    call->type_error = "accept must return a boolean, got " + kind_of(L, -1);
+    return 0;
+  }
+  call->result = lua_toboolean(L, -1);
+  return 0;
+}
+
+int LuaMonitor::run_update(lua_State* L) {
+  auto* call = static_cast<Call*>(lua_touserdata(L, 1));
+  bool has_update = push_callback(L, "update");
+  lua_rawgetp(L, LUA_REGISTRYINDEX, &staged_message_key);
+  if (has_update) lua_call(L, 1, 1);
+  std::string why;
+  auto value = read_value(L, -1, *call->destination, &why);
+  if (!value) {
+    call->type_error = (has_update ? "update returned a value that does not fit the destination ("
+                                   : "the message does not fit the destination (") +
+                       why + ")";
+    return 0;
+  }
+  call->output = std::move(*value);
+  return 0;
+}
+
+int LuaMonitor::run_simple(lua_State* L) {
+  auto* call = static_cast<Call*>(lua_touserdata(L, 1));
+  if (!push_callback(L, call->callback)) return 0;
+  lua_call(L, 0, 0);
+  return 0;
+}
+
+// Wrong-type results are reported as errors at the callback's definition.
+static LuaCall type_error(const std::string& file, const std::string& what) {
+  LuaCall r;
+  r.status = LuaCall::Status::Error;
+  r.error = file + ": " + what;
+  return r;
+}
+
+LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
+  Call call;
+  call.options = &options;
+  LuaCall r = sandbox_->protected_call(run_create, &call);
+  if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
+  *created = r.ok() && call.result;
+  return r;
+}
+
+LuaCall LuaMonitor::accept(const Value& msg, bool* accepted) {
+  Call call;
+  call.message = &msg;
+  LuaCall r = sandbox_->protected_call(run_accept, &call);
+  if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
+  *accepted = r.ok() && call.result;
+  return r;
+}
+
+LuaCall LuaMonitor::update(const Type& destination, Value* out) {
+  Call call;
+  call.destination = &destination;
+  LuaCall r = sandbox_->protected_call(run_update, &call);
+  if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
+  if (r.ok()) *out = std::move(call.output);
+  return r;
+}
+
+LuaCall LuaMonitor::trig() {
+  Call call;
+  call.callback = "trig";
+  return sandbox_->protected_call(run_simple, &call);
+}
+
+LuaCall LuaMonitor::destroy() {
+  Call call;
+  call.callback = "destroy";
+  return sandbox_->protected_call(run_simple, &call);
+}
+
+}  // namespace arbc

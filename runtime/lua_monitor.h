@@ -1,0 +1,80 @@
+// A port monitor script in its own sandbox, with the PortMonitor API of DESIGN.md section 6:
+//
+//   PortMonitor.create(options)  options = {source=, destination=, connection=}
+//   PortMonitor.accept(msg) -> boolean       PortMonitor.update(msg) -> value
+//   PortMonitor.trig()                       PortMonitor.destroy()
+//   PortMonitor.setEvent(name [, lifetime_s])  PortMonitor.unsetEvent(name)
+//   PortMonitor.setConstraint(text)  PortMonitor.getConstraint()
+//   PortMonitor.setTrigInterval(s)   PortMonitor.now()   PortMonitor.hasEvent(name)
+//   PortMonitor.novalue()   -- ends the callback: the message has no value (drop `no-value`)
+//
+// Callbacks the script does not define behave as: accept -> true, update -> msg unchanged,
+// create -> true, trig/destroy -> nothing.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "runtime/lua_sandbox.h"
+#include "runtime/type.h"
+#include "runtime/value.h"
+
+namespace arbc {
+
+// What a monitor's PortMonitor calls act on: its connection and the destination's container.
+class MonitorHost {
+ public:
+  virtual ~MonitorHost() = default;
+  virtual double now() = 0;
+  virtual void set_event(std::string_view name, std::optional<double> lifetime) = 0;
+  virtual void unset_event(std::string_view name) = 0;
+  virtual bool has_event(std::string_view name) = 0;
+  // Compiles text as the connection's constraint; returns an error message or "".
+  virtual std::string set_constraint(std::string_view text) = 0;
+  virtual std::string get_constraint() = 0;
+  virtual void set_trig_interval(double seconds) = 0;
+  virtual void print(const std::string& line) = 0;
+};
+
+struct MonitorOptions {
+  std::string source, destination, connection;
+};
+
+class LuaMonitor {
+ public:
+  // Creates the sandbox and runs the script's top level. On failure returns nullptr and
+  // sets *error (with the file and line).
+  static std::unique_ptr<LuaMonitor> load(const std::string& script, const std::string& file,
+                                          const SandboxLimits& limits, MonitorHost* host,
+                                          std::string* error);
+
+  // Does the script define PortMonitor.<callback> as a function?
+  bool defines(const char* callback) const;
+
+  // Each runs one callback under the sandbox's limits. A callback returning the wrong type
+  // is an error. accept() also stages msg for the following update().
+  LuaCall create(const MonitorOptions& options, bool* created);
+  LuaCall accept(const Value& msg, bool* accepted);
+  LuaCall update(const Type& destination, Value* out);
+  LuaCall trig();
+  LuaCall destroy();
+
+  size_t memory_used() const { return sandbox_->memory_used(); }
+  const std::string& file() const { return file_; }
+
+ private:
+  struct Call;  // argument block passed through protected calls
+  static int run_create(lua_State* L);
+  static int run_accept(lua_State* L);
+  static int run_update(lua_State* L);
+  static int run_simple(lua_State* L);
+  void install_api();
+
+  std::unique_ptr<LuaSandbox> sandbox_;
+  MonitorHost* host_ = nullptr;
+  std::string file_;
+};
+
+}  // namespace arbc

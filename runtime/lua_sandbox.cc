@@ -1,0 +1,189 @@
+#include "runtime/lua_sandbox.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <lua.hpp>
+
+namespace arbc {
+
+namespace {
+
+char novalue_key;  // its address marks the no-value error object
+
+LuaSandbox* sandbox_of(lua_State* L) { return *static_cast<LuaSandbox**>(lua_getextraspace(L)); }
+
+// Runs a C function given as a light userdata upvalue with its argument; lets LuaSandbox
+// call plain function pointers under lua_pcall.
+struct Trampoline {
+  int (*fn)(lua_State*);
+  void* argument;
+};
+
+int trampoline(lua_State* L) {
+  auto* t = static_cast<Trampoline*>(lua_touserdata(L, 1));
+  lua_pushlightuserdata(L, t->argument);
+  lua_replace(L, 1);
+  return t->fn(L);
+}
+
+void open_library(lua_State* L, const char* name, lua_CFunction open) {
+  luaL_requiref(L, name, open, 1);
+  lua_pop(L, 1);
+}
+
+void remove_global(lua_State* L, const char* name) {
+  lua_pushnil(L);
+  lua_setglobal(L, name);
+}
+
+int open_libraries(lua_State* L) {
+  open_library(L, LUA_GNAME, luaopen_base);
+  open_library(L, LUA_STRLIBNAME, luaopen_string);
+  open_library(L, LUA_TABLIBNAME, luaopen_table);
+  open_library(L, LUA_MATHLIBNAME, luaopen_math);
+  open_library(L, LUA_UTF8LIBNAME, luaopen_utf8);
+  open_library(L, LUA_COLIBNAME, luaopen_coroutine);
+  for (const char* name :
+       {"load", "loadstring", "loadfile", "dofile", "require", "io", "os", "debug", "package"}) {
+    remove_global(L, name);
+  }
+  lua_getglobal(L, LUA_STRLIBNAME);
+  lua_pushnil(L);
+  lua_setfield(L, -2, "dump");
+  lua_pop(L, 1);
+  // luaL_requiref registered the libraries in package.loaded; drop that table too.
+  lua_pushnil(L);
+  lua_setfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
+  return 0;
+}
+
+}  // namespace
+
+void* LuaSandbox::allocate(void* ud, void* ptr, size_t old_size, size_t new_size) {
+  auto* memory = static_cast<Memory*>(ud);
+  size_t old = ptr ? old_size : 0;
+  if (new_size == 0) {
+    memory->used -= old;
+    std::free(ptr);
+    return nullptr;
+  }
+  if (new_size > old && memory->used - old + new_size > memory->cap) return nullptr;
+  void* p = std::realloc(ptr, new_size);
+  if (!p) return nullptr;
+  memory->used = memory->used - old + new_size;
+  return p;
+}
+
+void LuaSandbox::budget_hook(lua_State* L, lua_Debug*) {
+  LuaSandbox* self = sandbox_of(L);
+  if (!self->budget_exhausted_) {
+    self->budget_exhausted_ = true;
+    lua_Debug here;
+    if (lua_getstack(L, 0, &here) && lua_getinfo(L, "Sl", &here) && here.currentline > 0) {
+      self->budget_where_ = std::string(here.short_src) + ":" + std::to_string(here.currentline);
+    }
+  }
+  // From now on, fire on every instruction of this thread until the callback is left.
+  lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);
+  luaL_error(L, "instruction budget exceeded");
+}
+
+int LuaSandbox::print(lua_State* L) {
+  std::string line;
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    if (i > 1) line += '\t';
+    size_t len;
+    const char* s = luaL_tolstring(L, i, &len);
+    line.append(s, len);
+    lua_pop(L, 1);
+  }
+  LuaSandbox* self = sandbox_of(L);
+  if (self->print_) {
+    self->print_(line);
+  } else {
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  return 0;
+}
+
+std::unique_ptr<LuaSandbox> LuaSandbox::create(const SandboxLimits& limits) {
+  std::unique_ptr<LuaSandbox> box(new LuaSandbox(limits));
+  box->memory_.cap = limits.memory_bytes;
+  box->L_ = lua_newstate(&LuaSandbox::allocate, &box->memory_);
+  if (!box->L_) return nullptr;
+  *static_cast<LuaSandbox**>(lua_getextraspace(box->L_)) = box.get();
+  lua_atpanic(box->L_, [](lua_State* L) -> int {
+    // Only reachable through a bug in this file (every entry is protected): fail loudly.
+    std::fprintf(stderr, "arbc: unprotected Lua error: %s\n", lua_tostring(L, -1));
+    std::abort();
+  });
+  // The generational collector keeps small monitor states small between messages.
+  lua_gc(box->L_, LUA_GCGEN, 0, 0);
+  lua_pushcfunction(box->L_, open_libraries);
+  if (lua_pcall(box->L_, 0, 0, 0) != LUA_OK) return nullptr;
+  lua_pushcfunction(box->L_, &LuaSandbox::print);
+  lua_setglobal(box->L_, "print");
+  return box;
+}
+
+LuaSandbox::~LuaSandbox() {
+  if (L_) lua_close(L_);
+}
+
+void LuaSandbox::push_novalue_marker(lua_State* L) { lua_pushlightuserdata(L, &novalue_key); }
+
+LuaCall LuaSandbox::finish_call(int rc) {
+  lua_sethook(L_, nullptr, 0, 0);
+  LuaCall call;
+  if (rc == LUA_OK) {
+    budget_exhausted_ = false;
+    return call;
+  }
+  call.status = LuaCall::Status::Error;
+  if (budget_exhausted_) {
+    call.error = (budget_where_.empty() ? std::string("?") : budget_where_) +
+                 ": instruction budget of " + std::to_string(limits_.instructions) +
+                 " exceeded (an endless loop?)";
+  } else if (rc == LUA_ERRMEM) {
+    call.error = "memory cap of " + std::to_string(limits_.memory_bytes / 1024) + " KiB exceeded";
+  } else if (lua_islightuserdata(L_, -1) && lua_touserdata(L_, -1) == &novalue_key) {
+    call.status = LuaCall::Status::NoValue;
+  } else if (lua_type(L_, -1) == LUA_TSTRING) {
+    call.error = lua_tostring(L_, -1);
+  } else {
+    call.error = std::string("error object is a ") + luaL_typename(L_, -1) + " value";
+  }
+  budget_exhausted_ = false;
+  budget_where_.clear();
+  lua_settop(L_, 0);
+  // A failed allocation leaves garbage; collect it now rather than on the next message.
+  if (rc == LUA_ERRMEM) lua_gc(L_, LUA_GCCOLLECT);
+  return call;
+}
+
+LuaCall LuaSandbox::run_chunk(const std::string& text, const std::string& chunk_name) {
+  std::string name = "@" + chunk_name;
+  int rc = luaL_loadbufferx(L_, text.data(), text.size(), name.c_str(), "t");
+  if (rc != LUA_OK) return finish_call(rc);
+  budget_exhausted_ = false;
+  lua_sethook(L_, budget_hook, LUA_MASKCOUNT, static_cast<int>(limits_.instructions));
+  return finish_call(lua_pcall(L_, 0, 0, 0));
+}
+
+LuaCall LuaSandbox::protected_call(int (*fn)(lua_State*), void* argument) {
+  Trampoline t{fn, argument};
+  lua_settop(L_, 0);
+  lua_pushcfunction(L_, trampoline);
+  lua_pushlightuserdata(L_, &t);
+  budget_exhausted_ = false;
+  lua_sethook(L_, budget_hook, LUA_MASKCOUNT, static_cast<int>(limits_.instructions));
+  int rc = lua_pcall(L_, 1, LUA_MULTRET, 0);
+  if (rc != LUA_OK) return finish_call(rc);
+  lua_sethook(L_, nullptr, 0, 0);
+  lua_settop(L_, 0);
+  return LuaCall{};
+}
+
+}  // namespace arbc

@@ -1,0 +1,29 @@
+// Conversion between Values and Lua values (the message form monitors see, DESIGN.md 6).
+//
+//   bool -> boolean, int -> integer, float -> float, string -> string,
+//   vec3 -> table {x=.., y=.., z=..}, list -> sequence {v1, v2, ...},
+//   record -> table with string keys {field=..}.
+// Back to a Value the conversion is guided by the expected type, which resolves the
+// ambiguities of Lua tables: a vec3 may also be written as a 3-sequence {x, y, z}; an empty
+// table is an empty list; a Lua integer-valued float is accepted as int, an integer as float.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "runtime/type.h"
+#include "runtime/value.h"
+
+struct lua_State;
+
+namespace arbc {
+
+// Pushes v onto L's stack. May raise a Lua error (memory): call it inside a protected call.
+void push_value(lua_State* L, const Value& v);
+
+// Reads the Lua value at `index` as type t. On mismatch returns nullopt and sets *why
+// ("field pos: expected vec3, got string"). Never raises a Lua error on mismatch, but may
+// raise a memory error: call it inside a protected call.
+std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::string* why);
+
+}  // namespace arbc

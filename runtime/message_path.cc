@@ -1,0 +1,239 @@
+// The message path of DESIGN.md section 4: queueing, accept, constraint, throttle, update,
+// delivery; drops, script failures and quarantine; the PortMonitor calls of a connection.
+#include <cmath>
+
+#include "runtime/runtime_internal.h"
+
+namespace arbc {
+
+// --- publishing and queues ---------------------------------------------------------------
+
+void Runtime::publish(std::string_view module, std::string_view port, Value v) {
+  for (auto& m : modules_) {
+    if (m->name == module) {
+      publish_from(*m, port, std::move(v));
+      return;
+    }
+  }
+  report("publish: no module named " + std::string(module));
+}
+
+void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
+  if (!executor_->on_executor_thread()) {
+    // Real time: a module's own thread published; hand the message to the executor thread.
+    std::string port_name(port);
+    executor_->post(now(), [this, &m, port_name, v = std::move(v)]() mutable {
+      publish_from(m, port_name, std::move(v));
+    });
+    return;
+  }
+  auto it = m.outputs.find(port);
+  if (it == m.outputs.end()) {
+    std::string message = "module " + m.name + " published on '" + std::string(port) +
+                          "', which is not one of its output ports in the app";
+    trace_.publish_error(now(), m.name + "." + std::string(port), message);
+    if (m.reported.insert(message).second) report(message);
+    return;
+  }
+  OutPort& out = *it->second;
+  std::string why;
+  if (!conforms(v, *out.type, &why)) {
+    std::string message = "module " + m.name + " published a value on " + out.qualified +
+                          " that is not a " + out.type->to_string() + " (" + why + ")";
+    trace_.publish_error(now(), out.qualified, message);
+    if (out.reported.insert(message).second) report(message);
+    return;
+  }
+  for (Connection* c : out.connections) enqueue(*c, v);
+}
+
+void Runtime::enqueue(Connection& c, const Value& v) {
+  ++c.stats.arrived;
+  if (c.quarantined) {
+    drop(c, DropReason::Quarantined);
+    return;
+  }
+  if (c.queue.size() >= options_.queue_capacity) {
+    drop(c, DropReason::QueueFull);
+    return;
+  }
+  c.queue.push_back(v);
+  if (!c.drain_posted) {
+    c.drain_posted = true;
+    executor_->post(now(), [this, &c] { drain(c); });
+  }
+}
+
+// One message per task, so connections interleave fairly in posting order.
+void Runtime::drain(Connection& c) {
+  c.drain_posted = false;
+  if (c.queue.empty()) return;
+  Value msg = std::move(c.queue.front());
+  c.queue.pop_front();
+  if (c.quarantined) {
+    drop(c, DropReason::Quarantined);
+  } else {
+    process(c, msg);
+  }
+  if (!c.queue.empty() && !c.drain_posted) {
+    c.drain_posted = true;
+    executor_->post(now(), [this, &c] { drain(c); });
+  }
+}
+
+// --- the path ----------------------------------------------------------------------------
+
+void Runtime::process(Connection& c, const Value& msg) {
+  double t = now();
+  // 1. accept (also stages the message for update).
+  if (c.monitor && (c.has_accept || c.has_update)) {
+    bool accepted = false;
+    LuaCall call = c.monitor->accept(msg, &accepted);
+    if (call.status == LuaCall::Status::NoValue) {
+      c.consecutive_errors = 0;
+      drop(c, DropReason::NoValue, "accept");
+      return;
+    }
+    if (!call.ok()) {
+      drop(c, DropReason::MonitorError, call.error);
+      monitor_failed(c, call, "accept");
+      return;
+    }
+    if (!accepted) {
+      c.consecutive_errors = 0;
+      drop(c, DropReason::Rejected);
+      return;
+    }
+  }
+  // 2. the constraint, on the container as accept left it.
+  if (!c.constraint.evaluate(c.destination->container.present(t))) {
+    c.consecutive_errors = 0;
+    drop(c, c.is_feed ? DropReason::Feed : DropReason::NotSelected);
+    return;
+  }
+  // 3. throttle: counts deliveries, so only selected messages are throttled.
+  if (c.throttle && t < c.last_delivery + *c.throttle) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::Throttled);
+    return;
+  }
+  // 4. update, then deliver.
+  Value out;
+  const Value* delivered = &msg;
+  if (c.monitor && c.has_update) {
+    LuaCall call = c.monitor->update(*c.destination->type, &out);
+    if (call.status == LuaCall::Status::NoValue) {
+      c.consecutive_errors = 0;
+      drop(c, DropReason::NoValue, "update");
+      return;
+    }
+    if (!call.ok()) {
+      drop(c, DropReason::MonitorError, call.error);
+      monitor_failed(c, call, "update");
+      return;
+    }
+    delivered = &out;
+  }
+  c.consecutive_errors = 0;
+  c.last_delivery = t;
+  ++c.stats.delivered;
+  trace_.delivery(t, c.name, c.destination->qualified, *delivered);
+  Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
+  c.destination->module->on_delivery(d);
+}
+
+void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {
+  ++c.stats.dropped[static_cast<int>(reason)];
+  trace_.drop(now(), c.name, reason, detail);
+}
+
+void Runtime::monitor_failed(Connection& c, const LuaCall& call, const char* callback,
+                             bool may_quarantine) {
+  ++c.stats.errors;
+  ++c.consecutive_errors;
+  trace_.error(now(), c.name, call.error);
+  if (c.reported_errors.insert(call.error).second) {
+    report("connection " + c.name + ": " + callback + " failed: " + call.error +
+           " (the message is dropped; this error is reported once)");
+  }
+  if (may_quarantine && !c.quarantined && c.consecutive_errors >= options_.quarantine_after) {
+    quarantine(
+        c, std::to_string(c.consecutive_errors) + " failures in a row, the last: " + call.error);
+  }
+}
+
+void Runtime::quarantine(Connection& c, const std::string& why, bool destroy) {
+  if (c.quarantined) return;
+  c.quarantined = true;
+  c.stats.quarantined = true;
+  if (c.trig_task) executor_->cancel(c.trig_task);
+  c.trig_task = 0;
+  trace_.quarantine(now(), c.name, why);
+  report("connection " + c.name + " quarantined: " + why +
+         "; its messages are dropped from now on, the rest of the app keeps running");
+  if (destroy && c.monitor) c.monitor->destroy();  // its own failure changes nothing now
+}
+
+void Runtime::schedule_trig(Connection& c) {
+  if (c.trig_task) executor_->cancel(c.trig_task);
+  c.trig_task = executor_->post(now() + c.trig_interval, [this, &c] {
+    c.trig_task = 0;
+    if (c.quarantined || !c.monitor) return;
+    LuaCall call = c.monitor->trig();
+    if (call.status == LuaCall::Status::Error) {
+      monitor_failed(c, call, "trig");
+    } else {
+      c.consecutive_errors = 0;
+    }
+    if (!c.quarantined && c.trig_task == 0) schedule_trig(c);
+  });
+}
+
+// --- PortMonitor calls -------------------------------------------------------------------
+
+double Runtime::Connection::now() { return runtime->now(); }
+
+void Runtime::Connection::set_event(std::string_view event, std::optional<double> lifetime) {
+  double t = runtime->now();
+  EventContainer& box = destination->container;
+  int id = box.index().intern(event);
+  double expiry = lifetime ? t + *lifetime : kNever;
+  box.set(id, index, expiry);
+  runtime->trace_.event(t, destination->qualified, "set", event, name, lifetime ? expiry : -1);
+}
+
+void Runtime::Connection::unset_event(std::string_view event) {
+  double t = runtime->now();
+  EventContainer& box = destination->container;
+  box.present(t);  // lapse expired entries first, so the trace shows expiry before unset
+  if (box.unset(box.index().find(event), index)) {
+    runtime->trace_.event(t, destination->qualified, "unset", event, name, -1);
+  }
+}
+
+bool Runtime::Connection::has_event(std::string_view event) {
+  return destination->container.has(event, runtime->now());
+}
+
+std::string Runtime::Connection::set_constraint(std::string_view text) {
+  ConstraintParse parsed = parse_constraint(text);
+  if (!parsed.ok) {
+    return parsed.error + " at offset " + std::to_string(parsed.offset) + " in \"" +
+           std::string(text) + "\"";
+  }
+  constraint = CompiledConstraint::compile(parsed.constraint, destination->container.index());
+  constraint_text = std::string(text);
+  return {};
+}
+
+void Runtime::Connection::set_trig_interval(double seconds) {
+  trig_interval = seconds;
+  if (!quarantined && has_trig && runtime->started_) runtime->schedule_trig(*this);
+}
+
+void Runtime::Connection::print(const std::string& line) {
+  runtime->trace_.log(runtime->now(), name, line);
+  runtime->report(name + ": " + line);
+}
+
+}  // namespace arbc

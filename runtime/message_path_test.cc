@@ -1,0 +1,226 @@
+// The message path semantics of DESIGN.md section 4.
+#include <gtest/gtest.h>
+
+#include "runtime/runtime_test_util.h"
+
+namespace arbc {
+namespace {
+
+using testing::TestApp;
+
+TEST(MessagePathTest, OrderIsKeptPerConnection) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Src.x", "Sink.x", "true",
+            "PortMonitor.accept = function(m) return m % 7 ~= 3 end\n"
+            "PortMonitor.update = function(m) return m * 2 end\n");
+  auto rt = t.start();
+  // Interleave bursts published in one callback with single messages at other times.
+  rt->executor().post(1.0, [&] {
+    for (int i = 0; i < 50; ++i) rt->publish("Src", "x", Value(i));
+  });
+  for (int i = 50; i < 100; ++i) TestApp::publish_at(*rt, 1.0 + i * 0.01, "Src", "x", Value(i));
+  rt->advance(10);
+  std::vector<int64_t> seen;
+  for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
+  std::vector<int64_t> expected;
+  for (int i = 0; i < 100; ++i) {
+    if (i % 7 != 3) expected.push_back(2 * i);
+  }
+  EXPECT_EQ(seen, expected);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.arrived, 100u);
+  EXPECT_EQ(s.delivered, expected.size());
+  EXPECT_EQ(s.drops(DropReason::Rejected), 100u - expected.size());
+}
+
+TEST(MessagePathTest, QueueBoundDropsTheExcessAndCountsIt) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Src.x", "Sink.x", "true");
+  RunOptions o;
+  o.queue_capacity = 10;
+  auto rt = t.start(o);
+  rt->executor().post(0.5, [&] {
+    for (int i = 0; i < 25; ++i) rt->publish("Src", "x", Value(i));
+  });
+  rt->advance(1);
+  auto& got = TestApp::sink(*rt).got;
+  ASSERT_EQ(got.size(), 10u);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(got[i].value.as_int(), i);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "c").drops(DropReason::QueueFull), 15u);
+}
+
+// A feed sets `e` for 0.5 s at t = 1; the rule reads `e`.
+TEST(MessagePathTest, EventExpiresExactlyAtItsLifetime) {
+  TestApp t;
+  t.module("Src", {"out x: int", "out f: int"});
+  t.module("Sink", {"in x: int", "in y: int"});
+  t.connect("feed", "Src.f", "Sink.x", "false",
+            "PortMonitor.accept = function(m) PortMonitor.setEvent('e', 0.5) return true end\n",
+            model::ConnectionKind::Feed);
+  t.connect("rule", "Src.x", "Sink.x", "e");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 1.0, "Src", "f", Value(0));
+  TestApp::publish_at(*rt, 0.999, "Src", "x", Value(1));  // before: absent
+  TestApp::publish_at(*rt, 1.0, "Src", "x", Value(2));    // set at 1.0 (feed first): present
+  TestApp::publish_at(*rt, 1.4999999, "Src", "x", Value(3));
+  TestApp::publish_at(*rt, 1.5, "Src", "x", Value(4));  // t == expiry: absent
+  TestApp::publish_at(*rt, 2.0, "Src", "x", Value(5));
+  rt->advance(3);
+  std::vector<int64_t> seen;
+  for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
+  EXPECT_EQ(seen, (std::vector<int64_t>{2, 3}));
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "rule").drops(DropReason::NotSelected), 3u);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "feed").delivered, 0u);
+}
+
+TEST(MessagePathTest, UnsetRemovesOnlyTheCallersOwnEntry) {
+  TestApp t;
+  t.module("Src", {"out x: int", "out a: bool", "out b: bool"});
+  t.module("Sink", {"in x: int"});
+  const char* setter =
+      "PortMonitor.accept = function(on)\n"
+      "  if on then PortMonitor.setEvent('e') else PortMonitor.unsetEvent('e') end\n"
+      "  return true\n"
+      "end\n";
+  t.connect("fa", "Src.a", "Sink.x", "false", setter, model::ConnectionKind::Feed);
+  t.connect("fb", "Src.b", "Sink.x", "false", setter, model::ConnectionKind::Feed);
+  t.connect("rule", "Src.x", "Sink.x", "e");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 1, "Src", "a", Value(true));
+  TestApp::publish_at(*rt, 1, "Src", "b", Value(true));
+  TestApp::publish_at(*rt, 2, "Src", "a", Value(false));  // fb's entry stays
+  TestApp::publish_at(*rt, 3, "Src", "x", Value(1));      // still present: delivered
+  TestApp::publish_at(*rt, 4, "Src", "a", Value(false));  // fa has no entry: no effect
+  TestApp::publish_at(*rt, 5, "Src", "x", Value(2));      // delivered
+  TestApp::publish_at(*rt, 6, "Src", "b", Value(false));  // the last entry goes
+  TestApp::publish_at(*rt, 7, "Src", "x", Value(3));      // not selected
+  rt->advance(8);
+  std::vector<int64_t> seen;
+  for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
+  EXPECT_EQ(seen, (std::vector<int64_t>{1, 2}));
+}
+
+TEST(MessagePathTest, ConstraintIsReadAfterAccept) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect(
+      "self", "Src.x", "Sink.x", "go",
+      "PortMonitor.accept = function(m)\n"
+      "  if m > 0 then PortMonitor.setEvent('go', 0.1) else PortMonitor.unsetEvent('go') end\n"
+      "  return true\n"
+      "end\n");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 1, "Src", "x", Value(1));  // sets its own event: delivered
+  TestApp::publish_at(*rt, 1, "Src", "x", Value(0));  // unsets it first: not selected
+  TestApp::publish_at(*rt, 2, "Src", "x", Value(5));
+  rt->advance(3);
+  std::vector<int64_t> seen;
+  for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
+  EXPECT_EQ(seen, (std::vector<int64_t>{1, 5}));
+}
+
+TEST(MessagePathTest, FeedsNeverDeliver) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  // Even a feed whose script would pass everything and whose events make `true` hold.
+  t.connect("feed", "Src.x", "Sink.x", "false",
+            "PortMonitor.accept = function(m) PortMonitor.setEvent('e') return true end\n"
+            "PortMonitor.update = function(m) return m end\n",
+            model::ConnectionKind::Feed);
+  auto rt = t.start();
+  for (int i = 0; i < 20; ++i) TestApp::publish_at(*rt, i * 0.1, "Src", "x", Value(i));
+  rt->advance(5);
+  EXPECT_TRUE(TestApp::sink(*rt).got.empty());
+  auto s = TestApp::stats_of(rt->stats(), "feed");
+  EXPECT_EQ(s.delivered, 0u);
+  EXPECT_EQ(s.drops(DropReason::Feed), 20u);
+}
+
+TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
+  TestApp t;
+  t.module("Src", {"out x: int", "out f: bool"});
+  t.module("Sink", {"in x: int"});
+  t.connect("feed", "Src.f", "Sink.x", "false",
+            "PortMonitor.accept = function(on)\n"
+            "  if on then PortMonitor.setEvent('e') else PortMonitor.unsetEvent('e') end\n"
+            "  return true\n"
+            "end\n",
+            model::ConnectionKind::Feed);
+  t.connect("rule", "Src.x", "Sink.x", "e").throttle = 1.0;
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 0.0, "Src", "x", Value(0));  // not selected (e absent)
+  TestApp::publish_at(*rt, 0.05, "Src", "f", Value(true));
+  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));  // delivered: no delivery before
+  TestApp::publish_at(*rt, 0.5, "Src", "x", Value(2));  // throttled
+  TestApp::publish_at(*rt, 0.6, "Src", "f", Value(false));
+  TestApp::publish_at(*rt, 1.15, "Src", "x", Value(3));  // not selected; not a delivery
+  TestApp::publish_at(*rt, 1.2, "Src", "f", Value(true));
+  TestApp::publish_at(*rt, 1.25, "Src", "x", Value(4));  // delivered (1.15 did not count)
+  TestApp::publish_at(*rt, 2.0, "Src", "x", Value(5));   // throttled: 0.75 s after 4
+  TestApp::publish_at(*rt, 2.25, "Src", "x", Value(6));  // delivered: exactly 1 s after
+  rt->advance(3);
+  std::vector<int64_t> seen;
+  for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
+  EXPECT_EQ(seen, (std::vector<int64_t>{1, 4, 6}));
+  auto s = TestApp::stats_of(rt->stats(), "rule");
+  EXPECT_EQ(s.drops(DropReason::Throttled), 2u);
+  EXPECT_EQ(s.drops(DropReason::NotSelected), 2u);
+}
+
+TEST(MessagePathTest, NoValueIsADropNotAnError) {
+  TestApp t;
+  t.module("Src", {"out x: list<int>"});
+  t.module("Sink", {"in x: int"});
+  t.connect("first", "Src.x", "Sink.x", "true",
+            "PortMonitor.update = function(l)\n"
+            "  if #l == 0 then PortMonitor.novalue() end\n"
+            "  return l[1]\n"
+            "end\n");
+  auto rt = t.start();
+  for (int i = 0; i < 8; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value::list({}));
+  TestApp::publish_at(*rt, 9, "Src", "x", Value::list({7, 8}));
+  rt->advance(10);
+  auto s = TestApp::stats_of(rt->stats(), "first");
+  EXPECT_EQ(s.drops(DropReason::NoValue), 8u);
+  EXPECT_EQ(s.errors, 0u);
+  EXPECT_FALSE(s.quarantined);
+  ASSERT_EQ(TestApp::sink(*rt).got.size(), 1u);
+  EXPECT_EQ(TestApp::sink(*rt).got[0].value.as_int(), 7);
+}
+
+TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Src.x", "Sink.x", "true",
+            "ticks = 0\n"
+            "PortMonitor.create = function(o)\n"
+            "  assert(o.connection == 'c' and o.source == 'Src.x' and o.destination == 'Sink.x')\n"
+            "  PortMonitor.setConstraint('e_ball and not e')\n"
+            "  PortMonitor.setTrigInterval(0.25)\n"
+            "  return true\n"
+            "end\n"
+            "PortMonitor.trig = function() ticks = ticks + 1\n"
+            "  if ticks == 4 then PortMonitor.setEvent('e_ball') end end\n"
+            "PortMonitor.accept = function(m)\n"
+            "  assert(PortMonitor.getConstraint() == 'e_ball and not e')\n"
+            "  return PortMonitor.hasEvent('e_ball') == (m == 1)\n"
+            "end\n");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 0.9, "Src", "x", Value(0));  // accepted, e_ball absent: not selected
+  TestApp::publish_at(*rt, 1.1, "Src", "x", Value(1));  // 4th trig at 1.0 set e_ball
+  rt->advance(2);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.errors, 0u) << (t.reports.empty() ? "" : t.reports[0]);
+  EXPECT_EQ(s.drops(DropReason::NotSelected), 1u);
+  EXPECT_EQ(s.delivered, 1u);
+}
+
+}  // namespace
+}  // namespace arbc

@@ -1,0 +1,136 @@
+// A running application: modules from the registry, connections with their Lua monitors,
+// one event container per input port, an executor and a trace (DESIGN.md sections 4, 7).
+//
+// The message path, for a message on connection c into port P at time t:
+//   1. c's accept(msg) runs (it may set and unset events); false: drop `rejected`.
+//   2. c's constraint is evaluated on P's container at t; false: drop `not-selected`
+//      (`feed` for feed connections, whose constraint is false by design).
+//   3. throttle: a delivery on c less than its throttle period ago: drop `throttled`.
+//   4. c's update(msg) runs; its result is delivered to P's module.
+// Script errors drop the message (`monitor-error`); a connection whose callbacks fail
+// `quarantine_after` times in a row is quarantined: its monitor is destroyed and its further
+// messages are dropped (`quarantined`). Each connection keeps a bounded FIFO queue
+// (`queue-full` drops beyond it), so messages on one connection keep their order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "runtime/app_model.h"
+#include "runtime/compiled_constraint.h"
+#include "runtime/drop_reason.h"
+#include "runtime/event_container.h"
+#include "runtime/executor.h"
+#include "runtime/lua_monitor.h"
+#include "runtime/module.h"
+#include "runtime/trace.h"
+
+namespace arbc {
+
+struct RunOptions {
+  std::string scenario;  // empty: the environment's first scenario, else "default"
+  uint64_t seed = 1;
+  double duration = 60;  // seconds of (simulated or wall) time
+  bool realtime = false;
+  std::string trace_path;  // empty: no trace
+  SandboxLimits limits;
+  size_t queue_capacity = 256;  // messages per connection
+  int quarantine_after = 5;     // consecutive failing callbacks
+};
+
+// Counters of one connection, for the end-of-run table and tests.
+struct ConnectionStats {
+  std::string name, source, destination;
+  uint64_t arrived = 0, delivered = 0, errors = 0;
+  uint64_t pending = 0;  // still queued when the run ended (arrived = delivered + drops + pending)
+  std::array<uint64_t, kDropReasonCount> dropped{};
+  bool quarantined = false;
+  uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
+};
+
+class Runtime {
+ public:
+  // Instantiates the app: modules (from registry), monitors (files relative to app_dir),
+  // constraints, environment. Returns nullptr and sets *error (what is wrong, what to do) on
+  // failure. Does not start anything yet.
+  static std::unique_ptr<Runtime> create(const model::App& app, const std::string& app_dir,
+                                         const RunOptions& options, std::string* error,
+                                         Registry& registry = Registry::global());
+  ~Runtime();
+
+  // Whole run: start(), advance to options.duration (or an early stop), shutdown().
+  void run();
+  // Sets up the environment, creates monitors, starts modules and their ticks.
+  void start();
+  // Runs the executor until time `until` or a stop request.
+  void advance(double until);
+  // Stops modules, destroys monitors, finishes the environment, closes the trace.
+  void shutdown();
+
+  // Injects a message as if module.port (an output port) had published it.
+  void publish(std::string_view module, std::string_view port, Value v);
+
+  double now() const;
+  Executor& executor() { return *executor_; }
+  Module* module(std::string_view name);
+  Environment* environment() { return environment_.get(); }
+  const std::string& scenario() const { return scenario_; }
+  const std::string& stop_reason() const { return stop_reason_; }
+  bool stopped_early() const { return !stop_reason_.empty(); }
+  std::vector<ConnectionStats> stats() const;
+  // A table of the counters, one row per connection.
+  std::string stats_table() const;
+  // Where run-time problems are reported (default: stderr). Each distinct script error is
+  // reported once per connection.
+  void set_reporter(std::function<void(const std::string&)> reporter) {
+    reporter_ = std::move(reporter);
+  }
+  // Memory used by each monitor's Lua state, by connection name.
+  std::map<std::string, size_t> monitor_memory() const;
+
+  struct InPort;
+  struct OutPort;
+  struct Connection;
+  class ModuleSlot;
+  class EnvironmentSlot;
+
+ private:
+  Runtime() = default;
+  void report(const std::string& line);
+  void enqueue(Connection& c, const Value& v);
+  void drain(Connection& c);
+  void process(Connection& c, const Value& msg);
+  void drop(Connection& c, DropReason reason, std::string_view detail = {});
+  // Counts and reports a failing callback; quarantines after too many in a row.
+  void monitor_failed(Connection& c, const LuaCall& call, const char* callback,
+                      bool may_quarantine = true);
+  // Takes c out of service; calls its destroy() when `destroy` (the monitor was created).
+  void quarantine(Connection& c, const std::string& why, bool destroy = true);
+  void schedule_trig(Connection& c);
+  void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
+  void publish_from(ModuleSlot& m, std::string_view port, Value v);
+
+  model::App app_;
+  std::string scenario_;
+  RunOptions options_;
+  std::unique_ptr<Executor> executor_;
+  Trace trace_;
+  std::unique_ptr<Environment> environment_;
+  std::unique_ptr<EnvironmentSlot> environment_slot_;
+  std::vector<std::unique_ptr<ModuleSlot>> modules_;
+  std::vector<std::unique_ptr<InPort>> in_ports_;
+  std::vector<std::unique_ptr<OutPort>> out_ports_;
+  std::vector<std::unique_ptr<Connection>> connections_;
+  std::function<void(const std::string&)> reporter_;
+  std::string stop_reason_;
+  bool started_ = false, shut_down_ = false;
+};
+
+}  // namespace arbc

@@ -1,0 +1,118 @@
+// Test helpers: an app built in code, monitor scripts written to a scratch directory, and
+// two small modules (a source that publishes what the test tells it, a sink that records).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "runtime/runtime.h"
+
+namespace arbc::testing {
+
+// Records every delivery it gets.
+class Sink : public Module {
+ public:
+  struct Got {
+    std::string port, connection;
+    Value value;
+    double time;
+  };
+  void on_delivery(const Delivery& d) override {
+    got.push_back({d.port, d.connection, d.value, d.time});
+  }
+  std::vector<Got> got;
+};
+
+class Source : public Module {};
+
+class TestApp {
+ public:
+  TestApp() {
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir = std::string(ARBC_BINARY_DIR) + "/runtime_test_scratch/" + info->test_suite_name() + "." +
+          info->name();
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir + "/monitors");
+    registry.add_module("Src", [] { return std::make_unique<Source>(); });
+    registry.add_module("Src2", [] { return std::make_unique<Source>(); });
+    registry.add_module("Sink", [] { return std::make_unique<Sink>(); });
+  }
+
+  // Adds a module with ports given as {"in x: int", "out y: float"}.
+  void module(const std::string& name, const std::vector<std::string>& ports) {
+    model::Module m;
+    m.name = name;
+    for (const std::string& p : ports) {
+      model::Port port;
+      port.direction = p.rfind("in ", 0) == 0 ? model::Direction::In : model::Direction::Out;
+      std::string rest = p.substr(p.find(' ') + 1);
+      port.name = rest.substr(0, rest.find(':'));
+      port.type = parse_type(rest.substr(rest.find(':') + 1));
+      m.ports.push_back(port);
+    }
+    app.modules.push_back(m);
+  }
+
+  // Adds a connection; a non-empty script is written as monitors/<name>.lua.
+  model::Connection& connect(const std::string& name, const std::string& source,
+                             const std::string& destination, const std::string& constraint,
+                             const std::string& script = "",
+                             model::ConnectionKind kind = model::ConnectionKind::Rule) {
+    model::Connection c;
+    c.name = name;
+    c.source = source;
+    c.destination = destination;
+    c.kind = kind;
+    ConstraintParse p = parse_constraint(constraint);
+    EXPECT_TRUE(p.ok) << p.error;
+    c.constraint = p.constraint;
+    if (!script.empty()) {
+      c.monitor = "monitors/" + name + ".lua";
+      std::ofstream(dir + "/" + c.monitor) << script;
+    }
+    app.connections.push_back(c);
+    return app.connections.back();
+  }
+
+  // Creates the runtime (failing the test on error) and collects its reports.
+  std::unique_ptr<Runtime> start(RunOptions options = {}) {
+    std::string error;
+    auto rt = Runtime::create(app, dir, options, &error, registry);
+    EXPECT_TRUE(rt) << error;
+    if (!rt) return nullptr;
+    rt->set_reporter([this](const std::string& line) { reports.push_back(line); });
+    rt->start();
+    return rt;
+  }
+
+  static Sink& sink(Runtime& rt, const std::string& name = "Sink") {
+    return *dynamic_cast<Sink*>(rt.module(name));
+  }
+
+  // Publishes v from module.port at time t (by posting on the executor).
+  static void publish_at(Runtime& rt, double t, const std::string& module, const std::string& port,
+                         Value v) {
+    rt.executor().post(t, [&rt, module, port, v] { rt.publish(module, port, v); });
+  }
+
+  static const ConnectionStats& stats_of(const std::vector<ConnectionStats>& all,
+                                         const std::string& name) {
+    for (const ConnectionStats& s : all) {
+      if (s.name == name) return s;
+    }
+    static ConnectionStats none;
+    ADD_FAILURE() << "no connection " << name;
+    return none;
+  }
+
+  model::App app;
+  std::string dir;
+  Registry registry;
+  std::vector<std::string> reports;
+};
+
+}  // namespace arbc::testing

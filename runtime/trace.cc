@@ -1,0 +1,120 @@
+#include "runtime/trace.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include "runtime/json_text.h"
+
+namespace arbc {
+
+Trace::~Trace() { close(); }
+
+std::string Trace::open(const std::string& path) {
+  close();
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) return "cannot write trace file " + path + ": " + std::strerror(errno);
+  return {};
+}
+
+void Trace::close() {
+  if (file_) std::fclose(file_);
+  file_ = nullptr;
+}
+
+void Trace::begin(double t, const char* type) {
+  line_.clear();
+  line_ += "{\"t\":";
+  append_json_double(line_, t);
+  line_ += ",\"type\":\"";
+  line_ += type;
+  line_ += '"';
+}
+
+void Trace::field(const char* key, std::string_view value) {
+  line_ += ",\"";
+  line_ += key;
+  line_ += "\":";
+  append_json_string(line_, value);
+}
+
+void Trace::end() {
+  line_ += "}\n";
+  std::fwrite(line_.data(), 1, line_.size(), file_);
+}
+
+void Trace::delivery(double t, std::string_view connection, std::string_view port, const Value& v) {
+  if (!file_) return;
+  begin(t, "deliver");
+  field("connection", connection);
+  field("port", port);
+  line_ += ",\"value\":";
+  line_ += v.to_json();
+  end();
+}
+
+void Trace::drop(double t, std::string_view connection, DropReason reason,
+                 std::string_view detail) {
+  if (!file_) return;
+  begin(t, "drop");
+  field("connection", connection);
+  field("reason", drop_reason_name(reason));
+  if (!detail.empty()) field("detail", detail);
+  end();
+}
+
+void Trace::event(double t, std::string_view port, std::string_view kind, std::string_view event,
+                  std::string_view owner, double expiry) {
+  if (!file_) return;
+  begin(t, "event");
+  field("port", port);
+  field("op", kind);
+  field("event", event);
+  field("owner", owner);
+  if (expiry >= 0) {
+    line_ += ",\"expiry\":";
+    append_json_double(line_, expiry);
+  }
+  end();
+}
+
+void Trace::error(double t, std::string_view connection, std::string_view message) {
+  if (!file_) return;
+  begin(t, "error");
+  field("connection", connection);
+  field("message", message);
+  end();
+}
+
+void Trace::quarantine(double t, std::string_view connection, std::string_view why) {
+  if (!file_) return;
+  begin(t, "quarantine");
+  field("connection", connection);
+  field("message", why);
+  end();
+}
+
+void Trace::log(double t, std::string_view who, std::string_view message) {
+  if (!file_) return;
+  begin(t, "log");
+  field("from", who);
+  field("message", message);
+  end();
+}
+
+void Trace::publish_error(double t, std::string_view port, std::string_view message) {
+  if (!file_) return;
+  begin(t, "publish-error");
+  field("port", port);
+  field("message", message);
+  end();
+}
+
+void Trace::pending(double t, std::string_view connection, size_t count) {
+  if (!file_) return;
+  begin(t, "pending");
+  field("connection", connection);
+  line_ += ",\"count\":" + std::to_string(count);
+  end();
+}
+
+}  // namespace arbc

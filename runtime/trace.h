@@ -1,0 +1,44 @@
+// The run's trace: one JSON object per line, for every delivery, drop, event change and
+// error (docs/runtime.md, "Trace format"). Keys come in a fixed order and numbers print
+// deterministically, so the same seed gives a byte-identical trace.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "runtime/drop_reason.h"
+#include "runtime/value.h"
+
+namespace arbc {
+
+class Trace {
+ public:
+  Trace() = default;
+  ~Trace();
+  // Opens path for writing; returns an error message or "".
+  std::string open(const std::string& path);
+  bool enabled() const { return file_ != nullptr; }
+
+  void delivery(double t, std::string_view connection, std::string_view port, const Value& v);
+  void drop(double t, std::string_view connection, DropReason reason, std::string_view detail);
+  // kind: "set", "unset" or "expire"; expiry < 0 means none.
+  void event(double t, std::string_view port, std::string_view kind, std::string_view event,
+             std::string_view owner, double expiry);
+  void error(double t, std::string_view connection, std::string_view message);
+  void quarantine(double t, std::string_view connection, std::string_view why);
+  void log(double t, std::string_view who, std::string_view message);
+  void publish_error(double t, std::string_view port, std::string_view message);
+  // Messages still queued on a connection when the run ended.
+  void pending(double t, std::string_view connection, size_t count);
+  void close();
+
+ private:
+  void begin(double t, const char* type);
+  void field(const char* key, std::string_view value);
+  void end();
+  std::FILE* file_ = nullptr;
+  std::string line_;
+};
+
+}  // namespace arbc

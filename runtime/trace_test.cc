@@ -1,0 +1,92 @@
+#include "runtime/trace.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "runtime/runtime_test_util.h"
+
+namespace arbc {
+namespace {
+
+using testing::TestApp;
+
+// Publishes a random int every 0.1 s and a random flag every 0.2 or 0.6 s.
+class Noisy : public Module {
+ public:
+  double tick_period() const override { return 0.1; }
+  void start() override { flag(); }
+  void tick() override { publish("x", Value(static_cast<int64_t>(rng()() % 100))); }
+  void flag() {
+    publish("f", Value(rng()() % 2 == 0));
+    schedule(rng()() % 2 ? 0.2 : 0.6, [this] { flag(); });
+  }
+};
+
+std::string run_traced(uint64_t seed, const std::string& name) {
+  TestApp t;
+  t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
+  t.module("Noisy", {"out x: int", "out f: bool"});
+  t.module("Sink", {"in x: int"});
+  t.connect("feed", "Noisy.f", "Sink.x", "false",
+            "PortMonitor.accept = function(on)\n"
+            "  if on then PortMonitor.setEvent('e', 0.4) else PortMonitor.unsetEvent('e') end\n"
+            "  return true\n"
+            "end\n",
+            model::ConnectionKind::Feed);
+  t.connect("rule", "Noisy.x", "Sink.x", "e",
+            "PortMonitor.accept = function(m) return m % 5 ~= 0 end\n"
+            "PortMonitor.update = function(m) if m % 7 == 0 then PortMonitor.novalue() end "
+            "return m end\n");
+  RunOptions o;
+  o.seed = seed;
+  o.duration = 20;
+  o.trace_path = t.dir + "/" + name + ".jsonl";
+  auto rt = t.start(o);
+  rt->advance(o.duration);
+  rt->shutdown();
+  std::ifstream in(o.trace_path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(TraceTest, SameSeedGivesByteIdenticalTraces) {
+  std::string a = run_traced(7, "a"), b = run_traced(7, "b"), c = run_traced(8, "c");
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  for (const char* kind : {"\"type\":\"deliver\"", "\"reason\":\"feed\"", "\"reason\":\"rejected\"",
+                           "\"reason\":\"not-selected\"", "\"reason\":\"no-value\"",
+                           "\"op\":\"set\"", "\"op\":\"unset\"", "\"op\":\"expire\""}) {
+    EXPECT_NE(a.find(kind), std::string::npos) << kind;
+  }
+}
+
+TEST(TraceTest, LineFormat) {
+  TestApp t;
+  RunOptions unused;
+  Trace trace;
+  std::string path = t.dir + "/t.jsonl";
+  ASSERT_EQ(trace.open(path), "");
+  trace.delivery(1.5, "take", "PickAndPlace.cmd", Value::record({{"verb", "take"}}));
+  trace.drop(2, "put", DropReason::NotSelected, "");
+  trace.event(2.25, "Speak.text", "set", "e_face", "feed_face", 3.25);
+  trace.error(3, "ask", "monitors/ask.lua:3: boom");
+  trace.close();
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(),
+            "{\"t\":1.5,\"type\":\"deliver\",\"connection\":\"take\",\"port\":\"PickAndPlace.cmd\","
+            "\"value\":{\"verb\":\"take\"}}\n"
+            "{\"t\":2.0,\"type\":\"drop\",\"connection\":\"put\",\"reason\":\"not-selected\"}\n"
+            "{\"t\":2.25,\"type\":\"event\",\"port\":\"Speak.text\",\"op\":\"set\",\"event\":"
+            "\"e_face\",\"owner\":\"feed_face\",\"expiry\":3.25}\n"
+            "{\"t\":3.0,\"type\":\"error\",\"connection\":\"ask\",\"message\":"
+            "\"monitors/ask.lua:3: boom\"}\n");
+}
+
+}  // namespace
+}  // namespace arbc
