@@ -1,0 +1,329 @@
+// The spec language's abstract syntax tree (DESIGN.md section 3), with source locations.
+//
+// The parse-tree builder (ast_builder.*) fills the syntax; semantic analysis (sema.*) then
+// fills the fields marked "sema:" so that lowering never resolves a name or infers a type
+// again: every expression knows its type, every name knows what it refers to, every port
+// reference knows its module and port, every constraint is already a runtime Constraint tree,
+// and every duration is already a number of seconds.
+//
+// Ownership: a Spec owns everything. Declarations live in per-kind vectors; sema links them with
+// plain pointers, so a Spec is movable (vector buffers move with it) but not copyable.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/app_model.h"
+#include "runtime/constraint.h"
+#include "runtime/type.h"
+
+namespace arbc::ast {
+
+using Loc = model::SourceLocation;
+
+struct ModuleDecl;
+struct PortDecl;
+struct ConstDecl;
+struct Stmt;
+struct Expr;
+struct Rule;
+struct ArbitrateDecl;
+
+using ExprPtr = std::unique_ptr<Expr>;
+using Block = std::vector<std::unique_ptr<Stmt>>;
+
+// ---------------------------------------------------------------------------------------------
+// Types as written: `float`, `list<Object>`, `{ pos: vec3, dist: float }`, `Object`.
+struct TypeExpr {
+  enum class Kind { Bool, Int, Float, String, Vec3, List, Record, Named };
+  Kind kind = Kind::Bool;
+  std::string name;                         // Kind::Named
+  std::unique_ptr<TypeExpr> element;        // Kind::List
+  std::vector<std::pair<std::string, std::unique_ptr<TypeExpr>>> fields;  // Kind::Record
+  std::vector<Loc> field_locs;              // Kind::Record, parallel to fields
+  Loc loc;
+  TypePtr resolved;  // sema: the structural type (named types expanded); null on error
+};
+
+// `Module.port`, wherever a port is named.
+struct PortRef {
+  std::string module;
+  std::string port;
+  Loc loc;                               // the whole `Module.port`
+  const ModuleDecl* module_decl = nullptr;  // sema
+  const PortDecl* port_decl = nullptr;      // sema
+  std::string qualified() const { return module + "." + port; }
+};
+
+// A duration-valued position (`lifetime D`, `hold D`, `for D`, `throttle D`, `every D`):
+// a duration literal (`500ms`, `0.5s`, `2min`) or a constant holding one.
+struct Duration {
+  ExprPtr expr;
+  double seconds = 0;  // sema: the constant value in seconds
+};
+
+// ---------------------------------------------------------------------------------------------
+// Expressions.
+
+enum class Builtin { None, Len, MinBy, MaxBy, Dist, Norm, Abs, Min, Max, Now, Vec3 };
+
+// What an identifier in an expression names (sema).
+enum class NameKind {
+  Unresolved,
+  Message,  // the incoming message, bound to the source port's name (`objects`, `face`)
+  Let,      // `let x = E;` in the enclosing body
+  Var,      // `var x = E;`: monitor state kept across messages
+  Param,    // a lambda's parameter
+  Const,    // `const N = E;`
+  Event,    // an event, only inside constraints (`when`, `assert`, `invariant`)
+};
+
+struct Expr {
+  enum class Kind {
+    Number,    // number; is_int says whether it was written without a fraction or exponent
+    Duration,  // `500ms`: number holds seconds
+    String,    // text holds the decoded string
+    Bool,      // boolean
+    Name,      // text holds the identifier
+    Field,     // args[0].text
+    Index,     // args[0][args[1]]
+    Unary,     // op is "-" or "not"; args[0]
+    Binary,    // op is one of + - * / % < <= > >= == != and or; args[0], args[1]
+    Record,    // { text: args[i] }: field_names[i] = args[i]
+    List,      // [ args... ]
+    Lambda,    // text => args[0]  (only as an argument of min_by / max_by)
+    Call,      // text(args...), text names a builtin
+    Otherwise, // `otherwise`, only as a whole constraint
+  };
+  Kind kind = Kind::Number;
+  Loc loc;
+  std::string op;
+  std::string text;
+  double number = 0;
+  bool is_int = false;
+  bool boolean = false;
+  std::vector<std::string> field_names;  // Kind::Record
+  std::vector<Loc> field_locs;           // Kind::Record
+  std::vector<ExprPtr> args;
+
+  // sema:
+  TypePtr type;            // value type; null for lambdas, events, otherwise, and on error.
+                           // An empty list literal `[]` has a List type with a null element.
+  bool is_duration = false;  // a float that came from a duration literal or duration constant
+  NameKind name_kind = NameKind::Unresolved;  // Kind::Name
+  const Stmt* local = nullptr;                // NameKind::Let / Var: the declaring statement
+  const Expr* lambda = nullptr;               // NameKind::Param: the Lambda expression
+  const ConstDecl* constant = nullptr;        // NameKind::Const
+  Builtin builtin = Builtin::None;            // Kind::Call
+};
+
+// ---------------------------------------------------------------------------------------------
+// Monitor body statements.
+
+struct Stmt {
+  enum class Kind {
+    Let,       // let name = expr;
+    Var,       // var name = expr;   (initialised once, kept across messages)
+    Assign,    // name = expr;       (name is a var)
+    Accept,    // accept expr;
+    Set,       // set name [for duration];
+    Unset,     // unset name;
+    If,        // if expr { body } else { else_body }   (else if: one If in else_body)
+    Emit,      // emit expr;
+    Throttle,  // throttle duration;
+    Every,     // every duration { body }
+    Script,    // script "text";
+  };
+  Kind kind = Kind::Accept;
+  Loc loc;
+  std::string name;  // Let, Var, Assign (the variable), Set, Unset (the event)
+  Loc name_loc;
+  std::string text;  // Script: the file name as written
+  ExprPtr expr;      // Let, Var, Assign, Accept, If (condition), Emit
+  std::optional<Duration> duration;  // Set (for D), Throttle, Every
+  Block body;                        // If (then), Every
+  Block else_body;                   // If; empty when there is no else
+  bool has_else = false;
+  // sema:
+  const Stmt* var_decl = nullptr;  // Assign: the Var statement it writes
+};
+
+// ---------------------------------------------------------------------------------------------
+// Declarations.
+
+struct AppDecl {
+  std::string name;
+  std::string doc;
+  Loc loc;
+};
+
+struct TypeDecl {
+  std::string name;
+  TypeExpr type;
+  Loc loc;  // the name
+};
+
+struct ConstDecl {
+  std::string name;
+  ExprPtr value;
+  Loc loc;  // the name
+  // sema: value->type / value->is_duration give the constant's type; the folded value:
+  double number = 0;  // numbers (durations in seconds)
+  std::string text;   // strings
+  bool boolean = false;
+};
+
+struct PortDecl {
+  std::string name;
+  model::Direction direction = model::Direction::In;
+  TypeExpr type;
+  Loc loc;  // the name
+};
+
+struct ModuleDecl {
+  std::string name;
+  std::string doc;
+  std::vector<PortDecl> ports;
+  Loc loc;  // the name
+  const PortDecl* find_port(const std::string& port) const;
+};
+
+// One name declared by `event e, f [lifetime D];`.
+struct EventName {
+  std::string name;
+  Loc loc;
+};
+
+// `event e, f [lifetime D];`: events set and unset by monitor code.
+struct EventDecl {
+  std::vector<EventName> names;
+  std::optional<Duration> lifetime;
+  Loc loc;
+};
+
+// `events from M.p { e, f = "flag" } lifetime D;`
+struct StatusEventDecl {
+  struct Entry {
+    std::string event;  // the event's name
+    std::string flag;   // the module's flag name; the event's name unless `= "flag"`
+    Loc loc;
+  };
+  PortRef source;
+  std::vector<Entry> entries;
+  std::optional<Duration> lifetime;
+  Loc loc;
+};
+
+// `event e = M.p : PRED [for D];`
+struct DerivedEventDecl {
+  std::string name;
+  PortRef source;
+  ExprPtr predicate;  // over the message, bound to the source port's name
+  std::optional<Duration> lifetime;  // `for D`
+  Loc loc;  // the name
+};
+
+// `exclusive { a, b, c };`
+struct ExclusiveDecl {
+  std::vector<EventName> events;
+  Loc loc;
+};
+
+// `invariant EXPR;`
+struct InvariantDecl {
+  ExprPtr formula;
+  Loc loc;
+  Constraint constraint;  // sema
+};
+
+// `name: from M.q [when C] [hold D] [{ body }]` or ending in `;`.
+struct Rule {
+  std::string name;
+  PortRef source;
+  ExprPtr when;  // null: no `when` (constraint true)
+  std::optional<Duration> hold;
+  bool has_body = false;
+  Block body;
+  Loc loc;  // the name
+  // sema:
+  const ArbitrateDecl* port = nullptr;
+  bool otherwise = false;   // the constraint is `otherwise`
+  Constraint constraint;    // the `when` as a tree (true when absent; unused if otherwise)
+  std::string message_name; // the name the message is bound to in the body: source.port
+};
+
+// `arbitrate M.p [by priority] [complete] { rules }`
+struct ArbitrateDecl {
+  PortRef port;
+  bool by_priority = false;
+  bool complete = false;
+  std::vector<Rule> rules;  // in spec order (highest priority first under `by priority`)
+  Loc loc;                  // the `arbitrate` keyword
+};
+
+// `connect M.q -> N.p [{ body }]`
+struct ConnectDecl {
+  PortRef source;
+  PortRef destination;
+  bool has_body = false;
+  Block body;
+  Loc loc;  // the `connect` keyword
+  std::string message_name;  // sema: source.port
+};
+
+// `assert M.p: rule -> EXPR;`
+struct AssertDecl {
+  PortRef port;
+  std::string rule;
+  Loc rule_loc;
+  ExprPtr property;
+  Loc loc;  // the `assert` keyword
+  // sema:
+  const Rule* rule_decl = nullptr;
+  Constraint constraint;
+};
+
+// What an event name refers to (sema builds one per declared event).
+struct EventSymbol {
+  enum class Kind { Manual, Status, Derived };
+  Kind kind = Kind::Manual;
+  std::string name;
+  std::optional<double> lifetime;  // seconds
+  std::string source;              // "Module.port" for Status and Derived
+  std::string flag;                // Status: the module's flag name
+  Loc loc;
+};
+
+// One spec file.
+struct Spec {
+  std::string file;
+  std::optional<AppDecl> app;
+  std::vector<TypeDecl> types;
+  std::vector<ConstDecl> consts;
+  std::vector<ModuleDecl> modules;
+  std::vector<EventDecl> events;
+  std::vector<StatusEventDecl> status_events;
+  std::vector<DerivedEventDecl> derived_events;
+  std::vector<ExclusiveDecl> exclusives;
+  std::vector<InvariantDecl> invariants;
+  std::vector<ArbitrateDecl> arbitrations;
+  std::vector<ConnectDecl> connects;
+  std::vector<AssertDecl> asserts;
+
+  // sema: every event by name, in declaration order.
+  std::vector<EventSymbol> event_symbols;
+
+  Spec() = default;
+  Spec(Spec&&) = default;
+  Spec& operator=(Spec&&) = default;
+  Spec(const Spec&) = delete;
+  Spec& operator=(const Spec&) = delete;
+
+  const ModuleDecl* find_module(const std::string& name) const;
+  const EventSymbol* find_event(const std::string& name) const;
+  const ArbitrateDecl* find_arbitration(const std::string& qualified_port) const;
+};
+
+}  // namespace arbc::ast

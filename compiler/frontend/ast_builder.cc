@@ -1,0 +1,577 @@
+#include "compiler/frontend/ast_builder.h"
+
+#include <ArbcParser.h>
+#include <antlr4-runtime.h>
+
+#include <cstdlib>
+#include <typeinfo>
+
+#include "compiler/frontend/token_checks.h"
+#include "compiler/frontend/token_text.h"
+
+namespace arbc::frontend {
+
+using arbc_grammar::ArbcParser;
+using namespace ast;
+
+// The parse tree node as a `T` if it is exactly one (labelled alternatives are leaf classes),
+// else null. typeid comparison is much cheaper than dynamic_cast on large specs.
+template <typename T, typename Node>
+T* as(Node* node) {
+  return node && typeid(*node) == typeid(T) ? static_cast<T*>(node) : nullptr;
+}
+
+class Builder {
+ public:
+  Builder(const std::string& file, std::string_view source, std::vector<Diagnostic>& out)
+      : file_(file), text_(source), out_(out) {}
+
+  // decl : appDecl | typeDecl | ... | assertDecl ;   (add_decl, below)
+
+  std::string tx(antlr4::Token* token) const { return text_.text(token); }
+  std::string tx(antlr4::tree::TerminalNode* node) const { return text_.text(node->getSymbol()); }
+
+  // ---- locations --------------------------------------------------------------------------
+  Loc loc(antlr4::Token* token) const { return token_location(token, file_); }
+  Loc loc(antlr4::tree::TerminalNode* node) const { return loc(node->getSymbol()); }
+  Loc loc(antlr4::ParserRuleContext* ctx) const {
+    Loc l = loc(ctx->getStart());
+    antlr4::Token* stop = ctx->getStop();
+    if (stop && stop->getTokenIndex() >= ctx->getStart()->getTokenIndex()) {
+      // The end of the stop token, computed without building a second location.
+      l.end_line = static_cast<int>(stop->getLine());
+      l.end_column = static_cast<int>(stop->getCharPositionInLine()) + 1 +
+                     static_cast<int>(stop->getStopIndex() + 1 - stop->getStartIndex());
+    }
+    return l;
+  }
+
+  void error(const Loc& where, std::string message, std::string id) {
+    Diagnostic d;
+    d.loc = where;
+    d.message = std::move(message);
+    d.id = std::move(id);
+    out_.push_back(std::move(d));
+  }
+
+  // ---- literals -----------------------------------------------------------------------------
+  // STRING : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;   escapes: \" \\ \n \t \r
+  std::string decode_string(antlr4::tree::TerminalNode* node) {
+    std::string raw = tx(node);
+    std::string out;
+    for (size_t i = 1; i + 1 < raw.size(); ++i) {
+      if (raw[i] != '\\') {
+        out += raw[i];
+        continue;
+      }
+      char c = raw[++i];
+      switch (c) {
+        case '"': out += '"'; break;
+        case '\\': out += '\\'; break;
+        case 'n': out += '\n'; break;
+        case 't': out += '\t'; break;
+        case 'r': out += '\r'; break;
+        default: {
+          Loc where = loc(node);
+          where.column += static_cast<int>(i) - 1;
+          where.end_column = where.column + 2;
+          error(where,
+                std::string("unknown escape sequence '\\") + c +
+                    "' in a string: use \\\", \\\\, \\n, \\t or \\r",
+                "bad-escape");
+        }
+      }
+    }
+    return out;
+  }
+
+  static double seconds_of_duration(const std::string& text) {
+    size_t unit = text.find_first_not_of("0123456789.");
+    double value = std::strtod(text.substr(0, unit).c_str(), nullptr);
+    std::string suffix = text.substr(unit);
+    if (suffix == "ms") return value / 1000.0;
+    if (suffix == "min") return value * 60.0;
+    return value;
+  }
+
+  // ---- types --------------------------------------------------------------------------------
+  // typeExpr : ID ('<' typeExpr '>')? | '{' (fieldType (',' fieldType)* ','?)? '}' ;
+  TypeExpr type_expr(ArbcParser::TypeExprContext* ctx, int depth = 0) {
+    TypeExpr t;
+    t.loc = loc(ctx);
+    if (depth > kMaxNesting) {
+      error(t.loc, "type nested deeper than " + std::to_string(kMaxNesting) + " levels",
+            "nesting-too-deep");
+      t.kind = TypeExpr::Kind::Bool;
+      return t;
+    }
+    if (auto* named = as<ArbcParser::NamedTypeContext>(ctx)) {
+      std::string name = tx(named->ID());
+      static const std::pair<const char*, TypeExpr::Kind> kScalars[] = {
+          {"bool", TypeExpr::Kind::Bool},     {"int", TypeExpr::Kind::Int},
+          {"float", TypeExpr::Kind::Float},   {"string", TypeExpr::Kind::String},
+          {"vec3", TypeExpr::Kind::Vec3}};
+      if (name == "list") {
+        t.kind = TypeExpr::Kind::List;
+        if (named->typeExpr()) {
+          t.element = std::make_unique<TypeExpr>(type_expr(named->typeExpr(), depth + 1));
+        } else {
+          error(t.loc, "'list' needs an element type, e.g. list<string>", "bad-type");
+          t.element = std::make_unique<TypeExpr>();
+          t.element->loc = t.loc;
+        }
+        return t;
+      }
+      t.kind = TypeExpr::Kind::Named;
+      t.name = name;
+      for (auto [scalar, kind] : kScalars)
+        if (name == scalar) t.kind = kind;
+      if (named->typeExpr())
+        error(loc(named->typeExpr()), "type '" + name + "' takes no type argument; only list<T> does",
+              "bad-type");
+      return t;
+    }
+    auto* record = as<ArbcParser::RecordTypeContext>(ctx);
+    t.kind = TypeExpr::Kind::Record;
+    for (ArbcParser::FieldTypeContext* field : record->fieldType()) {
+      t.fields.emplace_back(tx(field->ID()), std::make_unique<TypeExpr>(type_expr(
+                                                        field->typeExpr(), depth + 1)));
+      t.field_locs.push_back(loc(field->ID()));
+    }
+    return t;
+  }
+
+  // ---- expressions --------------------------------------------------------------------------
+  ExprPtr make(Expr::Kind kind, const Loc& where) {
+    auto e = std::make_unique<Expr>();
+    e->kind = kind;
+    e->loc = where;
+    return e;
+  }
+
+  // A stand-in where an expression could not be built (nesting too deep).
+  ExprPtr placeholder(const Loc& where) {
+    auto e = make(Expr::Kind::Bool, where);
+    return e;
+  }
+
+  bool too_deep(int depth, const Loc& where) {
+    if (depth <= kMaxNesting) return false;
+    if (!reported_depth_) {
+      error(where,
+            "expression nested deeper than " + std::to_string(kMaxNesting) +
+                " levels: split it with `let` or named constants",
+            "nesting-too-deep");
+    }
+    reported_depth_ = true;
+    return true;
+  }
+
+  // expr : expr '.' ID | expr '[' expr ']' | '-' expr | expr op expr | 'not' expr
+  //      | ID '=>' expr | primary ;
+  ExprPtr expr(ArbcParser::ExprContext* ctx, int depth) {
+    Loc where = loc(ctx);
+    if (too_deep(depth, where)) return placeholder(where);
+    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx))
+      return primary(c->primary(), depth);
+    if (auto* c = as<ArbcParser::FieldExprContext>(ctx)) {
+      auto e = make(Expr::Kind::Field, where);
+      e->text = tx(c->ID());
+      e->args.push_back(expr(c->expr(), depth + 1));
+      return e;
+    }
+    if (auto* c = as<ArbcParser::IndexExprContext>(ctx)) {
+      auto e = make(Expr::Kind::Index, where);
+      e->args.push_back(expr(c->expr(0), depth + 1));
+      e->args.push_back(expr(c->expr(1), depth + 1));
+      return e;
+    }
+    if (auto* c = as<ArbcParser::NegExprContext>(ctx)) return unary("-", c->expr(), where, depth);
+    if (auto* c = as<ArbcParser::NotExprContext>(ctx)) return unary("not", c->expr(), where, depth);
+    if (auto* c = as<ArbcParser::MulExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::AddExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::CompareExprContext>(ctx))
+      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::AndExprContext>(ctx))
+      return binary("and", c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::OrExprContext>(ctx))
+      return binary("or", c->expr(0), c->expr(1), where, depth);
+    if (auto* c = as<ArbcParser::LambdaExprContext>(ctx)) {
+      auto e = make(Expr::Kind::Lambda, where);
+      e->text = tx(c->ID());
+      e->field_locs.push_back(loc(c->ID()));  // the parameter's location
+      e->args.push_back(expr(c->expr(), depth + 1));
+      return e;
+    }
+    return placeholder(where);
+  }
+
+  ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, const Loc& where,
+                int depth) {
+    auto e = make(Expr::Kind::Unary, where);
+    e->op = op;
+    e->args.push_back(expr(operand, depth + 1));
+    return e;
+  }
+
+  ExprPtr binary(const std::string& op, ArbcParser::ExprContext* left,
+                 ArbcParser::ExprContext* right, const Loc& where, int depth) {
+    auto e = make(Expr::Kind::Binary, where);
+    e->op = op;
+    e->args.push_back(expr(left, depth + 1));
+    e->args.push_back(expr(right, depth + 1));
+    return e;
+  }
+
+  // primary : NUMBER | DURATION | STRING | 'true' | 'false' | 'otherwise'
+  //         | ID '(' args ')' | ID | '(' expr ')' | '{' fieldInits '}' | '[' exprs ']' ;
+  ExprPtr primary(ArbcParser::PrimaryContext* ctx, int depth) {
+    Loc where = loc(ctx);
+    if (auto* c = as<ArbcParser::NumberLitContext>(ctx)) {
+      auto e = make(Expr::Kind::Number, where);
+      std::string text = tx(c->NUMBER());
+      e->number = std::strtod(text.c_str(), nullptr);
+      e->is_int = text.find_first_of(".eE") == std::string::npos;
+      return e;
+    }
+    if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
+      auto e = make(Expr::Kind::Duration, where);
+      e->number = seconds_of_duration(tx(c->DURATION()));
+      return e;
+    }
+    if (auto* c = as<ArbcParser::StringLitContext>(ctx)) {
+      auto e = make(Expr::Kind::String, where);
+      e->text = decode_string(c->STRING());
+      return e;
+    }
+    if (as<ArbcParser::TrueLitContext>(ctx) ||
+        as<ArbcParser::FalseLitContext>(ctx)) {
+      auto e = make(Expr::Kind::Bool, where);
+      e->boolean = as<ArbcParser::TrueLitContext>(ctx) != nullptr;
+      return e;
+    }
+    if (as<ArbcParser::OtherwiseLitContext>(ctx))
+      return make(Expr::Kind::Otherwise, where);
+    if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
+      auto e = make(Expr::Kind::Call, where);
+      e->text = tx(c->ID());
+      e->field_locs.push_back(loc(c->ID()));  // the callee's location
+      for (ArbcParser::ExprContext* arg : c->expr()) e->args.push_back(expr(arg, depth + 1));
+      return e;
+    }
+    if (auto* c = as<ArbcParser::NameExprContext>(ctx)) {
+      auto e = make(Expr::Kind::Name, where);
+      e->text = tx(c->ID());
+      return e;
+    }
+    if (auto* c = as<ArbcParser::ParenExprContext>(ctx)) {
+      ExprPtr inner = expr(c->expr(), depth + 1);
+      return inner;
+    }
+    if (auto* c = as<ArbcParser::RecordLitContext>(ctx)) {
+      auto e = make(Expr::Kind::Record, where);
+      for (ArbcParser::FieldInitContext* field : c->fieldInit()) {
+        e->field_names.push_back(tx(field->ID()));
+        e->field_locs.push_back(loc(field->ID()));
+        e->args.push_back(expr(field->expr(), depth + 1));
+      }
+      return e;
+    }
+    if (auto* c = as<ArbcParser::ListLitContext>(ctx)) {
+      auto e = make(Expr::Kind::List, where);
+      for (ArbcParser::ExprContext* item : c->expr()) e->args.push_back(expr(item, depth + 1));
+      return e;
+    }
+    return placeholder(where);
+  }
+
+  // duration : DURATION | NUMBER | ID ;
+  Duration duration(ArbcParser::DurationContext* ctx) {
+    Duration d;
+    Loc where = loc(ctx);
+    if (ctx->DURATION()) {
+      d.expr = make(Expr::Kind::Duration, where);
+      d.expr->number = seconds_of_duration(tx(ctx->DURATION()));
+    } else if (ctx->NUMBER()) {
+      d.expr = make(Expr::Kind::Number, where);
+      std::string text = tx(ctx->NUMBER());
+      d.expr->number = std::strtod(text.c_str(), nullptr);
+      d.expr->is_int = text.find_first_of(".eE") == std::string::npos;
+    } else {
+      d.expr = make(Expr::Kind::Name, where);
+      d.expr->text = tx(ctx->ID());
+    }
+    return d;
+  }
+
+  std::optional<Duration> optional_duration(ArbcParser::DurationContext* ctx) {
+    if (!ctx) return std::nullopt;
+    return duration(ctx);
+  }
+
+  // ---- statements ---------------------------------------------------------------------------
+  // block : '{' stmt* '}' ;
+  Block block(ArbcParser::BlockContext* ctx, int depth) {
+    Block b;
+    if (too_deep(depth, loc(ctx))) return b;
+    for (ArbcParser::StmtContext* s : ctx->stmt()) b.push_back(stmt(s, depth));
+    return b;
+  }
+
+  std::unique_ptr<Stmt> make_stmt(Stmt::Kind kind, antlr4::ParserRuleContext* ctx) {
+    auto s = std::make_unique<Stmt>();
+    s->kind = kind;
+    s->loc = loc(ctx);
+    return s;
+  }
+
+  void set_name(Stmt& s, antlr4::tree::TerminalNode* id) {
+    s.name = tx(id);
+    s.name_loc = loc(id);
+  }
+
+  // stmt : let | var | assign | accept | set | unset | if | emit | throttle | every | script
+  std::unique_ptr<Stmt> stmt(ArbcParser::StmtContext* ctx, int depth) {
+    if (auto* c = as<ArbcParser::LetStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Let, c);
+      set_name(*s, c->ID());
+      s->expr = expr(c->expr(), depth + 1);
+      return s;
+    }
+    if (auto* c = as<ArbcParser::VarStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Var, c);
+      set_name(*s, c->ID());
+      s->expr = expr(c->expr(), depth + 1);
+      return s;
+    }
+    if (auto* c = as<ArbcParser::AssignStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Assign, c);
+      set_name(*s, c->ID());
+      s->expr = expr(c->expr(), depth + 1);
+      return s;
+    }
+    if (auto* c = as<ArbcParser::AcceptStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Accept, c);
+      s->expr = expr(c->expr(), depth + 1);
+      return s;
+    }
+    if (auto* c = as<ArbcParser::SetStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Set, c);
+      set_name(*s, c->ID());
+      s->duration = optional_duration(c->duration());
+      return s;
+    }
+    if (auto* c = as<ArbcParser::UnsetStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Unset, c);
+      set_name(*s, c->ID());
+      return s;
+    }
+    if (auto* c = as<ArbcParser::IfStmtContext>(ctx)) return if_chain(c, depth);
+    if (auto* c = as<ArbcParser::EmitStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Emit, c);
+      s->expr = expr(c->expr(), depth + 1);
+      return s;
+    }
+    if (auto* c = as<ArbcParser::ThrottleStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Throttle, c);
+      s->duration = duration(c->duration());
+      return s;
+    }
+    if (auto* c = as<ArbcParser::EveryStmtContext>(ctx)) {
+      auto s = make_stmt(Stmt::Kind::Every, c);
+      s->duration = duration(c->duration());
+      s->body = block(c->block(), depth + 1);
+      return s;
+    }
+    auto* c = as<ArbcParser::ScriptStmtContext>(ctx);
+    auto s = make_stmt(Stmt::Kind::Script, ctx);
+    if (c) s->text = decode_string(c->STRING());
+    return s;
+  }
+
+  // 'if' expr block ('else' 'if' expr block)* ('else' block)?
+  // An else-if chain becomes nested If statements, built from the last link backwards.
+  std::unique_ptr<Stmt> if_chain(ArbcParser::IfStmtContext* c, int depth) {
+    std::vector<ArbcParser::ExprContext*> conditions = c->expr();
+    std::vector<ArbcParser::BlockContext*> blocks = c->block();
+    if (too_deep(depth + static_cast<int>(conditions.size()), loc(c))) {
+      return make_stmt(Stmt::Kind::If, c);  // condition-less placeholder; never checked further
+    }
+    std::unique_ptr<Stmt> next;
+    bool has_final_else = blocks.size() > conditions.size();
+    for (size_t i = conditions.size(); i-- > 0;) {
+      auto s = make_stmt(Stmt::Kind::If, c);
+      s->loc = loc(conditions[i]->getStart());
+      if (i > 0) s->loc = loc(conditions[i]);  // an else-if link: point at its condition
+      else s->loc = loc(c->getStart());
+      int link_depth = depth + static_cast<int>(i);
+      s->expr = expr(conditions[i], link_depth + 1);
+      s->body = block(blocks[i], link_depth + 1);
+      if (next) {
+        s->else_body.push_back(std::move(next));
+        s->has_else = true;
+      } else if (has_final_else) {
+        s->else_body = block(blocks.back(), link_depth + 1);
+        s->has_else = true;
+      }
+      next = std::move(s);
+    }
+    return next;
+  }
+
+  // ---- declarations -------------------------------------------------------------------------
+  PortRef port_ref(ArbcParser::PortRefContext* ctx) {
+    PortRef p;
+    p.module = tx(ctx->ID(0));
+    p.port = tx(ctx->ID(1));
+    p.loc = loc(ctx);
+    return p;
+  }
+
+  void add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
+    reported_depth_ = false;
+    if (auto* c = ctx->appDecl()) {
+      AppDecl app;
+      app.name = tx(c->ID());
+      if (c->STRING()) app.doc = decode_string(c->STRING());
+      app.loc = loc(c->ID());
+      if (spec.app) {
+        error(app.loc, "the app is already declared as '" + spec.app->name + "' at line " +
+                           std::to_string(spec.app->loc.line) + ": a spec describes one app",
+              "duplicate");
+        return;
+      }
+      spec.app = std::move(app);
+    } else if (auto* c = ctx->typeDecl()) {
+      TypeDecl t;
+      t.name = tx(c->ID());
+      t.loc = loc(c->ID());
+      t.type = type_expr(c->typeExpr());
+      spec.types.push_back(std::move(t));
+    } else if (auto* c = ctx->constDecl()) {
+      ConstDecl k;
+      k.name = tx(c->ID());
+      k.loc = loc(c->ID());
+      k.value = expr(c->expr(), 0);
+      spec.consts.push_back(std::move(k));
+    } else if (auto* c = ctx->moduleDecl()) {
+      ModuleDecl m;
+      m.name = tx(c->ID());
+      m.loc = loc(c->ID());
+      if (c->STRING()) m.doc = decode_string(c->STRING());
+      for (ArbcParser::PortDeclContext* p : c->portDecl()) {
+        PortDecl port;
+        port.name = tx(p->ID());
+        port.loc = loc(p->ID());
+        port.direction =
+            tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
+        port.type = type_expr(p->typeExpr());
+        m.ports.push_back(std::move(port));
+      }
+      spec.modules.push_back(std::move(m));
+    } else if (auto* c = ctx->eventDecl()) {
+      EventDecl e;
+      e.loc = loc(c);
+      for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({tx(id), loc(id)});
+      e.lifetime = optional_duration(c->duration());
+      spec.events.push_back(std::move(e));
+    } else if (auto* c = ctx->derivedEventDecl()) {
+      DerivedEventDecl e;
+      e.name = tx(c->ID());
+      e.loc = loc(c->ID());
+      e.source = port_ref(c->portRef());
+      e.predicate = expr(c->expr(), 0);
+      e.lifetime = optional_duration(c->duration());
+      spec.derived_events.push_back(std::move(e));
+    } else if (auto* c = ctx->statusEventsDecl()) {
+      StatusEventDecl e;
+      e.loc = loc(c);
+      e.source = port_ref(c->portRef());
+      for (ArbcParser::StatusEntryContext* entry : c->statusEntry()) {
+        StatusEventDecl::Entry x;
+        x.event = tx(entry->ID());
+        x.flag = entry->STRING() ? decode_string(entry->STRING()) : x.event;
+        x.loc = loc(entry);
+        e.entries.push_back(std::move(x));
+      }
+      e.lifetime = optional_duration(c->duration());
+      spec.status_events.push_back(std::move(e));
+    } else if (auto* c = ctx->exclusiveDecl()) {
+      ExclusiveDecl x;
+      x.loc = loc(c);
+      for (antlr4::tree::TerminalNode* id : c->ID()) x.events.push_back({tx(id), loc(id)});
+      spec.exclusives.push_back(std::move(x));
+    } else if (auto* c = ctx->invariantDecl()) {
+      InvariantDecl inv;
+      inv.loc = loc(c);
+      inv.formula = expr(c->expr(), 0);
+      spec.invariants.push_back(std::move(inv));
+    } else if (auto* c = ctx->arbitrateDecl()) {
+      ArbitrateDecl a;
+      a.loc = loc(c->getStart());
+      a.port = port_ref(c->portRef());
+      a.by_priority = c->byPriority != nullptr;
+      a.complete = c->isComplete != nullptr;
+      for (ArbcParser::RuleDeclContext* r : c->ruleDecl()) a.rules.push_back(rule(r));
+      spec.arbitrations.push_back(std::move(a));
+    } else if (auto* c = ctx->connectDecl()) {
+      ConnectDecl k;
+      k.loc = loc(c->getStart());
+      k.source = port_ref(c->portRef(0));
+      k.destination = port_ref(c->portRef(1));
+      if (c->block()) {
+        k.has_body = true;
+        k.body = block(c->block(), 0);
+      }
+      spec.connects.push_back(std::move(k));
+    } else if (auto* c = ctx->assertDecl()) {
+      AssertDecl a;
+      a.loc = loc(c->getStart());
+      a.port = port_ref(c->portRef());
+      a.rule = tx(c->ID());
+      a.rule_loc = loc(c->ID());
+      a.property = expr(c->expr(), 0);
+      spec.asserts.push_back(std::move(a));
+    }
+  }
+
+  // ---- rules (private below) --------------------------------------------------------------
+ private:
+  // ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
+  Rule rule(ArbcParser::RuleDeclContext* c) {
+    Rule r;
+    r.name = tx(c->ID());
+    r.loc = loc(c->ID());
+    r.source = port_ref(c->portRef());
+    if (c->expr()) r.when = expr(c->expr(), 0);
+    r.hold = optional_duration(c->duration());
+    if (c->block()) {
+      r.has_body = true;
+      r.body = block(c->block(), 0);
+    }
+    return r;
+  }
+
+  const std::string& file_;
+  TokenText text_;
+  std::vector<Diagnostic>& out_;
+  bool reported_depth_ = false;
+};
+
+AstBuilder::AstBuilder(const std::string& file, std::string_view source,
+                       std::vector<Diagnostic>& out)
+    : builder_(std::make_unique<Builder>(file, source, out)), spec_(std::make_unique<Spec>()) {
+  spec_->file = file;
+}
+
+AstBuilder::~AstBuilder() = default;
+
+void AstBuilder::add_declaration(void* decl) {
+  builder_->add_decl(*spec_, static_cast<ArbcParser::DeclContext*>(decl));
+}
+
+std::unique_ptr<Spec> AstBuilder::finish() { return std::move(spec_); }
+
+}  // namespace arbc::frontend

@@ -1,0 +1,46 @@
+// The front end's public entry point: a spec's text or file -> checked AST + diagnostics.
+//
+//   arbc::frontend::CheckResult r = arbc::frontend::check_file("specs/table_clean.spec");
+//   if (!r.ok()) { print render_diagnostics(r.diagnostics, ...); return 2; }
+//   const arbc::ast::Spec& spec = *r.spec;   // every "sema:" field filled (ast.h)
+//
+// Errors are values: nothing here throws on bad input.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/diagnostic.h"
+#include "compiler/frontend/ast.h"
+
+namespace arbc::frontend {
+
+struct CheckResult {
+  // The checked AST. Null when the file could not be read or has lexical/syntax errors; when
+  // only semantic errors occurred it is present but must not be lowered.
+  std::unique_ptr<ast::Spec> spec;
+  std::vector<Diagnostic> diagnostics;  // sorted by position
+  std::string source;                   // the text that was checked (for quoting lines)
+
+  // True when no diagnostic is an error: the spec may be lowered.
+  bool ok() const;
+};
+
+// Parses and checks spec text; `file` names it in diagnostics.
+CheckResult check_text(std::string_view text, const std::string& file);
+
+// Reads and checks a spec file. A missing file, a directory, an unreadable or oversized file
+// (over kMaxSpecBytes) is a diagnostic with id "io".
+CheckResult check_file(const std::string& path);
+
+inline constexpr size_t kMaxSpecBytes = 64u << 20;  // 64 MiB
+inline constexpr size_t kMaxReportedErrors = 50;
+
+// Renders diagnostics like a compiler, quoting source lines from `sources` (may be null). After
+// `cap` errors the rest are counted in one final line instead of printed.
+std::string render_diagnostics(const std::vector<Diagnostic>& diagnostics, SourceCache* sources,
+                               size_t cap = kMaxReportedErrors);
+
+}  // namespace arbc::frontend

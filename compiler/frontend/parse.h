@@ -1,0 +1,25 @@
+// Text -> AST: UTF-8 validation, lexing, token checks, parsing, AST building.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/diagnostic.h"
+#include "compiler/frontend/ast.h"
+
+namespace arbc::frontend {
+
+struct ParseResult {
+  std::unique_ptr<ast::Spec> spec;  // null when the text has lexical or syntax errors;
+                                    // set (with diagnostics) after AST-level problems
+  std::vector<Diagnostic> diagnostics;
+};
+
+// Parses one spec. Never throws on bad input: invalid UTF-8, stray characters, syntax errors
+// (one per declaration, in the user's words) and nesting beyond kMaxNesting are diagnostics.
+// `file` names the text in diagnostics.
+ParseResult parse_spec(std::string_view text, const std::string& file);
+
+}  // namespace arbc::frontend

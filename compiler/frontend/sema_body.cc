@@ -1,0 +1,215 @@
+// Semantic analysis of monitor bodies: the statements of a rule or a `connect`, their scopes,
+// where each statement may appear, the events they set, and the emitted values' types
+// (the paper's first integration rule: both sides of a connection carry the same type).
+#include "compiler/frontend/sema_context.h"
+#include "compiler/frontend/type_rules.h"
+
+namespace arbc::frontend {
+
+using namespace ast;
+
+namespace {
+
+const char* local_kind(NameKind kind) {
+  switch (kind) {
+    case NameKind::Message: return "the incoming message";
+    case NameKind::Let: return "a `let` value";
+    case NameKind::Param: return "a lambda parameter";
+    case NameKind::Const: return "a constant";
+    default: return "not a variable";
+  }
+}
+
+}  // namespace
+
+const Binding* Scope::find(const std::string& name) const {
+  for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame) {
+    auto it = frame->find(name);
+    if (it != frame->end()) return &it->second;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> Scope::names() const {
+  std::vector<std::string> out;
+  for (const auto& frame : frames_)
+    for (const auto& [name, binding] : frame) out.push_back(name);
+  return out;
+}
+
+bool Sema::definitely_emits(const Block& body) {
+  for (const auto& s : body) {
+    if (s->kind == Stmt::Kind::Emit) return true;
+    if (s->kind == Stmt::Kind::If && s->has_else && definitely_emits(s->body) &&
+        definitely_emits(s->else_body))
+      return true;
+  }
+  return false;
+}
+
+void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
+  bool has_script = false;
+  for (const auto& s : body) has_script |= s->kind == Stmt::Kind::Script;
+  if (has_script && body.size() > 1 && ctx.top_level) {
+    for (const auto& s : body) {
+      if (s->kind != Stmt::Kind::Script) {
+        error(s->loc,
+              "a body with `script` holds nothing else: the script's accept/update replace "
+              "the generated monitor",
+              "script-alone");
+        break;
+      }
+    }
+  }
+  scope.push();
+  for (auto& owned : body) {
+    Stmt& s = *owned;
+    switch (s.kind) {
+      case Stmt::Kind::Let:
+      case Stmt::Kind::Var: {
+        check_expr(*s.expr, scope);
+        if (s.kind == Stmt::Kind::Var && (!ctx.top_level || ctx.in_every)) {
+          error(s.loc, "`var` declares monitor state: put it at the top level of the body",
+                "statement-context");
+        }
+        if (const Binding* existing = scope.find(s.name)) {
+          error(s.name_loc, "'" + s.name + "' is already defined here as " +
+                                local_kind(existing->kind) + "; choose another name",
+                "duplicate");
+        } else if (consts_.count(s.name)) {
+          error(s.name_loc, "'" + s.name + "' is already a constant; choose another name",
+                "duplicate");
+        }
+        Binding b;
+        b.kind = s.kind == Stmt::Kind::Let ? NameKind::Let : NameKind::Var;
+        b.type = s.expr->type;
+        b.is_duration = s.expr->is_duration;
+        b.local = &s;
+        scope.define(s.name, b);
+        break;
+      }
+      case Stmt::Kind::Assign: {
+        check_expr(*s.expr, scope);
+        const Binding* b = scope.find(s.name);
+        if (!b) {
+          if (consts_.count(s.name)) {
+            error(s.name_loc, "'" + s.name + "' is a constant; only `var` variables can be assigned",
+                  "assign");
+          } else {
+            unknown(s.name_loc, "unknown variable '" + s.name + "'", "unknown-name", s.name,
+                    scope.names());
+          }
+          break;
+        }
+        if (b->kind != NameKind::Var) {
+          error(s.name_loc, "'" + s.name + "' is " + local_kind(b->kind) +
+                                "; only `var` variables can be assigned",
+                "assign");
+          break;
+        }
+        s.var_decl = b->local;
+        if (b->type && s.expr->type && !assignable(*s.expr->type, *b->type)) {
+          error(s.expr->loc, "'" + s.name + "' holds " + describe(b->type) + ", not " +
+                                 describe(s.expr->type),
+                "type-mismatch");
+        }
+        break;
+      }
+      case Stmt::Kind::Accept:
+        if (ctx.in_every) {
+          error(s.loc, "`accept` filters messages; an `every` body runs on a timer",
+                "statement-context");
+        }
+        check_condition(*s.expr, scope, "the condition of `accept`", "type-mismatch");
+        break;
+      case Stmt::Kind::Set:
+      case Stmt::Kind::Unset: {
+        auto it = events_.find(s.name);
+        if (it == events_.end()) {
+          unknown(s.name_loc, "unknown event '" + s.name + "'", "unknown-event", s.name,
+                  event_names_);
+        } else {
+          const EventSymbol& event = spec_.event_symbols[it->second];
+          if (event.kind != EventSymbol::Kind::Manual) {
+            error(s.name_loc,
+                  "event '" + s.name + "' is fed from " + event.source +
+                      "; monitor code sets only events declared with `event " + s.name + ";`",
+                  "set-fed-event");
+          }
+        }
+        if (s.duration) check_duration(*s.duration, "the lifetime of `set`");
+        break;
+      }
+      case Stmt::Kind::If: {
+        check_condition(*s.expr, scope, "the condition of `if`", "type-mismatch");
+        BodyContext inner = ctx;
+        inner.top_level = false;
+        check_body(s.body, scope, inner);
+        check_body(s.else_body, scope, inner);
+        ctx.saw_throttle |= inner.saw_throttle;
+        ctx.saw_every |= inner.saw_every;
+        break;
+      }
+      case Stmt::Kind::Emit: {
+        check_expr(*s.expr, scope);
+        if (ctx.in_every) {
+          error(s.loc, "`emit` delivers a message; an `every` body runs on a timer and has none",
+                "statement-context");
+          break;
+        }
+        if (s.expr->type && ctx.destination_type &&
+            !assignable(*s.expr->type, *ctx.destination_type)) {
+          error(s.expr->loc,
+                ctx.owner + " emits " + describe(s.expr->type) + ", but " + ctx.destination +
+                    " takes " + describe(ctx.destination_type),
+                "emit-type");
+        }
+        break;
+      }
+      case Stmt::Kind::Throttle:
+        check_duration(*s.duration, "the `throttle` period");
+        if (!ctx.top_level || ctx.in_every) {
+          error(s.loc, "`throttle` limits the whole connection: put it at the top level of the body",
+                "statement-context");
+        } else if (ctx.saw_throttle) {
+          error(s.loc, "a body has at most one `throttle`", "statement-context");
+        }
+        ctx.saw_throttle = true;
+        break;
+      case Stmt::Kind::Every: {
+        check_duration(*s.duration, "the `every` period");
+        if (!ctx.top_level || ctx.in_every) {
+          error(s.loc, "`every` must be at the top level of the body", "statement-context");
+        } else if (ctx.saw_every) {
+          error(s.loc, "a body has at most one `every`", "statement-context");
+        }
+        ctx.saw_every = true;
+        BodyContext inner = ctx;
+        inner.in_every = true;
+        inner.top_level = false;
+        scope.push();
+        // The message does not exist in a timer callback; shadow it with a marker.
+        for (const std::string& name : scope.names()) {
+          const Binding* b = scope.find(name);
+          if (b && b->kind == NameKind::Message) {
+            Binding hidden;
+            hidden.message_unavailable = true;
+            scope.define(name, hidden);
+          }
+        }
+        check_body(s.body, scope, inner);
+        scope.pop();
+        break;
+      }
+      case Stmt::Kind::Script:
+        if (!ctx.top_level) {
+          error(s.loc, "`script` replaces the whole body: put it at the top level",
+                "statement-context");
+        }
+        break;
+    }
+  }
+  scope.pop();
+}
+
+}  // namespace arbc::frontend

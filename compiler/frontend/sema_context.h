@@ -1,0 +1,91 @@
+// State shared by the parts of semantic analysis (sema_*.cc): the spec, the diagnostics, the
+// symbol tables, and helpers that report errors with "did you mean" notes.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.h"
+#include "compiler/frontend/ast.h"
+
+namespace arbc::frontend {
+
+// One name visible in a monitor body or predicate.
+struct Binding {
+  ast::NameKind kind = ast::NameKind::Unresolved;
+  TypePtr type;
+  bool is_duration = false;
+  const ast::Stmt* local = nullptr;   // Let, Var
+  const ast::Expr* lambda = nullptr;  // Param
+  bool message_unavailable = false;   // the message inside an `every` body
+};
+
+// Nested scopes of a body: lookups go innermost first.
+class Scope {
+ public:
+  void push() { frames_.emplace_back(); }
+  void pop() { frames_.pop_back(); }
+  void define(const std::string& name, Binding b) { frames_.back()[name] = std::move(b); }
+  const Binding* find(const std::string& name) const;
+  std::vector<std::string> names() const;
+
+ private:
+  std::vector<std::map<std::string, Binding>> frames_{1};
+};
+
+// Where a monitor body runs, for checking its statements.
+struct BodyContext {
+  std::string owner;          // "rule 'take'" or "the connect into HeadControl.gaze"
+  TypePtr destination_type;   // null if the destination did not resolve
+  std::string destination;    // "Module.port"
+  bool in_every = false;
+  bool top_level = true;
+  bool saw_throttle = false;
+  bool saw_every = false;
+};
+
+class Sema {
+ public:
+  Sema(ast::Spec& spec, std::vector<Diagnostic>& out) : spec_(spec), out_(out) {}
+
+  void run();  // sema_decls.cc
+
+  // ---- reporting (sema_decls.cc) ----
+  Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
+  // Reports an unknown name, with "did you mean" when a candidate is close.
+  void unknown(const ast::Loc& loc, std::string message, std::string id, const std::string& name,
+               const std::vector<std::string>& candidates);
+  // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
+  std::string describe(const TypePtr& t) const;
+
+  // ---- expressions (sema_expr.cc) ----
+  void check_expr(ast::Expr& e, Scope& scope);
+  // A condition (`accept`, `if`, a derived event's predicate): reports non-bool with `id`.
+  void check_condition(ast::Expr& e, Scope& scope, const std::string& what, const char* id);
+  // Resolves a duration position to seconds; `what` names it ("the lifetime").
+  void check_duration(ast::Duration& d, const std::string& what);
+  // Turns a constraint expression into a Constraint; `otherwise_ok` allows a whole `otherwise`
+  // (the caller records it). Reports anything but events, true, false, not, and, or.
+  Constraint check_constraint(ast::Expr& e, const std::string& where, bool otherwise_ok);
+  void check_const(size_t index);
+
+  // ---- bodies (sema_body.cc) ----
+  void check_body(ast::Block& body, Scope& scope, BodyContext& ctx);
+  static bool definitely_emits(const ast::Block& body);
+
+  ast::Spec& spec_;
+  std::vector<Diagnostic>& out_;
+  std::map<std::string, ast::TypeDecl*> types_;
+  std::map<std::string, size_t> consts_;
+  std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
+  std::map<const Type*, std::string> type_names_;
+  std::map<std::string, size_t> events_;  // name -> index in spec_.event_symbols
+  std::vector<std::string> event_names_;
+
+ private:
+  void check_call(ast::Expr& e, Scope& scope);
+  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
+};
+
+}  // namespace arbc::frontend

@@ -1,0 +1,504 @@
+// Semantic analysis of declarations: duplicates, types, constants, modules and ports, events,
+// arbitrated ports and their rules, connects and assertions (DESIGN.md section 3).
+#include <set>
+
+#include "compiler/frontend/sema.h"
+#include "compiler/frontend/sema_context.h"
+#include "compiler/frontend/suggest.h"
+#include "compiler/frontend/type_rules.h"
+
+namespace arbc::frontend {
+
+using namespace ast;
+
+// ---- reporting ----------------------------------------------------------------------------
+
+Diagnostic& Sema::error(const Loc& loc, std::string message, std::string id) {
+  Diagnostic d;
+  d.loc = loc;
+  d.message = std::move(message);
+  d.id = std::move(id);
+  out_.push_back(std::move(d));
+  return out_.back();
+}
+
+void Sema::unknown(const Loc& loc, std::string message, std::string id, const std::string& name,
+                   const std::vector<std::string>& candidates) {
+  Diagnostic& d = error(loc, std::move(message), std::move(id));
+  if (auto best = closest_name(name, candidates)) {
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "did you mean '" + *best + "'?";
+    d.notes.push_back(std::move(note));
+  }
+}
+
+std::string Sema::describe(const TypePtr& t) const {
+  if (t) {
+    auto it = type_names_.find(t.get());
+    if (it != type_names_.end()) return it->second;
+  }
+  return type_name(t);
+}
+
+namespace {
+
+std::string where_defined(const Loc& loc) { return "line " + std::to_string(loc.line); }
+
+const TypePtr& scalar_type(TypeExpr::Kind kind) {
+  static const TypePtr kTypes[] = {
+      Type::scalar(Type::Kind::Bool), Type::scalar(Type::Kind::Int),
+      Type::scalar(Type::Kind::Float), Type::scalar(Type::Kind::String),
+      Type::scalar(Type::Kind::Vec3)};
+  return kTypes[static_cast<int>(kind)];
+}
+
+}  // namespace
+
+// ---- types --------------------------------------------------------------------------------
+
+class TypeResolver {
+ public:
+  explicit TypeResolver(Sema& sema) : sema_(sema) {}
+
+  TypePtr resolve(TypeExpr& t) {
+    switch (t.kind) {
+      case TypeExpr::Kind::Bool:
+      case TypeExpr::Kind::Int:
+      case TypeExpr::Kind::Float:
+      case TypeExpr::Kind::String:
+      case TypeExpr::Kind::Vec3: t.resolved = scalar_type(t.kind); break;
+      case TypeExpr::Kind::List: {
+        TypePtr element = resolve(*t.element);
+        if (element) t.resolved = Type::list(element);
+        break;
+      }
+      case TypeExpr::Kind::Record: {
+        std::vector<Field> fields;
+        bool ok = true;
+        for (size_t i = 0; i < t.fields.size(); ++i) {
+          for (size_t j = 0; j < i; ++j)
+            if (t.fields[j].first == t.fields[i].first)
+              sema_.error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
+                          "duplicate");
+          TypePtr f = resolve(*t.fields[i].second);
+          if (!f) ok = false;
+          fields.push_back({t.fields[i].first, f});
+        }
+        if (ok) t.resolved = Type::record(std::move(fields));
+        break;
+      }
+      case TypeExpr::Kind::Named: t.resolved = resolve_named(t); break;
+    }
+    return t.resolved;
+  }
+
+  TypePtr resolve_decl(TypeDecl& decl) {
+    if (done_.count(&decl)) return decl.type.resolved;
+    if (active_.count(&decl)) {
+      sema_.error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
+      done_.insert(&decl);
+      return nullptr;
+    }
+    active_.insert(&decl);
+    TypePtr t = resolve(decl.type);
+    active_.erase(&decl);
+    done_.insert(&decl);
+    // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
+    // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
+    bool creates = decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
+    bool registered = sema_.types_.count(decl.name) && sema_.types_.at(decl.name) == &decl;
+    if (t && creates && registered && !sema_.type_names_.count(t.get()))
+      sema_.type_names_[t.get()] = decl.name;
+    return t;
+  }
+
+ private:
+  TypePtr resolve_named(TypeExpr& t) {
+    auto it = sema_.types_.find(t.name);
+    if (it == sema_.types_.end()) {
+      std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
+      for (auto& [name, decl] : sema_.types_) names.push_back(name);
+      sema_.unknown(t.loc,
+                    "unknown type '" + t.name +
+                        "': the types are bool, int, float, string, vec3, list<T>, records and "
+                        "declared type names",
+                    "unknown-type", t.name, names);
+      return nullptr;
+    }
+    return resolve_decl(*it->second);
+  }
+
+  Sema& sema_;
+  std::set<const TypeDecl*> active_, done_;
+};
+
+// ---- port references ----------------------------------------------------------------------
+
+namespace {
+
+// Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
+// empty (no check). Returns false if it did not resolve.
+bool resolve_port(Sema& sema, PortRef& ref, const char* role, const std::string& use) {
+  ref.module_decl = sema.spec_.find_module(ref.module);
+  if (!ref.module_decl) {
+    std::vector<std::string> names;
+    for (const ModuleDecl& m : sema.spec_.modules) names.push_back(m.name);
+    sema.unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module,
+                 names);
+    return false;
+  }
+  ref.port_decl = ref.module_decl->find_port(ref.port);
+  if (!ref.port_decl) {
+    std::vector<std::string> names;
+    for (const PortDecl& p : ref.module_decl->ports) names.push_back(p.name);
+    sema.unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
+                 "unknown-port", ref.port, names);
+    return false;
+  }
+  std::string role_s = role;
+  if (role_s == "source" && ref.port_decl->direction == model::Direction::In) {
+    sema.error(ref.loc,
+               ref.qualified() + " is an `in` port; " + use +
+                   " needs a source, which must be an `out` port",
+               "port-direction");
+  } else if (role_s == "destination" && ref.port_decl->direction == model::Direction::Out) {
+    sema.error(ref.loc,
+               ref.qualified() + " is an `out` port; " + use +
+                   " needs a destination, which must be an `in` port",
+               "port-direction");
+  }
+  return true;
+}
+
+TypePtr port_type(const PortRef& ref) {
+  return ref.port_decl ? ref.port_decl->type.resolved : nullptr;
+}
+
+}  // namespace
+
+// ---- the passes ---------------------------------------------------------------------------
+
+void Sema::run() {
+  if (!spec_.app) {
+    Loc start;
+    start.file = spec_.file;
+    start.line = 1;
+    start.column = 1;
+    error(start, "the spec has no app declaration: start it with `app NAME \"what it does\";`",
+          "missing-app");
+  }
+
+  // Types (any order; cycles reported).
+  for (TypeDecl& t : spec_.types) {
+    if (types_.count(t.name) || t.name == "bool" || t.name == "int" || t.name == "float" ||
+        t.name == "string" || t.name == "vec3" || t.name == "list") {
+      if (types_.count(t.name)) {
+        error(t.loc, "type '" + t.name + "' is already defined at " +
+                         where_defined(types_[t.name]->loc),
+              "duplicate");
+      } else {
+        error(t.loc, "'" + t.name + "' is a built-in type and cannot be redefined", "duplicate");
+      }
+      continue;
+    }
+    types_[t.name] = &t;
+  }
+  TypeResolver types(*this);
+  for (TypeDecl& t : spec_.types) types.resolve_decl(t);
+
+  // Constants (any order; cycles reported).
+  const_state_.assign(spec_.consts.size(), 0);
+  for (size_t i = 0; i < spec_.consts.size(); ++i) {
+    ConstDecl& c = spec_.consts[i];
+    if (consts_.count(c.name)) {
+      error(c.loc, "constant '" + c.name + "' is already defined at " +
+                       where_defined(spec_.consts[consts_[c.name]].loc),
+            "duplicate");
+      const_state_[i] = 2;
+      continue;
+    }
+    consts_[c.name] = i;
+  }
+  for (size_t i = 0; i < spec_.consts.size(); ++i) check_const(i);
+
+  // Modules and ports.
+  std::map<std::string, const ModuleDecl*> modules;
+  for (ModuleDecl& m : spec_.modules) {
+    if (modules.count(m.name)) {
+      error(m.loc, "module '" + m.name + "' is already defined at " +
+                       where_defined(modules[m.name]->loc),
+            "duplicate");
+    } else {
+      modules[m.name] = &m;
+    }
+    std::map<std::string, const PortDecl*> ports;
+    for (PortDecl& p : m.ports) {
+      if (ports.count(p.name)) {
+        error(p.loc, "module '" + m.name + "' already has a port '" + p.name + "' (" +
+                         where_defined(ports[p.name]->loc) + ")",
+              "duplicate");
+      }
+      ports[p.name] = &p;
+      types.resolve(p.type);
+    }
+  }
+
+  // Events: every name once, whatever declares it.
+  auto add_event = [&](EventSymbol symbol) {
+    auto it = events_.find(symbol.name);
+    if (it != events_.end()) {
+      error(symbol.loc, "event '" + symbol.name + "' is already declared at " +
+                            where_defined(spec_.event_symbols[it->second].loc),
+            "duplicate");
+      return;
+    }
+    events_[symbol.name] = spec_.event_symbols.size();
+    event_names_.push_back(symbol.name);
+    spec_.event_symbols.push_back(std::move(symbol));
+  };
+  for (EventDecl& e : spec_.events) {
+    if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
+    for (const EventName& n : e.names) {
+      EventSymbol s;
+      s.kind = EventSymbol::Kind::Manual;
+      s.name = n.name;
+      s.loc = n.loc;
+      if (e.lifetime) s.lifetime = e.lifetime->seconds;
+      add_event(std::move(s));
+    }
+  }
+  for (StatusEventDecl& e : spec_.status_events) {
+    if (resolve_port(*this, e.source, "source", "`events from`")) {
+      TypePtr t = port_type(e.source);
+      if (t && !(t->kind == Type::Kind::List && t->element &&
+                 t->element->kind == Type::Kind::String)) {
+        error(e.source.loc,
+              "`events from` reads status flags, so " + e.source.qualified() +
+                  " must carry list<string>, not " + describe(t),
+              "status-source-type");
+      }
+    }
+    if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
+    std::map<std::string, Loc> flags;
+    for (const StatusEventDecl::Entry& entry : e.entries) {
+      if (flags.count(entry.flag)) {
+        error(entry.loc, "flag \"" + entry.flag + "\" is already mapped to an event at " +
+                             where_defined(flags[entry.flag]),
+              "duplicate");
+      }
+      flags[entry.flag] = entry.loc;
+      EventSymbol s;
+      s.kind = EventSymbol::Kind::Status;
+      s.name = entry.event;
+      s.loc = entry.loc;
+      s.source = e.source.qualified();
+      s.flag = entry.flag;
+      if (e.lifetime) s.lifetime = e.lifetime->seconds;
+      add_event(std::move(s));
+    }
+  }
+  for (DerivedEventDecl& e : spec_.derived_events) {
+    EventSymbol s;
+    s.kind = EventSymbol::Kind::Derived;
+    s.name = e.name;
+    s.loc = e.loc;
+    s.source = e.source.qualified();
+    if (e.lifetime) {
+      check_duration(*e.lifetime, "the `for` lifetime");
+      s.lifetime = e.lifetime->seconds;
+    }
+    add_event(std::move(s));
+  }
+  // Predicates after all events exist, so a predicate naming an event gets the right message.
+  for (DerivedEventDecl& e : spec_.derived_events) {
+    Scope scope;
+    if (resolve_port(*this, e.source, "source", "a derived event")) {
+      Binding message;
+      message.kind = NameKind::Message;
+      message.type = port_type(e.source);
+      scope.define(e.source.port, message);
+    }
+    check_condition(*e.predicate, scope, "the predicate of derived event '" + e.name + "'",
+                    "predicate-type");
+  }
+
+  // Domain knowledge for the proof.
+  for (ExclusiveDecl& x : spec_.exclusives) {
+    std::set<std::string> seen;
+    for (const EventName& n : x.events) {
+      if (!events_.count(n.name)) {
+        unknown(n.loc, "unknown event '" + n.name + "'", "unknown-event", n.name, event_names_);
+      } else if (!seen.insert(n.name).second) {
+        error(n.loc, "event '" + n.name + "' is listed twice", "duplicate");
+      }
+    }
+  }
+  for (InvariantDecl& inv : spec_.invariants)
+    inv.constraint = check_constraint(*inv.formula, "an invariant", false);
+
+  // Arbitrated ports and their rules.
+  std::map<std::string, const ArbitrateDecl*> arbitrated;
+  for (ArbitrateDecl& a : spec_.arbitrations) {
+    bool resolved = resolve_port(*this, a.port, "destination", "`arbitrate`");
+    std::string port = a.port.qualified();
+    if (arbitrated.count(port)) {
+      error(a.port.loc, port + " is already arbitrated at " +
+                            where_defined(arbitrated[port]->loc) +
+                            ": put all its rules in one `arbitrate` block",
+            "duplicate");
+    } else {
+      arbitrated[port] = &a;
+    }
+    TypePtr destination = resolved ? port_type(a.port) : nullptr;
+    std::map<std::string, const Rule*> names;
+    const Rule* otherwise_rule = nullptr;
+    for (size_t i = 0; i < a.rules.size(); ++i) {
+      Rule& r = a.rules[i];
+      r.port = &a;
+      r.message_name = r.source.port;
+      if (names.count(r.name)) {
+        error(r.loc, "port " + port + " already has a rule '" + r.name + "' (" +
+                         where_defined(names[r.name]->loc) + ")",
+              "duplicate");
+      }
+      names[r.name] = &r;
+      bool source_ok = resolve_port(*this, r.source, "source", "rule '" + r.name + "'");
+      if (r.when) {
+        if (r.when->kind == Expr::Kind::Otherwise) {
+          r.otherwise = true;
+          r.constraint = Constraint::constant(false);
+          if (otherwise_rule) {
+            error(r.when->loc, "port " + port + " already has an `otherwise` rule ('" +
+                                   otherwise_rule->name + "', " +
+                                   where_defined(otherwise_rule->loc) + "); at most one per port",
+                  "otherwise");
+          }
+          otherwise_rule = &r;
+        } else {
+          r.constraint =
+              check_constraint(*r.when, "the constraint of rule '" + r.name + "'", false);
+        }
+      } else {
+        r.constraint = Constraint::constant(true);
+      }
+      bool lowest = i + 1 == a.rules.size();
+      if (r.hold) {
+        check_duration(*r.hold, "the `hold` time");
+        if (!a.by_priority) {
+          error(r.hold->expr->loc,
+                "`hold` applies only to rules of a `by priority` port; " + port +
+                    " is not `by priority`",
+                "hold-without-priority");
+        } else if (lowest) {
+          error(r.hold->expr->loc,
+                "rule '" + r.name + "' is the lowest priority of " + port +
+                    ": nothing below it to suppress, so it takes no `hold`",
+                "hold-on-lowest");
+        }
+      } else if (a.by_priority && !lowest) {
+        error(r.loc,
+              "rule '" + r.name + "' outranks later rules of " + port +
+                  ": say how long it suppresses them with `hold D` (e.g. hold 1s)",
+              "hold-missing");
+      }
+      Scope scope;
+      Binding message;
+      message.kind = NameKind::Message;
+      message.type = source_ok ? port_type(r.source) : nullptr;
+      scope.define(r.message_name, message);
+      BodyContext ctx;
+      ctx.owner = "rule '" + r.name + "'";
+      ctx.destination_type = destination;
+      ctx.destination = port;
+      check_body(r.body, scope, ctx);
+      bool script = r.body.size() == 1 && r.body[0]->kind == Stmt::Kind::Script;
+      if (!script && !definitely_emits(r.body) && message.type && destination &&
+          !assignable(*message.type, *destination)) {
+        error(r.loc,
+              "rule '" + r.name + "' delivers its input unchanged" +
+                  (r.body.empty() ? "" : " on a path without `emit`") + ": " +
+                  r.source.qualified() + " carries " + describe(message.type) + " but " + port +
+                  " takes " + describe(destination) + " (add `emit VALUE;`)",
+              "emit-type");
+      }
+    }
+  }
+
+  // Plain monitored connections.
+  std::map<std::string, const ConnectDecl*> fed;
+  for (ConnectDecl& c : spec_.connects) {
+    bool source_ok = resolve_port(*this, c.source, "source", "`connect`");
+    bool destination_ok = resolve_port(*this, c.destination, "destination", "`connect`");
+    c.message_name = c.source.port;
+    std::string port = c.destination.qualified();
+    if (destination_ok) {
+      if (arbitrated.count(port)) {
+        error(c.destination.loc,
+              port + " is arbitrated (" + where_defined(arbitrated[port]->loc) +
+                  "): add a rule to its `arbitrate` block instead of a `connect`",
+              "connect-into-arbitrated");
+      } else if (fed.count(port)) {
+        error(c.destination.loc,
+              port + " already has a source (the connect at " + where_defined(fed[port]->loc) +
+                  "): two sources into one port must be arbitrated with `arbitrate " + port +
+                  " { ... }`",
+              "fan-in");
+      } else {
+        fed[port] = &c;
+      }
+    }
+    Scope scope;
+    Binding message;
+    message.kind = NameKind::Message;
+    message.type = source_ok ? port_type(c.source) : nullptr;
+    scope.define(c.message_name, message);
+    BodyContext ctx;
+    ctx.owner = "the connect into " + port;
+    ctx.destination_type = destination_ok ? port_type(c.destination) : nullptr;
+    ctx.destination = port;
+    check_body(c.body, scope, ctx);
+    bool script = c.body.size() == 1 && c.body[0]->kind == Stmt::Kind::Script;
+    if (!script && !definitely_emits(c.body) && message.type && ctx.destination_type &&
+        !assignable(*message.type, *ctx.destination_type)) {
+      error(c.loc,
+            "this connect delivers its input unchanged" +
+                std::string(c.body.empty() ? "" : " on a path without `emit`") + ": " +
+                c.source.qualified() + " carries " + describe(message.type) + " but " + port +
+                " takes " + describe(ctx.destination_type) + " (add `emit VALUE;`)",
+            "emit-type");
+    }
+  }
+
+  // Assertions.
+  for (AssertDecl& a : spec_.asserts) {
+    if (resolve_port(*this, a.port, "", "`assert`")) {
+      auto it = arbitrated.find(a.port.qualified());
+      if (it == arbitrated.end()) {
+        error(a.port.loc,
+              a.port.qualified() + " has no `arbitrate` block: assertions are about the rules "
+                                   "of an arbitrated port",
+              "not-arbitrated");
+      } else {
+        std::vector<std::string> names;
+        for (const Rule& r : it->second->rules) {
+          names.push_back(r.name);
+          if (r.name == a.rule) a.rule_decl = &r;
+        }
+        if (!a.rule_decl) {
+          unknown(a.rule_loc,
+                  "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
+                  "unknown-rule", a.rule, names);
+        }
+      }
+    }
+    a.constraint = check_constraint(*a.property, "an assertion", false);
+  }
+}
+
+void check_spec(Spec& spec, std::vector<Diagnostic>& out) {
+  Sema sema(spec, out);
+  sema.run();
+}
+
+}  // namespace arbc::frontend

@@ -1,0 +1,556 @@
+// Semantic analysis of expressions: name resolution, types, durations, constants and
+// constraints. Every checked Expr records its type and what its names refer to (ast.h).
+#include <cmath>
+#include <cstdio>
+
+#include "compiler/frontend/sema_context.h"
+#include "compiler/frontend/type_rules.h"
+
+namespace arbc::frontend {
+
+using namespace ast;
+
+namespace {
+
+const TypePtr kBool = Type::scalar(Type::Kind::Bool);
+const TypePtr kInt = Type::scalar(Type::Kind::Int);
+const TypePtr kFloat = Type::scalar(Type::Kind::Float);
+const TypePtr kString = Type::scalar(Type::Kind::String);
+const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
+
+struct BuiltinInfo {
+  const char* name;
+  Builtin builtin;
+  int min_args;
+  int max_args;  // -1: any number
+  const char* signature;
+};
+
+constexpr BuiltinInfo kBuiltins[] = {
+    {"len", Builtin::Len, 1, 1, "len(list or string) -> int"},
+    {"min_by", Builtin::MinBy, 2, 2, "min_by(list<T>, x => number) -> T"},
+    {"max_by", Builtin::MaxBy, 2, 2, "max_by(list<T>, x => number) -> T"},
+    {"dist", Builtin::Dist, 2, 2, "dist(vec3, vec3) -> float"},
+    {"norm", Builtin::Norm, 1, 1, "norm(vec3) -> float"},
+    {"abs", Builtin::Abs, 1, 1, "abs(number) -> number"},
+    {"min", Builtin::Min, 2, -1, "min(number, number, ...) -> number"},
+    {"max", Builtin::Max, 2, -1, "max(number, number, ...) -> number"},
+    {"now", Builtin::Now, 0, 0, "now() -> float (seconds)"},
+    {"vec3", Builtin::Vec3, 3, 3, "vec3(x, y, z) -> vec3"},
+};
+
+// The numeric type of combining a and b: int only if both are.
+TypePtr numeric_join(const TypePtr& a, const TypePtr& b) {
+  return is_kind(a, Type::Kind::Int) && is_kind(b, Type::Kind::Int) ? kInt : kFloat;
+}
+
+const char* kind_word(Expr::Kind kind) {
+  switch (kind) {
+    case Expr::Kind::Number: return "a number";
+    case Expr::Kind::Duration: return "a duration";
+    case Expr::Kind::String: return "a string";
+    case Expr::Kind::Field: return "a field access";
+    case Expr::Kind::Index: return "an index";
+    case Expr::Kind::Record: return "a record";
+    case Expr::Kind::List: return "a list";
+    case Expr::Kind::Lambda: return "a lambda";
+    case Expr::Kind::Call: return "a function call";
+    default: return "an arithmetic or comparison operator";
+  }
+}
+
+}  // namespace
+
+// ---- names --------------------------------------------------------------------------------
+
+void Sema::check_expr(Expr& e, Scope& scope) {
+  switch (e.kind) {
+    case Expr::Kind::Number: e.type = e.is_int ? kInt : kFloat; return;
+    case Expr::Kind::Duration:
+      e.type = kFloat;
+      e.is_duration = true;
+      return;
+    case Expr::Kind::String: e.type = kString; return;
+    case Expr::Kind::Bool: e.type = kBool; return;
+    case Expr::Kind::Otherwise:
+      error(e.loc, "'otherwise' is a whole rule constraint (`when otherwise`), not a value",
+            "otherwise");
+      return;
+    case Expr::Kind::Name: {
+      if (const Binding* b = scope.find(e.text)) {
+        if (b->message_unavailable) {
+          error(e.loc,
+                "the message '" + e.text +
+                    "' is not available in an `every` body: it runs on a timer, not on a message",
+                "statement-context");
+          return;
+        }
+        e.name_kind = b->kind;
+        e.type = b->type;
+        e.is_duration = b->is_duration;
+        e.local = b->local;
+        e.lambda = b->lambda;
+        return;
+      }
+      auto k = consts_.find(e.text);
+      if (k != consts_.end()) {
+        check_const(k->second);
+        ConstDecl& c = spec_.consts[k->second];
+        e.name_kind = NameKind::Const;
+        e.constant = &c;
+        if (c.value) {
+          e.type = c.value->type;
+          e.is_duration = c.value->is_duration;
+        }
+        return;
+      }
+      if (events_.count(e.text)) {
+        error(e.loc,
+              "event '" + e.text +
+                  "' cannot be read in a value expression: events appear in `when`, `assert` "
+                  "and `invariant` constraints",
+              "event-in-expression");
+        return;
+      }
+      std::vector<std::string> candidates = scope.names();
+      for (auto& [name, index] : consts_) candidates.push_back(name);
+      unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
+      return;
+    }
+    case Expr::Kind::Field: {
+      Expr& base = *e.args[0];
+      check_expr(base, scope);
+      if (!base.type) return;
+      if (base.type->kind == Type::Kind::Vec3) {
+        if (e.text == "x" || e.text == "y" || e.text == "z") {
+          e.type = kFloat;
+          return;
+        }
+        unknown(e.loc, "vec3 has no field '" + e.text + "' (it has x, y and z)", "unknown-field",
+                e.text, {"x", "y", "z"});
+        return;
+      }
+      if (base.type->kind != Type::Kind::Record) {
+        error(e.loc, "'." + e.text + "' needs a record or a vec3, but this is " +
+                         describe(base.type),
+              "type-mismatch");
+        return;
+      }
+      std::vector<std::string> names;
+      for (const Field& f : base.type->fields) {
+        if (f.name == e.text) {
+          e.type = f.type;
+          return;
+        }
+        names.push_back(f.name);
+      }
+      unknown(e.loc, describe(base.type) + " has no field '" + e.text + "'", "unknown-field",
+              e.text, names);
+      return;
+    }
+    case Expr::Kind::Index: {
+      check_expr(*e.args[0], scope);
+      check_expr(*e.args[1], scope);
+      const TypePtr& list = e.args[0]->type;
+      const TypePtr& index = e.args[1]->type;
+      if (list && list->kind != Type::Kind::List) {
+        error(e.loc, "only lists can be indexed, but this is " + describe(list), "type-mismatch");
+        return;
+      }
+      if (index && index->kind != Type::Kind::Int) {
+        error(e.args[1]->loc, "a list index must be an int, not " + describe(index),
+              "type-mismatch");
+        return;
+      }
+      if (list) e.type = list->element;
+      return;
+    }
+    case Expr::Kind::Unary: {
+      Expr& operand = *e.args[0];
+      check_expr(operand, scope);
+      if (!operand.type) return;
+      if (e.op == "not") {
+        if (operand.type->kind != Type::Kind::Bool) {
+          error(e.loc, "'not' needs a bool, not " + describe(operand.type), "type-mismatch");
+          return;
+        }
+        e.type = kBool;
+        return;
+      }
+      if (!is_numeric(operand.type) && operand.type->kind != Type::Kind::Vec3) {
+        error(e.loc, "unary '-' needs a number or a vec3, not " + describe(operand.type),
+              "type-mismatch");
+        return;
+      }
+      e.type = operand.type;
+      e.is_duration = operand.is_duration;
+      return;
+    }
+    case Expr::Kind::Binary: {
+      Expr& a = *e.args[0];
+      Expr& b = *e.args[1];
+      check_expr(a, scope);
+      check_expr(b, scope);
+      if (!a.type || !b.type) return;
+      auto mismatch = [&] {
+        error(e.loc, "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " +
+                         describe(b.type),
+              "type-mismatch");
+      };
+      const std::string& op = e.op;
+      if (op == "and" || op == "or") {
+        if (a.type->kind != Type::Kind::Bool || b.type->kind != Type::Kind::Bool) return mismatch();
+        e.type = kBool;
+      } else if (op == "==" || op == "!=") {
+        bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
+                  (assignable(*a.type, *b.type) && assignable(*b.type, *a.type));
+        if (!ok) return mismatch();
+        e.type = kBool;
+      } else if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+        bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
+                  (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String));
+        if (!ok) return mismatch();
+        e.type = kBool;
+      } else if (is_numeric(a.type) && is_numeric(b.type)) {
+        e.type = op == "/" ? kFloat : numeric_join(a.type, b.type);
+        if (op == "+" || op == "-") e.is_duration = a.is_duration && b.is_duration;
+        if (op == "*") e.is_duration = a.is_duration != b.is_duration;
+        if (op == "/") e.is_duration = a.is_duration && !b.is_duration;
+      } else if (is_kind(a.type, Type::Kind::Vec3) && is_kind(b.type, Type::Kind::Vec3) &&
+                 (op == "+" || op == "-")) {
+        e.type = kVec3;
+      } else if (is_kind(a.type, Type::Kind::Vec3) && is_numeric(b.type) &&
+                 (op == "*" || op == "/")) {
+        e.type = kVec3;
+      } else if (is_numeric(a.type) && is_kind(b.type, Type::Kind::Vec3) && op == "*") {
+        e.type = kVec3;
+      } else if (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String) &&
+                 op == "+") {
+        e.type = kString;
+      } else {
+        mismatch();
+      }
+      return;
+    }
+    case Expr::Kind::Record: {
+      std::vector<Field> fields;
+      bool ok = true;
+      for (size_t i = 0; i < e.args.size(); ++i) {
+        for (size_t j = 0; j < i; ++j) {
+          if (e.field_names[j] == e.field_names[i]) {
+            error(e.field_locs[i], "field '" + e.field_names[i] + "' is given twice", "duplicate");
+          }
+        }
+        check_expr(*e.args[i], scope);
+        if (!e.args[i]->type) ok = false;
+        fields.push_back({e.field_names[i], e.args[i]->type});
+      }
+      if (ok) e.type = Type::record(std::move(fields));
+      return;
+    }
+    case Expr::Kind::List: {
+      TypePtr element;
+      bool ok = true;
+      for (ExprPtr& item : e.args) {
+        check_expr(*item, scope);
+        if (!item->type) {
+          ok = false;
+          continue;
+        }
+        if (!element) {
+          element = item->type;
+        } else if (is_numeric(element) && is_numeric(item->type)) {
+          element = numeric_join(element, item->type);
+        } else if (!assignable(*item->type, *element)) {
+          error(item->loc,
+                "list items must have one type: this is " + describe(item->type) +
+                    ", earlier items are " + describe(element),
+                "type-mismatch");
+          ok = false;
+        }
+      }
+      if (ok) e.type = Type::list(element);
+      return;
+    }
+    case Expr::Kind::Lambda:
+      error(e.loc,
+            "a lambda ('x => ...') can only be the second argument of min_by or max_by",
+            "lambda");
+      return;
+    case Expr::Kind::Call: check_call(e, scope); return;
+  }
+}
+
+// ---- builtins -----------------------------------------------------------------------------
+
+void Sema::check_call(Expr& e, Scope& scope) {
+  const BuiltinInfo* info = nullptr;
+  for (const BuiltinInfo& b : kBuiltins)
+    if (e.text == b.name) info = &b;
+  const Loc& callee = e.field_locs.empty() ? e.loc : e.field_locs[0];
+  if (!info) {
+    std::vector<std::string> names;
+    for (const BuiltinInfo& b : kBuiltins) names.push_back(b.name);
+    unknown(callee,
+            "unknown function '" + e.text +
+                "': the builtins are len, min_by, max_by, dist, norm, abs, min, max, now, vec3",
+            "unknown-function", e.text, names);
+    for (ExprPtr& arg : e.args)
+      if (arg->kind != Expr::Kind::Lambda) check_expr(*arg, scope);
+    return;
+  }
+  e.builtin = info->builtin;
+  int n = static_cast<int>(e.args.size());
+  if (n < info->min_args || (info->max_args >= 0 && n > info->max_args)) {
+    error(e.loc,
+          "'" + e.text + "' takes " +
+              (info->max_args < 0 ? "at least " + std::to_string(info->min_args)
+                                  : std::to_string(info->min_args)) +
+              (info->min_args == 1 && info->max_args == 1 ? " argument" : " arguments") +
+              ", not " + std::to_string(n) + ": " + info->signature,
+          "arity");
+    return;
+  }
+  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy) {
+    Expr& list = *e.args[0];
+    Expr& key = *e.args[1];
+    check_expr(list, scope);
+    if (key.kind != Expr::Kind::Lambda) {
+      check_expr(key, scope);
+      error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
+            "type-mismatch");
+      return;
+    }
+    if (!list.type) return;
+    if (list.type->kind != Type::Kind::List || !list.type->element) {
+      error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type),
+            "type-mismatch");
+      return;
+    }
+    scope.push();
+    Binding param;
+    param.kind = NameKind::Param;
+    param.type = list.type->element;
+    param.lambda = &key;
+    scope.define(key.text, param);
+    check_expr(*key.args[0], scope);
+    scope.pop();
+    if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
+      error(key.args[0]->loc,
+            "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
+            "type-mismatch");
+      return;
+    }
+    e.type = list.type->element;
+    return;
+  }
+  for (ExprPtr& arg : e.args) check_expr(*arg, scope);
+  for (ExprPtr& arg : e.args)
+    if (!arg->type) return;
+  auto expect = [&](size_t i, bool ok, const char* what) {
+    if (!ok)
+      error(e.args[i]->loc,
+            "argument " + std::to_string(i + 1) + " of '" + e.text + "' must be " + what +
+                ", not " + describe(e.args[i]->type) + " (" + info->signature + ")",
+            "type-mismatch");
+    return ok;
+  };
+  switch (info->builtin) {
+    case Builtin::Len: {
+      const TypePtr& t = e.args[0]->type;
+      if (expect(0, is_kind(t, Type::Kind::List) || is_kind(t, Type::Kind::String),
+                 "a list or a string"))
+        e.type = kInt;
+      return;
+    }
+    case Builtin::Dist:
+      if (expect(0, is_kind(e.args[0]->type, Type::Kind::Vec3), "a vec3") &&
+          expect(1, is_kind(e.args[1]->type, Type::Kind::Vec3), "a vec3"))
+        e.type = kFloat;
+      return;
+    case Builtin::Norm:
+      if (expect(0, is_kind(e.args[0]->type, Type::Kind::Vec3), "a vec3")) e.type = kFloat;
+      return;
+    case Builtin::Abs:
+      if (expect(0, is_numeric(e.args[0]->type), "a number")) {
+        e.type = e.args[0]->type;
+        e.is_duration = e.args[0]->is_duration;
+      }
+      return;
+    case Builtin::Min:
+    case Builtin::Max: {
+      TypePtr t = kInt;
+      bool durations = true;
+      for (size_t i = 0; i < e.args.size(); ++i) {
+        if (!expect(i, is_numeric(e.args[i]->type), "a number")) return;
+        t = numeric_join(t, e.args[i]->type);
+        durations = durations && e.args[i]->is_duration;
+      }
+      e.type = t;
+      e.is_duration = durations;
+      return;
+    }
+    case Builtin::Now: e.type = kFloat; return;
+    case Builtin::Vec3:
+      for (size_t i = 0; i < 3; ++i)
+        if (!expect(i, is_numeric(e.args[i]->type), "a number")) return;
+      e.type = kVec3;
+      return;
+    default: return;
+  }
+}
+
+void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, const char* id) {
+  check_expr(e, scope);
+  if (e.type && e.type->kind != Type::Kind::Bool)
+    error(e.loc, what + " must be a bool, not " + describe(e.type), id);
+}
+
+// ---- durations and constants ----------------------------------------------------------------
+
+void Sema::check_duration(Duration& d, const std::string& what) {
+  Expr& e = *d.expr;
+  if (e.kind == Expr::Kind::Number) {
+    char n_text[32];
+    std::snprintf(n_text, sizeof n_text, "%g", e.number);
+    std::string n = n_text;
+    error(e.loc, what + " needs a unit: write e.g. " + n + "s, " + n + "ms or " + n + "min",
+          "duration");
+    return;
+  }
+  Scope empty;
+  check_expr(e, empty);
+  if (!e.type) return;
+  if (e.kind == Expr::Kind::Name && !e.is_duration) {
+    error(e.loc, "constant '" + e.text + "' is " + describe(e.type) + ", but " + what +
+                     " must be a duration such as 500ms or 1s",
+          "duration");
+    return;
+  }
+  d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
+  if (!(d.seconds > 0) || !std::isfinite(d.seconds))
+    error(e.loc, what + " must be a positive duration", "duration");
+}
+
+bool Sema::fold_const(const Expr& e, ConstDecl& into) {
+  switch (e.kind) {
+    case Expr::Kind::Number:
+    case Expr::Kind::Duration: into.number = e.number; return true;
+    case Expr::Kind::String: into.text = e.text; return true;
+    case Expr::Kind::Bool: into.boolean = e.boolean; return true;
+    case Expr::Kind::Name:
+      if (!e.constant) return false;
+      into.number = e.constant->number;
+      into.text = e.constant->text;
+      into.boolean = e.constant->boolean;
+      return true;
+    case Expr::Kind::Unary: {
+      ConstDecl x;
+      if (!fold_const(*e.args[0], x)) return false;
+      if (e.op == "-") into.number = -x.number;
+      else into.boolean = !x.boolean;
+      return true;
+    }
+    case Expr::Kind::Binary: {
+      ConstDecl a, b;
+      if (!fold_const(*e.args[0], a) || !fold_const(*e.args[1], b)) return false;
+      const std::string& op = e.op;
+      bool strings = is_kind(e.args[0]->type, Type::Kind::String);
+      if (op == "+") {
+        if (strings) into.text = a.text + b.text;
+        else into.number = a.number + b.number;
+      } else if (op == "-") into.number = a.number - b.number;
+      else if (op == "*") into.number = a.number * b.number;
+      else if (op == "/") into.number = a.number / b.number;
+      else if (op == "%") into.number = std::fmod(a.number, b.number);
+      else if (op == "and") into.boolean = a.boolean && b.boolean;
+      else if (op == "or") into.boolean = a.boolean || b.boolean;
+      else if (op == "<") into.boolean = strings ? a.text < b.text : a.number < b.number;
+      else if (op == "<=") into.boolean = strings ? a.text <= b.text : a.number <= b.number;
+      else if (op == ">") into.boolean = strings ? a.text > b.text : a.number > b.number;
+      else if (op == ">=") into.boolean = strings ? a.text >= b.text : a.number >= b.number;
+      else if (op == "==") into.boolean = a.number == b.number && a.text == b.text && a.boolean == b.boolean;
+      else if (op == "!=") into.boolean = !(a.number == b.number && a.text == b.text && a.boolean == b.boolean);
+      return true;
+    }
+    default: return false;
+  }
+}
+
+void Sema::check_const(size_t index) {
+  if (const_state_[index] == 2) return;
+  ConstDecl& c = spec_.consts[index];
+  if (const_state_[index] == 1) {
+    error(c.loc, "constant '" + c.name + "' is defined in terms of itself", "not-constant");
+    const_state_[index] = 2;
+    return;
+  }
+  const_state_[index] = 1;
+  Scope empty;
+  check_expr(*c.value, empty);
+  const_state_[index] = 2;
+  if (!c.value->type) return;
+  if (!fold_const(*c.value, c)) {
+    error(c.value->loc,
+          "the value of constant '" + c.name +
+              "' must be computed from literals and other constants with operators",
+          "not-constant");
+    c.value->type = nullptr;
+  }
+}
+
+// ---- constraints --------------------------------------------------------------------------
+
+Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherwise_ok) {
+  switch (e.kind) {
+    case Expr::Kind::Bool: e.type = kBool; return Constraint::constant(e.boolean);
+    case Expr::Kind::Otherwise:
+      if (!otherwise_ok)
+        error(e.loc,
+              "'otherwise' must be a rule's whole constraint (`when otherwise`), not part of " +
+                  where,
+              "otherwise");
+      return Constraint::constant(false);
+    case Expr::Kind::Name: {
+      if (events_.count(e.text)) {
+        e.name_kind = NameKind::Event;
+        e.type = kBool;
+        return Constraint::event_ref(e.text);
+      }
+      if (consts_.count(e.text)) {
+        error(e.loc,
+              "'" + e.text + "' is a constant; " + where +
+                  " may mention only events, true, false, not, and, or",
+              "constraint-term");
+        return Constraint::constant(false);
+      }
+      unknown(e.loc, "unknown event '" + e.text + "'", "unknown-event", e.text, event_names_);
+      return Constraint::constant(false);
+    }
+    case Expr::Kind::Unary:
+      if (e.op == "not") {
+        e.type = kBool;
+        return Constraint::negate(check_constraint(*e.args[0], where, false));
+      }
+      break;
+    case Expr::Kind::Binary:
+      if (e.op == "and" || e.op == "or") {
+        e.type = kBool;
+        std::vector<Constraint> parts;
+        parts.push_back(check_constraint(*e.args[0], where, false));
+        parts.push_back(check_constraint(*e.args[1], where, false));
+        return e.op == "and" ? Constraint::conjunction(std::move(parts))
+                             : Constraint::disjunction(std::move(parts));
+      }
+      break;
+    default: break;
+  }
+  error(e.loc,
+        std::string(kind_word(e.kind)) + " cannot appear in " + where +
+            ": it may mention only events, true, false, not, and, or (compute a derived event "
+            "with `event NAME = Module.port : PREDICATE;`)",
+        "constraint-term");
+  return Constraint::constant(false);
+}
+
+}  // namespace arbc::frontend

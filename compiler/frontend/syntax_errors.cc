@@ -1,0 +1,255 @@
+#include "compiler/frontend/syntax_errors.h"
+
+#include <ArbcParser.h>
+#include <antlr4-runtime.h>
+
+#include <algorithm>
+#include <set>
+
+#include "compiler/frontend/suggest.h"
+#include "compiler/frontend/token_checks.h"
+
+namespace arbc::frontend {
+
+using arbc_grammar::ArbcParser;
+
+namespace {
+
+// What the user was writing when the parser stopped, by grammar rule; rules not listed
+// (expressions, port references...) defer to the enclosing rule.
+const char* describe_rule(size_t rule) {
+  switch (rule) {
+    case ArbcParser::RuleAppDecl: return "the app declaration";
+    case ArbcParser::RuleTypeDecl: return "the type declaration";
+    case ArbcParser::RuleConstDecl: return "the constant declaration";
+    case ArbcParser::RuleModuleDecl: return "the module declaration";
+    case ArbcParser::RulePortDecl: return "the port declaration";
+    case ArbcParser::RuleEventDecl: return "the event declaration";
+    case ArbcParser::RuleDerivedEventDecl: return "the derived event declaration";
+    case ArbcParser::RuleStatusEventsDecl: return "the `events from` declaration";
+    case ArbcParser::RuleExclusiveDecl: return "the `exclusive` declaration";
+    case ArbcParser::RuleInvariantDecl: return "the invariant";
+    case ArbcParser::RuleArbitrateDecl: return "the `arbitrate` block";
+    case ArbcParser::RuleRuleDecl: return "the rule";
+    case ArbcParser::RuleConnectDecl: return "the `connect` declaration";
+    case ArbcParser::RuleAssertDecl: return "the assertion";
+    case ArbcParser::RuleStmt: return "the statement";
+    case ArbcParser::RuleFieldType: return "the record field";
+    case ArbcParser::RuleFieldInit: return "the record field";
+    default: return nullptr;
+  }
+}
+
+std::string describe_context(antlr4::ParserRuleContext* ctx) {
+  for (; ctx; ctx = dynamic_cast<antlr4::ParserRuleContext*>(ctx->parent)) {
+    if (const char* d = describe_rule(ctx->getRuleIndex())) return d;
+  }
+  return "the spec";
+}
+
+bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
+  for (; ctx; ctx = dynamic_cast<antlr4::ParserRuleContext*>(ctx->parent))
+    if (ctx->getRuleIndex() == rule) return true;
+  return false;
+}
+
+const std::set<std::string> kDeclKeywords = {"app",       "type",      "const",     "module",
+                                             "event",     "events",    "exclusive", "invariant",
+                                             "arbitrate", "connect",   "assert"};
+const std::set<std::string> kOperators = {".", "[", "-",  "*",  "/",  "%",   "+",  "<",
+                                          "<=", ">", ">=", "==", "!=", "and", "or"};
+
+// A token type as the user would name it.
+std::string token_name(const antlr4::dfa::Vocabulary& vocabulary, size_t type) {
+  switch (type) {
+    case antlr4::Token::EOF: return "the end of the file";
+    case ArbcParser::ID: return "a name";
+    case ArbcParser::NUMBER: return "a number";
+    case ArbcParser::DURATION: return "a duration such as 500ms";
+    case ArbcParser::STRING: return "a string in double quotes";
+    default: return vocabulary.getLiteralName(type);  // already quoted: 'when'
+  }
+}
+
+std::string found_text(const antlr4::Token* token) {
+  if (token->getType() == antlr4::Token::EOF) return "the end of the file";
+  std::string text = token->getText();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return "'" + text + "'";
+}
+
+bool is_keyword(const antlr4::dfa::Vocabulary& vocabulary, const antlr4::Token* token) {
+  std::string literal = vocabulary.getLiteralName(token->getType());
+  return literal.size() > 2 && std::isalpha(static_cast<unsigned char>(literal[1]));
+}
+
+// "a, b or c"
+std::string join_or(const std::vector<std::string>& items) {
+  std::string s;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) s += i + 1 == items.size() ? " or " : ", ";
+    s += items[i];
+  }
+  return s;
+}
+
+}  // namespace
+
+class SyntaxErrorCollector : public antlr4::BaseErrorListener {
+ public:
+  explicit SyntaxErrorCollector(std::string file) : file_(std::move(file)) {}
+
+  void syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* offending, size_t, size_t,
+                   const std::string&, std::exception_ptr) override {
+    if (first_) return;
+    auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
+    if (!parser || !offending) return;
+    first_ = describe(parser, offending);
+    // At the real end of the file, point just past the last token rather than at an EOF
+    // token whose position the chunked parse may have guessed.
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    if (offending->getType() == antlr4::Token::EOF && !next_declaration_ && previous &&
+        first_->loc.line == static_cast<int>(offending->getLine()) &&
+        first_->loc.column == static_cast<int>(offending->getCharPositionInLine()) + 1) {
+      first_->loc = token_location(previous, file_);
+      first_->loc.column = first_->loc.end_column;
+      first_->loc.end_column = first_->loc.column + 1;
+    }
+    if (offending->getType() == antlr4::Token::EOF && next_declaration_) {
+      first_->loc = token_location(next_declaration_, file_);
+      const std::string eof = "the end of the file";
+      size_t at = first_->message.find(eof);
+      if (at != std::string::npos) first_->message.replace(at, eof.size(), found_text(next_declaration_));
+    }
+  }
+
+  std::optional<Diagnostic> first_;
+  const antlr4::Token* next_declaration_ = nullptr;
+
+ private:
+  Diagnostic describe(antlr4::Parser* parser, antlr4::Token* offending) {
+    const antlr4::dfa::Vocabulary& vocabulary = parser->getVocabulary();
+    antlr4::ParserRuleContext* ctx = parser->getContext();
+    std::set<std::string> literals;  // expected literal tokens, unquoted
+    std::set<size_t> kinds;          // expected token types
+    for (size_t type : parser->getExpectedTokens().toList()) {
+      kinds.insert(type);
+      std::string literal = vocabulary.getLiteralName(type);
+      if (literal.size() >= 2) literals.insert(literal.substr(1, literal.size() - 2));
+    }
+    std::string context = describe_context(ctx);
+    std::string found = found_text(offending);
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+
+    Diagnostic d;
+    d.id = "syntax";
+    d.loc = token_location(offending, file_);
+    auto has = [&](const char* literal) { return literals.count(literal) > 0; };
+
+    // Tokens the user could mean, minus the operators that could continue an expression.
+    std::vector<std::string> wanted;
+    bool after_expression = false;
+    for (size_t type : kinds) {
+      std::string literal = vocabulary.getLiteralName(type);
+      if (literal.size() >= 2 && kOperators.count(literal.substr(1, literal.size() - 2))) {
+        after_expression = true;
+        continue;
+      }
+      wanted.push_back(token_name(vocabulary, type));
+    }
+
+    bool decl_start = false;
+    for (const std::string& k : kDeclKeywords) decl_start |= has(k.c_str());
+    if (decl_start || (kinds.size() == 1 && kinds.count(antlr4::Token::EOF))) {
+      d.message = "expected a declaration (app, type, const, module, event, events, exclusive, "
+                  "invariant, arbitrate, connect or assert), found " + found;
+      suggest_keyword(offending, std::vector<std::string>(kDeclKeywords.begin(),
+                                                          kDeclKeywords.end()), d);
+    } else if (has("in") && has("out")) {
+      d.message = "expected a port declaration ('in NAME: TYPE;' or 'out NAME: TYPE;') or '}', "
+                  "found " + found;
+      suggest_keyword(offending, {"in", "out"}, d);
+    } else if (has("let") && has("emit")) {
+      d.message = "expected a statement (let, var, accept, set, unset, if, emit, throttle, "
+                  "every, script) or '}', found " + found;
+      suggest_keyword(offending, {"let", "var", "accept", "set", "unset", "if", "emit",
+                                  "throttle", "every", "script"}, d);
+    } else if (kinds.count(ArbcParser::ID) && has("{") &&
+               (in_rule(ctx, ArbcParser::RuleTypeExpr) ||
+                ctx->getRuleIndex() == ArbcParser::RuleTypeDecl ||
+                ctx->getRuleIndex() == ArbcParser::RulePortDecl ||
+                ctx->getRuleIndex() == ArbcParser::RuleFieldType)) {
+      d.message = "expected a type such as float, vec3 or list<T>, found " + found;
+    } else if (kinds.count(ArbcParser::NUMBER) && kinds.count(ArbcParser::STRING)) {
+      d.message = "expected an expression in " + context + ", found " + found;
+    } else if (kinds.count(ArbcParser::DURATION)) {
+      d.message = "expected a duration such as 500ms, 1s or 2min, found " + found;
+    } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && has("}") &&
+               kinds.count(ArbcParser::ID)) {
+      d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
+    } else if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
+               (wanted.size() == 1 ||
+                (previous && (previous->getLine() < offending->getLine() ||
+                              offending->getType() == antlr4::Token::EOF)))) {
+      d.message = "expected ';' after " + context;
+      // Point just past the previous token, where the ';' belongs, as compilers do.
+      if (previous && (previous->getLine() != offending->getLine() ||
+                       offending->getType() == antlr4::Token::EOF)) {
+        next_declaration_ = nullptr;  // the caret goes after the previous token
+        d.loc = token_location(previous, file_);
+        d.loc.column = d.loc.end_column;
+        d.loc.end_column = d.loc.column + 1;
+      } else {
+        d.message += ", found " + found;
+      }
+    } else if (wanted.size() == 1 && wanted[0] == "'='" && previous &&
+               previous->getType() == ArbcParser::ID && ctx->getRuleIndex() == ArbcParser::RuleStmt) {
+      // `emitt face;` parses as the start of an assignment `emitt = ...`.
+      d.loc = token_location(previous, file_);
+      d.message = "unknown statement '" + previous->getText() +
+                  "': a statement is let, var, accept, set, unset, if, emit, throttle, every, "
+                  "script, or an assignment NAME = VALUE;";
+      suggest_keyword(previous, {"let", "var", "accept", "set", "unset", "if", "emit",
+                                 "throttle", "every", "script"}, d);
+    } else if (wanted.size() == 1 && kinds.count(ArbcParser::ID)) {
+      d.message = "expected a name in " + context + ", found " + found;
+      if (is_keyword(vocabulary, offending))
+        d.message += " (a keyword cannot be used as a name)";
+    } else if (!wanted.empty() && wanted.size() <= 6) {
+      d.message = "expected " + join_or(wanted) + " in " + context + ", found " + found;
+      std::vector<std::string> keywords;
+      for (const std::string& l : literals)
+        if (!l.empty() && std::isalpha(static_cast<unsigned char>(l[0]))) keywords.push_back(l);
+      suggest_keyword(offending, keywords, d);
+    } else {
+      d.message = "unexpected " + found + " in " + context;
+    }
+    (void)after_expression;
+    return d;
+  }
+
+  // Adds "did you mean 'module'?" when a misspelled keyword was written as a name.
+  void suggest_keyword(const antlr4::Token* offending, const std::vector<std::string>& keywords,
+                       Diagnostic& d) {
+    if (offending->getType() != ArbcParser::ID) return;
+    if (auto best = closest_name(offending->getText(), keywords)) {
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "did you mean '" + *best + "'?";
+      d.notes.push_back(std::move(note));
+    }
+  }
+
+  std::string file_;
+};
+
+SyntaxErrors::SyntaxErrors(std::string file)
+    : collector_(std::make_unique<SyntaxErrorCollector>(std::move(file))) {}
+SyntaxErrors::~SyntaxErrors() = default;
+antlr4::BaseErrorListener* SyntaxErrors::listener() { return collector_.get(); }
+void SyntaxErrors::set_next_declaration(const antlr4::Token* token) {
+  collector_->next_declaration_ = token;
+}
+const std::optional<Diagnostic>& SyntaxErrors::first_error() const { return collector_->first_; }
+
+}  // namespace arbc::frontend

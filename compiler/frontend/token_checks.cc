@@ -1,0 +1,149 @@
+#include "compiler/frontend/token_checks.h"
+
+#include <ArbcLexer.h>
+#include <antlr4-runtime.h>
+
+namespace arbc::frontend {
+
+using arbc_grammar::ArbcLexer;
+
+model::SourceLocation token_location(const antlr4::Token* token, const std::string& file) {
+  model::SourceLocation loc;
+  loc.file = file;
+  loc.line = static_cast<int>(token->getLine());
+  loc.column = static_cast<int>(token->getCharPositionInLine()) + 1;
+  loc.end_line = loc.line;
+  size_t length = token->getType() == antlr4::Token::EOF
+                      ? 1
+                      : token->getStopIndex() + 1 - token->getStartIndex();
+  // A token spanning lines (an unterminated comment) underlines only its first character.
+  // (getText() converts from UTF-32, so it is called only for the one token type that can.)
+  if (token->getType() == ArbcLexer::UNTERMINATED_COMMENT) length = 1;
+  loc.end_column = loc.column + static_cast<int>(length);
+  return loc;
+}
+
+namespace {
+
+Diagnostic error_at(const antlr4::Token* token, const std::string& file, std::string message,
+                    std::string id) {
+  Diagnostic d;
+  d.loc = token_location(token, file);
+  d.message = std::move(message);
+  d.id = std::move(id);
+  return d;
+}
+
+// The printable form of a stray character, for messages.
+std::string describe_char(const std::string& text) {
+  if (text.size() == 1) {
+    unsigned char c = static_cast<unsigned char>(text[0]);
+    if (c < 0x20 || c == 0x7F) {
+      char buffer[16];
+      std::snprintf(buffer, sizeof buffer, "\\x%02X", c);
+      return buffer;
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string& file,
+                   std::vector<Diagnostic>& out) {
+  for (const antlr4::Token* t : tokens) {
+    switch (t->getType()) {
+      case ArbcLexer::BAD_NUMBER:
+        out.push_back(error_at(t, file,
+                               "'" + t->getText() +
+                                   "' is not a number or a duration: durations end in ms, s or "
+                                   "min (e.g. 500ms, 1s)",
+                               "bad-number"));
+        break;
+      case ArbcLexer::UNTERMINATED_STRING:
+        out.push_back(error_at(t, file, "string literal is missing its closing '\"'",
+                               "unterminated-string"));
+        break;
+      case ArbcLexer::UNTERMINATED_COMMENT:
+        out.push_back(error_at(t, file, "comment opened with '/*' is never closed with '*/'",
+                               "unterminated-comment"));
+        break;
+      case ArbcLexer::ERROR_CHAR:
+        out.push_back(error_at(t, file,
+                               "unexpected character '" + describe_char(t->getText()) +
+                                   "': names use only letters, digits and '_'",
+                               "bad-character"));
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+
+bool check_nesting(const std::vector<antlr4::Token*>& tokens,
+                   const antlr4::dfa::Vocabulary& vocabulary, const std::string& file,
+                   std::vector<Diagnostic>& out) {
+  // Token types by role, looked up once: comparing types avoids converting every token's
+  // text back from UTF-32.
+  enum Role : char { kOther, kOpen, kClose, kPrefix, kMinus, kArrow, kOperandEnd };
+  std::vector<Role> role(vocabulary.getMaxTokenType() + 2, kOther);
+  for (size_t type = 0; type <= vocabulary.getMaxTokenType(); ++type) {
+    std::string literal = vocabulary.getLiteralName(type);
+    if (literal == "'('" || literal == "'['" || literal == "'{'") role[type] = kOpen;
+    if (literal == "')'" || literal == "']'" || literal == "'}'") role[type] = kClose;
+    if (literal == "'not'") role[type] = kPrefix;
+    if (literal == "'=>'") role[type] = kArrow;
+    if (literal == "'-'") role[type] = kMinus;
+    if (literal == "'true'" || literal == "'false'" || type == ArbcLexer::ID ||
+        type == ArbcLexer::NUMBER || type == ArbcLexer::DURATION || type == ArbcLexer::STRING)
+      role[type] = role[type] == kOther ? kOperandEnd : role[type];
+  }
+  // The parser recurses once per open bracket and once per prefix operator in an unbroken
+  // run (`not not -x`, `a => b => c`); a run ends at the first other token. An open bracket
+  // keeps the run before it on the stack until the bracket closes.
+  std::vector<int> frozen;  // per open bracket: 1 + the run of prefix operators before it
+  int depth = 0;            // sum of frozen
+  int run = 0;              // prefix operators in the current unbroken run
+  Role previous = kOther;
+  for (const antlr4::Token* t : tokens) {
+    size_t type = t->getType();
+    Role r = type < role.size() ? role[type] : kOther;
+    switch (r) {
+      case kOpen:
+        frozen.push_back(1 + run);
+        depth += frozen.back();
+        run = 0;
+        break;
+      case kClose:
+        if (!frozen.empty()) {
+          depth -= frozen.back();
+          frozen.pop_back();
+        }
+        run = 0;
+        break;
+      case kPrefix:
+      case kArrow: ++run; break;
+      case kMinus:
+        // Binary after an operand or a closing bracket, prefix otherwise.
+        run = (previous == kOperandEnd || previous == kClose) ? 0 : run + 1;
+        break;
+      default:
+        // A name right after `=>` may be the next lambda's parameter (`a => b => c`), so it
+        // keeps the run going; anything else ends it.
+        if (!(type == ArbcLexer::ID && previous == kArrow)) run = 0;
+    }
+    if (depth + run > kMaxNesting) {
+      out.push_back(error_at(t, file,
+                             "nesting is deeper than " + std::to_string(kMaxNesting) +
+                                 " levels (brackets and prefix operators): split the expression "
+                                 "with `let` or named constants",
+                             "nesting-too-deep"));
+      return false;
+    }
+    previous = r;
+  }
+  return true;
+}
+
+}  // namespace arbc::frontend

@@ -1,0 +1,23 @@
+// Typing rules shared by the checker: when a value of one type may flow where another is
+// expected, and how types are printed in messages.
+#pragma once
+
+#include <string>
+
+#include "runtime/type.h"
+
+namespace arbc::frontend {
+
+// True when a value of type `from` may be delivered or stored where `to` is expected:
+// the same type (records compare fields by name, in any order), an int where a float is
+// expected, element- and field-wise for lists and records. An empty list literal (null element)
+// fits any list.
+bool assignable(const Type& from, const Type& to);
+
+bool is_numeric(const TypePtr& t);
+bool is_kind(const TypePtr& t, Type::Kind kind);
+
+// "list<{pos: vec3, dist: float}>"; "list<?>" for the empty list literal; "?" for null.
+std::string type_name(const TypePtr& t);
+
+}  // namespace arbc::frontend

@@ -1,0 +1,121 @@
+// The arbc behaviour spec language (DESIGN.md section 3; docs/language.md describes it).
+//
+// Notes for the next engineer:
+// - Type names (bool, int, float, string, vec3, list) are ordinary identifiers here; semantic
+//   analysis resolves them, so `string` can still name a record field.
+// - Else-if chains are a loop, not recursion, so a long chain cannot exhaust the parser's stack.
+// - Nesting depth (brackets, prefix operators) is bounded on the token stream before parsing
+//   (compiler/frontend/nesting.cc): the generated recursive descent never sees deeper input.
+// - BAD_NUMBER, UNTERMINATED_STRING, UNTERMINATED_COMMENT and ERROR_CHAR exist only so the
+//   front end can name lexical mistakes in words; the parser never expects them.
+grammar Arbc;
+
+spec : decl* EOF ;
+
+// One top-level declaration; also the unit of error recovery (one syntax error per declaration).
+declOnly : decl EOF ;
+
+decl
+  : appDecl
+  | typeDecl
+  | constDecl
+  | moduleDecl
+  | eventDecl
+  | derivedEventDecl
+  | statusEventsDecl
+  | exclusiveDecl
+  | invariantDecl
+  | arbitrateDecl
+  | connectDecl
+  | assertDecl
+  ;
+
+appDecl          : 'app' ID STRING? ';' ;
+typeDecl         : 'type' ID '=' typeExpr ';' ;
+constDecl        : 'const' ID '=' expr ';' ;
+moduleDecl       : 'module' ID STRING? '{' portDecl* '}' ;
+portDecl         : direction=('in' | 'out') ID ':' typeExpr ';' ;
+eventDecl        : 'event' ID (',' ID)* ('lifetime' duration)? ';' ;
+derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? ';' ;
+statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* ','? '}'
+                   ('lifetime' duration)? ';' ;
+statusEntry      : ID ('=' STRING)? ;
+exclusiveDecl    : 'exclusive' '{' ID (',' ID)* ','? '}' ';' ;
+invariantDecl    : 'invariant' expr ';' ;
+arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
+ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
+connectDecl      : 'connect' portRef '->' portRef (block | ';') ;
+assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
+
+portRef  : ID '.' ID ;
+duration : DURATION | NUMBER | ID ;
+
+typeExpr
+  : ID ('<' typeExpr '>')?                                        # namedType
+  | '{' (fieldType (',' fieldType)* ','?)? '}'                    # recordType
+  ;
+fieldType : ID ':' typeExpr ;
+
+block : '{' stmt* '}' ;
+
+stmt
+  : 'let' ID '=' expr ';'                                         # letStmt
+  | 'var' ID '=' expr ';'                                         # varStmt
+  | ID '=' expr ';'                                               # assignStmt
+  | 'accept' expr ';'                                             # acceptStmt
+  | 'set' ID ('for' duration)? ';'                                # setStmt
+  | 'unset' ID ';'                                                # unsetStmt
+  | 'if' expr block ('else' 'if' expr block)* ('else' block)?     # ifStmt
+  | 'emit' expr ';'                                               # emitStmt
+  | 'throttle' duration ';'                                       # throttleStmt
+  | 'every' duration block                                        # everyStmt
+  | 'script' STRING ';'                                           # scriptStmt
+  ;
+
+// Highest precedence first. `not` binds looser than comparison: `not x < 3` is `not (x < 3)`,
+// `not a and b` is `(not a) and b`.
+expr
+  : expr '.' ID                                                   # fieldExpr
+  | expr '[' expr ']'                                             # indexExpr
+  | '-' expr                                                      # negExpr
+  | expr op=('*' | '/' | '%') expr                                # mulExpr
+  | expr op=('+' | '-') expr                                      # addExpr
+  | expr op=('<' | '<=' | '>' | '>=' | '==' | '!=') expr          # compareExpr
+  | 'not' expr                                                    # notExpr
+  | expr 'and' expr                                               # andExpr
+  | expr 'or' expr                                                # orExpr
+  | ID '=>' expr                                                  # lambdaExpr
+  | primary                                                       # primaryExpr
+  ;
+
+primary
+  : NUMBER                                                        # numberLit
+  | DURATION                                                      # durationLit
+  | STRING                                                        # stringLit
+  | 'true'                                                        # trueLit
+  | 'false'                                                       # falseLit
+  | 'otherwise'                                                   # otherwiseLit
+  | ID '(' (expr (',' expr)*)? ')'                                # callExpr
+  | ID                                                            # nameExpr
+  | '(' expr ')'                                                  # parenExpr
+  | '{' (fieldInit (',' fieldInit)* ','?)? '}'                    # recordLit
+  | '[' (expr (',' expr)* ','?)? ']'                              # listLit
+  ;
+fieldInit : ID ':' expr ;
+
+// ---- Lexer ----------------------------------------------------------------------------------
+DURATION : DIGITS ('.' DIGITS)? ('ms' | 's' | 'min') ;
+NUMBER   : DIGITS ('.' DIGITS)? ([eE] [+-]? DIGITS)? ;
+// A number glued to letters that are not a unit (`2m`, `5sec`): named by the front end.
+BAD_NUMBER : DIGITS ('.' DIGITS)? [a-zA-Z_] [a-zA-Z_0-9]* ;
+ID       : [a-zA-Z_] [a-zA-Z_0-9]* ;
+STRING   : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;
+UNTERMINATED_STRING : '"' (~["\\\r\n] | '\\' ~[\r\n])* ;
+
+LINE_COMMENT  : '//' ~[\r\n]* -> skip ;
+BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+UNTERMINATED_COMMENT : '/*' (~'*' | '*'+ ~[*/])* '*'* EOF ;
+WS            : [ \t\r\n\f]+ -> skip ;
+ERROR_CHAR    : . ;
+
+fragment DIGITS : [0-9]+ ;
