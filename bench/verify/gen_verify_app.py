@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Generates app.json files for the `arbc verify` benchmarks (bench/figures/verify.sh).
+
+usage: gen_verify_app.py PORTS RULES EVENTS OVERLAPS OUT.json
+
+Each port gets RULES rules. Rule i's guard is a full assignment (a cube) over the first
+k = ceil(log2(RULES)) events, so distinct rules are pairwise exclusive, plus one positive literal
+over the remaining events, so the port's scope has EVENTS events. The last OVERLAPS rules of each
+port reuse the assignments of the first OVERLAPS rules, so exactly OVERLAPS pairs overlap.
+A feed sets every event, so no `unfed` or `unused` finding distracts from the proof.
+"""
+import json
+import math
+import sys
+
+
+def constraint(text):
+    # app.json carries the text and the tree; the loader parses the text.
+    return {"text": text, "tree": {"op": "true"}}
+
+
+def main():
+    ports, rules, events, overlaps, out = sys.argv[1:6]
+    ports, rules, events, overlaps = int(ports), int(rules), int(events), int(overlaps)
+    bits = max(1, math.ceil(math.log2(max(2, rules - overlaps))))
+    assert events > bits, "need more events than assignment bits"
+    names = [f"e{i}" for i in range(events)]
+    app = {"schema_version": 1, "name": f"bench_{ports}x{rules}", "description": "",
+           "spec_file": "", "modules": [], "events": [], "connections": [],
+           "arbitrated_ports": []}
+    for p in range(ports):
+        port = f"M{p}.in"
+        rule_names = []
+        for i in range(rules):
+            code = i if i < rules - overlaps else i - (rules - overlaps)
+            lits = [names[b] if code >> b & 1 else "not " + names[b] for b in range(bits)]
+            lits.append(names[bits + i % (events - bits)])
+            name = f"r{i}"
+            rule_names.append(name)
+            app["connections"].append({
+                "name": name, "source": f"S{i}.out", "destination": port, "kind": "rule",
+                "generated": False, "constraint": constraint(" and ".join(lits)),
+                "sets": [], "unsets": [], "must_set": [], "must_unset": [], "opaque": False,
+                "trig_interval": None, "throttle": None, "monitor": ""})
+        app["connections"].append({
+            "name": f"feed{p}", "source": "Sensors.status", "destination": port, "kind": "feed",
+            "generated": True, "constraint": constraint("false"), "sets": names,
+            "unsets": names, "must_set": [], "must_unset": [], "opaque": False,
+            "trig_interval": None, "throttle": None, "monitor": ""})
+        app["arbitrated_ports"].append({"port": port, "by_priority": False, "complete": False,
+                                        "rules": rule_names, "asserts": []})
+    with open(out, "w") as f:
+        json.dump(app, f)
+
+
+main()

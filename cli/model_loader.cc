@@ -1,0 +1,75 @@
+#include "cli/model_loader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "runtime/app_json.h"
+
+// The spec compiler (front end + lowering) is optional here so that the verifier builds and is
+// tested on its own; arbc links arbc_compiler whenever that target exists (cli/CMakeLists.txt).
+#if __has_include("compiler/lower/compile_spec.h")
+#include "compiler/lower/compile_spec.h"
+#define ARBC_HAVE_SPEC_COMPILER 1
+#else
+#define ARBC_HAVE_SPEC_COMPILER 0
+#endif
+
+namespace arbc::cli {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+ModelLoad load_spec_model(const std::string& path) {
+  ModelLoad out;
+  out.spec = true;
+#if ARBC_HAVE_SPEC_COMPILER
+  lower::CompiledSpec compiled = lower::compile_spec(path);
+  for (const Diagnostic& d : compiled.diagnostics) out.diagnostics += render(d, &compiled.sources);
+  if (!compiled.ok || !compiled.lowered) {
+    out.error = path + ": not verified: the spec has errors (fix them; `arbc check` lists them)";
+    return out;
+  }
+  out.ok = true;
+  out.app = compiled.lowered->app;
+#else
+  out.error = path +
+              ": verifying a spec needs the spec compiler (front end and lowering), which this "
+              "build of arbc does not include yet; build the app and verify its app.json "
+              "instead: arbc verify out/APP/app.json";
+#endif
+  return out;
+}
+
+ModelLoad load_model(const std::string& path) {
+  std::error_code ec;
+  if (ends_with(path, ".spec")) return load_spec_model(path);
+  std::string file = path;
+  if (std::filesystem::is_directory(path, ec))
+    file = (std::filesystem::path(path) / "app.json").string();
+  std::ifstream in(file, std::ios::binary);
+  ModelLoad out;
+  if (!in) {
+    out.error = file +
+                ": cannot read the file; give a spec (*.spec), an app.json, or a directory "
+                "written by `arbc build`";
+    return out;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  model::AppLoad load = model::from_app_json(text.str());
+  if (!load.ok) {
+    out.error = file + ": not a valid app.json: " + load.error;
+    return out;
+  }
+  out.ok = true;
+  out.app = std::move(load.app);
+  return out;
+}
+
+}  // namespace arbc::cli

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Golden tests of `arbc verify` as a whole process: output and exit code per case.
+#   golden.sh ARBC            compare (run from the repository root)
+#   ARBC_UPDATE_GOLDEN=1 golden.sh ARBC    rewrite the expected files (review them by eye)
+# Each case: name, expected exit code, arguments. Expected stdout+stderr in tests/verify/golden/NAME.
+set -uo pipefail
+arbc=$1
+dir=tests/verify/golden
+mkdir -p "$dir"
+failed=0
+check() {
+  local name=$1 want=$2
+  shift 2
+  local out rc
+  out=$("$arbc" verify "$@" 2>&1)
+  rc=$?
+  if [ "$rc" != "$want" ]; then
+    echo "FAIL $name: exit $rc, expected $want"; failed=1
+  fi
+  if [ -n "${ARBC_UPDATE_GOLDEN:-}" ]; then
+    printf '%s\n' "$out" > "$dir/$name"
+  elif ! diff -u "$dir/$name" <(printf '%s\n' "$out"); then
+    echo "FAIL $name: output differs from $dir/$name"; failed=1
+  fi
+}
+check proved.txt 0 tests/verify/table_clean.app.json tests/verify/search_and_track.app.json
+check proved.json 0 --format json tests/verify/table_clean.app.json
+check proved.sarif 0 --format sarif tests/verify/table_clean.app.json
+check refuted.txt 1 tests/verify/table_clean_take_mutant.app.json
+check refuted.json 1 --format json tests/verify/table_clean_take_mutant.app.json
+check refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.app.json
+check strict_proved.txt 0 --strict tests/verify/table_clean.app.json
+# Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
+check missing.txt 2 tests/verify/no_such_app.json
+check spec_without_compiler.txt 2 tests/verify/table_clean.spec
+check bad_format.txt 2 --format xml tests/verify/table_clean.app.json
+exit $failed

@@ -1,0 +1,328 @@
+// Each check of DESIGN.md section 5 on the table_clean model, with a mutation that triggers it.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "verify/test_models.h"
+#include "verify/verify.h"
+
+namespace arbc::verify {
+namespace {
+
+using testing::arbitrated;
+using testing::connection;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using testing::parse;
+
+VerifyReport run(const model::App& app, VerifyOptions options = {}) {
+  VerifyResult r = verify_app(app, options);
+  EXPECT_TRUE(r.ok) << r.error;
+  return r.report;
+}
+
+std::vector<const Finding*> findings(const VerifyReport& report, const std::string& check) {
+  std::vector<const Finding*> out;
+  for (const PortResult& p : report.ports) {
+    for (const Finding& f : p.findings) {
+      if (f.check == check) out.push_back(&f);
+    }
+  }
+  for (const Finding& f : report.app_findings) {
+    if (f.check == check) out.push_back(&f);
+  }
+  return out;
+}
+
+const PortResult& port(const VerifyReport& report, const std::string& name) {
+  for (const PortResult& p : report.ports) {
+    if (p.port == name) return p;
+  }
+  throw std::runtime_error("no port " + name);
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+TEST(Checks, TableCleanIsProvedWithNoFindings) {
+  VerifyReport report = run(testing::table_clean_model());
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+  ASSERT_EQ(report.ports.size(), 4u);
+  for (const PortResult& p : report.ports) {
+    EXPECT_EQ(p.verdict, Verdict::Proved) << p.port;
+    EXPECT_TRUE(p.findings.empty()) << p.port << ": " << p.findings[0].message;
+  }
+  EXPECT_TRUE(report.app_findings.empty());
+  const PortResult& head = port(report, "HeadControl.gaze");
+  EXPECT_THAT(head.events, ElementsAre("act_track", "e_arm_idle", "e_pull_idle", "e_unreachable"));
+  EXPECT_THAT(head.rules, ElementsAre("track", "search"));
+}
+
+TEST(Checks, SearchAndTrackIsProvedThanksToMustSet) {
+  model::App app = testing::search_and_track_model();
+  EXPECT_EQ(run(app).verdict, Verdict::Proved);
+  connection(app, "track").must_set.clear();  // without it, `true` and `not e` overlap
+  VerifyReport report = run(app);
+  EXPECT_EQ(report.verdict, Verdict::Refuted);
+  ASSERT_EQ(findings(report, "exclusive").size(), 1u);
+  EXPECT_TRUE(findings(report, "exclusive")[0]->counterexample->present.empty());
+}
+
+TEST(Checks, OpaqueRuleIgnoresMustSet) {
+  model::App app = testing::search_and_track_model();
+  connection(app, "track").opaque = true;
+  EXPECT_EQ(run(app).verdict, Verdict::Refuted);
+}
+
+TEST(Checks, ExclusiveNamesTakePutAndCounterexampleWithTaken) {
+  model::App app = testing::table_clean_model();
+  connection(app, "take").constraint = parse("e_arm_idle and e_pull_idle");
+  VerifyReport report = run(app);
+  EXPECT_EQ(report.verdict, Verdict::Refuted);
+  auto overlaps = findings(report, "exclusive");
+  ASSERT_EQ(overlaps.size(), 1u);
+  const Finding& f = *overlaps[0];
+  EXPECT_THAT(f.rules, ElementsAre("take", "put"));
+  EXPECT_EQ(f.port, "PickAndPlace.cmd");
+  EXPECT_EQ(f.loc.line, 31);
+  // Fewest events: put needs e_taken and e_arm_idle, take needs e_arm_idle and e_pull_idle.
+  EXPECT_THAT(f.counterexample->present, ElementsAre("e_arm_idle", "e_pull_idle", "e_taken"));
+  EXPECT_TRUE(f.counterexample->absent.empty());
+  std::string notes;
+  for (const Note& n : f.notes) notes += n.message + "\n";
+  EXPECT_THAT(notes, HasSubstr("'take' holds: `e_arm_idle and e_pull_idle`"));
+  EXPECT_THAT(
+      notes,
+      HasSubstr("'put' holds: `e_taken and e_arm_idle` with e_arm_idle present, e_taken present"));
+  // The same mutation breaks the first assert.
+  auto asserts = findings(report, "assert");
+  ASSERT_EQ(asserts.size(), 1u);
+  EXPECT_EQ(asserts[0]->loc.line, 67);
+  EXPECT_TRUE(contains(asserts[0]->counterexample->present, "e_taken"));
+  EXPECT_EQ(port(report, "PullObject.cmd").verdict, Verdict::Proved);
+}
+
+TEST(Checks, ByPriorityWithoutActivityEventOverlaps) {
+  model::App app = testing::table_clean_model();
+  connection(app, "search").constraint = parse("e_unreachable and e_arm_idle and e_pull_idle");
+  VerifyReport report = run(app);
+  auto overlaps = findings(report, "exclusive");
+  ASSERT_EQ(overlaps.size(), 1u);
+  EXPECT_THAT(overlaps[0]->rules, ElementsAre("track", "search"));
+  EXPECT_THAT(overlaps[0]->counterexample->present,
+              ElementsAre("act_track", "e_arm_idle", "e_pull_idle", "e_unreachable"));
+}
+
+TEST(Checks, DeadIsAWarningAndAnErrorWhenStrict) {
+  model::App app = testing::table_clean_model();
+  connection(app, "pull").constraint = parse("e_taken and not e_taken and e_arm_idle");
+  VerifyReport report = run(app);
+  auto dead = findings(report, "dead");
+  ASSERT_EQ(dead.size(), 1u);
+  EXPECT_EQ(dead[0]->severity, Severity::Warning);
+  EXPECT_THAT(dead[0]->rules, ElementsAre("pull"));
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+  VerifyOptions strict;
+  strict.strict = true;
+  VerifyReport strict_report = run(app, strict);
+  EXPECT_EQ(findings(strict_report, "dead")[0]->severity, Severity::Error);
+  EXPECT_EQ(strict_report.verdict, Verdict::Refuted);
+}
+
+TEST(Checks, DeadUnderAnInvariant) {
+  model::App app = testing::table_clean_model();
+  app.invariants.push_back({parse("not (e_taken and e_arm_idle)"), {}});
+  VerifyReport report = run(app);
+  auto dead = findings(report, "dead");
+  ASSERT_EQ(dead.size(), 1u);
+  EXPECT_THAT(dead[0]->rules, ElementsAre("put"));
+  EXPECT_THAT(port(report, "PickAndPlace.cmd").invariants,
+              ElementsAre("not (e_taken and e_arm_idle)"));
+  EXPECT_TRUE(port(report, "Speak.text").invariants.empty());  // it reads neither event
+}
+
+TEST(Checks, UnfedWhenAFeedIsMissing) {
+  model::App app = testing::table_clean_model();
+  std::erase_if(app.connections, [](const model::Connection& c) {
+    return c.name == "feed_PullObject_status__PickAndPlace_cmd";
+  });
+  VerifyReport report = run(app);
+  auto unfed = findings(report, "unfed");
+  ASSERT_EQ(unfed.size(), 1u);
+  EXPECT_EQ(unfed[0]->event, "e_pull_idle");
+  EXPECT_EQ(unfed[0]->port, "PickAndPlace.cmd");
+  EXPECT_THAT(unfed[0]->rules, ElementsAre("take"));
+  EXPECT_EQ(report.verdict, Verdict::Refuted);
+}
+
+TEST(Checks, UnfedWhenOnlyAnAssertReadsTheEvent) {
+  model::App app = testing::table_clean_model();
+  arbitrated(app, "PullObject.cmd").asserts.push_back({"pull", parse("e_pull_idle"), {}});
+  auto unfed = findings(run(app), "unfed");
+  ASSERT_EQ(unfed.size(), 1u);
+  EXPECT_EQ(unfed[0]->event, "e_pull_idle");
+  EXPECT_EQ(unfed[0]->port, "PullObject.cmd");
+}
+
+TEST(Checks, UnusedWhenAFeedCarriesAnEventNobodyReads) {
+  model::App app = testing::table_clean_model();
+  connection(app, "feed_FaceDetector_face__Speak_text").sets.push_back("e_taken");
+  connection(app, "feed_FaceDetector_face__Speak_text").unsets.push_back("e_taken");
+  VerifyReport report = run(app);
+  auto unused = findings(report, "unused");
+  ASSERT_EQ(unused.size(), 1u);
+  EXPECT_EQ(unused[0]->event, "e_taken");
+  EXPECT_EQ(unused[0]->severity, Severity::Warning);
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+}
+
+TEST(Checks, UnusedWhenADeclaredStreamEventIsNeverRead) {
+  model::App app = testing::table_clean_model();
+  app.events.push_back({"e_extra", 0.5, "PickAndPlace.status", {}});
+  auto unused = findings(run(app), "unused");
+  ASSERT_EQ(unused.size(), 1u);
+  EXPECT_EQ(unused[0]->event, "e_extra");
+}
+
+TEST(Checks, OwnershipWhenAMonitorUnsetsWhatItNeverSets) {
+  model::App app = testing::table_clean_model();
+  connection(app, "ask").unsets.push_back("e_face_detected");
+  VerifyReport report = run(app);
+  auto own = findings(report, "ownership");
+  ASSERT_EQ(own.size(), 1u);
+  EXPECT_EQ(own[0]->event, "e_face_detected");
+  EXPECT_THAT(own[0]->rules, ElementsAre("ask"));
+  EXPECT_EQ(report.verdict, Verdict::Refuted);
+}
+
+TEST(Checks, CompleteReportsAStateSelectingNoRule) {
+  model::App app = testing::table_clean_model();
+  arbitrated(app, "PickAndPlace.cmd").complete = true;
+  VerifyReport report = run(app);
+  auto complete = findings(report, "complete");
+  ASSERT_EQ(complete.size(), 1u);
+  EXPECT_TRUE(complete[0]->counterexample->present.empty());  // nothing present: no rule
+  EXPECT_EQ(report.verdict, Verdict::Refuted);
+}
+
+TEST(Checks, CompleteIsProvedWhenTheRulesCoverEveryState) {
+  model::App app = testing::search_and_track_model();
+  arbitrated(app, "HeadControl.gaze").complete = true;
+  // track holds exactly when e_face_detected (it sets it), search otherwise.
+  VerifyReport report = run(app);
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+  EXPECT_TRUE(findings(report, "complete").empty());
+}
+
+TEST(Checks, AssertRefutedWithCounterexample) {
+  model::App app = testing::table_clean_model();
+  connection(app, "take").constraint = parse("not e_taken and e_arm_idle");
+  VerifyReport report = run(app);
+  auto asserts = findings(report, "assert");
+  ASSERT_EQ(asserts.size(), 1u);
+  EXPECT_EQ(asserts[0]->loc.line, 68);  // take -> e_pull_idle
+  EXPECT_THAT(asserts[0]->counterexample->present, ElementsAre("e_arm_idle"));
+  EXPECT_TRUE(findings(report, "exclusive").empty());
+}
+
+TEST(Checks, ExclusiveGroupsAndInvariantsRuleOverlapsOut) {
+  model::App app;
+  app.name = "domain";
+  model::Connection a, b, c;
+  a.name = "a", a.source = "S.a", a.destination = "M.p", a.constraint = parse("x");
+  a.loc.line = 1;
+  b = a, b.name = "b", b.source = "S.b", b.constraint = parse("y");
+  c = a, c.name = "feed", c.kind = model::ConnectionKind::Feed, c.constraint = parse("false");
+  c.sets = {"x", "y"};
+  app.connections = {a, b, c};
+  app.arbitrated_ports.push_back({"M.p", false, false, {"a", "b"}, {}, {}});
+  EXPECT_EQ(run(app).verdict, Verdict::Refuted);
+  model::App grouped = app;
+  grouped.exclusive_groups.push_back({{"x", "y", "z"}, {}});
+  VerifyReport report = run(grouped);
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+  EXPECT_EQ(report.ports[0].exclusive_groups, 1);
+  // An invariant linking y to w, and w excluding x: closed transitively.
+  model::App chained = app;
+  chained.invariants.push_back({parse("not y or w"), {}});
+  chained.invariants.push_back({parse("not (w and x)"), {}});
+  report = run(chained);
+  EXPECT_EQ(report.verdict, Verdict::Proved);
+  EXPECT_THAT(report.ports[0].events, ElementsAre("w", "x", "y"));
+}
+
+TEST(Checks, MustUnsetCountsOnlyWhenNoOtherConnectionSetsTheEvent) {
+  model::App app;
+  app.name = "unset";
+  model::Connection a, b;
+  a.name = "a", a.source = "S.a", a.destination = "M.p", a.constraint = parse("true");
+  a.sets = {"x"}, a.unsets = {"x"}, a.must_unset = {"x"};
+  b = a, b.name = "b", b.source = "S.b", b.constraint = parse("x");
+  b.sets = {"x"}, b.unsets.clear(), b.must_unset.clear();
+  app.connections = {a, b};
+  app.arbitrated_ports.push_back({"M.p", false, false, {"a", "b"}, {}, {}});
+  // b sets x too, so a's unset may leave b's entry: x can be present at a's decision.
+  EXPECT_EQ(run(app).verdict, Verdict::Refuted);
+  app.connections[1].sets.clear();
+  model::Connection f;
+  f.name = "feed", f.source = "S.f", f.destination = "M.p";
+  f.kind = model::ConnectionKind::Feed, f.constraint = parse("false"), f.sets = {"x"};
+  app.connections.push_back(f);
+  EXPECT_EQ(run(app).verdict, Verdict::Refuted);  // the feed sets x as well
+  app.connections[2].sets.clear();
+  app.connections[0].sets = {"x"};
+  VerifyReport report = run(app);  // only a sets x, and a unsets it before its decision
+  EXPECT_EQ(port(report, "M.p").verdict, Verdict::Proved);
+}
+
+TEST(Checks, OverlapsBeyondTheCapAreCounted) {
+  model::App app;
+  app.name = "cap";
+  for (int i = 0; i < 20; ++i) {
+    model::Connection c;
+    c.name = "r" + std::to_string(i);
+    c.source = "S.o" + std::to_string(i);
+    c.destination = "M.p";
+    c.constraint = parse("true");
+    app.connections.push_back(c);
+  }
+  model::ArbitratedPort p{"M.p", false, false, {}, {}, {}};
+  for (const model::Connection& c : app.connections) p.rules.push_back(c.name);
+  app.arbitrated_ports.push_back(p);
+  VerifyReport report = run(app);
+  EXPECT_EQ(report.ports[0].overlapping_pairs, 190);
+  EXPECT_EQ(report.ports[0].reported_pairs, kDefaultMaxPairsPerPort);
+  auto overlaps = findings(report, "exclusive");
+  ASSERT_EQ(overlaps.size(), 10u);
+  EXPECT_THAT(overlaps[0]->rules, ElementsAre("r0", "r1"));
+  EXPECT_THAT(overlaps.back()->notes.back().message, HasSubstr("180 more overlapping pairs"));
+}
+
+TEST(Checks, NoTimeLeftIsUnknownAndNeverPasses) {
+  VerifyOptions options;
+  options.timeout_seconds = 0;
+  VerifyReport report = run(testing::table_clean_model(), options);
+  EXPECT_EQ(report.verdict, Verdict::Unknown);
+  auto unknown = findings(report, "unknown");
+  ASSERT_FALSE(unknown.empty());
+  EXPECT_EQ(unknown[0]->severity, Severity::Error);
+  EXPECT_EQ(report.ports[0].unknown_reason, "timeout");
+}
+
+TEST(Checks, MalformedModelIsBadInput) {
+  model::App app = testing::table_clean_model();
+  arbitrated(app, "PickAndPlace.cmd").rules.push_back("drop");
+  VerifyResult r = verify_app(app, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_THAT(r.error, HasSubstr("names rule 'drop'"));
+  app = testing::table_clean_model();
+  arbitrated(app, "PickAndPlace.cmd").asserts.push_back({"pull", parse("e_taken"), {}});
+  r = verify_app(app, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_THAT(r.error, HasSubstr("names rule 'pull'"));
+}
+
+}  // namespace
+}  // namespace arbc::verify

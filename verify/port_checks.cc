@@ -1,0 +1,277 @@
+#include "verify/port_checks.h"
+
+#include <algorithm>
+
+#include "verify/replay.h"
+
+namespace arbc::verify {
+namespace {
+
+EventState state_of(const PortScope& scope, const std::vector<std::string>& present) {
+  EventState s;
+  s.present = present;
+  for (const std::string& e : scope.events) {
+    if (!std::binary_search(present.begin(), present.end(), e)) s.absent.push_back(e);
+  }
+  return s;
+}
+
+std::string list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out.empty() ? "none" : out;
+}
+
+std::string state_text(const EventState& s) {
+  return "present: " + list(s.present) + "; absent: " + list(s.absent);
+}
+
+const std::string& rule_name(const ScopedRule& r) { return r.connection->name; }
+
+// Why rule r holds (or fails) in the state: its constraint, the events it reads, and the
+// events its own monitor sets or unsets before the decision.
+Note explain_rule(const ScopedRule& r, const std::vector<std::string>& present, bool holds) {
+  std::string m = "'" + rule_name(r) + "' " + (holds ? "holds" : "does not hold") + ": `" +
+                  r.connection->constraint.to_string() + "` with " +
+                  describe_state(r.connection->constraint, present);
+  if (!r.forced_present.empty()) {
+    m += "; its monitor sets " + list(r.forced_present) + " on every accepting path";
+  }
+  if (!r.forced_absent.empty()) {
+    m += "; its monitor unsets " + list(r.forced_absent) + " on every accepting path";
+  }
+  return {m, r.connection->loc};
+}
+
+// The domain (invariants, exclusive groups) holds in the state, by the runtime's evaluator.
+bool domain_holds(const PortScope& scope, const std::vector<std::string>& present) {
+  return std::all_of(scope.domain.begin(), scope.domain.end(),
+                     [&](const DomainConstraint& d) { return runtime_holds(d.formula, present); });
+}
+
+Finding internal_error(const PortScope& scope, const std::string& what, const EventState& state) {
+  Finding f;
+  f.check = kCheckInternal;
+  f.severity = Severity::Error;
+  f.port = scope.port->port;
+  f.loc = scope.port->loc;
+  f.message = "internal error: Z3 and the runtime's constraint evaluator disagree on " + what +
+              " in the state " + state_text(state) + "; please report this bug";
+  f.counterexample = state;
+  return f;
+}
+
+class PortChecker {
+ public:
+  PortChecker(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
+              Clock::time_point deadline, PortResult& result)
+      : scope_(scope),
+        options_(options),
+        solver_(scope, ctx, deadline),
+        shortcut_(scope),
+        result_(result) {}
+
+  void run() {
+    check_dead();
+    check_exclusive();
+    if (scope_.port->complete) check_complete();
+    for (const model::Assertion& a : scope_.port->asserts) check_assert(a);
+    result_.solver_queries = solver_.queries();
+  }
+
+ private:
+  int rule_index(const std::string& name) const {
+    for (size_t i = 0; i < scope_.rules.size(); ++i) {
+      if (rule_name(scope_.rules[i]) == name) return static_cast<int>(i);
+    }
+    return -1;
+  }
+
+  void unknown(const std::string& what) {
+    if (!result_.unknown_reason.empty()) return;  // one unknown finding per port is enough
+    result_.unknown_reason = solver_.unknown_reason();
+    Finding f;
+    f.check = kCheckUnknown;
+    f.severity = Severity::Error;
+    f.port = scope_.port->port;
+    f.loc = scope_.port->loc;
+    f.message = "could not decide " + what + " for " + scope_.port->port + " (" +
+                solver_.unknown_reason() + "); an unknown verdict never passes";
+    f.notes.push_back({"raise --timeout, or split the port's rules", {}});
+    result_.findings.push_back(std::move(f));
+  }
+
+  void check_dead() {
+    for (size_t i = 0; i < scope_.rules.size(); ++i) {
+      Known known = shortcut_.can_hold(static_cast<int>(i));
+      if (known == Known::Yes) continue;
+      Answer a = known == Known::No ? Answer::Unsat : solver_.can_hold(static_cast<int>(i));
+      if (a == Answer::Unknown)
+        return unknown("whether rule '" + rule_name(scope_.rules[i]) + "' can be selected");
+      if (a == Answer::Sat) continue;
+      const ScopedRule& r = scope_.rules[i];
+      Finding f;
+      f.check = kCheckDead;
+      f.severity = options_.strict ? Severity::Error : Severity::Warning;
+      f.port = scope_.port->port;
+      f.rules = {rule_name(r)};
+      f.loc = r.connection->loc;
+      f.message =
+          "rule '" + rule_name(r) + "' of " + scope_.port->port +
+          " can never be selected: its effective guard `" + r.effective_guard.to_string() +
+          "` is unsatisfiable" +
+          (scope_.domain.empty() ? "" : " under the declared invariants and exclusive groups");
+      f.notes.push_back({"fix the `when` of '" + rule_name(r) + "', or remove the rule", {}});
+      result_.findings.push_back(std::move(f));
+    }
+  }
+
+  void check_exclusive() {
+    Answer a = solver_.at_least_two_hold();
+    if (a == Answer::Unknown) return unknown("whether two rules can be selected together");
+    if (a == Answer::Unsat) return;
+    std::vector<std::pair<int, int>> pairs;
+    auto known = [this](int i, int j) { return shortcut_.can_hold_together(i, j); };
+    if (solver_.overlapping_pairs(known, pairs) == Answer::Unknown) {
+      unknown("which rules overlap");
+    }
+    result_.overlapping_pairs = static_cast<int>(pairs.size());
+    int last = -1;  // index of the last reported pair's finding
+    for (const auto& [i, j] : pairs) {
+      if (result_.reported_pairs >= options_.max_pairs_per_port) break;
+      std::optional<std::vector<std::string>> present = solver_.minimal_state({i, j}, {});
+      if (!present) {
+        if (solver_.last_answer() == Answer::Unknown) unknown("a minimal counterexample");
+        continue;
+      }
+      const ScopedRule& ri = scope_.rules[static_cast<size_t>(i)];
+      const ScopedRule& rj = scope_.rules[static_cast<size_t>(j)];
+      EventState state = state_of(scope_, *present);
+      if (!runtime_holds(ri.effective_guard, *present) ||
+          !runtime_holds(rj.effective_guard, *present) || !domain_holds(scope_, *present)) {
+        result_.findings.push_back(internal_error(
+            scope_, "whether '" + rule_name(ri) + "' and '" + rule_name(rj) + "' both hold",
+            state));
+        continue;
+      }
+      Finding f;
+      f.check = kCheckExclusive;
+      f.severity = Severity::Error;
+      f.port = scope_.port->port;
+      f.rules = {rule_name(ri), rule_name(rj)};
+      f.loc = ri.connection->loc;
+      f.message = "rules '" + rule_name(ri) + "' and '" + rule_name(rj) + "' of " +
+                  scope_.port->port + " can both be selected in one state";
+      f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
+      f.notes.push_back(explain_rule(ri, *present, true));
+      f.notes.push_back(explain_rule(rj, *present, true));
+      f.notes.push_back(
+          {"make the constraints exclusive (e.g. `not EVENT` in one of them), or "
+           "declare the `invariant` or `exclusive` group that rules this state out",
+           {}});
+      f.counterexample = std::move(state);
+      result_.findings.push_back(std::move(f));
+      ++result_.reported_pairs;
+      last = static_cast<int>(result_.findings.size()) - 1;
+    }
+    int rest = result_.overlapping_pairs - result_.reported_pairs;
+    if (last >= 0 && rest > 0) {
+      result_.findings[static_cast<size_t>(last)].notes.push_back(
+          {std::to_string(rest) + " more overlapping pair" + (rest == 1 ? "" : "s") + " of " +
+               scope_.port->port + " not shown (at most " +
+               std::to_string(options_.max_pairs_per_port) + " per port)",
+           {}});
+    }
+  }
+
+  void check_complete() {
+    std::vector<int> all;
+    for (size_t i = 0; i < scope_.rules.size(); ++i) all.push_back(static_cast<int>(i));
+    std::optional<std::vector<std::string>> present = solver_.minimal_state({}, all);
+    if (!present) {
+      if (solver_.last_answer() == Answer::Unknown) unknown("whether some rule is always selected");
+      return;
+    }
+    EventState state = state_of(scope_, *present);
+    bool agree = domain_holds(scope_, *present);
+    for (const ScopedRule& r : scope_.rules) agree &= !runtime_holds(r.effective_guard, *present);
+    if (!agree) {
+      result_.findings.push_back(internal_error(scope_, "whether no rule holds", state));
+      return;
+    }
+    Finding f;
+    f.check = kCheckComplete;
+    f.severity = Severity::Error;
+    f.port = scope_.port->port;
+    f.loc = scope_.port->loc;
+    f.message = "port " + scope_.port->port +
+                " is declared complete, but in some state no rule is selected";
+    f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
+    for (const ScopedRule& r : scope_.rules) f.notes.push_back(explain_rule(r, *present, false));
+    f.notes.push_back(
+        {"add a rule for this state (e.g. `otherwise`), or declare the invariant "
+         "that rules it out",
+         {}});
+    f.counterexample = std::move(state);
+    result_.findings.push_back(std::move(f));
+  }
+
+  void check_assert(const model::Assertion& a) {
+    int r = rule_index(a.rule);
+    std::optional<std::vector<std::string>> present = solver_.minimal_state({r}, {}, &a.property);
+    if (!present) {
+      if (solver_.last_answer() == Answer::Unknown) unknown("the assert on '" + a.rule + "'");
+      return;
+    }
+    const ScopedRule& rule = scope_.rules[static_cast<size_t>(r)];
+    EventState state = state_of(scope_, *present);
+    if (!runtime_holds(rule.effective_guard, *present) || runtime_holds(a.property, *present) ||
+        !domain_holds(scope_, *present)) {
+      result_.findings.push_back(internal_error(scope_, "the assert on '" + a.rule + "'", state));
+      return;
+    }
+    Finding f;
+    f.check = kCheckAssert;
+    f.severity = Severity::Error;
+    f.port = scope_.port->port;
+    f.rules = {a.rule};
+    f.loc = a.loc;
+    f.message = "assert " + scope_.port->port + ": " + a.rule + " -> " + a.property.to_string() +
+                " can fail: '" + a.rule + "' can be selected while `" + a.property.to_string() +
+                "` is false";
+    f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
+    f.notes.push_back(explain_rule(rule, *present, true));
+    f.notes.push_back({"strengthen the `when` of '" + a.rule + "' with the property", {}});
+    f.counterexample = std::move(state);
+    result_.findings.push_back(std::move(f));
+  }
+
+  const PortScope& scope_;
+  const VerifyOptions& options_;
+  PortSolver solver_;
+  CubeShortcut shortcut_;
+  PortResult& result_;
+};
+
+}  // namespace
+
+void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
+                     Clock::time_point deadline, PortResult& result) {
+  result.port = scope.port->port;
+  result.by_priority = scope.port->by_priority;
+  result.complete = scope.port->complete;
+  result.loc = scope.port->loc;
+  result.asserts = static_cast<int>(scope.port->asserts.size());
+  for (const ScopedRule& r : scope.rules) result.rules.push_back(rule_name(r));
+  result.events = scope.events;
+  for (const DomainConstraint& d : scope.domain) {
+    if (d.is_invariant) {
+      result.invariants.push_back(d.text);
+    } else {
+      ++result.exclusive_groups;
+    }
+  }
+  PortChecker(scope, options, ctx, deadline, result).run();
+}
+
+}  // namespace arbc::verify

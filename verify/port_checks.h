@@ -1,0 +1,17 @@
+// The solver checks of one arbitrated port (DESIGN.md section 5): exclusive, dead, complete,
+// assert, each counterexample minimal (fewest events present) and replayed through the
+// runtime's evaluator before it is reported.
+#pragma once
+
+#include "verify/port_scope.h"
+#include "verify/port_solver.h"
+#include "verify/report.h"
+#include "verify/verify.h"
+
+namespace arbc::verify {
+
+// Fills `result` (rules, events, invariants used, findings, verdict) for the port in `scope`.
+void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
+                     Clock::time_point deadline, PortResult& result);
+
+}  // namespace arbc::verify

@@ -1,0 +1,120 @@
+#include "verify/port_scope.h"
+
+#include <algorithm>
+#include <set>
+
+namespace arbc::verify {
+
+Constraint at_most_one(const std::vector<std::string>& events) {
+  std::vector<Constraint> clauses;
+  for (size_t i = 0; i < events.size(); ++i) {
+    for (size_t j = i + 1; j < events.size(); ++j) {
+      clauses.push_back(Constraint::negate(Constraint::conjunction(
+          {Constraint::event_ref(events[i]), Constraint::event_ref(events[j])})));
+    }
+  }
+  return Constraint::conjunction(std::move(clauses));
+}
+
+namespace {
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+// Does some connection into the port other than `self` set `event`?
+bool set_by_other(const std::vector<const model::Connection*>& into, const model::Connection* self,
+                  const std::string& event) {
+  for (const model::Connection* c : into) {
+    if (c != self && (contains(c->sets, event) || contains(c->must_set, event))) return true;
+  }
+  return false;
+}
+
+std::string group_text(const std::vector<std::string>& events) {
+  std::string s = "exclusive { ";
+  for (size_t i = 0; i < events.size(); ++i) s += (i ? ", " : "") + events[i];
+  return s + " }";
+}
+
+}  // namespace
+
+bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, PortScope& scope,
+                      std::string& error) {
+  scope = PortScope{};
+  scope.port = &port;
+  std::vector<const model::Connection*> into = app.connections_into(port.port);
+  std::set<std::string> events;
+  for (const std::string& name : port.rules) {
+    const model::Connection* conn = nullptr;
+    for (const model::Connection* c : into) {
+      if (c->name == name && c->kind == model::ConnectionKind::Rule) conn = c;
+    }
+    if (!conn) {
+      error = "arbitrated port " + port.port + " names rule '" + name +
+              "', but no rule connection of that name goes into it";
+      return false;
+    }
+    ScopedRule rule;
+    rule.connection = conn;
+    std::vector<Constraint> parts;
+    if (conn->constraint.op != Constraint::Op::True) parts.push_back(conn->constraint);
+    if (!conn->opaque) {
+      for (const std::string& e : conn->must_set) {
+        if (contains(rule.forced_present, e)) continue;
+        rule.forced_present.push_back(e);
+        parts.push_back(Constraint::event_ref(e));
+      }
+      for (const std::string& e : conn->must_unset) {
+        // An unset removes only this connection's own entry: another setter may keep it present.
+        if (contains(rule.forced_absent, e) || contains(rule.forced_present, e) ||
+            set_by_other(into, conn, e)) {
+          continue;
+        }
+        rule.forced_absent.push_back(e);
+        parts.push_back(Constraint::negate(Constraint::event_ref(e)));
+      }
+    }
+    rule.effective_guard = Constraint::conjunction(std::move(parts));
+    rule.effective_guard.collect_events(events);
+    scope.rules.push_back(std::move(rule));
+  }
+  for (const model::Assertion& a : port.asserts) {
+    if (!contains(port.rules, a.rule)) {
+      error = "an assert on " + port.port + " names rule '" + a.rule +
+              "', which the port does not have";
+      return false;
+    }
+    a.property.collect_events(events);
+  }
+
+  // Domain constraints that mention the scope, closed transitively.
+  std::vector<DomainConstraint> all;
+  for (const model::ExclusiveGroup& g : app.exclusive_groups) {
+    all.push_back({at_most_one(g.events), false, g.events, group_text(g.events), g.loc});
+  }
+  for (const model::Invariant& inv : app.invariants) {
+    all.push_back({inv.formula, true, {}, inv.formula.to_string(), inv.loc});
+  }
+  std::vector<bool> used(all.size(), false);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (size_t i = 0; i < all.size(); ++i) {
+      if (used[i]) continue;
+      std::set<std::string> mentioned;
+      all[i].formula.collect_events(mentioned);
+      bool touches = std::any_of(mentioned.begin(), mentioned.end(),
+                                 [&](const std::string& e) { return events.count(e) > 0; });
+      if (!touches) continue;
+      used[i] = grew = true;
+      events.insert(mentioned.begin(), mentioned.end());
+    }
+  }
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (used[i]) scope.domain.push_back(std::move(all[i]));
+  }
+  scope.events.assign(events.begin(), events.end());
+  return true;
+}
+
+}  // namespace arbc::verify

@@ -1,0 +1,89 @@
+// What `arbc verify` found: per-port verdicts and findings (DESIGN.md section 5).
+//
+// The report is a plain value: the checks fill it in, the text / JSON / SARIF writers read it.
+// Nothing in it depends on Z3, so tools that only print reports need not link the solver.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.h"
+#include "runtime/app_model.h"
+
+namespace arbc::verify {
+
+enum class Verdict { Proved, Refuted, Unknown };
+
+const char* verdict_name(Verdict v);  // "proved", "refuted", "unknown"
+
+// Stable check ids, used in diagnostics, JSON, SARIF and docs/checks.md anchors.
+inline constexpr const char* kCheckExclusive = "exclusive";
+inline constexpr const char* kCheckDead = "dead";
+inline constexpr const char* kCheckUnfed = "unfed";
+inline constexpr const char* kCheckUnused = "unused";
+inline constexpr const char* kCheckOwnership = "ownership";
+inline constexpr const char* kCheckComplete = "complete";
+inline constexpr const char* kCheckAssert = "assert";
+inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no answer
+inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
+
+// A decision state: which of the port's events are present. Both lists are sorted.
+struct EventState {
+  std::vector<std::string> present;
+  std::vector<std::string> absent;
+};
+
+struct Note {
+  std::string message;
+  model::SourceLocation loc;
+};
+
+struct Finding {
+  std::string check;  // one of the kCheck* ids
+  Severity severity = Severity::Error;
+  std::string port;                // "Module.port"; empty for findings about the whole app
+  std::vector<std::string> rules;  // rules or connections involved, in spec order
+  std::string event;               // the event concerned (unfed, unused, ownership)
+  std::string message;
+  model::SourceLocation loc;
+  std::optional<EventState> counterexample;
+  std::vector<Note> notes;  // why each side holds, what to do
+};
+
+// The outcome for one arbitrated port.
+struct PortResult {
+  std::string port;
+  bool by_priority = false;
+  bool complete = false;
+  model::SourceLocation loc;
+  Verdict verdict = Verdict::Proved;
+  std::vector<std::string> rules;       // in spec order
+  std::vector<std::string> events;      // the port's scope, sorted
+  std::vector<std::string> invariants;  // texts of the invariants used
+  int exclusive_groups = 0;             // exclusive groups used
+  int asserts = 0;
+  int overlapping_pairs = 0;   // all overlapping pairs found (reported or only counted)
+  int reported_pairs = 0;      // pairs reported with a counterexample (at most the cap)
+  std::string unknown_reason;  // when verdict is Unknown: "timeout", "resource limit", ...
+  std::vector<Finding> findings;
+  double seconds = 0;  // wall time, printed only with --stats
+  int solver_queries = 0;
+};
+
+struct VerifyReport {
+  std::string app;
+  std::string spec_file;
+  std::vector<PortResult> ports;
+  std::vector<Finding> app_findings;  // findings not about one arbitrated port
+  Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
+  double seconds = 0;
+  int solver_queries = 0;
+
+  int count(Severity s) const;  // findings of that severity, ports and app together
+};
+
+// A finding as a compiler-style diagnostic (message, location, notes, counterexample).
+Diagnostic to_diagnostic(const Finding& f);
+
+}  // namespace arbc::verify

@@ -1,0 +1,139 @@
+// The text, JSON and SARIF writers, and the app.json fixtures under tests/verify/ that the
+// command-line golden tests (tests/verify/golden.sh) and the benchmarks read.
+#include "verify/report_format.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "runtime/app_json.h"
+#include "verify/test_models.h"
+#include "verify/verify.h"
+
+namespace arbc::verify {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string fixture_path(const std::string& name) {
+  return std::string(ARBC_SOURCE_DIR) + "/tests/verify/" + name;
+}
+
+std::string read(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+model::App take_mutant() { return testing::table_clean_take_mutant(); }
+
+// Each fixture is the C++ model serialised; ARBC_UPDATE_GOLDEN=1 rewrites them.
+TEST(Fixtures, AppJsonFilesMatchTheModels) {
+  std::vector<std::pair<std::string, model::App>> fixtures = {
+      {"table_clean.app.json", testing::table_clean_model()},
+      {"table_clean_take_mutant.app.json", take_mutant()},
+      {"search_and_track.app.json", testing::search_and_track_model()},
+  };
+  for (const auto& [name, app] : fixtures) {
+    std::string json = model::to_app_json(app);
+    if (std::getenv("ARBC_UPDATE_GOLDEN"))
+      std::ofstream(fixture_path(name), std::ios::binary) << json;
+    EXPECT_EQ(read(fixture_path(name)), json) << name << " is stale: run with ARBC_UPDATE_GOLDEN=1";
+    model::AppLoad back = model::from_app_json(json);
+    ASSERT_TRUE(back.ok) << back.error;
+    EXPECT_EQ(model::to_app_json(back.app), json);
+  }
+}
+
+std::vector<InputReport> reports(const model::App& app, VerifyOptions options = {}) {
+  VerifyResult r = verify_app(app, options);
+  EXPECT_TRUE(r.ok);
+  return {{"app.json", r.report}};
+}
+
+TEST(TextFormat, ProvedSaysWhatWasProvedWithoutTimings) {
+  std::string text = format_text(reports(testing::table_clean_model()), nullptr, false);
+  EXPECT_THAT(text,
+              HasSubstr("PickAndPlace.cmd: proved: rules take, put are never selected together"));
+  EXPECT_THAT(text,
+              HasSubstr("over 3 events (e_arm_idle, e_pull_idle, e_taken); invariants used: none"));
+  EXPECT_THAT(text, HasSubstr("HeadControl.gaze (by priority): proved"));
+  EXPECT_THAT(text, HasSubstr("3 asserts hold"));
+  EXPECT_THAT(text, HasSubstr("proved: 4 ports, 6 rules; 0 errors, 0 warnings\n"));
+  EXPECT_THAT(text, Not(HasSubstr(" s]")));
+  EXPECT_THAT(format_text(reports(testing::table_clean_model()), nullptr, true), HasSubstr(" s, "));
+}
+
+TEST(TextFormat, RefutedQuotesTheRule) {
+  SourceCache sources;
+  sources.add("tests/verify/table_clean_take_mutant.spec",
+              read(fixture_path("table_clean_take_mutant.spec")));
+  std::string text = format_text(reports(take_mutant()), &sources, false);
+  EXPECT_THAT(text,
+              HasSubstr("tests/verify/table_clean_take_mutant.spec:31:3: error: rules 'take' "
+                        "and 'put' of PickAndPlace.cmd can both be selected in one state "
+                        "[exclusive]\n    take: from ObjectDetector.objects when e_arm_idle"));
+  EXPECT_THAT(text, HasSubstr("present: e_arm_idle, e_pull_idle, e_taken; absent: none"));
+  EXPECT_THAT(text, HasSubstr("refuted: 4 ports"));
+}
+
+TEST(JsonFormat, CarriesVerdictsFindingsAndCounterexamples) {
+  nlohmann::json j = nlohmann::json::parse(format_json(reports(take_mutant()), false));
+  EXPECT_EQ(j["schema"], "arbc-verify/1");
+  EXPECT_EQ(j["verdict"], "refuted");
+  const auto& port = j["inputs"][0]["ports"][0];
+  EXPECT_EQ(port["port"], "PickAndPlace.cmd");
+  EXPECT_EQ(port["verdict"], "refuted");
+  const auto& f = port["findings"][0];
+  EXPECT_EQ(f["check"], "exclusive");
+  EXPECT_EQ(f["rules"], nlohmann::json({"take", "put"}));
+  EXPECT_EQ(f["counterexample"]["present"],
+            nlohmann::json({"e_arm_idle", "e_pull_idle", "e_taken"}));
+  EXPECT_EQ(f["location"]["line"], 31);
+  EXPECT_FALSE(port.contains("stats"));
+}
+
+TEST(SarifFormat, OneResultPerFindingWithRuleIdAndLocation) {
+  nlohmann::json j = nlohmann::json::parse(format_sarif(reports(take_mutant()), "0.1.0"));
+  EXPECT_EQ(j["version"], "2.1.0");
+  const auto& run = j["runs"][0];
+  const auto& results = run["results"];
+  ASSERT_EQ(results.size(), 2u);  // the overlap and the refuted assert
+  EXPECT_EQ(results[0]["ruleId"], "exclusive");
+  EXPECT_EQ(results[0]["level"], "error");
+  const auto& loc = results[0]["locations"][0]["physicalLocation"];
+  EXPECT_EQ(loc["artifactLocation"]["uri"], "tests/verify/table_clean_take_mutant.spec");
+  EXPECT_EQ(loc["region"]["startLine"], 31);
+  EXPECT_EQ(results[1]["ruleId"], "assert");
+  bool documented = false;
+  for (const auto& rule : run["tool"]["driver"]["rules"]) {
+    documented |= rule["id"] == "exclusive" && rule["helpUri"] == "docs/checks.md#exclusive";
+  }
+  EXPECT_TRUE(documented);
+}
+
+TEST(SarifFormat, NoFindingsIsAnEmptyResultsList) {
+  nlohmann::json j =
+      nlohmann::json::parse(format_sarif(reports(testing::table_clean_model()), "0.1.0"));
+  ASSERT_TRUE(j["runs"][0]["results"].is_array());
+  EXPECT_TRUE(j["runs"][0]["results"].empty());
+}
+
+TEST(SarifFormat, UnknownIsAnErrorResult) {
+  VerifyOptions options;
+  options.timeout_seconds = 0;
+  nlohmann::json j =
+      nlohmann::json::parse(format_sarif(reports(testing::table_clean_model(), options), "0.1.0"));
+  ASSERT_FALSE(j["runs"][0]["results"].empty());
+  EXPECT_EQ(j["runs"][0]["results"][0]["ruleId"], "unknown");
+  EXPECT_EQ(j["runs"][0]["results"][0]["level"], "error");
+}
+
+}  // namespace
+}  // namespace arbc::verify

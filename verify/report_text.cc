@@ -1,0 +1,95 @@
+#include <cstdio>
+
+#include "verify/report_format.h"
+
+namespace arbc::verify {
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out.empty() ? "none" : out;
+}
+
+std::string plural(size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f s", s);
+  return buf;
+}
+
+// "PickAndPlace.cmd: proved: ..." or "...: refuted (2 errors, 1 warning)".
+std::string port_line(const PortResult& p, bool stats) {
+  std::string line = "  " + p.port;
+  if (p.by_priority && p.complete) {
+    line += " (by priority, complete)";
+  } else if (p.by_priority) {
+    line += " (by priority)";
+  } else if (p.complete) {
+    line += " (complete)";
+  }
+  line += ": ";
+  line += verdict_name(p.verdict);
+  if (p.verdict == Verdict::Proved) {
+    line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
+                                : ": rules " + join(p.rules) + " are never selected together";
+    if (p.complete) line += "; some rule is selected in every state";
+    if (p.asserts) line += "; " + plural(static_cast<size_t>(p.asserts), "assert") + " hold";
+  } else {
+    if (p.verdict == Verdict::Unknown) line += " (" + p.unknown_reason + ")";
+    size_t errors = 0, warnings = 0;
+    for (const Finding& f : p.findings) {
+      errors += f.severity == Severity::Error;
+      warnings += f.severity == Severity::Warning;
+    }
+    line += ": " + plural(errors, "error") + ", " + plural(warnings, "warning");
+  }
+  if (p.overlapping_pairs) {
+    line += "; " + plural(static_cast<size_t>(p.overlapping_pairs), "overlapping pair") + " (" +
+            std::to_string(p.reported_pairs) + " shown)";
+  }
+  if (stats) {
+    line += " [" + seconds_text(p.seconds) + ", " + std::to_string(p.solver_queries) +
+            " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
+  }
+  line += "\n    over " + plural(p.events.size(), "event") + " (" + join(p.events) +
+          "); invariants used: " + join(p.invariants);
+  if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
+  return line + "\n";
+}
+
+}  // namespace
+
+std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats) {
+  std::string out;
+  size_t ports = 0, rules = 0, errors = 0, warnings = 0;
+  bool refuted = false, unknown = false;
+  double seconds = 0;
+  for (const InputReport& in : inputs) {
+    const VerifyReport& r = in.report;
+    out += r.app.empty() ? in.input + ":\n" : r.app + " (" + in.input + "):\n";
+    if (r.ports.empty()) out += "  no arbitrated ports\n";
+    for (const PortResult& p : r.ports) {
+      out += port_line(p, stats);
+      for (const Finding& f : p.findings) out += render(to_diagnostic(f), sources);
+      ++ports;
+      rules += p.rules.size();
+    }
+    for (const Finding& f : r.app_findings) out += render(to_diagnostic(f), sources);
+    errors += static_cast<size_t>(r.count(Severity::Error));
+    warnings += static_cast<size_t>(r.count(Severity::Warning));
+    refuted |= r.verdict == Verdict::Refuted;
+    unknown |= r.verdict == Verdict::Unknown;
+    seconds += r.seconds;
+  }
+  const char* verdict = refuted ? "refuted" : unknown ? "unknown" : "proved";
+  out += std::string(verdict) + ": " + plural(ports, "port") + ", " + plural(rules, "rule") + "; " +
+         plural(errors, "error") + ", " + plural(warnings, "warning");
+  if (stats) out += "; " + seconds_text(seconds);
+  return out + "\n";
+}
+
+}  // namespace arbc::verify

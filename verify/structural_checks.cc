@@ -1,0 +1,150 @@
+#include "verify/structural_checks.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace arbc::verify {
+namespace {
+
+std::set<std::string> events_set_by(const model::Connection& c) {
+  std::set<std::string> s(c.sets.begin(), c.sets.end());
+  s.insert(c.must_set.begin(), c.must_set.end());
+  return s;
+}
+
+std::set<std::string> events_unset_by(const model::Connection& c) {
+  std::set<std::string> s(c.unsets.begin(), c.unsets.end());
+  s.insert(c.must_unset.begin(), c.must_unset.end());
+  return s;
+}
+
+const model::Connection* find_rule(const model::App& app, const model::ArbitratedPort& port,
+                                   const std::string& name) {
+  for (const model::Connection* c : app.connections_into(port.port)) {
+    if (c->name == name && c->kind == model::ConnectionKind::Rule) return c;
+  }
+  return nullptr;
+}
+
+// The events a port reads in its rules' constraints and asserts, each with where it is first
+// read (a rule or an assert).
+struct Read {
+  std::string reader;  // "rule 'take'" or "an assert on 'take'"
+  std::string rule;
+  model::SourceLocation loc;
+};
+
+std::map<std::string, Read> reads_of(const model::App& app, const model::ArbitratedPort& port) {
+  std::map<std::string, Read> reads;
+  for (const std::string& name : port.rules) {
+    const model::Connection* c = find_rule(app, port, name);
+    if (!c) continue;
+    std::set<std::string> events;
+    c->constraint.collect_events(events);
+    for (const std::string& e : events) reads.emplace(e, Read{"rule '" + name + "'", name, c->loc});
+  }
+  for (const model::Assertion& a : port.asserts) {
+    std::set<std::string> events;
+    a.property.collect_events(events);
+    for (const std::string& e : events) {
+      reads.emplace(e, Read{"the assert on '" + a.rule + "'", a.rule, a.loc});
+    }
+  }
+  return reads;
+}
+
+}  // namespace
+
+void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
+  std::map<std::string, std::map<std::string, Read>> reads;  // port -> event -> first reader
+  for (const model::ArbitratedPort& port : app.arbitrated_ports)
+    reads[port.port] = reads_of(app, port);
+
+  // unfed: per port, each read event must be set by some connection into the port.
+  for (const model::ArbitratedPort& port : app.arbitrated_ports) {
+    std::set<std::string> fed;
+    for (const model::Connection* c : app.connections_into(port.port)) {
+      std::set<std::string> s = events_set_by(*c);
+      fed.insert(s.begin(), s.end());
+    }
+    for (const auto& [event, read] : reads[port.port]) {
+      if (fed.count(event)) continue;
+      Finding f;
+      f.check = kCheckUnfed;
+      f.severity = Severity::Error;
+      f.port = port.port;
+      f.rules = {read.rule};
+      f.event = event;
+      f.loc = read.loc;
+      f.message = read.reader + " of " + port.port + " reads event '" + event +
+                  "', but no connection into " + port.port + " sets it, so it is never present";
+      f.notes.push_back({"feed it into the port: `events from M.p { " + event +
+                             " }`, a derived event, or `set " + event +
+                             "` in a monitor on a connection into " + port.port,
+                         {}});
+      out.push_back(std::move(f));
+    }
+  }
+
+  // unused and ownership: per connection.
+  std::set<std::string> reported_unused;
+  for (const model::Connection& c : app.connections) {
+    const model::ArbitratedPort* dest = app.find_arbitrated(c.destination);
+    std::set<std::string> sets = events_set_by(c);
+    for (const std::string& event : sets) {
+      if (dest && reads[dest->port].count(event)) continue;
+      Finding f;
+      f.check = kCheckUnused;
+      f.severity = strict ? Severity::Error : Severity::Warning;
+      f.port = dest ? dest->port : "";
+      f.rules = {c.name};
+      f.event = event;
+      f.loc = c.loc;
+      f.message = dest ? "connection '" + c.name + "' sets event '" + event +
+                             "', but no rule or assert of " + dest->port + " reads it"
+                       : "connection '" + c.name + "' sets event '" + event + "', but " +
+                             c.destination + " is not arbitrated: it has no event container";
+      f.notes.push_back({"remove the set, or read the event in a `when` of " + c.destination, {}});
+      reported_unused.insert(event);
+      out.push_back(std::move(f));
+    }
+    for (const std::string& event : events_unset_by(c)) {
+      if (sets.count(event)) continue;
+      Finding f;
+      f.check = kCheckOwnership;
+      f.severity = Severity::Error;
+      f.port = dest ? dest->port : "";
+      f.rules = {c.name};
+      f.event = event;
+      f.loc = c.loc;
+      f.message = "connection '" + c.name + "' unsets event '" + event +
+                  "', which it never sets: an unset removes only the connection's own entry, "
+                  "so this has no effect";
+      f.notes.push_back(
+          {"unset the event in the monitor that sets it, or let it expire with a "
+           "lifetime",
+           {}});
+      out.push_back(std::move(f));
+    }
+  }
+
+  // unused: an event fed from a stream that no port reads (lowering generates no feed for it).
+  for (const model::Event& e : app.events) {
+    if (e.source.empty() || reported_unused.count(e.name)) continue;
+    bool read = std::any_of(reads.begin(), reads.end(),
+                            [&](const auto& port) { return port.second.count(e.name) > 0; });
+    if (read) continue;
+    Finding f;
+    f.check = kCheckUnused;
+    f.severity = strict ? Severity::Error : Severity::Warning;
+    f.event = e.name;
+    f.loc = e.loc;
+    f.message =
+        "event '" + e.name + "' is set from " + e.source + ", but no rule or assert reads it";
+    f.notes.push_back({"remove it from the event declaration, or use it in a `when`", {}});
+    out.push_back(std::move(f));
+  }
+}
+
+}  // namespace arbc::verify

@@ -1,0 +1,76 @@
+#include "verify/verify.h"
+
+#include "verify/port_checks.h"
+#include "verify/port_scope.h"
+#include "verify/structural_checks.h"
+
+namespace arbc::verify {
+namespace {
+
+bool has_error(const std::vector<Finding>& findings) {
+  for (const Finding& f : findings) {
+    if (f.severity == Severity::Error && f.check != kCheckUnknown) return true;
+  }
+  return false;
+}
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
+  VerifyResult out;
+  VerifyReport& report = out.report;
+  report.app = app.name;
+  report.spec_file = app.spec_file;
+  Clock::time_point start = Clock::now();
+  Clock::time_point deadline =
+      start + std::chrono::duration_cast<Clock::duration>(
+                  std::chrono::duration<double>(std::max(0.0, options.timeout_seconds)));
+
+  std::vector<PortScope> scopes(app.arbitrated_ports.size());
+  for (size_t i = 0; i < app.arbitrated_ports.size(); ++i) {
+    if (!build_port_scope(app, app.arbitrated_ports[i], scopes[i], out.error)) return out;
+  }
+
+  std::vector<Finding> structural;
+  run_structural_checks(app, options.strict, structural);
+
+  z3::context ctx;  // one per run: creating a context costs tens of milliseconds
+  for (const PortScope& scope : scopes) {
+    PortResult result;
+    Clock::time_point port_start = Clock::now();
+    run_port_checks(scope, options, ctx, deadline, result);
+    for (Finding& f : structural) {
+      if (f.port == result.port) result.findings.push_back(std::move(f));
+    }
+    result.seconds = seconds_since(port_start);
+    if (has_error(result.findings)) {
+      result.verdict = Verdict::Refuted;
+    } else if (!result.unknown_reason.empty()) {
+      result.verdict = Verdict::Unknown;
+    } else {
+      result.verdict = Verdict::Proved;
+    }
+    report.solver_queries += result.solver_queries;
+    report.ports.push_back(std::move(result));
+  }
+  for (Finding& f : structural) {
+    if (!f.check.empty() && f.port.empty()) report.app_findings.push_back(std::move(f));
+  }
+
+  bool refuted = has_error(report.app_findings);
+  bool unknown = false;
+  for (const PortResult& p : report.ports) {
+    refuted |= p.verdict == Verdict::Refuted;
+    unknown |= p.verdict == Verdict::Unknown;
+  }
+  report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
+  report.seconds = seconds_since(start);
+  out.ok = true;
+  return out;
+}
+
+}  // namespace arbc::verify

@@ -1,0 +1,35 @@
+// The verifier's public API (DESIGN.md section 5): proves, per arbitrated port, that no decision
+// state selects two rules, and runs the other checks (dead, unfed, unused, ownership, complete,
+// assert). Reads the core model only, so `arbc verify SPEC` (after lowering) and
+// `arbc verify app.json` give the same proof.
+#pragma once
+
+#include <string>
+
+#include "runtime/app_model.h"
+#include "verify/report.h"
+
+namespace arbc::verify {
+
+// Overlapping pairs of one port reported with a counterexample; the rest are counted.
+inline constexpr int kDefaultMaxPairsPerPort = 10;
+
+struct VerifyOptions {
+  double timeout_seconds = 60;  // for the whole app; a query cut short answers unknown
+  bool strict = false;          // warnings (dead, unused) become errors
+  int max_pairs_per_port = kDefaultMaxPairsPerPort;
+};
+
+// The model is malformed for verification (a port names a rule that does not go into it, an
+// assert names an unknown rule): a bad-input error, not a finding.
+struct VerifyResult {
+  bool ok = false;
+  std::string error;  // when !ok
+  VerifyReport report;
+};
+
+// Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown
+// verdict, a Z3/runtime disagreement an `internal` error finding.
+VerifyResult verify_app(const model::App& app, const VerifyOptions& options);
+
+}  // namespace arbc::verify
