@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli/build_summary.h"
 #include "cli/commands.h"
 
 #if ARBC_HAVE_VERIFY

@@ -333,8 +333,7 @@ class MonitorWriter {
     bool has_body = body && !body->empty();
     LuaWriter fn;
     if (has_body) {
-      fn.line("-- The rule's body: whether to accept the message (and why not), and what to");
-      fn.line("-- deliver (arbc_emitted).");
+      fn.line("-- The body: whether to accept the message, and what to deliver (arbc_emitted).");
       fn.line("local function arbc_body(" + msg_ + ")");
       fn.indent();
       block(*body, fn, Mode::Message);

@@ -61,8 +61,8 @@ class RuntimeExecTest : public ::testing::Test {
     if (l.monitor) return l;
     l.host = std::make_unique<Host>(&ports_[c.destination], c.name);
     std::string error;
-    l.monitor = LuaMonitor::load(files_[c.monitor], c.monitor, SandboxLimits{}, l.host.get(),
-                                 &error);
+    l.monitor =
+        LuaMonitor::load(files_[c.monitor], c.monitor, SandboxLimits{}, l.host.get(), &error);
     EXPECT_TRUE(l.monitor) << c.monitor << ": " << error;
     bool created = false;
     if (l.monitor) {
@@ -110,14 +110,14 @@ TEST_F(RuntimeExecTest, EveryTableCleanMonitorLoadsInTheRuntimeSandbox) {
             (std::vector<std::string>{"e_arm_idle", "e_pull_idle"}));
 
   Loaded& take = load(connection("PickAndPlace.cmd", "take"));
-  ASSERT_TRUE(take.monitor->accept(Value::list({object(0.9, 0.9), object(0.3, 0.3)}), &accepted)
-                  .ok());
+  ASSERT_TRUE(
+      take.monitor->accept(Value::list({object(0.9, 0.9), object(0.3, 0.3)}), &accepted).ok());
   EXPECT_TRUE(accepted);
   Value out;
   TypePtr cmd = parse_type("{verb: string, pos: vec3}");
   LuaCall u = take.monitor->update(*cmd, &out);
   ASSERT_TRUE(u.ok()) << u.error;
-  EXPECT_EQ(out.to_json(), "{\"pos\":{\"x\":0.3,\"y\":0,\"z\":0},\"verb\":\"take\"}");
+  EXPECT_EQ(out.to_json(), "{\"pos\":{\"x\":0.3,\"y\":0.0,\"z\":0.0},\"verb\":\"take\"}");
 
   // The derived-event feed with a real list of records.
   Loaded& c7 = load(connection("HeadControl.gaze", "feed_ObjectDetector_objects"));

@@ -275,6 +275,15 @@ arbitrate Head.gaze { mine: from Looker.gaze when a { script "nowhere.lua"; } }
       << broken.diagnostics.back().message;
 }
 
+TEST(LowerTest, SemanticErrorsStopBeforeLowering) {
+  CompiledSpec c =
+      compile_spec_text(spec("arbitrate Head.gaze { r: from Eye.nothing; }\n"), "test.spec");
+  EXPECT_FALSE(c.ok);
+  EXPECT_EQ(c.lowered, nullptr);
+  ASSERT_FALSE(c.diagnostics.empty());
+  EXPECT_EQ(c.diagnostics[0].severity, Severity::Error);
+}
+
 TEST(LowerTest, UnreadableSpecIsADiagnosticNotACrash) {
   CompiledSpec c = compile_spec("/nonexistent/x.spec");
   EXPECT_FALSE(c.ok);

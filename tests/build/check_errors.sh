@@ -13,7 +13,7 @@ expect() {  # expect CODE TEXT -- command...
 }
 expect 0 "--no-verify" -- "$arbc" build --help
 expect 2 "SPEC is required" -- "$arbc" build
-expect 2 "cannot read" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/out"
+expect 2 "no such file" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/out"
 printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n' > "$scratch/broken.spec"
 expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
 expect 2 "unknown target 'yarp'" -- "$arbc" build specs/face_filter.spec --target yarp -o "$scratch/out"
@@ -27,4 +27,20 @@ expect 0 "face_filter" -- "$arbc" build specs/face_filter.spec -o "$scratch/re"
 touch "$scratch/re/face_filter/monitors/stale.lua"
 expect 0 "face_filter" -- "$arbc" build specs/face_filter.spec -o "$scratch/re"
 [ ! -e "$scratch/re/face_filter/monitors/stale.lua" ] || fail "a stale monitor survived a rebuild"
+# A refuted proof writes nothing (exit 1), unless --no-verify.
+cat > "$scratch/overlap.spec" <<'SPEC'
+app overlap;
+module A { out x: float; }
+module B { out y: float; }
+module H { in z: float; }
+event busy;
+arbitrate H.z {
+  first:  from A.x when busy;
+  second: from B.y when busy;
+}
+SPEC
+expect 1 "nothing was written" -- "$arbc" build "$scratch/overlap.spec" -o "$scratch/refuted"
+[ ! -e "$scratch/refuted" ] || fail "a refuted build wrote $scratch/refuted"
+expect 0 "not verified (--no-verify)" -- "$arbc" build "$scratch/overlap.spec" -o "$scratch/refuted" --no-verify
+[ -f "$scratch/refuted/overlap/app.json" ] || fail "--no-verify did not write the build"
 echo "ok"
