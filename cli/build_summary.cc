@@ -20,6 +20,10 @@ std::string join(const std::vector<std::string>& items) {
 
 }  // namespace
 
+std::string count_of(size_t n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
 std::string build_summary(const model::App& app, const std::string& spec,
                           const std::string& out_dir, const std::string& verified) {
   size_t written = 0, generated = 0, name_w = 4, source_w = 6;
@@ -34,8 +38,8 @@ std::string build_summary(const model::App& app, const std::string& spec,
   std::string dir = out_dir + "/" + app.name;
   std::string out = "arbc build: " + spec + " -> " + dir + "/\n";
   out += "  " + verified + "\n";
-  out += "  app.json and " + std::to_string(app.connections.size()) +
-         " monitors: " + std::to_string(written) + " connections you wrote, " +
+  out += "  app.json and " + count_of(app.connections.size(), "monitor", "monitors") + ": " +
+         count_of(written, "connection", "connections") + " you wrote, " +
          std::to_string(generated) + " generated\n";
   for (const std::string& port : ports) {
     bool arbitrated = app.find_arbitrated(port) != nullptr;

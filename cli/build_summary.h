@@ -8,6 +8,9 @@
 
 namespace arbc::cli {
 
+// "1 monitor", "3 monitors".
+std::string count_of(size_t n, const std::string& singular, const std::string& plural);
+
 std::string build_summary(const model::App& app, const std::string& spec,
                           const std::string& out_dir, const std::string& verified);
 

@@ -14,15 +14,16 @@ namespace arbc::cli {
 struct ModelLoad {
   bool ok = false;
   model::App app;
-  std::string error;  // for the user: "FILE: what is wrong; what to do"
-  bool spec = false;  // the input was a spec (its diagnostics are in `error`)
+  std::string error;        // for the user: "FILE: what is wrong; what to do"
+  std::string diagnostics;  // a spec's rendered diagnostics (errors and warnings), for stderr
+  bool spec = false;        // the input was a spec
 };
 
 // Reads the model from `path`. Never throws.
 ModelLoad load_model(const std::string& path);
 
-// Compiles a spec to its core model: the one function to change when the front end and the
-// lowering land (call compile_spec_file and move its diagnostics into `error`).
+// Compiles a spec to its core model with compiler/lower/compile_spec.h when this build has the
+// compiler (arbc_compiler); otherwise says that spec support needs it.
 ModelLoad load_spec_model(const std::string& path);
 
 }  // namespace arbc::cli

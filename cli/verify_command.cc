@@ -77,6 +77,7 @@ int verify_command(std::span<char*> args) {
   std::vector<verify::InputReport> reports;
   for (const std::string& input : inputs) {
     ModelLoad load = load_model(input);
+    std::fputs(load.diagnostics.c_str(), stderr);
     if (!load.ok) {
       std::fprintf(stderr, "arbc verify: %s\n", load.error.c_str());
       bad_input = true;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli/build_summary.h"
 #include "cli/commands.h"
 
 #if ARBC_HAVE_VERIFY
@@ -39,10 +40,13 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   }
   gate.pass = true;
   gate.summary =
-      "verified: " + std::to_string(report.ports.size()) + " arbitrated port(s) proved exclusive";
+      report.ports.empty()
+          ? "verified: no arbitrated ports, nothing to prove"
+          : "verified: " + count_of(report.ports.size(), "arbitrated port", "arbitrated ports") +
+                " proved exclusive";
 #else
-  // This arbc was built without the verifier library; the lead wires it in by building
-  // verify/ (CMake defines ARBC_HAVE_VERIFY when the arbc_verify target exists).
+  // This arbc was built without the verifier library (CMake defines ARBC_HAVE_VERIFY when the
+  // arbc_verify target exists); say so rather than pretend.
   (void)app;
   (void)input;
   (void)sources;

@@ -226,9 +226,9 @@ std::string LuaExprTranslator::binary(const ast::Expr& e) {
     return operand(l) + " .. " + operand(r);
   if (op == "+" && l.type && kind_of(l) == Type::Kind::List)
     return helper("arbc_concat") + "(" + expr(l) + ", " + expr(r) + ")";
-  if (op == "/" && l.type && r.type && kind_of(l) == Type::Kind::Int &&
-      kind_of(r) == Type::Kind::Int)
-    return operand(l) + " // " + operand(r);
+  // `/` is float division in the spec as in Lua; `%` truncates like the spec's constant folding
+  // (C fmod), where Lua's own `%` would floor.
+  if (op == "%") return "math.fmod(" + expr(l) + ", " + expr(r) + ")";
   return operand(l) + " " + op + " " + operand(r);
 }
 

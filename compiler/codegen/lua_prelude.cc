@@ -18,10 +18,9 @@ const std::vector<Helper>& helpers() {
   static const std::vector<Helper> kHelpers = {
       {"arbc_no_value",
        {},
-       "-- An expression without a value rejects the message (drop reason \"no-value\").\n"
-       "local arbc_NO_VALUE = setmetatable({}, { __tostring = function() return \"no-value\" "
-       "end })\n"
-       "local function arbc_no_value() error(arbc_NO_VALUE, 0) end\n"},
+       "-- An expression without a value ends the callback: the runtime drops the message\n"
+       "-- with reason \"no-value\" (docs/runtime.md).\n"
+       "local function arbc_no_value() PortMonitor.novalue() end\n"},
       {"arbc_index",
        {"arbc_no_value"},
        "-- xs[i], counting from 0 as the spec does; out of range has no value.\n"

@@ -2,9 +2,9 @@
 // Lua 5.4 local functions, copied into each generated monitor that uses them, so every monitor
 // is a self-contained file that needs nothing but the PortMonitor API (DESIGN.md section 6).
 //
-// "No value" (min_by of an empty list, an index out of range) is raised as the sentinel
-// `arbc_NO_VALUE` with error(); the monitor's accept catches it with pcall and rejects the
-// message with the drop reason "no-value" (docs/runtime.md) instead of a script error.
+// "No value" (min_by of an empty list, an index out of range) calls PortMonitor.novalue(),
+// which ends the callback; the runtime drops the message with the reason "no-value", counted
+// and traced, not a script error (docs/runtime.md).
 #pragma once
 
 #include <set>

@@ -18,20 +18,14 @@ std::string eval(const std::string& expr) {
                                "abs",        "min",        "max",        "now",       "vec3",
                                "arbc_index", "arbc_equal", "arbc_vadd",  "arbc_vsub", "arbc_vscale",
                                "arbc_vdiv",  "arbc_vneg",  "arbc_concat"};
-  std::string source = lua_prelude(all) +
-                       "PortMonitor.update = function(m)\n"
-                       "  local ok, v = pcall(function() return " +
-                       expr +
-                       " end)\n"
-                       "  if ok then return v end\n"
-                       "  if v == arbc_NO_VALUE then return 'NO VALUE' end\n"
-                       "  error(v, 0)\n"
-                       "end\n";
+  std::string source =
+      lua_prelude(all) + "PortMonitor.update = function(m) return " + expr + " end\n";
   PortContainer port;
   port.set_time(12.5);
   LuaMonitorHarness h(source, "prelude", &port, "c");
   if (!h.load_error().empty()) return "load error: " + h.load_error();
   auto r = h.update("0");
+  if (r.reason == "no-value") return "NO VALUE";
   return r.ok ? r.value : "error: " + r.error;
 }
 
@@ -44,12 +38,12 @@ TEST(LuaPreludeTest, ListBuiltins) {
 }
 
 TEST(LuaPreludeTest, NoValueIsASentinelNotAScriptError) {
-  EXPECT_EQ(eval("min_by({}, function(o) return o end)"), "\"NO VALUE\"");
-  EXPECT_EQ(eval("max_by({}, function(o) return o end)"), "\"NO VALUE\"");
-  EXPECT_EQ(eval("min({})"), "\"NO VALUE\"");
-  EXPECT_EQ(eval("arbc_index({10, 20}, 2)"), "\"NO VALUE\"");
+  EXPECT_EQ(eval("min_by({}, function(o) return o end)"), "NO VALUE");
+  EXPECT_EQ(eval("max_by({}, function(o) return o end)"), "NO VALUE");
+  EXPECT_EQ(eval("min({})"), "NO VALUE");
+  EXPECT_EQ(eval("arbc_index({10, 20}, 2)"), "NO VALUE");
   EXPECT_EQ(eval("arbc_index({10, 20}, 0)"), "10");
-  EXPECT_EQ(eval("arbc_index({10, 20}, -1)"), "\"NO VALUE\"");
+  EXPECT_EQ(eval("arbc_index({10, 20}, -1)"), "NO VALUE");
 }
 
 TEST(LuaPreludeTest, NumbersAndVectors) {

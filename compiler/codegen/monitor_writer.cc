@@ -185,7 +185,8 @@ class MonitorWriter {
                f.loc.line);
       }
     }
-    if (pcall_needed) w.line("local reason = nil");
+    if (pcall_needed)
+      w.line("local failure = nil  -- a predicate without a value, raised at the end");
     for (size_t i = 0; i < plan_.derived.size(); ++i) {
       const lower::DerivedFeed& d = plan_.derived[i];
       quote(w, d.loc.line);
@@ -196,20 +197,18 @@ class MonitorWriter {
       std::string otherwise =
           d.lifetime ? "" : " else PortMonitor.unsetEvent(" + lua_string(d.event) + ")";
       if (may_lack_value[i]) {
+        // Without a value the event is left as it was; the other events are still updated,
+        // then the message is dropped as `no-value` (PortMonitor.novalue's error, re-raised).
         w.line("local ok, holds = pcall(arbc_holds_" + d.event + ", " + msg_ + ")", d.loc.line);
-        w.line("if not ok then", d.loc.line);
-        w.indent();
-        w.line("if holds ~= arbc_NO_VALUE then error(holds, 0) end");
-        w.line("reason = \"no-value\"  -- no value: the event is left as it was");
-        w.dedent();
+        w.line("if not ok then failure = failure or holds", d.loc.line);
         w.line("elseif holds then " + set + otherwise + " end", d.loc.line);
       } else {
         w.line("if arbc_holds_" + d.event + "(" + msg_ + ") then " + set + otherwise + " end",
                d.loc.line);
       }
     }
-    w.line("return false" + std::string(pcall_needed ? ", reason" : "") +
-           "  -- a feed never delivers");
+    if (pcall_needed) w.line("if failure ~= nil then error(failure, 0) end");
+    w.line("return false  -- a feed never delivers");
     w.dedent();
     w.line("end");
   }
@@ -314,21 +313,13 @@ class MonitorWriter {
           w.line("-- (emit has no effect in `every`: trig() delivers nothing)", line);
         }
         break;
-      case Kind::Throttle: {
-        if (mode != Mode::Message || !s.duration) break;
-        int id = ++throttles_;
-        std::string last = "arbc_last_delivery_" + std::to_string(id);
-        std::string passed = "arbc_throttle_passed_" + std::to_string(id);
-        declare_state("local " + last + " = -math.huge  -- throttle (spec line " +
-                          std::to_string(line) + "): counts deliveries",
-                      line);
-        declare_state("local " + passed + " = false");
-        w.line("if PortMonitor.now() - " + last + " < " + duration(*s.duration) +
-                   " then return false, \"throttled\" end",
+      case Kind::Throttle:
+        // The runtime enforces app.json's `throttle` after the constraint, counting only
+        // deliveries (docs/runtime.md); the monitor has nothing to do.
+        w.line("-- throttle: enforced by the runtime (app.json \"throttle\": " +
+                   lua_float(s.duration ? s.duration->seconds : 0) + " s), counting deliveries",
                line);
-        w.line(passed + " = true", line);
         break;
-      }
       case Kind::Every:
         if (mode == Mode::Message) every_ = &s;  // runs from trig(), written below
         break;
@@ -340,11 +331,9 @@ class MonitorWriter {
   void rule(LuaWriter& w) {
     const ast::Block* body = plan_.body;
     bool has_body = body && !body->empty();
-    bool body_may_lack_value = false;
     LuaWriter fn;
     if (has_body) {
-      fn.line("-- The rule's body: whether to accept the message (and why not), and what to");
-      fn.line("-- deliver (arbc_emitted).");
+      fn.line("-- The body: whether to accept the message, and what to deliver (arbc_emitted).");
       fn.line("local function arbc_body(" + msg_ + ")");
       fn.indent();
       block(*body, fn, Mode::Message);
@@ -352,10 +341,8 @@ class MonitorWriter {
       fn.dedent();
       fn.line("end");
       fn.blank();
-      body_may_lack_value = helper_closure(tr_.helpers_used()).count(std::string(kNoValueHelper));
     }
     LuaWriter trig;
-    bool trig_may_lack_value = false;
     if (every_) {
       last_quoted_ = 0;
       quote(trig, every_->loc.line);
@@ -365,7 +352,6 @@ class MonitorWriter {
       trig.dedent();
       trig.line("end");
       trig.blank();
-      trig_may_lack_value = helper_closure(tr_.helpers_used()).count(std::string(kNoValueHelper));
     }
     if (emits_) declare_state("local arbc_emitted = nil  -- the value update() delivers");
 
@@ -376,16 +362,9 @@ class MonitorWriter {
     w.line("PortMonitor.accept = function(" + msg_ + ")");
     w.indent();
     priority_guard(w);
-    for (int i = 1; i <= throttles_; ++i)
-      w.line("arbc_throttle_passed_" + std::to_string(i) + " = false");
     if (emits_) w.line("arbc_emitted = " + msg_ + "  -- without `emit`, the input unchanged");
     if (!has_body) {
       w.line("return true");
-    } else if (body_may_lack_value) {
-      w.line("local ok, accepted, reason = pcall(arbc_body, " + msg_ + ")");
-      w.line("if ok then return accepted, reason end");
-      w.line("if accepted == arbc_NO_VALUE then return false, \"no-value\" end");
-      w.line("error(accepted, 0)");
     } else {
       w.line("return arbc_body(" + msg_ + ")");
     }
@@ -395,9 +374,6 @@ class MonitorWriter {
 
     w.line("PortMonitor.update = function(" + msg_ + ")");
     w.indent();
-    for (int i = 1; i <= throttles_; ++i)
-      w.line("if arbc_throttle_passed_" + std::to_string(i) + " then arbc_last_delivery_" +
-             std::to_string(i) + " = PortMonitor.now() end");
     w.line(std::string("return ") + (emits_ ? "arbc_emitted" : msg_));
     w.dedent();
     w.line("end");
@@ -406,12 +382,7 @@ class MonitorWriter {
       w.blank();
       w.line("PortMonitor.trig = function()");
       w.indent();
-      if (trig_may_lack_value) {
-        w.line("local ok, err = pcall(arbc_every)");
-        w.line("if not ok and err ~= arbc_NO_VALUE then error(err, 0) end");
-      } else {
-        w.line("arbc_every()");
-      }
+      w.line("arbc_every()  -- a missing value here ends this trig only");
       w.dedent();
       w.line("end");
     }
@@ -468,7 +439,8 @@ class MonitorWriter {
     if (is_rule())
       w.line("PortMonitor.setConstraint(" + lua_string(conn_.constraint.to_string()) + ")",
              conn_.loc.line);
-    w.line("if arbc_script.create then return arbc_script.create(options) end");
+    w.line("local f = rawget(arbc_script, \"create\")");
+    w.line("if f then return f(options) end");
     w.line("return true");
     w.dedent();
     w.line("end");
@@ -476,27 +448,31 @@ class MonitorWriter {
     w.line("PortMonitor.accept = function(" + msg_ + ")");
     w.indent();
     priority_guard(w);
-    w.line("if arbc_script.accept then return arbc_script.accept(" + msg_ + ") end");
+    w.line("local f = rawget(arbc_script, \"accept\")");
+    w.line("if f then return f(" + msg_ + ") end");
     w.line("return true");
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.update = function(" + msg_ + ")");
     w.indent();
-    w.line("if arbc_script.update then return arbc_script.update(" + msg_ + ") end");
+    w.line("local f = rawget(arbc_script, \"update\")");
+    w.line("if f then return f(" + msg_ + ") end");
     w.line("return " + msg_);
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.trig = function()");
     w.indent();
-    w.line("if arbc_script.trig then return arbc_script.trig() end");
+    w.line("local f = rawget(arbc_script, \"trig\")");
+    w.line("if f then return f() end");
     w.dedent();
     w.line("end");
     w.blank();
     w.line("PortMonitor.destroy = function()");
     w.indent();
-    w.line("if arbc_script.destroy then return arbc_script.destroy() end");
+    w.line("local f = rawget(arbc_script, \"destroy\")");
+    w.line("if f then return f() end");
     w.dedent();
     w.line("end");
   }
@@ -510,7 +486,6 @@ class MonitorWriter {
   std::vector<std::pair<std::string, int>> state_;
   std::set<std::string> var_names_;
   const ast::Stmt* every_ = nullptr;
-  int throttles_ = 0;
   int last_quoted_ = 0;
   bool emits_ = false;
 };

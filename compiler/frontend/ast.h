@@ -39,10 +39,10 @@ using Block = std::vector<std::unique_ptr<Stmt>>;
 struct TypeExpr {
   enum class Kind { Bool, Int, Float, String, Vec3, List, Record, Named };
   Kind kind = Kind::Bool;
-  std::string name;                         // Kind::Named
-  std::unique_ptr<TypeExpr> element;        // Kind::List
+  std::string name;                                                       // Kind::Named
+  std::unique_ptr<TypeExpr> element;                                      // Kind::List
   std::vector<std::pair<std::string, std::unique_ptr<TypeExpr>>> fields;  // Kind::Record
-  std::vector<Loc> field_locs;              // Kind::Record, parallel to fields
+  std::vector<Loc> field_locs;  // Kind::Record, parallel to fields
   Loc loc;
   TypePtr resolved;  // sema: the structural type (named types expanded); null on error
 };
@@ -51,7 +51,7 @@ struct TypeExpr {
 struct PortRef {
   std::string module;
   std::string port;
-  Loc loc;                               // the whole `Module.port`
+  Loc loc;                                  // the whole `Module.port`
   const ModuleDecl* module_decl = nullptr;  // sema
   const PortDecl* port_decl = nullptr;      // sema
   std::string qualified() const { return module + "." + port; }
@@ -82,20 +82,20 @@ enum class NameKind {
 
 struct Expr {
   enum class Kind {
-    Number,    // number; is_int says whether it was written without a fraction or exponent
-    Duration,  // `500ms`: number holds seconds
-    String,    // text holds the decoded string
-    Bool,      // boolean
-    Name,      // text holds the identifier
-    Field,     // args[0].text
-    Index,     // args[0][args[1]]
-    Unary,     // op is "-" or "not"; args[0]
-    Binary,    // op is one of + - * / % < <= > >= == != and or; args[0], args[1]
-    Record,    // { text: args[i] }: field_names[i] = args[i]
-    List,      // [ args... ]
-    Lambda,    // text => args[0]  (only as an argument of min_by / max_by)
-    Call,      // text(args...), text names a builtin
-    Otherwise, // `otherwise`, only as a whole constraint
+    Number,     // number; is_int says whether it was written without a fraction or exponent
+    Duration,   // `500ms`: number holds seconds
+    String,     // text holds the decoded string
+    Bool,       // boolean
+    Name,       // text holds the identifier
+    Field,      // args[0].text
+    Index,      // args[0][args[1]]
+    Unary,      // op is "-" or "not"; args[0]
+    Binary,     // op is one of + - * / % < <= > >= == != and or; args[0], args[1]
+    Record,     // { text: args[i] }: field_names[i] = args[i]
+    List,       // [ args... ]
+    Lambda,     // text => args[0]  (only as an argument of min_by / max_by)
+    Call,       // text(args...), text names a builtin
+    Otherwise,  // `otherwise`, only as a whole constraint
   };
   Kind kind = Kind::Number;
   Loc loc;
@@ -109,8 +109,8 @@ struct Expr {
   std::vector<ExprPtr> args;
 
   // sema:
-  TypePtr type;            // value type; null for lambdas, events, otherwise, and on error.
-                           // An empty list literal `[]` has a List type with a null element.
+  TypePtr type;              // value type; null for lambdas, events, otherwise, and on error.
+                             // An empty list literal `[]` has a List type with a null element.
   bool is_duration = false;  // a float that came from a duration literal or duration constant
   NameKind name_kind = NameKind::Unresolved;  // Kind::Name
   const Stmt* local = nullptr;                // NameKind::Let / Var: the declaring statement
@@ -140,8 +140,8 @@ struct Stmt {
   Loc loc;
   std::string name;  // Let, Var, Assign (the variable), Set, Unset (the event)
   Loc name_loc;
-  std::string text;  // Script: the file name as written
-  ExprPtr expr;      // Let, Var, Assign, Accept, If (condition), Emit
+  std::string text;                  // Script: the file name as written
+  ExprPtr expr;                      // Let, Var, Assign, Accept, If (condition), Emit
   std::optional<Duration> duration;  // Set (for D), Throttle, Every
   Block body;                        // If (then), Every
   Block else_body;                   // If; empty when there is no else
@@ -220,9 +220,9 @@ struct StatusEventDecl {
 struct DerivedEventDecl {
   std::string name;
   PortRef source;
-  ExprPtr predicate;  // over the message, bound to the source port's name
+  ExprPtr predicate;                 // over the message, bound to the source port's name
   std::optional<Duration> lifetime;  // `for D`
-  Loc loc;  // the name
+  Loc loc;                           // the name
 };
 
 // `exclusive { a, b, c };`
@@ -249,9 +249,9 @@ struct Rule {
   Loc loc;  // the name
   // sema:
   const ArbitrateDecl* port = nullptr;
-  bool otherwise = false;   // the constraint is `otherwise`
-  Constraint constraint;    // the `when` as a tree (true when absent; unused if otherwise)
-  std::string message_name; // the name the message is bound to in the body: source.port
+  bool otherwise = false;    // the constraint is `otherwise`
+  Constraint constraint;     // the `when` as a tree (true when absent; unused if otherwise)
+  std::string message_name;  // the name the message is bound to in the body: source.port
 };
 
 // `arbitrate M.p [by priority] [complete] { rules }`
@@ -269,7 +269,7 @@ struct ConnectDecl {
   PortRef destination;
   bool has_body = false;
   Block body;
-  Loc loc;  // the `connect` keyword
+  Loc loc;                   // the `connect` keyword
   std::string message_name;  // sema: source.port
 };
 

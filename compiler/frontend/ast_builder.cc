@@ -66,11 +66,21 @@ class Builder {
       }
       char c = raw[++i];
       switch (c) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
+        case '"':
+          out += '"';
+          break;
+        case '\\':
+          out += '\\';
+          break;
+        case 'n':
+          out += '\n';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'r':
+          out += '\r';
+          break;
         default: {
           Loc where = loc(node);
           where.column += static_cast<int>(i) - 1;
@@ -108,8 +118,10 @@ class Builder {
     if (auto* named = as<ArbcParser::NamedTypeContext>(ctx)) {
       std::string name = tx(named->ID());
       static const std::pair<const char*, TypeExpr::Kind> kScalars[] = {
-          {"bool", TypeExpr::Kind::Bool},     {"int", TypeExpr::Kind::Int},
-          {"float", TypeExpr::Kind::Float},   {"string", TypeExpr::Kind::String},
+          {"bool", TypeExpr::Kind::Bool},
+          {"int", TypeExpr::Kind::Int},
+          {"float", TypeExpr::Kind::Float},
+          {"string", TypeExpr::Kind::String},
           {"vec3", TypeExpr::Kind::Vec3}};
       if (name == "list") {
         t.kind = TypeExpr::Kind::List;
@@ -127,15 +139,15 @@ class Builder {
       for (auto [scalar, kind] : kScalars)
         if (name == scalar) t.kind = kind;
       if (named->typeExpr())
-        error(loc(named->typeExpr()), "type '" + name + "' takes no type argument; only list<T> does",
-              "bad-type");
+        error(loc(named->typeExpr()),
+              "type '" + name + "' takes no type argument; only list<T> does", "bad-type");
       return t;
     }
     auto* record = as<ArbcParser::RecordTypeContext>(ctx);
     t.kind = TypeExpr::Kind::Record;
     for (ArbcParser::FieldTypeContext* field : record->fieldType()) {
-      t.fields.emplace_back(tx(field->ID()), std::make_unique<TypeExpr>(type_expr(
-                                                        field->typeExpr(), depth + 1)));
+      t.fields.emplace_back(tx(field->ID()),
+                            std::make_unique<TypeExpr>(type_expr(field->typeExpr(), depth + 1)));
       t.field_locs.push_back(loc(field->ID()));
     }
     return t;
@@ -172,8 +184,7 @@ class Builder {
   ExprPtr expr(ArbcParser::ExprContext* ctx, int depth) {
     Loc where = loc(ctx);
     if (too_deep(depth, where)) return placeholder(where);
-    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx))
-      return primary(c->primary(), depth);
+    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx)) return primary(c->primary(), depth);
     if (auto* c = as<ArbcParser::FieldExprContext>(ctx)) {
       auto e = make(Expr::Kind::Field, where);
       e->text = tx(c->ID());
@@ -246,14 +257,12 @@ class Builder {
       e->text = decode_string(c->STRING());
       return e;
     }
-    if (as<ArbcParser::TrueLitContext>(ctx) ||
-        as<ArbcParser::FalseLitContext>(ctx)) {
+    if (as<ArbcParser::TrueLitContext>(ctx) || as<ArbcParser::FalseLitContext>(ctx)) {
       auto e = make(Expr::Kind::Bool, where);
       e->boolean = as<ArbcParser::TrueLitContext>(ctx) != nullptr;
       return e;
     }
-    if (as<ArbcParser::OtherwiseLitContext>(ctx))
-      return make(Expr::Kind::Otherwise, where);
+    if (as<ArbcParser::OtherwiseLitContext>(ctx)) return make(Expr::Kind::Otherwise, where);
     if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
       auto e = make(Expr::Kind::Call, where);
       e->text = tx(c->ID());
@@ -404,8 +413,10 @@ class Builder {
     for (size_t i = conditions.size(); i-- > 0;) {
       auto s = make_stmt(Stmt::Kind::If, c);
       s->loc = loc(conditions[i]->getStart());
-      if (i > 0) s->loc = loc(conditions[i]);  // an else-if link: point at its condition
-      else s->loc = loc(c->getStart());
+      if (i > 0)
+        s->loc = loc(conditions[i]);  // an else-if link: point at its condition
+      else
+        s->loc = loc(c->getStart());
       int link_depth = depth + static_cast<int>(i);
       s->expr = expr(conditions[i], link_depth + 1);
       s->body = block(blocks[i], link_depth + 1);
@@ -438,8 +449,9 @@ class Builder {
       if (c->STRING()) app.doc = decode_string(c->STRING());
       app.loc = loc(c->ID());
       if (spec.app) {
-        error(app.loc, "the app is already declared as '" + spec.app->name + "' at line " +
-                           std::to_string(spec.app->loc.line) + ": a spec describes one app",
+        error(app.loc,
+              "the app is already declared as '" + spec.app->name + "' at line " +
+                  std::to_string(spec.app->loc.line) + ": a spec describes one app",
               "duplicate");
         return;
       }
@@ -465,8 +477,7 @@ class Builder {
         PortDecl port;
         port.name = tx(p->ID());
         port.loc = loc(p->ID());
-        port.direction =
-            tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
+        port.direction = tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
         port.type = type_expr(p->typeExpr());
         m.ports.push_back(std::move(port));
       }

@@ -73,9 +73,9 @@ CheckResult check_file(const std::string& path) {
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<size_t>(in.gcount()));
     if (text.size() > kMaxSpecBytes) {
-      result.diagnostics.push_back(io_error(
-          path, "the file is larger than " + std::to_string(kMaxSpecBytes >> 20) +
-                    " MiB; a spec this large is surely not hand-written text"));
+      result.diagnostics.push_back(
+          io_error(path, "the file is larger than " + std::to_string(kMaxSpecBytes >> 20) +
+                             " MiB; a spec this large is surely not hand-written text"));
       return result;
     }
   }

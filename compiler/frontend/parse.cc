@@ -18,9 +18,9 @@ using arbc_grammar::ArbcParser;
 
 namespace {
 
-const std::set<std::string> kDeclStarts = {"app",       "type",      "const",   "module",
-                                           "event",     "events",    "exclusive", "invariant",
-                                           "arbitrate", "connect",   "assert"};
+const std::set<std::string> kDeclStarts = {"app",       "type",    "const",     "module",
+                                           "event",     "events",  "exclusive", "invariant",
+                                           "arbitrate", "connect", "assert"};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket
 // depth 0 starts a new one. Text before the first keyword is a range of its own.
@@ -106,11 +106,11 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   if (auto bad = find_invalid_utf8(text)) {
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad->offset]));
-    result.diagnostics.push_back(file_error(
-        file, bad->line, bad->column,
-        "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
-            std::to_string(bad->offset) + "): save it as UTF-8 text",
-        "invalid-utf8"));
+    result.diagnostics.push_back(
+        file_error(file, bad->line, bad->column,
+                   "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
+                       std::to_string(bad->offset) + "): save it as UTF-8 text",
+                   "invalid-utf8"));
     return result;
   }
 
@@ -126,9 +126,9 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   check_lexical(tokens, file, result.diagnostics);
   if (!result.diagnostics.empty()) return result;
   if (tokens.size() == 1) {  // only EOF
-    result.diagnostics.push_back(file_error(
-        file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
-        "empty-spec"));
+    result.diagnostics.push_back(
+        file_error(file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
+                   "empty-spec"));
     return result;
   }
   if (!check_nesting(tokens, lexer.getVocabulary(), file, result.diagnostics)) return result;

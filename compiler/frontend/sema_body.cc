@@ -12,11 +12,16 @@ namespace {
 
 const char* local_kind(NameKind kind) {
   switch (kind) {
-    case NameKind::Message: return "the incoming message";
-    case NameKind::Let: return "a `let` value";
-    case NameKind::Param: return "a lambda parameter";
-    case NameKind::Const: return "a constant";
-    default: return "not a variable";
+    case NameKind::Message:
+      return "the incoming message";
+    case NameKind::Let:
+      return "a `let` value";
+    case NameKind::Param:
+      return "a lambda parameter";
+    case NameKind::Const:
+      return "a constant";
+    default:
+      return "not a variable";
   }
 }
 
@@ -73,8 +78,9 @@ void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
                 "statement-context");
         }
         if (const Binding* existing = scope.find(s.name)) {
-          error(s.name_loc, "'" + s.name + "' is already defined here as " +
-                                local_kind(existing->kind) + "; choose another name",
+          error(s.name_loc,
+                "'" + s.name + "' is already defined here as " + local_kind(existing->kind) +
+                    "; choose another name",
                 "duplicate");
         } else if (consts_.count(s.name)) {
           error(s.name_loc, "'" + s.name + "' is already a constant; choose another name",
@@ -93,8 +99,8 @@ void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
         const Binding* b = scope.find(s.name);
         if (!b) {
           if (consts_.count(s.name)) {
-            error(s.name_loc, "'" + s.name + "' is a constant; only `var` variables can be assigned",
-                  "assign");
+            error(s.name_loc,
+                  "'" + s.name + "' is a constant; only `var` variables can be assigned", "assign");
           } else {
             unknown(s.name_loc, "unknown variable '" + s.name + "'", "unknown-name", s.name,
                     scope.names());
@@ -102,15 +108,16 @@ void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
           break;
         }
         if (b->kind != NameKind::Var) {
-          error(s.name_loc, "'" + s.name + "' is " + local_kind(b->kind) +
-                                "; only `var` variables can be assigned",
+          error(s.name_loc,
+                "'" + s.name + "' is " + local_kind(b->kind) +
+                    "; only `var` variables can be assigned",
                 "assign");
           break;
         }
         s.var_decl = b->local;
         if (b->type && s.expr->type && !assignable(*s.expr->type, *b->type)) {
-          error(s.expr->loc, "'" + s.name + "' holds " + describe(b->type) + ", not " +
-                                 describe(s.expr->type),
+          error(s.expr->loc,
+                "'" + s.name + "' holds " + describe(b->type) + ", not " + describe(s.expr->type),
                 "type-mismatch");
         }
         break;
@@ -169,7 +176,8 @@ void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
       case Stmt::Kind::Throttle:
         check_duration(*s.duration, "the `throttle` period");
         if (!ctx.top_level || ctx.in_every) {
-          error(s.loc, "`throttle` limits the whole connection: put it at the top level of the body",
+          error(s.loc,
+                "`throttle` limits the whole connection: put it at the top level of the body",
                 "statement-context");
         } else if (ctx.saw_throttle) {
           error(s.loc, "a body has at most one `throttle`", "statement-context");

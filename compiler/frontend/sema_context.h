@@ -36,9 +36,9 @@ class Scope {
 
 // Where a monitor body runs, for checking its statements.
 struct BodyContext {
-  std::string owner;          // "rule 'take'" or "the connect into HeadControl.gaze"
-  TypePtr destination_type;   // null if the destination did not resolve
-  std::string destination;    // "Module.port"
+  std::string owner;         // "rule 'take'" or "the connect into HeadControl.gaze"
+  TypePtr destination_type;  // null if the destination did not resolve
+  std::string destination;   // "Module.port"
   bool in_every = false;
   bool top_level = true;
   bool saw_throttle = false;
@@ -80,7 +80,8 @@ class Sema {
   std::map<std::string, size_t> consts_;
   std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
   std::map<const Type*, std::string> type_names_;
-  std::map<std::string, size_t> events_;  // name -> index in spec_.event_symbols
+  std::map<std::string, size_t> events_;                   // name -> index in spec_.event_symbols
+  std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each
   std::vector<std::string> event_names_;
 
  private:

@@ -46,10 +46,10 @@ namespace {
 std::string where_defined(const Loc& loc) { return "line " + std::to_string(loc.line); }
 
 const TypePtr& scalar_type(TypeExpr::Kind kind) {
-  static const TypePtr kTypes[] = {
-      Type::scalar(Type::Kind::Bool), Type::scalar(Type::Kind::Int),
-      Type::scalar(Type::Kind::Float), Type::scalar(Type::Kind::String),
-      Type::scalar(Type::Kind::Vec3)};
+  static const TypePtr kTypes[] = {Type::scalar(Type::Kind::Bool), Type::scalar(Type::Kind::Int),
+                                   Type::scalar(Type::Kind::Float),
+                                   Type::scalar(Type::Kind::String),
+                                   Type::scalar(Type::Kind::Vec3)};
   return kTypes[static_cast<int>(kind)];
 }
 
@@ -67,7 +67,9 @@ class TypeResolver {
       case TypeExpr::Kind::Int:
       case TypeExpr::Kind::Float:
       case TypeExpr::Kind::String:
-      case TypeExpr::Kind::Vec3: t.resolved = scalar_type(t.kind); break;
+      case TypeExpr::Kind::Vec3:
+        t.resolved = scalar_type(t.kind);
+        break;
       case TypeExpr::Kind::List: {
         TypePtr element = resolve(*t.element);
         if (element) t.resolved = Type::list(element);
@@ -88,7 +90,9 @@ class TypeResolver {
         if (ok) t.resolved = Type::record(std::move(fields));
         break;
       }
-      case TypeExpr::Kind::Named: t.resolved = resolve_named(t); break;
+      case TypeExpr::Kind::Named:
+        t.resolved = resolve_named(t);
+        break;
     }
     return t.resolved;
   }
@@ -106,7 +110,8 @@ class TypeResolver {
     done_.insert(&decl);
     // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
     // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
-    bool creates = decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
+    bool creates =
+        decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
     bool registered = sema_.types_.count(decl.name) && sema_.types_.at(decl.name) == &decl;
     if (t && creates && registered && !sema_.type_names_.count(t.get()))
       sema_.type_names_[t.get()] = decl.name;
@@ -140,7 +145,8 @@ namespace {
 // Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
 // empty (no check). Returns false if it did not resolve.
 bool resolve_port(Sema& sema, PortRef& ref, const char* role, const std::string& use) {
-  ref.module_decl = sema.spec_.find_module(ref.module);
+  auto found = sema.modules_.find(ref.module);
+  ref.module_decl = found == sema.modules_.end() ? nullptr : found->second;
   if (!ref.module_decl) {
     std::vector<std::string> names;
     for (const ModuleDecl& m : sema.spec_.modules) names.push_back(m.name);
@@ -194,8 +200,8 @@ void Sema::run() {
     if (types_.count(t.name) || t.name == "bool" || t.name == "int" || t.name == "float" ||
         t.name == "string" || t.name == "vec3" || t.name == "list") {
       if (types_.count(t.name)) {
-        error(t.loc, "type '" + t.name + "' is already defined at " +
-                         where_defined(types_[t.name]->loc),
+        error(t.loc,
+              "type '" + t.name + "' is already defined at " + where_defined(types_[t.name]->loc),
               "duplicate");
       } else {
         error(t.loc, "'" + t.name + "' is a built-in type and cannot be redefined", "duplicate");
@@ -212,8 +218,9 @@ void Sema::run() {
   for (size_t i = 0; i < spec_.consts.size(); ++i) {
     ConstDecl& c = spec_.consts[i];
     if (consts_.count(c.name)) {
-      error(c.loc, "constant '" + c.name + "' is already defined at " +
-                       where_defined(spec_.consts[consts_[c.name]].loc),
+      error(c.loc,
+            "constant '" + c.name + "' is already defined at " +
+                where_defined(spec_.consts[consts_[c.name]].loc),
             "duplicate");
       const_state_[i] = 2;
       continue;
@@ -223,11 +230,11 @@ void Sema::run() {
   for (size_t i = 0; i < spec_.consts.size(); ++i) check_const(i);
 
   // Modules and ports.
-  std::map<std::string, const ModuleDecl*> modules;
+  std::map<std::string, const ModuleDecl*>& modules = modules_;
   for (ModuleDecl& m : spec_.modules) {
     if (modules.count(m.name)) {
-      error(m.loc, "module '" + m.name + "' is already defined at " +
-                       where_defined(modules[m.name]->loc),
+      error(m.loc,
+            "module '" + m.name + "' is already defined at " + where_defined(modules[m.name]->loc),
             "duplicate");
     } else {
       modules[m.name] = &m;
@@ -235,8 +242,9 @@ void Sema::run() {
     std::map<std::string, const PortDecl*> ports;
     for (PortDecl& p : m.ports) {
       if (ports.count(p.name)) {
-        error(p.loc, "module '" + m.name + "' already has a port '" + p.name + "' (" +
-                         where_defined(ports[p.name]->loc) + ")",
+        error(p.loc,
+              "module '" + m.name + "' already has a port '" + p.name + "' (" +
+                  where_defined(ports[p.name]->loc) + ")",
               "duplicate");
       }
       ports[p.name] = &p;
@@ -248,8 +256,9 @@ void Sema::run() {
   auto add_event = [&](EventSymbol symbol) {
     auto it = events_.find(symbol.name);
     if (it != events_.end()) {
-      error(symbol.loc, "event '" + symbol.name + "' is already declared at " +
-                            where_defined(spec_.event_symbols[it->second].loc),
+      error(symbol.loc,
+            "event '" + symbol.name + "' is already declared at " +
+                where_defined(spec_.event_symbols[it->second].loc),
             "duplicate");
       return;
     }
@@ -271,8 +280,8 @@ void Sema::run() {
   for (StatusEventDecl& e : spec_.status_events) {
     if (resolve_port(*this, e.source, "source", "`events from`")) {
       TypePtr t = port_type(e.source);
-      if (t && !(t->kind == Type::Kind::List && t->element &&
-                 t->element->kind == Type::Kind::String)) {
+      if (t &&
+          !(t->kind == Type::Kind::List && t->element && t->element->kind == Type::Kind::String)) {
         error(e.source.loc,
               "`events from` reads status flags, so " + e.source.qualified() +
                   " must carry list<string>, not " + describe(t),
@@ -283,8 +292,9 @@ void Sema::run() {
     std::map<std::string, Loc> flags;
     for (const StatusEventDecl::Entry& entry : e.entries) {
       if (flags.count(entry.flag)) {
-        error(entry.loc, "flag \"" + entry.flag + "\" is already mapped to an event at " +
-                             where_defined(flags[entry.flag]),
+        error(entry.loc,
+              "flag \"" + entry.flag + "\" is already mapped to an event at " +
+                  where_defined(flags[entry.flag]),
               "duplicate");
       }
       flags[entry.flag] = entry.loc;
@@ -343,9 +353,9 @@ void Sema::run() {
     bool resolved = resolve_port(*this, a.port, "destination", "`arbitrate`");
     std::string port = a.port.qualified();
     if (arbitrated.count(port)) {
-      error(a.port.loc, port + " is already arbitrated at " +
-                            where_defined(arbitrated[port]->loc) +
-                            ": put all its rules in one `arbitrate` block",
+      error(a.port.loc,
+            port + " is already arbitrated at " + where_defined(arbitrated[port]->loc) +
+                ": put all its rules in one `arbitrate` block",
             "duplicate");
     } else {
       arbitrated[port] = &a;
@@ -358,8 +368,9 @@ void Sema::run() {
       r.port = &a;
       r.message_name = r.source.port;
       if (names.count(r.name)) {
-        error(r.loc, "port " + port + " already has a rule '" + r.name + "' (" +
-                         where_defined(names[r.name]->loc) + ")",
+        error(r.loc,
+              "port " + port + " already has a rule '" + r.name + "' (" +
+                  where_defined(names[r.name]->loc) + ")",
               "duplicate");
       }
       names[r.name] = &r;
@@ -369,9 +380,9 @@ void Sema::run() {
           r.otherwise = true;
           r.constraint = Constraint::constant(false);
           if (otherwise_rule) {
-            error(r.when->loc, "port " + port + " already has an `otherwise` rule ('" +
-                                   otherwise_rule->name + "', " +
-                                   where_defined(otherwise_rule->loc) + "); at most one per port",
+            error(r.when->loc,
+                  "port " + port + " already has an `otherwise` rule ('" + otherwise_rule->name +
+                      "', " + where_defined(otherwise_rule->loc) + "); at most one per port",
                   "otherwise");
           }
           otherwise_rule = &r;
@@ -476,8 +487,9 @@ void Sema::run() {
       auto it = arbitrated.find(a.port.qualified());
       if (it == arbitrated.end()) {
         error(a.port.loc,
-              a.port.qualified() + " has no `arbitrate` block: assertions are about the rules "
-                                   "of an arbitrated port",
+              a.port.qualified() +
+                  " has no `arbitrate` block: assertions are about the rules "
+                  "of an arbitrated port",
               "not-arbitrated");
       } else {
         std::vector<std::string> names;
@@ -486,8 +498,7 @@ void Sema::run() {
           if (r.name == a.rule) a.rule_decl = &r;
         }
         if (!a.rule_decl) {
-          unknown(a.rule_loc,
-                  "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
+          unknown(a.rule_loc, "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
                   "unknown-rule", a.rule, names);
         }
       }

@@ -46,16 +46,26 @@ TypePtr numeric_join(const TypePtr& a, const TypePtr& b) {
 
 const char* kind_word(Expr::Kind kind) {
   switch (kind) {
-    case Expr::Kind::Number: return "a number";
-    case Expr::Kind::Duration: return "a duration";
-    case Expr::Kind::String: return "a string";
-    case Expr::Kind::Field: return "a field access";
-    case Expr::Kind::Index: return "an index";
-    case Expr::Kind::Record: return "a record";
-    case Expr::Kind::List: return "a list";
-    case Expr::Kind::Lambda: return "a lambda";
-    case Expr::Kind::Call: return "a function call";
-    default: return "an arithmetic or comparison operator";
+    case Expr::Kind::Number:
+      return "a number";
+    case Expr::Kind::Duration:
+      return "a duration";
+    case Expr::Kind::String:
+      return "a string";
+    case Expr::Kind::Field:
+      return "a field access";
+    case Expr::Kind::Index:
+      return "an index";
+    case Expr::Kind::Record:
+      return "a record";
+    case Expr::Kind::List:
+      return "a list";
+    case Expr::Kind::Lambda:
+      return "a lambda";
+    case Expr::Kind::Call:
+      return "a function call";
+    default:
+      return "an arithmetic or comparison operator";
   }
 }
 
@@ -65,13 +75,19 @@ const char* kind_word(Expr::Kind kind) {
 
 void Sema::check_expr(Expr& e, Scope& scope) {
   switch (e.kind) {
-    case Expr::Kind::Number: e.type = e.is_int ? kInt : kFloat; return;
+    case Expr::Kind::Number:
+      e.type = e.is_int ? kInt : kFloat;
+      return;
     case Expr::Kind::Duration:
       e.type = kFloat;
       e.is_duration = true;
       return;
-    case Expr::Kind::String: e.type = kString; return;
-    case Expr::Kind::Bool: e.type = kBool; return;
+    case Expr::Kind::String:
+      e.type = kString;
+      return;
+    case Expr::Kind::Bool:
+      e.type = kBool;
+      return;
     case Expr::Kind::Otherwise:
       error(e.loc, "'otherwise' is a whole rule constraint (`when otherwise`), not a value",
             "otherwise");
@@ -131,8 +147,8 @@ void Sema::check_expr(Expr& e, Scope& scope) {
         return;
       }
       if (base.type->kind != Type::Kind::Record) {
-        error(e.loc, "'." + e.text + "' needs a record or a vec3, but this is " +
-                         describe(base.type),
+        error(e.loc,
+              "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
               "type-mismatch");
         return;
       }
@@ -193,8 +209,9 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       check_expr(b, scope);
       if (!a.type || !b.type) return;
       auto mismatch = [&] {
-        error(e.loc, "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " +
-                         describe(b.type),
+        error(e.loc,
+              "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " +
+                  describe(b.type),
               "type-mismatch");
       };
       const std::string& op = e.op;
@@ -273,11 +290,12 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       return;
     }
     case Expr::Kind::Lambda:
-      error(e.loc,
-            "a lambda ('x => ...') can only be the second argument of min_by or max_by",
+      error(e.loc, "a lambda ('x => ...') can only be the second argument of min_by or max_by",
             "lambda");
       return;
-    case Expr::Kind::Call: check_call(e, scope); return;
+    case Expr::Kind::Call:
+      check_call(e, scope);
+      return;
   }
 }
 
@@ -306,8 +324,8 @@ void Sema::check_call(Expr& e, Scope& scope) {
           "'" + e.text + "' takes " +
               (info->max_args < 0 ? "at least " + std::to_string(info->min_args)
                                   : std::to_string(info->min_args)) +
-              (info->min_args == 1 && info->max_args == 1 ? " argument" : " arguments") +
-              ", not " + std::to_string(n) + ": " + info->signature,
+              (info->min_args == 1 && info->max_args == 1 ? " argument" : " arguments") + ", not " +
+              std::to_string(n) + ": " + info->signature,
           "arity");
     return;
   }
@@ -323,8 +341,7 @@ void Sema::check_call(Expr& e, Scope& scope) {
     }
     if (!list.type) return;
     if (list.type->kind != Type::Kind::List || !list.type->element) {
-      error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type),
-            "type-mismatch");
+      error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
       return;
     }
     scope.push();
@@ -390,13 +407,16 @@ void Sema::check_call(Expr& e, Scope& scope) {
       e.is_duration = durations;
       return;
     }
-    case Builtin::Now: e.type = kFloat; return;
+    case Builtin::Now:
+      e.type = kFloat;
+      return;
     case Builtin::Vec3:
       for (size_t i = 0; i < 3; ++i)
         if (!expect(i, is_numeric(e.args[i]->type), "a number")) return;
       e.type = kVec3;
       return;
-    default: return;
+    default:
+      return;
   }
 }
 
@@ -422,8 +442,9 @@ void Sema::check_duration(Duration& d, const std::string& what) {
   check_expr(e, empty);
   if (!e.type) return;
   if (e.kind == Expr::Kind::Name && !e.is_duration) {
-    error(e.loc, "constant '" + e.text + "' is " + describe(e.type) + ", but " + what +
-                     " must be a duration such as 500ms or 1s",
+    error(e.loc,
+          "constant '" + e.text + "' is " + describe(e.type) + ", but " + what +
+              " must be a duration such as 500ms or 1s",
           "duration");
     return;
   }
@@ -435,9 +456,15 @@ void Sema::check_duration(Duration& d, const std::string& what) {
 bool Sema::fold_const(const Expr& e, ConstDecl& into) {
   switch (e.kind) {
     case Expr::Kind::Number:
-    case Expr::Kind::Duration: into.number = e.number; return true;
-    case Expr::Kind::String: into.text = e.text; return true;
-    case Expr::Kind::Bool: into.boolean = e.boolean; return true;
+    case Expr::Kind::Duration:
+      into.number = e.number;
+      return true;
+    case Expr::Kind::String:
+      into.text = e.text;
+      return true;
+    case Expr::Kind::Bool:
+      into.boolean = e.boolean;
+      return true;
     case Expr::Kind::Name:
       if (!e.constant) return false;
       into.number = e.constant->number;
@@ -447,8 +474,10 @@ bool Sema::fold_const(const Expr& e, ConstDecl& into) {
     case Expr::Kind::Unary: {
       ConstDecl x;
       if (!fold_const(*e.args[0], x)) return false;
-      if (e.op == "-") into.number = -x.number;
-      else into.boolean = !x.boolean;
+      if (e.op == "-")
+        into.number = -x.number;
+      else
+        into.boolean = !x.boolean;
       return true;
     }
     case Expr::Kind::Binary: {
@@ -457,23 +486,38 @@ bool Sema::fold_const(const Expr& e, ConstDecl& into) {
       const std::string& op = e.op;
       bool strings = is_kind(e.args[0]->type, Type::Kind::String);
       if (op == "+") {
-        if (strings) into.text = a.text + b.text;
-        else into.number = a.number + b.number;
-      } else if (op == "-") into.number = a.number - b.number;
-      else if (op == "*") into.number = a.number * b.number;
-      else if (op == "/") into.number = a.number / b.number;
-      else if (op == "%") into.number = std::fmod(a.number, b.number);
-      else if (op == "and") into.boolean = a.boolean && b.boolean;
-      else if (op == "or") into.boolean = a.boolean || b.boolean;
-      else if (op == "<") into.boolean = strings ? a.text < b.text : a.number < b.number;
-      else if (op == "<=") into.boolean = strings ? a.text <= b.text : a.number <= b.number;
-      else if (op == ">") into.boolean = strings ? a.text > b.text : a.number > b.number;
-      else if (op == ">=") into.boolean = strings ? a.text >= b.text : a.number >= b.number;
-      else if (op == "==") into.boolean = a.number == b.number && a.text == b.text && a.boolean == b.boolean;
-      else if (op == "!=") into.boolean = !(a.number == b.number && a.text == b.text && a.boolean == b.boolean);
+        if (strings)
+          into.text = a.text + b.text;
+        else
+          into.number = a.number + b.number;
+      } else if (op == "-")
+        into.number = a.number - b.number;
+      else if (op == "*")
+        into.number = a.number * b.number;
+      else if (op == "/")
+        into.number = a.number / b.number;
+      else if (op == "%")
+        into.number = std::fmod(a.number, b.number);
+      else if (op == "and")
+        into.boolean = a.boolean && b.boolean;
+      else if (op == "or")
+        into.boolean = a.boolean || b.boolean;
+      else if (op == "<")
+        into.boolean = strings ? a.text < b.text : a.number < b.number;
+      else if (op == "<=")
+        into.boolean = strings ? a.text <= b.text : a.number <= b.number;
+      else if (op == ">")
+        into.boolean = strings ? a.text > b.text : a.number > b.number;
+      else if (op == ">=")
+        into.boolean = strings ? a.text >= b.text : a.number >= b.number;
+      else if (op == "==")
+        into.boolean = a.number == b.number && a.text == b.text && a.boolean == b.boolean;
+      else if (op == "!=")
+        into.boolean = !(a.number == b.number && a.text == b.text && a.boolean == b.boolean);
       return true;
     }
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -503,7 +547,9 @@ void Sema::check_const(size_t index) {
 
 Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherwise_ok) {
   switch (e.kind) {
-    case Expr::Kind::Bool: e.type = kBool; return Constraint::constant(e.boolean);
+    case Expr::Kind::Bool:
+      e.type = kBool;
+      return Constraint::constant(e.boolean);
     case Expr::Kind::Otherwise:
       if (!otherwise_ok)
         error(e.loc,
@@ -543,7 +589,8 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
                              : Constraint::disjunction(std::move(parts));
       }
       break;
-    default: break;
+    default:
+      break;
   }
   error(e.loc,
         std::string(kind_word(e.kind)) + " cannot appear in " + where +

@@ -19,24 +19,42 @@ namespace {
 // (expressions, port references...) defer to the enclosing rule.
 const char* describe_rule(size_t rule) {
   switch (rule) {
-    case ArbcParser::RuleAppDecl: return "the app declaration";
-    case ArbcParser::RuleTypeDecl: return "the type declaration";
-    case ArbcParser::RuleConstDecl: return "the constant declaration";
-    case ArbcParser::RuleModuleDecl: return "the module declaration";
-    case ArbcParser::RulePortDecl: return "the port declaration";
-    case ArbcParser::RuleEventDecl: return "the event declaration";
-    case ArbcParser::RuleDerivedEventDecl: return "the derived event declaration";
-    case ArbcParser::RuleStatusEventsDecl: return "the `events from` declaration";
-    case ArbcParser::RuleExclusiveDecl: return "the `exclusive` declaration";
-    case ArbcParser::RuleInvariantDecl: return "the invariant";
-    case ArbcParser::RuleArbitrateDecl: return "the `arbitrate` block";
-    case ArbcParser::RuleRuleDecl: return "the rule";
-    case ArbcParser::RuleConnectDecl: return "the `connect` declaration";
-    case ArbcParser::RuleAssertDecl: return "the assertion";
-    case ArbcParser::RuleStmt: return "the statement";
-    case ArbcParser::RuleFieldType: return "the record field";
-    case ArbcParser::RuleFieldInit: return "the record field";
-    default: return nullptr;
+    case ArbcParser::RuleAppDecl:
+      return "the app declaration";
+    case ArbcParser::RuleTypeDecl:
+      return "the type declaration";
+    case ArbcParser::RuleConstDecl:
+      return "the constant declaration";
+    case ArbcParser::RuleModuleDecl:
+      return "the module declaration";
+    case ArbcParser::RulePortDecl:
+      return "the port declaration";
+    case ArbcParser::RuleEventDecl:
+      return "the event declaration";
+    case ArbcParser::RuleDerivedEventDecl:
+      return "the derived event declaration";
+    case ArbcParser::RuleStatusEventsDecl:
+      return "the `events from` declaration";
+    case ArbcParser::RuleExclusiveDecl:
+      return "the `exclusive` declaration";
+    case ArbcParser::RuleInvariantDecl:
+      return "the invariant";
+    case ArbcParser::RuleArbitrateDecl:
+      return "the `arbitrate` block";
+    case ArbcParser::RuleRuleDecl:
+      return "the rule";
+    case ArbcParser::RuleConnectDecl:
+      return "the `connect` declaration";
+    case ArbcParser::RuleAssertDecl:
+      return "the assertion";
+    case ArbcParser::RuleStmt:
+      return "the statement";
+    case ArbcParser::RuleFieldType:
+      return "the record field";
+    case ArbcParser::RuleFieldInit:
+      return "the record field";
+    default:
+      return nullptr;
   }
 }
 
@@ -53,21 +71,27 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
   return false;
 }
 
-const std::set<std::string> kDeclKeywords = {"app",       "type",      "const",     "module",
-                                             "event",     "events",    "exclusive", "invariant",
-                                             "arbitrate", "connect",   "assert"};
-const std::set<std::string> kOperators = {".", "[", "-",  "*",  "/",  "%",   "+",  "<",
+const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
+                                             "event",     "events",  "exclusive", "invariant",
+                                             "arbitrate", "connect", "assert"};
+const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
 // A token type as the user would name it.
 std::string token_name(const antlr4::dfa::Vocabulary& vocabulary, size_t type) {
   switch (type) {
-    case antlr4::Token::EOF: return "the end of the file";
-    case ArbcParser::ID: return "a name";
-    case ArbcParser::NUMBER: return "a number";
-    case ArbcParser::DURATION: return "a duration such as 500ms";
-    case ArbcParser::STRING: return "a string in double quotes";
-    default: return vocabulary.getLiteralName(type);  // already quoted: 'when'
+    case antlr4::Token::EOF:
+      return "the end of the file";
+    case ArbcParser::ID:
+      return "a name";
+    case ArbcParser::NUMBER:
+      return "a number";
+    case ArbcParser::DURATION:
+      return "a duration such as 500ms";
+    case ArbcParser::STRING:
+      return "a string in double quotes";
+    default:
+      return vocabulary.getLiteralName(type);  // already quoted: 'when'
   }
 }
 
@@ -119,7 +143,8 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       first_->loc = token_location(next_declaration_, file_);
       const std::string eof = "the end of the file";
       size_t at = first_->message.find(eof);
-      if (at != std::string::npos) first_->message.replace(at, eof.size(), found_text(next_declaration_));
+      if (at != std::string::npos)
+        first_->message.replace(at, eof.size(), found_text(next_declaration_));
     }
   }
 
@@ -161,19 +186,26 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     bool decl_start = false;
     for (const std::string& k : kDeclKeywords) decl_start |= has(k.c_str());
     if (decl_start || (kinds.size() == 1 && kinds.count(antlr4::Token::EOF))) {
-      d.message = "expected a declaration (app, type, const, module, event, events, exclusive, "
-                  "invariant, arbitrate, connect or assert), found " + found;
-      suggest_keyword(offending, std::vector<std::string>(kDeclKeywords.begin(),
-                                                          kDeclKeywords.end()), d);
+      d.message =
+          "expected a declaration (app, type, const, module, event, events, exclusive, "
+          "invariant, arbitrate, connect or assert), found " +
+          found;
+      suggest_keyword(offending,
+                      std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);
     } else if (has("in") && has("out")) {
-      d.message = "expected a port declaration ('in NAME: TYPE;' or 'out NAME: TYPE;') or '}', "
-                  "found " + found;
+      d.message =
+          "expected a port declaration ('in NAME: TYPE;' or 'out NAME: TYPE;') or '}', "
+          "found " +
+          found;
       suggest_keyword(offending, {"in", "out"}, d);
     } else if (has("let") && has("emit")) {
-      d.message = "expected a statement (let, var, accept, set, unset, if, emit, throttle, "
-                  "every, script) or '}', found " + found;
-      suggest_keyword(offending, {"let", "var", "accept", "set", "unset", "if", "emit",
-                                  "throttle", "every", "script"}, d);
+      d.message =
+          "expected a statement (let, var, accept, set, unset, if, emit, throttle, "
+          "every, script) or '}', found " +
+          found;
+      suggest_keyword(
+          offending,
+          {"let", "var", "accept", "set", "unset", "if", "emit", "throttle", "every", "script"}, d);
     } else if (kinds.count(ArbcParser::ID) && has("{") &&
                (in_rule(ctx, ArbcParser::RuleTypeExpr) ||
                 ctx->getRuleIndex() == ArbcParser::RuleTypeDecl ||
@@ -188,9 +220,8 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
                kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
     } else if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
-               (wanted.size() == 1 ||
-                (previous && (previous->getLine() < offending->getLine() ||
-                              offending->getType() == antlr4::Token::EOF)))) {
+               (wanted.size() == 1 || (previous && (previous->getLine() < offending->getLine() ||
+                                                    offending->getType() == antlr4::Token::EOF)))) {
       d.message = "expected ';' after " + context;
       // Point just past the previous token, where the ';' belongs, as compilers do.
       if (previous && (previous->getLine() != offending->getLine() ||
@@ -203,18 +234,19 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
         d.message += ", found " + found;
       }
     } else if (wanted.size() == 1 && wanted[0] == "'='" && previous &&
-               previous->getType() == ArbcParser::ID && ctx->getRuleIndex() == ArbcParser::RuleStmt) {
+               previous->getType() == ArbcParser::ID &&
+               ctx->getRuleIndex() == ArbcParser::RuleStmt) {
       // `emitt face;` parses as the start of an assignment `emitt = ...`.
       d.loc = token_location(previous, file_);
       d.message = "unknown statement '" + previous->getText() +
                   "': a statement is let, var, accept, set, unset, if, emit, throttle, every, "
                   "script, or an assignment NAME = VALUE;";
-      suggest_keyword(previous, {"let", "var", "accept", "set", "unset", "if", "emit",
-                                 "throttle", "every", "script"}, d);
+      suggest_keyword(
+          previous,
+          {"let", "var", "accept", "set", "unset", "if", "emit", "throttle", "every", "script"}, d);
     } else if (wanted.size() == 1 && kinds.count(ArbcParser::ID)) {
       d.message = "expected a name in " + context + ", found " + found;
-      if (is_keyword(vocabulary, offending))
-        d.message += " (a keyword cannot be used as a name)";
+      if (is_keyword(vocabulary, offending)) d.message += " (a keyword cannot be used as a name)";
     } else if (!wanted.empty() && wanted.size() <= 6) {
       d.message = "expected " + join_or(wanted) + " in " + context + ", found " + found;
       std::vector<std::string> keywords;

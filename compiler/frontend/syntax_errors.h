@@ -12,7 +12,7 @@
 namespace antlr4 {
 class BaseErrorListener;
 class Token;
-}
+}  // namespace antlr4
 
 namespace arbc::frontend {
 

@@ -61,8 +61,8 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
                                "bad-number"));
         break;
       case ArbcLexer::UNTERMINATED_STRING:
-        out.push_back(error_at(t, file, "string literal is missing its closing '\"'",
-                               "unterminated-string"));
+        out.push_back(
+            error_at(t, file, "string literal is missing its closing '\"'", "unterminated-string"));
         break;
       case ArbcLexer::UNTERMINATED_COMMENT:
         out.push_back(error_at(t, file, "comment opened with '/*' is never closed with '*/'",
@@ -79,7 +79,6 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
     }
   }
 }
-
 
 bool check_nesting(const std::vector<antlr4::Token*>& tokens,
                    const antlr4::dfa::Vocabulary& vocabulary, const std::string& file,
@@ -123,7 +122,9 @@ bool check_nesting(const std::vector<antlr4::Token*>& tokens,
         run = 0;
         break;
       case kPrefix:
-      case kArrow: ++run; break;
+      case kArrow:
+        ++run;
+        break;
       case kMinus:
         // Binary after an operand or a closing bracket, prefix otherwise.
         run = (previous == kOperandEnd || previous == kClose) ? 0 : run + 1;

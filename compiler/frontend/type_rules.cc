@@ -29,7 +29,8 @@ bool is_kind(const TypePtr& t, Type::Kind kind) { return t && t->kind == kind; }
 std::string type_name(const TypePtr& t) {
   if (!t) return "?";
   switch (t->kind) {
-    case Type::Kind::List: return "list<" + type_name(t->element) + ">";
+    case Type::Kind::List:
+      return "list<" + type_name(t->element) + ">";
     case Type::Kind::Record: {
       std::string s = "{";
       for (size_t i = 0; i < t->fields.size(); ++i) {
@@ -38,7 +39,8 @@ std::string type_name(const TypePtr& t) {
       }
       return s + "}";
     }
-    default: return t->to_string();
+    default:
+      return t->to_string();
   }
 }
 

@@ -14,8 +14,9 @@ CompiledSpec finish(frontend::CheckResult checked, const std::string& file,
                     const std::string& script_dir) {
   CompiledSpec out;
   out.sources.add(file, checked.source);
+  bool checked_ok = checked.ok() && checked.spec;  // before the diagnostics move out
   out.diagnostics = std::move(checked.diagnostics);
-  if (!checked.ok() || !checked.spec) return out;
+  if (!checked_ok) return out;
   std::shared_ptr<const ast::Spec> spec(std::move(checked.spec));
   LowerOptions options;
   options.script_dir = script_dir;

@@ -25,6 +25,16 @@ Diagnostic error_at(const model::SourceLocation& loc, std::string message, std::
 
 std::vector<std::string> sorted(const std::set<std::string>& s) { return {s.begin(), s.end()}; }
 
+// `a and b and ...` without `true` parts (a rule without `when` is `true`); `true` if empty.
+Constraint all_of(std::vector<Constraint> parts) {
+  std::vector<Constraint> kept;
+  for (Constraint& p : parts)
+    if (p.op != Constraint::Op::True) kept.push_back(std::move(p));
+  if (kept.empty()) return Constraint::constant(true);
+  if (kept.size() == 1) return std::move(kept[0]);
+  return Constraint::conjunction(std::move(kept));
+}
+
 // Visits every statement of a block, nested ones included.
 template <typename F>
 void for_each_stmt(const ast::Block& block, F&& f) {
@@ -290,7 +300,7 @@ class Lowerer {
     for (size_t j = 0; j < k; ++j)
       if (!rules[j].activity.empty())
         parts.push_back(Constraint::negate(Constraint::event_ref(rules[j].activity)));
-    return Constraint::conjunction(std::move(parts));
+    return all_of(std::move(parts));
   }
 
   // E_c of DESIGN.md section 5: G_c and what c sets on every accepting path and not what it
@@ -307,7 +317,7 @@ class Lowerer {
         if (j != c && rules[j].effects.sets.count(e)) others_set = true;
       if (!others_set) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
     }
-    return Constraint::conjunction(std::move(parts));
+    return all_of(std::move(parts));
   }
 
   // `otherwise`: none of the other rules' effective guards holds.
@@ -316,6 +326,7 @@ class Lowerer {
     std::vector<Constraint> others;
     for (size_t j = 0; j < rules.size(); ++j)
       if (j != k && !rules[j].rule->otherwise) others.push_back(effective_guard(rules, j, fed));
+    if (others.empty()) return Constraint::constant(true);
     return Constraint::negate(Constraint::disjunction(std::move(others)));
   }
 

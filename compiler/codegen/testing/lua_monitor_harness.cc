@@ -73,6 +73,12 @@ struct HarnessAccess {
     self(L)->trig_interval_ = luaL_checknumber(L, 1);
     return 0;
   }
+  // Ends the callback with a distinguished error object, as the runtime's does.
+  static int novalue(lua_State* L) {
+    lua_pushlightuserdata(L, &novalue_marker);
+    return lua_error(L);
+  }
+  static inline int novalue_marker = 0;
   static int now(lua_State* L) {
     lua_pushnumber(L, self(L)->container_->now());
     return 1;
@@ -102,6 +108,7 @@ LuaMonitorHarness::LuaMonitorHarness(const std::string& source, const std::strin
                           {"getConstraint", HarnessAccess::get_constraint},
                           {"setTrigInterval", HarnessAccess::set_trig_interval},
                           {"now", HarnessAccess::now},
+                          {"novalue", HarnessAccess::novalue},
                           {nullptr, nullptr}};
   lua_pushlightuserdata(L_, this);
   luaL_setfuncs(L_, api, 1);
@@ -185,14 +192,22 @@ CallResult LuaMonitorHarness::call(const char* callback, const std::string& mess
     }
     nargs = 1;
   }
-  if (lua_pcall(L_, nargs, 2, 0) != LUA_OK) {
+  if (lua_pcall(L_, nargs, 1, 0) != LUA_OK) {
+    if (lua_touserdata(L_, -1) == &HarnessAccess::novalue_marker) {
+      r.ok = true;
+      r.reason = "no-value";
+      return r;
+    }
     r.error = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
     return r;
   }
+  if (std::string(callback) == "accept" && !lua_isboolean(L_, -1)) {
+    r.error = std::string("accept returned a ") + luaL_typename(L_, -1) + ", not a boolean";
+    return r;
+  }
   r.ok = true;
-  r.accepted = lua_toboolean(L_, -2);
-  if (lua_type(L_, -1) == LUA_TSTRING) r.reason = lua_tostring(L_, -1);
-  if (want_value) r.value = serialise(L_, -2);
+  r.accepted = lua_toboolean(L_, -1);
+  if (want_value) r.value = serialise(L_, -1);
   lua_settop(L_, 0);
   return r;
 }
@@ -204,7 +219,7 @@ CallResult LuaMonitorHarness::trig() { return call("trig", "", false); }
 
 CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {
   CallResult a = accept(message_lua);
-  if (!a.ok) return a;
+  if (!a.ok || !a.reason.empty()) return a;
   if (!a.accepted) {
     if (a.reason.empty()) a.reason = "rejected";
     return a;
@@ -221,8 +236,14 @@ CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {
     a.reason = "not-selected";
     return a;
   }
+  if (throttle_ && last_delivery_ && container_->now() - *last_delivery_ < *throttle_) {
+    a.accepted = false;
+    a.reason = "throttled";
+    return a;
+  }
   CallResult u = update(message_lua);
-  u.accepted = u.ok;
+  u.accepted = u.ok && u.reason.empty();
+  if (u.accepted) last_delivery_ = container_->now();
   return u;
 }
 

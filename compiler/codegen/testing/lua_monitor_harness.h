@@ -35,9 +35,11 @@ class PortContainer {
 struct CallResult {
   bool ok = false;        // the callback ran without a Lua error
   std::string error;      // the Lua error message when !ok
-  bool accepted = false;  // accept's first result
-  std::string reason;     // accept's second result, if any (e.g. "no-value")
-  std::string value;      // update's result, serialised by `serialise_top`
+  bool accepted = false;  // accept's result (it must be a boolean)
+  // Why not delivered: "no-value" (PortMonitor.novalue()), and from deliver() also
+  // "rejected", "not-selected", "throttled".
+  std::string reason;
+  std::string value;  // update's result, serialised by `serialise_top`
 };
 
 class LuaMonitorHarness {
@@ -57,9 +59,11 @@ class LuaMonitorHarness {
   CallResult accept(const std::string& message_lua);
   CallResult update(const std::string& message_lua);
   CallResult trig();
-  // Section 4's three steps: accept, the constraint on the container, update. `value` is the
-  // delivered value; `reason` says why not ("rejected", "no-value", "not-selected").
+  // The runtime's message path (docs/runtime.md): accept, the constraint on the container, the
+  // throttle (counting deliveries only), update. `value` is the delivered value.
   CallResult deliver(const std::string& message_lua);
+  // app.json's `throttle` for this connection, which the runtime enforces.
+  void set_throttle(std::optional<double> seconds) { throttle_ = seconds; }
 
   const std::string& constraint() const { return constraint_; }
   std::optional<double> trig_interval() const { return trig_interval_; }
@@ -81,6 +85,8 @@ class LuaMonitorHarness {
   std::string load_error_;
   std::string constraint_;
   std::optional<double> trig_interval_;
+  std::optional<double> throttle_;
+  std::optional<double> last_delivery_;
   std::vector<std::string> calls_;
 };
 

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Figure for issue 4: `arbc build` (compile, verify, generate, write) of a generated spec with
+# 10,000 rules with monitor bodies over 50 arbitrated ports (bench/gen_spec.py). Target: at most
+# 2 s, median of 5 runs. Baseline: the same build with --no-verify, so the ratio shows what the
+# proof adds to code generation.
+# Env (set by bench/run): ARBC (Release arbc), ARBC_ROOT, ARBC_BENCH_BUILD.
+set -euo pipefail
+root=${ARBC_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}
+arbc=${ARBC:-$root/build/cli/arbc}
+work=${ARBC_BENCH_BUILD:-$root/build}/bench-data
+mkdir -p "$work"
+spec=$work/build_10000_rules.spec
+python3 "$root/bench/gen_spec.py" --rules 10000 --ports 50 --bodies --name build_10000_rules > "$spec"
+# The figure only means something if the build succeeds: a failure would time an error path.
+if ! "$arbc" build "$spec" -o "$work/build_out" >/dev/null 2>&1; then
+  echo "build.sh: arbc build failed on the generated spec $spec" >&2
+  exit 1
+fi
+monitors=$(ls "$work/build_out/build_10000_rules/monitors" | wc -l)
+if [ "$monitors" -lt 10000 ]; then
+  echo "build.sh: expected at least 10000 monitors, got $monitors" >&2
+  exit 1
+fi
+seconds=$(python3 "$root/bench/median.py" 5 "$arbc" build "$spec" -o "$work/build_out")
+baseline=$(python3 "$root/bench/median.py" 5 "$arbc" build "$spec" -o "$work/build_out" --no-verify)
+ratio=$(python3 -c "print(round($seconds / $baseline, 2))")
+printf '{"name": "build_10000_rules", "value": %s, "unit": "s", "baseline": %s, "ratio": %s}\n' \
+  "$seconds" "$baseline" "$ratio"

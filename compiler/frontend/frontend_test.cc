@@ -1,0 +1,190 @@
+// The front end's contract with lowering: a checked spec has every name resolved, every
+// expression typed, every constraint built and every duration in seconds (ast.h "sema:").
+#include "compiler/frontend/frontend.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc::frontend {
+namespace {
+
+using ast::Expr;
+using ast::NameKind;
+using ast::Stmt;
+
+std::string ids(const CheckResult& r) {
+  std::string s;
+  for (const Diagnostic& d : r.diagnostics) s += d.id + " ";
+  return s;
+}
+
+TEST(Frontend, TableCleanChecksAndIsAnnotated) {
+  CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/table_clean.spec");
+  ASSERT_TRUE(r.ok()) << render_diagnostics(r.diagnostics, nullptr);
+  const ast::Spec& spec = *r.spec;
+  ASSERT_TRUE(spec.app);
+  EXPECT_EQ(spec.app->name, "table_clean");
+  EXPECT_EQ(spec.modules.size(), 8u);
+  EXPECT_EQ(spec.arbitrations.size(), 4u);
+  EXPECT_EQ(spec.asserts.size(), 3u);
+
+  // Events: status flags and derived events, with lifetimes in seconds.
+  const ast::EventSymbol* taken = spec.find_event("e_taken");
+  ASSERT_TRUE(taken);
+  EXPECT_EQ(taken->kind, ast::EventSymbol::Kind::Status);
+  EXPECT_EQ(taken->source, "PickAndPlace.status");
+  EXPECT_EQ(taken->flag, "e_taken");
+  EXPECT_DOUBLE_EQ(*taken->lifetime, 0.5);
+  const ast::EventSymbol* face = spec.find_event("e_face_detected");
+  ASSERT_TRUE(face);
+  EXPECT_EQ(face->kind, ast::EventSymbol::Kind::Derived);
+  EXPECT_DOUBLE_EQ(*face->lifetime, 1.0);
+  const ast::EventSymbol* unreachable = spec.find_event("e_unreachable");
+  ASSERT_TRUE(unreachable);
+  EXPECT_FALSE(unreachable->lifetime);
+
+  // Constraints are runtime Constraint trees.
+  const ast::ArbitrateDecl* pick = spec.find_arbitration("PickAndPlace.cmd");
+  ASSERT_TRUE(pick);
+  EXPECT_EQ(pick->rules[0].name, "take");
+  EXPECT_EQ(pick->rules[0].constraint.to_string(), "not e_taken and e_arm_idle and e_pull_idle");
+  EXPECT_EQ(pick->rules[0].message_name, "objects");
+  EXPECT_EQ(pick->rules[0].source.port_decl->name, "objects");
+  EXPECT_EQ(pick->rules[0].port, pick);
+
+  const ast::ArbitrateDecl* head = spec.find_arbitration("HeadControl.gaze");
+  ASSERT_TRUE(head);
+  EXPECT_TRUE(head->by_priority);
+  ASSERT_TRUE(head->rules[0].hold);
+  EXPECT_DOUBLE_EQ(head->rules[0].hold->seconds, 1.0);
+  EXPECT_FALSE(head->rules[1].hold);
+  EXPECT_FALSE(head->rules[1].has_body);
+
+  // The take body: names resolve to the message, lets, lambda parameters and constants.
+  const ast::Block& body = pick->rules[0].body;
+  ASSERT_EQ(body.size(), 4u);
+  const Stmt& let_obj = *body[1];
+  ASSERT_EQ(let_obj.kind, Stmt::Kind::Let);
+  EXPECT_EQ(let_obj.expr->type->to_string(), "{pos: vec3, dist: float}");
+  const Expr& min_by = *let_obj.expr;
+  EXPECT_EQ(min_by.builtin, ast::Builtin::MinBy);
+  EXPECT_EQ(min_by.args[0]->name_kind, NameKind::Message);
+  const Expr& lambda = *min_by.args[1];
+  ASSERT_EQ(lambda.kind, Expr::Kind::Lambda);
+  const Expr& o_dist = *lambda.args[0];
+  EXPECT_EQ(o_dist.args[0]->name_kind, NameKind::Param);
+  EXPECT_EQ(o_dist.args[0]->lambda, &lambda);
+
+  const Stmt& accept_near = *body[2];
+  const Expr& compare = *accept_near.expr;
+  EXPECT_EQ(compare.type->kind, Type::Kind::Bool);
+  EXPECT_EQ(compare.args[0]->args[0]->name_kind, NameKind::Let);
+  EXPECT_EQ(compare.args[0]->args[0]->local, &let_obj);
+  EXPECT_EQ(compare.args[1]->name_kind, NameKind::Const);
+  EXPECT_EQ(compare.args[1]->constant->name, "HAND_REACHABLE");
+  EXPECT_DOUBLE_EQ(compare.args[1]->constant->number, 0.40);
+
+  const Stmt& emit = *body[3];
+  EXPECT_EQ(emit.kind, Stmt::Kind::Emit);
+  EXPECT_EQ(emit.expr->kind, Expr::Kind::Record);
+  EXPECT_EQ(emit.expr->field_names, (std::vector<std::string>{"verb", "pos"}));
+
+  // The throttle's duration constant is folded to seconds.
+  const ast::ArbitrateDecl* speak = spec.find_arbitration("Speak.text");
+  ASSERT_TRUE(speak);
+  const Stmt& throttle = *speak->rules[0].body[0];
+  ASSERT_EQ(throttle.kind, Stmt::Kind::Throttle);
+  EXPECT_DOUBLE_EQ(throttle.duration->seconds, 5.0);
+
+  // Asserts point at their rule.
+  EXPECT_EQ(spec.asserts[0].rule_decl, &pick->rules[0]);
+  EXPECT_EQ(spec.asserts[0].constraint.to_string(), "not e_taken");
+}
+
+TEST(Frontend, LocationsAreOneBasedWithRanges) {
+  CheckResult r = check_text("app t;\nmodule A { out x: flot; }\n", "mem.spec");
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  const Diagnostic& d = r.diagnostics[0];
+  EXPECT_EQ(d.id, "unknown-type");
+  EXPECT_EQ(d.loc.file, "mem.spec");
+  EXPECT_EQ(d.loc.line, 2);
+  EXPECT_EQ(d.loc.column, 19);
+  EXPECT_EQ(d.loc.end_column, 23);
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_EQ(d.notes[0].message, "did you mean 'float'?");
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(r.spec);  // semantic errors keep the AST (for tools), but it must not be lowered
+}
+
+TEST(Frontend, SyntaxErrorsAreOnePerDeclarationAndInWords) {
+  CheckResult r = check_text(
+      "app t\nmodule A { out x: float }\nmodule B { in y: ; }\nmodule C { in z: float; }\n",
+      "s.spec");
+  EXPECT_FALSE(r.spec);
+  ASSERT_EQ(r.diagnostics.size(), 3u) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.diagnostics[0].message, "expected ';' after the app declaration");
+  EXPECT_EQ(r.diagnostics[1].message, "expected ';' after the port declaration, found '}'");
+  EXPECT_EQ(r.diagnostics[2].message, "expected a type such as float, vec3 or list<T>, found ';'");
+  for (const Diagnostic& d : r.diagnostics) {
+    EXPECT_EQ(d.id, "syntax");
+    EXPECT_EQ(d.message.find("T__"), std::string::npos);  // never a token dump
+  }
+}
+
+TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
+  for (const char* name : {"search_and_track", "face_filter"}) {
+    CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/" + name + ".spec");
+    EXPECT_TRUE(r.ok()) << name << "\n" << render_diagnostics(r.diagnostics, nullptr);
+  }
+  CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/search_and_track.spec");
+  const ast::Rule& track = r.spec->arbitrations[0].rules[0];
+  EXPECT_EQ(track.constraint.to_string(), "true");
+  ASSERT_EQ(track.body[0]->kind, Stmt::Kind::Set);
+  EXPECT_DOUBLE_EQ(track.body[0]->duration->seconds, 1.0);
+  EXPECT_EQ(r.spec->arbitrations[0].rules[1].constraint.to_string(), "not e_face_detected");
+}
+
+TEST(Frontend, OtherwiseIsRecordedNotTranslated) {
+  CheckResult r = check_text(
+      "app t;\nmodule A { out x: float; }\nmodule B { out y: float; }\nmodule C { in z: float; }\n"
+      "event e;\narbitrate C.z { a: from A.x when e; b: from B.y when otherwise; }\n",
+      "o.spec");
+  ASSERT_TRUE(r.ok()) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_FALSE(r.spec->arbitrations[0].rules[0].otherwise);
+  EXPECT_TRUE(r.spec->arbitrations[0].rules[1].otherwise);
+}
+
+TEST(Frontend, StatusFlagsMapToEvents) {
+  CheckResult r = check_text(
+      "app t;\nmodule A { out s: list<string>; }\n"
+      "events from A.s { e_taken = \"taken\", e_idle } lifetime 500ms;\n",
+      "f.spec");
+  ASSERT_TRUE(r.ok()) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.spec->find_event("e_taken")->flag, "taken");
+  EXPECT_EQ(r.spec->find_event("e_idle")->flag, "e_idle");
+  EXPECT_DOUBLE_EQ(*r.spec->find_event("e_idle")->lifetime, 0.5);
+}
+
+TEST(Frontend, IntWidensToFloatButNotTheOtherWay) {
+  std::string head =
+      "app t;\nmodule A { out x: float; }\nmodule B { in y: int; }\nmodule C { in z: float; }\n";
+  EXPECT_TRUE(check_text(head + "connect A.x -> C.z { emit 1; }\n", "w.spec").ok());
+  CheckResult r = check_text(head + "connect A.x -> B.y { emit x; }\n", "w.spec");
+  EXPECT_EQ(ids(r), "emit-type ");
+}
+
+TEST(Frontend, EveryErrorIsReportedNotJustTheFirst) {
+  CheckResult r = check_text(
+      "app t;\nmodule A { out x: flot; }\nmodule B { in y: vec; }\nconnect Q.x -> B.y;\n",
+      "m.spec");
+  EXPECT_EQ(ids(r), "unknown-type unknown-type unknown-module ");
+}
+
+TEST(Frontend, RenderCapsTheNumberOfErrors) {
+  std::vector<Diagnostic> many(60);
+  for (Diagnostic& d : many) d.message = "x";
+  std::string text = render_diagnostics(many, nullptr, 50);
+  EXPECT_NE(text.find("... and 10 more errors (only the first 50 are shown)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace arbc::frontend

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# check_build.sh ARBC LUAC SPEC APP SCRATCH: builds SPEC twice, checks the monitors with luac,
+# byte-identical output, and the goldens in tests/build/APP/ (ARBC_UPDATE_GOLDEN=1 rewrites them).
+set -euo pipefail
+arbc=$1 luac=$2 spec=$3 app=$4 scratch=$5
+golden=tests/build/$app
+rm -rf "$scratch" && mkdir -p "$scratch"
+"$arbc" build "$spec" -o "$scratch/a" > "$scratch/summary.txt"
+"$arbc" build "$spec" -o "$scratch/b" > /dev/null
+diff -r "$scratch/a/$app" "$scratch/b/$app" || { echo "FAIL: two builds differ"; exit 1; }
+count=0
+for f in "$scratch/a/$app"/monitors/*.lua; do
+  "$luac" -p "$f" || { echo "FAIL: luac5.4 -p rejects $f"; exit 1; }
+  count=$((count + 1))
+done
+connections=$(grep -c '"monitor": "monitors/' "$scratch/a/$app/app.json")
+[ "$count" -eq "$connections" ] || { echo "FAIL: $count monitors for $connections connections"; exit 1; }
+if [ "$count" -lt "${ARBC_MIN_MONITORS:-1}" ]; then
+  echo "FAIL: $count monitors, expected at least ${ARBC_MIN_MONITORS}"; exit 1
+fi
+# The summary is part of the golden too (minus the output directory).
+sed "s|$scratch/a|OUT|" "$scratch/summary.txt" > "$scratch/a/$app/summary.txt"
+if [ "${ARBC_UPDATE_GOLDEN:-0}" = 1 ]; then
+  rm -rf "$golden" && mkdir -p "$golden" && cp -r "$scratch/a/$app/." "$golden/"
+  echo "updated $golden"
+fi
+diff -r "$golden" "$scratch/a/$app" || { echo "FAIL: artifacts differ from $golden"; exit 1; }
+echo "ok: $count monitors, luac clean, deterministic, golden matches"

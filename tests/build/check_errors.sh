@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# check_errors.sh ARBC SCRATCH: exit codes and messages of `arbc build` on bad input; nothing is
+# written on failure.
+set -uo pipefail
+arbc=$1 scratch=$2
+rm -rf "$scratch" && mkdir -p "$scratch"
+fail() { echo "FAIL: $*"; exit 1; }
+expect() {  # expect CODE TEXT -- command...
+  local code=$1 text=$2; shift 3
+  out=$("$@" 2>&1); rc=$?
+  [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $out"
+  [[ "$out" == *"$text"* ]] || fail "'$*' output lacks '$text': $out"
+}
+expect 0 "--no-verify" -- "$arbc" build --help
+expect 2 "SPEC is required" -- "$arbc" build
+expect 2 "no such file" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/out"
+printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n' > "$scratch/broken.spec"
+expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
+expect 2 "unknown target 'yarp'" -- "$arbc" build specs/face_filter.spec --target yarp -o "$scratch/out"
+[ ! -e "$scratch/out" ] || fail "a failed build wrote $scratch/out"
+# An existing directory that is not an arbc build is never replaced.
+mkdir -p "$scratch/keep/face_filter" && echo mine > "$scratch/keep/face_filter/notes.txt"
+expect 2 "refusing to replace" -- "$arbc" build specs/face_filter.spec -o "$scratch/keep"
+[ -f "$scratch/keep/face_filter/notes.txt" ] || fail "the user's directory was touched"
+# A rebuild replaces an earlier build, dropping monitors of rules that no longer exist.
+expect 0 "face_filter" -- "$arbc" build specs/face_filter.spec -o "$scratch/re"
+touch "$scratch/re/face_filter/monitors/stale.lua"
+expect 0 "face_filter" -- "$arbc" build specs/face_filter.spec -o "$scratch/re"
+[ ! -e "$scratch/re/face_filter/monitors/stale.lua" ] || fail "a stale monitor survived a rebuild"
+# A refuted proof writes nothing (exit 1), unless --no-verify.
+cat > "$scratch/overlap.spec" <<'SPEC'
+app overlap;
+module A { out x: float; }
+module B { out y: float; }
+module H { in z: float; }
+event busy;
+arbitrate H.z {
+  first:  from A.x when busy;
+  second: from B.y when busy;
+}
+SPEC
+expect 1 "nothing was written" -- "$arbc" build "$scratch/overlap.spec" -o "$scratch/refuted"
+[ ! -e "$scratch/refuted" ] || fail "a refuted build wrote $scratch/refuted"
+expect 0 "not verified (--no-verify)" -- "$arbc" build "$scratch/overlap.spec" -o "$scratch/refuted" --no-verify
+[ -f "$scratch/refuted/overlap/app.json" ] || fail "--no-verify did not write the build"
+echo "ok"
