@@ -32,6 +32,14 @@ check refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.app.js
 check strict_proved.txt 0 --strict tests/verify/table_clean.app.json
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 check missing.txt 2 tests/verify/no_such_app.json
-check spec_without_compiler.txt 2 tests/verify/table_clean.spec
+# Specs go through the compiler when this arbc has it (front end + lowering); else a clear error.
+probe=$("$arbc" verify specs/search_and_track.spec 2>&1)
+if [[ $probe == *"needs the spec compiler"* ]]; then
+  check spec_without_compiler.txt 2 tests/verify/table_clean.spec
+else
+  check spec_proved.txt 0 specs/table_clean.spec specs/search_and_track.spec
+  check spec_refuted.txt 1 tests/verify/table_clean_take_mutant.spec
+  check spec_refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.spec
+fi
 check bad_format.txt 2 --format xml tests/verify/table_clean.app.json
 exit $failed
