@@ -39,6 +39,7 @@ TEST(Fixtures, AppJsonFilesMatchTheModels) {
       {"table_clean.app.json", testing::table_clean_model()},
       {"table_clean_take_mutant.app.json", take_mutant()},
       {"search_and_track.app.json", testing::search_and_track_model()},
+      {"table_clean_warnings.app.json", testing::table_clean_with_warnings()},
   };
   for (const auto& [name, app] : fixtures) {
     std::string json = model::to_app_json(app);

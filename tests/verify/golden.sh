@@ -29,7 +29,8 @@ check proved.sarif 0 --format sarif tests/verify/table_clean.app.json
 check refuted.txt 1 tests/verify/table_clean_take_mutant.app.json
 check refuted.json 1 --format json tests/verify/table_clean_take_mutant.app.json
 check refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.app.json
-check strict_proved.txt 0 --strict tests/verify/table_clean.app.json
+check warnings.txt 0 tests/verify/table_clean_warnings.app.json
+check warnings_strict.txt 1 --strict tests/verify/table_clean_warnings.app.json
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 check missing.txt 2 tests/verify/no_such_app.json
 # Specs go through the compiler when this arbc has it (front end + lowering); else a clear error.
