@@ -42,5 +42,21 @@ else
   check spec_refuted.txt 1 tests/verify/table_clean_take_mutant.spec
   check spec_refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.spec
 fi
+
+# No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
+root=$PWD
+arbc=$(cd "$(dirname "$arbc")" && pwd)/$(basename "$arbc")
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
+dir=$root/$dir
+check no_args_no_specs.txt 2
+mkdir specs
+cp "$root/tests/verify/table_clean_take_mutant.spec" specs/
+if [[ $probe == *"needs the spec compiler"* ]]; then
+  check no_args_without_compiler.txt 2
+else
+  check no_args.txt 1
+fi
 check bad_format.txt 2 --format xml tests/verify/table_clean.app.json
 exit $failed
