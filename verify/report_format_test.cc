@@ -136,5 +136,14 @@ TEST(SarifFormat, UnknownIsAnErrorResult) {
   EXPECT_EQ(j["runs"][0]["results"][0]["level"], "error");
 }
 
+// Every check id printed in diagnostics and SARIF helpUris has its section in docs/checks.md.
+TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
+  std::string docs = read(std::string(ARBC_SOURCE_DIR) + "/docs/checks.md");
+  for (const char* id : {kCheckExclusive, kCheckDead, kCheckUnfed, kCheckUnused, kCheckOwnership,
+                         kCheckComplete, kCheckAssert, kCheckUnknown, kCheckInternal}) {
+    EXPECT_THAT(docs, HasSubstr(std::string("\n## ") + id + "\n")) << id;
+  }
+}
+
 }  // namespace
 }  // namespace arbc::verify
