@@ -200,12 +200,24 @@ class Parser {
 
 }  // namespace
 
+// The builders fold constants (the parser keeps what the user wrote): `true` vanishes from a
+// conjunction and `false` absorbs it; dually for disjunctions.
 Constraint Constraint::conjunction(std::vector<Constraint> args) {
-  return nary(Op::And, std::move(args));
+  std::vector<Constraint> kept;
+  for (Constraint& a : args) {
+    if (a.op == Op::False) return constant(false);
+    if (a.op != Op::True) kept.push_back(std::move(a));
+  }
+  return nary(Op::And, std::move(kept));
 }
 
 Constraint Constraint::disjunction(std::vector<Constraint> args) {
-  return nary(Op::Or, std::move(args));
+  std::vector<Constraint> kept;
+  for (Constraint& a : args) {
+    if (a.op == Op::True) return constant(true);
+    if (a.op != Op::False) kept.push_back(std::move(a));
+  }
+  return nary(Op::Or, std::move(kept));
 }
 
 std::string Constraint::to_string() const {

@@ -25,8 +25,10 @@ struct Constraint {
   static Constraint constant(bool value);
   static Constraint event_ref(std::string name);
   static Constraint negate(Constraint c);
-  static Constraint conjunction(std::vector<Constraint> args);  // flattens; empty means true
-  static Constraint disjunction(std::vector<Constraint> args);  // flattens; empty means false
+  // Flatten nested and/or and fold constants; an empty conjunction is true, an empty
+  // disjunction false.
+  static Constraint conjunction(std::vector<Constraint> args);
+  static Constraint disjunction(std::vector<Constraint> args);
 
   // Canonical text with the fewest parentheses: "not e_taken and (a or b)".
   std::string to_string() const;

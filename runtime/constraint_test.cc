@@ -35,6 +35,16 @@ TEST(ConstraintTest, NamesAreWholeTokens) {
   EXPECT_TRUE(evaluate(keywordish, {"nota", "andy"}));
 }
 
+TEST(ConstraintTest, BuildersFoldConstants) {
+  Constraint x = Constraint::event_ref("x");
+  EXPECT_EQ(Constraint::conjunction({Constraint::constant(true), x}).to_string(), "x");
+  EXPECT_EQ(Constraint::conjunction({x, Constraint::constant(false)}).to_string(), "false");
+  EXPECT_EQ(Constraint::disjunction({Constraint::constant(false), x}).to_string(), "x");
+  EXPECT_EQ(Constraint::disjunction({x, Constraint::constant(true)}).to_string(), "true");
+  EXPECT_EQ(Constraint::conjunction({}).to_string(), "true");
+  EXPECT_EQ(parse_constraint("true and x").constraint.to_string(), "true and x");
+}
+
 TEST(ConstraintTest, ReportsErrorsWithOffsets) {
   ConstraintParse p = parse_constraint("a and (b or");
   EXPECT_FALSE(p.ok);

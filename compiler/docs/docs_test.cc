@@ -1,0 +1,151 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "compiler/docs/decision_table.h"
+#include "compiler/docs/graph_docs.h"
+#include "compiler/docs/markdown_docs.h"
+
+namespace arbc::docs {
+namespace {
+
+using model::Connection;
+using model::ConnectionKind;
+
+// The paper's search-and-track app, lowered by hand: track sets e_face_detected itself.
+model::App search_and_track() {
+  model::App app;
+  app.name = "search_and_track";
+  app.description = "Look around until a face appears | then track it.";
+  app.modules = {{"FaceDetector", "faces", {{"face", model::Direction::Out, parse_type("{pos: vec3, certainty: float}"), {}}}, {}},
+                 {"LookAround", "", {{"gaze", model::Direction::Out, parse_type("vec3"), {}}}, {}},
+                 {"HeadControl", "", {{"gaze", model::Direction::In, parse_type("vec3"), {}}}, {}}};
+  app.events.push_back({"e_face_detected", 1.0, "", {}});
+  Connection track;
+  track.name = "track";
+  track.source = "FaceDetector.face";
+  track.destination = "HeadControl.gaze";
+  track.sets = track.must_set = {"e_face_detected"};
+  track.monitor = "monitors/HeadControl.gaze__track.lua";
+  Connection search;
+  search.name = "search";
+  search.source = "LookAround.gaze";
+  search.destination = "HeadControl.gaze";
+  search.constraint = parse_constraint("not e_face_detected").constraint;
+  search.monitor = "monitors/HeadControl.gaze__search.lua";
+  Connection feed;
+  feed.name = "feed_x";
+  feed.kind = ConnectionKind::Feed;
+  feed.generated = true;
+  feed.source = "FaceDetector.face";
+  feed.destination = "HeadControl.gaze";
+  feed.constraint = Constraint::constant(false);
+  feed.sets = {"x"};
+  feed.monitor = "monitors/feed.lua";
+  app.connections = {track, search, feed};
+  model::ArbitratedPort port;
+  port.port = "HeadControl.gaze";
+  port.rules = {"track", "search"};
+  app.arbitrated_ports = {port};
+  return app;
+}
+
+TEST(DecisionTableTest, EveryStateSelectsByEffectiveGuard) {
+  model::App app = search_and_track();
+  DecisionTable t = decision_table(app, app.arbitrated_ports[0]);
+  ASSERT_EQ(t.events, std::vector<std::string>{"e_face_detected"});
+  ASSERT_TRUE(t.tabulated);
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0].selected, std::vector<std::string>{"search"});
+  EXPECT_EQ(t.rows[1].selected, std::vector<std::string>{"track"});
+}
+
+TEST(DecisionTableTest, OverlapsShowBothRules) {
+  model::App app = search_and_track();
+  app.connections[0].must_set.clear();  // track's guard is now plain `true`
+  DecisionTable t = decision_table(app, app.arbitrated_ports[0]);
+  EXPECT_EQ(t.rows[0].selected, (std::vector<std::string>{"track", "search"}));
+}
+
+TEST(DecisionTableTest, ManyEventsFallBackToNormalForm) {
+  model::App app = search_and_track();
+  app.connections[1].constraint =
+      parse_constraint("not e_face_detected and (a or b) and (c or d) and e and f and g").constraint;
+  DecisionTable t = decision_table(app, app.arbitrated_ports[0]);
+  EXPECT_FALSE(t.tabulated);
+  EXPECT_TRUE(t.rows.empty());
+  EXPECT_EQ(t.rules[1].dnf,
+            "a and c and e and not e_face_detected and f and g or "
+            "b and c and e and not e_face_detected and f and g or "
+            "a and d and e and not e_face_detected and f and g or "
+            "b and d and e and not e_face_detected and f and g");
+}
+
+TEST(DnfTest, DropsContradictionsAndCapsGrowth) {
+  EXPECT_EQ(dnf_text(parse_constraint("a and not a").constraint), "false");
+  EXPECT_EQ(dnf_text(parse_constraint("not (a and b)").constraint), "not a or not b");
+  std::string big = "(a0 or b0)";
+  for (int i = 1; i < 20; ++i) big += " and (a" + std::to_string(i) + " or b" + std::to_string(i) + ")";
+  std::string text = dnf_text(parse_constraint(big).constraint, 8);
+  EXPECT_EQ(text.substr(text.size() - 7), " or ...");
+}
+
+// Every row of every table has as many cells as the table's header.
+void expect_consistent_tables(const std::string& markdown) {
+  std::istringstream in(markdown);
+  std::string line;
+  int columns = -1;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty() || line[0] != '|') {
+      columns = -1;
+      continue;
+    }
+    int pipes = 0;
+    for (size_t i = 0; i < line.size(); ++i)
+      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++pipes;
+    if (columns < 0) columns = pipes;
+    EXPECT_EQ(pipes, columns) << "line " << line_no << ": " << line;
+  }
+}
+
+TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
+  model::App app = search_and_track();
+  DocsInput input{&app, {"HeadControl.gaze: proved"}, "app.svg"};
+  std::string md = render_index_markdown(input);
+  expect_consistent_tables(md);
+  EXPECT_NE(md.find("\nLook around until a face appears | then track it.\n"), std::string::npos);
+  EXPECT_NE(md.find("| track | FaceDetector.face | HeadControl.gaze | `true` | sets e_face_detected | user |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| feed_x | FaceDetector.face | HeadControl.gaze | `false` | feeds x into the "
+                    "container; never delivers | arbc |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| 0 | search |"), std::string::npos);
+  EXPECT_NE(md.find("| 1 | track |"), std::string::npos);
+  EXPECT_NE(md.find("- HeadControl.gaze: proved"), std::string::npos);
+}
+
+TEST(GraphDocsTest, GraphvizAcceptsTheDiagram) {
+  model::App app = search_and_track();
+  std::string dot = render_dot(app);
+  EXPECT_NE(dot.find("style=dashed"), std::string::npos);  // the feed
+  EXPECT_NE(dot.find("label=\"track [M]\""), std::string::npos);
+  std::string svg, error;
+  ASSERT_TRUE(render_svg(dot, &svg, &error)) << error;
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("HeadControl"), std::string::npos);
+  std::string bad_svg;
+  EXPECT_FALSE(render_svg("digraph {", &bad_svg, &error));
+  EXPECT_EQ(error, "Graphviz `dot` failed on the generated diagram");
+}
+
+TEST(GraphDocsTest, MermaidDrawsFeedsDashed) {
+  std::string mmd = render_mermaid(search_and_track());
+  EXPECT_EQ(mmd.rfind("flowchart LR\n", 0), 0u);
+  EXPECT_NE(mmd.find("FaceDetector -->|\"track M\"| HeadControl_gaze"), std::string::npos);
+  EXPECT_NE(mmd.find("FaceDetector -.->|\"feed_x\"| HeadControl_gaze"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace arbc::docs

@@ -1,0 +1,148 @@
+#include "compiler/docs/markdown_docs.h"
+
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "compiler/docs/decision_table.h"
+#include "compiler/docs/monitor_summary.h"
+
+namespace arbc::docs {
+
+std::string cell(std::string_view text) {
+  std::string out;
+  for (char ch : text) {
+    if (ch == '|') out += "\\|";
+    else if (ch == '\n') out += ' ';
+    else out += ch;
+  }
+  return out.empty() ? "" : out;
+}
+
+namespace {
+
+std::string code(std::string_view text) { return "`" + cell(text) + "`"; }
+
+std::string ports_of(const model::Module& m, model::Direction d) {
+  std::string s;
+  for (const model::Port& p : m.ports) {
+    if (p.direction != d) continue;
+    if (!s.empty()) s += ", ";
+    s += code(p.name + ": " + (p.type ? p.type->to_string() : "?"));
+  }
+  return s.empty() ? "-" : s;
+}
+
+std::string seconds(double s) {
+  std::ostringstream out;
+  out << s << " s";
+  return out.str();
+}
+
+void modules_section(const model::App& app, std::ostream& out) {
+  out << "## Modules\n\n| module | inputs | outputs | description |\n|---|---|---|---|\n";
+  for (const model::Module& m : app.modules)
+    out << "| " << cell(m.name) << " | " << ports_of(m, model::Direction::In) << " | "
+        << ports_of(m, model::Direction::Out) << " | " << cell(m.doc) << " |\n";
+  out << "\n";
+}
+
+void connections_section(const model::App& app, std::ostream& out) {
+  out << "## Connections\n\n"
+         "| connection | source | destination | constraint | monitor | written by |\n"
+         "|---|---|---|---|---|---|\n";
+  for (const model::Connection& c : app.connections)
+    out << "| " << cell(c.name) << " | " << cell(c.source) << " | " << cell(c.destination)
+        << " | " << code(c.constraint.to_string()) << " | " << cell(monitor_summary(c)) << " | "
+        << (c.generated ? "arbc" : "user") << " |\n";
+  out << "\n";
+}
+
+void events_section(const model::App& app, std::ostream& out) {
+  std::map<std::string, std::set<std::string>> set_by, read_by;
+  for (const model::Connection& c : app.connections) {
+    for (const std::string& e : c.sets) set_by[e].insert(c.destination + " / " + c.name);
+    std::set<std::string> read;
+    c.constraint.collect_events(read);
+    for (const std::string& e : read) read_by[e].insert(c.destination + " / " + c.name);
+  }
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) {
+    for (const model::Assertion& a : p.asserts) {
+      std::set<std::string> read;
+      a.property.collect_events(read);
+      for (const std::string& e : read) read_by[e].insert(p.port + " / assert " + a.rule);
+    }
+  }
+  auto join = [](const std::set<std::string>& items) {
+    std::string s;
+    for (const std::string& i : items) s += (s.empty() ? "" : ", ") + cell(i);
+    return s.empty() ? std::string("-") : s;
+  };
+  out << "## Events\n\n| event | source | lifetime | set by | read by |\n|---|---|---|---|---|\n";
+  for (const model::Event& e : app.events)
+    out << "| " << code(e.name) << " | " << (e.source.empty() ? "monitor code" : cell(e.source))
+        << " | " << (e.lifetime ? seconds(*e.lifetime) : "until unset") << " | "
+        << join(set_by[e.name]) << " | " << join(read_by[e.name]) << " |\n";
+  out << "\n";
+}
+
+void decision_section(const model::App& app, std::ostream& out) {
+  if (app.arbitrated_ports.empty()) return;
+  out << "## Arbitrated ports\n\n"
+         "Each rule is compared by its effective guard: its constraint plus the events its own\n"
+         "monitor sets on every accepting path.\n\n";
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) {
+    DecisionTable t = decision_table(app, p);
+    out << "### " << p.port;
+    if (p.by_priority) out << " (by priority)";
+    if (p.complete) out << " (complete)";
+    out << "\n\n| rule | effective guard |\n|---|---|\n";
+    for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
+    out << "\n";
+    if (!t.tabulated) {
+      out << "With " << t.events.size() << " events (more than " << kMaxTableEvents
+          << "), the guards in disjunctive normal form:\n\n| rule | guard (DNF) |\n|---|---|\n";
+      for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
+      out << "\n";
+      continue;
+    }
+    out << "|";
+    for (const std::string& e : t.events) out << " " << cell(e) << " |";
+    out << " selects |\n|";
+    for (size_t i = 0; i <= t.events.size(); ++i) out << "---|";
+    out << "\n";
+    for (const DecisionRow& row : t.rows) {
+      out << "|";
+      for (bool present : row.present) out << (present ? " 1 |" : " 0 |");
+      std::string selected;
+      for (const std::string& r : row.selected) selected += (selected.empty() ? "" : ", ") + r;
+      if (row.selected.size() > 1) selected = "**" + selected + "** (conflict)";
+      out << " " << (selected.empty() ? "-" : selected) << " |\n";
+    }
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+std::string render_index_markdown(const DocsInput& input) {
+  const model::App& app = *input.app;
+  std::ostringstream out;
+  out << "# " << app.name << "\n\n";
+  if (!app.description.empty()) out << app.description << "\n\n";
+  if (!app.spec_file.empty())
+    out << "Generated by `arbc docs` from `" << app.spec_file << "`; do not edit by hand.\n\n";
+  if (!input.diagram_svg.empty()) out << "![" << app.name << "](" << input.diagram_svg << ")\n\n";
+  modules_section(app, out);
+  connections_section(app, out);
+  events_section(app, out);
+  decision_section(app, out);
+  if (!input.verdicts.empty()) {
+    out << "## Verification\n\n";
+    for (const std::string& v : input.verdicts) out << "- " << v << "\n";
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace arbc::docs

@@ -1,0 +1,12 @@
+// One line saying what a connection's monitor does, for the docs' connections table.
+#pragma once
+
+#include <string>
+
+#include "runtime/app_model.h"
+
+namespace arbc::docs {
+
+std::string monitor_summary(const model::Connection& c);
+
+}  // namespace arbc::docs

@@ -1,0 +1,22 @@
+#include "runtime/effective_guard.h"
+
+#include <algorithm>
+
+namespace arbc::model {
+
+Constraint effective_guard(const App& app, std::string_view port, const Connection& rule) {
+  if (rule.opaque) return rule.constraint;
+  std::vector<Constraint> parts{rule.constraint};
+  for (const std::string& e : rule.must_set) parts.push_back(Constraint::event_ref(e));
+  std::vector<const Connection*> into = app.connections_into(port);
+  for (const std::string& e : rule.must_unset) {
+    bool set_elsewhere = std::any_of(into.begin(), into.end(), [&](const Connection* other) {
+      return other != &rule &&
+             std::find(other->sets.begin(), other->sets.end(), e) != other->sets.end();
+    });
+    if (!set_elsewhere) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
+  }
+  return Constraint::conjunction(std::move(parts));
+}
+
+}  // namespace arbc::model
