@@ -62,9 +62,15 @@ void render_into(const Diagnostic& d, SourceCache* sources, std::string& out) {
     out += "  ";
     out += text;
     out += "\n  ";
-    // Keep tabs so the caret lines up under tab-indented source.
+    // Columns count characters, not bytes: one pad per UTF-8 character (continuation bytes
+    // add nothing). Keep tabs so the caret lines up under tab-indented source.
     size_t col = static_cast<size_t>(loc.column - 1);
-    for (size_t i = 0; i < col && i < text.size(); ++i) out += text[i] == '\t' ? '\t' : ' ';
+    size_t chars = 0;
+    for (size_t i = 0; chars < col && i < text.size(); ++i) {
+      if ((static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) continue;
+      out += text[i] == '\t' ? '\t' : ' ';
+      ++chars;
+    }
     out += '^';
     if (loc.end_line == loc.line && loc.end_column > loc.column + 1) {
       size_t last = std::min(static_cast<size_t>(loc.end_column - 1), text.size());

@@ -105,7 +105,8 @@ struct Expr {
   bool is_int = false;
   bool boolean = false;
   std::vector<std::string> field_names;  // Kind::Record
-  std::vector<Loc> field_locs;           // Kind::Record
+  std::vector<Loc>
+      field_locs;  // Record: each field name; Call: [0] the callee; Lambda: [0] the parameter
   std::vector<ExprPtr> args;
 
   // sema:

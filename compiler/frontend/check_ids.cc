@@ -33,6 +33,7 @@ constexpr CheckId kIds[] = {
     {"port-direction", "an `in` port used as a source or an `out` port as a destination"},
     {"predicate-type", "a derived event's predicate is not bool"},
     {"script-alone", "a body with `script` that contains other statements"},
+    {"script-missing", "a `script` file that does not exist beside the spec"},
     {"set-fed-event", "monitor code sets or unsets an event fed from a stream"},
     {"statement-context", "a statement where it cannot run (emit in `every`, nested `every`)"},
     {"status-source-type", "an `events from` source port that is not list<string>"},

@@ -179,6 +179,17 @@ TEST(Frontend, EveryErrorIsReportedNotJustTheFirst) {
   EXPECT_EQ(ids(r), "unknown-type unknown-type unknown-module ");
 }
 
+TEST(Frontend, NonAsciiTextKeepsItsBytesAndColumnsCountCharacters) {
+  CheckResult r = check_text(
+      "app t \"caf\xC3\xA9 \xE2\x82\xAC\";\nmodule M \"\xC3\xA9t\xC3\xA9\" { out x: flot; }\n",
+      "u.spec");
+  ASSERT_TRUE(r.spec);
+  EXPECT_EQ(r.spec->app->doc, "caf\xC3\xA9 \xE2\x82\xAC");
+  EXPECT_EQ(r.spec->modules[0].doc, "\xC3\xA9t\xC3\xA9");
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].loc.column, 25);  // characters, not bytes (which would be 27)
+}
+
 TEST(Frontend, RenderCapsTheNumberOfErrors) {
   std::vector<Diagnostic> many(60);
   for (Diagnostic& d : many) d.message = "x";

@@ -1,6 +1,8 @@
 // Semantic analysis of monitor bodies: the statements of a rule or a `connect`, their scopes,
 // where each statement may appear, the events they set, and the emitted values' types
 // (the paper's first integration rule: both sides of a connection carry the same type).
+#include <filesystem>
+
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
 
@@ -40,6 +42,24 @@ std::vector<std::string> Scope::names() const {
   for (const auto& frame : frames_)
     for (const auto& [name, binding] : frame) out.push_back(name);
   return out;
+}
+
+// The script is read at build time, relative to the spec's folder; a missing one is caught now.
+// Specs checked from memory (no such file on disk) skip the check.
+void Sema::check_script_file(const Stmt& s) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path spec_path(spec_.file);
+  if (spec_.file.empty() || !fs::is_regular_file(spec_path, ec)) return;
+  fs::path script = spec_path.parent_path() / s.text;
+  if (fs::path(s.text).is_absolute()) script = s.text;
+  if (!fs::is_regular_file(script, ec)) {
+    std::string where = script.string() == s.text ? "" : "looked for " + script.string() + "; ";
+    error(s.loc,
+          "script file '" + s.text + "' not found (" + where +
+              "a script path is relative to the spec's folder)",
+          "script-missing");
+  }
 }
 
 bool Sema::definitely_emits(const Block& body) {
@@ -214,6 +234,7 @@ void Sema::check_body(Block& body, Scope& scope, BodyContext& ctx) {
           error(s.loc, "`script` replaces the whole body: put it at the top level",
                 "statement-context");
         }
+        check_script_file(s);
         break;
     }
   }

@@ -73,6 +73,7 @@ class Sema {
   // ---- bodies (sema_body.cc) ----
   void check_body(ast::Block& body, Scope& scope, BodyContext& ctx);
   static bool definitely_emits(const ast::Block& body);
+  void check_script_file(const ast::Stmt& s);
 
   ast::Spec& spec_;
   std::vector<Diagnostic>& out_;

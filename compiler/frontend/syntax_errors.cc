@@ -128,7 +128,18 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (first_) return;
     auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
     if (!parser || !offending) return;
-    first_ = describe(parser, offending);
+    try {
+      first_ = describe(parser, offending);
+    } catch (const std::exception&) {
+      // Describing is best effort; an ANTLR internal state we did not foresee must not turn a
+      // user's syntax error into a crash.
+      Diagnostic d;
+      d.id = "syntax";
+      d.loc = token_location(offending, file_);
+      d.message = "unexpected " + found_text(offending);
+      first_ = d;
+      return;
+    }
     // At the real end of the file, point just past the last token rather than at an EOF
     // token whose position the chunked parse may have guessed.
     antlr4::Token* previous = parser->getTokenStream()->LT(-1);

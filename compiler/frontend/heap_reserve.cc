@@ -1,0 +1,39 @@
+#include "compiler/frontend/heap_reserve.h"
+
+#include <malloc.h>
+#include <sys/mman.h>
+
+#include <cstdint>
+#include <cstdlib>
+
+namespace arbc::frontend {
+
+namespace {
+
+constexpr size_t kThreshold = 256u << 10;  // smaller specs parse in milliseconds anyway
+constexpr size_t kBytesPerSpecByte = 128;  // measured peak heap / spec size, rounded up
+constexpr size_t kMaxReserve = 2048u << 20;
+constexpr size_t kHugePage = 2u << 20;
+
+bool reserved = false;
+
+}  // namespace
+
+void reserve_heap_for_spec(size_t spec_bytes) {
+  if (reserved || spec_bytes < kThreshold) return;
+  reserved = true;
+  size_t want = spec_bytes * kBytesPerSpecByte;
+  if (want / kBytesPerSpecByte != spec_bytes || want > kMaxReserve) want = kMaxReserve;
+  // Keep freed memory in the heap, and serve this one block from the heap (brk), not mmap.
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(kMaxReserve));
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMaxReserve));
+  void* block = std::malloc(want);
+  mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // glibc's default for later allocations
+  if (!block) return;
+  uintptr_t start = (reinterpret_cast<uintptr_t>(block) + kHugePage - 1) & ~(kHugePage - 1);
+  uintptr_t end = (reinterpret_cast<uintptr_t>(block) + want) & ~(kHugePage - 1);
+  if (end > start) madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
+  std::free(block);  // back into the heap's top chunk, marked for huge pages
+}
+
+}  // namespace arbc::frontend
