@@ -1,11 +1,15 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE]`
+//                    [--seed N] [--trace FILE] [--no-verify]`
 // Runs a built application on the embedded runtime (DESIGN.md sections 7, 8), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
-// was quarantined).
+// was quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a
+// temporary directory by `arbc build`; a refuted proof exits 1.
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -36,25 +40,69 @@ bool parse_duration(const std::string& text, double* seconds) {
   return true;
 }
 
-// Turns the command's input into a built app directory. A directory is used as is. A spec
-// must first be built (and verified unless --no-verify) into a temporary directory; that
-// needs the compiler stage, which is added here once it exists.
-bool prepare_app_dir(const std::string& input, std::string* dir, std::string* error) {
+// A temporary directory removed when the run ends.
+struct TempDir {
+  std::string path;
+  ~TempDir() {
+    std::error_code ignored;
+    if (!path.empty()) fs::remove_all(path, ignored);
+  }
+};
+
+// Builds (and, unless no_verify, verifies) a spec into `temp` with `arbc build`, and returns
+// the app directory it wrote. Returns the build's exit code on failure (1 refuted, 2 bad
+// input; its diagnostics are already printed).
+int build_spec(const std::string& spec, bool no_verify, TempDir* temp, std::string* dir) {
+  std::string pattern = (fs::temp_directory_path() / "arbc-run-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) {
+    std::fprintf(stderr, "arbc run: error: cannot create a temporary directory for the build\n");
+    return kExitRuntimeFailure;
+  }
+  temp->path = pattern;
+  std::vector<std::string> words = {"build", spec, "-o", temp->path};
+  if (no_verify) words.push_back("--no-verify");
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  int rc = build_command(std::span<char*>(argv.data(), argv.size()));
+  if (rc != kExitOk) return rc;
+  for (const fs::directory_entry& entry : fs::directory_iterator(temp->path)) {
+    if (fs::exists(entry.path() / "app.json")) {
+      *dir = entry.path().string();
+      return kExitOk;
+    }
+  }
+  std::fprintf(stderr, "arbc run: error: `arbc build %s` wrote no app directory\n", spec.c_str());
+  return kExitRuntimeFailure;
+}
+
+// Turns the command's input into a built app directory: a directory is used as is, a spec is
+// built first. Returns an exit code (kExitOk: *dir is ready).
+int prepare_app_dir(const std::string& input, bool no_verify, TempDir* temp, std::string* dir) {
   if (fs::is_directory(input)) {
     *dir = input;
-    return true;
+    return kExitOk;
   }
-  if (fs::path(input).extension() == ".spec") {
-    *error = input +
-             ": running a spec directly needs `arbc build`, which this build of arbc does not "
-             "have yet; build it with `arbc build " +
-             input + " -o OUT` and run OUT/<app>";
-    return false;
-  }
-  *error = input +
-           ": not an app directory (one with app.json and monitors/, written by "
-           "`arbc build`) nor a .spec file";
-  return false;
+  if (fs::path(input).extension() == ".spec") return build_spec(input, no_verify, temp, dir);
+  std::fprintf(stderr,
+               "arbc run: error: %s: not an app directory (one with app.json and monitors/, "
+               "written by `arbc build`) nor a .spec file\n",
+               input.c_str());
+  return kExitBadInput;
+}
+
+// Ctrl-C ends the run cleanly (counters, summary, trace) instead of killing it.
+std::atomic<bool> interrupted{false};
+
+void on_interrupt(int) { interrupted = true; }
+
+void watch_for_interrupt(Runtime& runtime, double period) {
+  runtime.executor().post(runtime.now() + period, [&runtime, period] {
+    if (interrupted) {
+      runtime.executor().stop();
+      return;
+    }
+    watch_for_interrupt(runtime, period);
+  });
 }
 
 void print_errors(const std::vector<std::string>& errors) {
@@ -67,11 +115,13 @@ int run_command(std::span<char*> args) {
   CLI::App cli{"Run a built application on the embedded runtime", "arbc run"};
   std::string input, duration_text = "60s";
   std::vector<std::string> plugins;
+  bool no_verify = false;
   RunOptions options;
   cli.add_option("app", input, "an app directory written by `arbc build` (or a .spec)")->required();
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
+  cli.add_flag("--no-verify", no_verify, "with a SPEC: build it without the proof");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   cli.add_option("--seed", options.seed, "seed of every random generator (default 1)");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
@@ -99,10 +149,9 @@ int run_command(std::span<char*> args) {
   print_errors(Registry::global().errors());
 
   std::string dir, error;
-  if (!prepare_app_dir(input, &dir, &error)) {
-    print_errors({error});
-    return kExitBadInput;
-  }
+  TempDir temp;
+  int prepared = prepare_app_dir(input, no_verify, &temp, &dir);
+  if (prepared != kExitOk) return prepared;
   AppDirLoad load = load_app_dir(dir);
   if (!load.ok) {
     print_errors(load.errors);
@@ -120,7 +169,13 @@ int run_command(std::span<char*> args) {
     return kExitBadInput;
   }
 
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  watch_for_interrupt(*runtime, options.realtime ? 0.05 : 1.0);
   runtime->run();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (interrupted) std::fputs("arbc run: interrupted\n", stderr);
 
   std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", load.app.name.c_str(),
               runtime->scenario().c_str(), static_cast<unsigned long long>(options.seed),

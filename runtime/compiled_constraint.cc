@@ -71,7 +71,13 @@ CompiledConstraint CompiledConstraint::compile(const Constraint& c, EventIndex& 
     // A literal and its negation together: unsatisfiable, keep it as a program for clarity.
     bool contradiction = false;
     for (size_t i = 0; i < n; ++i) contradiction |= (out.required_[i] & out.forbidden_[i]) != 0;
-    if (!contradiction) return out;
+    if (!contradiction) {
+      if (n > 0) {
+        out.required0_ = out.required_[0];
+        out.forbidden0_ = out.forbidden_[0];
+      }
+      return out;
+    }
   }
   out.is_cube_ = false;
   out.required_.clear();

@@ -58,6 +58,11 @@ class CompiledConstraint {
 
   bool evaluate(const EventMask& present) const {
     if (is_cube_) {
+      // Up to 64 events (every port of the reference apps): one word, no loop.
+      if (required_.size() <= 1) {
+        uint64_t w = present.word(0);
+        return (w & required0_) == required0_ && (w & forbidden0_) == 0;
+      }
       for (size_t i = 0; i < required_.size(); ++i) {
         uint64_t w = present.word(static_cast<int>(i));
         if ((w & required_[i]) != required_[i] || (w & forbidden_[i]) != 0) return false;
@@ -78,6 +83,7 @@ class CompiledConstraint {
 
   bool is_cube_ = true;  // a conjunction of literals: two mask comparisons per word
   std::vector<uint64_t> required_, forbidden_;
+  uint64_t required0_ = 0, forbidden0_ = 0;  // word 0 of the masks, for the one-word case
   std::vector<Instr> program_;
 };
 

@@ -126,6 +126,7 @@ struct LuaMonitor::Call {
   const Type* destination = nullptr;
   const MonitorOptions* options = nullptr;
   bool result = true;
+  std::string reason;
   Value output;
   std::string type_error;
 };
@@ -189,12 +190,14 @@ int LuaMonitor::run_accept(lua_State* L) {
   lua_rawsetp(L, LUA_REGISTRYINDEX, &staged_message_key);
   if (!push_callback(L, "accept")) return 0;
   lua_pushvalue(L, -2);
-  lua_call(L, 1, 1);
-  if (!lua_isboolean(L, -1)) {
-    call->type_error = "accept must return a boolean, got " + kind_of(L, -1);
+  lua_call(L, 1, 2);
+  if (!lua_isboolean(L, -2)) {
+    call->type_error = "accept must return a boolean, got " + kind_of(L, -2);
     return 0;
   }
-  call->result = lua_toboolean(L, -1);
+  call->result = lua_toboolean(L, -2);
+  // `return false, "no-value"`: a rejection with a reason.
+  if (!call->result && lua_type(L, -1) == LUA_TSTRING) call->reason = lua_tostring(L, -1);
   return 0;
 }
 
@@ -239,12 +242,13 @@ LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
   return r;
 }
 
-LuaCall LuaMonitor::accept(const Value& msg, bool* accepted) {
+LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason) {
   Call call;
   call.message = &msg;
   LuaCall r = sandbox_->protected_call(run_accept, &call);
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *accepted = r.ok() && call.result;
+  if (reason) *reason = std::move(call.reason);
   return r;
 }
 

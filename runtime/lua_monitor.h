@@ -1,7 +1,7 @@
 // A port monitor script in its own sandbox, with the PortMonitor API of DESIGN.md section 6:
 //
 //   PortMonitor.create(options)  options = {source=, destination=, connection=}
-//   PortMonitor.accept(msg) -> boolean       PortMonitor.update(msg) -> value
+//   PortMonitor.accept(msg) -> boolean [, reason]   PortMonitor.update(msg) -> value
 //   PortMonitor.trig()                       PortMonitor.destroy()
 //   PortMonitor.setEvent(name [, lifetime_s])  PortMonitor.unsetEvent(name)
 //   PortMonitor.setConstraint(text)  PortMonitor.getConstraint()
@@ -54,9 +54,10 @@ class LuaMonitor {
   bool defines(const char* callback) const;
 
   // Each runs one callback under the sandbox's limits. A callback returning the wrong type
-  // is an error. accept() also stages msg for the following update().
+  // is an error. accept() also stages msg for the following update(); when accept returns
+  // `false, "reason"`, *reason receives the string.
   LuaCall create(const MonitorOptions& options, bool* created);
-  LuaCall accept(const Value& msg, bool* accepted);
+  LuaCall accept(const Value& msg, bool* accepted, std::string* reason = nullptr);
   LuaCall update(const Type& destination, Value* out);
   LuaCall trig();
   LuaCall destroy();

@@ -88,7 +88,8 @@ void Runtime::process(Connection& c, const Value& msg) {
   // 1. accept (also stages the message for update).
   if (c.monitor && (c.has_accept || c.has_update)) {
     bool accepted = false;
-    LuaCall call = c.monitor->accept(msg, &accepted);
+    std::string reason;
+    LuaCall call = c.monitor->accept(msg, &accepted, &reason);
     if (call.status == LuaCall::Status::NoValue) {
       c.consecutive_errors = 0;
       drop(c, DropReason::NoValue, "accept");
@@ -101,7 +102,13 @@ void Runtime::process(Connection& c, const Value& msg) {
     }
     if (!accepted) {
       c.consecutive_errors = 0;
-      drop(c, DropReason::Rejected);
+      if (reason == drop_reason_name(DropReason::NoValue)) {
+        drop(c, DropReason::NoValue, "accept");
+      } else if (reason == drop_reason_name(DropReason::Throttled)) {
+        drop(c, DropReason::Throttled, "accept");
+      } else {
+        drop(c, DropReason::Rejected, reason);
+      }
       return;
     }
   }

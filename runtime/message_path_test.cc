@@ -194,6 +194,27 @@ TEST(MessagePathTest, NoValueIsADropNotAnError) {
   EXPECT_EQ(TestApp::sink(*rt).got[0].value.as_int(), 7);
 }
 
+TEST(MessagePathTest, AcceptMayGiveTheDropReason) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Src.x", "Sink.x", "true",
+            "local reasons = {'no-value', 'throttled', 'too far'}\n"
+            "PortMonitor.accept = function(m)\n"
+            "  if m == 0 then return true end\n"
+            "  return false, reasons[m]\n"
+            "end\n");
+  auto rt = t.start();
+  for (int i = 0; i < 4; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
+  rt->advance(5);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.delivered, 1u);
+  EXPECT_EQ(s.drops(DropReason::NoValue), 1u);
+  EXPECT_EQ(s.drops(DropReason::Throttled), 1u);
+  EXPECT_EQ(s.drops(DropReason::Rejected), 1u);
+  EXPECT_EQ(s.errors, 0u);
+}
+
 TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
   TestApp t;
   t.module("Src", {"out x: int"});

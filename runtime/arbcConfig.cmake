@@ -1,0 +1,10 @@
+# find_package(arbc): the arbc runtime for module authors (docs/runtime.md).
+#   add_library(my_modules MODULE my_modules.cc)
+#   target_link_libraries(my_modules PRIVATE arbc::arbc_runtime)
+include(CMakeFindDependencyMacro)
+find_dependency(PkgConfig)
+pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4)
+find_dependency(Eigen3 NO_MODULE)
+find_dependency(nlohmann_json)
+find_dependency(Threads)
+include("${CMAKE_CURRENT_LIST_DIR}/arbcTargets.cmake")
