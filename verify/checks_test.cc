@@ -157,6 +157,15 @@ TEST(Checks, UnfedWhenAFeedIsMissing) {
   EXPECT_EQ(report.verdict, Verdict::Refuted);
 }
 
+TEST(Checks, UnfedIsNotReportedWhenAScriptRuleMaySetTheEvent) {
+  model::App app = testing::table_clean_model();
+  std::erase_if(app.connections, [](const model::Connection& c) {
+    return c.name == "feed_PullObject_status__PickAndPlace_cmd";
+  });
+  connection(app, "put").opaque = true;  // `script "put.lua";`: its setEvent calls are unknown
+  EXPECT_TRUE(findings(run(app), "unfed").empty());
+}
+
 TEST(Checks, UnfedWhenOnlyAnAssertReadsTheEvent) {
   model::App app = testing::table_clean_model();
   arbitrated(app, "PullObject.cmd").asserts.push_back({"pull", parse("e_pull_idle"), {}});

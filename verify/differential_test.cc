@@ -190,8 +190,7 @@ struct BruteForce {
       if (!s.count(e)) return false;
     }
     for (const std::string& e : c.must_unset) {
-      bool forced_present = std::count(c.must_set.begin(), c.must_set.end(), e) > 0;
-      if (!other_sets(c, e) && !forced_present && s.count(e)) return false;
+      if (!other_sets(c, e) && s.count(e)) return false;
     }
     return true;
   }

@@ -134,6 +134,17 @@ class PortChecker {
     auto known = [this](int i, int j) { return shortcut_.can_hold_together(i, j); };
     if (solver_.overlapping_pairs(known, pairs) == Answer::Unknown) {
       unknown("which rules overlap");
+      if (pairs.empty()) {
+        // The at-least-two query already refuted the port: say so even without a pair.
+        Finding f;
+        f.check = kCheckExclusive;
+        f.severity = Severity::Error;
+        f.port = scope_.port->port;
+        f.loc = scope_.port->loc;
+        f.message = "two rules of " + scope_.port->port +
+                    " can be selected in one state (which ones was not found in time)";
+        result_.findings.push_back(std::move(f));
+      }
     }
     result_.overlapping_pairs = static_cast<int>(pairs.size());
     int last = -1;  // index of the last reported pair's finding

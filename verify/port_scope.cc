@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "runtime/effective_guard.h"
+
 namespace arbc::verify {
 
 Constraint at_most_one(const std::vector<std::string>& events) {
@@ -26,7 +28,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 bool set_by_other(const std::vector<const model::Connection*>& into, const model::Connection* self,
                   const std::string& event) {
   for (const model::Connection* c : into) {
-    if (c != self && (contains(c->sets, event) || contains(c->must_set, event))) return true;
+    if (c != self && contains(c->sets, event)) return true;
   }
   return false;
 }
@@ -57,25 +59,19 @@ bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, 
     }
     ScopedRule rule;
     rule.connection = conn;
-    std::vector<Constraint> parts;
-    if (conn->constraint.op != Constraint::Op::True) parts.push_back(conn->constraint);
+    // The one definition of E_c, shared with the docs' decision tables.
+    rule.effective_guard = model::effective_guard(app, port.port, *conn);
     if (!conn->opaque) {
+      // The same parts again, named, to explain a counterexample ("its monitor sets ...").
       for (const std::string& e : conn->must_set) {
-        if (contains(rule.forced_present, e)) continue;
-        rule.forced_present.push_back(e);
-        parts.push_back(Constraint::event_ref(e));
+        if (!contains(rule.forced_present, e)) rule.forced_present.push_back(e);
       }
       for (const std::string& e : conn->must_unset) {
-        // An unset removes only this connection's own entry: another setter may keep it present.
-        if (contains(rule.forced_absent, e) || contains(rule.forced_present, e) ||
-            set_by_other(into, conn, e)) {
-          continue;
+        if (!contains(rule.forced_absent, e) && !set_by_other(into, conn, e)) {
+          rule.forced_absent.push_back(e);
         }
-        rule.forced_absent.push_back(e);
-        parts.push_back(Constraint::negate(Constraint::event_ref(e)));
       }
     }
-    rule.effective_guard = Constraint::conjunction(std::move(parts));
     rule.effective_guard.collect_events(events);
     scope.rules.push_back(std::move(rule));
   }

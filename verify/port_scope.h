@@ -1,6 +1,6 @@
 // The proof obligation of one arbitrated port, before any solver sees it (DESIGN.md section 5).
 //
-// For each rule c the effective guard is
+// For each rule c the effective guard (runtime/effective_guard.h) is
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every accepting path that no other connection
 //                      of the port sets),

@@ -39,6 +39,7 @@ TEST(Fixtures, AppJsonFilesMatchTheModels) {
       {"table_clean.app.json", testing::table_clean_model()},
       {"table_clean_take_mutant.app.json", take_mutant()},
       {"search_and_track.app.json", testing::search_and_track_model()},
+      {"table_clean_warnings.app.json", testing::table_clean_with_warnings()},
   };
   for (const auto& [name, app] : fixtures) {
     std::string json = model::to_app_json(app);
@@ -133,6 +134,15 @@ TEST(SarifFormat, UnknownIsAnErrorResult) {
   ASSERT_FALSE(j["runs"][0]["results"].empty());
   EXPECT_EQ(j["runs"][0]["results"][0]["ruleId"], "unknown");
   EXPECT_EQ(j["runs"][0]["results"][0]["level"], "error");
+}
+
+// Every check id printed in diagnostics and SARIF helpUris has its section in docs/checks.md.
+TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
+  std::string docs = read(std::string(ARBC_SOURCE_DIR) + "/docs/checks.md");
+  for (const char* id : {kCheckExclusive, kCheckDead, kCheckUnfed, kCheckUnused, kCheckOwnership,
+                         kCheckComplete, kCheckAssert, kCheckUnknown, kCheckInternal}) {
+    EXPECT_THAT(docs, HasSubstr(std::string("\n## ") + id + "\n")) << id;
+  }
 }
 
 }  // namespace

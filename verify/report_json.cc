@@ -1,4 +1,4 @@
-// The JSON report (schema: docs/verify-json.md) and SARIF 2.1.0.
+// The JSON report (schema: docs/verify-json.md).
 #include <nlohmann/json.hpp>
 
 #include "verify/report_format.h"
@@ -60,47 +60,6 @@ Json port_json(const PortResult& p, bool stats) {
   return j;
 }
 
-const char* sarif_level(Severity s) {
-  switch (s) {
-    case Severity::Error:
-      return "error";
-    case Severity::Warning:
-      return "warning";
-    case Severity::Note:
-      return "note";
-  }
-  return "none";
-}
-
-struct CheckDoc {
-  const char* id;
-  const char* text;
-};
-constexpr CheckDoc kChecks[] = {
-    {kCheckExclusive, "Two rules of one arbitrated port can be selected in the same state."},
-    {kCheckDead, "A rule can never be selected."},
-    {kCheckUnfed, "A constraint or assert reads an event nothing sets into the port's container."},
-    {kCheckUnused, "An event is set but nothing reads it."},
-    {kCheckOwnership, "A monitor unsets an event it never sets."},
-    {kCheckComplete, "On a complete port, some state selects no rule."},
-    {kCheckAssert, "A rule can deliver while its asserted property is false."},
-    {kCheckUnknown, "The solver could not decide a check (timeout or resource limit)."},
-    {kCheckInternal, "Z3 and the runtime's constraint evaluator disagree (a bug in arbc)."},
-};
-
-Json sarif_location(const model::SourceLocation& loc) {
-  Json phys;
-  phys["artifactLocation"] = {{"uri", loc.file}};
-  if (loc.line > 0) {
-    Json region{{"startLine", loc.line}};
-    if (loc.column > 0) region["startColumn"] = loc.column;
-    if (loc.end_line > 0) region["endLine"] = loc.end_line;
-    if (loc.end_column > 0) region["endColumn"] = loc.end_column;
-    phys["region"] = region;
-  }
-  return Json{{"physicalLocation", phys}};
-}
-
 }  // namespace
 
 std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
@@ -127,52 +86,6 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     root["inputs"].push_back(std::move(j));
   }
   root["verdict"] = refuted ? "refuted" : unknown ? "unknown" : "proved";
-  return root.dump(2) + "\n";
-}
-
-std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version) {
-  Json rules = Json::array();
-  for (const CheckDoc& c : kChecks) {
-    rules.push_back({{"id", c.id},
-                     {"shortDescription", {{"text", c.text}}},
-                     {"helpUri", std::string("docs/checks.md#") + c.id}});
-  }
-  Json results = Json::array();
-  auto add = [&](const Finding& f) {
-    Json r;
-    r["ruleId"] = f.check;
-    r["level"] = sarif_level(f.severity);
-    std::string text = f.message;
-    for (const Note& n : f.notes) text += "\n" + n.message;
-    r["message"] = {{"text", text}};
-    r["locations"] = Json::array();
-    if (!f.loc.file.empty()) r["locations"].push_back(sarif_location(f.loc));
-    Json related = Json::array();
-    for (const Note& n : f.notes) {
-      if (n.loc.file.empty()) continue;
-      Json l = sarif_location(n.loc);
-      l["id"] = static_cast<int>(related.size());
-      l["message"] = {{"text", n.message}};
-      related.push_back(l);
-    }
-    if (!related.empty()) r["relatedLocations"] = related;
-    if (f.counterexample) {
-      r["properties"] = {
-          {"counterexample",
-           {{"present", f.counterexample->present}, {"absent", f.counterexample->absent}}}};
-    }
-    results.push_back(std::move(r));
-  };
-  for (const InputReport& in : inputs) {
-    for (const PortResult& p : in.report.ports) {
-      for (const Finding& f : p.findings) add(f);
-    }
-    for (const Finding& f : in.report.app_findings) add(f);
-  }
-  Json driver{{"name", "arbc"}, {"version", tool_version}, {"rules", rules}};
-  Json root{{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
-            {"version", "2.1.0"},
-            {"runs", Json::array({{{"tool", {{"driver", driver}}}, {"results", results}}})}};
   return root.dump(2) + "\n";
 }
 

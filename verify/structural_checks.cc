@@ -64,10 +64,13 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
   // unfed: per port, each read event must be set by some connection into the port.
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
     std::set<std::string> fed;
+    bool opaque_feeds = false;  // a `script` monitor may set any event: nothing is provably unfed
     for (const model::Connection* c : app.connections_into(port.port)) {
       std::set<std::string> s = events_set_by(*c);
       fed.insert(s.begin(), s.end());
+      opaque_feeds |= c->opaque;
     }
+    if (opaque_feeds) continue;
     for (const auto& [event, read] : reads[port.port]) {
       if (fed.count(event)) continue;
       Finding f;

@@ -1,5 +1,6 @@
 // Checks that need no solver: who sets, unsets and reads which event (DESIGN.md section 5).
 //   unfed      a constraint or assert of a port reads an event no connection into it sets
+//              (not reported for a port with a `script` rule: its code may set anything)
 //   unused     a connection sets an event its destination never reads
 //   ownership  a monitor unsets an event it never sets (an unset removes only its own entry)
 #pragma once

@@ -78,6 +78,17 @@ model::ArbitratedPort arbitrated_port(const std::string& name, std::vector<std::
   return a;
 }
 
+// Points every location at a mutated copy of the spec, so diagnostics quote lines as changed.
+void relocate(model::App& app, const std::string& spec) {
+  app.spec_file = spec;
+  for (model::Event& e : app.events) e.loc.file = spec;
+  for (model::Connection& c : app.connections) c.loc.file = spec;
+  for (model::ArbitratedPort& p : app.arbitrated_ports) {
+    p.loc.file = spec;
+    for (model::Assertion& a : p.asserts) a.loc.file = spec;
+  }
+}
+
 }  // namespace
 
 std::string table_clean_spec_path() { return "tests/verify/table_clean.spec"; }
@@ -175,15 +186,17 @@ model::App table_clean_model() {
 model::App table_clean_take_mutant() {
   model::App app = table_clean_model();
   connection(app, "take").constraint = parse("e_arm_idle and e_pull_idle");
-  // Point every location at the mutated spec, so diagnostics quote the line as changed.
-  const std::string spec = "tests/verify/table_clean_take_mutant.spec";
-  app.spec_file = spec;
-  for (model::Event& e : app.events) e.loc.file = spec;
-  for (model::Connection& c : app.connections) c.loc.file = spec;
-  for (model::ArbitratedPort& p : app.arbitrated_ports) {
-    p.loc.file = spec;
-    for (model::Assertion& a : p.asserts) a.loc.file = spec;
-  }
+  relocate(app, "tests/verify/table_clean_take_mutant.spec");
+  return app;
+}
+
+model::App table_clean_with_warnings() {
+  model::App app = table_clean_model();
+  connection(app, "pull").constraint = parse("e_taken and not e_taken and e_arm_idle");
+  model::Connection& feed = connection(app, "feed_FaceDetector_face__Speak_text");
+  feed.sets.push_back("e_taken");
+  feed.unsets.push_back("e_taken");
+  relocate(app, "tests/verify/table_clean_warnings.spec");
   return app;
 }
 

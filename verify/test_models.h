@@ -17,6 +17,9 @@ model::App table_clean_model();
 // table_clean with `not e_taken and` removed from `take`
 // (tests/verify/table_clean_take_mutant.spec).
 model::App table_clean_take_mutant();
+// table_clean with warnings only: `pull` made dead, and a feed into Speak.text carrying an
+// event no rule there reads (unused). Proved; refuted with --strict.
+model::App table_clean_with_warnings();
 model::App search_and_track_model();
 
 // Helpers to edit models in tests.

@@ -29,9 +29,34 @@ check proved.sarif 0 --format sarif tests/verify/table_clean.app.json
 check refuted.txt 1 tests/verify/table_clean_take_mutant.app.json
 check refuted.json 1 --format json tests/verify/table_clean_take_mutant.app.json
 check refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.app.json
-check strict_proved.txt 0 --strict tests/verify/table_clean.app.json
+check warnings.txt 0 tests/verify/table_clean_warnings.app.json
+check warnings_strict.txt 1 --strict tests/verify/table_clean_warnings.app.json
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 check missing.txt 2 tests/verify/no_such_app.json
-check spec_without_compiler.txt 2 tests/verify/table_clean.spec
+# Specs go through the compiler when this arbc has it (front end + lowering); else a clear error.
+probe=$("$arbc" verify specs/search_and_track.spec 2>&1)
+if [[ $probe == *"needs the spec compiler"* ]]; then
+  check spec_without_compiler.txt 2 tests/verify/table_clean.spec
+else
+  check spec_proved.txt 0 specs/table_clean.spec specs/search_and_track.spec
+  check spec_refuted.txt 1 tests/verify/table_clean_take_mutant.spec
+  check spec_refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.spec
+fi
+
+# No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
+root=$PWD
+arbc=$(cd "$(dirname "$arbc")" && pwd)/$(basename "$arbc")
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
+dir=$root/$dir
+check no_args_no_specs.txt 2
+mkdir specs
+cp "$root/tests/verify/table_clean_take_mutant.spec" specs/
+if [[ $probe == *"needs the spec compiler"* ]]; then
+  check no_args_without_compiler.txt 2
+else
+  check no_args.txt 1
+fi
 check bad_format.txt 2 --format xml tests/verify/table_clean.app.json
 exit $failed
