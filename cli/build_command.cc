@@ -2,7 +2,9 @@
 // compile the spec, prove it, then write DIR/<app>/app.json and DIR/<app>/monitors/*.lua.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -37,12 +39,14 @@ int build_command(std::span<char*> args) {
   std::string target_name(codegen::kDefaultTarget);
   bool no_verify = false;
   bool strict = false;
+  bool stats = false;
   cli.add_option("SPEC", spec, "the spec file, e.g. specs/table_clean.spec")->required();
   cli.add_option("-o,--output", out_dir, "directory to write DIR/<app>/ into")->default_val("out");
   cli.add_option("--target", target_name, "code-generation target: " + target_list())
       ->default_val(std::string(codegen::kDefaultTarget));
   cli.add_flag("--no-verify", no_verify, "write the artifacts without running the proof");
   cli.add_flag("--strict", strict, "verifier warnings (dead, unused rules) stop the build too");
+  cli.add_flag("--stats", stats, "print the time each phase took to stderr");
   try {
     std::vector<std::string> rest;
     for (size_t i = args.size(); i > 1; --i) rest.emplace_back(args[i - 1]);
@@ -59,7 +63,21 @@ int build_command(std::span<char*> args) {
     return kExitBadInput;
   }
 
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  std::clock_t c0 = std::clock();
+  auto phase = [&](const char* name) {
+    auto t = Clock::now();
+    std::clock_t c = std::clock();
+    if (stats)
+      std::fprintf(stderr, "arbc build: %-8s %.3f s wall, %.3f s cpu\n", name,
+                   std::chrono::duration<double>(t - t0).count(),
+                   static_cast<double>(c - c0) / CLOCKS_PER_SEC);
+    t0 = t;
+    c0 = c;
+  };
   lower::CompiledSpec compiled = lower::compile_spec(spec);
+  phase("compile");
   std::fputs(frontend::render_diagnostics(compiled.diagnostics, &compiled.sources).c_str(), stderr);
   if (!compiled.ok) {
     std::fprintf(stderr, "arbc build: %s has errors; nothing was written\n", spec.c_str());
@@ -72,9 +90,11 @@ int build_command(std::span<char*> args) {
     VerifyGate gate = verify_before_writing(lowered.app, spec, &compiled.sources, strict);
     if (!gate.pass) return gate.exit_code;
     verified = gate.summary;
+    phase("verify");
   }
 
   codegen::CodegenResult generated = target->generate(lowered);
+  phase("generate");
   for (const Diagnostic& d : generated.diagnostics)
     std::fputs(render(d, &compiled.sources).c_str(), stderr);
   if (!generated.ok) {
@@ -86,6 +106,7 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: %s\n", error.c_str());
     return kExitBadInput;
   }
+  phase("write");
   std::fputs(build_summary(lowered.app, spec, out_dir, verified).c_str(), stdout);
   return kExitOk;
 }

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 namespace arbc::model {
 
@@ -312,10 +313,10 @@ std::string to_app_json(const App& app) {
       pj["direction"] = p.direction == Direction::In ? "in" : "out";
       pj["type"] = p.type ? p.type->to_string() : "";
       pj["loc"] = location_json(p.loc);
-      mj["ports"].push_back(pj);
+      mj["ports"].push_back(std::move(pj));
     }
     mj["loc"] = location_json(m.loc);
-    root["modules"].push_back(mj);
+    root["modules"].push_back(std::move(mj));
   }
   root["events"] = Json::array();
   for (const Event& e : app.events) {
@@ -324,7 +325,7 @@ std::string to_app_json(const App& app) {
     ej["lifetime"] = optional_number(e.lifetime);
     ej["source"] = e.source;
     ej["loc"] = location_json(e.loc);
-    root["events"].push_back(ej);
+    root["events"].push_back(std::move(ej));
   }
   root["connections"] = Json::array();
   for (const Connection& c : app.connections) {
@@ -344,10 +345,15 @@ std::string to_app_json(const App& app) {
     cj["throttle"] = optional_number(c.throttle);
     cj["monitor"] = c.monitor;
     cj["source_map"] = Json::array();
-    for (const SourceMapEntry& e : c.source_map)
-      cj["source_map"].push_back(Json::array({e.monitor_line, e.spec_line}));
+    Json& map = cj["source_map"];
+    for (const SourceMapEntry& e : c.source_map) {
+      Json pair = Json::array();
+      pair.push_back(e.monitor_line);
+      pair.push_back(e.spec_line);
+      map.push_back(std::move(pair));
+    }
     cj["loc"] = location_json(c.loc);
-    root["connections"].push_back(cj);
+    root["connections"].push_back(std::move(cj));
   }
   root["arbitrated_ports"] = Json::array();
   for (const ArbitratedPort& a : app.arbitrated_ports) {
@@ -362,24 +368,24 @@ std::string to_app_json(const App& app) {
       sj["rule"] = as.rule;
       sj["property"] = constraint_json(as.property);
       sj["loc"] = location_json(as.loc);
-      aj["asserts"].push_back(sj);
+      aj["asserts"].push_back(std::move(sj));
     }
     aj["loc"] = location_json(a.loc);
-    root["arbitrated_ports"].push_back(aj);
+    root["arbitrated_ports"].push_back(std::move(aj));
   }
   root["exclusive_groups"] = Json::array();
   for (const ExclusiveGroup& g : app.exclusive_groups) {
     Json gj;
     gj["events"] = g.events;
     gj["loc"] = location_json(g.loc);
-    root["exclusive_groups"].push_back(gj);
+    root["exclusive_groups"].push_back(std::move(gj));
   }
   root["invariants"] = Json::array();
   for (const Invariant& inv : app.invariants) {
     Json ij;
     ij["formula"] = constraint_json(inv.formula);
     ij["loc"] = location_json(inv.loc);
-    root["invariants"].push_back(ij);
+    root["invariants"].push_back(std::move(ij));
   }
   return root.dump(2) + "\n";
 }

@@ -12,13 +12,14 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
   model::App app = lowered.app;  // gains the monitors' source maps
   SpecLines lines(lowered.spec_text);
   std::vector<OutputFile> monitors;
+  lower::LuaSyntaxChecker lua;
   for (const lower::MonitorPlan& plan : lowered.monitors) {
     model::Connection& c = app.connections[plan.connection];
     if (c.monitor.empty()) continue;
     MonitorText m = write_monitor(lowered, plan, lines);
     // Every generated monitor must compile; if one does not, that is arbc's bug, and saying so
     // at build time beats a monitor failing on the robot.
-    std::string error = lower::check_lua_syntax(m.text, c.monitor);
+    std::string error = lua.check(m.text, c.monitor);
     if (!error.empty()) {
       Diagnostic d;
       d.loc = c.loc;

@@ -1,7 +1,7 @@
 #include "compiler/codegen/write_artifacts.h"
 
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 namespace arbc::codegen {
 
@@ -22,13 +22,17 @@ std::string write_artifacts(const std::string& out_dir, const std::string& app_n
   fs::remove_all(staging, ec);
   if (!fs::create_directories(staging, ec) && ec)
     return "cannot create '" + staging.string() + "': " + ec.message();
+  fs::path made;  // the last directory created: monitors come in a row
   for (const OutputFile& f : files) {
     fs::path path = staging / f.path;
-    fs::create_directories(path.parent_path(), ec);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
-    out.close();
-    if (!out) {
+    if (path.parent_path() != made) {
+      fs::create_directories(path.parent_path(), ec);
+      made = path.parent_path();
+    }
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    bool ok = out && std::fwrite(f.content.data(), 1, f.content.size(), out) == f.content.size();
+    if (out && std::fclose(out) != 0) ok = false;
+    if (!ok) {
       fs::remove_all(staging, ec);
       return "cannot write '" + (target / f.path).string() + "'";
     }
