@@ -146,6 +146,16 @@ TEST(SandboxTest, ErrorInEachCallbackIsCountedAndContained) {
   EXPECT_NE(all(e.reports).find("error object is a table value"), std::string::npos);
 }
 
+TEST(SandboxTest, HostileMetatablesAreContained) {
+  Outcome o = run_with(
+      "setmetatable(PortMonitor, {__index = function() error('gotcha') end})\n"
+      "setmetatable(_G, {__index = function() error('gotcha') end})\n");
+  // Looking up create raises: the connection is quarantined, nothing crashes, the rest runs.
+  EXPECT_TRUE(o.bad.quarantined);
+  EXPECT_EQ(o.bad.drops(DropReason::Quarantined), 3u);
+  EXPECT_EQ(o.delivered_good, 3u);
+}
+
 TEST(SandboxTest, WrongReturnTypesAreErrors) {
   Outcome a = run_with("PortMonitor.accept = function(m) return 'yes' end\n");
   EXPECT_EQ(a.bad.drops(DropReason::MonitorError), 3u);
