@@ -215,6 +215,23 @@ TEST(SandboxTest, ScriptThatFailsToLoadIsAClearError) {
   EXPECT_NE(error.find("instruction budget"), std::string::npos) << error;
 }
 
+TEST(SandboxTest, TooSmallMemoryCapIsAnErrorNotACrash) {
+  for (size_t cap : {1024u, 8192u, 20000u}) {
+    TestApp t;
+    t.module("Src", {"out x: int"});
+    t.module("Sink", {"in x: int"});
+    t.connect("c", "Src.x", "Sink.x", "true",
+              "PortMonitor.accept = function(m) return m > 0 end\n");
+    RunOptions o;
+    o.limits.memory_bytes = cap;
+    std::string error;
+    auto rt = Runtime::create(t.app, t.dir, o, &error, t.registry);
+    if (!rt) {
+      EXPECT_NE(error.find("monitors/c.lua"), std::string::npos) << error;
+    }
+  }
+}
+
 TEST(SandboxTest, MonitorStateIsSmall) {
   TestApp t;
   t.module("Src", {"out x: int"});
