@@ -156,11 +156,18 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   return m;
 }
 
+// Protected: a script may have put metamethods on PortMonitor or _G that raise errors.
 bool LuaMonitor::defines(const char* callback) const {
-  lua_State* L = sandbox_->state();
-  bool is_function = push_callback(L, callback);
-  lua_pop(L, 1);
-  return is_function;
+  Call call;
+  call.callback = callback;
+  LuaCall r = sandbox_->protected_call(
+      [](lua_State* L) -> int {
+        auto* c = static_cast<Call*>(lua_touserdata(L, 1));
+        c->result = push_callback(L, c->callback);
+        return 0;
+      },
+      &call);
+  return r.ok() && call.result;
 }
 
 int LuaMonitor::run_create(lua_State* L) {

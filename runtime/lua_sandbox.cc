@@ -123,8 +123,12 @@ std::unique_ptr<LuaSandbox> LuaSandbox::create(const SandboxLimits& limits) {
   lua_gc(box->L_, LUA_GCGEN, 0, 0);
   lua_pushcfunction(box->L_, open_libraries);
   if (lua_pcall(box->L_, 0, 0, 0) != LUA_OK) return nullptr;
-  lua_pushcfunction(box->L_, &LuaSandbox::print);
-  lua_setglobal(box->L_, "print");
+  lua_pushcfunction(box->L_, [](lua_State* L) -> int {
+    lua_pushcfunction(L, &LuaSandbox::print);
+    lua_setglobal(L, "print");
+    return 0;
+  });
+  if (lua_pcall(box->L_, 0, 0, 0) != LUA_OK) return nullptr;
   return box;
 }
 

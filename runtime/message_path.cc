@@ -106,6 +106,8 @@ void Runtime::process(Connection& c, const Value& msg) {
         drop(c, DropReason::NoValue, "accept");
       } else if (reason == drop_reason_name(DropReason::Throttled)) {
         drop(c, DropReason::Throttled, "accept");
+      } else if (c.is_feed && reason.empty()) {
+        drop(c, DropReason::Feed);  // a feed's accept may itself say "never deliver"
       } else {
         drop(c, DropReason::Rejected, reason);
       }

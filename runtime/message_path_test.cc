@@ -142,6 +142,23 @@ TEST(MessagePathTest, FeedsNeverDeliver) {
   EXPECT_EQ(s.drops(DropReason::Feed), 20u);
 }
 
+// Generated feeds end accept with `return false`: still counted as consumed by the feed.
+TEST(MessagePathTest, FeedWhoseAcceptReturnsFalseCountsAsFeed) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("feed", "Src.x", "Sink.x", "false",
+            "PortMonitor.accept = function(m) PortMonitor.setEvent('e') return false end\n",
+            model::ConnectionKind::Feed);
+  t.connect("rule", "Src.x", "Sink.x", "e");
+  auto rt = t.start();
+  for (int i = 0; i < 5; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
+  rt->advance(6);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "feed").drops(DropReason::Feed), 5u);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "feed").drops(DropReason::Rejected), 0u);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "rule").delivered, 5u);
+}
+
 TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
   TestApp t;
   t.module("Src", {"out x: int", "out f: bool"});

@@ -146,6 +146,16 @@ TEST(SandboxTest, ErrorInEachCallbackIsCountedAndContained) {
   EXPECT_NE(all(e.reports).find("error object is a table value"), std::string::npos);
 }
 
+TEST(SandboxTest, HostileMetatablesAreContained) {
+  Outcome o = run_with(
+      "setmetatable(PortMonitor, {__index = function() error('gotcha') end})\n"
+      "setmetatable(_G, {__index = function() error('gotcha') end})\n");
+  // Looking up create raises: the connection is quarantined, nothing crashes, the rest runs.
+  EXPECT_TRUE(o.bad.quarantined);
+  EXPECT_EQ(o.bad.drops(DropReason::Quarantined), 3u);
+  EXPECT_EQ(o.delivered_good, 3u);
+}
+
 TEST(SandboxTest, WrongReturnTypesAreErrors) {
   Outcome a = run_with("PortMonitor.accept = function(m) return 'yes' end\n");
   EXPECT_EQ(a.bad.drops(DropReason::MonitorError), 3u);
@@ -203,6 +213,23 @@ TEST(SandboxTest, ScriptThatFailsToLoadIsAClearError) {
   rt = Runtime::create(t2.app, t2.dir, o, &error, t2.registry);
   EXPECT_FALSE(rt);
   EXPECT_NE(error.find("instruction budget"), std::string::npos) << error;
+}
+
+TEST(SandboxTest, TooSmallMemoryCapIsAnErrorNotACrash) {
+  for (size_t cap : {1024u, 8192u, 20000u}) {
+    TestApp t;
+    t.module("Src", {"out x: int"});
+    t.module("Sink", {"in x: int"});
+    t.connect("c", "Src.x", "Sink.x", "true",
+              "PortMonitor.accept = function(m) return m > 0 end\n");
+    RunOptions o;
+    o.limits.memory_bytes = cap;
+    std::string error;
+    auto rt = Runtime::create(t.app, t.dir, o, &error, t.registry);
+    if (!rt) {
+      EXPECT_NE(error.find("monitors/c.lua"), std::string::npos) << error;
+    }
+  }
 }
 
 TEST(SandboxTest, MonitorStateIsSmall) {
