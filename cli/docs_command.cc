@@ -5,9 +5,12 @@
 #include <fstream>
 
 #include "cli/commands.h"
-#include "cli/load_app.h"
+#include "cli/model_loader.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
+#ifdef ARBC_HAVE_VERIFY
+#include "verify/verify.h"
+#endif
 
 namespace arbc::cli {
 
@@ -19,6 +22,35 @@ bool write_file(const std::filesystem::path& path, const std::string& text) {
   return static_cast<bool>(out);
 }
 
+std::string join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
+// One line per arbitrated port: the verdict and what it covers, then any finding.
+std::vector<std::string> verdict_lines(const model::App& app) {
+  std::vector<std::string> lines;
+#ifdef ARBC_HAVE_VERIFY
+  verify::VerifyResult result = verify::verify_app(app, verify::VerifyOptions{});
+  if (!result.ok) return {"not verified: " + result.error};
+  for (const verify::PortResult& p : result.report.ports) {
+    lines.push_back("`" + p.port + "`: " + verify::verdict_name(p.verdict) + " (rules " +
+                    join(p.rules) + "; events " + (p.events.empty() ? "none" : join(p.events)) +
+                    ")");
+    for (const verify::Finding& f : p.findings)
+      lines.push_back("`" + p.port + "`: " + severity_name(f.severity) + " [" + f.check + "] " +
+                      f.message);
+  }
+  for (const verify::Finding& f : result.report.app_findings)
+    lines.push_back(std::string(severity_name(f.severity)) + " [" + f.check + "] " + f.message);
+#else
+  (void)app;
+  lines.push_back("not verified: this arbc was built without the verifier");
+#endif
+  return lines;
+}
+
 }  // namespace
 
 int docs_command(std::span<char*> args) {
@@ -26,7 +58,7 @@ int docs_command(std::span<char*> args) {
                "arbc docs"};
   std::string input;
   std::string out_dir = "docs-out";
-  cli.add_option("SPEC", input, "the spec (or a built app.json)")->required();
+  cli.add_option("SPEC", input, "the spec (or a built app.json, or its directory)")->required();
   cli.add_option("-o,--output", out_dir, "directory to write into (default: docs-out)");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
@@ -34,9 +66,10 @@ int docs_command(std::span<char*> args) {
     return cli.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
 
-  LoadedApp loaded = load_app(input);
+  ModelLoad loaded = load_model(input);
+  if (!loaded.diagnostics.empty()) std::fputs(loaded.diagnostics.c_str(), stderr);
   if (!loaded.ok) {
-    std::fputs(loaded.diagnostics.c_str(), stderr);
+    if (!loaded.error.empty()) std::fprintf(stderr, "%s\n", loaded.error.c_str());
     return kExitBadInput;
   }
   std::error_code ec;
@@ -53,7 +86,7 @@ int docs_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc docs: %s\n", error.c_str());
     return kExitRuntimeFailure;
   }
-  docs::DocsInput doc{&loaded.app, loaded.verdicts, "app.svg"};
+  docs::DocsInput doc{&loaded.app, verdict_lines(loaded.app), "app.svg"};
   bool ok = write_file(dir / "index.md", docs::render_index_markdown(doc)) &&
             write_file(dir / "app.dot", dot) && write_file(dir / "app.svg", svg) &&
             write_file(dir / "app.mmd", docs::render_mermaid(loaded.app));
