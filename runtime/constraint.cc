@@ -1,5 +1,6 @@
 #include "runtime/constraint.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace arbc {
@@ -208,7 +209,17 @@ Constraint Constraint::conjunction(std::vector<Constraint> args) {
     if (a.op == Op::False) return constant(false);
     if (a.op != Op::True) kept.push_back(std::move(a));
   }
-  return nary(Op::And, std::move(kept));
+  Constraint c = nary(Op::And, std::move(kept));
+  // `a and a` says nothing more than `a` (an effective guard adds events its constraint may
+  // already require); small conjunctions only, so building stays linear for large ones.
+  if (c.op == Op::And && c.args.size() <= 64) {
+    std::vector<Constraint> unique;
+    for (Constraint& a : c.args)
+      if (std::find(unique.begin(), unique.end(), a) == unique.end()) unique.push_back(std::move(a));
+    if (unique.size() == 1) return std::move(unique.front());
+    c.args = std::move(unique);
+  }
+  return c;
 }
 
 Constraint Constraint::disjunction(std::vector<Constraint> args) {

@@ -42,6 +42,8 @@ TEST(ConstraintTest, BuildersFoldConstants) {
   EXPECT_EQ(Constraint::disjunction({Constraint::constant(false), x}).to_string(), "x");
   EXPECT_EQ(Constraint::disjunction({x, Constraint::constant(true)}).to_string(), "true");
   EXPECT_EQ(Constraint::conjunction({}).to_string(), "true");
+  EXPECT_EQ(Constraint::conjunction({x, Constraint::event_ref("y"), x}).to_string(), "x and y");
+  EXPECT_EQ(Constraint::conjunction({x, x}).to_string(), "x");
   EXPECT_EQ(parse_constraint("true and x").constraint.to_string(), "true and x");
 }
 
