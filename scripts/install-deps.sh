@@ -13,7 +13,7 @@ packages=(
   graphviz                                   # arbc docs: app.svg
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(clang libclang-rt-14-dev python3)
+  packages+=(clang libclang-rt-14-dev python3 python3-jsonschema)
 fi
 
 missing=()

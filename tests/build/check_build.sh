@@ -18,13 +18,14 @@ connections=$(grep -c '"monitor": "monitors/' "$scratch/a/$app/app.json")
 if [ "$count" -lt "${ARBC_MIN_MONITORS:-1}" ]; then
   echo "FAIL: $count monitors, expected at least ${ARBC_MIN_MONITORS}"; exit 1
 fi
-# app.json follows docs/app.schema.json (checked where python3-jsonschema is installed).
-if python3 -c "import jsonschema" 2>/dev/null; then
-  python3 - "$scratch/a/$app/app.json" docs/app.schema.json <<'PY' || { echo "FAIL: app.json does not follow docs/app.schema.json"; exit 1; }
+# app.json follows docs/app.schema.json (python3-jsonschema: scripts/install-deps.sh --test).
+if ! python3 -c "import jsonschema" 2>/dev/null; then
+  echo "FAIL: python3 has no jsonschema module; run scripts/install-deps.sh --test"; exit 1
+fi
+python3 - "$scratch/a/$app/app.json" docs/app.schema.json <<'PY' || { echo "FAIL: app.json does not follow docs/app.schema.json"; exit 1; }
 import json, sys, jsonschema
 jsonschema.Draft202012Validator(json.load(open(sys.argv[2]))).validate(json.load(open(sys.argv[1])))
 PY
-fi
 # The summary is part of the golden too (minus the output directory).
 sed "s|$scratch/a|OUT|" "$scratch/summary.txt" > "$scratch/a/$app/summary.txt"
 if [ "${ARBC_UPDATE_GOLDEN:-0}" = 1 ]; then
