@@ -169,7 +169,8 @@ TEST(Checks, UnfedIsNotReportedWhenAScriptRuleMaySetTheEvent) {
 TEST(Checks, UnfedWhenOnlyAnAssertReadsTheEvent) {
   model::App app = testing::table_clean_model();
   arbitrated(app, "PullObject.cmd").asserts.push_back({"pull", parse("e_pull_idle"), {}});
-  auto unfed = findings(run(app), "unfed");
+  VerifyReport report = run(app);  // findings() points into the report: keep it alive
+  auto unfed = findings(report, "unfed");
   ASSERT_EQ(unfed.size(), 1u);
   EXPECT_EQ(unfed[0]->event, "e_pull_idle");
   EXPECT_EQ(unfed[0]->port, "PullObject.cmd");
@@ -190,7 +191,8 @@ TEST(Checks, UnusedWhenAFeedCarriesAnEventNobodyReads) {
 TEST(Checks, UnusedWhenADeclaredStreamEventIsNeverRead) {
   model::App app = testing::table_clean_model();
   app.events.push_back({"e_extra", 0.5, "PickAndPlace.status", {}});
-  auto unused = findings(run(app), "unused");
+  VerifyReport report = run(app);  // findings() points into the report: keep it alive
+  auto unused = findings(report, "unused");
   ASSERT_EQ(unused.size(), 1u);
   EXPECT_EQ(unused[0]->event, "e_extra");
 }
