@@ -1,10 +1,11 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE] [--no-verify]`
+//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
 // Runs a built application on the embedded runtime (DESIGN.md sections 7, 8), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
 // was quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a
-// temporary directory by `arbc build`; a refuted proof exits 1.
+// temporary directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page
+// about the run (cli/report/run_report.h) from the trace records kept in memory.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
@@ -15,6 +16,8 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/report/report_file.h"
+#include "cli/report/run_report.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
 
@@ -109,6 +112,34 @@ void print_errors(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "arbc run: error: %s\n", e.c_str());
 }
 
+// The report's input: the header as `arbc run` prints it, the counters, the trace records.
+report::RunReportInput report_input(const model::App& app, Runtime& runtime,
+                                    const RunOptions& options, bool success,
+                                    const std::string& verdict,
+                                    const std::vector<TraceRecord>& records) {
+  report::RunReportInput input;
+  report::RunHeader& h = input.header;
+  h.app = app.name;
+  h.description = app.description;
+  h.scenario = runtime.scenario();
+  h.seed = options.seed;
+  h.realtime = options.realtime;
+  h.requested = options.duration;
+  h.end = runtime.now();
+  h.stop_reason = runtime.stop_reason();
+  h.success = success;
+  h.verdict = verdict;
+  if (Environment* env = runtime.environment()) h.environment = env->summary();
+  std::vector<ConnectionStats> stats = runtime.stats();  // in the app's connection order
+  for (size_t i = 0; i < stats.size() && i < app.connections.size(); ++i) {
+    const model::Connection& c = app.connections[i];
+    input.connections.push_back(
+        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
+  }
+  input.records = &records;
+  return input;
+}
+
 }  // namespace
 
 int run_command(std::span<char*> args) {
@@ -125,6 +156,8 @@ int run_command(std::span<char*> args) {
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   cli.add_option("--seed", options.seed, "seed of every random generator (default 1)");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
+  std::string report_path;
+  cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -163,10 +196,20 @@ int run_command(std::span<char*> args) {
     print_errors(mismatches);
     return kExitBadInput;
   }
+  std::vector<TraceRecord> records;  // the whole trace in memory, for --report
+  if (!report_path.empty()) options.trace_records = &records;
   std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;
+  }
+  report::ReportFile report_file;
+  if (!report_path.empty()) {
+    std::string open_error = report_file.open(report_path);
+    if (!open_error.empty()) {
+      print_errors({open_error});
+      return kExitBadInput;
+    }
   }
 
   std::signal(SIGINT, on_interrupt);
@@ -183,6 +226,7 @@ int run_command(std::span<char*> args) {
               runtime->stopped_early() ? ", stopped: " : "", runtime->stop_reason().c_str());
   std::fputs(runtime->stats_table().c_str(), stdout);
   bool success = true;
+  std::string verdict;
   if (Environment* env = runtime->environment()) {
     std::string summary = env->summary();
     if (!summary.empty()) {
@@ -190,11 +234,22 @@ int run_command(std::span<char*> args) {
       if (summary.back() != '\n') std::fputc('\n', stdout);
     }
     success = env->success();
-    std::printf("result: %s\n", success ? "success" : "failure");
+    verdict = success ? "success" : "failure";
   } else {
     for (const ConnectionStats& s : runtime->stats()) success &= !s.quarantined;
-    std::printf("result: %s (no environment; judged by quarantined connections)\n",
-                success ? "success" : "failure");
+    verdict = std::string(success ? "success" : "failure") +
+              " (no environment; judged by quarantined connections)";
+  }
+  std::printf("result: %s\n", verdict.c_str());
+  if (!report_path.empty()) {
+    std::string html = report::render_run_report(
+        report_input(load.app, *runtime, options, success, verdict, records));
+    std::string write_error = report_file.write(html);
+    if (!write_error.empty()) {
+      print_errors({write_error});
+      return kExitRuntimeFailure;
+    }
+    std::printf("report: %s (%zu bytes)\n", report_path.c_str(), html.size());
   }
   return success ? kExitOk : kExitRuntimeFailure;
 }

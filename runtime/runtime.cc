@@ -204,6 +204,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
     rt->connections_.push_back(std::move(c));
   }
 
+  rt->trace_.record_to(options.trace_records);
   if (!options.trace_path.empty()) {
     std::string trace_error = rt->trace_.open(options.trace_path);
     if (!trace_error.empty()) {

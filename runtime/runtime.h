@@ -40,6 +40,9 @@ struct RunOptions {
   double duration = 60;  // seconds of (simulated or wall) time
   bool realtime = false;
   std::string trace_path;  // empty: no trace
+  // Not null: every trace record is also appended here (for `arbc run --report`); the
+  // vector must outlive the run.
+  std::vector<TraceRecord>* trace_records = nullptr;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks

@@ -21,6 +21,14 @@ void Trace::close() {
   file_ = nullptr;
 }
 
+TraceRecord& Trace::record(double t, TraceKind kind) {
+  records_->emplace_back();
+  TraceRecord& r = records_->back();
+  r.t = t;
+  r.kind = kind;
+  return r;
+}
+
 void Trace::begin(double t, const char* type) {
   line_.clear();
   line_ += "{\"t\":";
@@ -43,6 +51,11 @@ void Trace::end() {
 }
 
 void Trace::delivery(double t, std::string_view connection, std::string_view port, const Value& v) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Deliver);
+    r.connection = connection;
+    r.port = port;
+  }
   if (!file_) return;
   begin(t, "deliver");
   field("connection", connection);
@@ -54,6 +67,12 @@ void Trace::delivery(double t, std::string_view connection, std::string_view por
 
 void Trace::drop(double t, std::string_view connection, DropReason reason,
                  std::string_view detail) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Drop);
+    r.connection = connection;
+    r.reason = reason;
+    r.text = detail;
+  }
   if (!file_) return;
   begin(t, "drop");
   field("connection", connection);
@@ -64,6 +83,14 @@ void Trace::drop(double t, std::string_view connection, DropReason reason,
 
 void Trace::event(double t, std::string_view port, std::string_view kind, std::string_view event,
                   std::string_view owner, double expiry) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Event);
+    r.port = port;
+    r.op = kind;
+    r.event = event;
+    r.owner = owner;
+    r.expiry = expiry;
+  }
   if (!file_) return;
   begin(t, "event");
   field("port", port);
@@ -78,6 +105,11 @@ void Trace::event(double t, std::string_view port, std::string_view kind, std::s
 }
 
 void Trace::error(double t, std::string_view connection, std::string_view message) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Error);
+    r.connection = connection;
+    r.text = message;
+  }
   if (!file_) return;
   begin(t, "error");
   field("connection", connection);
@@ -86,6 +118,11 @@ void Trace::error(double t, std::string_view connection, std::string_view messag
 }
 
 void Trace::quarantine(double t, std::string_view connection, std::string_view why) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Quarantine);
+    r.connection = connection;
+    r.text = why;
+  }
   if (!file_) return;
   begin(t, "quarantine");
   field("connection", connection);
@@ -94,6 +131,11 @@ void Trace::quarantine(double t, std::string_view connection, std::string_view w
 }
 
 void Trace::log(double t, std::string_view who, std::string_view message) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Log);
+    r.connection = who;
+    r.text = message;
+  }
   if (!file_) return;
   begin(t, "log");
   field("from", who);
@@ -102,6 +144,11 @@ void Trace::log(double t, std::string_view who, std::string_view message) {
 }
 
 void Trace::publish_error(double t, std::string_view port, std::string_view message) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::PublishError);
+    r.port = port;
+    r.text = message;
+  }
   if (!file_) return;
   begin(t, "publish-error");
   field("port", port);
@@ -110,6 +157,11 @@ void Trace::publish_error(double t, std::string_view port, std::string_view mess
 }
 
 void Trace::pending(double t, std::string_view connection, size_t count) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::Pending);
+    r.connection = connection;
+    r.count = count;
+  }
   if (!file_) return;
   begin(t, "pending");
   field("connection", connection);

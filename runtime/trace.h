@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "runtime/drop_reason.h"
+#include "runtime/trace_record.h"
 #include "runtime/value.h"
 
 namespace arbc {
@@ -18,7 +20,10 @@ class Trace {
   ~Trace();
   // Opens path for writing; returns an error message or "".
   std::string open(const std::string& path);
-  bool enabled() const { return file_ != nullptr; }
+  // Also appends every record to *records (nullptr: stop); independent of the file.
+  // The caller keeps *records alive while the trace is written.
+  void record_to(std::vector<TraceRecord>* records) { records_ = records; }
+  bool enabled() const { return file_ != nullptr || records_ != nullptr; }
 
   void delivery(double t, std::string_view connection, std::string_view port, const Value& v);
   void drop(double t, std::string_view connection, DropReason reason, std::string_view detail);
@@ -37,7 +42,9 @@ class Trace {
   void begin(double t, const char* type);
   void field(const char* key, std::string_view value);
   void end();
+  TraceRecord& record(double t, TraceKind kind);
   std::FILE* file_ = nullptr;
+  std::vector<TraceRecord>* records_ = nullptr;
   std::string line_;
 };
 

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "runtime/json_text.h"
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
@@ -24,7 +25,9 @@ class Noisy : public Module {
   }
 };
 
-std::string run_traced(uint64_t seed, const std::string& name) {
+// Runs the noisy app for 20 s; the trace goes to <dir>/<name>.jsonl, and to *records if given.
+std::string run_traced(uint64_t seed, const std::string& name,
+                       std::vector<TraceRecord>* records = nullptr) {
   TestApp t;
   t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
   t.module("Noisy", {"out x: int", "out f: bool"});
@@ -43,6 +46,7 @@ std::string run_traced(uint64_t seed, const std::string& name) {
   o.seed = seed;
   o.duration = 20;
   o.trace_path = t.dir + "/" + name + ".jsonl";
+  o.trace_records = records;
   auto rt = t.start(o);
   rt->advance(o.duration);
   rt->shutdown();
@@ -62,6 +66,38 @@ TEST(TraceTest, SameSeedGivesByteIdenticalTraces) {
                            "\"op\":\"set\"", "\"op\":\"unset\"", "\"op\":\"expire\""}) {
     EXPECT_NE(a.find(kind), std::string::npos) << kind;
   }
+}
+
+// The in-memory records (what --report reads) are the file's lines, one for one.
+TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
+  std::vector<TraceRecord> records;
+  std::string text = run_traced(7, "mem", &records);
+  std::istringstream lines(text);
+  std::string line;
+  size_t i = 0;
+  static const char* kTypes[] = {"deliver",    "drop", "event",         "error",
+                                 "quarantine", "log",  "publish-error", "pending"};
+  while (std::getline(lines, line)) {
+    ASSERT_LT(i, records.size()) << line;
+    const TraceRecord& r = records[i++];
+    std::string type = "\"type\":\"" + std::string(kTypes[static_cast<int>(r.kind)]) + "\"";
+    EXPECT_NE(line.find(type), std::string::npos) << line;
+    std::string t;
+    append_json_double(t, r.t);
+    EXPECT_EQ(line.rfind("{\"t\":" + t + ",", 0), 0u) << line;
+    if (r.kind == TraceKind::Drop) {
+      EXPECT_NE(line.find(std::string("\"reason\":\"") + drop_reason_name(r.reason) + "\""),
+                std::string::npos)
+          << line;
+    }
+    if (r.kind == TraceKind::Event) {
+      EXPECT_NE(line.find("\"op\":\"" + r.op + "\",\"event\":\"" + r.event + "\""),
+                std::string::npos)
+          << line;
+    }
+  }
+  EXPECT_EQ(i, records.size());
+  EXPECT_GT(records.size(), 100u);
 }
 
 TEST(TraceTest, LineFormat) {

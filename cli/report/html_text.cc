@@ -1,0 +1,60 @@
+#include "cli/report/html_text.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace arbc::report {
+
+void append_html_escaped(std::string& out, std::string_view s) {
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+          out += "\xEF\xBF\xBD";  // U+FFFD
+        } else {
+          out += c;
+        }
+    }
+  }
+}
+
+std::string html_escape(std::string_view s) {
+  std::string out;
+  append_html_escaped(out, s);
+  return out;
+}
+
+std::string seconds_text(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", t);
+  return buffer;
+}
+
+std::string coordinate(double x) {
+  double rounded = std::round(x * 10) / 10;
+  if (rounded == 0) rounded = 0;  // no "-0"
+  char buffer[32];
+  if (rounded == std::floor(rounded)) {
+    std::snprintf(buffer, sizeof buffer, "%.0f", rounded);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.1f", rounded);
+  }
+  return buffer;
+}
+
+}  // namespace arbc::report

@@ -1,0 +1,358 @@
+#include "cli/report/run_report.h"
+
+#include <algorithm>
+#include <map>
+
+#include "cli/report/html_text.h"
+#include "cli/report/run_timeline.h"
+#include "cli/report/svg_timeline.h"
+
+namespace arbc::report {
+
+namespace {
+
+constexpr size_t kMaxListed = 200;       // log lines, errors: the first ones, then a count
+constexpr size_t kDetailsPerReason = 3;  // sample details shown per drop reason
+
+constexpr const char* kStyle = R"css(
+body { font: 14px/1.45 system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif;
+       color: #222; margin: 24px auto; max-width: 1240px; padding: 0 16px; }
+h1 { font-size: 22px; margin: 0 0 4px; } h2 { font-size: 17px; margin: 28px 0 8px; }
+p.description { color: #555; margin: 0 0 12px; }
+dl.header { display: grid; grid-template-columns: max-content auto; gap: 2px 16px; margin: 0; }
+dl.header dt { color: #666; } dl.header dd { margin: 0; }
+.ok { color: #0a7d32; font-weight: 600; } .bad { color: #c00; font-weight: 600; }
+pre { background: #f6f6f6; padding: 8px 10px; overflow-x: auto; font-size: 12.5px; }
+table { border-collapse: collapse; font-size: 13px; margin: 4px 0; }
+th, td { border-bottom: 1px solid #e3e3e3; padding: 3px 8px; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; font-weight: 600; }
+td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; }
+td.zero { color: #bbb; } tr.total td { font-weight: 600; border-top: 2px solid #999; }
+tr.feed td:first-child { color: #777; }
+div.wide { overflow-x: auto; }
+.swatch { display: inline-block; width: 11px; height: 11px; margin-right: 5px;
+          vertical-align: -1px; border-radius: 2px; }
+.legend span.item { margin-right: 14px; white-space: nowrap; font-size: 13px; }
+.note { color: #666; font-size: 12.5px; }
+svg.timeline { display: block; max-width: 100%; height: auto; margin: 4px 0;
+               font: 12px system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif; }
+svg .axis line { stroke: #ddd; } svg .axis text { fill: #666; font-size: 11px; text-anchor: middle; }
+svg .axis line.end { stroke: #444; stroke-dasharray: 4 3; }
+svg text.name { text-anchor: end; fill: #222; } svg text.total { fill: #666; font-size: 11px; }
+svg text.heading { font-weight: 600; fill: #333; }
+svg rect.stripe { fill: #000; fill-opacity: 0.035; }
+svg line.cursor { stroke: #c00; stroke-width: 1; pointer-events: none; }
+svg text.cursor-label { fill: #c00; font-size: 11px; pointer-events: none; }
+)css";
+
+// Progressive enhancement only: a vertical cursor with the time under the mouse. Everything
+// else is static SVG and HTML.
+constexpr const char* kScript = R"js(
+(function () {
+  for (const svg of document.querySelectorAll("svg.timeline")) {
+    const x0 = Number(svg.dataset.x0), x1 = Number(svg.dataset.x1);
+    const end = Number(svg.dataset.end);
+    const line = document.createElementNS(svg.namespaceURI, "line");
+    line.setAttribute("class", "cursor");
+    line.setAttribute("y1", "0");
+    line.setAttribute("y2", String(svg.viewBox.baseVal.height));
+    const label = document.createElementNS(svg.namespaceURI, "text");
+    label.setAttribute("class", "cursor-label");
+    label.setAttribute("y", "10");
+    const show = (on) => { line.style.display = label.style.display = on ? "" : "none"; };
+    show(false);
+    svg.append(line, label);
+    svg.addEventListener("mousemove", (e) => {
+      const p = new DOMPoint(e.clientX, e.clientY).matrixTransform(svg.getScreenCTM().inverse());
+      const on = p.x >= x0 && p.x <= x1;
+      show(on);
+      if (!on) return;
+      line.setAttribute("x1", String(p.x));
+      line.setAttribute("x2", String(p.x));
+      label.setAttribute("x", String(p.x + 4));
+      label.textContent = ((p.x - x0) / (x1 - x0) * end).toFixed(3) + " s";
+    });
+    svg.addEventListener("mouseleave", () => show(false));
+  }
+})();
+)js";
+
+const char* reason_meaning(DropReason r) {
+  switch (r) {
+    case DropReason::Rejected:
+      return "the monitor's accept returned false";
+    case DropReason::NoValue:
+      return "an expression had no value (min_by of an empty list, an index out of range)";
+    case DropReason::NotSelected:
+      return "the connection's constraint was false on the port's events";
+    case DropReason::Throttled:
+      return "a delivery on this connection less than its throttle period ago";
+    case DropReason::Feed:
+      return "consumed by an event feed (by design: feeds set events, never deliver)";
+    case DropReason::MonitorError:
+      return "a script error, the instruction budget, the memory cap or a wrong return type";
+    case DropReason::Quarantined:
+      return "the connection had been taken out of service";
+    case DropReason::QueueFull:
+      return "the connection's queue was at its bound";
+  }
+  return "";
+}
+
+std::string escaped(std::string_view s) { return html_escape(s); }
+
+std::string number_cell(uint64_t n) {
+  return std::string("<td class=\"n") + (n == 0 ? " zero" : "") + "\">" + std::to_string(n) +
+         "</td>";
+}
+
+std::string swatch(const char* color) {
+  return std::string("<span class=\"swatch\" style=\"background:") + color + "\"></span>";
+}
+
+uint64_t total_dropped(const ConnectionStats& s) {
+  uint64_t n = 0;
+  for (uint64_t d : s.dropped) n += d;
+  return n;
+}
+
+void append_header(std::string& out, const RunHeader& h) {
+  out += "<h1>arbc run report: " + escaped(h.app) + "</h1>\n";
+  if (!h.description.empty())
+    out += "<p class=\"description\">" + escaped(h.description) + "</p>\n";
+  out += "<dl class=\"header\">\n";
+  out += "<dt>scenario</dt><dd id=\"scenario\">" + escaped(h.scenario) + "</dd>\n";
+  out += "<dt>seed</dt><dd id=\"seed\">" + std::to_string(h.seed) + "</dd>\n";
+  out += std::string("<dt>") + (h.realtime ? "wall-clock" : "simulated") +
+         " time</dt><dd id=\"duration\">" + seconds_text(h.end) + " s of " +
+         seconds_text(h.requested) + " s requested";
+  if (!h.stop_reason.empty()) out += " (stopped early: " + escaped(h.stop_reason) + ")";
+  out += "</dd>\n";
+  out += std::string("<dt>outcome</dt><dd id=\"outcome\" class=\"") + (h.success ? "ok" : "bad") +
+         "\">" + escaped(h.verdict) + "</dd>\n</dl>\n";
+  if (!h.environment.empty()) {
+    out += "<h2>Environment summary</h2>\n<pre>" + escaped(h.environment) + "</pre>\n";
+  }
+}
+
+void append_totals(std::string& out, const std::vector<ConnectionRow>& rows) {
+  uint64_t arrived = 0, delivered = 0, dropped = 0, pending = 0, errors = 0, quarantined = 0;
+  for (const ConnectionRow& r : rows) {
+    arrived += r.stats.arrived;
+    delivered += r.stats.delivered;
+    dropped += total_dropped(r.stats);
+    pending += r.stats.pending;
+    errors += r.stats.errors;
+    quarantined += r.stats.quarantined ? 1 : 0;
+  }
+  out += "<p id=\"totals\">" + std::to_string(rows.size()) +
+         " connections: " + std::to_string(arrived) + " messages received, " +
+         std::to_string(delivered) + " delivered, " + std::to_string(dropped) + " dropped, " +
+         std::to_string(pending) + " still queued at the end; " + std::to_string(errors) +
+         " monitor errors, " + std::to_string(quarantined) + " connections quarantined.</p>\n";
+}
+
+void append_legend(std::string& out) {
+  out += "<p class=\"legend\"><span class=\"item\">" + swatch(kDeliveryColor) + "delivered</span>";
+  for (int r = 0; r < kDropReasonCount; ++r) {
+    DropReason reason = static_cast<DropReason>(r);
+    out += "<span class=\"item\">" + swatch(drop_reason_color(reason)) + drop_reason_name(reason) +
+           "</span>";
+  }
+  out += "<span class=\"item\">" + swatch("#ff0000") + "moment of quarantine</span></p>\n";
+}
+
+void append_timelines(std::string& out, const RunReportInput& input) {
+  // Rules first, then the generated feeds: the feeds' lanes are mostly `feed` drops.
+  std::vector<std::string> names;
+  for (const ConnectionRow& r : input.connections) {
+    if (!r.feed) names.push_back(r.stats.name);
+  }
+  size_t first_feed = names.size();
+  for (const ConnectionRow& r : input.connections) {
+    if (r.feed) names.push_back(r.stats.name);
+  }
+  static const std::vector<TraceRecord> kNone;
+  RunTimeline timeline =
+      build_run_timeline(names, input.records ? *input.records : kNone, input.header.end);
+  TimelineLayout layout;
+  double bin = timeline.end / layout.bins;
+  out += "<h2>Deliveries and drops per connection</h2>\n";
+  out +=
+      "<p class=\"note\">One lane per connection. Bars above a lane's midline count "
+      "deliveries, bars below count drops, coloured by the most frequent reason; each bar is "
+      "a " +
+      seconds_text(bin) +
+      " s bin, its height relative to the lane's busiest bin (hover for the exact counts). "
+      "Right: delivered / dropped.</p>\n";
+  append_legend(out);
+  out += connection_timeline_svg(timeline, first_feed, layout);
+  out += "<h2>Event presence</h2>\n";
+  if (timeline.events.empty()) {
+    out += "<p>No event was set during the run.</p>\n";
+  } else {
+    out +=
+        "<p class=\"note\">One lane per event in each arbitrated port's own container: a bar "
+        "while the event is present (set and not yet expired or unset by every owner). "
+        "Right: the share of the run it was present.</p>\n";
+    out += event_timeline_svg(timeline, layout);
+  }
+}
+
+void append_drops_by_reason(std::string& out, const RunReportInput& input) {
+  struct ReasonSummary {
+    uint64_t total = 0;
+    std::vector<std::pair<std::string, uint64_t>> connections;
+    std::map<std::string, uint64_t> details;
+  };
+  std::vector<ReasonSummary> reasons(kDropReasonCount);
+  for (const ConnectionRow& row : input.connections) {
+    for (int r = 0; r < kDropReasonCount; ++r) {
+      uint64_t n = row.stats.dropped[r];
+      if (n == 0) continue;
+      reasons[r].total += n;
+      reasons[r].connections.push_back({row.stats.name, n});
+    }
+  }
+  if (input.records) {
+    for (const TraceRecord& rec : *input.records) {
+      if (rec.kind == TraceKind::Drop && !rec.text.empty()) {
+        ++reasons[static_cast<int>(rec.reason)].details[rec.text];
+      }
+    }
+  }
+  out +=
+      "<h2>Drops by reason</h2>\n<div class=\"wide\">\n<table "
+      "id=\"drops\">\n<tr><th>reason</th><th>meaning</th>"
+      "<th class=\"n\">dropped</th><th>connections</th><th>most frequent details</th></tr>\n";
+  for (int r = 0; r < kDropReasonCount; ++r) {
+    DropReason reason = static_cast<DropReason>(r);
+    ReasonSummary& s = reasons[r];
+    out += std::string("<tr data-reason=\"") + drop_reason_name(reason) + "\"><td>" +
+           swatch(drop_reason_color(reason)) + drop_reason_name(reason) + "</td><td>" +
+           reason_meaning(reason) + "</td>" + number_cell(s.total) + "<td>";
+    std::sort(s.connections.begin(), s.connections.end(),
+              [](const auto& a, const auto& b) { return a.second > b.second; });
+    for (size_t i = 0; i < s.connections.size(); ++i) {
+      out += (i ? ", " : "") + escaped(s.connections[i].first) + " " +
+             std::to_string(s.connections[i].second);
+    }
+    out += "</td><td>";
+    std::vector<std::pair<std::string, uint64_t>> details(s.details.begin(), s.details.end());
+    std::stable_sort(details.begin(), details.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    for (size_t i = 0; i < details.size() && i < kDetailsPerReason; ++i) {
+      out += (i ? "<br>" : "") + escaped(details[i].first) + " (" +
+             std::to_string(details[i].second) + ")";
+    }
+    if (details.size() > kDetailsPerReason) {
+      out += "<br>and " + std::to_string(details.size() - kDetailsPerReason) + " more";
+    }
+    out += "</td></tr>\n";
+  }
+  out += "</table>\n</div>\n";
+}
+
+void append_counters(std::string& out, const std::vector<ConnectionRow>& rows) {
+  out +=
+      "<h2>Counters per connection</h2>\n<p class=\"note\">For every connection: received = "
+      "delivered + all drops + queued at the end.</p>\n<div class=\"wide\">\n"
+      "<table id=\"counters\">\n"
+      "<tr><th>connection</th><th>source &#8594; destination</th><th>constraint</th>"
+      "<th class=\"n\">received</th><th class=\"n\">delivered</th>";
+  for (int r = 0; r < kDropReasonCount; ++r) {
+    out += std::string("<th class=\"n\">") + drop_reason_name(static_cast<DropReason>(r)) + "</th>";
+  }
+  out += "<th class=\"n\">queued</th><th class=\"n\">errors</th><th>status</th></tr>\n";
+  ConnectionStats total;
+  for (const ConnectionRow& row : rows) {
+    const ConnectionStats& s = row.stats;
+    out += std::string("<tr") + (row.feed ? " class=\"feed\"" : "") + " data-connection=\"" +
+           escaped(s.name) + "\"><td>" + escaped(s.name) + (row.feed ? " (feed)" : "") +
+           "</td><td>" + escaped(s.source) + " &#8594; " + escaped(s.destination) +
+           "</td><td><code>" + escaped(row.constraint) + "</code></td>" + number_cell(s.arrived) +
+           number_cell(s.delivered);
+    for (int r = 0; r < kDropReasonCount; ++r) {
+      out += number_cell(s.dropped[r]);
+      total.dropped[r] += s.dropped[r];
+    }
+    out += number_cell(s.pending) + number_cell(s.errors) + "<td>" +
+           (s.quarantined ? "<span class=\"bad\">quarantined</span>" : "") + "</td></tr>\n";
+    total.arrived += s.arrived;
+    total.delivered += s.delivered;
+    total.pending += s.pending;
+    total.errors += s.errors;
+  }
+  out += "<tr class=\"total\" data-connection=\"\"><td>total</td><td></td><td></td>" +
+         number_cell(total.arrived) + number_cell(total.delivered);
+  for (int r = 0; r < kDropReasonCount; ++r) out += number_cell(total.dropped[r]);
+  out +=
+      number_cell(total.pending) + number_cell(total.errors) + "<td></td></tr>\n</table>\n</div>\n";
+}
+
+// Errors, quarantines and publish errors, then the log: the first kMaxListed of each.
+void append_messages(std::string& out, const std::vector<TraceRecord>& records) {
+  std::string problems, log;
+  size_t problem_count = 0, log_count = 0;
+  for (const TraceRecord& r : records) {
+    std::string line;
+    switch (r.kind) {
+      case TraceKind::Error:
+        line = "error on " + r.connection + ": " + r.text;
+        break;
+      case TraceKind::Quarantine:
+        line = "quarantined " + r.connection + ": " + r.text;
+        break;
+      case TraceKind::PublishError:
+        line = "publish error on " + r.port + ": " + r.text;
+        break;
+      case TraceKind::Log:
+        if (log_count++ < kMaxListed) {
+          log += seconds_text(r.t) + "  " + escaped(r.connection) + ": " + escaped(r.text) + "\n";
+        }
+        continue;
+      default:
+        continue;
+    }
+    if (problem_count++ < kMaxListed) problems += seconds_text(r.t) + "  " + escaped(line) + "\n";
+  }
+  auto more = [](size_t count) {
+    return count > kMaxListed ? "… and " + std::to_string(count - kMaxListed) + " more\n"
+                              : std::string();
+  };
+  out += "<h2>Errors and quarantines</h2>\n";
+  out += problem_count ? "<pre id=\"problems\">" + problems + more(problem_count) + "</pre>\n"
+                       : "<p id=\"problems\">None.</p>\n";
+  out += "<h2>Log</h2>\n";
+  out += log_count ? "<pre id=\"log\">" + log + more(log_count) + "</pre>\n"
+                   : "<p id=\"log\">Nothing was logged.</p>\n";
+}
+
+}  // namespace
+
+std::string render_run_report(const RunReportInput& input) {
+  std::string out;
+  out +=
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>";
+  out += "arbc run report: " + escaped(input.header.app) + ", scenario " +
+         escaped(input.header.scenario) + ", seed " + std::to_string(input.header.seed);
+  out += "</title>\n<style>";
+  out += kStyle;
+  out += "</style>\n</head>\n<body>\n";
+  append_header(out, input.header);
+  append_totals(out, input.connections);
+  append_timelines(out, input);
+  append_drops_by_reason(out, input);
+  append_counters(out, input.connections);
+  static const std::vector<TraceRecord> kNone;
+  append_messages(out, input.records ? *input.records : kNone);
+  out +=
+      "<p class=\"note\">Written by <code>arbc run --report</code>; self-contained: no "
+      "network access, no external files.</p>\n<script>";
+  out += kScript;
+  out += "</script>\n</body>\n</html>\n";
+  return out;
+}
+
+}  // namespace arbc::report

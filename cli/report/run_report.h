@@ -1,0 +1,47 @@
+// `arbc run --report FILE.html`: one self-contained HTML page about a run (issue 7). No
+// network, no external script, style or font: the timelines are inline SVG drawn here, so the
+// page reads the same with scripts off; a few lines of inline script only add a time cursor.
+//
+// Sections: header (app, scenario, seed, time run, outcome, the environment's summary),
+// totals, the delivery/drop timeline per connection, event presence per port and event,
+// drops by reason, the counters per connection with a totals row, errors and quarantines,
+// and the run's log.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "runtime/runtime.h"
+#include "runtime/trace_record.h"
+
+namespace arbc::report {
+
+struct RunHeader {
+  std::string app, description, scenario;
+  uint64_t seed = 1;
+  bool realtime = false;
+  double requested = 0;     // --duration, seconds
+  double end = 0;           // the time the run stopped at
+  std::string stop_reason;  // why it stopped early; empty: it ran the whole duration
+  bool success = false;
+  std::string verdict;      // e.g. "success" or "failure (no environment; ...)"
+  std::string environment;  // the environment's summary text, shown as is
+};
+
+struct ConnectionRow {
+  ConnectionStats stats;  // the runtime's counters (Runtime::stats())
+  bool feed = false;      // a generated event feed: never delivers
+  std::string constraint;
+};
+
+struct RunReportInput {
+  RunHeader header;
+  std::vector<ConnectionRow> connections;             // in the app's order
+  const std::vector<TraceRecord>* records = nullptr;  // the whole trace, in order
+};
+
+// The report as one HTML document. Every name and message is HTML-escaped.
+std::string render_run_report(const RunReportInput& input);
+
+}  // namespace arbc::report

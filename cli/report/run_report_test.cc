@@ -1,0 +1,228 @@
+#include "cli/report/run_report.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "runtime/runtime_test_util.h"
+
+namespace arbc::report {
+namespace {
+
+using arbc::testing::TestApp;
+
+// Publishes a random int every 0.1 s and a random flag every 0.2 or 0.6 s.
+class Noisy : public Module {
+ public:
+  double tick_period() const override { return 0.1; }
+  void start() override { flag(); }
+  void tick() override { publish("x", Value(static_cast<int64_t>(rng()() % 100))); }
+  void flag() {
+    publish("f", Value(rng()() % 2 == 0));
+    schedule(rng()() % 2 ? 0.2 : 0.6, [this] { flag(); });
+  }
+};
+
+constexpr const char* kNastyName = "odd<&>\"'name";
+
+// A run of a small app with a feed, a rule with drops of several reasons, and a connection
+// whose name needs escaping; returns the report.
+struct ReportedRun {
+  std::vector<ConnectionStats> stats;
+  std::vector<TraceRecord> records;
+  std::string html;
+};
+
+ReportedRun run_and_report(double duration) {
+  TestApp t;
+  t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
+  t.module("Noisy", {"out x: int", "out f: bool"});
+  t.module("Sink", {"in x: int"});
+  t.connect("feed", "Noisy.f", "Sink.x", "false",
+            "PortMonitor.accept = function(on)\n"
+            "  if on then PortMonitor.setEvent('e', 0.4) else PortMonitor.unsetEvent('e') end\n"
+            "  return true\n"
+            "end\n",
+            model::ConnectionKind::Feed);
+  t.connect("rule", "Noisy.x", "Sink.x", "e",
+            "PortMonitor.accept = function(m)\n"
+            "  if m % 5 == 0 then return false, 'multiple of <5>' end\n"
+            "  return true\n"
+            "end\n"
+            "PortMonitor.update = function(m) if m % 7 == 0 then PortMonitor.novalue() end "
+            "return m end\n");
+  t.connect(kNastyName, "Noisy.x", "Sink.x", "not e");
+  ReportedRun run;
+  RunOptions o;
+  o.duration = duration;
+  o.seed = 3;
+  o.trace_records = &run.records;
+  auto rt = t.start(o);
+  rt->advance(duration);
+  rt->shutdown();
+  run.stats = rt->stats();
+
+  RunReportInput input;
+  input.header.app = "noisy";
+  input.header.description = "<script>alert('pwned')</script> & more";
+  input.header.scenario = "s<1>";
+  input.header.seed = 3;
+  input.header.requested = duration;
+  input.header.end = rt->now();
+  input.header.success = true;
+  input.header.verdict = "success";
+  for (size_t i = 0; i < run.stats.size(); ++i) {
+    const model::Connection& c = t.app.connections[i];
+    input.connections.push_back(
+        {run.stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
+  }
+  input.records = &run.records;
+  run.html = render_run_report(input);
+  return run;
+}
+
+// The part of html from the element with this id to the end of that element's tag name.
+std::string section(const std::string& html, const std::string& tag, const std::string& id) {
+  size_t begin = html.find("<" + tag + " class=\"timeline\" id=\"" + id + "\"");
+  if (begin == std::string::npos) begin = html.find("<" + tag + " id=\"" + id + "\"");
+  if (begin == std::string::npos) return {};
+  size_t end = html.find("</" + tag + ">", begin);
+  return html.substr(begin, end - begin);
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The numbers in a counters row: received, delivered, the drop reasons, queued, errors.
+std::vector<uint64_t> row_numbers(const std::string& html, const std::string& escaped_name) {
+  std::string table = section(html, "table", "counters");
+  size_t begin = table.find("data-connection=\"" + escaped_name + "\"");
+  if (begin == std::string::npos) return {};
+  std::string row = table.substr(begin, table.find("</tr>", begin) - begin);
+  std::vector<uint64_t> out;
+  std::regex cell("<td class=\"n[^\"]*\">([0-9]+)</td>");
+  for (auto it = std::sregex_iterator(row.begin(), row.end(), cell); it != std::sregex_iterator();
+       ++it) {
+    out.push_back(std::stoull((*it)[1]));
+  }
+  return out;
+}
+
+std::vector<uint64_t> expected_numbers(const ConnectionStats& s) {
+  std::vector<uint64_t> out = {s.arrived, s.delivered};
+  for (uint64_t d : s.dropped) out.push_back(d);
+  out.push_back(s.pending);
+  out.push_back(s.errors);
+  return out;
+}
+
+// One 30 s run shared by the tests (made in the first test's SetUp: TestApp needs a test).
+class RunReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!run_) run_ = new ReportedRun(run_and_report(30));
+  }
+  static void TearDownTestSuite() {
+    delete run_;
+    run_ = nullptr;
+  }
+  static ReportedRun* run_;
+};
+ReportedRun* RunReportTest::run_ = nullptr;
+
+TEST_F(RunReportTest, OneDeliveryLanePerConnectionAndOneEventLane) {
+  std::string deliveries = section(run_->html, "svg", "deliveries");
+  ASSERT_FALSE(deliveries.empty());
+  EXPECT_EQ(count(deliveries, "<g class=\"lane\">"), 3u);
+  // Rules first, then the feed under its own heading.
+  size_t rule = deliveries.find(">rule<"), nasty = deliveries.find(">odd&lt;&amp;&gt;");
+  size_t feeds = deliveries.find("event feeds"), feed = deliveries.find(">feed<");
+  EXPECT_LT(rule, nasty);
+  EXPECT_LT(nasty, feeds);
+  EXPECT_LT(feeds, feed);
+  ASSERT_NE(feed, std::string::npos);
+  std::string events = section(run_->html, "svg", "events");
+  EXPECT_EQ(count(events, "<g class=\"lane\">"), 1u);
+  EXPECT_NE(events.find(">e<"), std::string::npos);
+  EXPECT_GT(count(events, "present "), 5u);
+}
+
+TEST_F(RunReportTest, CountersEqualTheRuntimeCounters) {
+  ConnectionStats total;
+  for (const ConnectionStats& s : run_->stats) {
+    std::string name = s.name == kNastyName ? "odd&lt;&amp;&gt;&quot;&#39;name" : s.name;
+    EXPECT_EQ(row_numbers(run_->html, name), expected_numbers(s)) << s.name;
+    total.arrived += s.arrived;
+    total.delivered += s.delivered;
+    for (int r = 0; r < kDropReasonCount; ++r) total.dropped[r] += s.dropped[r];
+    total.pending += s.pending;
+    total.errors += s.errors;
+  }
+  EXPECT_EQ(row_numbers(run_->html, ""), expected_numbers(total));
+  // The run exercised several reasons, so the columns are really compared.
+  EXPECT_GT(total.delivered, 0u);
+  EXPECT_GT(total.drops(DropReason::Rejected), 0u);
+  EXPECT_GT(total.drops(DropReason::NoValue), 0u);
+  EXPECT_GT(total.drops(DropReason::NotSelected), 0u);
+  EXPECT_GT(total.drops(DropReason::Feed), 0u);
+}
+
+// The timeline is drawn from the trace records; its per-lane totals must match the counters,
+// so no record was lost on the way.
+TEST_F(RunReportTest, TimelineTotalsMatchTheCounters) {
+  std::string deliveries = section(run_->html, "svg", "deliveries");
+  for (const ConnectionStats& s : run_->stats) {
+    uint64_t dropped = 0;
+    for (uint64_t d : s.dropped) dropped += d;
+    std::string text = ">" + std::to_string(s.delivered) + " / " + std::to_string(dropped) +
+                       "<title>delivered / dropped";
+    EXPECT_NE(deliveries.find(text), std::string::npos) << s.name << ": " << text;
+  }
+}
+
+TEST_F(RunReportTest, DropsByReasonListsReasonsConnectionsAndDetails) {
+  std::string drops = section(run_->html, "table", "drops");
+  for (int r = 0; r < kDropReasonCount; ++r) {
+    EXPECT_NE(drops.find(std::string("data-reason=\"") + drop_reason_name(DropReason(r)) + "\""),
+              std::string::npos);
+  }
+  // The rejection's detail, escaped.
+  EXPECT_NE(drops.find("multiple of &lt;5&gt; ("), std::string::npos);
+}
+
+TEST_F(RunReportTest, EveryNameIsEscaped) {
+  const std::string& html = run_->html;
+  EXPECT_EQ(html.find("<script>alert"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(&#39;pwned&#39;)&lt;/script&gt; &amp; more"),
+            std::string::npos);
+  EXPECT_EQ(html.find(kNastyName), std::string::npos);
+  EXPECT_NE(html.find("odd&lt;&amp;&gt;&quot;&#39;name"), std::string::npos);
+  EXPECT_NE(html.find("<dd id=\"scenario\">s&lt;1&gt;</dd>"), std::string::npos);
+  EXPECT_EQ(count(html, "<script"), 1u);  // only the report's own inline script
+}
+
+TEST_F(RunReportTest, SelfContained) {
+  const std::string& html = run_->html;
+  for (const char* reference : {"http://", "https://", "<script src", "<link", "@import", "url(",
+                                "<img", "<iframe", "src="}) {
+    EXPECT_EQ(html.find(reference), std::string::npos) << reference;
+  }
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("<meta charset=\"utf-8\">"), std::string::npos);
+}
+
+// Bins keep the page small: ten times the run, hardly a bigger page.
+TEST_F(RunReportTest, SizeIsBoundedByBinsNotByTheRunsLength) {
+  ReportedRun longer = run_and_report(300);
+  uint64_t delivered = 0;
+  for (const ConnectionStats& s : longer.stats) delivered += s.delivered;
+  EXPECT_GT(delivered, 5 * 300u / 10);
+  EXPECT_LT(longer.html.size(), 400u * 1024) << longer.html.size();
+  EXPECT_LT(longer.html.size(), 3 * run_->html.size());
+}
+
+}  // namespace
+}  // namespace arbc::report

@@ -1,0 +1,31 @@
+// One line of the run's trace as a value, for consumers that read the trace in memory
+// (`arbc run --report` builds its HTML report from these) instead of parsing the JSON lines.
+// The fields mirror the JSON keys of docs/runtime.md, "Trace format"; a field a kind does not
+// have stays empty (or -1 / 0).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "runtime/drop_reason.h"
+
+namespace arbc {
+
+enum class TraceKind { Deliver, Drop, Event, Error, Quarantine, Log, PublishError, Pending };
+
+struct TraceRecord {
+  double t = 0;
+  TraceKind kind = TraceKind::Log;
+  // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from").
+  std::string connection;
+  // Deliver: the destination port; Event: the port whose container changed; PublishError.
+  std::string port;
+  DropReason reason = DropReason::Rejected;  // Drop only
+  std::string op;                            // Event: "set", "unset" or "expire"
+  std::string event, owner;                  // Event: the event and the owning connection
+  double expiry = -1;                        // Event: set/expire with a lifetime; -1: none
+  std::string text;                          // Drop: detail; Error, Quarantine, Log: message
+  uint64_t count = 0;                        // Pending: messages left queued
+};
+
+}  // namespace arbc
