@@ -15,6 +15,6 @@ echo "== arbc build specs/table_clean.spec -o out   (compile, prove, write the m
 "$arbc" build specs/table_clean.spec -o out
 echo "== arbc run out/table_clean --scenario mixed   (the paper's experiment in simulation)"
 "$arbc" run out/table_clean --plugin "$build/examples/table_clean/libarbc_table_clean.so" \
-  --scenario mixed --seed 1 --duration 120s
+  --scenario mixed --seed 1 --duration 120s --report out/table_clean-report.html
 echo "== arbc docs specs/table_clean.spec -o out/table_clean-docs   (tables, decision tables, diagram)"
 "$arbc" docs specs/table_clean.spec -o out/table_clean-docs

@@ -13,7 +13,8 @@ packages=(
   graphviz                                   # arbc docs: app.svg
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(clang libclang-rt-14-dev python3 python3-jsonschema)
+  packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
+             chromium)                       # tests/report: the run report in headless Chromium
 fi
 
 missing=()
