@@ -226,3 +226,54 @@ TEST_F(RunReportTest, SizeIsBoundedByBinsNotByTheRunsLength) {
 
 }  // namespace
 }  // namespace arbc::report
+
+namespace arbc::report {
+namespace {
+
+// A monitor that always fails: its errors are listed, its quarantine is marked on its lane
+// and in its counters row, and the outcome shows as a failure.
+TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
+  arbc::testing::TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("broken", "Src.x", "Sink.x", "true",
+            "PortMonitor.accept = function(m) error('boom ' .. m) end\n");
+  std::vector<TraceRecord> records;
+  RunOptions o;
+  o.trace_records = &records;
+  auto rt = t.start(o);
+  for (int k = 0; k < 8; ++k) {
+    arbc::testing::TestApp::publish_at(*rt, 1 + k * 0.5, "Src", "x", Value(k));
+  }
+  rt->advance(6);
+  rt->shutdown();
+  std::vector<ConnectionStats> stats = rt->stats();
+  ASSERT_TRUE(stats[0].quarantined);
+
+  RunReportInput input;
+  input.header.app = "failing";
+  input.header.end = rt->now();
+  input.header.requested = 6;
+  input.header.verdict = "failure (no environment; judged by quarantined connections)";
+  input.connections.push_back({stats[0], false, "true"});
+  input.records = &records;
+  std::string html = render_run_report(input);
+
+  EXPECT_NE(html.find("<dd id=\"outcome\" class=\"bad\">failure (no environment"),
+            std::string::npos);
+  EXPECT_NE(html.find("<title>broken: quarantined at 3.000 s</title>"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"bad\">quarantined</span>"), std::string::npos);
+  std::string problems = html.substr(html.find("<pre id=\"problems\">"));
+  problems = problems.substr(0, problems.find("</pre>"));
+  EXPECT_NE(problems.find("1.000  error on broken: "), std::string::npos) << problems;
+  EXPECT_NE(problems.find("boom 0"), std::string::npos);
+  EXPECT_NE(problems.find("3.000  quarantined broken: 5 failures in a row"), std::string::npos)
+      << problems;
+  EXPECT_EQ(count(html, "error on broken"), 5u);
+  // The three later messages are dropped as quarantined, the five before as monitor errors.
+  EXPECT_EQ(row_numbers(html, "broken"),
+            (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 5}));
+}
+
+}  // namespace
+}  // namespace arbc::report
