@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <regex>
-
 #include "runtime/runtime_test_util.h"
 
 namespace arbc::report {
@@ -102,11 +100,12 @@ std::vector<uint64_t> row_numbers(const std::string& html, const std::string& es
   size_t begin = table.find("data-connection=\"" + escaped_name + "\"");
   if (begin == std::string::npos) return {};
   std::string row = table.substr(begin, table.find("</tr>", begin) - begin);
+  // Each number cell is `<td class="n">N</td>` or `<td class="n zero">0</td>`.
   std::vector<uint64_t> out;
-  std::regex cell("<td class=\"n[^\"]*\">([0-9]+)</td>");
-  for (auto it = std::sregex_iterator(row.begin(), row.end(), cell); it != std::sregex_iterator();
-       ++it) {
-    out.push_back(std::stoull((*it)[1]));
+  for (size_t at = row.find("<td class=\"n"); at != std::string::npos;
+       at = row.find("<td class=\"n", at + 1)) {
+    size_t digits = row.find("\">", at) + 2;
+    out.push_back(std::stoull(row.substr(digits, row.find("</td>", digits) - digits)));
   }
   return out;
 }
