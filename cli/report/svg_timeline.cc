@@ -61,9 +61,11 @@ double tick_step(double end) {
   return 10 * power;
 }
 
+// As many decimals as the step needs: "10 s", "0.5 s", "0.002 s".
 std::string tick_label(double t, double step) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, step < 1 ? "%.1f s" : "%.0f s", t);
+  int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 9);
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.*f s", decimals, t);
   return buffer;
 }
 
