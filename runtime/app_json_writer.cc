@@ -40,26 +40,19 @@ const char* kind_name(ConnectionKind k) {
 void write_location(JsonWriter& w, const SourceLocation& loc) {
   w.key("loc");
   w.begin_object();
-  w.key("file");
-  w.value(loc.file);
-  w.key("line");
-  w.value(loc.line);
-  w.key("column");
-  w.value(loc.column);
-  w.key("end_line");
-  w.value(loc.end_line);
-  w.key("end_column");
-  w.value(loc.end_column);
+  w.member("file", loc.file);
+  w.member("line", loc.line);
+  w.member("column", loc.column);
+  w.member("end_line", loc.end_line);
+  w.member("end_column", loc.end_column);
   w.end_object();
 }
 
 void write_tree(JsonWriter& w, const Constraint& c) {
   w.begin_object();
-  w.key("op");
-  w.value(op_name(c.op));
+  w.member("op", op_name(c.op));
   if (c.op == Constraint::Op::Event) {
-    w.key("event");
-    w.value(c.event);
+    w.member("event", c.event);
   }
   if (!c.args.empty()) {
     w.key("args");
@@ -74,8 +67,7 @@ void write_tree(JsonWriter& w, const Constraint& c) {
 void write_constraint(JsonWriter& w, const char* key, const Constraint& c) {
   w.key(key);
   w.begin_object();
-  w.key("text");
-  w.value(c.to_string());
+  w.member("text", c.to_string());
   w.key("tree");
   write_tree(w, c);
   w.end_object();
@@ -92,20 +84,15 @@ void write_optional(JsonWriter& w, const char* key, const std::optional<double>&
 
 void write_module(JsonWriter& w, const Module& m) {
   w.begin_object();
-  w.key("name");
-  w.value(m.name);
-  w.key("doc");
-  w.value(m.doc);
+  w.member("name", m.name);
+  w.member("doc", m.doc);
   w.key("ports");
   w.begin_array();
   for (const Port& p : m.ports) {
     w.begin_object();
-    w.key("name");
-    w.value(p.name);
-    w.key("direction");
-    w.value(p.direction == Direction::In ? "in" : "out");
-    w.key("type");
-    w.value(p.type ? p.type->to_string() : "");
+    w.member("name", p.name);
+    w.member("direction", p.direction == Direction::In ? "in" : "out");
+    w.member("type", p.type ? p.type->to_string() : "");
     write_location(w, p.loc);
     w.end_object();
   }
@@ -116,31 +103,20 @@ void write_module(JsonWriter& w, const Module& m) {
 
 void write_connection(JsonWriter& w, const Connection& c) {
   w.begin_object();
-  w.key("name");
-  w.value(c.name);
-  w.key("source");
-  w.value(c.source);
-  w.key("destination");
-  w.value(c.destination);
-  w.key("kind");
-  w.value(kind_name(c.kind));
-  w.key("generated");
-  w.value(c.generated);
+  w.member("name", c.name);
+  w.member("source", c.source);
+  w.member("destination", c.destination);
+  w.member("kind", kind_name(c.kind));
+  w.member("generated", c.generated);
   write_constraint(w, "constraint", c.constraint);
-  w.key("sets");
-  w.value(c.sets);
-  w.key("unsets");
-  w.value(c.unsets);
-  w.key("must_set");
-  w.value(c.must_set);
-  w.key("must_unset");
-  w.value(c.must_unset);
-  w.key("opaque");
-  w.value(c.opaque);
+  w.member("sets", c.sets);
+  w.member("unsets", c.unsets);
+  w.member("must_set", c.must_set);
+  w.member("must_unset", c.must_unset);
+  w.member("opaque", c.opaque);
   write_optional(w, "trig_interval", c.trig_interval);
   write_optional(w, "throttle", c.throttle);
-  w.key("monitor");
-  w.value(c.monitor);
+  w.member("monitor", c.monitor);
   w.key("source_map");
   w.begin_array();
   for (const SourceMapEntry& e : c.source_map) {
@@ -156,20 +132,15 @@ void write_connection(JsonWriter& w, const Connection& c) {
 
 void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
   w.begin_object();
-  w.key("port");
-  w.value(a.port);
-  w.key("by_priority");
-  w.value(a.by_priority);
-  w.key("complete");
-  w.value(a.complete);
-  w.key("rules");
-  w.value(a.rules);
+  w.member("port", a.port);
+  w.member("by_priority", a.by_priority);
+  w.member("complete", a.complete);
+  w.member("rules", a.rules);
   w.key("asserts");
   w.begin_array();
   for (const Assertion& as : a.asserts) {
     w.begin_object();
-    w.key("rule");
-    w.value(as.rule);
+    w.member("rule", as.rule);
     write_constraint(w, "property", as.property);
     write_location(w, as.loc);
     w.end_object();
@@ -184,14 +155,10 @@ void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
 std::string to_app_json(const App& app) {
   JsonWriter w;
   w.begin_object();
-  w.key("schema_version");
-  w.value(app.schema_version);
-  w.key("name");
-  w.value(app.name);
-  w.key("description");
-  w.value(app.description);
-  w.key("spec_file");
-  w.value(app.spec_file);
+  w.member("schema_version", app.schema_version);
+  w.member("name", app.name);
+  w.member("description", app.description);
+  w.member("spec_file", app.spec_file);
   w.key("modules");
   w.begin_array();
   for (const Module& m : app.modules) write_module(w, m);
@@ -200,11 +167,9 @@ std::string to_app_json(const App& app) {
   w.begin_array();
   for (const Event& e : app.events) {
     w.begin_object();
-    w.key("name");
-    w.value(e.name);
+    w.member("name", e.name);
     write_optional(w, "lifetime", e.lifetime);
-    w.key("source");
-    w.value(e.source);
+    w.member("source", e.source);
     write_location(w, e.loc);
     w.end_object();
   }
@@ -221,8 +186,7 @@ std::string to_app_json(const App& app) {
   w.begin_array();
   for (const ExclusiveGroup& g : app.exclusive_groups) {
     w.begin_object();
-    w.key("events");
-    w.value(g.events);
+    w.member("events", g.events);
     write_location(w, g.loc);
     w.end_object();
   }

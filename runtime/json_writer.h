@@ -31,6 +31,13 @@ class JsonWriter {
   void null();
   void value(const std::vector<std::string>& strings);
 
+  // key(name) then value(v): one object member.
+  template <class T>
+  void member(std::string_view name, const T& v) {
+    key(name);
+    value(v);
+  }
+
   // The text written so far; complete once every container is closed.
   const std::string& text() const { return out_; }
   std::string take() { return std::move(out_); }
