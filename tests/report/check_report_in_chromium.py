@@ -2,7 +2,7 @@
 """Opens an `arbc run --report` page in headless Chromium (issue 7).
 
 Runs the table-cleaning app (scenario mixed, seed 1, 60 s) with --report, then checks that
-  - the report is one self-contained file under 2 MB;
+  - the report is one self-contained file under 2 MB whose elements all close in order;
   - Chromium logs no console message at all while loading it (the report logs nothing, so any
     message is an error: an uncaught exception, a blocked resource);
   - the report's inline script ran to its end (its time cursors are in the DOM: --dump-dom);
@@ -16,6 +16,7 @@ only if the checks above catch it: proof that the console check detects real err
 Usage: check_report_in_chromium.py --arbc ARBC --plugin LIB --spec SPEC --out DIR [--inject-error]
 """
 import argparse
+import html.parser
 import os
 import re
 import shutil
@@ -49,7 +50,38 @@ def run_arbc(args, report):
     for reference in ("http://", "https://", "<script src", "<link", "@import", "url("):
         if reference in html:
             raise CheckFailed("%s is not self-contained: it contains %r" % (report, reference))
+    check_balanced(report, html)
     return size
+
+
+class TagBalance(html.parser.HTMLParser):
+    """Records end tags that do not close the innermost open element."""
+    VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+            "track", "wbr"}
+
+    def __init__(self):
+        super().__init__()
+        self.open, self.mismatches = [], []
+
+    def handle_starttag(self, tag, attrs):
+        if tag not in self.VOID:
+            self.open.append(tag)
+
+    def handle_endtag(self, tag):
+        if self.open and self.open[-1] == tag:
+            self.open.pop()
+        else:
+            self.mismatches.append("</%s> at line %d while %s is open" %
+                                   (tag, self.getpos()[0], self.open[-1:] or "nothing"))
+
+
+def check_balanced(report, html):
+    balance = TagBalance()
+    balance.feed(html)
+    balance.close()
+    if balance.mismatches or balance.open:
+        raise CheckFailed("%s: elements do not nest: %s; left open: %s" %
+                          (report, balance.mismatches[:5], balance.open))
 
 
 def chromium(extra, page):
