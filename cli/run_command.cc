@@ -242,8 +242,10 @@ int run_command(std::span<char*> args) {
   }
   std::printf("result: %s\n", verdict.c_str());
   if (!report_path.empty()) {
-    std::string html = report::render_run_report(
-        report_input(load.app, *runtime, options, success, verdict, records));
+    report::RunReportInput input =
+        report_input(load.app, *runtime, options, success, verdict, records);
+    if (interrupted && input.header.stop_reason.empty()) input.header.stop_reason = "interrupted";
+    std::string html = report::render_run_report(input);
     std::string write_error = report_file.write(html);
     if (!write_error.empty()) {
       print_errors({write_error});
