@@ -18,6 +18,8 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; }
 td.zero { color: #bbb; } tr.total td { font-weight: 600; border-top: 2px solid #999; }
 tr.feed td:first-child { color: #777; }
 div.wide { overflow-x: auto; }
+#drops td:first-child, #counters th { white-space: nowrap; }
+#drops td:nth-child(2) { min-width: 22em; }
 .swatch { display: inline-block; width: 11px; height: 11px; margin-right: 5px;
           vertical-align: -1px; border-radius: 2px; }
 .legend span.item { margin-right: 14px; white-space: nowrap; font-size: 13px; }
