@@ -12,7 +12,8 @@ dl.header dt { color: #666; } dl.header dd { margin: 0; }
 .ok { color: #0a7d32; font-weight: 600; } .bad { color: #c00; font-weight: 600; }
 pre { background: #f6f6f6; padding: 8px 10px; overflow-x: auto; font-size: 12.5px; }
 table { border-collapse: collapse; font-size: 13px; margin: 4px 0; }
-th, td { border-bottom: 1px solid #e3e3e3; padding: 3px 8px; text-align: left; vertical-align: top; }
+th, td { border-bottom: 1px solid #e3e3e3; padding: 3px 8px; text-align: left;
+         vertical-align: top; }
 th { background: #f3f3f3; font-weight: 600; }
 td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; }
 td.zero { color: #bbb; } tr.total td { font-weight: 600; border-top: 2px solid #999; }
@@ -26,7 +27,8 @@ div.wide { overflow-x: auto; }
 .note { color: #666; font-size: 12.5px; }
 svg.timeline { display: block; max-width: 100%; height: auto; margin: 4px 0;
                font: 12px system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif; }
-svg .axis line { stroke: #ddd; } svg .axis text { fill: #666; font-size: 11px; text-anchor: middle; }
+svg .axis line { stroke: #ddd; }
+svg .axis text { fill: #666; font-size: 11px; text-anchor: middle; }
 svg .axis line.end { stroke: #444; stroke-dasharray: 4 3; }
 svg text.name { text-anchor: end; fill: #222; } svg text.total { fill: #666; font-size: 11px; }
 svg text.heading { font-weight: 600; fill: #333; }
