@@ -26,20 +26,26 @@ Normalisation, two narrow rules and nothing else:
 Timings are not normalised: the page shows only outputs without them (`arbc verify` without
 --stats; `arbc run` in simulated time, which is deterministic for a seed).
 
-Output order: the commands run under `stdbuf -oL` (stdout line-buffered, as on a terminal), so
-lines that a command writes to stdout and stderr appear on the page in the order a user sees.
+Output order: the commands run on a pseudo-terminal, as in a user's shell (stdout is then
+line-buffered), so lines written to stdout and stderr appear in the order a user sees them;
+the terminal is 80x24, and its CR LF line ends are read as LF.
 
 --keep leaves the scratch folder in place and prints its path. --update writes the actual
 outputs into the page's ```text blocks, and the named files into its `file:` blocks, instead of
 comparing (review the diff by eye).
 """
 import difflib
+import fcntl
 import os
 import re
+import select
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile
+import termios
+import time
 
 FENCE = re.compile(r"^```(\S*)\s*$")
 COMMENT = re.compile(r"^<!--\s*(.*?)\s*-->\s*$")
@@ -68,6 +74,41 @@ def blocks(text):
         body = "\n".join(lines[start + 1:j]) + "\n" if j > start + 1 else ""
         yield start + 1, tag, body, note.group(1) if note else None, j + 1
         i = j + 1
+
+
+def run_on_terminal(script, cwd, timeout=600):
+    """Runs `bash -c script` with stdout and stderr on one pseudo-terminal; returns the exit
+    status and what it printed."""
+    master, slave = os.openpty()
+    # A fixed 80x24 window, so that nothing depends on the size of the caller's terminal.
+    fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 80, 0, 0))
+    proc = subprocess.Popen(["bash", "-c", script], cwd=cwd, stdin=subprocess.DEVNULL,
+                            stdout=slave, stderr=slave, env=dict(os.environ, TMPDIR="/tmp"))
+    os.close(slave)
+    chunks, deadline = [], time.monotonic() + timeout
+    try:
+        while time.monotonic() < deadline:
+            ready, _, _ = select.select([master], [], [], 1.0)
+            if not ready:
+                if proc.poll() is not None:
+                    break
+                continue
+            try:
+                data = os.read(master, 65536)
+            except OSError:  # EIO: the child side is closed
+                break
+            if not data:
+                break
+            chunks.append(data)
+    finally:
+        os.close(master)
+    try:
+        returncode = proc.wait(timeout=max(1.0, deadline - time.monotonic()))
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+        return -1, b"".join(chunks).decode("utf-8", "replace") + "\n[timed out]\n"
+    return returncode, b"".join(chunks).decode("utf-8", "replace").replace("\r\n", "\n")
 
 
 def normalise(output, scratch):
@@ -146,10 +187,8 @@ def main():
             expected, text_start, text_end = items[i][2], items[i][0], items[i][4]
             i += 1
             commands += 1
-            proc = subprocess.run(["stdbuf", "-oL", "bash", "-c", body], cwd=scratch, stdout=subprocess.PIPE,
-                                  stderr=subprocess.STDOUT, text=True, timeout=600,
-                                  env=dict(os.environ, TMPDIR="/tmp"))
-            output = normalise(proc.stdout, scratch)
+            returncode, raw = run_on_terminal(body, scratch)
+            output = normalise(raw, scratch)
             if update:
                 updates.append((text_start, text_end, output))
             elif output != expected:
@@ -157,8 +196,8 @@ def main():
                                             "page", "actual")
                 failures.append(f"{where}: output differs from the page\n$ {body}"
                                 + "".join(diff))
-            if proc.returncode != want_exit:
-                failures.append(f"{where}: exit status {proc.returncode}, the page says "
+            if returncode != want_exit:
+                failures.append(f"{where}: exit status {returncode}, the page says "
                                 f"{want_exit}\n$ {body}{output}")
     finally:
         if keep:
