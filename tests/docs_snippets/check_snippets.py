@@ -21,9 +21,11 @@ An HTML comment on the last non-blank line before the fence changes what is done
     <!-- snippet: expect=unknown-event -->    `arbc check` must fail with exactly these ids
     <!-- snippet: verify expect=dead,unused --> `arbc check` passes, then `arbc verify --format
                                               json` reports exactly these check ids (none: proved)
-    <!-- snippet: verify output -->           also: the next fenced block is the text output of
-                                              `arbc verify` run on the spliced spec, saved as
-                                              BASENAME in a temporary folder (byte for byte)
+    <!-- snippet: output ... -->              also: the next fenced block (```text) is what
+                                              `arbc check` (or, with `verify`, `arbc verify`)
+                                              prints on the spliced spec, saved as BASENAME in
+                                              a temporary folder: stdout then stderr, byte for
+                                              byte
 
 Without a comment the snippet must pass `arbc check` with no diagnostic at all.
 """
@@ -57,7 +59,7 @@ def fenced_blocks(text):
         while k >= 0 and not lines[k].strip():
             k -= 1
         note = ANNOTATION.match(lines[k]) if k >= 0 else None
-        body = "\n".join(lines[start + 1:j]) + "\n"
+        body = "\n".join(lines[start + 1:j]) + "\n" if j > start + 1 else ""
         yield start + 1, tag, body, (note.group(1).strip() if note else None), j
         i = j + 1
 
@@ -208,9 +210,13 @@ def check_snippet(arbc, spec_text, name, options, expected_output):
         except (ValueError, KeyError):
             return [f"arbc check printed no JSON (exit {checked.returncode}): {checked.stderr}"]
         want_check = [] if options["verify"] else options["expect"]
+        text = run([arbc, "check", name], tmp)
         if ids != want_check:
-            text = run([arbc, "check", name], tmp).stderr
-            return [f"arbc check ids {ids}, documented {want_check}:\n{text}"]
+            return [f"arbc check ids {ids}, documented {want_check}:\n{text.stderr}"]
+        if options["output"] and not options["verify"] and \
+                text.stdout + text.stderr != expected_output:
+            return ["arbc check output differs from the page\n--- page\n"
+                    f"{expected_output}--- actual\n{text.stdout}{text.stderr}"]
         if want_check:
             return [] if checked.returncode == 2 else [f"arbc check exit {checked.returncode}"]
         if checked.returncode != 0:
