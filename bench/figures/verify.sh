@@ -46,6 +46,10 @@ $gen 1 1000 200 0 "$work/exclusive_1000.json"
 expect_exit 0 "$arbc" verify "$work/exclusive_1000.json"
 figure verify_one_port_1000_rules_200_events 5 1 "$work/exclusive_1000.json"
 
+# The same port with two-cube (DNF) guards: the cube shortcut cannot settle it, Z3 proves it.
+$gen 1 1000 200 0 "$work/exclusive_1000_dnf.json" dnf
+expect_exit 0 "$arbc" verify "$work/exclusive_1000_dnf.json"
+figure verify_one_port_1000_dnf_rules_200_events 5 1 "$work/exclusive_1000_dnf.json"
 $gen 100 100 30 0 "$work/ports_100x100.json"
 expect_exit 0 "$arbc" verify "$work/ports_100x100.json"
 figure verify_100_ports_100_rules 3 1 "$work/ports_100x100.json"
