@@ -71,6 +71,23 @@ TEST(TextFormat, ProvedSaysWhatWasProvedWithoutTimings) {
   EXPECT_THAT(format_text(reports(testing::table_clean_model()), nullptr, true), HasSubstr(" s, "));
 }
 
+TEST(TextFormat, LongListsAreCutToOneReadableLine) {
+  VerifyReport report;
+  report.app = "big";
+  PortResult port;
+  port.port = "M.in";
+  for (int i = 0; i < 1000; ++i) port.rules.push_back("r" + std::to_string(i));
+  port.events = {"a", "b"};
+  report.ports.push_back(port);
+  std::string text = format_text({{"big.json", report}}, nullptr, false);
+  EXPECT_THAT(text,
+              HasSubstr("rules r0, r1, r2, r3, r4, r5, r6, r7, r8, r9, ..., r999 (1000 in all) "
+                        "are never selected together"));
+  EXPECT_THAT(text, Not(HasSubstr("r10,")));
+  EXPECT_THAT(text, HasSubstr("over 2 events (a, b);"));  // short lists stay whole
+  EXPECT_THAT(text, HasSubstr("proved: 1 port, 1000 rules"));
+}
+
 TEST(TextFormat, RefutedQuotesTheRule) {
   SourceCache sources;
   sources.add("tests/verify/table_clean_take_mutant.spec",

@@ -5,9 +5,19 @@
 namespace arbc::verify {
 namespace {
 
+// At most kListed names, then "..., last (N in all)": a 1,000-rule port stays one readable
+// line. The JSON and SARIF reports keep every name.
+constexpr size_t kListed = 12;
+
 std::string join(const std::vector<std::string>& items) {
   std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items.size() > kListed && i == kListed - 2) {
+      out += ", ..., " + items.back() + " (" + std::to_string(items.size()) + " in all)";
+      break;
+    }
+    out += (out.empty() ? "" : ", ") + items[i];
+  }
   return out.empty() ? "none" : out;
 }
 
