@@ -1,8 +1,8 @@
 // Two modules for the installed-package test: Counter publishes 1, 2, 3, ... ten times a
 // second; Printer logs every value it receives.
-#include "runtime/module.h"  // under <prefix>/include/arbc, which the package adds
-
 #include <string>
+
+#include "runtime/module.h"  // under <prefix>/include/arbc, which the package adds
 
 namespace hello {
 
