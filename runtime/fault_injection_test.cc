@@ -246,7 +246,9 @@ TEST(FaultInjectionTest, ErrorInDestroyIsCountedAtShutdown) {
   EXPECT_EQ(errors[0]["message"], "monitors/faulty.lua:1: destroy boom");
 }
 
-// Misusing each PortMonitor helper is an error in the callback that called it.
+// Misusing each PortMonitor helper (or print) is an error in the callback that called it.
+// Under AddressSanitizer (scripts/sanitize.sh) this also proves that an error raised inside
+// a helper leaks nothing (Lua's longjmp skips C++ destructors).
 TEST(FaultInjectionTest, HelperMisuseInAcceptDropsTheMessage) {
   const std::pair<std::string, std::string> cases[] = {
       {"PortMonitor.setEvent('e', -1)", "lifetime must be >= 0"},
@@ -256,6 +258,9 @@ TEST(FaultInjectionTest, HelperMisuseInAcceptDropsTheMessage) {
       {"PortMonitor.setConstraint('e and (')", "setConstraint: "},
       {"PortMonitor.setTrigInterval(0)", "interval must be > 0"},
       {"PortMonitor.setTrigInterval(0/0)", "interval must be > 0"},
+      {"print(1, setmetatable({}, {__tostring = function() error('no text') end}))", "no text"},
+      {"print(setmetatable({}, {__tostring = function() while true do end end}))",
+       "instruction budget"},
   };
   for (const auto& [call, message] : cases) {
     SCOPED_TRACE(call);
