@@ -10,55 +10,6 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-Json location_json(const SourceLocation& loc) {
-  Json j;
-  j["file"] = loc.file;
-  j["line"] = loc.line;
-  j["column"] = loc.column;
-  j["end_line"] = loc.end_line;
-  j["end_column"] = loc.end_column;
-  return j;
-}
-
-const char* op_name(Constraint::Op op) {
-  switch (op) {
-    case Constraint::Op::True: return "true";
-    case Constraint::Op::False: return "false";
-    case Constraint::Op::Event: return "event";
-    case Constraint::Op::Not: return "not";
-    case Constraint::Op::And: return "and";
-    case Constraint::Op::Or: return "or";
-  }
-  return "?";
-}
-
-Json constraint_tree(const Constraint& c) {
-  Json j;
-  j["op"] = op_name(c.op);
-  if (c.op == Constraint::Op::Event) j["event"] = c.event;
-  if (!c.args.empty()) {
-    j["args"] = Json::array();
-    for (const Constraint& a : c.args) j["args"].push_back(constraint_tree(a));
-  }
-  return j;
-}
-
-Json constraint_json(const Constraint& c) {
-  Json j;
-  j["text"] = c.to_string();
-  j["tree"] = constraint_tree(c);
-  return j;
-}
-
-const char* kind_name(ConnectionKind k) {
-  switch (k) {
-    case ConnectionKind::Rule: return "rule";
-    case ConnectionKind::Feed: return "feed";
-    case ConnectionKind::Connect: return "connect";
-  }
-  return "?";
-}
-
 // Reading: each helper throws LoadError with the JSON path of the offending value.
 struct LoadError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -193,7 +144,8 @@ App read_app(const Json& root) {
       Port port;
       port.name = get_string(ports[k], pp, "name");
       std::string dir = get_string(ports[k], pp, "direction");
-      if (dir != "in" && dir != "out") throw LoadError(pp + ".direction: expected \"in\" or \"out\"");
+      if (dir != "in" && dir != "out")
+        throw LoadError(pp + ".direction: expected \"in\" or \"out\"");
       port.direction = dir == "in" ? Direction::In : Direction::Out;
       port.type = read_type(ports[k], pp);
       port.loc = read_location(ports[k], pp);
@@ -224,10 +176,14 @@ App read_app(const Json& root) {
     c.source = get_string(cj, p, "source");
     c.destination = get_string(cj, p, "destination");
     std::string kind = get_string(cj, p, "kind");
-    if (kind == "rule") c.kind = ConnectionKind::Rule;
-    else if (kind == "feed") c.kind = ConnectionKind::Feed;
-    else if (kind == "connect") c.kind = ConnectionKind::Connect;
-    else throw LoadError(p + ".kind: expected \"rule\", \"feed\" or \"connect\"");
+    if (kind == "rule")
+      c.kind = ConnectionKind::Rule;
+    else if (kind == "feed")
+      c.kind = ConnectionKind::Feed;
+    else if (kind == "connect")
+      c.kind = ConnectionKind::Connect;
+    else
+      throw LoadError(p + ".kind: expected \"rule\", \"feed\" or \"connect\"");
     c.generated = opt_bool(cj, p, "generated");
     c.constraint = read_constraint(cj, p, "constraint");
     c.sets = string_list(cj, p, "sets");
@@ -291,104 +247,7 @@ App read_app(const Json& root) {
   return app;
 }
 
-Json optional_number(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
-
 }  // namespace
-
-std::string to_app_json(const App& app) {
-  Json root;
-  root["schema_version"] = app.schema_version;
-  root["name"] = app.name;
-  root["description"] = app.description;
-  root["spec_file"] = app.spec_file;
-  root["modules"] = Json::array();
-  for (const Module& m : app.modules) {
-    Json mj;
-    mj["name"] = m.name;
-    mj["doc"] = m.doc;
-    mj["ports"] = Json::array();
-    for (const Port& p : m.ports) {
-      Json pj;
-      pj["name"] = p.name;
-      pj["direction"] = p.direction == Direction::In ? "in" : "out";
-      pj["type"] = p.type ? p.type->to_string() : "";
-      pj["loc"] = location_json(p.loc);
-      mj["ports"].push_back(std::move(pj));
-    }
-    mj["loc"] = location_json(m.loc);
-    root["modules"].push_back(std::move(mj));
-  }
-  root["events"] = Json::array();
-  for (const Event& e : app.events) {
-    Json ej;
-    ej["name"] = e.name;
-    ej["lifetime"] = optional_number(e.lifetime);
-    ej["source"] = e.source;
-    ej["loc"] = location_json(e.loc);
-    root["events"].push_back(std::move(ej));
-  }
-  root["connections"] = Json::array();
-  for (const Connection& c : app.connections) {
-    Json cj;
-    cj["name"] = c.name;
-    cj["source"] = c.source;
-    cj["destination"] = c.destination;
-    cj["kind"] = kind_name(c.kind);
-    cj["generated"] = c.generated;
-    cj["constraint"] = constraint_json(c.constraint);
-    cj["sets"] = c.sets;
-    cj["unsets"] = c.unsets;
-    cj["must_set"] = c.must_set;
-    cj["must_unset"] = c.must_unset;
-    cj["opaque"] = c.opaque;
-    cj["trig_interval"] = optional_number(c.trig_interval);
-    cj["throttle"] = optional_number(c.throttle);
-    cj["monitor"] = c.monitor;
-    cj["source_map"] = Json::array();
-    Json& map = cj["source_map"];
-    for (const SourceMapEntry& e : c.source_map) {
-      Json pair = Json::array();
-      pair.push_back(e.monitor_line);
-      pair.push_back(e.spec_line);
-      map.push_back(std::move(pair));
-    }
-    cj["loc"] = location_json(c.loc);
-    root["connections"].push_back(std::move(cj));
-  }
-  root["arbitrated_ports"] = Json::array();
-  for (const ArbitratedPort& a : app.arbitrated_ports) {
-    Json aj;
-    aj["port"] = a.port;
-    aj["by_priority"] = a.by_priority;
-    aj["complete"] = a.complete;
-    aj["rules"] = a.rules;
-    aj["asserts"] = Json::array();
-    for (const Assertion& as : a.asserts) {
-      Json sj;
-      sj["rule"] = as.rule;
-      sj["property"] = constraint_json(as.property);
-      sj["loc"] = location_json(as.loc);
-      aj["asserts"].push_back(std::move(sj));
-    }
-    aj["loc"] = location_json(a.loc);
-    root["arbitrated_ports"].push_back(std::move(aj));
-  }
-  root["exclusive_groups"] = Json::array();
-  for (const ExclusiveGroup& g : app.exclusive_groups) {
-    Json gj;
-    gj["events"] = g.events;
-    gj["loc"] = location_json(g.loc);
-    root["exclusive_groups"].push_back(std::move(gj));
-  }
-  root["invariants"] = Json::array();
-  for (const Invariant& inv : app.invariants) {
-    Json ij;
-    ij["formula"] = constraint_json(inv.formula);
-    ij["loc"] = location_json(inv.loc);
-    root["invariants"].push_back(std::move(ij));
-  }
-  return root.dump(2) + "\n";
-}
 
 AppLoad from_app_json(std::string_view text) {
   AppLoad result;

@@ -4,11 +4,10 @@
 
 namespace arbc::model {
 
-Constraint effective_guard(const App& app, std::string_view port, const Connection& rule) {
+Constraint effective_guard(std::span<const Connection* const> into, const Connection& rule) {
   if (rule.opaque) return rule.constraint;
   std::vector<Constraint> parts{rule.constraint};
   for (const std::string& e : rule.must_set) parts.push_back(Constraint::event_ref(e));
-  std::vector<const Connection*> into = app.connections_into(port);
   for (const std::string& e : rule.must_unset) {
     bool set_elsewhere = std::any_of(into.begin(), into.end(), [&](const Connection* other) {
       return other != &rule &&
@@ -17,6 +16,10 @@ Constraint effective_guard(const App& app, std::string_view port, const Connecti
     if (!set_elsewhere) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
   }
   return Constraint::conjunction(std::move(parts));
+}
+
+Constraint effective_guard(const App& app, std::string_view port, const Connection& rule) {
+  return effective_guard(app.connections_into(port), rule);
 }
 
 }  // namespace arbc::model

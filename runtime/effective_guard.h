@@ -1,15 +1,22 @@
 // The effective guard of a rule (DESIGN.md section 5):
 //   E_c = G_c and (events c sets on every accepting path)
-//             and not (events c unsets on every such path that no other connection of the port sets)
+//             and not (events c unsets on every such path that no other connection of the port
+//             sets)
 // A `script` rule is opaque: E_c = G_c. The verifier proves facts about effective guards, and
 // the docs' decision tables show them, so both read this one definition.
 #pragma once
 
+#include <span>
 #include <string_view>
 
 #include "runtime/app_model.h"
 
 namespace arbc::model {
+
+// `into` is every connection into the rule's port (App::connections_into). Callers that need
+// the guards of all rules of a port pass it once: searching the whole app per rule is
+// quadratic in the number of connections.
+Constraint effective_guard(std::span<const Connection* const> into, const Connection& rule);
 
 Constraint effective_guard(const App& app, std::string_view port, const Connection& rule);
 

@@ -20,8 +20,7 @@ TEST(EffectiveGuardTest, AddsEventsSetOnEveryAcceptingPath) {
   track.sets = track.must_set = {"e_face_detected"};
   app.connections = {track, rule("search", "not e_face_detected")};
   EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[0]).to_string(), "e_face_detected");
-  EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[1]).to_string(),
-            "not e_face_detected");
+  EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[1]).to_string(), "not e_face_detected");
 }
 
 TEST(EffectiveGuardTest, AnUnsetCountsOnlyWhenNoOtherConnectionSetsTheEvent) {

@@ -77,4 +77,20 @@ Known CubeShortcut::can_hold_together(int i, int j) const {
   return domain_holds(both) ? Known::Yes : Known::Unknown;
 }
 
+bool CubeShortcut::pairwise_disjoint() const {
+  auto clash = [this](const Cube& a, const Cube& b) {
+    if (a.contradictory || b.contradictory) return true;
+    for (size_t w = 0; w < static_cast<size_t>(words_); ++w) {
+      if ((a.pos[w] & b.neg[w]) | (a.neg[w] & b.pos[w])) return true;
+    }
+    return false;
+  };
+  for (size_t i = 0; i < cubes_.size(); ++i) {
+    for (size_t j = i + 1; j < cubes_.size(); ++j) {
+      if (!cubes_[i].is_cube || !cubes_[j].is_cube || !clash(cubes_[i], cubes_[j])) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace arbc::verify

@@ -27,6 +27,9 @@ class CubeShortcut {
   Known can_hold(int i) const;
   // Can rules i and j hold together?
   Known can_hold_together(int i, int j) const;
+  // True when every pair of rules has complementary literals, so no two can ever hold
+  // together: the port is exclusive whatever the domain, with no solver query.
+  bool pairwise_disjoint() const;
 
  private:
   struct Cube {

@@ -49,5 +49,17 @@ TEST(CubeShortcut, AWitnessMustSatisfyTheDomain) {
   EXPECT_EQ(s.can_hold_together(0, 1), Known::Unknown);
 }
 
+TEST(CubeShortcut, PairwiseDisjointOnlyWhenEveryPairClashes) {
+  model::App priority;  // what `by priority` lowers to
+  EXPECT_TRUE(CubeShortcut(scope_of(priority, {"a", "not a and b", "not a and not b"}))
+                  .pairwise_disjoint());
+  model::App overlap;  // r0 and r2 hold together in {a, c}
+  EXPECT_FALSE(CubeShortcut(scope_of(overlap, {"a and not b", "b", "c"})).pairwise_disjoint());
+  model::App not_cube;  // disjoint in fact, but only the solver can say so
+  EXPECT_FALSE(CubeShortcut(scope_of(not_cube, {"a", "not a and (b or c)"})).pairwise_disjoint());
+  model::App one;
+  EXPECT_TRUE(CubeShortcut(scope_of(one, {"a or b"})).pairwise_disjoint());
+}
+
 }  // namespace
 }  // namespace arbc::verify

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <span>
 
 namespace arbc::verify {
 namespace {
@@ -19,9 +20,10 @@ std::set<std::string> events_unset_by(const model::Connection& c) {
   return s;
 }
 
-const model::Connection* find_rule(const model::App& app, const model::ArbitratedPort& port,
+// `into` is every connection into the port: looked up once per port, not once per rule.
+const model::Connection* find_rule(std::span<const model::Connection* const> into,
                                    const std::string& name) {
-  for (const model::Connection* c : app.connections_into(port.port)) {
+  for (const model::Connection* c : into) {
     if (c->name == name && c->kind == model::ConnectionKind::Rule) return c;
   }
   return nullptr;
@@ -37,8 +39,9 @@ struct Read {
 
 std::map<std::string, Read> reads_of(const model::App& app, const model::ArbitratedPort& port) {
   std::map<std::string, Read> reads;
+  std::vector<const model::Connection*> into = app.connections_into(port.port);
   for (const std::string& name : port.rules) {
-    const model::Connection* c = find_rule(app, port, name);
+    const model::Connection* c = find_rule(into, name);
     if (!c) continue;
     std::set<std::string> events;
     c->constraint.collect_events(events);

@@ -1,6 +1,7 @@
 // Puts generated files on disk as one unit: everything is written into a staging directory
 // beside the destination first, and only then swapped in, so a failed build never leaves a
-// half-written application, and monitors of rules that no longer exist do not linger.
+// half-written application, and monitors of rules that no longer exist do not linger. Files
+// whose bytes did not change since the previous build are hard-linked into the new one.
 #pragma once
 
 #include <string>

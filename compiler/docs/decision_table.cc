@@ -101,10 +101,11 @@ DecisionTable decision_table(const model::App& app, const model::ArbitratedPort&
   table.port = port.port;
   std::vector<Constraint> guards;
   std::set<std::string> events;
+  std::vector<const model::Connection*> into = app.connections_into(port.port);
   for (const std::string& name : port.rules) {
-    for (const model::Connection* c : app.connections_into(port.port)) {
+    for (const model::Connection* c : into) {
       if (c->name != name || c->kind != model::ConnectionKind::Rule) continue;
-      guards.push_back(model::effective_guard(app, port.port, *c));
+      guards.push_back(model::effective_guard(into, *c));
       guards.back().collect_events(events);
       table.rules.push_back({name, guards.back().to_string(), dnf_text(guards.back())});
     }

@@ -1,0 +1,74 @@
+#include "compiler/codegen/write_artifacts.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace arbc::codegen {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+ino_t inode(const fs::path& p) {
+  struct stat st {};
+  EXPECT_EQ(::stat(p.c_str(), &st), 0) << p;
+  return st.st_ino;
+}
+
+class WriteArtifacts : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    out_ = fs::temp_directory_path() /
+           ("arbc_write_artifacts_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(out_);
+  }
+  void TearDown() override { fs::remove_all(out_); }
+  fs::path out_;
+};
+
+TEST_F(WriteArtifacts, RebuildKeepsUnchangedFilesAndReplacesTheRest) {
+  ASSERT_EQ(write_artifacts(out_, "app",
+                            {{"app.json", "{}\n"},
+                             {"monitors/a.lua", "-- a\n"},
+                             {"monitors/b.lua", "-- b\n"},
+                             {"monitors/gone.lua", "-- gone\n"}}),
+            "");
+  fs::path app = out_ / "app";
+  ino_t a_before = inode(app / "monitors/a.lua");
+  ino_t b_before = inode(app / "monitors/b.lua");
+
+  ASSERT_EQ(write_artifacts(out_, "app",
+                            {{"app.json", "{}\n"},
+                             {"monitors/a.lua", "-- a\n"},
+                             {"monitors/b.lua", "-- b, changed\n"}}),
+            "");
+  EXPECT_EQ(inode(app / "monitors/a.lua"), a_before);  // the same file, linked
+  EXPECT_EQ(read(app / "monitors/a.lua"), "-- a\n");
+  EXPECT_EQ(read(app / "monitors/b.lua"), "-- b, changed\n");
+  EXPECT_NE(inode(app / "monitors/b.lua"), b_before);
+  EXPECT_FALSE(fs::exists(app / "monitors/gone.lua"));         // no rule, no monitor
+  EXPECT_EQ(fs::hard_link_count(app / "monitors/a.lua"), 1u);  // the old build is gone
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
+TEST_F(WriteArtifacts, RefusesToReplaceADirectoryThatIsNotABuild) {
+  fs::create_directories(out_ / "app");
+  std::ofstream(out_ / "app" / "notes.txt") << "mine\n";
+  std::string error = write_artifacts(out_, "app", {{"app.json", "{}\n"}});
+  EXPECT_NE(error.find("refusing to replace"), std::string::npos) << error;
+  EXPECT_EQ(read(out_ / "app" / "notes.txt"), "mine\n");
+}
+
+}  // namespace
+}  // namespace arbc::codegen

@@ -1,0 +1,207 @@
+// to_app_json: the core model as app.json text (docs/app-json.md), written in one pass with
+// JsonWriter. Reading it back is app_json.cc's job.
+#include "runtime/app_json.h"
+#include "runtime/json_writer.h"
+
+namespace arbc::model {
+
+namespace {
+
+const char* op_name(Constraint::Op op) {
+  switch (op) {
+    case Constraint::Op::True:
+      return "true";
+    case Constraint::Op::False:
+      return "false";
+    case Constraint::Op::Event:
+      return "event";
+    case Constraint::Op::Not:
+      return "not";
+    case Constraint::Op::And:
+      return "and";
+    case Constraint::Op::Or:
+      return "or";
+  }
+  return "?";
+}
+
+const char* kind_name(ConnectionKind k) {
+  switch (k) {
+    case ConnectionKind::Rule:
+      return "rule";
+    case ConnectionKind::Feed:
+      return "feed";
+    case ConnectionKind::Connect:
+      return "connect";
+  }
+  return "?";
+}
+
+void write_location(JsonWriter& w, const SourceLocation& loc) {
+  w.key("loc");
+  w.begin_object();
+  w.member("file", loc.file);
+  w.member("line", loc.line);
+  w.member("column", loc.column);
+  w.member("end_line", loc.end_line);
+  w.member("end_column", loc.end_column);
+  w.end_object();
+}
+
+void write_tree(JsonWriter& w, const Constraint& c) {
+  w.begin_object();
+  w.member("op", op_name(c.op));
+  if (c.op == Constraint::Op::Event) {
+    w.member("event", c.event);
+  }
+  if (!c.args.empty()) {
+    w.key("args");
+    w.begin_array();
+    for (const Constraint& a : c.args) write_tree(w, a);
+    w.end_array();
+  }
+  w.end_object();
+}
+
+// A constraint both as text (for people) and as a tree (for tools that do not parse the text).
+void write_constraint(JsonWriter& w, const char* key, const Constraint& c) {
+  w.key(key);
+  w.begin_object();
+  w.member("text", c.to_string());
+  w.key("tree");
+  write_tree(w, c);
+  w.end_object();
+}
+
+void write_optional(JsonWriter& w, const char* key, const std::optional<double>& v) {
+  w.key(key);
+  if (v) {
+    w.value(*v);
+  } else {
+    w.null();
+  }
+}
+
+void write_module(JsonWriter& w, const Module& m) {
+  w.begin_object();
+  w.member("name", m.name);
+  w.member("doc", m.doc);
+  w.key("ports");
+  w.begin_array();
+  for (const Port& p : m.ports) {
+    w.begin_object();
+    w.member("name", p.name);
+    w.member("direction", p.direction == Direction::In ? "in" : "out");
+    w.member("type", p.type ? p.type->to_string() : "");
+    write_location(w, p.loc);
+    w.end_object();
+  }
+  w.end_array();
+  write_location(w, m.loc);
+  w.end_object();
+}
+
+void write_connection(JsonWriter& w, const Connection& c) {
+  w.begin_object();
+  w.member("name", c.name);
+  w.member("source", c.source);
+  w.member("destination", c.destination);
+  w.member("kind", kind_name(c.kind));
+  w.member("generated", c.generated);
+  write_constraint(w, "constraint", c.constraint);
+  w.member("sets", c.sets);
+  w.member("unsets", c.unsets);
+  w.member("must_set", c.must_set);
+  w.member("must_unset", c.must_unset);
+  w.member("opaque", c.opaque);
+  write_optional(w, "trig_interval", c.trig_interval);
+  write_optional(w, "throttle", c.throttle);
+  w.member("monitor", c.monitor);
+  w.key("source_map");
+  w.begin_array();
+  for (const SourceMapEntry& e : c.source_map) {
+    w.begin_array();
+    w.value(e.monitor_line);
+    w.value(e.spec_line);
+    w.end_array();
+  }
+  w.end_array();
+  write_location(w, c.loc);
+  w.end_object();
+}
+
+void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
+  w.begin_object();
+  w.member("port", a.port);
+  w.member("by_priority", a.by_priority);
+  w.member("complete", a.complete);
+  w.member("rules", a.rules);
+  w.key("asserts");
+  w.begin_array();
+  for (const Assertion& as : a.asserts) {
+    w.begin_object();
+    w.member("rule", as.rule);
+    write_constraint(w, "property", as.property);
+    write_location(w, as.loc);
+    w.end_object();
+  }
+  w.end_array();
+  write_location(w, a.loc);
+  w.end_object();
+}
+
+}  // namespace
+
+std::string to_app_json(const App& app) {
+  JsonWriter w;
+  w.begin_object();
+  w.member("schema_version", app.schema_version);
+  w.member("name", app.name);
+  w.member("description", app.description);
+  w.member("spec_file", app.spec_file);
+  w.key("modules");
+  w.begin_array();
+  for (const Module& m : app.modules) write_module(w, m);
+  w.end_array();
+  w.key("events");
+  w.begin_array();
+  for (const Event& e : app.events) {
+    w.begin_object();
+    w.member("name", e.name);
+    write_optional(w, "lifetime", e.lifetime);
+    w.member("source", e.source);
+    write_location(w, e.loc);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("connections");
+  w.begin_array();
+  for (const Connection& c : app.connections) write_connection(w, c);
+  w.end_array();
+  w.key("arbitrated_ports");
+  w.begin_array();
+  for (const ArbitratedPort& a : app.arbitrated_ports) write_arbitrated_port(w, a);
+  w.end_array();
+  w.key("exclusive_groups");
+  w.begin_array();
+  for (const ExclusiveGroup& g : app.exclusive_groups) {
+    w.begin_object();
+    w.member("events", g.events);
+    write_location(w, g.loc);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("invariants");
+  w.begin_array();
+  for (const Invariant& inv : app.invariants) {
+    w.begin_object();
+    write_constraint(w, "formula", inv.formula);
+    write_location(w, inv.loc);
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+  return w.take() + "\n";
+}
+
+}  // namespace arbc::model
