@@ -45,6 +45,7 @@ struct FaultRun {
   std::vector<PluginStats> plugins;
   std::vector<nlohmann::json> trace;
   std::vector<std::string> reports;
+  std::string table;                    // the end-of-run table `arbc run` prints
   std::map<std::string, int> sink_got;  // deliveries Sink received, by connection
 
   const ConnectionStats& operator[](const std::string& c) const { return stats.at(c); }
@@ -106,6 +107,7 @@ FaultRun run(const Fault& fault) {
   rt->shutdown();
   for (const ConnectionStats& s : rt->stats()) r.stats[s.name] = s;
   r.plugins = rt->plugin_stats();
+  r.table = rt->stats_table();
   for (const auto& g : TestApp::sink(*rt).got) ++r.sink_got[g.connection];
   r.reports = t.reports;
   std::ifstream in(options.trace_path);
@@ -353,6 +355,8 @@ TEST(FaultInjectionTest, ModuleThatThrowsFromEveryCallbackIsContained) {
             std::string::npos)
       << reports;
   EXPECT_NE(reports.find("Bad: timer threw: timer failed"), std::string::npos) << reports;
+  EXPECT_NE(r.table.find("Bad: 11 exception(s) caught, the run went on"), std::string::npos)
+      << r.table;
   // Reported once per distinct text, not once per throw: start, three on_delivery texts,
   // tick, timer, stop.
   EXPECT_EQ(r.reports.size(), 7u) << reports;
@@ -400,6 +404,7 @@ TEST(FaultInjectionTest, MistypedMessageIsDroppedOnEachConnectionOfThePort) {
   EXPECT_EQ(publish_errors[0]["port"], "Src2.w");
   EXPECT_EQ(publish_errors[2]["port"], "Src2.nope");
   EXPECT_EQ(r.sink_got.at("faulty"), 1);
+  EXPECT_NE(r.table.find(" bad-type"), std::string::npos) << r.table;  // a column of its own
 }
 
 TEST(FaultInjectionTest, BurstOverflowsOnlyItsOwnQueue) {
