@@ -13,8 +13,9 @@ enum class DropReason {
   MonitorError,  // a script error or a callback returned the wrong type
   Quarantined,   // the connection failed too often and was taken out of service
   QueueFull,     // the connection's queue was at its bound
+  BadType,       // the source module published a value its output port's type does not admit
 };
-inline constexpr int kDropReasonCount = 8;
+inline constexpr int kDropReasonCount = 9;
 
 inline const char* drop_reason_name(DropReason r) {
   switch (r) {
@@ -34,6 +35,8 @@ inline const char* drop_reason_name(DropReason r) {
       return "quarantined";
     case DropReason::QueueFull:
       return "queue-full";
+    case DropReason::BadType:
+      return "bad-type";
   }
   return "?";
 }

@@ -36,16 +36,47 @@ int api_has_event(lua_State* L) {
   return 1;
 }
 
+// Lua raises errors with longjmp, which skips C++ destructors: a C++ object alive when the
+// API function raises (an error it reports, or a memory error at the state's cap while pushing
+// a string) would leak. So the API functions below raise only when no C++ object is alive,
+// and push C++ strings through a protected call.
+
+int push_string_unprotected(lua_State* L) {
+  const auto* text = static_cast<const std::string*>(lua_touserdata(L, 1));
+  lua_pushlstring(L, text->data(), text->size());
+  return 1;
+}
+
+// Pushes text; on a memory error pushes the error object instead and returns false.
+bool push_string(lua_State* L, const std::string& text) {
+  lua_pushcfunction(L, push_string_unprotected);
+  lua_pushlightuserdata(L, const_cast<std::string*>(&text));
+  return lua_pcall(L, 1, 1, 0) == LUA_OK;
+}
+
 int api_set_constraint(lua_State* L) {
-  std::string error = host_of(L)->set_constraint(luaL_checkstring(L, 1));
-  if (!error.empty()) return luaL_error(L, "setConstraint: %s", error.c_str());
-  return 0;
+  const char* text = luaL_checkstring(L, 1);
+  bool pushed = false;
+  {
+    std::string error = host_of(L)->set_constraint(text);
+    if (error.empty()) return 0;
+    pushed = push_string(L, "setConstraint: " + error);  // else a memory error was pushed
+  }
+  if (pushed) {  // prefix the script's file and line, as luaL_error does
+    luaL_where(L, 1);
+    lua_insert(L, -2);
+    lua_concat(L, 2);
+  }
+  return lua_error(L);
 }
 
 int api_get_constraint(lua_State* L) {
-  std::string text = host_of(L)->get_constraint();
-  lua_pushlstring(L, text.data(), text.size());
-  return 1;
+  bool pushed = false;
+  {
+    std::string text = host_of(L)->get_constraint();
+    pushed = push_string(L, text);
+  }
+  return pushed ? 1 : lua_error(L);
 }
 
 int api_set_trig_interval(lua_State* L) {
@@ -66,14 +97,17 @@ int api_novalue(lua_State* L) {
 }
 
 int api_print(lua_State* L) {
-  std::string line;
+  // First every argument to a string on the stack (__tostring may run Lua code and raise),
+  // then the C++ line, which nothing after can skip.
   int n = lua_gettop(L);
+  luaL_checkstack(L, n, "too many arguments to print");
+  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);
+  std::string line;
   for (int i = 1; i <= n; ++i) {
     if (i > 1) line += '\t';
     size_t len;
-    const char* s = luaL_tolstring(L, i, &len);
+    const char* s = lua_tolstring(L, n + i, &len);
     line.append(s, len);
-    lua_pop(L, 1);
   }
   host_of(L)->print(line);
   return 0;

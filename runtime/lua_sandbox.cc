@@ -90,14 +90,17 @@ void LuaSandbox::budget_hook(lua_State* L, lua_Debug*) {
 }
 
 int LuaSandbox::print(lua_State* L) {
-  std::string line;
+  // Every argument to a string on the stack first: __tostring may raise (a longjmp), which
+  // would skip the destructor of a C++ line already under construction.
   int n = lua_gettop(L);
+  luaL_checkstack(L, n, "too many arguments to print");
+  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);
+  std::string line;
   for (int i = 1; i <= n; ++i) {
     if (i > 1) line += '\t';
     size_t len;
-    const char* s = luaL_tolstring(L, i, &len);
+    const char* s = lua_tolstring(L, n + i, &len);
     line.append(s, len);
-    lua_pop(L, 1);
   }
   LuaSandbox* self = sandbox_of(L);
   if (self->print_) {

@@ -42,6 +42,11 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
                           " that is not a " + out.type->to_string() + " (" + why + ")";
     trace_.publish_error(now(), out.qualified, message);
     if (out.reported.insert(message).second) report(message);
+    // The message was meant for every connection from the port: each counts and traces it.
+    for (Connection* c : out.connections) {
+      ++c->stats.arrived;
+      drop(*c, DropReason::BadType, why);
+    }
     return;
   }
   for (Connection* c : out.connections) enqueue(*c, v);
@@ -148,7 +153,8 @@ void Runtime::process(Connection& c, const Value& msg) {
   ++c.stats.delivered;
   trace_.delivery(t, c.name, c.destination->qualified, *delivered);
   Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
-  c.destination->module->on_delivery(d);
+  // The message was delivered; if the module throws handling it, that is the module's fault.
+  c.destination->slot->guarded("on_delivery", [&] { c.destination->module->on_delivery(d); });
 }
 
 void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {

@@ -35,6 +35,19 @@ bool read_file(const std::string& path, std::string* text) {
   return true;
 }
 
+// Runs a plugin's factory; returns why it failed (an exception, or no object), else "".
+template <class T, class Factory>
+std::string construct(const Factory& factory, std::unique_ptr<T>* out) {
+  try {
+    *out = factory();
+  } catch (const std::exception& e) {
+    return std::string("its constructor threw: ") + e.what();
+  } catch (...) {
+    return "its constructor threw an exception that is not a std::exception";
+  }
+  return *out ? "" : "its factory returned no object";
+}
+
 std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
@@ -46,7 +59,8 @@ std::string join(const std::vector<std::string>& items) {
 // --- contexts ---------------------------------------------------------------------------
 
 TimerId Runtime::ModuleSlot::schedule(double delay, std::function<void()> fn) {
-  return runtime->executor_->post(runtime->now() + std::max(0.0, delay), std::move(fn));
+  return runtime->executor_->post(runtime->now() + std::max(0.0, delay),
+                                  [this, fn = std::move(fn)] { guarded("timer", fn); });
 }
 
 void Runtime::ModuleSlot::log(std::string_view message) {
@@ -55,7 +69,8 @@ void Runtime::ModuleSlot::log(std::string_view message) {
 }
 
 TimerId Runtime::EnvironmentSlot::schedule(double delay, std::function<void()> fn) {
-  return runtime->executor_->post(runtime->now() + std::max(0.0, delay), std::move(fn));
+  return runtime->executor_->post(runtime->now() + std::max(0.0, delay),
+                                  [this, fn = std::move(fn)] { guarded("timer", fn); });
 }
 
 void Runtime::EnvironmentSlot::request_stop(std::string reason) {
@@ -87,7 +102,13 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   std::vector<std::string> env_names = registry.environment_names();
   const EnvironmentFactory* env_factory = registry.find_environment(app.name);
   if (!env_factory && env_names.size() == 1) env_factory = registry.find_environment(env_names[0]);
-  if (env_factory) rt->environment_ = (*env_factory)();
+  if (env_factory) {
+    std::string why = construct(*env_factory, &rt->environment_);
+    if (!why.empty()) {
+      *error = "the environment could not be created: " + why;
+      return nullptr;
+    }
+  }
   std::vector<std::string> scenarios;
   if (rt->environment_) scenarios = rt->environment_->scenarios();
   rt->scenario_ = options.scenario;
@@ -114,7 +135,11 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
     auto slot = std::make_unique<ModuleSlot>();
     slot->runtime = self;
     slot->name = m.name;
-    slot->module = (*factory)();
+    std::string why = construct(*factory, &slot->module);
+    if (!why.empty()) {
+      *error = "module '" + m.name + "' could not be created: " + why;
+      return nullptr;
+    }
     slot->random = seeded(options.seed, m.name);
     slot->module->attach(slot.get());
     for (const model::Port& p : m.ports) {
@@ -124,6 +149,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
         in->qualified = qualified;
         in->port = p.name;
         in->module = slot->module.get();
+        in->slot = slot.get();
         in->type = p.type;
         InPort* raw = in.get();
         in->container.on_expiry([self, raw](int event, int owner, double expiry) {
@@ -228,6 +254,15 @@ Module* Runtime::module(std::string_view name) {
   return nullptr;
 }
 
+void Runtime::plugin_failed(PluginGuard& who, const char* callback, const std::string& what) {
+  ++who.errors;
+  trace_.plugin_error(now(), who.name, callback, what);
+  std::string line = who.name + ": " + callback + " threw: " + what;
+  if (who.reported_errors.insert(line).second) {
+    report(line + " (the run goes on; this error is reported once)");
+  }
+}
+
 void Runtime::report(const std::string& line) {
   if (reporter_) {
     reporter_(line);
@@ -244,8 +279,9 @@ void Runtime::start() {
   if (environment_) {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
+    environment_slot_->name = "environment";
     environment_slot_->random = seeded(options_.seed, "environment");
-    environment_->setup(*environment_slot_);
+    environment_slot_->guarded("setup", [&] { environment_->setup(*environment_slot_); });
   }
   for (auto& cp : connections_) {
     Connection& c = *cp;
@@ -254,6 +290,8 @@ void Runtime::start() {
     bool created = false;
     LuaCall call = c.monitor->create(o, &created);
     if (!call.ok()) {
+      ++c.stats.errors;  // counted and traced like any failing callback, then out of service
+      trace_.error(now(), c.name, call.error);
       quarantine(c, "create failed: " + call.error, false);
       continue;
     }
@@ -266,9 +304,10 @@ void Runtime::start() {
     }
     if (c.trig_interval > 0 && c.has_trig && c.trig_task == 0) schedule_trig(c);
   }
-  for (auto& m : modules_) m->module->start();
+  for (auto& m : modules_) m->guarded("start", [&] { m->module->start(); });
   for (auto& m : modules_) {
-    double period = m->module->tick_period();
+    double period = 0;
+    m->guarded("tick_period", [&] { period = m->module->tick_period(); });
     if (period > 0) schedule_tick(*m, now(), period, 1);
   }
 }
@@ -277,7 +316,7 @@ void Runtime::start() {
 void Runtime::schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k) {
   m.tick_task =
       executor_->post(origin + static_cast<double>(k) * period, [this, &m, origin, period, k] {
-        m.module->tick();
+        m.guarded("tick", [&] { m.module->tick(); });  // a failing tick still ticks again
         schedule_tick(m, origin, period, k + 1);
       });
 }
@@ -293,7 +332,7 @@ void Runtime::run() {
 void Runtime::shutdown() {
   if (shut_down_) return;
   shut_down_ = true;
-  for (auto& m : modules_) m->module->stop();
+  for (auto& m : modules_) m->guarded("stop", [&] { m->module->stop(); });
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (c.monitor && !c.quarantined) {
@@ -301,7 +340,13 @@ void Runtime::shutdown() {
       if (!call.ok()) monitor_failed(c, call, "destroy", false);
     }
   }
-  if (environment_) environment_->finish();
+  if (environment_) {
+    if (environment_slot_) {
+      environment_slot_->guarded("finish", [&] { environment_->finish(); });
+    } else {
+      environment_->finish();  // never started: setup did not run either
+    }
+  }
   // Let the trace show every lapse up to the end of the run, and what was left queued.
   double end = now();
   for (auto& cp : connections_) {

@@ -10,7 +10,10 @@
 // Script errors drop the message (`monitor-error`); a connection whose callbacks fail
 // `quarantine_after` times in a row is quarantined: its monitor is destroyed and its further
 // messages are dropped (`quarantined`). Each connection keeps a bounded FIFO queue
-// (`queue-full` drops beyond it), so messages on one connection keep their order.
+// (`queue-full` drops beyond it), so messages on one connection keep their order. A value
+// that does not fit its output port's type is dropped on each connection from the port
+// (`bad-type`). An exception thrown by a module or the environment is caught, counted
+// (plugin_stats), traced and reported; the run goes on.
 #pragma once
 
 #include <array>
@@ -58,6 +61,13 @@ struct ConnectionStats {
   uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
 };
 
+// Failures of plugin code: exceptions thrown by a module's callbacks (start, on_delivery,
+// tick, timers, stop) or by the environment. The run goes on after each.
+struct PluginStats {
+  std::string name;  // the module's name, or "environment"
+  uint64_t errors = 0;
+};
+
 class Runtime {
  public:
   // Instantiates the app: modules (from registry), monitors (files relative to app_dir),
@@ -97,10 +107,13 @@ class Runtime {
   }
   // Memory used by each monitor's Lua state, by connection name.
   std::map<std::string, size_t> monitor_memory() const;
+  // Exceptions caught from each module (in app order), then from the environment if any.
+  std::vector<PluginStats> plugin_stats() const;
 
   struct InPort;
   struct OutPort;
   struct Connection;
+  struct PluginGuard;
   class ModuleSlot;
   class EnvironmentSlot;
 
@@ -116,6 +129,8 @@ class Runtime {
                       bool may_quarantine = true);
   // Takes c out of service; calls its destroy() when `destroy` (the monitor was created).
   void quarantine(Connection& c, const std::string& why, bool destroy = true);
+  // Counts, traces and reports an exception that escaped plugin code.
+  void plugin_failed(PluginGuard& who, const char* callback, const std::string& what);
   void schedule_trig(Connection& c);
   void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
   void publish_from(ModuleSlot& m, std::string_view port, Value v);

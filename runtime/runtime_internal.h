@@ -14,6 +14,7 @@ struct Runtime::InPort {
   std::string qualified;  // "Module.port"
   std::string port;
   Module* module = nullptr;
+  ModuleSlot* slot = nullptr;
   TypePtr type;
   EventContainer container;
 };
@@ -64,11 +65,32 @@ struct Runtime::Connection : MonitorHost {
   void print(const std::string& line) override;
 };
 
-// A module instance and its context.
-class Runtime::ModuleSlot : public ModuleContext {
- public:
+// Where plugin code (a module or the environment) runs: exceptions it throws stop there.
+struct Runtime::PluginGuard {
   Runtime* runtime = nullptr;
-  std::string name;
+  std::string name;  // the module's name, or "environment"
+  uint64_t errors = 0;
+  std::set<std::string> reported_errors;
+
+  // Runs fn; an exception escaping it is counted, traced and reported (once per distinct
+  // text), and the run goes on. Returns false when fn threw.
+  template <class F>
+  bool guarded(const char* callback, F&& fn) {
+    try {
+      fn();
+      return true;
+    } catch (const std::exception& e) {
+      runtime->plugin_failed(*this, callback, e.what());
+    } catch (...) {
+      runtime->plugin_failed(*this, callback, "an exception that is not a std::exception");
+    }
+    return false;
+  }
+};
+
+// A module instance and its context.
+class Runtime::ModuleSlot : public ModuleContext, public PluginGuard {
+ public:
   std::unique_ptr<Module> module;
   std::map<std::string, OutPort*, std::less<>> outputs;
   std::mt19937_64 random;
@@ -89,9 +111,8 @@ class Runtime::ModuleSlot : public ModuleContext {
   void log(std::string_view message) override;
 };
 
-class Runtime::EnvironmentSlot : public EnvironmentContext {
+class Runtime::EnvironmentSlot : public EnvironmentContext, public PluginGuard {
  public:
-  Runtime* runtime = nullptr;
   std::mt19937_64 random;
 
   double now() const override { return runtime->now(); }

@@ -22,11 +22,18 @@ std::map<std::string, size_t> Runtime::monitor_memory() const {
   return out;
 }
 
+std::vector<PluginStats> Runtime::plugin_stats() const {
+  std::vector<PluginStats> out;
+  for (const auto& m : modules_) out.push_back({m->name, m->errors});
+  if (environment_slot_) out.push_back({environment_slot_->name, environment_slot_->errors});
+  return out;
+}
+
 std::string Runtime::stats_table() const {
   static const DropReason kColumns[] = {
       DropReason::Rejected,    DropReason::NoValue,   DropReason::NotSelected,
       DropReason::Throttled,   DropReason::Feed,      DropReason::MonitorError,
-      DropReason::Quarantined, DropReason::QueueFull,
+      DropReason::Quarantined, DropReason::QueueFull, DropReason::BadType,
   };
   size_t width = 10;
   for (const auto& c : connections_) width = std::max(width, c->name.size());
@@ -55,6 +62,10 @@ std::string Runtime::stats_table() const {
     std::snprintf(cell, sizeof cell, " %7zu %6llu%s\n", c->queue.size(),
                   static_cast<unsigned long long>(s.errors), s.quarantined ? "  QUARANTINED" : "");
     out += cell;
+  }
+  for (const PluginStats& p : plugin_stats()) {
+    if (p.errors == 0) continue;
+    out += p.name + ": " + std::to_string(p.errors) + " exception(s) caught, the run went on\n";
   }
   return out;
 }

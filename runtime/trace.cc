@@ -156,6 +156,16 @@ void Trace::publish_error(double t, std::string_view port, std::string_view mess
   end();
 }
 
+void Trace::plugin_error(double t, std::string_view who, std::string_view callback,
+                         std::string_view message) {
+  if (!file_) return;
+  begin(t, "plugin-error");
+  field("from", who);
+  field("callback", callback);
+  field("message", message);
+  end();
+}
+
 void Trace::pending(double t, std::string_view connection, size_t count) {
   if (records_) {
     TraceRecord& r = record(t, TraceKind::Pending);

@@ -34,6 +34,9 @@ class Trace {
   void quarantine(double t, std::string_view connection, std::string_view why);
   void log(double t, std::string_view who, std::string_view message);
   void publish_error(double t, std::string_view port, std::string_view message);
+  // An exception escaped plugin code: `who` is a module's name or "environment".
+  void plugin_error(double t, std::string_view who, std::string_view callback,
+                    std::string_view message);
   // Messages still queued on a connection when the run ended.
   void pending(double t, std::string_view connection, size_t count);
   void close();

@@ -2,6 +2,8 @@
 # Builds the libFuzzer targets with clang into build-fuzz/ and runs each for SECONDS
 # (default 30) on a copy of its seed corpus. Crashes and hangs land in build-fuzz/findings/.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
+# Without TARGETs: every target whose name ends in "fuzz" (fuzz/CMakeLists.txt): app_json_fuzz,
+# constraint_fuzz, lua_value_fuzz, spec_frontend_fuzz. docs/reliability.md records their runs.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-30}

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""docs/reliability.md cites the tests that prove each guarantee; this keeps the citations true.
+
+Every `Suite.Name` (or `Suite.*`) in backticks must be a GoogleTest test (TEST, TEST_F, TEST_P)
+in the sources, a bare `Name` in the same table cell belongs to the last suite cited there,
+every cited ctest name (`lower_case_words`) must be registered with add_test or be a golden
+case of tests/check/, and every cited
+repository path must exist.
+usage: check_doc.py REPO_ROOT
+"""
+import pathlib
+import re
+import sys
+
+root = pathlib.Path(sys.argv[1])
+doc = (root / "docs/reliability.md").read_text()
+skip = {"build", "build-fuzz", "build-bench", "build-asan", "build-tsan", ".git"}
+sources = [p for p in root.rglob("*.cc") if p.relative_to(root).parts[0] not in skip]
+tests = set()
+for p in sources:
+    for suite, name in re.findall(r"\bTEST(?:_F|_P)?\((\w+),\s*(\w+)\)", p.read_text()):
+        tests.add((suite, name))
+suites = {s for s, _ in tests}
+ctests = set()
+for p in root.rglob("CMakeLists.txt"):
+    if p.relative_to(root).parts[0] in skip:
+        continue
+    ctests.update(re.findall(r"add_test\(NAME (\S+)", p.read_text()))
+
+# Identifiers the page names that are not tests.
+not_tests = {"expect_unaffected_and_accounted", "soak_bench", "on_delivery"}
+errors = []
+for line in doc.splitlines():
+    if not line.startswith("|"):
+        continue
+    for cell in line.split("|"):
+        suite = None
+        for token in re.findall(r"`([^`]+)`", cell):
+            m = re.fullmatch(r"([A-Z]\w+)\.(\w+|\*)", token)
+            if m and not token.endswith((".md", ".cc", ".h")):
+                suite, name = m.groups()
+                if name == "*" and suite not in suites:
+                    errors.append(f"no test suite {suite}")
+                elif name != "*" and (suite, name) not in tests:
+                    errors.append(f"no test {token}")
+            elif suite and re.fullmatch(r"[A-Z][a-z]\w+", token):
+                if (suite, token) not in tests:
+                    errors.append(f"no test {suite}.{token}")
+            elif re.fullmatch(r"[a-z0-9]+(_[a-z0-9]+)+(_\*)?", token) and "fuzz" not in token:
+                pattern = re.compile(token.replace("*", ".*") + "$")
+                golden = (root / "tests/check" / token).is_dir()  # a check_golden case
+                if not golden and not any(pattern.match(t) for t in ctests):
+                    if token not in not_tests:
+                        errors.append(f"no ctest {token}")
+            elif "/" in token and re.fullmatch(r"[\w./-]+", token):
+                if not (root / token).exists():
+                    errors.append(f"no file {token}")
+for e in errors:
+    print("docs/reliability.md:", e)
+print(f"{len(errors)} problem(s)")
+sys.exit(1 if errors else 0)
