@@ -158,6 +158,12 @@ void Trace::publish_error(double t, std::string_view port, std::string_view mess
 
 void Trace::plugin_error(double t, std::string_view who, std::string_view callback,
                          std::string_view message) {
+  if (records_) {
+    TraceRecord& r = record(t, TraceKind::PluginError);
+    r.connection = who;
+    r.callback = callback;
+    r.text = message;
+  }
   if (!file_) return;
   begin(t, "plugin-error");
   field("from", who);

@@ -11,12 +11,23 @@
 
 namespace arbc {
 
-enum class TraceKind { Deliver, Drop, Event, Error, Quarantine, Log, PublishError, Pending };
+enum class TraceKind {
+  Deliver,
+  Drop,
+  Event,
+  Error,
+  Quarantine,
+  Log,
+  PublishError,
+  PluginError,
+  Pending
+};
 
 struct TraceRecord {
   double t = 0;
   TraceKind kind = TraceKind::Log;
-  // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from").
+  // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from");
+  // PluginError: the module or environment whose callback threw ("from").
   std::string connection;
   // Deliver: the destination port; Event: the port whose container changed; PublishError.
   std::string port;
@@ -24,8 +35,9 @@ struct TraceRecord {
   std::string op;                            // Event: "set", "unset" or "expire"
   std::string event, owner;                  // Event: the event and the owning connection
   double expiry = -1;                        // Event: set/expire with a lifetime; -1: none
-  std::string text;                          // Drop: detail; Error, Quarantine, Log: message
-  uint64_t count = 0;                        // Pending: messages left queued
+  std::string text;      // Drop: detail; Error, Quarantine, Log, PluginError: message
+  std::string callback;  // PluginError: the callback that threw, e.g. "tick"
+  uint64_t count = 0;    // Pending: messages left queued
 };
 
 }  // namespace arbc

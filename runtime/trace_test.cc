@@ -75,8 +75,8 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
   std::istringstream lines(text);
   std::string line;
   size_t i = 0;
-  static const char* kTypes[] = {"deliver",    "drop", "event",         "error",
-                                 "quarantine", "log",  "publish-error", "pending"};
+  static const char* kTypes[] = {"deliver", "drop",          "event",        "error",  "quarantine",
+                                 "log",     "publish-error", "plugin-error", "pending"};
   while (std::getline(lines, line)) {
     ASSERT_LT(i, records.size()) << line;
     const TraceRecord& r = records[i++];
@@ -98,6 +98,19 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
   }
   EXPECT_EQ(i, records.size());
   EXPECT_GT(records.size(), 100u);
+}
+
+TEST(TraceTest, PluginErrorsAreRecordedInMemoryToo) {
+  std::vector<TraceRecord> records;
+  Trace trace;
+  trace.record_to(&records);
+  trace.plugin_error(4.5, "PickAndPlace", "tick", "std::runtime_error: arm jammed");
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].kind, TraceKind::PluginError);
+  EXPECT_EQ(records[0].t, 4.5);
+  EXPECT_EQ(records[0].connection, "PickAndPlace");
+  EXPECT_EQ(records[0].callback, "tick");
+  EXPECT_EQ(records[0].text, "std::runtime_error: arm jammed");
 }
 
 TEST(TraceTest, LineFormat) {

@@ -33,6 +33,8 @@ const char* reason_meaning(DropReason r) {
       return "the connection had been taken out of service";
     case DropReason::QueueFull:
       return "the connection's queue was at its bound";
+    case DropReason::BadType:
+      return "the source module published a value its output port's type does not admit";
   }
   return "";
 }
@@ -228,7 +230,7 @@ void append_counters(std::string& out, const std::vector<ConnectionRow>& rows) {
       number_cell(total.pending) + number_cell(total.errors) + "<td></td></tr>\n</table>\n</div>\n";
 }
 
-// Errors, quarantines and publish errors, then the log: the first kMaxListed of each.
+// Errors, quarantines, publish and plugin errors, then the log: the first kMaxListed of each.
 void append_messages(std::string& out, const std::vector<TraceRecord>& records) {
   std::string problems, log;
   size_t problem_count = 0, log_count = 0;
@@ -243,6 +245,9 @@ void append_messages(std::string& out, const std::vector<TraceRecord>& records) 
         break;
       case TraceKind::PublishError:
         line = "publish error on " + r.port + ": " + r.text;
+        break;
+      case TraceKind::PluginError:
+        line = "plugin error in " + r.connection + " (" + r.callback + "): " + r.text;
         break;
       case TraceKind::Log:
         if (log_count++ < kMaxListed) {

@@ -271,7 +271,41 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   EXPECT_EQ(count(html, "error on broken"), 5u);
   // The three later messages are dropped as quarantined, the five before as monitor errors.
   EXPECT_EQ(row_numbers(html, "broken"),
-            (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 5}));
+            (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 0, 5}));
+}
+
+// A plugin whose tick throws: the run goes on and the report lists the plugin error.
+class Jammed : public Module {
+ public:
+  double tick_period() const override { return 1.0; }
+  void tick() override { throw std::runtime_error("arm <jammed>"); }
+};
+
+TEST(RunReportFailureTest, PluginErrorsAreListed) {
+  arbc::testing::TestApp t;
+  t.registry.add_module("Jammed", [] { return std::make_unique<Jammed>(); });
+  t.module("Jammed", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Jammed.x", "Sink.x", "true");
+  std::vector<TraceRecord> records;
+  RunOptions o;
+  o.trace_records = &records;
+  auto rt = t.start(o);
+  rt->advance(3.5);
+  rt->shutdown();
+
+  RunReportInput input;
+  input.header.app = "jammed";
+  input.header.end = rt->now();
+  input.header.requested = 3.5;
+  input.connections.push_back({rt->stats()[0], false, "true"});
+  input.records = &records;
+  std::string html = render_run_report(input);
+  std::string problems = html.substr(html.find("<pre id=\"problems\">"));
+  problems = problems.substr(0, problems.find("</pre>"));
+  EXPECT_NE(problems.find("plugin error in Jammed (tick): "), std::string::npos) << problems;
+  EXPECT_NE(problems.find("arm &lt;jammed&gt;"), std::string::npos) << problems;
+  EXPECT_EQ(count(problems, "plugin error in Jammed"), 3u);  // ticks at 1, 2 and 3 s
 }
 
 }  // namespace

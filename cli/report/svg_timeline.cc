@@ -27,6 +27,8 @@ const char* drop_reason_color(DropReason reason) {
       return "#7a0000";
     case DropReason::QueueFull:
       return "#9467bd";
+    case DropReason::BadType:
+      return "#8c564b";
   }
   return "#000000";
 }
