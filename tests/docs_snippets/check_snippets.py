@@ -36,32 +36,19 @@ import subprocess
 import sys
 import tempfile
 
-FENCE = re.compile(r"^```(\S*)\s*$")
-ANNOTATION = re.compile(r"^<!--\s*snippet:(.*?)-->\s*$")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from markdown_blocks import fenced_blocks  # noqa: E402
 
 
-def fenced_blocks(text):
-    """Yields (line number of the opening fence, tag, body, annotation or None, end line)."""
-    lines = text.split("\n")
-    i = 0
-    while i < len(lines):
-        m = FENCE.match(lines[i])
-        if not m:
-            i += 1
-            continue
-        start, tag = i, m.group(1)
-        j = i + 1
-        while j < len(lines) and lines[j].rstrip() != "```":
-            j += 1
-        if j == len(lines):
-            raise SystemExit(f"line {start + 1}: fenced block never closed")
-        k = start - 1
-        while k >= 0 and not lines[k].strip():
-            k -= 1
-        note = ANNOTATION.match(lines[k]) if k >= 0 else None
-        body = "\n".join(lines[start + 1:j]) + "\n" if j > start + 1 else ""
-        yield start + 1, tag, body, (note.group(1).strip() if note else None), j
-        i = j + 1
+def snippet_blocks(text):
+    """fenced_blocks with only `<!-- snippet: ... -->` comments kept, as their text after the
+    colon."""
+    for line, tag, body, note, end in fenced_blocks(text):
+        if note is not None and note.startswith("snippet:"):
+            note = note[len("snippet:"):].strip()
+        else:
+            note = None
+        yield line, tag, body, note, end
 
 
 def split_declarations(text):
@@ -254,7 +241,7 @@ def main():
     arbc, page = os.path.abspath(args[0]), args[1]
     base_path = args[args.index("--base") + 1] if "--base" in args else "specs/table_clean.spec"
     base = open(base_path, encoding="utf-8").read()
-    blocks = list(fenced_blocks(open(page, encoding="utf-8").read()))
+    blocks = list(snippet_blocks(open(page, encoding="utf-8").read()))
     failures, count = [], 0
     for index, (line, tag, body, note, _) in enumerate(blocks):
         where = f"{page}:{line}"

@@ -47,33 +47,8 @@ import tempfile
 import termios
 import time
 
-FENCE = re.compile(r"^```(\S*)\s*$")
-COMMENT = re.compile(r"^<!--\s*(.*?)\s*-->\s*$")
-
-
-def blocks(text):
-    """Yields (line of the opening fence, tag, body, comment before it or None, line of the
-    closing fence), line numbers counted from 1."""
-    lines = text.split("\n")
-    i = 0
-    while i < len(lines):
-        m = FENCE.match(lines[i])
-        if not m:
-            i += 1
-            continue
-        start, tag = i, m.group(1)
-        j = i + 1
-        while j < len(lines) and lines[j].rstrip() != "```":
-            j += 1
-        if j == len(lines):
-            raise SystemExit(f"line {start + 1}: fenced block never closed")
-        k = start - 1
-        while k >= 0 and not lines[k].strip():
-            k -= 1
-        note = COMMENT.match(lines[k]) if k >= 0 else None
-        body = "\n".join(lines[start + 1:j]) + "\n" if j > start + 1 else ""
-        yield start + 1, tag, body, note.group(1) if note else None, j + 1
-        i = j + 1
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from markdown_blocks import fenced_blocks  # noqa: E402
 
 
 def run_on_terminal(script, cwd, timeout=600):
@@ -154,7 +129,7 @@ def main():
     build_dir = args[0]
     page = args[1] if len(args) > 1 else "docs/tutorial.md"
     page_text = open(page, encoding="utf-8").read()
-    items = list(blocks(page_text))
+    items = list(fenced_blocks(page_text))
     updates = []  # (first line, last line) of a text block's body, and its new text
     scratch = make_scratch(build_dir)
     failures, commands = [], 0
