@@ -115,4 +115,31 @@ class TestApp {
   std::vector<std::string> reports;
 };
 
+// Publishes a random int every 0.1 s and a random flag every 0.2 or 0.6 s.
+class Noisy : public Module {
+ public:
+  double tick_period() const override { return 0.1; }
+  void start() override { flag(); }
+  void tick() override { publish("x", Value(static_cast<int64_t>(rng()() % 100))); }
+  void flag() {
+    publish("f", Value(rng()() % 2 == 0));
+    schedule(rng()() % 2 ? 0.2 : 0.6, [this] { flag(); });
+  }
+};
+
+// Registers Noisy and builds the app around it that the trace and report tests run: Noisy,
+// a Sink, and a feed `feed` setting event `e` (lifetime 0.4 s) from Noisy.f while the flag is
+// true. The caller adds the rules on Noisy.x -> Sink.x.
+inline void add_noisy_app(TestApp& t) {
+  t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
+  t.module("Noisy", {"out x: int", "out f: bool"});
+  t.module("Sink", {"in x: int"});
+  t.connect("feed", "Noisy.f", "Sink.x", "false",
+            "PortMonitor.accept = function(on)\n"
+            "  if on then PortMonitor.setEvent('e', 0.4) else PortMonitor.unsetEvent('e') end\n"
+            "  return true\n"
+            "end\n",
+            model::ConnectionKind::Feed);
+}
+
 }  // namespace arbc::testing

@@ -13,31 +13,11 @@ namespace {
 
 using testing::TestApp;
 
-// Publishes a random int every 0.1 s and a random flag every 0.2 or 0.6 s.
-class Noisy : public Module {
- public:
-  double tick_period() const override { return 0.1; }
-  void start() override { flag(); }
-  void tick() override { publish("x", Value(static_cast<int64_t>(rng()() % 100))); }
-  void flag() {
-    publish("f", Value(rng()() % 2 == 0));
-    schedule(rng()() % 2 ? 0.2 : 0.6, [this] { flag(); });
-  }
-};
-
 // Runs the noisy app for 20 s; the trace goes to <dir>/<name>.jsonl, and to *records if given.
 std::string run_traced(uint64_t seed, const std::string& name,
                        std::vector<TraceRecord>* records = nullptr) {
   TestApp t;
-  t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
-  t.module("Noisy", {"out x: int", "out f: bool"});
-  t.module("Sink", {"in x: int"});
-  t.connect("feed", "Noisy.f", "Sink.x", "false",
-            "PortMonitor.accept = function(on)\n"
-            "  if on then PortMonitor.setEvent('e', 0.4) else PortMonitor.unsetEvent('e') end\n"
-            "  return true\n"
-            "end\n",
-            model::ConnectionKind::Feed);
+  add_noisy_app(t);
   t.connect("rule", "Noisy.x", "Sink.x", "e",
             "PortMonitor.accept = function(m) return m % 5 ~= 0 end\n"
             "PortMonitor.update = function(m) if m % 7 == 0 then PortMonitor.novalue() end "

@@ -9,18 +9,6 @@ namespace {
 
 using arbc::testing::TestApp;
 
-// Publishes a random int every 0.1 s and a random flag every 0.2 or 0.6 s.
-class Noisy : public Module {
- public:
-  double tick_period() const override { return 0.1; }
-  void start() override { flag(); }
-  void tick() override { publish("x", Value(static_cast<int64_t>(rng()() % 100))); }
-  void flag() {
-    publish("f", Value(rng()() % 2 == 0));
-    schedule(rng()() % 2 ? 0.2 : 0.6, [this] { flag(); });
-  }
-};
-
 constexpr const char* kNastyName = "odd<&>\"'name";
 
 // A run of a small app with a feed, a rule with drops of several reasons, and a connection
@@ -33,15 +21,7 @@ struct ReportedRun {
 
 ReportedRun run_and_report(double duration) {
   TestApp t;
-  t.registry.add_module("Noisy", [] { return std::make_unique<Noisy>(); });
-  t.module("Noisy", {"out x: int", "out f: bool"});
-  t.module("Sink", {"in x: int"});
-  t.connect("feed", "Noisy.f", "Sink.x", "false",
-            "PortMonitor.accept = function(on)\n"
-            "  if on then PortMonitor.setEvent('e', 0.4) else PortMonitor.unsetEvent('e') end\n"
-            "  return true\n"
-            "end\n",
-            model::ConnectionKind::Feed);
+  add_noisy_app(t);
   t.connect("rule", "Noisy.x", "Sink.x", "e",
             "PortMonitor.accept = function(m)\n"
             "  if m % 5 == 0 then return false, 'multiple of <5>' end\n"
