@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "compiler/frontend/check_ids.h"
+#include "core/check_ids.h"
 #include "compiler/frontend/frontend.h"
 
 namespace arbc::cli {

@@ -8,9 +8,7 @@
 #include "cli/model_loader.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
-#ifdef ARBC_HAVE_VERIFY
 #include "verify/verify.h"
-#endif
 
 namespace arbc::cli {
 
@@ -31,7 +29,6 @@ std::string join(const std::vector<std::string>& items) {
 // One line per arbitrated port: the verdict and what it covers, then any finding.
 std::vector<std::string> verdict_lines(const model::App& app) {
   std::vector<std::string> lines;
-#ifdef ARBC_HAVE_VERIFY
   verify::VerifyResult result = verify::verify_app(app, verify::VerifyOptions{});
   if (!result.ok) return {"not verified: " + result.error};
   for (const verify::PortResult& p : result.report.ports) {
@@ -44,10 +41,6 @@ std::vector<std::string> verdict_lines(const model::App& app) {
   }
   for (const verify::Finding& f : result.report.app_findings)
     lines.push_back(std::string(severity_name(f.severity)) + " [" + f.check + "] " + f.message);
-#else
-  (void)app;
-  lines.push_back("not verified: this arbc was built without the verifier");
-#endif
   return lines;
 }
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "cli/commands.h"
+#include "cli/heap_reserve.h"
 
 namespace {
 
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   std::span<char*> args(argv + 1, static_cast<size_t>(argc - 1));
+  reserve_heap_for_spec(input_file_bytes(args));
   try {
     if (command == "check") return check_command(args);
     if (command == "verify") return verify_command(args);

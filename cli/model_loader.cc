@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 
 // The spec compiler (front end + lowering) is optional here so that the verifier builds and is
 // tested on its own; arbc links arbc_compiler whenever that target exists (cli/CMakeLists.txt).

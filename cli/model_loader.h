@@ -1,13 +1,13 @@
 // Loads the core model named on a command line (DESIGN.md section 2: the verifier and the code
 // generators read the core model, never the AST).
 //
-//   APP.json, or a directory holding app.json   read with runtime/app_json.h
+//   APP.json, or a directory holding app.json   read with core/app_json.h
 //   SPEC (*.spec)                               compiled by load_spec_model()
 #pragma once
 
 #include <string>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::cli {
 

@@ -8,7 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_loader.h"
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "verify/report_format.h"
 #include "verify/verify.h"
 

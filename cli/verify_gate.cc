@@ -4,18 +4,14 @@
 
 #include "cli/build_summary.h"
 #include "cli/commands.h"
-
-#if ARBC_HAVE_VERIFY
 #include "verify/report_format.h"
 #include "verify/verify.h"
-#endif
 
 namespace arbc::cli {
 
 VerifyGate verify_before_writing(const model::App& app, const std::string& input,
                                  SourceCache* sources, bool strict) {
   VerifyGate gate;
-#if ARBC_HAVE_VERIFY
   verify::VerifyOptions options;
   options.strict = strict;
   verify::VerifyResult result = verify::verify_app(app, options);
@@ -44,16 +40,6 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
           ? "verified: no arbitrated ports, nothing to prove"
           : "verified: " + count_of(report.ports.size(), "arbitrated port", "arbitrated ports") +
                 " proved exclusive";
-#else
-  // This arbc was built without the verifier library (CMake defines ARBC_HAVE_VERIFY when the
-  // arbc_verify target exists); say so rather than pretend.
-  (void)app;
-  (void)input;
-  (void)sources;
-  (void)strict;
-  gate.pass = true;
-  gate.summary = "not verified: this arbc has no verifier (run `arbc verify` when it has)";
-#endif
   return gate;
 }
 

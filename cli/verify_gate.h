@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "compiler/diagnostic.h"
-#include "runtime/app_model.h"
+#include "core/diagnostic.h"
+#include "core/app_model.h"
 
 namespace arbc::cli {
 

@@ -7,8 +7,8 @@
 #include <set>
 #include <string_view>
 
-#include "runtime/compiled_constraint.h"
-#include "runtime/constraint.h"
+#include "core/compiled_constraint.h"
+#include "core/constraint.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);

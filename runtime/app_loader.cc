@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 
 namespace arbc {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 #include "runtime/module.h"
 
 namespace arbc {

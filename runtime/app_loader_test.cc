@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {

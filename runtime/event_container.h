@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/compiled_constraint.h"
+#include "core/compiled_constraint.h"
 
 namespace arbc {
 

@@ -18,8 +18,8 @@
 #include <string_view>
 
 #include "runtime/lua_sandbox.h"
-#include "runtime/type.h"
-#include "runtime/value.h"
+#include "core/type.h"
+#include "core/value.h"
 
 namespace arbc {
 

@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "runtime/type.h"
-#include "runtime/value.h"
+#include "core/type.h"
+#include "core/value.h"
 
 struct lua_State;
 

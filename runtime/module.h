@@ -30,14 +30,14 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/value.h"
+#include "core/value.h"
 
 namespace arbc {
 
 class Environment;
 
 // A port a module declares: name, direction and type text in the spec syntax
-// ("list<{pos: vec3, dist: float}>", see runtime/type.h).
+// ("list<{pos: vec3, dist: float}>", see core/type.h).
 struct PortDecl {
   std::string name;
   bool is_input = true;

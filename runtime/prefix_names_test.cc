@@ -2,7 +2,7 @@
 // (`a` in `and`), must not interfere: YARP's substring substitution gets these wrong.
 #include <gtest/gtest.h>
 
-#include "runtime/compiled_constraint.h"
+#include "core/compiled_constraint.h"
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {

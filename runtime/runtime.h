@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/app_model.h"
-#include "runtime/compiled_constraint.h"
+#include "core/app_model.h"
+#include "core/compiled_constraint.h"
 #include "runtime/drop_reason.h"
 #include "runtime/event_container.h"
 #include "runtime/executor.h"

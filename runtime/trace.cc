@@ -3,7 +3,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "runtime/json_text.h"
+#include "core/json_text.h"
 
 namespace arbc {
 

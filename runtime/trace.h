@@ -10,7 +10,7 @@
 
 #include "runtime/drop_reason.h"
 #include "runtime/trace_record.h"
-#include "runtime/value.h"
+#include "core/value.h"
 
 namespace arbc {
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "runtime/json_text.h"
+#include "core/json_text.h"
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/compiled_constraint.h"
+#include "core/compiled_constraint.h"
 #include "verify/port_scope.h"
 
 namespace arbc::verify {

@@ -7,7 +7,7 @@
 #include <random>
 #include <set>
 
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 #include "verify/verify.h"
 
 namespace arbc::verify {

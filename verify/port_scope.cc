@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "runtime/effective_guard.h"
+#include "core/effective_guard.h"
 
 namespace arbc::verify {
 

@@ -1,6 +1,6 @@
 // The proof obligation of one arbitrated port, before any solver sees it (DESIGN.md section 5).
 //
-// For each rule c the effective guard (runtime/effective_guard.h) is
+// For each rule c the effective guard (core/effective_guard.h) is
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every accepting path that no other connection
 //                      of the port sets),
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::verify {
 

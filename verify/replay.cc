@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "runtime/compiled_constraint.h"
+#include "core/compiled_constraint.h"
 
 namespace arbc::verify {
 

@@ -1,4 +1,4 @@
-// Replays a counterexample through the runtime's own evaluator (runtime/compiled_constraint.h)
+// Replays a counterexample through the runtime's own evaluator (core/compiled_constraint.h)
 // before it is printed (DESIGN.md section 5): Z3 and the code that decides deliveries at run
 // time must agree on every state the verifier reports. A disagreement is a bug in one of them.
 #pragma once
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/constraint.h"
+#include "core/constraint.h"
 
 namespace arbc::verify {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostic.h"
-#include "runtime/app_model.h"
+#include "core/diagnostic.h"
+#include "core/app_model.h"
 
 namespace arbc::verify {
 

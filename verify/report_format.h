@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "verify/report.h"
 
 namespace arbc::verify {

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 #include "verify/test_models.h"
 #include "verify/verify.h"
 

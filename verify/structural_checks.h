@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 #include "verify/report.h"
 
 namespace arbc::verify {

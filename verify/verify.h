@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 #include "verify/report.h"
 
 namespace arbc::verify {

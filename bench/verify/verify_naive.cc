@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "runtime/app_json.h"
-#include "verify/pairwise_baseline.h"
+#include "core/app_json.h"
+#include "bench/verify/pairwise_baseline.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -3,7 +3,7 @@
 #include "compiler/codegen/monitor_writer.h"
 #include "compiler/lower/lowered_app.h"
 #include "compiler/lower/script_check.h"
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 
 namespace arbc::codegen {
 

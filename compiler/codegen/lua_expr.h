@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "compiler/frontend/ast.h"
-#include "runtime/constraint.h"
+#include "core/constraint.h"
 
 namespace arbc::codegen {
 

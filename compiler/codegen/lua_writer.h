@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::codegen {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "compiler/lower/lowered_app.h"
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::codegen {
 

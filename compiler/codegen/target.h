@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 
 namespace arbc::lower {
 struct LoweredApp;

@@ -3,8 +3,8 @@
 #include <map>
 #include <set>
 
-#include "runtime/compiled_constraint.h"
-#include "runtime/effective_guard.h"
+#include "core/compiled_constraint.h"
+#include "core/effective_guard.h"
 
 namespace arbc::docs {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::docs {
 

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "runtime/app_model.h"
-#include "runtime/constraint.h"
-#include "runtime/type.h"
+#include "core/app_model.h"
+#include "core/constraint.h"
+#include "core/type.h"
 
 namespace arbc::ast {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
 
 namespace arbc_grammar {

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "compiler/frontend/heap_reserve.h"
 #include "compiler/frontend/parse.h"
 #include "compiler/frontend/sema.h"
 
@@ -84,7 +83,6 @@ CheckResult check_file(const std::string& path) {
     result.diagnostics.push_back(io_error(path, "error while reading the file"));
     return result;
   }
-  reserve_heap_for_spec(text.size());
   return check_text(text, path);
 }
 

@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "compiler/frontend/check_ids.h"
+#include "core/check_ids.h"
 #include "compiler/frontend/frontend.h"
 
 namespace arbc::frontend {

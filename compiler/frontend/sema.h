@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
 
 namespace arbc::frontend {

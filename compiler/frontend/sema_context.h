@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
 
 namespace arbc::frontend {

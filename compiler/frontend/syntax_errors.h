@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 
 namespace antlr4 {
 class BaseErrorListener;

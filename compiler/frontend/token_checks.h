@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 
 namespace antlr4 {
 class Token;

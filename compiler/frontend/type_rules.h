@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "runtime/type.h"
+#include "core/type.h"
 
 namespace arbc::frontend {
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "compiler/lower/lowered_app.h"
 
 namespace arbc::lower {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
 #include "compiler/lower/lowered_app.h"
 

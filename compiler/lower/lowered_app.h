@@ -1,5 +1,5 @@
 // The result of lowering a checked spec (DESIGN.md section 3, "Lowering"): the core model
-// (runtime/app_model.h) that app.json, the verifier and the runtime read, plus one monitor
+// (core/app_model.h) that app.json, the verifier and the runtime read, plus one monitor
 // plan per connection that code generation turns into Lua. Plans point into the checked AST,
 // which the LoweredApp keeps alive.
 #pragma once
@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "compiler/frontend/ast.h"
-#include "runtime/app_model.h"
-#include "runtime/constraint.h"
+#include "core/app_model.h"
+#include "core/constraint.h"
 
 namespace arbc::lower {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::table_clean {
 

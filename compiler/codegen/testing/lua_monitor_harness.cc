@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <lua.hpp>
 
-#include "runtime/constraint.h"
+#include "core/constraint.h"
 
 namespace arbc::codegen::testing {
 

@@ -9,7 +9,7 @@
 #include <span>
 #include <string_view>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::model {
 

@@ -1,4 +1,4 @@
-#include "runtime/json_text.h"
+#include "core/json_text.h"
 
 #include <cmath>
 #include <cstdio>

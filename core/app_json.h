@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::model {
 

@@ -1,4 +1,4 @@
-#include "runtime/constraint.h"
+#include "core/constraint.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "runtime/effective_guard.h"
+#include "core/effective_guard.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "compiler/frontend/check_ids.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 

@@ -1,4 +1,4 @@
-#include "verify/pairwise_baseline.h"
+#include "bench/verify/pairwise_baseline.h"
 
 #include <z3++.h>
 

@@ -17,7 +17,7 @@
 #include <variant>
 #include <vector>
 
-#include "runtime/type.h"
+#include "core/type.h"
 
 namespace arbc {
 

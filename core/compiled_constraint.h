@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "runtime/constraint.h"
+#include "core/constraint.h"
 
 namespace arbc {
 

@@ -1,4 +1,4 @@
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::model {
 

@@ -1,4 +1,4 @@
-#include "compiler/diagnostic.h"
+#include "core/diagnostic.h"
 
 #include <fstream>
 #include <sstream>

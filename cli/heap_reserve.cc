@@ -1,12 +1,14 @@
-#include "compiler/frontend/heap_reserve.h"
+#include "cli/heap_reserve.h"
 
 #include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <system_error>
 
-namespace arbc::frontend {
+namespace arbc::cli {
 
 namespace {
 
@@ -36,4 +38,16 @@ void reserve_heap_for_spec(size_t spec_bytes) {
   std::free(block);  // back into the heap's top chunk, marked for huge pages
 }
 
-}  // namespace arbc::frontend
+size_t input_file_bytes(std::span<char*> args) {
+  size_t total = 0;
+  for (const char* arg : args) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(arg, ec)) {
+      uintmax_t size = std::filesystem::file_size(arg, ec);
+      if (!ec) total += static_cast<size_t>(size);
+    }
+  }
+  return total;
+}
+
+}  // namespace arbc::cli

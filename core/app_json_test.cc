@@ -1,4 +1,4 @@
-#include "runtime/app_json.h"
+#include "core/app_json.h"
 
 #include <gtest/gtest.h>
 

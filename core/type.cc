@@ -1,4 +1,4 @@
-#include "runtime/type.h"
+#include "core/type.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "runtime/value.h"
+#include "core/value.h"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/constraint.h"
-#include "runtime/type.h"
+#include "core/constraint.h"
+#include "core/type.h"
 
 namespace arbc::model {
 

@@ -3,7 +3,7 @@
 // one at-least-two question per port instead and enumerates pairs only to explain a refutation.
 #pragma once
 
-#include "runtime/app_model.h"
+#include "core/app_model.h"
 
 namespace arbc::verify {
 

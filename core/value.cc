@@ -1,10 +1,10 @@
-#include "runtime/value.h"
+#include "core/value.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-#include "runtime/json_text.h"
+#include "core/json_text.h"
 
 namespace arbc {
 

@@ -1,6 +1,6 @@
-#include "runtime/json_writer.h"
+#include "core/json_writer.h"
 
-#include "runtime/json_text.h"
+#include "core/json_text.h"
 
 namespace arbc {
 

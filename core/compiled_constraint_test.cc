@@ -1,4 +1,4 @@
-#include "runtime/compiled_constraint.h"
+#include "core/compiled_constraint.h"
 
 #include <gtest/gtest.h>
 

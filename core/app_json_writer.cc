@@ -1,7 +1,7 @@
 // to_app_json: the core model as app.json text (docs/app-json.md), written in one pass with
 // JsonWriter. Reading it back is app_json.cc's job.
-#include "runtime/app_json.h"
-#include "runtime/json_writer.h"
+#include "core/app_json.h"
+#include "core/json_writer.h"
 
 namespace arbc::model {
 

@@ -7,13 +7,18 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
-namespace arbc::frontend {
+namespace arbc::cli {
 
 // For specs above a threshold, grows the malloc heap once by an estimate of what parsing
 // `spec_bytes` needs, marks that range MADV_HUGEPAGE and keeps it (trimming is disabled so
 // the range is reused rather than returned). Best effort: any failure leaves the heap as it
-// was. Process-wide, so call it only from front-end entry points; cheap no-op for small specs.
+// was. It changes malloc's settings for the whole process, so only main() calls it; a cheap
+// no-op for small specs.
 void reserve_heap_for_spec(size_t spec_bytes);
 
-}  // namespace arbc::frontend
+// The total size of the regular files among a command's arguments: what it will parse at most.
+size_t input_file_bytes(std::span<char*> args);
+
+}  // namespace arbc::cli
