@@ -230,16 +230,22 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       return nullptr;
     }
   }
-  // Each monitor's create runs at load, so that a setConstraint that would replace the
-  // constraint app.json records is bad input before anything runs.
-  for (auto& cp : rt->connections_) {
+  if (!rt->create_monitors(error)) return nullptr;
+  return rt;
+}
+
+// Each monitor's create runs at load, so that a setConstraint that would replace the
+// constraint app.json records is bad input before anything runs. A create that fails or
+// returns false quarantines its connection when the run starts (start()).
+bool Runtime::create_monitors(std::string* error) {
+  for (auto& cp : connections_) {
     Connection& c = *cp;
     if (!c.monitor) continue;
     bool created = false;
     LuaCall call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
     if (!c.constraint_conflict.empty()) {
       *error = conflict_error(c, call.error);
-      return nullptr;
+      return false;
     }
     if (!call.ok()) {
       c.create_failure = call.error;
@@ -247,7 +253,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       c.create_refused = !created;
     }
   }
-  return rt;
+  return true;
 }
 
 bool Runtime::load_monitor(Connection& c, const std::string& app_dir, std::string* error) {

@@ -141,6 +141,8 @@ class Runtime {
   // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;
   // false with *error on bad input (a script that does not load, another constraint).
   bool load_monitor(Connection& c, const std::string& app_dir, std::string* error);
+  // Runs every loaded monitor's create; false with *error when one sets another constraint.
+  bool create_monitors(std::string* error);
   // The lifetime app.json declares for `event` (none: until unset, also for unknown names).
   std::optional<double> declared_lifetime(std::string_view event) const;
 
