@@ -157,11 +157,10 @@ report::RunReportInput report_input(const model::App& app, Runtime& runtime,
   h.success = success;
   h.verdict = verdict;
   if (Environment* env = runtime.environment()) h.environment = env->summary();
-  std::vector<ConnectionStats> stats = runtime.stats();  // in the app's connection order
-  for (size_t i = 0; i < stats.size() && i < app.connections.size(); ++i) {
-    const model::Connection& c = app.connections[i];
+  for (const ConnectionStats& s : runtime.stats()) {  // the connections mediated here
+    const model::Connection& c = app.connections[s.model_index];
     input.connections.push_back(
-        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
+        {s, c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
   }
   input.records = &records;
   return input;

@@ -50,7 +50,42 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     }
     return;
   }
+  transport_->publish(out.index, v);
+}
+
+void Runtime::from_source(OutPort& out, const Value& v) {
   for (Connection* c : out.connections) enqueue(*c, v);
+}
+
+void Runtime::to_module(InPort& in, const Delivery& d) {
+  if (!in.slot) return;  // the transport routes only to hosted modules; defensive
+  if (!in.mediated) {
+    ++in.stats.arrived;
+    ++in.stats.delivered;
+  }
+  // The message was delivered; if the module throws handling it, that is the module's fault.
+  in.slot->guarded("on_delivery", [&] { in.module->on_delivery(d); });
+}
+
+// Counted where the message was going: on each connection from an output (as a publish of a
+// bad value is), or on a hosted module's input mediated by another process.
+void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
+                   const std::string& detail) {
+  if (input) {
+    InPort& in = *in_ports_[static_cast<size_t>(index)];
+    in.stats.arrived += count;
+    in.stats.dropped[static_cast<int>(reason)] += count;
+    trace_.publish_error(now(), in.qualified,
+                         std::string(drop_reason_name(reason)) + ": " + detail);
+    return;
+  }
+  OutPort& out = *out_ports_[static_cast<size_t>(index)];
+  for (Connection* c : out.connections) {
+    for (uint64_t k = 0; k < count; ++k) {
+      ++c->stats.arrived;
+      drop(*c, reason, detail);
+    }
+  }
 }
 
 void Runtime::enqueue(Connection& c, const Value& v) {
@@ -157,8 +192,7 @@ void Runtime::process(Connection& c, const Value& msg) {
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
   Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
-  // The message was delivered; if the module throws handling it, that is the module's fault.
-  c.destination->slot->guarded("on_delivery", [&] { c.destination->module->on_delivery(d); });
+  transport_->deliver(c.destination->index, d);
 }
 
 void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {

@@ -38,6 +38,7 @@
 #include "runtime/lua_monitor.h"
 #include "runtime/module.h"
 #include "runtime/trace.h"
+#include "runtime/transport.h"
 
 namespace arbc {
 
@@ -46,6 +47,15 @@ struct RunOptions {
   uint64_t seed = 1;
   double duration = 60;  // seconds of (simulated or wall) time
   bool realtime = false;
+  double time_scale = 1;  // realtime: run time is time_scale times wall time
+  // Where each module runs (docs/design.md#transports): the modules this process hosts (their
+  // plugin instances run here; an environment is set up only when some module is hosted), and
+  // the modules it mediates (the connections into their input ports run here; none: the
+  // hosted modules). The in-process transport needs every module in both.
+  ModuleSet host;
+  std::optional<ModuleSet> mediate;
+  // Where messages between ports go; nullptr: make_inproc_transport().
+  std::shared_ptr<Transport> transport;
   std::string trace_path;  // empty: no trace
   // Not null: every trace record is also appended here (for `arbc run --report`); the
   // vector must outlive the run.
@@ -58,10 +68,20 @@ struct RunOptions {
 // Counters of one connection, for the end-of-run table and tests.
 struct ConnectionStats {
   std::string name, source, destination;
+  size_t model_index = 0;  // the connection's position in the app's (app.json's) connections
   uint64_t arrived = 0, delivered = 0, errors = 0;
   uint64_t pending = 0;  // still queued when the run ended (arrived = delivered + drops + pending)
   std::array<uint64_t, kDropReasonCount> dropped{};
   bool quarantined = false;
+  uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
+};
+
+// Messages for an input of a module hosted here that another process mediates: what arrived
+// through the transport and what it lost before delivery (bad-type, queue-full).
+struct InputStats {
+  std::string port;                     // "Module.port"
+  uint64_t arrived = 0, delivered = 0;  // arrived = delivered + drops
+  std::array<uint64_t, kDropReasonCount> dropped{};
   uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
 };
 
@@ -102,6 +122,11 @@ class Runtime {
   const std::string& stop_reason() const { return stop_reason_; }
   bool stopped_early() const { return !stop_reason_.empty(); }
   std::vector<ConnectionStats> stats() const;
+  // Inputs of hosted modules mediated by another process (empty in a single-process run).
+  std::vector<InputStats> input_stats() const;
+  // The transport's name ("inproc", "dds") and its end-of-run lines.
+  std::string transport_name() const;
+  std::string transport_summary() const;
   // A table of the counters, one row per connection.
   std::string stats_table() const;
   // Where run-time problems are reported (default: stderr). Each distinct script error is
@@ -120,9 +145,26 @@ class Runtime {
   struct PluginGuard;
   class ModuleSlot;
   class EnvironmentSlot;
+  class TransportLink;
 
  private:
-  Runtime() = default;
+  Runtime();
+  // The steps of create(), in order; each false with *error on bad input.
+  bool create_environment(const Registry& registry, std::string* error);
+  bool create_modules(const Registry& registry, std::string* error);
+  bool create_module_slot(const model::Module& m, const ModuleFactory& factory, std::string* error);
+  void create_ports(const model::Module& m, ModuleSlot* slot);
+  bool create_connections(const std::string& app_dir, std::string* error);
+  bool create_connection(size_t i, const std::string& display_name, const std::string& app_dir,
+                         std::string* error);
+  bool open_trace(std::string* error);
+  bool open_transport(std::string* error);
+  // Routes a message published on `out` to each connection from it mediated here.
+  void from_source(OutPort& out, const Value& v);
+  // Hands a mediated delivery to the hosted module of input `in`.
+  void to_module(InPort& in, const Delivery& d);
+  void lost(bool input, int index, DropReason reason, uint64_t count, const std::string& detail);
+  std::string input_table() const;
   void report(const std::string& line);
   void enqueue(Connection& c, const Value& v);
   void drain(Connection& c);
@@ -158,6 +200,11 @@ class Runtime {
   std::vector<std::unique_ptr<InPort>> in_ports_;
   std::vector<std::unique_ptr<OutPort>> out_ports_;
   std::vector<std::unique_ptr<Connection>> connections_;
+  std::map<std::string, InPort*, std::less<>> inputs_by_name_;
+  std::map<std::string, OutPort*, std::less<>> outputs_by_name_;
+  ModuleSet host_, mediate_;
+  std::unique_ptr<TransportLink> link_;
+  std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
   bool started_ = false, shut_down_ = false;

@@ -9,21 +9,30 @@
 
 namespace arbc {
 
+// A generator seeded from the run's seed and a name (a module's, "environment"): deterministic
+// and independent per name.
+std::mt19937_64 seeded_generator(uint64_t seed, std::string_view who);
+
 // An input port of a module instance, with its event container.
 struct Runtime::InPort {
+  int index = 0;          // TransportPort::index
   std::string qualified;  // "Module.port"
   std::string port;
-  Module* module = nullptr;
+  Module* module = nullptr;  // null: the module is not hosted here
   ModuleSlot* slot = nullptr;
   TypePtr type;
+  bool mediated = false;  // the connections into it run here
   EventContainer container;
+  InputStats stats;  // what arrived mediated by another process
 };
 
 // An output port and the connections leaving it, in model order.
 struct Runtime::OutPort {
+  int index = 0;  // TransportPort::index
   std::string qualified;
   std::string port;
   TypePtr type;
+  bool hosted = false;
   std::vector<Connection*> connections;
   std::set<std::string> reported;  // publish errors already reported
 };
@@ -69,6 +78,27 @@ struct Runtime::Connection : MonitorHost {
   std::string get_constraint() override { return constraint_text; }
   void set_trig_interval(double seconds) override;
   void print(const std::string& line) override;
+};
+
+// The runtime's side of the transport seam (runtime/transport.h).
+class Runtime::TransportLink : public TransportSink {
+ public:
+  explicit TransportLink(Runtime* runtime) : runtime_(runtime) {}
+  void from_source(int out, const Value& v) override {
+    runtime_->from_source(*runtime_->out_ports_[static_cast<size_t>(out)], v);
+  }
+  void to_module(int in, const Delivery& d) override {
+    runtime_->to_module(*runtime_->in_ports_[static_cast<size_t>(in)], d);
+  }
+  void lost(bool input, int index, DropReason reason, uint64_t count,
+            const std::string& detail) override {
+    runtime_->lost(input, index, reason, count, detail);
+  }
+  void report(const std::string& line) override { runtime_->report(line); }
+  Executor& executor() override { return *runtime_->executor_; }
+
+ private:
+  Runtime* runtime_;
 };
 
 // Where plugin code (a module or the environment) runs: exceptions it throws stop there.

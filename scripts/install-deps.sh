@@ -11,10 +11,12 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz                                   # arbc docs: app.svg
+  libfastrtps-dev libfastcdr-dev fastddsgen  # arbc_dds: the distributed runtime (Fast-DDS 2.9)
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
-             chromium)                       # tests/report: the run report in headless Chromium
+             chromium                        # tests/report: the run report in headless Chromium
+             iproute2)                       # tests/dds: two hosts as network namespaces (ip netns)
 fi
 
 missing=()
