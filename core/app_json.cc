@@ -142,6 +142,17 @@ App read_app(const Json& root) {
   app.name = get_string(root, r, "name");
   app.description = opt_string(root, r, "description");
   app.spec_file = opt_string(root, r, "spec_file");
+  if (root.contains("types")) {
+    const Json& types = array_member(root, r, "types");
+    for (size_t i = 0; i < types.size(); ++i) {
+      std::string p = "types[" + std::to_string(i) + "]";
+      NamedType t;
+      t.name = get_string(types[i], p, "name");
+      t.type = read_type(types[i], p);
+      t.loc = read_location(types[i], p);
+      app.types.push_back(std::move(t));
+    }
+  }
 
   const Json& modules = array_member(root, r, "modules");
   for (size_t i = 0; i < modules.size(); ++i) {

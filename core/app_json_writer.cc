@@ -123,6 +123,16 @@ std::string to_app_json(const App& app) {
   w.member("name", app.name);
   w.member("description", app.description);
   w.member("spec_file", app.spec_file);
+  w.key("types");
+  w.begin_array();
+  for (const NamedType& t : app.types) {
+    w.begin_object();
+    w.member("name", t.name);
+    w.member("type", t.type ? t.type->to_string() : "");
+    write_location(w, t.loc);
+    w.end_object();
+  }
+  w.end_array();
   w.key("modules");
   w.begin_array();
   for (const Module& m : app.modules) write_module(w, m);

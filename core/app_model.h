@@ -35,6 +35,14 @@ struct Port {
   SourceLocation loc;
 };
 
+// `type Name = T;`: a named type of the spec, for the transports that name types on the wire
+// (DDS, docs/distributed.md). Port and field types are structural (named types expanded).
+struct NamedType {
+  std::string name;
+  TypePtr type;
+  SourceLocation loc;
+};
+
 struct Module {
   std::string name;
   std::string doc;
@@ -126,6 +134,7 @@ struct App {
   std::string name;
   std::string description;
   std::string spec_file;
+  std::vector<NamedType> types;  // in declaration order
   std::vector<Module> modules;
   std::vector<Event> events;
   std::vector<Connection> connections;

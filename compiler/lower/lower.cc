@@ -85,6 +85,8 @@ class Lowerer {
 
  private:
   void lower_modules() {
+    for (const ast::TypeDecl& t : spec_.types)
+      out_.app.types.push_back({t.name, t.type.resolved, t.loc});
     for (const ast::ModuleDecl& m : spec_.modules) {
       model::Module mm;
       mm.name = m.name;
