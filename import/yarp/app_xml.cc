@@ -34,6 +34,24 @@ const tinyxml2::XMLElement* child(const tinyxml2::XMLElement* e, const char* a,
   return c || !b ? c : e->FirstChildElement(b);
 }
 
+// tinyxml2's error, in words.
+std::string xml_error_text(const tinyxml2::XMLDocument& doc) {
+  switch (doc.ErrorID()) {
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return "an element is not closed, or closed with another tag";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      return "a malformed element";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return "a malformed attribute";
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+      return "the document is empty";
+    case tinyxml2::XML_ERROR_PARSING_TEXT:
+      return "malformed text (an unescaped '<' or '&'?)";
+    default:
+      return std::string("malformed XML (") + doc.ErrorName() + ")";
+  }
+}
+
 bool read_file(const std::string& path, std::string& text, std::string* err) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -137,7 +155,7 @@ std::optional<XmlApplication> read_application_xml(const std::string& path,
   }
   tinyxml2::XMLDocument doc;
   if (doc.Parse(app.text.data(), app.text.size()) != tinyxml2::XML_SUCCESS) {
-    std::string what = doc.ErrorStr() ? doc.ErrorStr() : "malformed XML";
+    std::string what = xml_error_text(doc);
     diags.push_back(error_at(locate(path, app.text, doc.ErrorLineNum(), ""),
                              "the XML does not parse: " + what));
     return std::nullopt;

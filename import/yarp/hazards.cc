@@ -2,6 +2,7 @@
 // docs/yarp.md#diagnostics, each located at the Lua line (or XML line) that causes it.
 #include "import/yarp/hazards.h"
 
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -47,12 +48,34 @@ std::string verdict_text(const YarpVerdict& v) {
   return "?";
 }
 
+std::string number_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 std::string conn_text(const ImportedConnection& ic, const model::Connection& c) {
   return "'" + c.name + "' (" + ic.xml.from + " -> " + ic.xml.to + ")";
 }
 
-// Why YARP's substitution goes wrong: the first name inside another name, else inside a keyword.
+// Why YARP's substitution goes wrong: in the witness state when there is one (the first name
+// replaced inside a longer word), else the first name that occurs inside another or a keyword.
 std::pair<const char*, std::string> collision(const ConstraintMeaning& m) {
+  if (m.differs && m.simulated) {
+    std::set<std::string> present(m.witness.begin(), m.witness.end());
+    Corruption c = first_corruption(m.text, present);
+    if (c.found) {
+      for (const char* k : kKeywords) {
+        if (c.word != k) continue;
+        bool written = c.word == "true" || c.word == "false";
+        return {kIdKeyword, "`" + c.name + "` is part of `" + c.word + "`" +
+                                (written ? ", which YARP wrote for an earlier name," : "") +
+                                " and YARP replaces it there too"};
+      }
+      return {kIdSubstring,
+              "`" + c.name + "` is part of `" + c.word + "`, and YARP replaces it there too"};
+    }
+  }
   for (const std::string& t : m.events) {
     for (const std::string& u : m.events) {
       if (t != u && u.find(t) != std::string::npos)
@@ -79,9 +102,10 @@ void constraint_hazard(const ImportedConnection& ic, const model::Connection& c,
                             " does not parse: " + m.parse_error,
                         kIdConstraintSyntax);
     if (m.simulated) {
-      add_note(d, "YARP runs it as Lua after replacing event names: it selects the connection " +
-                      (m.yarp == Constraint::constant(false) ? std::string("never")
-                                                             : "when " + m.yarp.to_string()));
+      add_note(d, "YARP runs it as Lua after replacing event names: it " +
+                      (m.yarp == Constraint::constant(false)
+                           ? std::string("never selects the connection")
+                           : "selects the connection when " + m.yarp.to_string()));
     }
     add_note(d, "write it with event names, and, or, not, true, false and parentheses");
     out.push_back(std::move(d));
@@ -98,9 +122,14 @@ void constraint_hazard(const ImportedConnection& ic, const model::Connection& c,
                               : head + " with too many names to try every state; it may be wrong",
                       id);
   add_note(d, why);
-  if (certain) add_note(d, "YARP runs: return " + m.witness_verdict.text);
+  if (certain) {
+    add_note(d, "YARP runs: return " + m.witness_verdict.text);
+    add_note(d, m.yarp == Constraint::constant(false)
+                    ? std::string("so YARP never selects it")
+                    : "so YARP selects it when `" + m.yarp.to_string() + "`");
+  }
   add_note(d, "rename the events so that no name is part of another name or of and, or, not, "
-              "true, false (arbc's proof uses YARP's answers)");
+              "true, false (arbc proves what YARP does)");
   out.push_back(std::move(d));
 }
 
@@ -120,7 +149,7 @@ void script_call_hazards(const ImportedConnection& ic, std::vector<Diagnostic>& 
       }
     }
     if (c.function != "setTrigInterval") continue;
-    std::string arg = c.number ? std::to_string(*c.number) : "x";
+    std::string arg = c.number ? number_text(*c.number) : "x";
     std::string period =
         c.number ? std::to_string(static_cast<long>(*c.number * 1000)) + " s" : "1000 x s";
     Diagnostic d = make(Severity::Warning, call_loc(m, c),
@@ -171,7 +200,7 @@ void opaque_hazard(const ImportedConnection& ic, const model::Connection& c,
                    std::vector<Diagnostic>& out) {
   const MonitorAnalysis& m = *ic.monitor;
   model::SourceLocation loc = m.facts.opaque_line > 0
-                                  ? locate(m.path, m.text, m.facts.opaque_line, "")
+                                  ? locate(m.path, m.text, m.facts.opaque_line, m.facts.opaque_token)
                                   : model::SourceLocation{m.path, 0, 0, 0, 0};
   Diagnostic d = make(Severity::Warning, loc,
                       "arbc cannot know every event " + conn_text(ic, c) + " sets: " +
@@ -207,13 +236,24 @@ void add_hazards(YarpImport& im) {
   for (size_t i = 0; i < im.connections.size(); ++i) {
     const ImportedConnection& ic = im.connections[i];
     if (!ic.analysed || !ic.monitor) continue;
-    if (ic.monitor->has_constraint) constraint_hazard(ic, im.app.connections[i], out);
+    if (ic.monitor->has_constraint) {
+      std::vector<Diagnostic> about_port;
+      constraint_hazard(ic, im.app.connections[i], about_port);
+      // A wrong constraint is about the destination port: it joins that port's findings.
+      for (Diagnostic& d : about_port) {
+        im.diagnostics.push_back(std::move(d));
+        im.diagnostic_ports.push_back(ic.xml.to);
+      }
+    }
     script_call_hazards(ic, out);
     forever_hazards(im, i, out);
     if (ic.monitor->facts.opaque) opaque_hazard(ic, im.app.connections[i], out);
   }
   shared_event_hazards(im, out);
-  for (Diagnostic& d : out) im.diagnostics.push_back(std::move(d));
+  for (Diagnostic& d : out) {
+    im.diagnostics.push_back(std::move(d));
+    im.diagnostic_ports.emplace_back();
+  }
 }
 
 }  // namespace arbc::yarp

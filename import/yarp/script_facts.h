@@ -40,6 +40,7 @@ struct ScriptFacts {
   bool opaque = false;
   std::string opaque_reason;
   int opaque_line = 0;
+  std::string opaque_token;  // the text at opaque_line to point at
 
   // Path facts; valid only when paths_ok (else why not, in paths_reason).
   bool paths_ok = false;

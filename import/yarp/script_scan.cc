@@ -97,11 +97,12 @@ class Scanner {
   }
 
  private:
-  void make_opaque(const std::string& why, int line) {
+  void make_opaque(const std::string& why, int line, const std::string& token = "PortMonitor") {
     if (facts_.opaque) return;
     facts_.opaque = true;
     facts_.opaque_reason = why;
     facts_.opaque_line = line;
+    facts_.opaque_token = token;
   }
 
   // `local NAME = <number>` at the top level, never assigned again: a known lifetime.
@@ -156,7 +157,7 @@ class Scanner {
     }
     if ((fn == "setEvent" || fn == "unsetEvent") && !c.text) {
       make_opaque("PortMonitor." + fn + " is called with a name that is not a string literal",
-                  e.line);
+                  e.line, fn);
     }
     facts_.calls.push_back(std::move(c));
   }
@@ -167,7 +168,7 @@ class Scanner {
       case LuaExpr::Kind::Name:
         if (e->text == "PortMonitor") make_opaque("PortMonitor is used as a value", e->line);
         if (e->text == "_G" || e->text == "_ENV" || e->text == "debug")
-          make_opaque("the script reaches globals through " + e->text, e->line);
+          make_opaque("the script reaches globals through " + e->text, e->line, e->text);
         return;
       case LuaExpr::Kind::Index:
         if (is_name(e->items[0].get(), "PortMonitor")) {
@@ -202,7 +203,7 @@ class Scanner {
                 call.items[1]->kind == LuaExpr::Kind::String && call.items[1]->text == "yarp";
     if (yarp) return;
     if (n == "load" || n == "loadstring" || n == "loadfile" || n == "dofile" || n == "require")
-      make_opaque("the script runs code arbc cannot see (" + n + ")", call.line);
+      make_opaque("the script runs code arbc cannot see (" + n + ")", call.line, n);
   }
 
   ScriptFacts& facts_;

@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 
+#include "core/effective_guard.h"
+
 namespace arbc::yarp {
 namespace {
 
@@ -119,16 +121,25 @@ bool spec_names_ok(const Constraint& c) {
   return true;
 }
 
-std::string rule_text(const ImportedConnection& ic, const model::Connection& c,
-                      const std::map<std::string, SpecPort>& ports, const std::string& spec_path) {
+// A `script` rule is opaque to the verifier, so what the monitor provably does before the
+// decision (must-set, must-unset) goes into its `when`: the effective guard, which selects the
+// same messages at run time (docs/design.md#effective-guards).
+std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string, SpecPort>& ports,
+                      const std::string& spec_path) {
+  const ImportedConnection& ic = im.connections[i];
+  const model::Connection& c = im.app.connections[i];
+  Constraint guard = model::effective_guard(im.app, c.destination, c);
   std::string s;
   if (ic.meaning.parsed && !(c.constraint == ic.meaning.written) &&
       c.kind == model::ConnectionKind::Rule)
     s += "  // written `" + ic.meaning.text + "`: YARP's evaluator selects as below\n";
   if (c.kind == model::ConnectionKind::Feed)
     s += "  // a feed: its accept never returns true, so it only sets events\n";
-  std::string when = c.constraint.to_string();
-  if (!spec_names_ok(c.constraint)) {
+  if (!(guard == c.constraint))
+    s += "  // its monitor sets or unsets events before the decision: selected on `" +
+         guard.to_string() + "`\n";
+  std::string when = guard.to_string();
+  if (!spec_names_ok(guard)) {
     s += "  // constraint `" + ic.meaning.text + "` reads names a spec cannot hold\n";
     when = "false";
   }
@@ -156,7 +167,7 @@ std::string write_spec(const YarpImport& im, const std::string& spec_path) {
     s += "\narbitrate " + qualified(ports, ap.port) + " {\n";
     for (size_t i = 0; i < im.app.connections.size(); ++i) {
       const model::Connection& c = im.app.connections[i];
-      if (c.destination == ap.port) s += rule_text(im.connections[i], c, ports, spec_path);
+      if (c.destination == ap.port) s += rule_text(im, i, ports, spec_path);
     }
     s += "}\n";
   }

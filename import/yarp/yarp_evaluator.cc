@@ -1,7 +1,10 @@
 #include "import/yarp/yarp_evaluator.h"
 
+#include "import/yarp/minimal_dnf.h"
+
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <lua.hpp>
 
 namespace arbc::yarp {
@@ -114,14 +117,7 @@ std::set<std::string> state_of(const std::vector<std::string>& events, unsigned 
   return present;
 }
 
-Constraint minterm(const std::vector<std::string>& events, unsigned mask) {
-  std::vector<Constraint> parts;
-  for (size_t i = 0; i < events.size(); ++i) {
-    Constraint e = Constraint::event_ref(events[i]);
-    parts.push_back(mask & (1u << i) ? e : Constraint::negate(e));
-  }
-  return Constraint::conjunction(std::move(parts));
-}
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 }  // namespace
 
@@ -146,11 +142,11 @@ ConstraintMeaning constraint_meaning(YarpEvaluator& evaluator, std::string_view 
   for (unsigned i = 0; i < masks.size(); ++i) masks[i] = i;
   std::stable_sort(masks.begin(), masks.end(),
                    [](unsigned a, unsigned b) { return std::popcount(a) < std::popcount(b); });
-  std::vector<Constraint> accepted;
+  std::vector<unsigned> accepted;
   for (unsigned mask : masks) {
     std::set<std::string> present = state_of(m.events, mask);
     YarpVerdict v = evaluator.evaluate(m.text, present);
-    if (v.accepts()) accepted.push_back(minterm(m.events, mask));
+    if (v.accepts()) accepted.push_back(mask);
     bool written = m.parsed && evaluate(m.written, present);
     if (!m.differs && (!m.parsed || v.accepts() != written)) {
       m.differs = true;
@@ -159,8 +155,33 @@ ConstraintMeaning constraint_meaning(YarpEvaluator& evaluator, std::string_view 
       m.written_at_witness = written;
     }
   }
-  if (m.differs) m.yarp = Constraint::disjunction(std::move(accepted));
+  if (m.differs) m.yarp = minimal_dnf(m.events, accepted);
   return m;
+}
+
+}  // namespace arbc::yarp
+
+namespace arbc::yarp {
+
+Corruption first_corruption(std::string_view constraint, const std::set<std::string>& present) {
+  std::string text = trim_spaces(constraint);
+  for (const std::string& token : yarp_lookups(constraint)) {
+    const std::string value = present.count(token) ? "true" : "false";
+    size_t pos = 0;
+    while ((pos = text.find(token, pos)) != std::string::npos) {
+      bool starts = pos == 0 || !word_char(text[pos - 1]);
+      bool ends = pos + token.size() >= text.size() || !word_char(text[pos + token.size()]);
+      if (!starts || !ends) {
+        size_t b = pos, e = pos + token.size();
+        while (b > 0 && word_char(text[b - 1])) --b;
+        while (e < text.size() && word_char(text[e])) ++e;
+        return {token, text.substr(b, e - b), true};
+      }
+      text.replace(pos, token.size(), value);
+      pos += value.size();
+    }
+  }
+  return {};
 }
 
 }  // namespace arbc::yarp

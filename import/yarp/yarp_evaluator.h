@@ -63,6 +63,15 @@ struct ConstraintMeaning {
 
 inline constexpr size_t kMaxSimulatedEvents = 12;
 
+// The first replacement YARP makes inside a longer word when `present` events are set: the
+// name replaced and the word it sat in (another name, a keyword, or a `true`/`false` YARP
+// wrote for an earlier name).
+struct Corruption {
+  std::string name, word;
+  bool found = false;
+};
+Corruption first_corruption(std::string_view constraint, const std::set<std::string>& present);
+
 // Parses `text` with arbc's grammar and runs YARP's evaluation on every event state.
 ConstraintMeaning constraint_meaning(YarpEvaluator& evaluator, std::string_view text);
 

@@ -40,6 +40,8 @@ struct YarpImport {
   model::App app;
   std::vector<ImportedConnection> connections;  // parallel to app.connections
   std::vector<Diagnostic> diagnostics;  // problems with the input, and the hazards (yarp-*)
+  // Parallel to diagnostics: the destination port a diagnostic is about ("" for the app).
+  std::vector<std::string> diagnostic_ports;
 };
 
 YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& options);

@@ -48,11 +48,8 @@ model::Connection model_connection(const ImportedConnection& ic) {
     const MonitorAnalysis& m = *ic.monitor;
     c.monitor = m.path;
     std::set<std::string> sets = m.facts.sets(), unsets = m.facts.unsets();
-    if (m.facts.opaque) {
-      c.opaque = true;
-      sets.insert(m.observed_sets.begin(), m.observed_sets.end());
-      unsets.insert(m.observed_unsets.begin(), m.observed_unsets.end());
-    }
+    // Names seen on samples are reported (yarp-opaque), never taken as all it can set.
+    if (m.facts.opaque) c.opaque = true;
     c.sets = sorted(sets);
     c.unsets = sorted(unsets);
     if (!c.opaque && m.facts.paths_ok && m.facts.callbacks.count("accept")) {
@@ -163,9 +160,11 @@ YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& opt
     return im;
   }
   bool bad_input = false;
+  im.diagnostic_ports.resize(im.diagnostics.size());
   for (const XmlConnection& c : im.xml.connections) {
     im.connections.push_back(
         import_connection(c, xml_path, options, *evaluator, im.diagnostics, bad_input));
+    im.diagnostic_ports.resize(im.diagnostics.size(), c.to);
   }
   if (bad_input) return im;
   im.app.name = im.xml.name;
