@@ -41,9 +41,12 @@ std::string verdict_text(const YarpVerdict& v) {
     case YarpVerdict::Result::False:
       return "false (not selected)";
     case YarpVerdict::Result::NotBoolean:
-      return "a value that is not a boolean, so YARP drops the message";
+      return "a value that is not a boolean: YARP drops the message, and the value it leaves on "
+             "the monitor's Lua stack aborts the receiving process at the next message into "
+             "the port";
     case YarpVerdict::Result::LuaError:
-      return "a Lua error, so YARP drops the message (" + v.error + ")";
+      return "a Lua error: YARP drops the message, and the error it leaves on the monitor's Lua "
+             "stack hides the monitor's callbacks from then on (" + v.error + ")";
   }
   return "?";
 }

@@ -174,6 +174,21 @@ TEST_F(YarpFacts, ANonBooleanConstraintAbortsTheReceivingProcess) {
   EXPECT_THAT(received("/r/d"), IsEmpty());  // "kills" never arrived
 }
 
+// A constraint that is not Lua: YARP drops the message and leaves the error message on the
+// monitor's Lua stack, where the next lookup of a callback indexes the string instead of the
+// PortMonitor table: the monitor's trig (and accept, update) are no longer found.
+TEST_F(YarpFacts, AConstraintThatIsNotLuaDisablesTheMonitorsCallbacks) {
+  start_receiver({"/r/d"});
+  monitored("/w/bad", "/r/d", "bad_constraint_trig");
+  monitored("/w/data", "/r/d", "require_e_trig");
+  send("/w/data", "b1");  // the bad monitor's trig runs first and sets e_trig
+  ::yarp::os::Time::delay(0.4);  // e_trig expires
+  send("/w/bad", "a1");   // its constraint fails to compile
+  send("/w/data", "b2");  // its trig is not found any more: e_trig stays unset
+  EXPECT_THAT(received("/r/d"), ElementsAre("b1"));
+  EXPECT_TRUE(receiver_alive());
+}
+
 // PortMonitor has setConstraint, getConstraint, setEvent, unsetEvent, setTrigInterval;
 // getConstraint returns nothing; yarp.Time_now is nil in the SWIG 4.1 bindings, yarp.now()
 // works; an error in accept drops that message only.
