@@ -24,9 +24,7 @@ int import_command(std::span<char*> args) {
   CLI::App cli(kDescription, "arbc import");
   std::string kind, input, output;
   std::vector<std::string> search_paths;
-  cli.add_option("kind", kind, "what to import: yarp")
-      ->required()
-      ->check(CLI::IsMember({"yarp"}));
+  cli.add_option("kind", kind, "what to import: yarp")->required()->check(CLI::IsMember({"yarp"}));
   cli.add_option("input", input, "the yarpmanager application XML")->required();
   cli.add_option("-o,--output", output, "the spec to write")->required();
   cli.add_option("--yarp-path", search_paths,

@@ -73,9 +73,9 @@ bool has_error(const std::vector<verify::Finding>& findings) {
 void recompute_verdicts(verify::VerifyReport& report) {
   bool refuted = has_error(report.app_findings), unknown = false;
   for (verify::PortResult& p : report.ports) {
-    p.verdict = has_error(p.findings)         ? verify::Verdict::Refuted
+    p.verdict = has_error(p.findings)       ? verify::Verdict::Refuted
                 : !p.unknown_reason.empty() ? verify::Verdict::Unknown
-                                              : verify::Verdict::Proved;
+                                            : verify::Verdict::Proved;
     refuted |= p.verdict == verify::Verdict::Refuted;
     unknown |= p.verdict == verify::Verdict::Unknown;
   }

@@ -1,7 +1,7 @@
 // `arbc verify APP.xml`: a yarpmanager application and its Lua monitors, imported with
-// import/yarp/yarp_import.h and proved like a spec (docs/yarp.md#verifying-an-existing-application).
-// The YARP hazards join the report as findings; each exclusivity counterexample gets a note at
-// the Lua line where each rule's constraint is set.
+// import/yarp/yarp_import.h and proved like a spec
+// (docs/yarp.md#verifying-an-existing-application). The YARP hazards join the report as findings;
+// each exclusivity counterexample gets a note at the Lua line where each rule's constraint is set.
 #pragma once
 
 #include <string>

@@ -118,8 +118,7 @@ void read_connection(const tinyxml2::XMLElement* c, XmlApplication& app,
 
 void read_children(const tinyxml2::XMLElement* root, XmlApplication& app,
                    std::vector<Diagnostic>& diags) {
-  for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e;
-       e = e->NextSiblingElement()) {
+  for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     std::string tag = e->Name();
     if (tag == "module") {
       XmlModule m;

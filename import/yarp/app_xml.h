@@ -22,9 +22,9 @@
 namespace arbc::yarp {
 
 struct XmlConnection {
-  std::string id;        // the id attribute, if any
-  std::string from, to;  // YARP port names
-  std::string protocol;  // the carrier string; empty: YARP's default (tcp)
+  std::string id;                      // the id attribute, if any
+  std::string from, to;                // YARP port names
+  std::string protocol;                // the carrier string; empty: YARP's default (tcp)
   model::SourceLocation loc;           // the <connection> element
   model::SourceLocation protocol_loc;  // its <protocol>, or loc when absent
 };

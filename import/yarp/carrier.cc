@@ -16,9 +16,8 @@ bool parse_carrier(std::string_view text, Carrier* out, std::string* err) {
   }
   while (plus != std::string_view::npos) {
     size_t next = text.find('+', plus + 1);
-    std::string_view part = text.substr(plus + 1, next == std::string_view::npos
-                                                      ? std::string_view::npos
-                                                      : next - plus - 1);
+    std::string_view part = text.substr(
+        plus + 1, next == std::string_view::npos ? std::string_view::npos : next - plus - 1);
     plus = next;
     size_t dot = part.find('.');
     std::string key(part.substr(0, dot));

@@ -15,13 +15,13 @@
 namespace arbc::yarp {
 
 struct Carrier {
-  std::string base = "tcp";      // the carrier before the first '+'
-  bool monitor = false;          // recv.portmonitor: a monitor in the receiving process
-  bool send_monitor = false;     // send.portmonitor: in the sending process (never arbitrates)
-  std::string type = "lua";      // type.<lua|dll>
-  std::string file;              // file.NAME (YARP's default: "modifier")
-  std::string context;           // context.CTX
-  std::optional<std::string> constraint;  // constraint.WORD
+  std::string base = "tcp";   // the carrier before the first '+'
+  bool monitor = false;       // recv.portmonitor: a monitor in the receiving process
+  bool send_monitor = false;  // send.portmonitor: in the sending process (never arbitrates)
+  std::string type = "lua";   // type.<lua|dll>
+  std::string file;           // file.NAME (YARP's default: "modifier")
+  std::string context;        // context.CTX
+  std::optional<std::string> constraint;                       // constraint.WORD
   std::vector<std::pair<std::string, std::string>> modifiers;  // all, as YARP reads them
 };
 

@@ -1,9 +1,10 @@
 // One <connection> of the XML: its carrier, its monitor found and analysed, its constraint as
 // YARP evaluates it. Part of yarp_import.h.
+#include "import/yarp/connection_import.h"
+
 #include <fstream>
 #include <sstream>
 
-#include "import/yarp/connection_import.h"
 #include "import/yarp/script_locator.h"
 
 namespace arbc::yarp {
@@ -53,9 +54,8 @@ bool read_text(const std::string& path, std::string& text) {
 }  // namespace
 
 ImportedConnection import_connection(const XmlConnection& xml, const std::string& xml_file,
-                                     const YarpImportOptions& options,
-                                     YarpEvaluator& evaluator, std::vector<Diagnostic>& out,
-                                     bool& bad_input) {
+                                     const YarpImportOptions& options, YarpEvaluator& evaluator,
+                                     std::vector<Diagnostic>& out, bool& bad_input) {
   ImportedConnection ic;
   ic.xml = xml;
   ic.meaning = constraint_meaning(evaluator, "");
@@ -70,8 +70,9 @@ ImportedConnection import_connection(const XmlConnection& xml, const std::string
                         "never evaluates its constraint there, and its events are not in the "
                         "receiving process",
                         kIdCarrier);
-    d.notes.push_back(note("arbitrate with `recv.portmonitor` (the monitor runs beside the "
-                           "destination port)"));
+    d.notes.push_back(
+        note("arbitrate with `recv.portmonitor` (the monitor runs beside the "
+             "destination port)"));
     out.push_back(std::move(d));
     ic.analysed = true;  // a plain connection as far as arbitration goes
     return ic;
@@ -88,14 +89,14 @@ ImportedConnection import_connection(const XmlConnection& xml, const std::string
                        kIdCarrier));
     return ic;
   }
-  ScriptLookup lookup = locate_script(ic.carrier.file, ic.carrier.context, xml_file,
-                                      options.search_paths);
+  ScriptLookup lookup =
+      locate_script(ic.carrier.file, ic.carrier.context, xml_file, options.search_paths);
   std::string text;
   if (!lookup.found || !read_text(*lookup.found, text)) {
-    Diagnostic d = diag(Severity::Error, xml.protocol_loc,
-                        "the monitor '" + ic.carrier.file + "' of " + xml.from + " -> " +
-                            xml.to + " is not found",
-                        kIdMonitorMissing);
+    Diagnostic d = diag(
+        Severity::Error, xml.protocol_loc,
+        "the monitor '" + ic.carrier.file + "' of " + xml.from + " -> " + xml.to + " is not found",
+        kIdMonitorMissing);
     std::string tried;
     for (const std::string& t : lookup.tried) tried += (tried.empty() ? "" : ", ") + t;
     d.notes.push_back(note("tried " + tried));

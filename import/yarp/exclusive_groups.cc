@@ -16,7 +16,8 @@ bool sets_any(const model::Connection& c, const std::string& a, const std::strin
 
 model::SourceLocation first_set(const MonitorAnalysis& m, const std::string& event) {
   for (const MonitorCall& c : m.facts.calls) {
-    if (c.function == "setEvent" && c.text == event) return locate(m.path, m.text, c.line, "setEvent");
+    if (c.function == "setEvent" && c.text == event)
+      return locate(m.path, m.text, c.line, "setEvent");
   }
   return {m.path, 0, 0, 0, 0};
 }

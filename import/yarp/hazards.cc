@@ -46,7 +46,8 @@ std::string verdict_text(const YarpVerdict& v) {
              "the port";
     case YarpVerdict::Result::LuaError:
       return "a Lua error: YARP drops the message, and the error it leaves on the monitor's Lua "
-             "stack hides the monitor's callbacks from then on (" + v.error + ")";
+             "stack hides the monitor's callbacks from then on (" +
+             v.error + ")";
   }
   return "?";
 }
@@ -88,8 +89,8 @@ std::pair<const char*, std::string> collision(const ConstraintMeaning& m) {
   for (const std::string& t : m.events) {
     for (const char* k : kKeywords) {
       if (std::string_view(k).find(t) != std::string_view::npos)
-        return {kIdKeyword, "`" + t + "` is part of the word `" + k +
-                                "`, and YARP replaces it there too"};
+        return {kIdKeyword,
+                "`" + t + "` is part of the word `" + k + "`, and YARP replaces it there too"};
     }
   }
   return {kIdSubstring, "YARP replaces names as substrings of the whole text"};
@@ -131,8 +132,9 @@ void constraint_hazard(const ImportedConnection& ic, const model::Connection& c,
                     ? std::string("so YARP never selects it")
                     : "so YARP selects it when `" + m.yarp.to_string() + "`");
   }
-  add_note(d, "rename the events so that no name is part of another name or of and, or, not, "
-              "true, false (arbc proves what YARP does)");
+  add_note(d,
+           "rename the events so that no name is part of another name or of and, or, not, "
+           "true, false (arbc proves what YARP does)");
   out.push_back(std::move(d));
 }
 
@@ -161,8 +163,9 @@ void script_call_hazards(const ImportedConnection& ic, std::vector<Diagnostic>& 
                         kIdTrigInterval);
     add_note(d, "YARP 3.12 starts the trigger thread with a period of (int)(" + arg +
                     " * 1000) seconds (MonitorLua::setTrigInterval)");
-    add_note(d, "do periodic work in accept or trig from yarp.now() timestamps: YARP calls trig "
-                "whenever a message arrives on another connection into the same port");
+    add_note(d,
+             "do periodic work in accept or trig from yarp.now() timestamps: YARP calls trig "
+             "whenever a message arrives on another connection into the same port");
     out.push_back(std::move(d));
   }
 }
@@ -176,8 +179,8 @@ void forever_hazards(const YarpImport& im, size_t i, std::vector<Diagnostic>& ou
       unset_here.insert(*c.text);
   }
   for (const MonitorCall& c : m.facts.calls) {
-    bool forever = c.function == "setEvent" && c.text &&
-                   (!c.has_second || (c.number && *c.number < 0));
+    bool forever =
+        c.function == "setEvent" && c.text && (!c.has_second || (c.number && *c.number < 0));
     if (!forever || unset_here.count(*c.text) || !reported.insert(*c.text).second) continue;
     Diagnostic d = make(Severity::Warning, call_loc(m, c),
                         "event '" + *c.text + "' is set without a lifetime and " +
@@ -189,8 +192,10 @@ void forever_hazards(const YarpImport& im, size_t i, std::vector<Diagnostic>& ou
       if (j == i || !im.connections[j].monitor) continue;
       for (const MonitorCall& u : im.connections[j].monitor->facts.calls) {
         if (u.function == "unsetEvent" && u.text == c.text)
-          add_note(d, "this unsetEvent has no effect on it: YARP removes only the caller's own "
-                      "copy of an event", call_loc(*im.connections[j].monitor, u));
+          add_note(d,
+                   "this unsetEvent has no effect on it: YARP removes only the caller's own "
+                   "copy of an event",
+                   call_loc(*im.connections[j].monitor, u));
       }
     }
     add_note(d, "give it a lifetime, PortMonitor.setEvent(\"" + *c.text +
@@ -202,14 +207,15 @@ void forever_hazards(const YarpImport& im, size_t i, std::vector<Diagnostic>& ou
 void opaque_hazard(const ImportedConnection& ic, const model::Connection& c,
                    std::vector<Diagnostic>& out) {
   const MonitorAnalysis& m = *ic.monitor;
-  model::SourceLocation loc = m.facts.opaque_line > 0
-                                  ? locate(m.path, m.text, m.facts.opaque_line, m.facts.opaque_token)
-                                  : model::SourceLocation{m.path, 0, 0, 0, 0};
-  Diagnostic d = make(Severity::Warning, loc,
-                      "arbc cannot know every event " + conn_text(ic, c) + " sets: " +
-                          m.facts.opaque_reason + "; the proof takes it as possibly setting any "
-                          "event",
-                      kIdOpaque);
+  model::SourceLocation loc =
+      m.facts.opaque_line > 0 ? locate(m.path, m.text, m.facts.opaque_line, m.facts.opaque_token)
+                              : model::SourceLocation{m.path, 0, 0, 0, 0};
+  Diagnostic d =
+      make(Severity::Warning, loc,
+           "arbc cannot know every event " + conn_text(ic, c) + " sets: " + m.facts.opaque_reason +
+               "; the proof takes it as possibly setting any "
+               "event",
+           kIdOpaque);
   if (!m.observed_sets.empty()) {
     add_note(d, "on sample bottles it set: " +
                     list(std::vector<std::string>(m.observed_sets.begin(), m.observed_sets.end())));

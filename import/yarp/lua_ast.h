@@ -14,16 +14,21 @@ using LuaExprPtr = std::unique_ptr<LuaExpr>;
 
 struct LuaExpr {
   enum class Kind {
-    Nil, True, False, Number, String, Vararg,  // literals
-    Function,                                  // function ... end
-    Table,                                     // { ... }: `items` holds keys and values
-    Binary,                                    // items[0] text items[1]
-    Unary,                                     // text items[0]
-    Name,                                      // text
-    Index,                                     // items[0][items[1]]; a.b has items[1] a String
-    Call,                                      // items[0](items[1..])
-    Method,                                    // items[0]:text(items[1..])
-    Paren,                                     // (items[0])
+    Nil,
+    True,
+    False,
+    Number,
+    String,
+    Vararg,    // literals
+    Function,  // function ... end
+    Table,     // { ... }: `items` holds keys and values
+    Binary,    // items[0] text items[1]
+    Unary,     // text items[0]
+    Name,      // text
+    Index,     // items[0][items[1]]; a.b has items[1] a String
+    Call,      // items[0](items[1..])
+    Method,    // items[0]:text(items[1..])
+    Paren,     // (items[0])
   };
   Kind kind = Kind::Nil;
   int line = 0;
@@ -41,10 +46,11 @@ struct LuaBlock {
 
 struct LuaStat {
   enum class Kind {
-    Local,          // local names = exprs
-    Assign,         // targets = exprs
-    Call,           // exprs[0] is the call
-    Label, Goto,    // names[0]
+    Local,   // local names = exprs
+    Assign,  // targets = exprs
+    Call,    // exprs[0] is the call
+    Label,
+    Goto,  // names[0]
     Break,
     Do,             // blocks[0]
     While,          // while exprs[0] do blocks[0]

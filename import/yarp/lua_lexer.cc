@@ -8,9 +8,9 @@ namespace arbc::yarp {
 namespace {
 
 constexpr std::array<std::string_view, 22> kKeywords = {
-    "and",  "break", "do",  "else", "elseif", "end",    "false", "for",  "function", "goto",
-    "if",   "in",    "local", "nil", "not",   "or",     "repeat", "return", "then",  "true",
-    "until", "while"};
+    "and",      "break",  "do",   "else", "elseif", "end",  "false", "for",
+    "function", "goto",   "if",   "in",   "local",  "nil",  "not",   "or",
+    "repeat",   "return", "then", "true", "until",  "while"};
 
 // Longest first, so that `...` wins over `..` and `..` over `.`.
 constexpr std::array<std::string_view, 33> kSymbols = {

@@ -16,9 +16,9 @@ struct BinaryOp {
   int left, right;
 };
 constexpr BinaryOp kBinary[] = {
-    {"or", 1, 1},  {"and", 2, 2}, {"<", 3, 3},   {">", 3, 3},   {"<=", 3, 3},  {">=", 3, 3},
-    {"~=", 3, 3},  {"==", 3, 3},  {"|", 4, 4},   {"~", 5, 5},   {"&", 6, 6},   {"<<", 7, 7},
-    {">>", 7, 7},  {"..", 9, 8},  {"+", 10, 10}, {"-", 10, 10}, {"*", 11, 11}, {"/", 11, 11},
+    {"or", 1, 1},   {"and", 2, 2}, {"<", 3, 3},   {">", 3, 3},   {"<=", 3, 3},  {">=", 3, 3},
+    {"~=", 3, 3},   {"==", 3, 3},  {"|", 4, 4},   {"~", 5, 5},   {"&", 6, 6},   {"<<", 7, 7},
+    {">>", 7, 7},   {"..", 9, 8},  {"+", 10, 10}, {"-", 10, 10}, {"*", 11, 11}, {"/", 11, 11},
     {"//", 11, 11}, {"%", 11, 11}, {"^", 14, 13}};
 constexpr int kUnaryPriority = 12;
 
@@ -412,8 +412,7 @@ class Parser {
         e->items.push_back(expr());
         expect("]");
         expect("=");
-      } else if (peek().kind == Kind::Name && peek(1).kind == Kind::Symbol &&
-                 peek(1).text == "=") {
+      } else if (peek().kind == Kind::Name && peek(1).kind == Kind::Symbol && peek(1).text == "=") {
         e->items.push_back(string_expr(peek().text, peek().line));
         pos_ += 2;
       }

@@ -24,7 +24,8 @@ function PortMonitor.accept(thing)
   end
   return true
 end
-)", &err);
+)",
+                         &err);
   ASSERT_TRUE(chunk) << err;
   ASSERT_EQ(chunk->body.stats.size(), 3u);
   EXPECT_EQ(chunk->body.stats[1].kind, LuaStat::Kind::Assign);
@@ -57,9 +58,12 @@ TEST(LuaParser, PrecedenceFollowsLua) {
 TEST(LuaParser, DecodesEscapes) {
   std::string err;
   auto chunk = parse_lua(R"(s = "a\tb\65\x42\u{263A}\z
-                              c")", &err);
+                              c")",
+                         &err);
   ASSERT_TRUE(chunk) << err;
-  EXPECT_EQ(chunk->body.stats[0].exprs[0]->text, "a\tbAB\xE2\x98\xBA" "c");
+  EXPECT_EQ(chunk->body.stats[0].exprs[0]->text,
+            "a\tbAB\xE2\x98\xBA"
+            "c");
 }
 
 TEST(LuaParser, ReportsErrorsWithLines) {

@@ -24,7 +24,7 @@ struct MonitorAnalysis {
   // +constraint.WORD, else none ("": every message passes).
   std::string constraint;
   bool has_constraint = false;
-  model::SourceLocation constraint_loc;  // the setConstraint call, or the carrier
+  model::SourceLocation constraint_loc;                  // the setConstraint call, or the carrier
   std::set<std::string> observed_sets, observed_unsets;  // on the sample bottles
 };
 

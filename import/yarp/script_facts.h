@@ -24,18 +24,18 @@ namespace arbc::yarp {
 
 // One call of a PortMonitor function in the script.
 struct MonitorCall {
-  std::string function;   // "setEvent", "unsetEvent", "setConstraint", "setTrigInterval"
+  std::string function;             // "setEvent", "unsetEvent", "setConstraint", "setTrigInterval"
   std::optional<std::string> text;  // the first argument when it is a string literal
   std::optional<double> number;     // setEvent's lifetime / setTrigInterval's argument, if known
   bool has_second = false;          // setEvent was given a lifetime argument
   int line = 0;
-  std::string callback;  // "accept", "trig", ...; "" at load time; "(helper)" elsewhere
+  std::string callback;           // "accept", "trig", ...; "" at load time; "(helper)" elsewhere
   const LuaExpr* node = nullptr;  // the call in the tree the facts were taken from
 };
 
 struct ScriptFacts {
-  std::vector<MonitorCall> calls;       // in source order
-  std::set<std::string> callbacks;      // PortMonitor.<name> defined as functions
+  std::vector<MonitorCall> calls;   // in source order
+  std::set<std::string> callbacks;  // PortMonitor.<name> defined as functions
   // Event names not all known: a computed name, or PortMonitor used other than as `PortMonitor.f`.
   bool opaque = false;
   std::string opaque_reason;
@@ -46,7 +46,7 @@ struct ScriptFacts {
   bool paths_ok = false;
   std::string paths_reason;
   bool accept_may_accept = true;  // some path of accept returns a true value (or no accept)
-  std::set<std::string> must_set, must_unset;  // on every accepting path of accept
+  std::set<std::string> must_set, must_unset;                   // on every accepting path of accept
   std::vector<std::pair<std::string, std::string>> never_both;  // sorted pairs
 
   std::set<std::string> sets() const;    // literal names passed to setEvent

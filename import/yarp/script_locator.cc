@@ -14,8 +14,8 @@ std::vector<std::string> split_dirs(const char* value) {
   size_t start = 0;
   while (start <= s.size()) {
     size_t colon = s.find(':', start);
-    std::string part = s.substr(start, colon == std::string::npos ? std::string::npos
-                                                                  : colon - start);
+    std::string part =
+        s.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
     if (!part.empty()) out.push_back(part);
     if (colon == std::string::npos) break;
     start = colon + 1;

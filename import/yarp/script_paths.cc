@@ -25,11 +25,11 @@ using Outcomes = std::set<Outcome>;
 constexpr size_t kMaxOutcomes = 20000;
 constexpr size_t kMaxEvents = 64;
 
-const char* const kLibraryTables[] = {"string", "math", "table", "utf8", "os", "io", "coroutine",
-                                      "yarp"};
+const char* const kLibraryTables[] = {"string", "math", "table",     "utf8",
+                                      "os",     "io",   "coroutine", "yarp"};
 const char* const kLibraryFunctions[] = {
-    "print",  "tostring", "tonumber", "type",     "ipairs",       "pairs",  "assert",
-    "error",  "rawequal", "rawlen",   "rawget",   "rawset",       "select", "next",
+    "print",  "tostring", "tonumber", "type",         "ipairs",       "pairs",         "assert",
+    "error",  "rawequal", "rawlen",   "rawget",       "rawset",       "select",        "next",
     "unpack", "pcall",    "xpcall",   "getmetatable", "setmetatable", "collectgarbage"};
 
 template <size_t N>
@@ -296,7 +296,8 @@ class PathAnalysis {
 
   // Evaluates an expression: it may call script code (havoc) and may raise (an error exit).
   std::vector<uint8_t> eval(const LuaExpr& e, std::vector<uint8_t> eff, Outcomes& out) {
-    if (contains_event_call(e)) fail("setEvent/unsetEvent inside an expression is not followed", e.line);
+    if (contains_event_call(e))
+      fail("setEvent/unsetEvent inside an expression is not followed", e.line);
     if (may_call_script(e)) eff = havoc(eff);
     if (may_raise(e)) out.insert({Exit::Error, eff});
     return eff;
@@ -318,10 +319,17 @@ class PathAnalysis {
   static bool may_raise(const LuaExpr& e) {
     using K = LuaExpr::Kind;
     switch (e.kind) {
-      case K::Nil: case K::True: case K::False: case K::Number: case K::String:
-      case K::Vararg: case K::Function: case K::Name:
+      case K::Nil:
+      case K::True:
+      case K::False:
+      case K::Number:
+      case K::String:
+      case K::Vararg:
+      case K::Function:
+      case K::Name:
         return false;
-      case K::Table: case K::Paren:
+      case K::Table:
+      case K::Paren:
         break;
       case K::Unary:
         if (e.text != "not") return true;

@@ -82,8 +82,10 @@ int call_callback(lua_State* L) {
     lua_getglobal(L, "__arbc_options");
     lua_newtable(L);
     const MonitorContext& c = *a->context;
-    for (auto [k, v] : {std::pair{"filename", &c.filename}, {"source", &c.source},
-                        {"destination", &c.destination}, {"carrier", &c.carrier}}) {
+    for (auto [k, v] : {std::pair{"filename", &c.filename},
+                        {"source", &c.source},
+                        {"destination", &c.destination},
+                        {"carrier", &c.carrier}}) {
       lua_pushstring(L, v->c_str());
       lua_setfield(L, -2, k);
     }

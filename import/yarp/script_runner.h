@@ -17,7 +17,7 @@ struct RecordedCall {
   std::string function;  // "setEvent", "unsetEvent", "setConstraint", "setTrigInterval"
   std::string text;      // the first argument (a string), if any
   std::optional<double> number;
-  int line = 0;          // the script line that called it
+  int line = 0;  // the script line that called it
 };
 
 struct SampleRun {
@@ -29,7 +29,7 @@ struct SampleRun {
 };
 
 struct ScriptRun {
-  bool loaded = false;  // the top level ran
+  bool loaded = false;   // the top level ran
   bool created = false;  // create ran without error and returned a true value (or is absent)
   std::string error;     // why not loaded / not created: "ball.lua:7: attempt to ..."
   std::optional<std::string> constraint;  // the last setConstraint before accept

@@ -17,7 +17,8 @@ PortMonitor.create = function(options)
   PortMonitor.setConstraint("e_ball and " .. (dest == "/motor/in" and "not e_line" or "x"))
   return true
 end
-)", "ball.lua", kContext, {});
+)",
+                             "ball.lua", kContext, {});
   ASSERT_TRUE(run.created) << run.error;
   EXPECT_EQ(run.constraint, "e_ball and not e_line");
   EXPECT_EQ(run.constraint_line, 7);
@@ -33,7 +34,8 @@ PortMonitor.accept = function(thing)
   end
   return false
 end
-)", "f.lua", kContext, sample_bottles({"face"}, {}));
+)",
+                             "f.lua", kContext, sample_bottles({"face"}, {}));
   ASSERT_TRUE(run.created) << run.error;
   ASSERT_GE(run.samples.size(), 2u);
   EXPECT_FALSE(run.samples[0].accepted);  // the empty bottle
@@ -53,11 +55,11 @@ TEST(ScriptRunner, ErrorsNameTheScriptLine) {
   ScriptRun run = run_script("local x = nil\nx.y = 1\n", "bad.lua", kContext, {});
   EXPECT_FALSE(run.loaded);
   EXPECT_NE(run.error.find("bad.lua:2:"), std::string::npos) << run.error;
-  ScriptRun stand_in = run_script("require('yarp')\nyarp.BufferedPortBottle()\n", "p.lua",
-                                  kContext, {});
+  ScriptRun stand_in =
+      run_script("require('yarp')\nyarp.BufferedPortBottle()\n", "p.lua", kContext, {});
   EXPECT_NE(stand_in.error.find("stand-in"), std::string::npos) << stand_in.error;
-  ScriptRun endless = run_script("PortMonitor.create = function() while true do end end",
-                                 "loop.lua", kContext, {});
+  ScriptRun endless =
+      run_script("PortMonitor.create = function() while true do end end", "loop.lua", kContext, {});
   EXPECT_FALSE(endless.created);
   EXPECT_NE(endless.error.find("instruction budget"), std::string::npos) << endless.error;
 }

@@ -40,8 +40,8 @@ std::map<std::string, std::map<std::string, Setter>> setters(const YarpImport& i
     if (!ic.monitor || !ic.analysed) continue;
     for (const MonitorCall& c : ic.monitor->facts.calls) {
       if (c.function != "setEvent" || !c.text) continue;
-      out[*c.text].emplace(ic.xml.to,
-                           Setter{i, locate(ic.monitor->path, ic.monitor->text, c.line, "setEvent")});
+      out[*c.text].emplace(
+          ic.xml.to, Setter{i, locate(ic.monitor->path, ic.monitor->text, c.line, "setEvent")});
     }
   }
   return out;
@@ -83,14 +83,19 @@ void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out) {
           !reported.insert({c.destination, e}).second)
         continue;
       Diagnostic d = warning(ic.monitor->constraint_loc,
-                             "the constraint of '" + c.name + "' reads '" + e + "', which only "
-                             "monitors on connections into " + ports_text(it->second) +
-                             " set: this works only if " + ports_text(it->second) + " and " +
-                             c.destination + " are ports of one process");
+                             "the constraint of '" + c.name + "' reads '" + e +
+                                 "', which only "
+                                 "monitors on connections into " +
+                                 ports_text(it->second) + " set: this works only if " +
+                                 ports_text(it->second) + " and " + c.destination +
+                                 " are ports of one process");
       add_note(d, "set here", it->second.begin()->second.loc);
-      add_note(d, "YARP keeps events per process; put the monitor that sets it on a connection "
-                  "into " + c.destination + " (a connection whose accept returns false only "
-                  "sets events)");
+      add_note(d,
+               "YARP keeps events per process; put the monitor that sets it on a connection "
+               "into " +
+                   c.destination +
+                   " (a connection whose accept returns false only "
+                   "sets events)");
       out.push_back(std::move(d));
     }
   }

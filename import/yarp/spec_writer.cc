@@ -11,11 +11,11 @@ namespace arbc::yarp {
 namespace {
 
 constexpr const char* kSpecKeywords[] = {
-    "app",   "type",   "const", "module", "in",     "out",   "event",     "events", "from",
-    "lifetime", "for", "exclusive", "invariant", "arbitrate", "by", "priority", "complete",
-    "when",  "hold",   "connect", "assert", "let",  "var",   "accept",    "set",    "unset",
-    "if",    "else",   "emit",  "throttle", "every", "script", "not",     "and",    "or",
-    "true",  "false",  "otherwise"};
+    "app",      "type",     "const", "module",    "in",        "out",       "event", "events",
+    "from",     "lifetime", "for",   "exclusive", "invariant", "arbitrate", "by",    "priority",
+    "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
+    "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
+    "not",      "and",      "or",    "true",      "false",     "otherwise"};
 
 bool is_keyword(const std::string& s) {
   for (const char* k : kSpecKeywords) {
@@ -52,7 +52,8 @@ std::map<std::string, SpecPort> name_ports(const YarpImport& im) {
                              : identifier(yarp.substr(0, slash));
     std::string port = identifier(slash == std::string::npos ? "port" : yarp.substr(slash + 1));
     std::string base = port;
-    for (int i = 2; !taken.insert(module + "." + port).second; ++i) port = base + "_" + std::to_string(i);
+    for (int i = 2; !taken.insert(module + "." + port).second; ++i)
+      port = base + "_" + std::to_string(i);
     ports[yarp] = {module, port, out};
   };
   for (const model::Connection& c : im.app.connections) add(c.source, true);
@@ -106,8 +107,9 @@ std::string events_text(const YarpImport& im) {
 std::string script_body(const ImportedConnection& ic, const std::string& spec_path) {
   if (!ic.monitor) return ";";
   std::filesystem::path base = std::filesystem::path(spec_path).parent_path();
-  std::filesystem::path rel = std::filesystem::path(ic.monitor->path).lexically_relative(
-      base.empty() ? std::filesystem::path(".") : base);
+  std::filesystem::path rel =
+      std::filesystem::path(ic.monitor->path)
+          .lexically_relative(base.empty() ? std::filesystem::path(".") : base);
   std::string p = rel.empty() ? ic.monitor->path : rel.generic_string();
   return " { script \"" + p + "\"; }";
 }
@@ -161,7 +163,8 @@ std::string write_spec(const YarpImport& im, const std::string& spec_path) {
     for (char c : im.app.description) d += c == '"' || c == '\\' || c == '\n' ? ' ' : c;
     s += " \"" + d + "\"";
   }
-  s += ";\n\n// A YARP Bottle holds any values; the spec does not type them.\ntype Bottle = list<string>;\n\n";
+  s += ";\n\n// A YARP Bottle holds any values; the spec does not type them.\ntype Bottle = "
+       "list<string>;\n\n";
   s += modules_text(ports) + "\n" + events_text(im);
   for (const model::ArbitratedPort& ap : im.app.arbitrated_ports) {
     s += "\narbitrate " + qualified(ports, ap.port) + " {\n";

@@ -1,11 +1,11 @@
 #include "import/yarp/yarp_evaluator.h"
 
-#include "import/yarp/minimal_dnf.h"
-
 #include <algorithm>
 #include <bit>
 #include <cctype>
 #include <lua.hpp>
+
+#include "import/yarp/minimal_dnf.h"
 
 namespace arbc::yarp {
 namespace {
@@ -48,8 +48,8 @@ int run_return(lua_State* L) {
     a->verdict->result = YarpVerdict::Result::NotBoolean;
     a->verdict->error = std::string("the value is ") + luaL_typename(L, -1);
   } else {
-    a->verdict->result = lua_toboolean(L, -1) ? YarpVerdict::Result::True
-                                               : YarpVerdict::Result::False;
+    a->verdict->result =
+        lua_toboolean(L, -1) ? YarpVerdict::Result::True : YarpVerdict::Result::False;
   }
   return 0;
 }

@@ -48,14 +48,14 @@ class YarpEvaluator {
 
 // A constraint as written, and as YARP evaluates it.
 struct ConstraintMeaning {
-  std::string text;                 // trimmed like YARP (spaces at both ends)
-  bool parsed = false;              // arbc's constraint grammar accepts it
-  Constraint written;               // when parsed
-  std::string parse_error;          // when not
-  std::vector<std::string> events;  // the distinct pieces YARP looks up, sorted
-  bool simulated = false;           // every state was tried (at most kMaxSimulatedEvents)
-  Constraint yarp;                  // what YARP selects on, over `events`
-  bool differs = false;             // some state where YARP's answer is not the written one
+  std::string text;                  // trimmed like YARP (spaces at both ends)
+  bool parsed = false;               // arbc's constraint grammar accepts it
+  Constraint written;                // when parsed
+  std::string parse_error;           // when not
+  std::vector<std::string> events;   // the distinct pieces YARP looks up, sorted
+  bool simulated = false;            // every state was tried (at most kMaxSimulatedEvents)
+  Constraint yarp;                   // what YARP selects on, over `events`
+  bool differs = false;              // some state where YARP's answer is not the written one
   std::vector<std::string> witness;  // such a state (fewest events present), when differs
   YarpVerdict witness_verdict;       // YARP's answer there
   bool written_at_witness = false;   // the written constraint's answer there (when parsed)

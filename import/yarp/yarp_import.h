@@ -39,7 +39,7 @@ struct YarpImport {
   XmlApplication xml;
   model::App app;
   std::vector<ImportedConnection> connections;  // parallel to app.connections
-  std::vector<Diagnostic> diagnostics;  // problems with the input, and the hazards (yarp-*)
+  std::vector<Diagnostic> diagnostics;          // problems with the input, and the hazards (yarp-*)
   // Parallel to diagnostics: the destination port a diagnostic is about ("" for the app).
   std::vector<std::string> diagnostic_ports;
 };

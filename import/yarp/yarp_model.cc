@@ -95,8 +95,9 @@ void arbitrated_ports(YarpImport& im) {
   }
   for (const std::string& port : order) {
     const std::vector<size_t>& conns = into[port];
-    bool constrained = std::any_of(conns.begin(), conns.end(),
-                                   [&](size_t i) { return !im.connections[i].meaning.text.empty(); });
+    bool constrained = std::any_of(conns.begin(), conns.end(), [&](size_t i) {
+      return !im.connections[i].meaning.text.empty();
+    });
     std::set<std::string> taken;
     model::ArbitratedPort ap;
     ap.port = port;
@@ -156,7 +157,8 @@ YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& opt
   im.xml = std::move(*xml);
   std::unique_ptr<YarpEvaluator> evaluator = YarpEvaluator::create();
   if (!evaluator) {
-    im.diagnostics.push_back({Severity::Error, {xml_path}, "cannot create a Lua state", kIdXml, {}});
+    im.diagnostics.push_back(
+        {Severity::Error, {xml_path}, "cannot create a Lua state", kIdXml, {}});
     return im;
   }
   bool bad_input = false;
@@ -170,7 +172,8 @@ YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& opt
   im.app.name = im.xml.name;
   im.app.description = im.xml.description;
   im.app.spec_file = xml_path;
-  for (const ImportedConnection& ic : im.connections) im.app.connections.push_back(model_connection(ic));
+  for (const ImportedConnection& ic : im.connections)
+    im.app.connections.push_back(model_connection(ic));
   restrict_must_unset(im.app);
   arbitrated_ports(im);
   derive_exclusive_groups(im);

@@ -1,10 +1,9 @@
 // What YARP 3.12's portmonitor carrier does, checked on real YARP (docs/yarp.md#what-yarp-does
 // cites these tests). Monitors are in tests/yarp_real/facts/.
-#include "tests/yarp_real/yarp_fixture.h"
-
+#include <gmock/gmock.h>
 #include <yarp/os/Time.h>
 
-#include <gmock/gmock.h>
+#include "tests/yarp_real/yarp_fixture.h"
 
 namespace arbc::yarp_test {
 namespace {
@@ -181,10 +180,10 @@ TEST_F(YarpFacts, AConstraintThatIsNotLuaDisablesTheMonitorsCallbacks) {
   start_receiver({"/r/d"});
   monitored("/w/bad", "/r/d", "bad_constraint_trig");
   monitored("/w/data", "/r/d", "require_e_trig");
-  send("/w/data", "b1");  // the bad monitor's trig runs first and sets e_trig
+  send("/w/data", "b1");         // the bad monitor's trig runs first and sets e_trig
   ::yarp::os::Time::delay(0.4);  // e_trig expires
-  send("/w/bad", "a1");   // its constraint fails to compile
-  send("/w/data", "b2");  // its trig is not found any more: e_trig stays unset
+  send("/w/bad", "a1");          // its constraint fails to compile
+  send("/w/data", "b2");         // its trig is not found any more: e_trig stays unset
   EXPECT_THAT(received("/r/d"), ElementsAre("b1"));
   EXPECT_TRUE(receiver_alive());
 }
@@ -200,9 +199,9 @@ TEST_F(YarpFacts, TheLuaApi) {
   std::vector<std::string> got = received("/r/d");
   ASSERT_EQ(got.size(), 1u);
   EXPECT_THAT(got[0], HasSubstr(R"(ok "getConstraint_values=0")"));
-  EXPECT_THAT(got[0], HasSubstr(
-                          R"("functions=getConstraint,setConstraint,setEvent,setTrigInterval,)"
-                          R"(unsetEvent")"));
+  EXPECT_THAT(got[0],
+              HasSubstr(R"("functions=getConstraint,setConstraint,setEvent,setTrigInterval,)"
+                        R"(unsetEvent")"));
   EXPECT_THAT(got[0], HasSubstr(R"("Time_now=nil" "now=number")"));
 }
 

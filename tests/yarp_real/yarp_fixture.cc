@@ -8,7 +8,6 @@
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
 #include <yarp/os/Time.h>
 
 #include <algorithm>
@@ -56,8 +55,8 @@ pid_t start_server(int port) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  const char* argv[] = {ARBC_YARPSERVER, "--read", "--ip", "127.0.0.1", "--socket",
-                        port_text.c_str(), nullptr};
+  const char* argv[] = {ARBC_YARPSERVER, "--read",          "--ip", "127.0.0.1",
+                        "--socket",      port_text.c_str(), nullptr};
   pid_t pid = -1;
   int rc = posix_spawn(&pid, ARBC_YARPSERVER, &actions, nullptr, const_cast<char**>(argv), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -168,8 +167,7 @@ bool YarpTest::receiver_alive() {
   return g_receiver > 0 && waitpid(g_receiver, &status, WNOHANG) == 0;
 }
 
-bool YarpTest::connect(const std::string& from, const std::string& to,
-                       const std::string& carrier) {
+bool YarpTest::connect(const std::string& from, const std::string& to, const std::string& carrier) {
   bool ok = ::yarp::os::Network::connect(from, to, carrier.empty() ? "tcp" : carrier);
   ::yarp::os::Time::delay(0.2);  // the receiving side loads the monitor and runs create
   return ok;

@@ -8,11 +8,10 @@
 // crashes its process does not take the test with it.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <yarp/os/Bottle.h>
 #include <yarp/os/BufferedPort.h>
 #include <yarp/os/Network.h>
-
-#include <gtest/gtest.h>
 
 #include <map>
 #include <memory>

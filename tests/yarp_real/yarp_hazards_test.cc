@@ -1,11 +1,10 @@
 // Each YARP hazard arbc reports (docs/yarp.md#diagnostics), shown on real YARP: the application
 // in tests/yarp_verify/<case>/ misbehaves as its diagnostic says. And the applications arbc
 // proves behave as proved.
-#include "tests/yarp_real/yarp_fixture.h"
-
+#include <gmock/gmock.h>
 #include <yarp/os/Time.h>
 
-#include <gmock/gmock.h>
+#include "tests/yarp_real/yarp_fixture.h"
 
 namespace arbc::yarp_test {
 namespace {

@@ -3,6 +3,7 @@
 // the connections into these ports run in this process, as they would in a module, so a test
 // can watch a monitor crash the receiving process. SIGTERM ends it at once: YARP's close can
 // wait for a monitor's trigger thread (setTrigInterval) for as long as its period.
+#include <unistd.h>
 #include <yarp/os/Bottle.h>
 #include <yarp/os/BufferedPort.h>
 #include <yarp/os/Network.h>
@@ -13,7 +14,6 @@
 #include <memory>
 #include <mutex>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace {
