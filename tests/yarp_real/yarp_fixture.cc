@@ -5,6 +5,7 @@
 #include <netinet/in.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/file.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <thread>
 
 #include "import/yarp/app_xml.h"
@@ -31,20 +33,40 @@ pid_t g_receiver = -1;
 fs::path g_tmp;
 fs::path g_start_dir;
 
-int free_port() {
+bool can_bind(int port) {
   int s = socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  a.sin_port = 0;
-  socklen_t len = sizeof a;
-  if (bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
-      getsockname(s, reinterpret_cast<sockaddr*>(&a), &len) != 0) {
-    close(s);
-    return -1;
-  }
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  bool ok = bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
   close(s);
-  return ntohs(a.sin_port);
+  return ok;
+}
+
+// A name server port whose block of 100 is this process's alone. yarpserver gives the ports it
+// registers the numbers just above its own (PORT+2...), and a port that cannot bind its number
+// fails to open, so the block must be free and below the kernel's ephemeral range (32768 and
+// up); a lock file per block keeps parallel tests apart.
+int reserve_port_block() {
+  std::mt19937 rng(
+      static_cast<unsigned>(getpid()) ^
+      static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
+  for (int attempt = 0; attempt < 400; ++attempt) {
+    int base = 10000 + 100 * static_cast<int>(rng() % 220);
+    std::string lock = "/tmp/arbc-yarp-ports-" + std::to_string(base) + ".lock";
+    int fd = open(lock.c_str(), O_CREAT | O_RDWR, 0666);
+    if (fd < 0) continue;
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      close(fd);
+      continue;
+    }
+    bool free = true;
+    for (int p = base; p < base + 50 && free; ++p) free = can_bind(p);
+    if (free) return base;  // the lock is held until the process exits
+    close(fd);
+  }
+  return -1;
 }
 
 // Starts yarpserver on 127.0.0.1:port, its output in the temporary folder.
@@ -92,8 +114,8 @@ void YarpTest::SetUp() {
   setenv("YARP_DATA_HOME", (g_tmp / "data").c_str(), 1);
   setenv("YARP_DATA_DIRS", ARBC_YARP_PREFIX "/share/yarp", 1);
   setenv("LUA_CPATH", ARBC_YARP_PREFIX "/lib/lua/5.4/?.so;;", 1);
-  int port = free_port();
-  ASSERT_GT(port, 0);
+  int port = reserve_port_block();
+  ASSERT_GT(port, 0) << "no free block of ports between 10000 and 32000";
   std::ofstream(g_tmp / "conf" / "yarp.conf") << "127.0.0.1 " << port << " yarp\n";
   g_server = start_server(port);
   ASSERT_GT(g_server, 0) << "cannot start " << ARBC_YARPSERVER;
@@ -195,7 +217,7 @@ void YarpTest::send(const std::string& port, const std::string& text) {
   b.fromString(text);
   p.writeStrict();
   p.waitForWrite();
-  ::yarp::os::Time::delay(0.05);
+  ::yarp::os::Time::delay(0.2);  // the receiver handles each connection in its own thread
 }
 
 std::vector<std::string> YarpTest::received(const std::string& port, double settle) {

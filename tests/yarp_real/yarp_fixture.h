@@ -46,7 +46,7 @@ class YarpTest : public ::testing::Test {
   void send(const std::string& port, const std::string& text);
   // Everything the receiver's `port` received since the last call, as Bottle texts, after
   // waiting `settle` seconds for messages in flight.
-  std::vector<std::string> received(const std::string& port, double settle = 0.3);
+  std::vector<std::string> received(const std::string& port, double settle = 0.5);
 
   static std::string source_dir(const std::string& relative);
 

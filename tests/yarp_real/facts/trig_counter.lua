@@ -6,7 +6,7 @@ local trigs = 0
 
 PortMonitor.create = function(options)
   if options:find("source"):asString():match("timed") then
-    PortMonitor.setTrigInterval(0.002)   -- every 2 ms, if the unit were seconds
+    PortMonitor.setTrigInterval(0.005)   -- every 5 ms, if the unit were seconds
   end
   return true
 end
