@@ -2,6 +2,8 @@
 // YARP evaluates it. Part of yarp_import.h.
 #include "import/yarp/connection_import.h"
 
+#include "import/yarp/app_xml.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -40,6 +42,14 @@ void script_error(const ImportedConnection& ic, const MonitorAnalysis& m,
                  "in create, or create not returning true); arbc takes it as always selected "
                  "and setting any event"));
   out.push_back(std::move(d));
+}
+
+// A setConstraint outside create and the top level: the constraint changes while it runs.
+const MonitorCall* constraint_set_later(const ScriptFacts& f) {
+  for (const MonitorCall& c : f.calls) {
+    if (c.function == "setConstraint" && !c.callback.empty() && c.callback != "create") return &c;
+  }
+  return nullptr;
 }
 
 bool read_text(const std::string& path, std::string& text) {
@@ -111,6 +121,16 @@ ImportedConnection import_connection(const XmlConnection& xml, const std::string
   if (!m.run.loaded || !m.run.created) {
     script_error(ic, m, out);
     return ic;
+  }
+  if (const MonitorCall* late = constraint_set_later(m.facts)) {
+    Diagnostic d = diag(Severity::Warning, locate(m.path, m.text, late->line, "setConstraint"),
+                        "the monitor " + m.path + " of " + xml.from + " -> " + xml.to +
+                            " changes its constraint after create: arbc takes the connection "
+                            "as always selected",
+                        kIdOpaque);
+    d.notes.push_back(note("set the constraint once, in create, and select with events"));
+    out.push_back(std::move(d));
+    return ic;  // not analysed: always selected, opaque
   }
   ic.meaning = constraint_meaning(evaluator, m.constraint);
   ic.analysed = true;

@@ -53,6 +53,40 @@ std::string ports_text(const std::map<std::string, Setter>& by_port) {
   return s;
 }
 
+// Two or more monitors set the event, one with a lifetime, into one port (several ports are
+// reported above): YARP's lookup finds the first entry of a name, and an expired one hides a
+// live one once (YarpFacts.AnExpiredEntryHidesALiveOneOnce); each unsetEvent removes only its
+// caller's own entry.
+void several_setters(const YarpImport& im,
+                     const std::map<std::string, std::map<std::string, Setter>>& set_by,
+                     std::vector<Diagnostic>& out) {
+  for (const auto& [event, by_port] : set_by) {
+    if (by_port.size() != 1) continue;
+    std::vector<model::SourceLocation> sites;
+    bool lifetime = false;
+    for (const ImportedConnection& ic : im.connections) {
+      if (!ic.monitor || !ic.analysed) continue;
+      const MonitorCall* first = nullptr;
+      for (const MonitorCall& c : ic.monitor->facts.calls) {
+        if (c.function != "setEvent" || c.text != event) continue;
+        lifetime |= c.has_second;
+        if (!first) first = &c;
+      }
+      if (first) sites.push_back(locate(ic.monitor->path, ic.monitor->text, first->line, "setEvent"));
+    }
+    if (sites.size() < 2 || !lifetime) continue;
+    Diagnostic d = warning(sites[0], "event '" + event + "' is set by " +
+                                         std::to_string(sites.size()) +
+                                         " monitors, with a lifetime: when one's entry expires, "
+                                         "YARP's next lookup of '" + event +
+                                         "' can answer absent although another's is live");
+    for (size_t i = 1; i < sites.size(); ++i) add_note(d, "also set here", sites[i]);
+    add_note(d, "give each event one monitor that sets it (and unsets it: a monitor unsets only "
+                "its own entry)");
+    out.push_back(std::move(d));
+  }
+}
+
 }  // namespace
 
 void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out) {
@@ -69,6 +103,7 @@ void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out) {
     add_note(d, "give each port's events their own names (for example prefix them with the port)");
     out.push_back(std::move(d));
   }
+  several_setters(im, set_by, out);
   // Read on a port, set only by monitors into other ports.
   std::set<std::pair<std::string, std::string>> reported;
   for (size_t i = 0; i < im.connections.size(); ++i) {

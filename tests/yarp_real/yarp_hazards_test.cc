@@ -117,6 +117,20 @@ TEST_F(YarpApp, SharedEventBlocksTheOtherPort) {
   EXPECT_THAT(received("/robot/head:i"), ElementsAre("look-1", "look-3"));
 }
 
+// yarp-shared-event, several setters: the left camera's e_ball has expired, the right one's is
+// live, yet the ball tracker's next message is dropped (the lookup meets the expired entry
+// first); the one after passes.
+TEST_F(YarpApp, SeveralSettersHideALiveEventOnce) {
+  start("several_setters");
+  send("/leftCam/ball:o", "1");
+  ::yarp::os::Time::delay(0.4);
+  send("/rightCam/ball:o", "1");  // e_ball: left's until t+1.0, right's until t+1.6
+  ::yarp::os::Time::delay(0.4);   // now t+1.2 or so
+  send("/ballTracker/target:o", "1 2 3");
+  send("/ballTracker/target:o", "4 5 6");
+  EXPECT_THAT(received("/controller/target:i"), ElementsAre("4 5 6"));
+}
+
 // yarp-constraint-syntax: `e_ball && !e_line` is a Lua syntax error: the ball never passes.
 TEST_F(YarpApp, ConstraintThatDoesNotParseNeverDelivers) {
   start("constraint_syntax");
