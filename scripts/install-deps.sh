@@ -10,6 +10,7 @@ packages=(
   libz3-dev                                  # the proof
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtinyxml2-dev                            # arbc verify APP.xml: yarpmanager applications
   graphviz                                   # arbc docs: app.svg
   libfastrtps-dev libfastcdr-dev fastddsgen  # arbc_dds: the distributed runtime (Fast-DDS 2.9)
 )
