@@ -1,5 +1,7 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
+//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
+//                    [--transport inproc|dds] [--host ..] [--mediate ..] [--deploy FILE]
+//                    [--domain N] [--time-scale K]`  (the last six: cli/run_transport.h)
 // Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
@@ -20,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/report/report_file.h"
 #include "cli/report/run_report.h"
+#include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -185,6 +188,8 @@ int run_command(std::span<char*> args) {
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   std::string report_path;
   cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
+  TransportFlags transport;
+  add_transport_options(cli, &transport);
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -217,8 +222,10 @@ int run_command(std::span<char*> args) {
     print_errors(load.errors);
     return kExitBadInput;
   }
-  std::vector<std::string> mismatches =
-      check_modules(load.app, (fs::path(dir) / "app.json").string());
+  int placed = apply_transport(transport, load.app, &options);
+  if (placed != kExitOk) return placed;
+  std::vector<std::string> mismatches = check_modules(
+      load.app, (fs::path(dir) / "app.json").string(), Registry::global(), options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
@@ -253,9 +260,13 @@ int run_command(std::span<char*> args) {
 
   std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", load.app.name.c_str(),
               runtime->scenario().c_str(), static_cast<unsigned long long>(options.seed),
-              options.realtime ? "real" : "simulated", runtime->now(),
+              options.realtime ? (options.time_scale != 1 ? "scaled real" : "real") : "simulated",
+              runtime->now(),
               runtime->stopped_early() ? ", stopped: " : "", runtime->stop_reason().c_str());
+  std::string placement = describe_transport(transport, options);
+  if (!placement.empty()) std::printf("transport: %s\n", placement.c_str());
   std::fputs(runtime->stats_table().c_str(), stdout);
+  std::fputs(runtime->transport_summary().c_str(), stdout);
   bool success = true;
   std::string verdict;
   if (Environment* env = runtime->environment()) {
