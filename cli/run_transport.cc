@@ -79,6 +79,8 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   }
   if (!pick_domain(flags, dds.deployment, &dds.domain)) return false;
   options->realtime = true;
+  options->unknown_until_fed = true;
+  options->report_silent_lapses = true;
   options->time_scale = flags.time_scale.value_or(1);
   options->transport = dds::make_dds_transport(app, std::move(dds));
   return true;

@@ -90,6 +90,8 @@ void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
 
 void Runtime::enqueue(Connection& c, const Value& v) {
   ++c.stats.arrived;
+  c.last_arrival = now();
+  if (!c.silence_reported.empty()) c.silence_reported.clear();
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
     return;
@@ -141,6 +143,7 @@ void Runtime::process(Connection& c, const Value& msg) {
       monitor_failed(c, call, "accept");
       return;
     }
+    c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
     if (!accepted) {
       c.consecutive_errors = 0;
       if (reason == drop_reason_name(DropReason::NoValue)) {
@@ -155,7 +158,13 @@ void Runtime::process(Connection& c, const Value& msg) {
       return;
     }
   }
-  // 2. the constraint, on the container as accept left it.
+  // 2. the constraint, on the container as accept left it; never on events not known yet.
+  std::string unknown;
+  if (!c.unknown.empty() && !knows_events_of(c, t, &unknown)) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NotSelected, unknown);
+    return;
+  }
   if (!c.constraint.evaluate(c.destination->container.present(t))) {
     c.consecutive_errors = 0;
     drop(c, c.is_feed ? DropReason::Feed : DropReason::NotSelected);

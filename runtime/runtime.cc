@@ -92,6 +92,9 @@ void Runtime::report(const std::string& line) {
 void Runtime::start() {
   if (started_) return;
   started_ = true;  // from here on setTrigInterval schedules at once
+  start_time_ = now();
+  if (options_.unknown_until_fed) collect_unknown_events();
+  if (options_.report_silent_lapses) watch_lapses(0.1);
   if (environment_) {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;

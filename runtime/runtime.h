@@ -56,6 +56,14 @@ struct RunOptions {
   std::optional<ModuleSet> mediate;
   // Where messages between ports go; nullptr: make_inproc_transport().
   std::shared_ptr<Transport> transport;
+  // After a (re)start this process knows no event: a rule whose constraint reads an event that
+  // a feed provides is not selected until that feed has delivered once since start, or the
+  // event's lifetime has passed (docs/design.md#feeds). On for distributed runs, where the
+  // modules do not start with the mediator.
+  bool unknown_until_fed = false;
+  // Report (once per silence) an event that lapses because its feed's source sent nothing for
+  // its lifetime: in a distributed run, the sign that a peer is gone.
+  bool report_silent_lapses = false;
   std::string trace_path;  // empty: no trace
   // Not null: every trace record is also appended here (for `arbc run --report`); the
   // vector must outlive the run.
@@ -165,6 +173,16 @@ class Runtime {
   void to_module(InPort& in, const Delivery& d);
   void lost(bool input, int index, DropReason reason, uint64_t count, const std::string& detail);
   std::string input_table() const;
+  std::string connection_table() const;
+  // The unknown-after-start rule: which feed-provided events each rule's constraint reads.
+  void collect_unknown_events();
+  // Removes what is known by now from c.unknown; false (with *why) while something is not.
+  bool knows_events_of(Connection& c, double t, std::string* why);
+  // An event entry lapsed in `in`'s container; reports it when its source went silent.
+  void lapsed(InPort& in, int event, int owner, double expiry);
+  // Looks at every mediated container each `period` s, so that lapses are seen (and reported)
+  // when they happen even when no message arrives any more.
+  void watch_lapses(double period);
   void report(const std::string& line);
   void enqueue(Connection& c, const Value& v);
   void drain(Connection& c);
@@ -207,6 +225,7 @@ class Runtime {
   std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
+  double start_time_ = 0;
   bool started_ = false, shut_down_ = false;
 };
 

@@ -154,10 +154,8 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
       in->mediated = mediate_.contains(m.name);
       in->stats.port = qualified;
       InPort* raw = in.get();
-      in->container.on_expiry([this, raw](int event, int owner, double expiry) {
-        trace_.event(expiry, raw->qualified, "expire", raw->container.index().name(event),
-                     connections_[static_cast<size_t>(owner)]->name, expiry);
-      });
+      in->container.on_expiry(
+          [this, raw](int event, int owner, double expiry) { lapsed(*raw, event, owner, expiry); });
       inputs_by_name_.emplace(qualified, raw);
       in_ports_.push_back(std::move(in));
     } else {
@@ -227,6 +225,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
     return false;
   }
   c->source->connections.push_back(c.get());
+  if (c->is_feed) c->destination->feeds.push_back(c.get());
   connections_.push_back(std::move(c));
   return true;
 }

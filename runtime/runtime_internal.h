@@ -23,6 +23,7 @@ struct Runtime::InPort {
   TypePtr type;
   bool mediated = false;  // the connections into it run here
   EventContainer container;
+  std::vector<Connection*> feeds;  // the feed connections into it
   InputStats stats;  // what arrived mediated by another process
 };
 
@@ -63,6 +64,19 @@ struct Runtime::Connection : MonitorHost {
   double last_delivery = -std::numeric_limits<double>::infinity();
   double trig_interval = 0;
   Executor::TaskId trig_task = 0;
+
+  // The unknown-after-start rule (RunOptions::unknown_until_fed): the feed-provided events the
+  // constraint reads that are not known yet, each with its feed and lifetime. Emptied as they
+  // become known; a feed is known once it processed a message since start (`fed`).
+  struct UnknownEvent {
+    std::string event;
+    const Connection* feed = nullptr;
+    std::optional<double> lifetime;
+  };
+  std::vector<UnknownEvent> unknown;
+  bool fed = false;
+  double last_arrival = -std::numeric_limits<double>::infinity();
+  std::set<std::string> silence_reported;  // events reported lapsed since the last arrival
 
   int consecutive_errors = 0;
   bool quarantined = false;

@@ -77,6 +77,18 @@ std::string Runtime::input_table() const {
 }
 
 std::string Runtime::stats_table() const {
+  std::string out = connection_table();
+  out += input_table();
+  for (const PluginStats& p : plugin_stats()) {
+    if (p.errors == 0) continue;
+    out += p.name + ": " + std::to_string(p.errors) + " exception(s) caught, the run went on\n";
+  }
+  return out;
+}
+
+// One row per connection run here (none in a process that mediates nothing).
+std::string Runtime::connection_table() const {
+  if (connections_.empty()) return {};
   size_t width = 10;
   for (const auto& c : connections_) width = std::max(width, c->name.size());
   std::string out;
@@ -104,11 +116,6 @@ std::string Runtime::stats_table() const {
     std::snprintf(cell, sizeof cell, " %7zu %6llu%s\n", c->queue.size(),
                   static_cast<unsigned long long>(s.errors), s.quarantined ? "  QUARANTINED" : "");
     out += cell;
-  }
-  out += input_table();
-  for (const PluginStats& p : plugin_stats()) {
-    if (p.errors == 0) continue;
-    out += p.name + ": " + std::to_string(p.errors) + " exception(s) caught, the run went on\n";
   }
   return out;
 }
