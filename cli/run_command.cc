@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/run_options.h"
 #include "cli/report/report_file.h"
 #include "cli/report/run_report.h"
 #include "runtime/app_loader.h"
@@ -26,22 +27,6 @@ namespace arbc::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// "60", "60s", "500ms", "2min" -> seconds; false on anything else.
-bool parse_duration(const std::string& text, double* seconds) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (...) {
-    return false;
-  }
-  std::string unit = text.substr(used);
-  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "min" ? 60 : -1;
-  if (scale < 0 || !(value > 0)) return false;
-  *seconds = value * scale;
-  return true;
-}
 
 // A temporary directory removed when the run ends.
 struct TempDir {
@@ -85,10 +70,15 @@ int prepare_app_dir(const std::string& input, bool no_verify, TempDir* temp, std
     *dir = input;
     return kExitOk;
   }
+  if (fs::path(input).filename() == "app.json" && fs::is_regular_file(input)) {
+    *dir = fs::path(input).parent_path().string();  // as `arbc verify` and `arbc docs` take it
+    if (dir->empty()) *dir = ".";
+    return kExitOk;
+  }
   if (fs::path(input).extension() == ".spec") return build_spec(input, no_verify, temp, dir);
   std::fprintf(stderr,
                "arbc run: error: %s: not an app directory (one with app.json and monitors/, "
-               "written by `arbc build`) nor a .spec file\n",
+               "written by `arbc build`), its app.json, nor a .spec file\n",
                input.c_str());
   return kExitBadInput;
 }
@@ -148,13 +138,16 @@ int run_command(std::span<char*> args) {
   std::vector<std::string> plugins;
   bool no_verify = false;
   RunOptions options;
-  cli.add_option("app", input, "an app directory written by `arbc build` (or a .spec)")->required();
+  cli.add_option("app", input,
+                 "an app directory written by `arbc build`, its app.json, or a .spec")->required();
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
   cli.add_flag("--no-verify", no_verify, "with a SPEC: build it without the proof");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
-  cli.add_option("--seed", options.seed, "seed of every random generator (default 1)");
+  std::string seed_text = "1";
+  cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
+      ->type_name("UINT");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   std::string report_path;
   cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
@@ -164,11 +157,10 @@ int run_command(std::span<char*> args) {
     int rc = cli.exit(e);
     return rc == 0 ? kExitOk : kExitBadInput;
   }
-  if (!parse_duration(duration_text, &options.duration)) {
-    std::fprintf(stderr,
-                 "arbc run: error: --duration '%s' is not a positive duration such as 60s, "
-                 "500ms or 2min\n",
-                 duration_text.c_str());
+  std::string value_error;
+  if (!parse_run_duration(duration_text, &options.duration, &value_error) ||
+      !parse_seed(seed_text, &options.seed, &value_error)) {
+    std::fprintf(stderr, "arbc run: error: %s\n", value_error.c_str());
     return kExitBadInput;
   }
 

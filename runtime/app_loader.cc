@@ -30,7 +30,10 @@ AppDirLoad load_app_dir(const std::string& dir) {
   text << in.rdbuf();
   model::AppLoad parsed = model::from_app_json(text.str());
   if (!parsed.ok) {
-    load.errors.push_back(file.string() + ": " + parsed.error + " (rebuild it with `arbc build`)");
+    // One rebuild hint: the model's own error may already carry one (a newer schema).
+    std::string hint =
+        parsed.error.find("rebuild") == std::string::npos ? " (rebuild it with `arbc build`)" : "";
+    load.errors.push_back(file.string() + ": " + parsed.error + hint);
     return load;
   }
   for (const model::Connection& c : parsed.app.connections) {

@@ -88,6 +88,18 @@ TEST(TextFormat, LongListsAreCutToOneReadableLine) {
   EXPECT_THAT(text, HasSubstr("proved: 1 port, 1000 rules"));
 }
 
+TEST(TextFormat, AssertCountAgreesWithItsVerb) {
+  VerifyReport report;
+  PortResult port;
+  port.port = "M.in";
+  port.rules = {"a", "b"};
+  port.asserts = 1;
+  report.ports.push_back(port);
+  EXPECT_THAT(format_text({{"one.json", report}}, nullptr, false), HasSubstr("; 1 assert holds\n"));
+  report.ports[0].asserts = 2;
+  EXPECT_THAT(format_text({{"two.json", report}}, nullptr, false), HasSubstr("; 2 asserts hold\n"));
+}
+
 TEST(TextFormat, RefutedQuotesTheRule) {
   SourceCache sources;
   sources.add("tests/verify/table_clean_take_mutant.spec",

@@ -47,7 +47,10 @@ std::string port_line(const PortResult& p, bool stats) {
     line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
                                 : ": rules " + join(p.rules) + " are never selected together";
     if (p.complete) line += "; some rule is selected in every state";
-    if (p.asserts) line += "; " + plural(static_cast<size_t>(p.asserts), "assert") + " hold";
+    if (p.asserts) {
+      line += "; " + plural(static_cast<size_t>(p.asserts), "assert") +
+              (p.asserts == 1 ? " holds" : " hold");
+    }
   } else {
     if (p.verdict == Verdict::Unknown) line += " (" + p.unknown_reason + ")";
     size_t errors = 0, warnings = 0;
