@@ -25,6 +25,14 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
+Diagnostic file_error(const std::string& file, std::string message, std::string id) {
+  Diagnostic d;
+  d.loc.file = file;
+  d.message = std::move(message);
+  d.id = std::move(id);
+  return d;
+}
+
 ModelLoad load_spec_model(const std::string& path) {
   ModelLoad out;
   out.spec = true;
@@ -33,6 +41,7 @@ ModelLoad load_spec_model(const std::string& path) {
   for (const Diagnostic& d : compiled.diagnostics) out.diagnostics += render(d, &compiled.sources);
   if (!compiled.ok || !compiled.lowered) {
     out.error = path + ": not verified: the spec has errors (fix them; `arbc check` lists them)";
+    out.errors = compiled.diagnostics;
     return out;
   }
   out.ok = true;
@@ -58,6 +67,7 @@ ModelLoad load_model(const std::string& path) {
     out.error = file +
                 ": cannot read the file; give a spec (*.spec), an app.json, or a directory "
                 "written by `arbc build`";
+    out.errors.push_back(file_error(file, out.error.substr(file.size() + 2), "io"));
     return out;
   }
   std::ostringstream text;
@@ -65,6 +75,7 @@ ModelLoad load_model(const std::string& path) {
   model::AppLoad load = model::from_app_json(text.str());
   if (!load.ok) {
     out.error = file + ": not a valid app.json: " + load.error;
+    out.errors.push_back(file_error(file, "not a valid app.json: " + load.error, "app-json"));
     return out;
   }
   out.ok = true;

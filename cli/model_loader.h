@@ -6,8 +6,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
+#include "core/diagnostic.h"
 
 namespace arbc::cli {
 
@@ -17,7 +19,13 @@ struct ModelLoad {
   std::string error;        // for the user: "FILE: what is wrong; what to do"
   std::string diagnostics;  // a spec's rendered diagnostics (errors and warnings), for stderr
   bool spec = false;        // the input was a spec
+  // When !ok: what is wrong as diagnostics (a spec's own, or one for the file), for the JSON
+  // and SARIF reports of a bad input.
+  std::vector<Diagnostic> errors;
 };
+
+// An error about a whole file (no line): `io` (unreadable), `app-json` (does not load).
+Diagnostic file_error(const std::string& file, std::string message, std::string id);
 
 // Reads the model from `path`. Never throws.
 ModelLoad load_model(const std::string& path);

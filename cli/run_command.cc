@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/run_options.h"
 #include "cli/report/report_file.h"
 #include "cli/report/run_report.h"
+#include "cli/run_options.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
 
@@ -138,8 +138,8 @@ int run_command(std::span<char*> args) {
   std::vector<std::string> plugins;
   bool no_verify = false;
   RunOptions options;
-  cli.add_option("app", input,
-                 "an app directory written by `arbc build`, its app.json, or a .spec")->required();
+  cli.add_option("app", input, "an app directory written by `arbc build`, its app.json, or a .spec")
+      ->required();
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");

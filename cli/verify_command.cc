@@ -2,8 +2,8 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -93,12 +93,15 @@ int verify_command(std::span<char*> args) {
     std::fputs(load.diagnostics.c_str(), stderr);
     if (!load.ok) {
       std::fprintf(stderr, "arbc verify: %s\n", load.error.c_str());
+      if (load.errors.empty()) load.errors.push_back(file_error(input, load.error, "app-json"));
+      reports.push_back({input, {}, std::move(load.errors)});
       bad_input = true;
       continue;
     }
     verify::VerifyResult result = verify::verify_app(load.app, options);
     if (!result.ok) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), result.error.c_str());
+      reports.push_back({input, {}, {file_error(input, result.error, "app-json")}});
       bad_input = true;
       continue;
     }
@@ -121,7 +124,8 @@ int verify_command(std::span<char*> args) {
     out = verify::format_json(reports, stats);
   } else if (format == "sarif") {
     out = verify::format_sarif(reports, ARBC_VERSION);
-  } else if (!reports.empty()) {
+  } else if (std::any_of(reports.begin(), reports.end(),
+                         [](const verify::InputReport& r) { return !r.bad_input(); })) {
     SourceCache sources;
     out = verify::format_text(reports, &sources, stats);
   }

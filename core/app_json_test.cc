@@ -12,7 +12,10 @@ App small_app() {
   app.name = "demo";
   app.description = "two sources into one port";
   app.spec_file = "specs/demo.spec";
-  Module a{"A", "a source", {{"out", Direction::Out, parse_type("vec3"), {"demo.spec", 3, 12}}}, {"demo.spec", 3, 1}};
+  Module a{"A",
+           "a source",
+           {{"out", Direction::Out, parse_type("vec3"), {"demo.spec", 3, 12}}},
+           {"demo.spec", 3, 1}};
   Module h{"H", "", {{"gaze", Direction::In, parse_type("vec3"), {}}}, {}};
   app.modules = {a, h};
   app.events.push_back({"e_face", 1.0, "", {"demo.spec", 5, 7}});

@@ -8,9 +8,12 @@ namespace arbc {
 
 const char* severity_name(Severity s) {
   switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
   }
   return "error";
 }
@@ -114,7 +117,8 @@ void quote_line(std::string_view text, const model::SourceLocation& loc, std::st
   for (size_t i = first; i < caret && i < last; ++i)
     out += chars[i].text == "\t" ? std::string("\t") : std::string(chars[i].cells, ' ');
   out += '^';
-  for (size_t i = caret + 1; i < tilde_end && i < last; ++i) out += std::string(chars[i].cells, '~');
+  for (size_t i = caret + 1; i < tilde_end && i < last; ++i)
+    out += std::string(chars[i].cells, '~');
   out += '\n';
 }
 

@@ -48,7 +48,8 @@ TEST(Render, ShowsControlCharactersEscapedAndKeepsTheCaretUnderTheColumn) {
   EXPECT_EQ(render(at(1, 12, 13, "unknown name 'c'\x1b[0m"), &sources),
             "x.spec:1:12: error: unknown name 'c'\\x1B[0m [unknown-event]\n"
             "  a \\x1B[31m b\\x7F c;\n"
-            "  " + std::string(17, ' ') + "^\n");
+            "  " +
+                std::string(17, ' ') + "^\n");
 }
 
 TEST(Render, CutsALongLineToAboutTwoHundredColumnsAroundTheCaret) {

@@ -113,6 +113,7 @@ class PortChecker {
       Finding f;
       f.check = kCheckDead;
       f.severity = options_.strict ? Severity::Error : Severity::Warning;
+      f.strict = options_.strict;
       f.port = scope_.port->port;
       f.rules = {rule_name(r)};
       f.loc = r.connection->loc;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "core/app_model.h"
+#include "core/diagnostic.h"
 
 namespace arbc::verify {
 
@@ -49,6 +49,7 @@ struct Finding {
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
   std::vector<Note> notes;  // why each side holds, what to do
+  bool strict = false;      // a warning (dead, unused) that --strict made an error
 };
 
 // The outcome for one arbitrated port.

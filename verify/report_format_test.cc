@@ -7,10 +7,12 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/app_json.h"
+#include "core/check_ids.h"
 #include "verify/test_models.h"
 #include "verify/verify.h"
 
@@ -172,6 +174,18 @@ TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
                          kCheckComplete, kCheckAssert, kCheckUnknown, kCheckInternal}) {
     EXPECT_THAT(docs, HasSubstr(std::string("\n## ") + id + "\n")) << id;
   }
+}
+
+// `arbc check --list-ids` lists every id any stage reports: the verifier's too.
+TEST(Docs, EveryCheckIdIsRegistered) {
+  std::map<std::string, std::string> stage_of;
+  for (const frontend::CheckId& id : frontend::all_check_ids())
+    stage_of[std::string(id.id)] = std::string(id.stage);
+  for (const char* id : {kCheckExclusive, kCheckDead, kCheckUnfed, kCheckUnused, kCheckOwnership,
+                         kCheckComplete, kCheckAssert, kCheckUnknown}) {
+    EXPECT_EQ(stage_of[id], "verify") << id;
+  }
+  EXPECT_EQ(stage_of[kCheckInternal], "internal");
 }
 
 }  // namespace

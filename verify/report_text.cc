@@ -74,14 +74,43 @@ std::string port_line(const PortResult& p, bool stats) {
   return line + "\n";
 }
 
+// "[dead] rule 'pull' of PullObject.cmd": what a warning that --strict made an error is about.
+std::string strict_item(const Finding& f) {
+  std::string what = "[" + f.check + "] ";
+  if (!f.event.empty())
+    return what + "event '" + f.event + "'" + (f.port.empty() ? "" : " of " + f.port);
+  if (!f.rules.empty())
+    return what + "rule '" + f.rules[0] + "'" + (f.port.empty() ? "" : " of " + f.port);
+  return what + f.port;
+}
+
+// The warnings that failed the run only because of --strict, for the summary line.
+std::vector<std::string> strict_failures(const std::vector<InputReport>& inputs) {
+  std::vector<std::string> out;
+  auto add = [&](const Finding& f) {
+    if (f.strict && f.severity == Severity::Error) out.push_back(strict_item(f));
+  };
+  for (const InputReport& in : inputs) {
+    for (const PortResult& p : in.report.ports)
+      for (const Finding& f : p.findings) add(f);
+    for (const Finding& f : in.report.app_findings) add(f);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats) {
   std::string out;
   size_t ports = 0, rules = 0, errors = 0, warnings = 0;
   bool refuted = false, unknown = false;
+  size_t bad = 0;
   double seconds = 0;
   for (const InputReport& in : inputs) {
+    if (in.bad_input()) {
+      ++bad;
+      continue;
+    }
     const VerifyReport& r = in.report;
     out += r.app.empty() ? in.input + ":\n" : r.app + " (" + in.input + "):\n";
     if (r.ports.empty()) out += "  no arbitrated ports\n";
@@ -98,9 +127,12 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
     unknown |= r.verdict == Verdict::Unknown;
     seconds += r.seconds;
   }
-  const char* verdict = refuted ? "refuted" : unknown ? "unknown" : "proved";
+  const char* verdict = bad ? "error" : refuted ? "refuted" : unknown ? "unknown" : "proved";
   out += std::string(verdict) + ": " + plural(ports, "port") + ", " + plural(rules, "rule") + "; " +
          plural(errors, "error") + ", " + plural(warnings, "warning");
+  if (bad) out += "; " + plural(bad, "input") + " not verified (bad input, on stderr)";
+  std::vector<std::string> strict = strict_failures(inputs);
+  if (!strict.empty()) out += "; warnings made errors by --strict: " + join(strict);
   if (stats) out += "; " + seconds_text(seconds);
   return out + "\n";
 }

@@ -57,6 +57,35 @@ std::map<std::string, Read> reads_of(const model::App& app, const model::Arbitra
   return reads;
 }
 
+// The fix for an event no rule or assert reads. Removing only its declaration would leave an
+// `invariant` or `exclusive` group that mentions it naming an unknown event (an error of
+// `arbc check`): the note names those too, each at its line.
+void add_unused_event_fix(const model::App& app, const std::string& event, Finding& f) {
+  std::vector<Note> mentions;
+  size_t invariants = 0;
+  for (const model::Invariant& inv : app.invariants) {
+    std::set<std::string> events;
+    inv.formula.collect_events(events);
+    if (!events.count(event)) continue;
+    mentions.push_back({"the invariant `" + inv.formula.to_string() + "` mentions it", inv.loc});
+    ++invariants;
+  }
+  for (const model::ExclusiveGroup& g : app.exclusive_groups) {
+    if (std::find(g.events.begin(), g.events.end(), event) != g.events.end())
+      mentions.push_back({"an exclusive group mentions it", g.loc});
+  }
+  if (mentions.empty()) {
+    f.notes.push_back({"remove it from the event declaration, or use it in a `when`", {}});
+    return;
+  }
+  std::string where = mentions.size() > 1 ? "the invariants and exclusive groups below"
+                      : invariants == 1   ? "the invariant below"
+                                          : "the exclusive group below";
+  f.notes.push_back(
+      {"use it in a `when`, or remove it from the event declaration and from " + where, {}});
+  f.notes.insert(f.notes.end(), mentions.begin(), mentions.end());
+}
+
 }  // namespace
 
 void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
@@ -103,6 +132,8 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       Finding f;
       f.check = kCheckUnused;
       f.severity = strict ? Severity::Error : Severity::Warning;
+      f.strict = strict;
+      f.strict = strict;
       f.port = dest ? dest->port : "";
       f.rules = {c.name};
       f.event = event;
@@ -144,11 +175,12 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
     Finding f;
     f.check = kCheckUnused;
     f.severity = strict ? Severity::Error : Severity::Warning;
+    f.strict = strict;
     f.event = e.name;
     f.loc = e.loc;
     f.message =
         "event '" + e.name + "' is set from " + e.source + ", but no rule or assert reads it";
-    f.notes.push_back({"remove it from the event declaration, or use it in a `when`", {}});
+    add_unused_event_fix(app, e.name, f);
     out.push_back(std::move(f));
   }
 }

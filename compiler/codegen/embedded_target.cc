@@ -1,8 +1,8 @@
 #include "compiler/codegen/embedded_target.h"
 
 #include "compiler/codegen/monitor_writer.h"
+#include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/lowered_app.h"
-#include "compiler/lower/script_check.h"
 #include "core/app_json.h"
 
 namespace arbc::codegen {
@@ -12,7 +12,7 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
   model::App app = lowered.app;  // gains the monitors' source maps
   SpecLines lines(lowered.spec_text);
   std::vector<OutputFile> monitors;
-  lower::LuaSyntaxChecker lua;
+  frontend::LuaSyntaxChecker lua;
   for (const lower::MonitorPlan& plan : lowered.monitors) {
     model::Connection& c = app.connections[plan.connection];
     if (c.monitor.empty()) continue;

@@ -327,4 +327,8 @@ struct Spec {
   const ArbitrateDecl* find_arbitration(const std::string& qualified_port) const;
 };
 
+// The activity event `by priority` generates for a rule above the lowest: "act_" + rule
+// (docs/lowering.md). The name is reserved: sema rejects a declared event that takes it.
+std::string activity_event_name(const std::string& rule);
+
 }  // namespace arbc::ast

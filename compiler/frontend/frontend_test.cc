@@ -191,7 +191,10 @@ TEST(Frontend, NonAsciiTextKeepsItsBytesAndColumnsCountCharacters) {
 }
 
 TEST(Frontend, AByteOrderMarkIsNotPartOfTheText) {
-  CheckResult r = check_text("\xEF\xBB\xBF" "app t; module M { out x: flot; }\n", "bom.spec");
+  CheckResult r = check_text(
+      "\xEF\xBB\xBF"
+      "app t; module M { out x: flot; }\n",
+      "bom.spec");
   ASSERT_TRUE(r.spec);
   EXPECT_EQ(r.spec->app->name, "t");
   ASSERT_EQ(r.diagnostics.size(), 1u) << ids(r);

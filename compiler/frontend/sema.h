@@ -13,4 +13,8 @@ namespace arbc::frontend {
 // order; the caller sorts). The spec's sema fields are filled wherever names resolved.
 void check_spec(ast::Spec& spec, std::vector<Diagnostic>& out);
 
+// Rules above the lowest of a `by priority` port whose activity event (act_<rule>) is also a
+// declared event: one "priority" error each (sema_priority.cc). Reads sema's event symbols.
+void check_activity_names(const ast::Spec& spec, std::vector<Diagnostic>& out);
+
 }  // namespace arbc::frontend

@@ -2,7 +2,10 @@
 // where each statement may appear, the events they set, and the emitted values' types
 // (the paper's first integration rule: both sides of a connection carry the same type).
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
+#include "compiler/frontend/lua_syntax.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
 
@@ -44,8 +47,9 @@ std::vector<std::string> Scope::names() const {
   return out;
 }
 
-// The script is read at build time, relative to the spec's folder; a missing one is caught now.
-// Specs checked from memory (no such file on disk) skip the check.
+// The script is read at build time, relative to the spec's folder; a missing one, or one that
+// does not compile as Lua, is caught now. Specs checked from memory (no such file on disk) skip
+// the check.
 void Sema::check_script_file(const Stmt& s) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -59,6 +63,16 @@ void Sema::check_script_file(const Stmt& s) {
           "script file '" + s.text + "' not found (" + where +
               "a script path is relative to the spec's folder)",
           "script-missing");
+    return;
+  }
+  std::ifstream in(script, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) {
+    error(s.loc, "cannot read script file '" + script.string() + "': check its permissions",
+          "script");
+  } else if (auto d = lua_syntax_diagnostic(text.str(), script.string(), s.loc)) {
+    out_.push_back(std::move(*d));
   }
 }
 

@@ -510,6 +510,7 @@ void Sema::run() {
 void check_spec(Spec& spec, std::vector<Diagnostic>& out) {
   Sema sema(spec, out);
   sema.run();
+  check_activity_names(spec, out);
 }
 
 }  // namespace arbc::frontend

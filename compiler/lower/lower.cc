@@ -6,9 +6,9 @@
 #include <set>
 #include <sstream>
 
+#include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
-#include "compiler/lower/script_check.h"
 
 namespace arbc::lower {
 
@@ -124,7 +124,7 @@ class Lowerer {
     std::ostringstream text;
     text << in.rdbuf();
     ScriptSource script{path.lexically_normal().string(), text.str(), s.loc};
-    std::string error = check_lua_syntax(script.text, s.text);
+    std::string error = frontend::check_lua_syntax(script.text, s.text);
     if (!error.empty()) {
       diagnostics_.push_back(
           error_at(s.loc, "script '" + s.text + "' is not valid Lua: " + error, "script"));
@@ -146,7 +146,7 @@ class Lowerer {
           Diagnostic d = error_at(s.loc,
                                   "a monitor has one trig interval: use one `every` block per "
                                   "rule",
-                                  "every");
+                                  "statement-context");
           d.notes.push_back(error_at(every->loc, "the first `every` is here", ""));
           d.notes.back().severity = Severity::Note;
           diagnostics_.push_back(std::move(d));
@@ -188,19 +188,13 @@ class Lowerer {
       bool lowest = k + 1 == a.rules.size();
       if (a.by_priority && !lowest) {
         w.activity = activity_event_name(r.name);
-        if (spec_.find_event(w.activity))
-          diagnostics_.push_back(error_at(
-              r.loc,
-              "rule '" + r.name + "' needs the activity event '" + w.activity +
-                  "' (by priority), but an event of that name is declared; rename one of them",
-              "priority"));
         if (!r.hold)
           diagnostics_.push_back(
               error_at(r.loc,
                        "rule '" + r.name +
                            "' needs `hold D` under `by priority`: it suppresses the "
                            "lower rules for D after each message it could deliver",
-                       "priority"));
+                       "hold-missing"));
       }
       model::Connection c;
       c.name = r.name;
@@ -397,7 +391,7 @@ std::string monitor_path(const std::string& port, const std::string& name) {
   return "monitors/" + port + "__" + name + ".lua";
 }
 
-std::string activity_event_name(const std::string& rule) { return "act_" + rule; }
+std::string activity_event_name(const std::string& rule) { return ast::activity_event_name(rule); }
 
 LowerResult lower_spec(std::shared_ptr<const ast::Spec> spec, const LowerOptions& options) {
   LowerResult result;

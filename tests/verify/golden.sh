@@ -41,6 +41,18 @@ else
   check spec_proved.txt 0 specs/table_clean.spec specs/search_and_track.spec
   check spec_refuted.txt 1 tests/verify/table_clean_take_mutant.spec
   check spec_refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.spec
+  # Each proof check the fixtures above do not show: unfed, ownership, complete.
+  check findings.txt 1 tests/verify/findings.spec
+  # No time to decide is "unknown", exit 1, never "proved" (a surviving mutant, issue 13).
+  check unknown_timeout.txt 1 --timeout 1e-9 tests/verify/overlap.spec
+  check unknown_timeout.json 1 --timeout 1e-9 --format json tests/verify/overlap.spec
+  # An event only an invariant or exclusive group mentions: the fix names them too.
+  check invariant_only.txt 0 tests/verify/invariant_only.spec
+  # Input with errors never looks clean: verdict "error", the diagnostics, exit 2.
+  check bad_input.json 2 --format json tests/verify/bad.spec
+  check bad_input.sarif 2 --format sarif tests/verify/bad.spec tests/verify/no_such_app.json \
+    tests/verify/malformed.app.json
+  check bad_input_mixed.txt 2 tests/verify/overlap.spec tests/verify/bad.spec
 fi
 
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
