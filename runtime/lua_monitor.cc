@@ -181,13 +181,21 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
     *error = file + ": " + installed.error;
     return nullptr;
   }
-  LuaCall ran = m->sandbox_->run_chunk(script, file);
+  m->script_spans_ = script_spans(script);
+  LuaCall ran = m->cited(m->sandbox_->run_chunk(script, file));
   if (!ran.ok()) {
     *error = ran.status == LuaCall::Status::NoValue ? file + ": novalue() at top level" : ran.error;
     if (error->rfind(file, 0) != 0) *error = file + ": " + *error;
     return nullptr;
   }
   return m;
+}
+
+LuaCall LuaMonitor::cited(LuaCall call) const {
+  // Before the chunk compiled, Lua's name for it is the file name (unless over LUA_IDSIZE).
+  const std::string& chunk = sandbox_->chunk_source().empty() ? file_ : sandbox_->chunk_source();
+  if (!call.error.empty()) call.error = cite_script_lines(call.error, chunk, script_spans_);
+  return call;
 }
 
 // Protected: a script may have put metamethods on PortMonitor or _G that raise errors.
@@ -277,7 +285,7 @@ static LuaCall type_error(const std::string& file, const std::string& what) {
 LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
   Call call;
   call.options = &options;
-  LuaCall r = sandbox_->protected_call(run_create, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_create, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *created = r.ok() && call.result;
   return r;
@@ -286,7 +294,7 @@ LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
 LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason) {
   Call call;
   call.message = &msg;
-  LuaCall r = sandbox_->protected_call(run_accept, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_accept, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *accepted = r.ok() && call.result;
   if (reason) *reason = std::move(call.reason);
@@ -296,7 +304,7 @@ LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason
 LuaCall LuaMonitor::update(const Type& destination, Value* out) {
   Call call;
   call.destination = &destination;
-  LuaCall r = sandbox_->protected_call(run_update, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_update, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   if (r.ok()) *out = std::move(call.output);
   return r;
@@ -305,13 +313,13 @@ LuaCall LuaMonitor::update(const Type& destination, Value* out) {
 LuaCall LuaMonitor::trig() {
   Call call;
   call.callback = "trig";
-  return sandbox_->protected_call(run_simple, &call);
+  return cited(sandbox_->protected_call(run_simple, &call));
 }
 
 LuaCall LuaMonitor::destroy() {
   Call call;
   call.callback = "destroy";
-  return sandbox_->protected_call(run_simple, &call);
+  return cited(sandbox_->protected_call(run_simple, &call));
 }
 
 }  // namespace arbc

@@ -16,10 +16,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "runtime/lua_sandbox.h"
+#include "core/script_lines.h"
 #include "core/type.h"
 #include "core/value.h"
+#include "runtime/lua_sandbox.h"
 
 namespace arbc {
 
@@ -73,9 +75,14 @@ class LuaMonitor {
   static int run_simple(lua_State* L);
   void install_api();
 
+  // Errors on lines inlined from a user's `script` cite that file and line
+  // (core/script_lines.h).
+  LuaCall cited(LuaCall call) const;
+
   std::unique_ptr<LuaSandbox> sandbox_;
   MonitorHost* host_ = nullptr;
   std::string file_;
+  std::vector<ScriptSpan> script_spans_;
 };
 
 }  // namespace arbc

@@ -174,6 +174,9 @@ LuaCall LuaSandbox::run_chunk(const std::string& text, const std::string& chunk_
   std::string name = "@" + chunk_name;
   int rc = luaL_loadbufferx(L_, text.data(), text.size(), name.c_str(), "t");
   if (rc != LUA_OK) return finish_call(rc);
+  lua_Debug chunk;
+  lua_pushvalue(L_, -1);
+  if (lua_getinfo(L_, ">S", &chunk)) chunk_source_ = chunk.short_src;  // pops the copy
   budget_exhausted_ = false;
   lua_sethook(L_, budget_hook, LUA_MASKCOUNT, static_cast<int>(limits_.instructions));
   return finish_call(lua_pcall(L_, 0, 0, 0));

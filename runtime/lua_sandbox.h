@@ -48,6 +48,9 @@ class LuaSandbox {
 
   // Loads and runs a chunk (text only, no bytecode) named `chunk_name` (shown in errors).
   LuaCall run_chunk(const std::string& text, const std::string& chunk_name);
+  // How Lua names the last chunk run in its messages ("monitors/x.lua", or "...x.lua" when the
+  // name is long): what error positions start with.
+  const std::string& chunk_source() const { return chunk_source_; }
 
   // Calls fn(L) under lua_pcall with the instruction budget armed; fn finds `argument` as a
   // light userdata at stack index 1 and passes results back through it. fn may raise Lua
@@ -73,6 +76,7 @@ class LuaSandbox {
   lua_State* L_ = nullptr;
   bool budget_exhausted_ = false;
   std::string budget_where_;
+  std::string chunk_source_;
   std::function<void(const std::string&)> print_;
 };
 

@@ -1,11 +1,13 @@
 #include "compiler/codegen/monitor_writer.h"
 
+#include <algorithm>
 #include <set>
 
 #include "compiler/codegen/lua_expr.h"
 #include "compiler/codegen/lua_prelude.h"
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/lua_writer.h"
+#include "core/script_lines.h"
 
 namespace arbc::codegen {
 
@@ -422,10 +424,12 @@ class MonitorWriter {
            ", 2) end,");
     w.dedent();
     w.line("}, { __index = PortMonitor })");
-    w.line("-- ---- begin " + lua_comment_text(s.file));
-    w.dedent();
     std::string text = s.text;
     if (!text.empty() && text.back() != '\n') text += '\n';
+    // The marker lets the runtime cite the user's file and line in errors (core/script_lines.h).
+    w.line(script_begin_line(lua_comment_text(s.file),
+                             static_cast<size_t>(std::count(text.begin(), text.end(), '\n'))));
+    w.dedent();
     w.raw(text);
     w.indent();
     w.line("-- ---- end " + lua_comment_text(s.file));

@@ -73,6 +73,15 @@ def case_malformed_app_json(arbc, plugin):
         expect(err.count("rebuild") == 1, "the rebuild hint is not given exactly once", out, err)
 
 
+def case_script_error_cites_the_script(arbc, plugin):
+    code, out, err = run(arbc, "run", "tests/cli_input/script_error/script_error.spec",
+                         "--plugin", plugin, "--duration", "3s")
+    expect(code == 3, f"exit {code}, expected 3 (a quarantined connection)", out, err)
+    expect("accept failed: tests/cli_input/script_error/go.lua:3: too many: 3" in err,
+           "the error does not cite go.lua:3", out, err)
+    expect("monitors/" not in err, "an error cites the generated monitor", out, err)
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":
