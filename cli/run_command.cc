@@ -6,9 +6,9 @@
 // was quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a
 // temporary directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page
 // about the run (cli/report/run_report.h) from the trace records kept in memory.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,7 +17,8 @@
 
 #include "cli/commands.h"
 #include "cli/report/report_file.h"
-#include "cli/report/run_report.h"
+#include "cli/run_end.h"
+#include "cli/run_interrupt.h"
 #include "cli/run_options.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
@@ -27,6 +28,10 @@ namespace arbc::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+// After a signal, how long the run may take to return before the watchdog gives up on it: a
+// stuck callback is then named and the process ends, within a second of the signal in all.
+constexpr double kStuckGrace = 0.6;
 
 // A temporary directory removed when the run ends.
 struct TempDir {
@@ -83,51 +88,8 @@ int prepare_app_dir(const std::string& input, bool no_verify, TempDir* temp, std
   return kExitBadInput;
 }
 
-// Ctrl-C ends the run cleanly (counters, summary, trace) instead of killing it.
-std::atomic<bool> interrupted{false};
-
-void on_interrupt(int) { interrupted = true; }
-
-void watch_for_interrupt(Runtime& runtime, double period) {
-  runtime.executor().post(runtime.now() + period, [&runtime, period] {
-    if (interrupted) {
-      runtime.executor().stop();
-      return;
-    }
-    watch_for_interrupt(runtime, period);
-  });
-}
-
 void print_errors(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "arbc run: error: %s\n", e.c_str());
-}
-
-// The report's input: the header as `arbc run` prints it, the counters, the trace records.
-report::RunReportInput report_input(const model::App& app, Runtime& runtime,
-                                    const RunOptions& options, bool success,
-                                    const std::string& verdict,
-                                    const std::vector<TraceRecord>& records) {
-  report::RunReportInput input;
-  report::RunHeader& h = input.header;
-  h.app = app.name;
-  h.description = app.description;
-  h.scenario = runtime.scenario();
-  h.seed = options.seed;
-  h.realtime = options.realtime;
-  h.requested = options.duration;
-  h.end = runtime.now();
-  h.stop_reason = runtime.stop_reason();
-  h.success = success;
-  h.verdict = verdict;
-  if (Environment* env = runtime.environment()) h.environment = env->summary();
-  std::vector<ConnectionStats> stats = runtime.stats();  // in the app's connection order
-  for (size_t i = 0; i < stats.size() && i < app.connections.size(); ++i) {
-    const model::Connection& c = app.connections[i];
-    input.connections.push_back(
-        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
-  }
-  input.records = &records;
-  return input;
 }
 
 }  // namespace
@@ -190,6 +152,8 @@ int run_command(std::span<char*> args) {
   }
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!report_path.empty()) options.trace_records = &records;
+  RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
+  options.interrupt = interrupt.flag();
   std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
@@ -204,48 +168,17 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
-  watch_for_interrupt(*runtime, options.realtime ? 0.05 : 1.0);
+  RunEnd end{load.app, *runtime, options, records, report_path, report_file};
+  interrupt.watch(kStuckGrace, [&] {
+    give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
+    std::error_code ignored;
+    if (!temp.path.empty()) fs::remove_all(temp.path, ignored);  // no destructor runs now
+  });
   runtime->run();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  if (interrupted) std::fputs("arbc run: interrupted\n", stderr);
-
-  std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", load.app.name.c_str(),
-              runtime->scenario().c_str(), static_cast<unsigned long long>(options.seed),
-              options.realtime ? "real" : "simulated", runtime->now(),
-              runtime->stopped_early() ? ", stopped: " : "", runtime->stop_reason().c_str());
-  std::fputs(runtime->stats_table().c_str(), stdout);
-  bool success = true;
-  std::string verdict;
-  if (Environment* env = runtime->environment()) {
-    std::string summary = env->summary();
-    if (!summary.empty()) {
-      std::fputs(summary.c_str(), stdout);
-      if (summary.back() != '\n') std::fputc('\n', stdout);
-    }
-    success = env->success();
-    verdict = success ? "success" : "failure";
-  } else {
-    for (const ConnectionStats& s : runtime->stats()) success &= !s.quarantined;
-    verdict = std::string(success ? "success" : "failure") +
-              " (no environment; judged by quarantined connections)";
+  if (!interrupt.run_returned()) {
+    for (;;) pause();  // the watchdog is ending the process
   }
-  std::printf("result: %s\n", verdict.c_str());
-  if (!report_path.empty()) {
-    report::RunReportInput input =
-        report_input(load.app, *runtime, options, success, verdict, records);
-    if (interrupted && input.header.stop_reason.empty()) input.header.stop_reason = "interrupted";
-    std::string html = report::render_run_report(input);
-    std::string write_error = report_file.write(html);
-    if (!write_error.empty()) {
-      print_errors({write_error});
-      return kExitRuntimeFailure;
-    }
-    std::printf("report: %s (%zu bytes)\n", report_path.c_str(), html.size());
-  }
-  return success ? kExitOk : kExitRuntimeFailure;
+  return finish_run(end, interrupt.signal_name());
 }
 
 }  // namespace arbc::cli

@@ -92,11 +92,13 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   std::unique_ptr<Runtime> rt(new Runtime());
   rt->app_ = app;
   rt->options_ = options;
+  if (!rt->options_.limits.interrupt) rt->options_.limits.interrupt = options.interrupt;
   if (options.realtime) {
     rt->executor_ = std::make_unique<RealtimeExecutor>();
   } else {
     rt->executor_ = std::make_unique<SimulatedExecutor>();
   }
+  rt->executor_->set_interrupt(options.interrupt);
 
   // The environment: the one named after the app, else the only one registered.
   std::vector<std::string> env_names = registry.environment_names();
@@ -211,7 +213,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
         return nullptr;
       }
       std::string load_error;
-      c->monitor = LuaMonitor::load(script, mc.monitor, options.limits, c.get(), &load_error);
+      c->monitor = LuaMonitor::load(script, mc.monitor, rt->options_.limits, c.get(), &load_error);
       if (!c->monitor) {
         *error = where + ": its monitor script failed to load: " + load_error;
         return nullptr;
@@ -280,6 +282,7 @@ void Runtime::start() {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
     environment_slot_->name = "environment";
+    environment_slot_->kind = "environment";
     environment_slot_->random = seeded(options_.seed, "environment");
     environment_slot_->guarded("setup", [&] { environment_->setup(*environment_slot_); });
   }
@@ -288,7 +291,11 @@ void Runtime::start() {
     if (!c.monitor) continue;
     MonitorOptions o{c.model->source, c.model->destination, c.name};
     bool created = false;
-    LuaCall call = c.monitor->create(o, &created);
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "create");
+      call = c.monitor->create(o, &created);
+    }
     if (!call.ok()) {
       ++c.stats.errors;  // counted and traced like any failing callback, then out of service
       trace_.error(now(), c.name, call.error);
@@ -326,7 +333,24 @@ void Runtime::advance(double until) { executor_->run(until); }
 void Runtime::run() {
   start();
   if (stop_reason_.empty()) advance(options_.duration);
+  if (options_.interrupt && options_.interrupt->load() && stop_reason_.empty()) {
+    stop_reason_ = "interrupted";
+    trace_.log(now(), "runtime", "stop: interrupted");
+  }
   shutdown();
+}
+
+std::string Runtime::describe(const BusyMarker::Snapshot& b) {
+  if (b.kind.empty()) return "";
+  std::string who = b.kind == "monitor"  ? "the monitor of connection '" + b.name + "'"
+                    : b.kind == "module" ? "module '" + b.name + "'"
+                                         : "the environment";
+  return who + ", in " + b.callback;
+}
+
+void Runtime::abandon_trace(const std::string& why) {
+  trace_.log(now(), "runtime", "stop: " + why);
+  trace_.close();
 }
 
 void Runtime::shutdown() {
@@ -336,7 +360,11 @@ void Runtime::shutdown() {
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (c.monitor && !c.quarantined) {
-      LuaCall call = c.monitor->destroy();
+      LuaCall call;
+      {
+        BusyScope busy(busy_, "monitor", c.name, "destroy");
+        call = c.monitor->destroy();
+      }
       if (!call.ok()) monitor_failed(c, call, "destroy", false);
     }
   }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -28,6 +29,7 @@
 
 #include "core/app_model.h"
 #include "core/compiled_constraint.h"
+#include "runtime/busy_marker.h"
 #include "runtime/drop_reason.h"
 #include "runtime/event_container.h"
 #include "runtime/executor.h"
@@ -49,6 +51,10 @@ struct RunOptions {
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks
+  // Not null: once *interrupt is true (a signal handler sets it), the run stops as soon as it
+  // can: the executor before its next task, a monitor callback at its next check (its message
+  // is dropped as `monitor-error`, "interrupted"); stop_reason() is then "interrupted".
+  const std::atomic<bool>* interrupt = nullptr;
 };
 
 // Counters of one connection, for the end-of-run table and tests.
@@ -110,6 +116,14 @@ class Runtime {
   // Exceptions caught from each module (in app order), then from the environment if any.
   std::vector<PluginStats> plugin_stats() const;
 
+  // What the executor thread runs now; any thread may ask (a watchdog).
+  BusyMarker::Snapshot busy() const { return busy_.snapshot(); }
+  // "the monitor of connection 'take', in accept", "module 'Arm', in on_delivery": `b` in words.
+  static std::string describe(const BusyMarker::Snapshot& b);
+  // For a watchdog thread when the executor thread is stuck in a callback and the run cannot
+  // shut down: writes `why` as a last log record and closes the trace.
+  void abandon_trace(const std::string& why);
+
   struct InPort;
   struct OutPort;
   struct Connection;
@@ -149,6 +163,7 @@ class Runtime {
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
   bool started_ = false, shut_down_ = false;
+  BusyMarker busy_;
 };
 
 }  // namespace arbc
