@@ -31,15 +31,20 @@ exclude=${ARBC_MUTATE_EXCLUDE:-installed_package|report_in_chromium}
 scratch=${ARBC_MUTATE_DIR:-$(mktemp -d /tmp/arbc-mutate.XXXXXX)}
 mkdir -p "$scratch/logs"
 echo "scratch copy: $scratch (logs in $scratch/logs)"
-rsync -a --delete --exclude '/build*' --exclude '/.git' "$root/" "$scratch/src/"
+# A fresh copy of the tree as it is now (uncommitted changes included). The build directory
+# sits inside it, as build/ does in a checkout, so that ccache finds the objects of the
+# checkout's own builds (CCACHE_BASEDIR makes the paths relative, as scripts/build.sh does).
+mkdir -p "$scratch/src"
+find "$scratch/src" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
+tar -C "$root" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$scratch/src" -xf -
 export CCACHE_BASEDIR=$scratch/src CCACHE_NOHASHDIR=1
 
 build() {  # build LOG: 0 when the tree builds
-  cmake -S "$scratch/src" -B "$scratch/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DARBC_BENCH=OFF >"$1" 2>&1 && cmake --build "$scratch/build" -j"$jobs" >>"$1" 2>&1
+  cmake -S "$scratch/src" -B "$scratch/src/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    >"$1" 2>&1 && cmake --build "$scratch/src/build" -j"$jobs" >>"$1" 2>&1
 }
 run_tests() {  # run_tests LOG [--stop-on-failure]: ctest's exit code
-  (cd "$scratch/build" && ctest -j"$jobs" --timeout 300 -E "$exclude" "${@:2}" >"$1" 2>&1)
+  (cd "$scratch/src/build" && ctest -j"$jobs" --timeout 300 -E "$exclude" "${@:2}" >"$1" 2>&1)
 }
 
 echo "baseline: building and testing the unmutated tree"
