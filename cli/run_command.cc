@@ -1,11 +1,14 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
 //                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
-// Runs a built application on the embedded runtime (DESIGN.md sections 7, 8), prints the
+// Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
-// was quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a
-// temporary directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page
-// about the run (cli/report/run_report.h) from the trace records kept in memory.
+// was quarantined). The app is proved first, unless --no-verify (said in the output and the
+// report): a SPEC is built and verified into a temporary directory by `arbc build`, a DIR is
+// verified here; a refuted or unknown proof exits 1, and nothing runs. A DIR whose monitors
+// differ from the digests in its app.json is bad input. --report writes an HTML page about the
+// run (cli/report/run_report.h) from the trace records kept in memory. Ctrl-C and SIGTERM end
+// the run within a second (cli/run_interrupt.h).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +23,8 @@
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
+#include "cli/verify_gate.h"
+#include "core/diagnostic.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
 
@@ -92,6 +97,28 @@ void print_errors(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "arbc run: error: %s\n", e.c_str());
 }
 
+// Proves the app before it runs, as `arbc build` does, and sets *proof to what the output and
+// the report say about it (a spec was proved when it was built, and the build's summary said
+// so). Returns an exit code: kExitOk to run, else the proof's (1 refuted or unknown, 2 a
+// malformed model).
+int prove_app_dir(const model::App& app, const std::string& dir, bool built_from_spec,
+                  bool no_verify, std::string* proof) {
+  if (no_verify) {
+    *proof = "not verified (--no-verify)";
+  } else if (built_from_spec) {
+    *proof = verified_summary(app.arbitrated_ports.size());
+  } else {
+    SourceCache sources;
+    VerifyGate gate = verify_before_writing(
+        app, (fs::path(dir) / "app.json").string(), &sources, /*strict=*/false,
+        "nothing was run (fix the spec and rebuild, or run anyway with --no-verify)", "arbc run");
+    if (!gate.pass) return gate.exit_code;
+    *proof = gate.summary;
+  }
+  if (!built_from_spec) std::printf("%s\n", proof->c_str());
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_command(std::span<char*> args) {
@@ -105,7 +132,8 @@ int run_command(std::span<char*> args) {
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
-  cli.add_flag("--no-verify", no_verify, "with a SPEC: build it without the proof");
+  cli.add_flag("--no-verify", no_verify,
+               "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   std::string seed_text = "1";
   cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
@@ -150,6 +178,10 @@ int run_command(std::span<char*> args) {
     print_errors(mismatches);
     return kExitBadInput;
   }
+  std::string proof;
+  int proved =
+      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), no_verify, &proof);
+  if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!report_path.empty()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
@@ -168,7 +200,7 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  RunEnd end{load.app, *runtime, options, records, report_path, report_file};
+  RunEnd end{load.app, *runtime, options, records, report_path, report_file, proof};
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;

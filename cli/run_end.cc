@@ -15,6 +15,7 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
   report::RunReportInput input;
   report::RunHeader& h = input.header;
   h.app = end.app.name;
+  h.proof = end.proof;
   h.description = end.app.description;
   h.scenario = end.runtime.scenario();
   h.seed = end.options.seed;

@@ -19,6 +19,7 @@ struct RunEnd {
   const std::vector<TraceRecord>& records;  // the trace in memory (with --report)
   const std::string& report_path;           // empty: no report
   report::ReportFile& report_file;
+  const std::string& proof;  // "verified: ..." or "not verified (--no-verify)", for the report
 };
 
 // After runtime.run() returned: prints everything and writes the report. `signal` names the

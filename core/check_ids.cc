@@ -6,6 +6,7 @@ namespace {
 
 constexpr std::string_view kCheck = "check";
 constexpr std::string_view kVerify = "verify";
+constexpr std::string_view kYarp = "yarp";
 constexpr std::string_view kInternal = "internal";
 
 constexpr CheckId kIds[] = {
@@ -70,6 +71,19 @@ constexpr CheckId kIds[] = {
     {"unterminated-comment", kCheck, "a `/*` comment without its `*/`"},
     {"unterminated-string", kCheck, "a string literal without its closing quote"},
     {"unused", kVerify, "an event is set but nothing reads it (warning; an error with --strict)"},
+    // `arbc verify APP.xml` and `arbc import yarp` (docs/yarp.md#diagnostics; golden cases in
+    // tests/yarp_verify/).
+    {"yarp-carrier", kYarp, "a carrier string YARP reads differently, or a monitor arbc cannot read"},
+    {"yarp-constraint-syntax", kYarp, "a monitor's constraint that does not parse"},
+    {"yarp-event-forever", kYarp, "an event set without a lifetime that its monitor never unsets"},
+    {"yarp-keyword-event", kYarp, "an event name that is, or is part of, and/or/not/true/false"},
+    {"yarp-monitor-missing", kYarp, "the Lua file a carrier names is not found"},
+    {"yarp-opaque", kYarp, "a monitor whose event names arbc cannot all know"},
+    {"yarp-script-error", kYarp, "a monitor that fails to load, or whose create fails"},
+    {"yarp-shared-event", kYarp, "an event set or read by monitors on different ports"},
+    {"yarp-substring-event", kYarp, "an event name YARP also replaces inside another name"},
+    {"yarp-trig-interval", kYarp, "PortMonitor.setTrigInterval, whose period YARP multiplies by 1000"},
+    {"yarp-xml", kYarp, "a yarpmanager XML that cannot be read, or parts of it arbc does not read"},
 };
 
 }  // namespace
