@@ -3,11 +3,12 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
+#include "core/diagnostic.h"
 
 namespace arbc::frontend {
 
@@ -45,12 +46,15 @@ struct BodyContext {
   bool saw_every = false;
 };
 
+// Checks one spec (check_spec's work). Only run() is public: the passes, the symbol tables and
+// the reporting helpers are its own business (sema_decls.cc, sema_body.cc, sema_expr.cc).
 class Sema {
  public:
   Sema(ast::Spec& spec, std::vector<Diagnostic>& out) : spec_(spec), out_(out) {}
 
   void run();  // sema_decls.cc
 
+ private:
   // ---- reporting (sema_decls.cc) ----
   Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
   // Reports an unknown name, with "did you mean" when a candidate is close.
@@ -58,6 +62,16 @@ class Sema {
                const std::vector<std::string>& candidates);
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
+
+  // ---- types and ports (sema_decls.cc) ----
+  // The structural type of a type expression (records the result in it); null on error.
+  TypePtr resolve_type(ast::TypeExpr& t);
+  // The type a `type` declaration names, resolving it once; reports cycles.
+  TypePtr resolve_type_decl(ast::TypeDecl& decl);
+  TypePtr resolve_named_type(ast::TypeExpr& t);
+  // Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
+  // empty (no check). Returns false if it did not resolve.
+  bool resolve_port(ast::PortRef& ref, const char* role, const std::string& use);
 
   // ---- expressions (sema_expr.cc) ----
   void check_expr(ast::Expr& e, Scope& scope);
@@ -69,6 +83,8 @@ class Sema {
   // (the caller records it). Reports anything but events, true, false, not, and, or.
   Constraint check_constraint(ast::Expr& e, const std::string& where, bool otherwise_ok);
   void check_const(size_t index);
+  void check_call(ast::Expr& e, Scope& scope);
+  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
 
   // ---- bodies (sema_body.cc) ----
   void check_body(ast::Block& body, Scope& scope, BodyContext& ctx);
@@ -78,16 +94,13 @@ class Sema {
   ast::Spec& spec_;
   std::vector<Diagnostic>& out_;
   std::map<std::string, ast::TypeDecl*> types_;
+  std::set<const ast::TypeDecl*> types_active_, types_done_;  // resolve_type_decl's progress
   std::map<std::string, size_t> consts_;
   std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
   std::map<const Type*, std::string> type_names_;
   std::map<std::string, size_t> events_;                   // name -> index in spec_.event_symbols
   std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each
   std::vector<std::string> event_names_;
-
- private:
-  void check_call(ast::Expr& e, Scope& scope);
-  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
 };
 
 }  // namespace arbc::frontend

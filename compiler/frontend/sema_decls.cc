@@ -57,125 +57,111 @@ const TypePtr& scalar_type(TypeExpr::Kind kind) {
 
 // ---- types --------------------------------------------------------------------------------
 
-class TypeResolver {
- public:
-  explicit TypeResolver(Sema& sema) : sema_(sema) {}
-
-  TypePtr resolve(TypeExpr& t) {
-    switch (t.kind) {
-      case TypeExpr::Kind::Bool:
-      case TypeExpr::Kind::Int:
-      case TypeExpr::Kind::Float:
-      case TypeExpr::Kind::String:
-      case TypeExpr::Kind::Vec3:
-        t.resolved = scalar_type(t.kind);
-        break;
-      case TypeExpr::Kind::List: {
-        TypePtr element = resolve(*t.element);
-        if (element) t.resolved = Type::list(element);
-        break;
+TypePtr Sema::resolve_type(TypeExpr& t) {
+  switch (t.kind) {
+    case TypeExpr::Kind::Bool:
+    case TypeExpr::Kind::Int:
+    case TypeExpr::Kind::Float:
+    case TypeExpr::Kind::String:
+    case TypeExpr::Kind::Vec3:
+      t.resolved = scalar_type(t.kind);
+      break;
+    case TypeExpr::Kind::List: {
+      TypePtr element = resolve_type(*t.element);
+      if (element) t.resolved = Type::list(element);
+      break;
+    }
+    case TypeExpr::Kind::Record: {
+      std::vector<Field> fields;
+      bool ok = true;
+      for (size_t i = 0; i < t.fields.size(); ++i) {
+        for (size_t j = 0; j < i; ++j)
+          if (t.fields[j].first == t.fields[i].first)
+            error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
+                  "duplicate");
+        TypePtr f = resolve_type(*t.fields[i].second);
+        if (!f) ok = false;
+        fields.push_back({t.fields[i].first, f});
       }
-      case TypeExpr::Kind::Record: {
-        std::vector<Field> fields;
-        bool ok = true;
-        for (size_t i = 0; i < t.fields.size(); ++i) {
-          for (size_t j = 0; j < i; ++j)
-            if (t.fields[j].first == t.fields[i].first)
-              sema_.error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
-                          "duplicate");
-          TypePtr f = resolve(*t.fields[i].second);
-          if (!f) ok = false;
-          fields.push_back({t.fields[i].first, f});
-        }
-        if (ok) t.resolved = Type::record(std::move(fields));
-        break;
-      }
-      case TypeExpr::Kind::Named:
-        t.resolved = resolve_named(t);
-        break;
+      if (ok) t.resolved = Type::record(std::move(fields));
+      break;
     }
-    return t.resolved;
+    case TypeExpr::Kind::Named:
+      t.resolved = resolve_named_type(t);
+      break;
   }
+  return t.resolved;
+}
 
-  TypePtr resolve_decl(TypeDecl& decl) {
-    if (done_.count(&decl)) return decl.type.resolved;
-    if (active_.count(&decl)) {
-      sema_.error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
-      done_.insert(&decl);
-      return nullptr;
-    }
-    active_.insert(&decl);
-    TypePtr t = resolve(decl.type);
-    active_.erase(&decl);
-    done_.insert(&decl);
-    // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
-    // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
-    bool creates =
-        decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
-    bool registered = sema_.types_.count(decl.name) && sema_.types_.at(decl.name) == &decl;
-    if (t && creates && registered && !sema_.type_names_.count(t.get()))
-      sema_.type_names_[t.get()] = decl.name;
-    return t;
+TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
+  if (types_done_.count(&decl)) return decl.type.resolved;
+  if (types_active_.count(&decl)) {
+    error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
+    types_done_.insert(&decl);
+    return nullptr;
   }
+  types_active_.insert(&decl);
+  TypePtr t = resolve_type(decl.type);
+  types_active_.erase(&decl);
+  types_done_.insert(&decl);
+  // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
+  // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
+  bool creates = decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
+  bool registered = types_.count(decl.name) && types_.at(decl.name) == &decl;
+  if (t && creates && registered && !type_names_.count(t.get())) type_names_[t.get()] = decl.name;
+  return t;
+}
 
- private:
-  TypePtr resolve_named(TypeExpr& t) {
-    auto it = sema_.types_.find(t.name);
-    if (it == sema_.types_.end()) {
-      std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
-      for (auto& [name, decl] : sema_.types_) names.push_back(name);
-      sema_.unknown(t.loc,
-                    "unknown type '" + t.name +
-                        "': the types are bool, int, float, string, vec3, list<T>, records and "
-                        "declared type names",
-                    "unknown-type", t.name, names);
-      return nullptr;
-    }
-    return resolve_decl(*it->second);
+TypePtr Sema::resolve_named_type(TypeExpr& t) {
+  auto it = types_.find(t.name);
+  if (it == types_.end()) {
+    std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
+    for (auto& [name, decl] : types_) names.push_back(name);
+    unknown(t.loc,
+            "unknown type '" + t.name +
+                "': the types are bool, int, float, string, vec3, list<T>, records and "
+                "declared type names",
+            "unknown-type", t.name, names);
+    return nullptr;
   }
-
-  Sema& sema_;
-  std::set<const TypeDecl*> active_, done_;
-};
+  return resolve_type_decl(*it->second);
+}
 
 // ---- port references ----------------------------------------------------------------------
 
-namespace {
-
-// Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
-// empty (no check). Returns false if it did not resolve.
-bool resolve_port(Sema& sema, PortRef& ref, const char* role, const std::string& use) {
-  auto found = sema.modules_.find(ref.module);
-  ref.module_decl = found == sema.modules_.end() ? nullptr : found->second;
+bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) {
+  auto found = modules_.find(ref.module);
+  ref.module_decl = found == modules_.end() ? nullptr : found->second;
   if (!ref.module_decl) {
     std::vector<std::string> names;
-    for (const ModuleDecl& m : sema.spec_.modules) names.push_back(m.name);
-    sema.unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module,
-                 names);
+    for (const ModuleDecl& m : spec_.modules) names.push_back(m.name);
+    unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module, names);
     return false;
   }
   ref.port_decl = ref.module_decl->find_port(ref.port);
   if (!ref.port_decl) {
     std::vector<std::string> names;
     for (const PortDecl& p : ref.module_decl->ports) names.push_back(p.name);
-    sema.unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
-                 "unknown-port", ref.port, names);
+    unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'", "unknown-port",
+            ref.port, names);
     return false;
   }
   std::string role_s = role;
   if (role_s == "source" && ref.port_decl->direction == model::Direction::In) {
-    sema.error(ref.loc,
-               ref.qualified() + " is an `in` port; " + use +
-                   " needs a source, which must be an `out` port",
-               "port-direction");
+    error(ref.loc,
+          ref.qualified() + " is an `in` port; " + use +
+              " needs a source, which must be an `out` port",
+          "port-direction");
   } else if (role_s == "destination" && ref.port_decl->direction == model::Direction::Out) {
-    sema.error(ref.loc,
-               ref.qualified() + " is an `out` port; " + use +
-                   " needs a destination, which must be an `in` port",
-               "port-direction");
+    error(ref.loc,
+          ref.qualified() + " is an `out` port; " + use +
+              " needs a destination, which must be an `in` port",
+          "port-direction");
   }
   return true;
 }
+
+namespace {
 
 TypePtr port_type(const PortRef& ref) {
   return ref.port_decl ? ref.port_decl->type.resolved : nullptr;
@@ -210,8 +196,7 @@ void Sema::run() {
     }
     types_[t.name] = &t;
   }
-  TypeResolver types(*this);
-  for (TypeDecl& t : spec_.types) types.resolve_decl(t);
+  for (TypeDecl& t : spec_.types) resolve_type_decl(t);
 
   // Constants (any order; cycles reported).
   const_state_.assign(spec_.consts.size(), 0);
@@ -248,7 +233,7 @@ void Sema::run() {
               "duplicate");
       }
       ports[p.name] = &p;
-      types.resolve(p.type);
+      resolve_type(p.type);
     }
   }
 
@@ -278,7 +263,7 @@ void Sema::run() {
     }
   }
   for (StatusEventDecl& e : spec_.status_events) {
-    if (resolve_port(*this, e.source, "source", "`events from`")) {
+    if (resolve_port(e.source, "source", "`events from`")) {
       TypePtr t = port_type(e.source);
       if (t &&
           !(t->kind == Type::Kind::List && t->element && t->element->kind == Type::Kind::String)) {
@@ -323,7 +308,7 @@ void Sema::run() {
   // Predicates after all events exist, so a predicate naming an event gets the right message.
   for (DerivedEventDecl& e : spec_.derived_events) {
     Scope scope;
-    if (resolve_port(*this, e.source, "source", "a derived event")) {
+    if (resolve_port(e.source, "source", "a derived event")) {
       Binding message;
       message.kind = NameKind::Message;
       message.type = port_type(e.source);
@@ -350,7 +335,7 @@ void Sema::run() {
   // Arbitrated ports and their rules.
   std::map<std::string, const ArbitrateDecl*> arbitrated;
   for (ArbitrateDecl& a : spec_.arbitrations) {
-    bool resolved = resolve_port(*this, a.port, "destination", "`arbitrate`");
+    bool resolved = resolve_port(a.port, "destination", "`arbitrate`");
     std::string port = a.port.qualified();
     if (arbitrated.count(port)) {
       error(a.port.loc,
@@ -374,7 +359,7 @@ void Sema::run() {
               "duplicate");
       }
       names[r.name] = &r;
-      bool source_ok = resolve_port(*this, r.source, "source", "rule '" + r.name + "'");
+      bool source_ok = resolve_port(r.source, "source", "rule '" + r.name + "'");
       if (r.when) {
         if (r.when->kind == Expr::Kind::Otherwise) {
           r.otherwise = true;
@@ -439,8 +424,8 @@ void Sema::run() {
   // Plain monitored connections.
   std::map<std::string, const ConnectDecl*> fed;
   for (ConnectDecl& c : spec_.connects) {
-    bool source_ok = resolve_port(*this, c.source, "source", "`connect`");
-    bool destination_ok = resolve_port(*this, c.destination, "destination", "`connect`");
+    bool source_ok = resolve_port(c.source, "source", "`connect`");
+    bool destination_ok = resolve_port(c.destination, "destination", "`connect`");
     c.message_name = c.source.port;
     std::string port = c.destination.qualified();
     if (destination_ok) {
@@ -483,7 +468,7 @@ void Sema::run() {
 
   // Assertions.
   for (AssertDecl& a : spec_.asserts) {
-    if (resolve_port(*this, a.port, "", "`assert`")) {
+    if (resolve_port(a.port, "", "`assert`")) {
       auto it = arbitrated.find(a.port.qualified());
       if (it == arbitrated.end()) {
         error(a.port.loc,
