@@ -46,6 +46,17 @@ struct BodyContext {
   bool saw_every = false;
 };
 
+// A monitor body and the connection it runs on: what check_monitor needs of a rule or a connect.
+struct MonitorSite {
+  ast::Block* body = nullptr;
+  const ast::PortRef* source = nullptr;
+  bool source_ok = false;  // the source resolved
+  std::string message_name;
+  TypePtr destination_type;  // null if the destination did not resolve
+  std::string destination;   // "Module.port"
+  ast::Loc loc;              // the rule or connect, for "delivers its input unchanged"
+};
+
 // Checks one spec (check_spec's work). Only run() is public: the passes, the symbol tables and
 // the reporting helpers are its own business (sema_decls.cc, sema_body.cc, sema_expr.cc).
 class Sema {
@@ -55,6 +66,32 @@ class Sema {
   void run();  // sema_decls.cc
 
  private:
+  // ---- the passes, one per kind of declaration, in run()'s order (sema_decls.cc) ----
+  void check_app_declared();
+  // Registers type, constant and module names (reporting duplicates), then resolves them.
+  void declare_types();
+  void declare_consts();
+  void declare_modules();
+  // Registers every event name once, whatever declares it (manual, status flag, derived).
+  void declare_events();
+  void add_event(ast::EventSymbol symbol);
+  void declare_manual_events(ast::EventDecl& e);
+  void declare_status_events(ast::StatusEventDecl& e);
+  // After all events exist, so that a predicate naming an event gets the right message.
+  void check_derived_predicates();
+  // `exclusive` groups and invariants: domain knowledge for the proof.
+  void check_domain();
+  void check_arbitration(ast::ArbitrateDecl& a);
+  // A rule's `when` (or `otherwise`, at most one per port) into r.constraint.
+  void check_rule_when(ast::Rule& r, const std::string& port, const ast::Rule*& otherwise_rule);
+  // `hold` only under `by priority`, never on the lowest rule, and required on the others.
+  void check_rule_hold(ast::ArbitrateDecl& a, size_t i);
+  // The body of a rule or connect, and that an input delivered unchanged fits the destination.
+  // `owner` names it in body messages ("rule 'take'"), `subject` in the unchanged-input one.
+  void check_monitor(const MonitorSite& site, const std::string& owner, const std::string& subject);
+  void check_connect(ast::ConnectDecl& c);
+  void check_assert(ast::AssertDecl& a);
+
   // ---- reporting (sema_decls.cc) ----
   Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
   // Reports an unknown name, with "did you mean" when a candidate is close.
@@ -101,6 +138,8 @@ class Sema {
   std::map<std::string, size_t> events_;                   // name -> index in spec_.event_symbols
   std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each
   std::vector<std::string> event_names_;
+  std::map<std::string, const ast::ArbitrateDecl*> arbitrated_;  // "Module.port" -> its block
+  std::map<std::string, const ast::ConnectDecl*> fed_;  // ports a connect feeds -> the connect
 };
 
 }  // namespace arbc::frontend
