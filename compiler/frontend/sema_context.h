@@ -111,7 +111,15 @@ class Sema {
   bool resolve_port(ast::PortRef& ref, const char* role, const std::string& use);
 
   // ---- expressions (sema_expr.cc) ----
+  // Types `e` and resolves its names (the "sema:" fields of ast::Expr); reports what is wrong.
   void check_expr(ast::Expr& e, Scope& scope);
+  void check_name(ast::Expr& e, Scope& scope);
+  void check_field(ast::Expr& e, Scope& scope);
+  void check_index(ast::Expr& e, Scope& scope);
+  void check_unary(ast::Expr& e, Scope& scope);
+  void check_binary(ast::Expr& e, Scope& scope);
+  void check_record(ast::Expr& e, Scope& scope);
+  void check_list(ast::Expr& e, Scope& scope);
   // A condition (`accept`, `if`, a derived event's predicate): reports non-bool with `id`.
   void check_condition(ast::Expr& e, Scope& scope, const std::string& what, const char* id);
   // Resolves a duration position to seconds; `what` names it ("the lifetime").
