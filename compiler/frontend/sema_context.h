@@ -12,6 +12,8 @@
 
 namespace arbc::frontend {
 
+struct BuiltinInfo;  // sema_expr.cc
+
 // One name visible in a monitor body or predicate.
 struct Binding {
   ast::NameKind kind = ast::NameKind::Unresolved;
@@ -128,7 +130,13 @@ class Sema {
   // (the caller records it). Reports anything but events, true, false, not, and, or.
   Constraint check_constraint(ast::Expr& e, const std::string& where, bool otherwise_ok);
   void check_const(size_t index);
+  // A builtin call: the function exists, takes that many arguments of those types.
   void check_call(ast::Expr& e, Scope& scope);
+  bool check_arity(ast::Expr& e, const BuiltinInfo& info);
+  // min_by / max_by: a list and a lambda giving each element a number.
+  void check_best_by(ast::Expr& e, Scope& scope);
+  // The argument types of the other builtins (all typed already) and the call's type.
+  void check_builtin_args(ast::Expr& e, const BuiltinInfo& info);
   bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
 
   // ---- bodies (sema_body.cc) ----

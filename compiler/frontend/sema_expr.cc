@@ -10,14 +10,7 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-namespace {
-
-const TypePtr kBool = Type::scalar(Type::Kind::Bool);
-const TypePtr kInt = Type::scalar(Type::Kind::Int);
-const TypePtr kFloat = Type::scalar(Type::Kind::Float);
-const TypePtr kString = Type::scalar(Type::Kind::String);
-const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
-
+// A builtin function: its name, arity and signature (for messages).
 struct BuiltinInfo {
   const char* name;
   Builtin builtin;
@@ -25,6 +18,14 @@ struct BuiltinInfo {
   int max_args;  // -1: any number
   const char* signature;
 };
+
+namespace {
+
+const TypePtr kBool = Type::scalar(Type::Kind::Bool);
+const TypePtr kInt = Type::scalar(Type::Kind::Int);
+const TypePtr kFloat = Type::scalar(Type::Kind::Float);
+const TypePtr kString = Type::scalar(Type::Kind::String);
+const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
 
 constexpr BuiltinInfo kBuiltins[] = {
     {"len", Builtin::Len, 1, 1, "len(list or string) -> int"},
@@ -336,61 +337,70 @@ void Sema::check_call(Expr& e, Scope& scope) {
     return;
   }
   e.builtin = info->builtin;
-  int n = static_cast<int>(e.args.size());
-  if (n < info->min_args || (info->max_args >= 0 && n > info->max_args)) {
-    error(e.loc,
-          "'" + e.text + "' takes " +
-              (info->max_args < 0 ? "at least " + std::to_string(info->min_args)
-                                  : std::to_string(info->min_args)) +
-              (info->min_args == 1 && info->max_args == 1 ? " argument" : " arguments") + ", not " +
-              std::to_string(n) + ": " + info->signature,
-          "arity");
-    return;
-  }
-  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy) {
-    Expr& list = *e.args[0];
-    Expr& key = *e.args[1];
-    check_expr(list, scope);
-    if (key.kind != Expr::Kind::Lambda) {
-      check_expr(key, scope);
-      error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
-            "type-mismatch");
-      return;
-    }
-    if (!list.type) return;
-    if (list.type->kind != Type::Kind::List || !list.type->element) {
-      error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
-      return;
-    }
-    scope.push();
-    Binding param;
-    param.kind = NameKind::Param;
-    param.type = list.type->element;
-    param.lambda = &key;
-    scope.define(key.text, param);
-    check_expr(*key.args[0], scope);
-    scope.pop();
-    if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
-      error(key.args[0]->loc,
-            "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
-            "type-mismatch");
-      return;
-    }
-    e.type = list.type->element;
-    return;
-  }
+  if (!check_arity(e, *info)) return;
+  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy)
+    return check_best_by(e, scope);
   for (ExprPtr& arg : e.args) check_expr(*arg, scope);
   for (ExprPtr& arg : e.args)
     if (!arg->type) return;
+  check_builtin_args(e, *info);
+}
+
+bool Sema::check_arity(Expr& e, const BuiltinInfo& info) {
+  int n = static_cast<int>(e.args.size());
+  if (n >= info.min_args && (info.max_args < 0 || n <= info.max_args)) return true;
+  error(e.loc,
+        "'" + e.text + "' takes " +
+            (info.max_args < 0 ? "at least " + std::to_string(info.min_args)
+                               : std::to_string(info.min_args)) +
+            (info.min_args == 1 && info.max_args == 1 ? " argument" : " arguments") + ", not " +
+            std::to_string(n) + ": " + info.signature,
+        "arity");
+  return false;
+}
+
+void Sema::check_best_by(Expr& e, Scope& scope) {
+  Expr& list = *e.args[0];
+  Expr& key = *e.args[1];
+  check_expr(list, scope);
+  if (key.kind != Expr::Kind::Lambda) {
+    check_expr(key, scope);
+    error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
+          "type-mismatch");
+    return;
+  }
+  if (!list.type) return;
+  if (list.type->kind != Type::Kind::List || !list.type->element) {
+    error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
+    return;
+  }
+  scope.push();
+  Binding param;
+  param.kind = NameKind::Param;
+  param.type = list.type->element;
+  param.lambda = &key;
+  scope.define(key.text, param);
+  check_expr(*key.args[0], scope);
+  scope.pop();
+  if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
+    error(key.args[0]->loc,
+          "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
+          "type-mismatch");
+    return;
+  }
+  e.type = list.type->element;
+}
+
+void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
   auto expect = [&](size_t i, bool ok, const char* what) {
     if (!ok)
       error(e.args[i]->loc,
             "argument " + std::to_string(i + 1) + " of '" + e.text + "' must be " + what +
-                ", not " + describe(e.args[i]->type) + " (" + info->signature + ")",
+                ", not " + describe(e.args[i]->type) + " (" + info.signature + ")",
             "type-mismatch");
     return ok;
   };
-  switch (info->builtin) {
+  switch (info.builtin) {
     case Builtin::Len: {
       const TypePtr& t = e.args[0]->type;
       if (expect(0, is_kind(t, Type::Kind::List) || is_kind(t, Type::Kind::String),
