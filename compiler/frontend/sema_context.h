@@ -140,7 +140,19 @@ class Sema {
   bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
 
   // ---- bodies (sema_body.cc) ----
+  // The statements of a body in a scope of their own; `ctx` says where the body runs.
   void check_body(ast::Block& body, Scope& scope, BodyContext& ctx);
+  // `script` at the top level of a body is the whole body.
+  void check_script_alone(const ast::Block& body, const BodyContext& ctx);
+  // One statement, by kind (the functions below); may define a name in `scope`.
+  void check_stmt(ast::Stmt& s, Scope& scope, BodyContext& ctx);
+  void check_local(ast::Stmt& s, Scope& scope, const BodyContext& ctx);
+  void check_assign(ast::Stmt& s, Scope& scope);
+  void check_set(ast::Stmt& s);
+  void check_if(ast::Stmt& s, Scope& scope, BodyContext& ctx);
+  void check_emit(ast::Stmt& s, Scope& scope, const BodyContext& ctx);
+  void check_throttle(ast::Stmt& s, BodyContext& ctx);
+  void check_every(ast::Stmt& s, Scope& scope, BodyContext& ctx);
   static bool definitely_emits(const ast::Block& body);
   void check_script_file(const ast::Stmt& s);
 
