@@ -134,42 +134,22 @@ class Lowerer {
   }
 
   // Fills throttle, trig interval and the script of a rule or connect body; false on error.
+  // Sema has checked the body's shape: at most one `throttle` and one `every`, both at the
+  // top level, and a `script` alone in its body.
   bool lower_body_options(const ast::Block& body, model::Connection& c, MonitorPlan& plan) {
-    bool ok = true;
-    const ast::Stmt* every = nullptr;
     const ast::Stmt* script = nullptr;
     for_each_stmt(body, [&](const ast::Stmt& s) {
       if (s.kind == ast::Stmt::Kind::Throttle && !c.throttle && s.duration)
         c.throttle = s.duration->seconds;
-      if (s.kind == ast::Stmt::Kind::Every) {
-        if (every) {
-          Diagnostic d = error_at(s.loc,
-                                  "a monitor has one trig interval: use one `every` block per "
-                                  "rule",
-                                  "every");
-          d.notes.push_back(error_at(every->loc, "the first `every` is here", ""));
-          d.notes.back().severity = Severity::Note;
-          diagnostics_.push_back(std::move(d));
-          ok = false;
-        }
-        every = &s;
-        if (s.duration) c.trig_interval = s.duration->seconds;
-      }
+      if (s.kind == ast::Stmt::Kind::Every && s.duration) c.trig_interval = s.duration->seconds;
       if (s.kind == ast::Stmt::Kind::Script) script = &s;
     });
     if (script) {
-      if (body.size() != 1) {
-        diagnostics_.push_back(error_at(script->loc,
-                                        "`script` replaces the whole body: move the other "
-                                        "statements into the script or drop `script`",
-                                        "script"));
-        return false;
-      }
       plan.script = read_script(*script);
       if (!plan.script) return false;
       c.opaque = true;
     }
-    return ok;
+    return true;
   }
 
   void lower_arbitration(const ast::ArbitrateDecl& a) {
@@ -194,13 +174,6 @@ class Lowerer {
               "rule '" + r.name + "' needs the activity event '" + w.activity +
                   "' (by priority), but an event of that name is declared; rename one of them",
               "priority"));
-        if (!r.hold)
-          diagnostics_.push_back(
-              error_at(r.loc,
-                       "rule '" + r.name +
-                           "' needs `hold D` under `by priority`: it suppresses the "
-                           "lower rules for D after each message it could deliver",
-                       "priority"));
       }
       model::Connection c;
       c.name = r.name;
