@@ -214,7 +214,15 @@ class Lowerer {
       }
       rules.push_back(std::move(w));
     }
+    lower_constraints(rules, ap);
+    lower_feeds(rules, ap);
+    out_.app.arbitrated_ports.push_back(std::move(ap));
+  }
 
+  // The selection constraint of each rule (`otherwise` last: it needs the others' effective
+  // guards), the port's assertions, and each rule's event effects.
+  void lower_constraints(std::vector<RuleWork>& rules, model::ArbitratedPort& ap) {
+    const std::string& port = ap.port;
     // Constraints of the rules that are not `otherwise`.
     for (size_t k = 0; k < rules.size(); ++k) {
       if (rules[k].rule->otherwise) continue;
@@ -233,7 +241,6 @@ class Lowerer {
       MonitorPlan& plan = out_.monitors[rules[k].connection];
       if (plan.priority) plan.priority->when = none;
     }
-    read = events_read(rules, ap, /*with_otherwise=*/true);
 
     for (RuleWork& w : rules) {
       model::Connection& c = connection(w);
@@ -243,7 +250,13 @@ class Lowerer {
       c.must_unset = sorted(w.effects.must_unset);
       c.opaque = w.opaque;
     }
+  }
 
+  // A generated feed connection per source of the stream events the port's constraints and
+  // assertions read.
+  void lower_feeds(const std::vector<RuleWork>& rules, const model::ArbitratedPort& ap) {
+    const std::string& port = ap.port;
+    std::set<std::string> read = events_read(rules, ap, /*with_otherwise=*/true);
     std::set<std::string> taken_names(ap.rules.begin(), ap.rules.end());
     for (FeedGroup& g : plan_feeds(spec_, read)) {
       model::Connection c;
@@ -260,7 +273,6 @@ class Lowerer {
       g.plan.kind = MonitorPlan::Kind::Feed;
       add_connection(std::move(c), std::move(g.plan));
     }
-    out_.app.arbitrated_ports.push_back(std::move(ap));
   }
 
   model::Connection& connection(const RuleWork& w) { return out_.app.connections[w.connection]; }
