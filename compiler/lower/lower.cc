@@ -9,6 +9,7 @@
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
 #include "compiler/lower/script_check.h"
+#include "core/effective_guard.h"
 
 namespace arbc::lower {
 
@@ -231,17 +232,7 @@ class Lowerer {
     for (const ast::AssertDecl& as : spec_.asserts)
       if (as.port.qualified() == port) ap.asserts.push_back({as.rule, as.constraint, as.loc});
 
-    // Feeds for what the constraints so far read; `otherwise` needs to know what they set.
-    std::set<std::string> read = events_read(rules, ap, /*with_otherwise=*/false);
-    std::set<std::string> fed = fed_events(read);
-    for (size_t k = 0; k < rules.size(); ++k) {
-      if (!rules[k].rule->otherwise) continue;
-      Constraint none = otherwise_constraint(rules, k, fed);
-      connection(rules[k]).constraint = priority_constraint(rules, k, none);
-      MonitorPlan& plan = out_.monitors[rules[k].connection];
-      if (plan.priority) plan.priority->when = none;
-    }
-
+    // The effects first: `otherwise` reads them through the other rules' effective guards.
     for (RuleWork& w : rules) {
       model::Connection& c = connection(w);
       c.sets = sorted(w.effects.sets);
@@ -250,13 +241,20 @@ class Lowerer {
       c.must_unset = sorted(w.effects.must_unset);
       c.opaque = w.opaque;
     }
+    for (size_t k = 0; k < rules.size(); ++k) {
+      if (!rules[k].rule->otherwise) continue;
+      Constraint none = otherwise_constraint(rules, k);
+      connection(rules[k]).constraint = priority_constraint(rules, k, none);
+      MonitorPlan& plan = out_.monitors[rules[k].connection];
+      if (plan.priority) plan.priority->when = none;
+    }
   }
 
   // A generated feed connection per source of the stream events the port's constraints and
   // assertions read.
   void lower_feeds(const std::vector<RuleWork>& rules, const model::ArbitratedPort& ap) {
     const std::string& port = ap.port;
-    std::set<std::string> read = events_read(rules, ap, /*with_otherwise=*/true);
+    std::set<std::string> read = events_read(rules, ap);
     std::set<std::string> taken_names(ap.rules.begin(), ap.rules.end());
     for (FeedGroup& g : plan_feeds(spec_, read)) {
       model::Connection c;
@@ -288,50 +286,27 @@ class Lowerer {
     return all_of(std::move(parts));
   }
 
-  // E_c of DESIGN.md section 5: G_c and what c sets on every accepting path and not what it
-  // unsets on every such path that no other connection of the port sets.
-  Constraint effective_guard(const std::vector<RuleWork>& rules, size_t c,
-                             const std::set<std::string>& fed) {
-    const RuleWork& w = rules[c];
-    std::vector<Constraint> parts{connection(w).constraint};
-    if (w.opaque) return parts[0];
-    for (const std::string& e : w.effects.must_set) parts.push_back(Constraint::event_ref(e));
-    for (const std::string& e : w.effects.must_unset) {
-      bool others_set = fed.count(e) > 0;
-      for (size_t j = 0; j < rules.size(); ++j)
-        if (j != c && rules[j].effects.sets.count(e)) others_set = true;
-      if (!others_set) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
-    }
-    return all_of(std::move(parts));
-  }
-
-  // `otherwise`: none of the other rules' effective guards holds.
-  Constraint otherwise_constraint(const std::vector<RuleWork>& rules, size_t k,
-                                  const std::set<std::string>& fed) {
+  // `otherwise`: none of the other rules' effective guards (core/effective_guard.h) holds. The
+  // feeds are not there yet; they set only stream events, which no monitor code unsets, so the
+  // guards are the same without them.
+  Constraint otherwise_constraint(const std::vector<RuleWork>& rules, size_t k) {
+    std::vector<const model::Connection*> into;
+    for (const RuleWork& w : rules) into.push_back(&connection(w));
     std::vector<Constraint> others;
     for (size_t j = 0; j < rules.size(); ++j)
-      if (j != k && !rules[j].rule->otherwise) others.push_back(effective_guard(rules, j, fed));
+      if (j != k && !rules[j].rule->otherwise)
+        others.push_back(model::effective_guard(into, *into[j]));
     if (others.empty()) return Constraint::constant(true);
     return Constraint::negate(Constraint::disjunction(std::move(others)));
   }
 
+  // The events the port's rule constraints and assertions read.
   std::set<std::string> events_read(const std::vector<RuleWork>& rules,
-                                    const model::ArbitratedPort& ap, bool with_otherwise) {
+                                    const model::ArbitratedPort& ap) {
     std::set<std::string> read;
-    for (const RuleWork& w : rules)
-      if (with_otherwise || !w.rule->otherwise) connection(w).constraint.collect_events(read);
+    for (const RuleWork& w : rules) connection(w).constraint.collect_events(read);
     for (const model::Assertion& as : ap.asserts) as.property.collect_events(read);
     return read;
-  }
-
-  // The stream events (status flags, derived events) among `read`: what feeds will set.
-  std::set<std::string> fed_events(const std::set<std::string>& read) {
-    std::set<std::string> fed;
-    for (const std::string& e : read) {
-      const ast::EventSymbol* sym = spec_.find_event(e);
-      if (sym && sym->kind != ast::EventSymbol::Kind::Manual) fed.insert(e);
-    }
-    return fed;
   }
 
   static std::string feed_name(const std::string& source) {

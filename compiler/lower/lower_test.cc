@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "compiler/lower/lower_test_util.h"
+#include "core/effective_guard.h"
 
 namespace arbc::lower {
 namespace {
@@ -178,6 +179,34 @@ arbitrate Head.gaze {
   EXPECT_EQ(find_connection(app, "Head.gaze", "track")->must_set, (V{"e_face"}));
   EXPECT_EQ(find_connection(app, "Head.gaze", "search")->constraint.to_string(),
             "not (e_face or busy)");
+}
+
+// `otherwise` is built before the feeds exist; the guards it negates must be the ones the
+// verifier and the docs compute from the finished app (core/effective_guard.h), feeds included.
+TEST(LowerTest, OtherwiseNegatesTheCoreEffectiveGuardsOfTheFinishedApp) {
+  CompiledSpec c = compile_ok(spec(R"(
+event seen, lost, busy;
+events from Rake.status { holding = "holding" } lifetime 500ms;
+event near = Eye.face : face > 0.5;
+arbitrate Head.gaze {
+  track:  from Eye.face { set seen; unset lost; accept face > 0.2; }
+  voice:  from Timer.tick when holding and near { set busy; set lost; }
+  idle:   from Eye.objects when not busy { unset busy; emit 1.0; }
+  search: from Looker.gaze when otherwise;
+}
+)"));
+  ASSERT_TRUE(c.ok);
+  const model::App& app = c.lowered->app;
+  ASSERT_GT(app.connections_into("Head.gaze").size(), 4u);  // the feeds are there now
+  std::vector<Constraint> guards;
+  for (const char* rule : {"track", "voice", "idle"})
+    guards.push_back(
+        model::effective_guard(app, "Head.gaze", *find_connection(app, "Head.gaze", rule)));
+  Constraint expected = Constraint::negate(Constraint::disjunction(std::move(guards)));
+  EXPECT_EQ(find_connection(app, "Head.gaze", "search")->constraint.to_string(),
+            expected.to_string());
+  // track's `not lost` is gone: voice sets lost too (and idle's unset busy: voice sets busy).
+  EXPECT_EQ(expected.to_string(), "not (seen or holding and near and busy and lost or not busy)");
 }
 
 // ---- body effects ---------------------------------------------------------------------------
