@@ -1,7 +1,6 @@
 #include "compiler/codegen/lua_prelude.h"
 
 #include <array>
-#include <vector>
 
 namespace arbc::codegen {
 
