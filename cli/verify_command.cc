@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,36 +33,48 @@ std::vector<std::string> default_inputs() {
   return out;
 }
 
-}  // namespace
-
-int verify_command(std::span<char*> args) {
-  CLI::App cli(kDescription, "arbc verify");
+// The command line of `arbc verify`.
+struct VerifyArgs {
   std::vector<std::string> inputs;
   std::string format = "text";
   verify::VerifyOptions options;
   bool stats = false;
-  cli.add_option("inputs", inputs, "specs (*.spec), app.json files, or `arbc build` directories");
-  cli.add_option("--format", format, "output format")
+};
+
+// Parses `arbc verify`'s arguments into `a`; an exit code when the command ends here (--help,
+// a bad option).
+std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
+  CLI::App cli(kDescription, "arbc verify");
+  cli.add_option("inputs", a.inputs, "specs (*.spec), app.json files, or `arbc build` directories");
+  cli.add_option("--format", a.format, "output format")
       ->check(CLI::IsMember({"text", "json", "sarif"}))
       ->capture_default_str();
-  cli.add_flag("--strict", options.strict, "treat warnings (dead, unused) as errors");
-  cli.add_option("--timeout", options.timeout_seconds,
+  cli.add_flag("--strict", a.options.strict, "treat warnings (dead, unused) as errors");
+  cli.add_option("--timeout", a.options.timeout_seconds,
                  "seconds the solver may spend on all ports of one input; a check cut short is "
                  "unknown, and unknown fails")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cli.add_option("--max-pairs", options.max_pairs_per_port,
+  cli.add_option("--max-pairs", a.options.max_pairs_per_port,
                  "overlapping pairs per port reported with a counterexample; the rest are counted")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  cli.add_flag("--stats", stats, "add timings and solver query counts");
+  cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
     int code = cli.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  return std::nullopt;
+}
 
+}  // namespace
+
+int verify_command(std::span<char*> args) {
+  VerifyArgs a;
+  if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  std::vector<std::string>& inputs = a.inputs;
   if (inputs.empty()) {
     inputs = default_inputs();
     if (inputs.empty()) {
@@ -83,7 +96,7 @@ int verify_command(std::span<char*> args) {
       bad_input = true;
       continue;
     }
-    verify::VerifyResult result = verify::verify_app(load.app, options);
+    verify::VerifyResult result = verify::verify_app(load.app, a.options);
     if (!result.ok) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), result.error.c_str());
       bad_input = true;
@@ -104,13 +117,13 @@ int verify_command(std::span<char*> args) {
   }
 
   std::string out;
-  if (format == "json") {
-    out = verify::format_json(reports, stats);
-  } else if (format == "sarif") {
+  if (a.format == "json") {
+    out = verify::format_json(reports, a.stats);
+  } else if (a.format == "sarif") {
     out = verify::format_sarif(reports, ARBC_VERSION);
   } else if (!reports.empty()) {
     SourceCache sources;
-    out = verify::format_text(reports, &sources, stats);
+    out = verify::format_text(reports, &sources, a.stats);
   }
   std::fputs(out.c_str(), stdout);
 
