@@ -16,16 +16,13 @@
 #include "compiler/codegen/write_artifacts.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
+#include "core/join.h"
 
 namespace arbc::cli {
 
 namespace {
 
-std::string target_list() {
-  std::string out;
-  for (const std::string& t : codegen::target_names()) out += (out.empty() ? "" : ", ") + t;
-  return out;
-}
+std::string target_list() { return join(codegen::target_names()); }
 
 // The command line of `arbc build`.
 struct BuildArgs {

@@ -8,6 +8,7 @@
 #include "cli/model_loader.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
+#include "core/join.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -18,12 +19,6 @@ bool write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   return static_cast<bool>(out);
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
-  return s;
 }
 
 // One line per arbitrated port: the verdict and what it covers, then any finding.

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/effective_guard.h"
+#include "core/join.h"
 
 namespace arbc::verify {
 
@@ -34,9 +35,7 @@ bool set_by_other(const std::vector<const model::Connection*>& into, const model
 }
 
 std::string group_text(const std::vector<std::string>& events) {
-  std::string s = "exclusive { ";
-  for (size_t i = 0; i < events.size(); ++i) s += (i ? ", " : "") + events[i];
-  return s + " }";
+  return "exclusive { " + join(events) + " }";
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "compiler/frontend/suggest.h"
 #include "compiler/frontend/token_checks.h"
+#include "core/join.h"
 
 namespace arbc::frontend {
 
@@ -105,16 +106,6 @@ std::string found_text(const antlr4::Token* token) {
 bool is_keyword(const antlr4::dfa::Vocabulary& vocabulary, const antlr4::Token* token) {
   std::string literal = vocabulary.getLiteralName(token->getType());
   return literal.size() > 2 && std::isalpha(static_cast<unsigned char>(literal[1]));
-}
-
-// "a, b or c"
-std::string join_or(const std::vector<std::string>& items) {
-  std::string s;
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) s += i + 1 == items.size() ? " or " : ", ";
-    s += items[i];
-  }
-  return s;
 }
 
 const std::vector<std::string> kStatementKeywords = {"let", "var",  "accept",   "set",   "unset",
@@ -284,7 +275,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       if (is_keyword(parser->getVocabulary(), offending))
         d.message += " (a keyword cannot be used as a name)";
     } else if (!wanted.empty() && wanted.size() <= 6) {
-      d.message = "expected " + join_or(wanted) + " in " + context + ", found " + found;
+      d.message = "expected " + join(wanted, ", ", " or ") + " in " + context + ", found " + found;
       std::vector<std::string> keywords;
       for (const std::string& l : x.literals)
         if (!l.empty() && std::isalpha(static_cast<unsigned char>(l[0]))) keywords.push_back(l);
