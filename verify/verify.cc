@@ -30,9 +30,11 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
       start + std::chrono::duration_cast<Clock::duration>(
                   std::chrono::duration<double>(std::max(0.0, options.timeout_seconds)));
 
-  std::vector<PortScope> scopes(app.arbitrated_ports.size());
-  for (size_t i = 0; i < app.arbitrated_ports.size(); ++i) {
-    if (!build_port_scope(app, app.arbitrated_ports[i], scopes[i], out.error)) return out;
+  std::vector<PortScope> scopes;
+  for (const model::ArbitratedPort& port : app.arbitrated_ports) {
+    std::optional<PortScope> scope = build_port_scope(app, port, &out.error);
+    if (!scope) return out;
+    scopes.push_back(std::move(*scope));
   }
 
   std::vector<Finding> structural;
