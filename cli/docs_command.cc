@@ -24,9 +24,11 @@ bool write_file(const std::filesystem::path& path, const std::string& text) {
 // One line per arbitrated port: the verdict and what it covers, then any finding.
 std::vector<std::string> verdict_lines(const model::App& app) {
   std::vector<std::string> lines;
-  verify::VerifyResult result = verify::verify_app(app, verify::VerifyOptions{});
-  if (!result.ok) return {"not verified: " + result.error};
-  for (const verify::PortResult& p : result.report.ports) {
+  std::string error;
+  std::optional<verify::VerifyReport> report =
+      verify::verify_app(app, verify::VerifyOptions{}, &error);
+  if (!report) return {"not verified: " + error};
+  for (const verify::PortResult& p : report->ports) {
     lines.push_back("`" + p.port + "`: " + verify::verdict_name(p.verdict) + " (rules " +
                     join(p.rules) + "; events " + (p.events.empty() ? "none" : join(p.events)) +
                     ")");
@@ -34,7 +36,7 @@ std::vector<std::string> verdict_lines(const model::App& app) {
       lines.push_back("`" + p.port + "`: " + severity_name(f.severity) + " [" + f.check + "] " +
                       f.message);
   }
-  for (const verify::Finding& f : result.report.app_findings)
+  for (const verify::Finding& f : report->app_findings)
     lines.push_back(std::string(severity_name(f.severity)) + " [" + f.check + "] " + f.message);
   return lines;
 }

@@ -96,13 +96,14 @@ int verify_command(std::span<char*> args) {
       bad_input = true;
       continue;
     }
-    verify::VerifyResult result = verify::verify_app(load.app, a.options);
-    if (!result.ok) {
-      std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), result.error.c_str());
+    std::string error;
+    std::optional<verify::VerifyReport> report = verify::verify_app(load.app, a.options, &error);
+    if (!report) {
+      std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
       bad_input = true;
       continue;
     }
-    reports.push_back({input, std::move(result.report)});
+    reports.push_back({input, std::move(*report)});
   }
 
   // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.

@@ -20,9 +20,9 @@ double seconds_since(Clock::time_point start) {
 
 }  // namespace
 
-VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
-  VerifyResult out;
-  VerifyReport& report = out.report;
+std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOptions& options,
+                                       std::string* err) {
+  VerifyReport report;
   report.app = app.name;
   report.spec_file = app.spec_file;
   Clock::time_point start = Clock::now();
@@ -32,8 +32,8 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
 
   std::vector<PortScope> scopes;
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
-    std::optional<PortScope> scope = build_port_scope(app, port, &out.error);
-    if (!scope) return out;
+    std::optional<PortScope> scope = build_port_scope(app, port, err);
+    if (!scope) return std::nullopt;
     scopes.push_back(std::move(*scope));
   }
 
@@ -71,8 +71,7 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);
-  out.ok = true;
-  return out;
+  return report;
 }
 
 }  // namespace arbc::verify
