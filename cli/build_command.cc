@@ -124,8 +124,8 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
     return kExitRuntimeFailure;
   }
-  std::string error = codegen::write_artifacts(a.out_dir, lowered.app.name, generated.files);
-  if (!error.empty()) {
+  std::string error;
+  if (!codegen::write_artifacts(a.out_dir, lowered.app.name, generated.files, &error)) {
     std::fprintf(stderr, "arbc build: %s\n", error.c_str());
     return kExitBadInput;
   }
