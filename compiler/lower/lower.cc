@@ -125,8 +125,8 @@ class Lowerer {
     std::ostringstream text;
     text << in.rdbuf();
     ScriptSource script{path.lexically_normal().string(), text.str(), s.loc};
-    std::string error = check_lua_syntax(script.text, s.text);
-    if (!error.empty()) {
+    std::string error;
+    if (!check_lua_syntax(script.text, s.text, &error)) {
       diagnostics_.push_back(
           error_at(s.loc, "script '" + s.text + "' is not valid Lua: " + error, "script"));
       return std::nullopt;

@@ -10,18 +10,21 @@ LuaSyntaxChecker::~LuaSyntaxChecker() {
   if (L_) lua_close(L_);
 }
 
-std::string LuaSyntaxChecker::check(const std::string& text, const std::string& chunk_name) {
-  if (!L_) return "out of memory";
-  std::string error;
+bool LuaSyntaxChecker::check(const std::string& text, const std::string& chunk_name,
+                             std::string* err) {
+  if (!L_) {
+    *err = "out of memory";
+    return false;
+  }
   // Compiles without running: a syntax check only.
-  if (luaL_loadbuffer(L_, text.data(), text.size(), ("@" + chunk_name).c_str()) != LUA_OK)
-    error = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "unknown error";
+  bool ok = luaL_loadbuffer(L_, text.data(), text.size(), ("@" + chunk_name).c_str()) == LUA_OK;
+  if (!ok) *err = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "unknown error";
   lua_settop(L_, 0);
-  return error;
+  return ok;
 }
 
-std::string check_lua_syntax(const std::string& text, const std::string& chunk_name) {
-  return LuaSyntaxChecker().check(text, chunk_name);
+bool check_lua_syntax(const std::string& text, const std::string& chunk_name, std::string* err) {
+  return LuaSyntaxChecker().check(text, chunk_name, err);
 }
 
 }  // namespace arbc::lower

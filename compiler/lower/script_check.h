@@ -8,8 +8,9 @@ struct lua_State;
 
 namespace arbc::lower {
 
-// Empty when `text` compiles as a Lua 5.4 chunk; otherwise Lua's message ("x.lua:3: ...").
-std::string check_lua_syntax(const std::string& text, const std::string& chunk_name);
+// True when `text` compiles as a Lua 5.4 chunk; otherwise false and Lua's message in `err`
+// ("x.lua:3: ...").
+bool check_lua_syntax(const std::string& text, const std::string& chunk_name, std::string* err);
 
 // The same check for many chunks, reusing one Lua state (code generation checks every monitor
 // it writes; a fresh state per chunk would cost more than the compiling).
@@ -19,7 +20,7 @@ class LuaSyntaxChecker {
   ~LuaSyntaxChecker();
   LuaSyntaxChecker(const LuaSyntaxChecker&) = delete;
   LuaSyntaxChecker& operator=(const LuaSyntaxChecker&) = delete;
-  std::string check(const std::string& text, const std::string& chunk_name);
+  bool check(const std::string& text, const std::string& chunk_name, std::string* err);
 
  private:
   lua_State* L_;
