@@ -56,10 +56,11 @@ int docs_command(std::span<char*> args) {
     return cli.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
 
-  ModelLoad loaded = load_model(input);
-  if (!loaded.diagnostics.empty()) std::fputs(loaded.diagnostics.c_str(), stderr);
-  if (!loaded.ok) {
-    if (!loaded.error.empty()) std::fprintf(stderr, "%s\n", loaded.error.c_str());
+  std::string diagnostics, load_error;
+  std::optional<model::App> app = load_model(input, &diagnostics, &load_error);
+  if (!diagnostics.empty()) std::fputs(diagnostics.c_str(), stderr);
+  if (!app) {
+    if (!load_error.empty()) std::fprintf(stderr, "%s\n", load_error.c_str());
     return kExitBadInput;
   }
   std::error_code ec;
@@ -70,16 +71,16 @@ int docs_command(std::span<char*> args) {
     return kExitBadInput;
   }
   std::filesystem::path dir(out_dir);
-  std::string dot = docs::render_dot(loaded.app);
+  std::string dot = docs::render_dot(*app);
   std::string svg, error;
   if (!docs::render_svg(dot, &svg, &error)) {
     std::fprintf(stderr, "arbc docs: %s\n", error.c_str());
     return kExitRuntimeFailure;
   }
-  docs::DocsInput doc{&loaded.app, verdict_lines(loaded.app), "app.svg"};
+  docs::DocsInput doc{&app.value(), verdict_lines(*app), "app.svg"};
   bool ok = write_file(dir / "index.md", docs::render_index_markdown(doc)) &&
             write_file(dir / "app.dot", dot) && write_file(dir / "app.svg", svg) &&
-            write_file(dir / "app.mmd", docs::render_mermaid(loaded.app));
+            write_file(dir / "app.mmd", docs::render_mermaid(*app));
   if (!ok) {
     std::fprintf(stderr, "arbc docs: cannot write into '%s'\n", out_dir.c_str());
     return kExitBadInput;

@@ -5,25 +5,22 @@
 //   SPEC (*.spec)                               compiled by load_spec_model()
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/app_model.h"
 
 namespace arbc::cli {
 
-struct ModelLoad {
-  bool ok = false;
-  model::App app;
-  std::string error;        // for the user: "FILE: what is wrong; what to do"
-  std::string diagnostics;  // a spec's rendered diagnostics (errors and warnings), for stderr
-  bool spec = false;        // the input was a spec
-};
-
-// Reads the model from `path`. Never throws.
-ModelLoad load_model(const std::string& path);
+// Reads the model from `path`; nullopt and `err` for the user ("FILE: what is wrong; what to
+// do") when it cannot. A spec's rendered diagnostics (errors and warnings) are appended to
+// `diagnostics` either way, for stderr. Never throws.
+std::optional<model::App> load_model(const std::string& path, std::string* diagnostics,
+                                     std::string* err);
 
 // Compiles a spec to its core model with compiler/lower/compile_spec.h when this build has the
 // compiler (arbc_compiler); otherwise says that spec support needs it.
-ModelLoad load_spec_model(const std::string& path);
+std::optional<model::App> load_spec_model(const std::string& path, std::string* diagnostics,
+                                          std::string* err);
 
 }  // namespace arbc::cli

@@ -89,15 +89,15 @@ int verify_command(std::span<char*> args) {
   bool bad_input = false;
   std::vector<verify::InputReport> reports;
   for (const std::string& input : inputs) {
-    ModelLoad load = load_model(input);
-    std::fputs(load.diagnostics.c_str(), stderr);
-    if (!load.ok) {
-      std::fprintf(stderr, "arbc verify: %s\n", load.error.c_str());
+    std::string diagnostics, error;
+    std::optional<model::App> app = load_model(input, &diagnostics, &error);
+    std::fputs(diagnostics.c_str(), stderr);
+    if (!app) {
+      std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
       bad_input = true;
       continue;
     }
-    std::string error;
-    std::optional<verify::VerifyReport> report = verify::verify_app(load.app, a.options, &error);
+    std::optional<verify::VerifyReport> report = verify::verify_app(*app, a.options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
       bad_input = true;
