@@ -69,6 +69,7 @@ class Sema {
 
  private:
   // ---- the passes, one per kind of declaration, in run()'s order (sema_decls.cc) ----
+  // The spec starts with `app NAME;`.
   void check_app_declared();
   // Registers type, constant and module names (reporting duplicates), then resolves them.
   void declare_types();
@@ -76,13 +77,15 @@ class Sema {
   void declare_modules();
   // Registers every event name once, whatever declares it (manual, status flag, derived).
   void declare_events();
-  void add_event(ast::EventSymbol symbol);
+  void add_event(ast::EventSymbol symbol);  // reports a name declared twice
   void declare_manual_events(ast::EventDecl& e);
+  // `events from M.p { ... }`: a list<string> source, each flag mapped once.
   void declare_status_events(ast::StatusEventDecl& e);
   // After all events exist, so that a predicate naming an event gets the right message.
   void check_derived_predicates();
   // `exclusive` groups and invariants: domain knowledge for the proof.
   void check_domain();
+  // An arbitrated port (once per port) and each of its rules: name, source, when, hold, body.
   void check_arbitration(ast::ArbitrateDecl& a);
   // A rule's `when` (or `otherwise`, at most one per port) into r.constraint.
   void check_rule_when(ast::Rule& r, const std::string& port, const ast::Rule*& otherwise_rule);
@@ -91,7 +94,9 @@ class Sema {
   // The body of a rule or connect, and that an input delivered unchanged fits the destination.
   // `owner` names it in body messages ("rule 'take'"), `subject` in the unchanged-input one.
   void check_monitor(const MonitorSite& site, const std::string& owner, const std::string& subject);
+  // A plain connection: into a port nothing else feeds and no `arbitrate` block owns.
   void check_connect(ast::ConnectDecl& c);
+  // An assertion names a rule of an arbitrated port; its property is a constraint.
   void check_assert(ast::AssertDecl& a);
 
   // ---- reporting (sema_decls.cc) ----
