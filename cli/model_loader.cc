@@ -25,6 +25,8 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
+bool is_spec_path(const std::string& path) { return ends_with(path, ".spec"); }
+
 std::optional<model::App> load_spec_model(const std::string& path, std::string* diagnostics,
                                           std::string* err) {
 #if ARBC_HAVE_SPEC_COMPILER
@@ -47,7 +49,7 @@ std::optional<model::App> load_spec_model(const std::string& path, std::string* 
 std::optional<model::App> load_model(const std::string& path, std::string* diagnostics,
                                      std::string* err) {
   std::error_code ec;
-  if (ends_with(path, ".spec")) return load_spec_model(path, diagnostics, err);
+  if (is_spec_path(path)) return load_spec_model(path, diagnostics, err);
   std::string file = path;
   if (std::filesystem::is_directory(path, ec))
     file = (std::filesystem::path(path) / "app.json").string();

@@ -12,6 +12,9 @@
 
 namespace arbc::cli {
 
+// Whether load_model reads `path` as a spec (it ends in .spec) rather than an app.json.
+bool is_spec_path(const std::string& path);
+
 // Reads the model from `path`; nullopt and `err` for the user ("FILE: what is wrong; what to
 // do") when it cannot. A spec's rendered diagnostics (errors and warnings) are appended to
 // `diagnostics` either way, for stderr. Never throws.

@@ -13,9 +13,12 @@ namespace arbc::docs {
 std::string cell(std::string_view text) {
   std::string out;
   for (char ch : text) {
-    if (ch == '|') out += "\\|";
-    else if (ch == '\n') out += ' ';
-    else out += ch;
+    if (ch == '|')
+      out += "\\|";
+    else if (ch == '\n')
+      out += ' ';
+    else
+      out += ch;
   }
   return out.empty() ? "" : out;
 }
@@ -53,16 +56,18 @@ void connections_section(const model::App& app, std::ostream& out) {
          "| connection | source | destination | constraint | monitor | written by |\n"
          "|---|---|---|---|---|---|\n";
   for (const model::Connection& c : app.connections)
-    out << "| " << cell(c.name) << " | " << cell(c.source) << " | " << cell(c.destination)
-        << " | " << code(c.constraint.to_string()) << " | " << cell(monitor_summary(c)) << " | "
+    out << "| " << cell(c.name) << " | " << cell(c.source) << " | " << cell(c.destination) << " | "
+        << code(c.constraint.to_string()) << " | " << cell(monitor_summary(c)) << " | "
         << (c.generated ? "arbc" : "user") << " |\n";
   out << "\n";
 }
 
 void events_section(const model::App& app, std::ostream& out) {
   std::map<std::string, std::set<std::string>> set_by, read_by;
+  std::set<std::string> activity;  // `by priority`: set by the runtime as the rule delivers
   for (const model::Connection& c : app.connections) {
     for (const std::string& e : c.sets) set_by[e].insert(c.destination + " / " + c.name);
+    if (!c.activity_event.empty()) activity.insert(c.activity_event);
     std::set<std::string> read;
     c.constraint.collect_events(read);
     for (const std::string& e : read) read_by[e].insert(c.destination + " / " + c.name);
@@ -81,7 +86,10 @@ void events_section(const model::App& app, std::ostream& out) {
   };
   out << "## Events\n\n| event | source | lifetime | set by | read by |\n|---|---|---|---|---|\n";
   for (const model::Event& e : app.events)
-    out << "| " << code(e.name) << " | " << (e.source.empty() ? "monitor code" : cell(e.source))
+    out << "| " << code(e.name) << " | "
+        << (!e.source.empty()        ? cell(e.source)
+            : activity.count(e.name) ? "each delivery (by priority)"
+                                     : "monitor code")
         << " | " << (e.lifetime ? seconds(*e.lifetime) : "until unset") << " | "
         << cells(set_by[e.name]) << " | " << cells(read_by[e.name]) << " |\n";
   out << "\n";
@@ -98,12 +106,14 @@ void decision_section(const model::App& app, std::ostream& out) {
     if (p.by_priority) out << " (by priority)";
     if (p.complete) out << " (complete)";
     out << "\n\n| rule | effective guard |\n|---|---|\n";
-    for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
+    for (const RuleGuard& r : t.rules)
+      out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
     out << "\n";
     if (!t.tabulated) {
       out << "With " << t.events.size() << " events (more than " << kMaxTableEvents
           << "), the guards in disjunctive normal form:\n\n| rule | guard (DNF) |\n|---|---|\n";
-      for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
+      for (const RuleGuard& r : t.rules)
+        out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
       out << "\n";
       continue;
     }
