@@ -1,4 +1,4 @@
-// `arbc verify [SPEC | APP.json]...`: the proof of DESIGN.md section 5 on each input.
+// `arbc verify [SPEC | APP.json | APP.xml]...`: the proof of DESIGN.md section 5 on each input.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_loader.h"
+#include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
 #include "verify/report_format.h"
@@ -21,6 +22,7 @@ constexpr const char* kDescription =
     "Prove that in no event state can two rules of one arbitrated port be selected, and run the\n"
     "other checks (dead, unfed, unused, ownership, complete, assert; see docs/checks.md).\n"
     "With no inputs, verifies specs/*.spec in the current directory (for pre-commit hooks).\n"
+    "An APP.xml is a yarpmanager application with Lua monitors (docs/yarp.md).\n"
     "Exit codes: 0 proved, 1 refuted or unknown, 2 bad input.";
 
 // An app.json (or a directory holding one) is proved together with its monitors: each must
@@ -53,13 +55,16 @@ struct VerifyArgs {
   std::string format = "text";
   verify::VerifyOptions options;
   bool stats = false;
+  std::vector<std::string> yarp_paths;  // --yarp-path: where an APP.xml's monitors are
 };
 
 // Parses `arbc verify`'s arguments into `a`; an exit code when the command ends here (--help,
 // a bad option).
 std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   CLI::App cli(kDescription, "arbc verify");
-  cli.add_option("inputs", a.inputs, "specs (*.spec), app.json files, or `arbc build` directories");
+  cli.add_option("inputs", a.inputs,
+                 "specs (*.spec), app.json files, `arbc build` directories, or yarpmanager "
+                 "application XMLs (*.xml)");
   cli.add_option("--format", a.format, "output format")
       ->check(CLI::IsMember({"text", "json", "sarif"}))
       ->capture_default_str();
@@ -74,6 +79,8 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
+  cli.add_option("--yarp-path", a.yarp_paths,
+                 "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -103,6 +110,13 @@ int verify_command(std::span<char*> args) {
   bool bad_input = false;
   std::vector<verify::InputReport> reports;
   for (const std::string& input : inputs) {
+    if (is_yarp_application(input)) {
+      YarpVerify y = verify_yarp_application(input, a.options, a.yarp_paths);
+      std::fputs(y.diagnostics.c_str(), stderr);
+      bad_input |= !y.ok;
+      if (y.ok) reports.push_back({input, std::move(y.report)});
+      continue;
+    }
     std::string diagnostics, error;
     std::optional<model::App> app = load_model(input, &diagnostics, &error);
     std::fputs(diagnostics.c_str(), stderr);
