@@ -5,6 +5,7 @@
 //   SPEC (*.spec)                               compiled by load_spec_model()
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,25 +14,25 @@
 
 namespace arbc::cli {
 
-struct ModelLoad {
-  bool ok = false;
-  model::App app;
-  std::string error;        // for the user: "FILE: what is wrong; what to do"
-  std::string diagnostics;  // a spec's rendered diagnostics (errors and warnings), for stderr
-  bool spec = false;        // the input was a spec
-  // When !ok: what is wrong as diagnostics (a spec's own, or one for the file), for the JSON
-  // and SARIF reports of a bad input.
-  std::vector<Diagnostic> errors;
-};
+// Whether load_model reads `path` as a spec (it ends in .spec) rather than an app.json.
+bool is_spec_path(const std::string& path);
 
 // An error about a whole file (no line): `io` (unreadable), `app-json` (does not load).
 Diagnostic file_error(const std::string& file, std::string message, std::string id);
 
-// Reads the model from `path`. Never throws.
-ModelLoad load_model(const std::string& path);
+// What loading says besides the model.
+struct LoadNotes {
+  std::string rendered;          // a spec's rendered diagnostics (errors and warnings), for stderr
+  std::vector<Diagnostic> errors;  // when loading fails: why, for the JSON and SARIF reports
+};
+
+// Reads the model from `path`; nullopt and `err` for the user ("FILE: what is wrong; what to
+// do") when it cannot. Never throws.
+std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, std::string* err);
 
 // Compiles a spec to its core model with compiler/lower/compile_spec.h when this build has the
 // compiler (arbc_compiler); otherwise says that spec support needs it.
-ModelLoad load_spec_model(const std::string& path);
+std::optional<model::App> load_spec_model(const std::string& path, LoadNotes* notes,
+                                          std::string* err);
 
 }  // namespace arbc::cli

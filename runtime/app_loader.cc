@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/app_json.h"
+#include "core/join.h"
 #include "core/monitor_digests.h"
 
 namespace arbc {
@@ -50,8 +51,7 @@ std::vector<std::string> check_modules(const model::App& app, const std::string&
   for (const model::Module& m : app.modules) {
     const ModuleFactory* factory = registry.find_module(m.name);
     if (!factory) {
-      std::string known;
-      for (const std::string& n : registry.module_names()) known += (known.empty() ? "" : ", ") + n;
+      std::string known = join(registry.module_names());
       errors.push_back(app_file + ": module '" + m.name +
                        "' is not registered; load the plugin that provides it with --plugin LIB" +
                        " (registered: " + (known.empty() ? "none" : known) + ")");

@@ -96,23 +96,6 @@ int api_novalue(lua_State* L) {
   return lua_error(L);
 }
 
-int api_print(lua_State* L) {
-  // First every argument to a string on the stack (__tostring may run Lua code and raise),
-  // then the C++ line, which nothing after can skip.
-  int n = lua_gettop(L);
-  luaL_checkstack(L, n, "too many arguments to print");
-  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);
-  std::string line;
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) line += '\t';
-    size_t len;
-    const char* s = lua_tolstring(L, n + i, &len);
-    line.append(s, len);
-  }
-  host_of(L)->print(line);
-  return 0;
-}
-
 int install(lua_State* L) {
   void* host = lua_touserdata(L, 1);
   static const luaL_Reg api[] = {
@@ -130,9 +113,6 @@ int install(lua_State* L) {
   lua_pushlightuserdata(L, host);
   luaL_setfuncs(L, api, 1);
   lua_setglobal(L, "PortMonitor");
-  lua_pushlightuserdata(L, host);
-  lua_pushcclosure(L, api_print, 1);
-  lua_setglobal(L, "print");
   return 0;
 }
 
@@ -176,6 +156,8 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   }
   m->host_ = host;
   m->file_ = file;
+  // The sandbox's print, into the host's log.
+  m->sandbox_->set_print([host](const std::string& line) { host->print(line); });
   LuaCall installed = m->sandbox_->protected_call(install, host);
   if (!installed.ok()) {
     *error = file + ": " + installed.error;

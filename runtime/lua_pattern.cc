@@ -215,6 +215,18 @@ const char* PatternMatcher::match_balance(const char* s, const char* p) {
   return nullptr;
 }
 
+// `%f[set]`: the empty string where the character before is outside the set and the one at `s`
+// inside (the string's ends count as '\0'). The pattern after the set, or nullptr.
+const char* PatternMatcher::match_frontier(const char* s, const char* p) {
+  if (p >= p_end_ || *p != '[') return fail("missing '[' after '%f' in pattern");
+  const char* ep = class_end(p);
+  if (!ep) return nullptr;
+  unsigned char previous = s == src_init_ ? 0 : static_cast<unsigned char>(s[-1]);
+  unsigned char current = s < src_end_ ? static_cast<unsigned char>(*s) : 0;
+  bool at_frontier = !match_bracket(previous, p, ep - 1) && match_bracket(current, p, ep - 1);
+  return at_frontier ? ep : nullptr;
+}
+
 // Lua's `match`, with its tail calls as loop iterations; recursion only where Lua recurses.
 const char* PatternMatcher::do_match(const char* s, const char* p) {
   if (error_) return nullptr;
@@ -237,11 +249,8 @@ const char* PatternMatcher::do_match(const char* s, const char* p) {
         result = end_capture(s, p + 1);
         break;
       case '$':
-        if (p + 1 == p_end_) {
-          result = s == src_end_ ? s : nullptr;
-          break;
-        }
-        simple = true;  // not at the end: a literal '$'
+        simple = p + 1 != p_end_;  // not at the end: a literal '$'
+        if (!simple) result = s == src_end_ ? s : nullptr;
         break;
       case '%':
         if (p + 1 < p_end_ && p[1] == 'b') {
@@ -251,19 +260,8 @@ const char* PatternMatcher::do_match(const char* s, const char* p) {
             continue;
           }
         } else if (p + 1 < p_end_ && p[1] == 'f') {
-          p += 2;
-          if (p >= p_end_ || *p != '[') {
-            fail("missing '[' after '%f' in pattern");
-            break;
-          }
-          const char* ep = class_end(p);
-          if (!ep) break;
-          unsigned char previous = s == src_init_ ? 0 : static_cast<unsigned char>(s[-1]);
-          unsigned char current = s < src_end_ ? static_cast<unsigned char>(*s) : 0;
-          if (!match_bracket(previous, p, ep - 1) && match_bracket(current, p, ep - 1)) {
-            p = ep;
-            continue;
-          }
+          p = match_frontier(s, p + 2);
+          if (p) continue;
         } else if (p + 1 < p_end_ && std::isdigit(static_cast<unsigned char>(p[1]))) {
           s = match_capture(s, p[1]);
           if (s) {

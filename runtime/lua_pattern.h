@@ -66,6 +66,7 @@ class PatternMatcher {
   const char* end_capture(const char* s, const char* p);
   const char* match_capture(const char* s, int index);
   const char* match_balance(const char* s, const char* p);
+  const char* match_frontier(const char* s, const char* p);
   const char* class_end(const char* p);
   bool single_match(const char* s, const char* p, const char* ep) const;
   bool step(int64_t n = 1);

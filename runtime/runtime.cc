@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/join.h"
 #include "core/monitor_digests.h"
 #include "runtime/runtime_internal.h"
 
@@ -56,10 +57,9 @@ std::string conflict_error(const Runtime::Connection& c, const std::string& lua_
   return c.model->monitor + ": setConstraint: " + c.constraint_conflict;
 }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
+// The names, or "none".
+std::string names_or_none(const std::vector<std::string>& items) {
+  return items.empty() ? "none" : join(items);
 }
 
 }  // namespace
@@ -126,7 +126,8 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   if (rt->scenario_.empty()) rt->scenario_ = scenarios.empty() ? "default" : scenarios.front();
   if (!scenarios.empty() &&
       std::find(scenarios.begin(), scenarios.end(), rt->scenario_) == scenarios.end()) {
-    *error = "unknown scenario '" + rt->scenario_ + "'; the environment knows: " + join(scenarios);
+    *error = "unknown scenario '" + rt->scenario_ +
+             "'; the environment knows: " + names_or_none(scenarios);
     return nullptr;
   }
 
@@ -140,7 +141,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       *error = "module '" + m.name +
                "' is not registered; load the plugin that provides it with --plugin LIB "
                "(registered modules: " +
-               join(registry.module_names()) + ")";
+               names_or_none(registry.module_names()) + ")";
       return nullptr;
     }
     auto slot = std::make_unique<ModuleSlot>();

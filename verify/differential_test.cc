@@ -273,9 +273,10 @@ TEST(Differential, RandomPortsAgreeWithBruteForce) {
 
     VerifyOptions options;
     options.max_pairs_per_port = 1000;
-    VerifyResult result = verify_app(app, options);
-    ASSERT_TRUE(result.ok) << result.error;
-    const PortResult& pr = result.report.ports[0];
+    std::string error;
+    std::optional<VerifyReport> report = verify_app(app, options, &error);
+    ASSERT_TRUE(report) << error;
+    const PortResult& pr = report->ports[0];
     ASSERT_NE(pr.verdict, Verdict::Unknown) << pr.unknown_reason;
     std::string context = "port " + std::to_string(compared) + "\n" + model::to_app_json(app);
 

@@ -12,6 +12,7 @@
 // event brings that event's constraints in too).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,10 +44,10 @@ struct PortScope {
   std::vector<DomainConstraint> domain;  // in model order
 };
 
-// Builds the scope of `port`. Fails (returns false, fills `error`) when a rule named by the
-// port is not a rule connection into it, or an assert names a rule the port does not have.
-bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, PortScope& scope,
-                      std::string& error);
+// The scope of `port`; nullopt (and `err`) when a rule named by the port is not a rule
+// connection into it, or an assert names a rule the port does not have.
+std::optional<PortScope> build_port_scope(const model::App& app, const model::ArbitratedPort& port,
+                                          std::string* err);
 
 // "at most one of the events" as a formula: pairwise "not (a and b)".
 Constraint at_most_one(const std::vector<std::string>& events);

@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "core/join.h"
 #include "verify/report_format.h"
 
 namespace arbc::verify {
@@ -9,16 +10,11 @@ namespace {
 // line. The JSON and SARIF reports keep every name.
 constexpr size_t kListed = 12;
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (items.size() > kListed && i == kListed - 2) {
-      out += ", ..., " + items.back() + " (" + std::to_string(items.size()) + " in all)";
-      break;
-    }
-    out += (out.empty() ? "" : ", ") + items[i];
-  }
-  return out.empty() ? "none" : out;
+std::string listed(const std::vector<std::string>& items) {
+  if (items.empty()) return "none";
+  if (items.size() <= kListed) return join(items);
+  std::vector<std::string> first(items.begin(), items.begin() + (kListed - 2));
+  return join(first) + ", ..., " + items.back() + " (" + std::to_string(items.size()) + " in all)";
 }
 
 std::string plural(size_t n, const char* word) {
@@ -45,7 +41,7 @@ std::string port_line(const PortResult& p, bool stats) {
   line += verdict_name(p.verdict);
   if (p.verdict == Verdict::Proved) {
     line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
-                                : ": rules " + join(p.rules) + " are never selected together";
+                                : ": rules " + listed(p.rules) + " are never selected together";
     if (p.complete) line += "; some rule is selected in every state";
     if (p.asserts) {
       line += "; " + plural(static_cast<size_t>(p.asserts), "assert") +
@@ -68,8 +64,8 @@ std::string port_line(const PortResult& p, bool stats) {
     line += " [" + seconds_text(p.seconds) + ", " + std::to_string(p.solver_queries) +
             " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
   }
-  line += "\n    over " + plural(p.events.size(), "event") + " (" + join(p.events) +
-          "); invariants used: " + join(p.invariants);
+  line += "\n    over " + plural(p.events.size(), "event") + " (" + listed(p.events) +
+          "); invariants used: " + listed(p.invariants);
   if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
   return line + "\n";
 }

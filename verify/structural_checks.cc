@@ -87,14 +87,10 @@ void add_unused_event_fix(const model::App& app, const std::string& event, Findi
   f.notes.insert(f.notes.end(), mentions.begin(), mentions.end());
 }
 
-}  // namespace
+using Reads = std::map<std::string, std::map<std::string, Read>>;  // port -> event -> reader
 
-void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
-  std::map<std::string, std::map<std::string, Read>> reads;  // port -> event -> first reader
-  for (const model::ArbitratedPort& port : app.arbitrated_ports)
-    reads[port.port] = reads_of(app, port);
-
-  // unfed: per port, each read event must be set by some connection into the port.
+// unfed: per port, each read event must be set by some connection into the port.
+void check_unfed(const model::App& app, const Reads& reads, std::vector<Finding>& out) {
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
     std::set<std::string> fed;
     bool opaque_feeds = false;  // a `script` monitor may set any event: nothing is provably unfed
@@ -104,7 +100,7 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       opaque_feeds |= c->opaque;
     }
     if (opaque_feeds) continue;
-    for (const auto& [event, read] : reads[port.port]) {
+    for (const auto& [event, read] : reads.at(port.port)) {
       if (fed.count(event)) continue;
       Finding f;
       f.check = kCheckUnfed;
@@ -122,14 +118,17 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       out.push_back(std::move(f));
     }
   }
+}
 
-  // unused and ownership: per connection.
-  std::set<std::string> reported_unused;
+// unused and ownership, per connection: each event it sets is read by its port's rules or
+// asserts, and each event it unsets is one it sets. `reported_unused` gets the unused events.
+void check_connection_events(const model::App& app, bool strict, const Reads& reads,
+                             std::set<std::string>& reported_unused, std::vector<Finding>& out) {
   for (const model::Connection& c : app.connections) {
     const model::ArbitratedPort* dest = app.find_arbitrated(c.destination);
     std::set<std::string> sets = events_set_by(c);
     for (const std::string& event : sets) {
-      if (dest && reads[dest->port].count(event)) continue;
+      if (dest && reads.at(dest->port).count(event)) continue;
       Finding f;
       f.check = kCheckUnused;
       f.severity = strict ? Severity::Error : Severity::Warning;
@@ -166,8 +165,11 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       out.push_back(std::move(f));
     }
   }
+}
 
-  // unused: an event fed from a stream that no port reads (lowering generates no feed for it).
+// unused: an event fed from a stream that no port reads (lowering generates no feed for it).
+void check_stream_events(const model::App& app, bool strict, const Reads& reads,
+                         const std::set<std::string>& reported_unused, std::vector<Finding>& out) {
   for (const model::Event& e : app.events) {
     if (e.source.empty() || reported_unused.count(e.name)) continue;
     bool read = std::any_of(reads.begin(), reads.end(),
@@ -184,6 +186,18 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
     add_unused_event_fix(app, e.name, f);
     out.push_back(std::move(f));
   }
+}
+
+}  // namespace
+
+void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
+  Reads reads;
+  for (const model::ArbitratedPort& port : app.arbitrated_ports)
+    reads[port.port] = reads_of(app, port);
+  check_unfed(app, reads, out);
+  std::set<std::string> reported_unused;
+  check_connection_events(app, strict, reads, reported_unused, out);
+  check_stream_events(app, strict, reads, reported_unused, out);
 }
 
 }  // namespace arbc::verify

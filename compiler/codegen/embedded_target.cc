@@ -20,8 +20,8 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
     MonitorText m = write_monitor(lowered, plan, lines);
     // Every generated monitor must compile; if one does not, that is arbc's bug, and saying so
     // at build time beats a monitor failing on the robot.
-    std::string error = lua.check(m.text, c.monitor);
-    if (!error.empty()) {
+    std::string error;
+    if (!lua.check(m.text, c.monitor, &error)) {
       Diagnostic d;
       d.loc = c.loc;
       d.id = "codegen";

@@ -337,7 +337,7 @@ arbitrate Head.gaze by priority {
   EXPECT_EQ(search.deliver(target).reason, "not-selected");
   app.set_time(0.1);
   feed.deliver("{}");  // the face is lost: track's `when` no longer holds
-  EXPECT_EQ(track.deliver(target).reason, "rejected");
+  EXPECT_EQ(track.deliver(target).reason, "not-selected");
   EXPECT_EQ(search.deliver(target).reason, "not-selected");  // but the hold still suppresses it
   app.set_time(0.9);
   EXPECT_EQ(search.deliver(target).reason, "not-selected");

@@ -7,6 +7,7 @@
 #include "compiler/codegen/lua_prelude.h"
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/lua_writer.h"
+#include "core/join.h"
 #include "core/script_lines.h"
 
 namespace arbc::codegen {
@@ -38,12 +39,6 @@ using lower::MonitorPlan;
 
 // Where a body's statements run: accept() on a message, or trig() for `every`.
 enum class Mode { Message, Trig };
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
-  return out;
-}
 
 class MonitorWriter {
  public:

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/quote.h"
+
 namespace arbc::docs {
 
 namespace {
@@ -21,14 +23,8 @@ std::string node_id(const std::string& qualified) {
   return id;
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
-  }
-  return out + "\"";
-}
+// A DOT string literal.
+std::string quoted(const std::string& s) { return arbc::quoted(s, QuoteStyle::Dot); }
 
 }  // namespace
 

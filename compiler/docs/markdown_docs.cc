@@ -6,6 +6,7 @@
 
 #include "compiler/docs/decision_table.h"
 #include "compiler/docs/monitor_summary.h"
+#include "core/join.h"
 
 namespace arbc::docs {
 
@@ -78,10 +79,10 @@ void events_section(const model::App& app, std::ostream& out) {
       for (const std::string& e : read) read_by[e].insert(p.port + " / assert " + a.rule);
     }
   }
-  auto join = [](const std::set<std::string>& items) {
-    std::string s;
-    for (const std::string& i : items) s += (s.empty() ? "" : ", ") + cell(i);
-    return s.empty() ? std::string("-") : s;
+  auto cells = [](const std::set<std::string>& items) {
+    std::vector<std::string> out;
+    for (const std::string& i : items) out.push_back(cell(i));
+    return out.empty() ? std::string("-") : join(out);
   };
   out << "## Events\n\n| event | source | lifetime | set by | read by |\n|---|---|---|---|---|\n";
   for (const model::Event& e : app.events)
@@ -90,7 +91,7 @@ void events_section(const model::App& app, std::ostream& out) {
             : activity.count(e.name) ? "each delivery (by priority)"
                                      : "monitor code")
         << " | " << (e.lifetime ? seconds(*e.lifetime) : "until unset") << " | "
-        << join(set_by[e.name]) << " | " << join(read_by[e.name]) << " |\n";
+        << cells(set_by[e.name]) << " | " << cells(read_by[e.name]) << " |\n";
   out << "\n";
 }
 
@@ -124,8 +125,7 @@ void decision_section(const model::App& app, std::ostream& out) {
     for (const DecisionRow& row : t.rows) {
       out << "|";
       for (bool present : row.present) out << (present ? " 1 |" : " 0 |");
-      std::string selected;
-      for (const std::string& r : row.selected) selected += (selected.empty() ? "" : ", ") + r;
+      std::string selected = join(row.selected);
       if (row.selected.size() > 1) selected = "**" + selected + "** (conflict)";
       out << " " << (selected.empty() ? "-" : selected) << " |\n";
     }

@@ -43,14 +43,15 @@ std::string_view without_bom(std::string_view text) {
 
 }  // namespace
 
-CheckResult check_text(std::string_view text, const std::string& file) {
+CheckResult check_text(std::string_view text, const std::string& file,
+                       const std::string& script_dir) {
   text = without_bom(text);
   CheckResult result;
   result.source = std::string(text);
   ParseResult parsed = parse_spec(text, file);
   result.diagnostics = std::move(parsed.diagnostics);
   if (parsed.spec) {
-    check_spec(*parsed.spec, result.diagnostics);
+    check_spec(*parsed.spec, result.diagnostics, script_dir);
     result.spec = std::move(parsed.spec);
   }
   sort_by_position(result.diagnostics);

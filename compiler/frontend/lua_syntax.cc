@@ -11,18 +11,21 @@ LuaSyntaxChecker::~LuaSyntaxChecker() {
   if (L_) lua_close(L_);
 }
 
-std::string LuaSyntaxChecker::check(const std::string& text, const std::string& chunk_name) {
-  if (!L_) return "out of memory";
-  std::string error;
+bool LuaSyntaxChecker::check(const std::string& text, const std::string& chunk_name,
+                             std::string* err) {
+  if (!L_) {
+    *err = "out of memory";
+    return false;
+  }
   // Compiles without running: a syntax check only.
-  if (luaL_loadbuffer(L_, text.data(), text.size(), ("@" + chunk_name).c_str()) != LUA_OK)
-    error = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "unknown error";
+  bool ok = luaL_loadbuffer(L_, text.data(), text.size(), ("@" + chunk_name).c_str()) == LUA_OK;
+  if (!ok) *err = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "unknown error";
   lua_settop(L_, 0);
-  return error;
+  return ok;
 }
 
-std::string check_lua_syntax(const std::string& text, const std::string& chunk_name) {
-  return LuaSyntaxChecker().check(text, chunk_name);
+bool check_lua_syntax(const std::string& text, const std::string& chunk_name, std::string* err) {
+  return LuaSyntaxChecker().check(text, chunk_name, err);
 }
 
 namespace {
@@ -69,8 +72,8 @@ void locate_token(std::string_view message, std::string_view line, model::Source
 
 std::optional<Diagnostic> lua_syntax_diagnostic(const std::string& text, const std::string& path,
                                                 const model::SourceLocation& used_at) {
-  std::string error = check_lua_syntax(text, path);
-  if (error.empty()) return std::nullopt;
+  std::string error;
+  if (check_lua_syntax(text, path, &error)) return std::nullopt;
   Diagnostic d;
   d.id = "script";
   d.loc.file = path;

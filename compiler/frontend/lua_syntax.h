@@ -12,8 +12,9 @@ struct lua_State;
 
 namespace arbc::frontend {
 
-// Empty when `text` compiles as a Lua 5.4 chunk; otherwise Lua's message ("x.lua:3: ...").
-std::string check_lua_syntax(const std::string& text, const std::string& chunk_name);
+// True when `text` compiles as a Lua 5.4 chunk; otherwise false and Lua's message in `err`
+// ("x.lua:3: ...").
+bool check_lua_syntax(const std::string& text, const std::string& chunk_name, std::string* err);
 
 // A `script` file whose text does not compile, as a diagnostic with id "script" located in
 // `path` at the line (and, when Lua names the offending token, the column) Lua reports, with a
@@ -29,7 +30,7 @@ class LuaSyntaxChecker {
   ~LuaSyntaxChecker();
   LuaSyntaxChecker(const LuaSyntaxChecker&) = delete;
   LuaSyntaxChecker& operator=(const LuaSyntaxChecker&) = delete;
-  std::string check(const std::string& text, const std::string& chunk_name);
+  bool check(const std::string& text, const std::string& chunk_name, std::string* err);
 
  private:
   lua_State* L_;

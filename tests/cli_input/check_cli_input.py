@@ -69,7 +69,7 @@ def case_malformed_app_json(arbc, plugin):
         with open(os.path.join(d, "app.json"), "w") as f:
             f.write(json.dumps({"schema_version": 99}))
         code, out, err = run(arbc, "run", d, "--plugin", plugin)
-        expect_bad_input((code, out, err), "this arbc reads version 1, the file has 99")
+        expect_bad_input((code, out, err), "this arbc reads version 2, the file has 99")
         expect(err.count("rebuild") == 1, "the rebuild hint is not given exactly once", out, err)
 
 
