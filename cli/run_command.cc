@@ -1,11 +1,11 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
 //                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
-// Runs a built application on the embedded runtime (DESIGN.md sections 7, 8), prints the
-// per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
-// 3 run-time failure (the environment reports failure, or, with no environment, a connection
-// was quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a
-// temporary directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page
-// about the run (cli/report/run_report.h) from the trace records kept in memory.
+// Runs a built application on the embedded runtime (docs/runtime.md, docs/cli.md#arbc-run), prints
+// the per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input, 3
+// run-time failure (the environment reports failure, or, with no environment, a connection was
+// quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a temporary
+// directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page about the run
+// (cli/report/run_report.h) from the trace records kept in memory.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>

@@ -1,5 +1,5 @@
 // "Verify first": `arbc build` (and `arbc run SPEC`) run the proof before anything else and
-// stop when it does not pass (DESIGN.md section 8).
+// stop when it does not pass (docs/cli.md#arbc-build).
 #pragma once
 
 #include <string>

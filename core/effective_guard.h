@@ -1,4 +1,4 @@
-// The effective guard of a rule (DESIGN.md section 5):
+// The effective guard of a rule (docs/design.md#effective-guards):
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every such path that no other connection of the port
 //             sets)

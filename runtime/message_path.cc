@@ -1,5 +1,5 @@
-// The message path of DESIGN.md section 4: queueing, accept, constraint, throttle, update,
-// delivery; drops, script failures and quarantine; the PortMonitor calls of a connection.
+// The message path (docs/design.md#the-message-path): queueing, accept, constraint, throttle,
+// update, delivery; drops, script failures and quarantine; the PortMonitor calls of a connection.
 #include <cmath>
 
 #include "runtime/runtime_internal.h"

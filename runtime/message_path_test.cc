@@ -1,4 +1,4 @@
-// The message path semantics of DESIGN.md section 4.
+// The message path semantics (docs/design.md#the-message-path).
 #include <gtest/gtest.h>
 
 #include "runtime/runtime_test_util.h"

@@ -1,5 +1,5 @@
-// Decision tables for arbitrated ports: which rule an event state selects (arbc docs).
-// Rules are compared by their effective guards (DESIGN.md section 5), as the proof does.
+// Decision tables for arbitrated ports: which rule an event state selects (arbc docs). Rules are
+// compared by their effective guards (docs/design.md#effective-guards), as the proof does.
 #pragma once
 
 #include <string>

@@ -292,7 +292,7 @@ class Lowerer {
 
   model::Connection& connection(const RuleWork& w) { return out_.app.connections[w.connection]; }
 
-  // `when_k and act_k and not act_1 ... and not act_(k-1)` (DESIGN.md section 3, by priority);
+  // `when_k and act_k and not act_1 ... and not act_(k-1)` (docs/design.md#priorities-and-holds);
   // just `when_k` outside `by priority`.
   Constraint priority_constraint(const std::vector<RuleWork>& rules, size_t k, Constraint when) {
     std::vector<Constraint> parts{std::move(when)};
@@ -303,8 +303,8 @@ class Lowerer {
     return all_of(std::move(parts));
   }
 
-  // E_c of DESIGN.md section 5: G_c and what c sets on every accepting path and not what it
-  // unsets on every such path that no other connection of the port sets.
+  // E_c (docs/design.md#effective-guards): G_c and what c sets on every accepting path and not what
+  // it unsets on every such path that no other connection of the port sets.
   Constraint effective_guard(const std::vector<RuleWork>& rules, size_t c,
                              const std::set<std::string>& fed) {
     const RuleWork& w = rules[c];

@@ -1,5 +1,5 @@
-// Test support: runs a generated monitor in a real Lua 5.4 state with a small recording
-// PortMonitor table (DESIGN.md sections 4 and 6), until tests switch to the runtime's own
+// Test support: runs a generated monitor in a real Lua 5.4 state with a small recording PortMonitor
+// table (docs/design.md#the-message-path, docs/runtime.md), until tests switch to the runtime's own
 // implementation. Several monitors may share one PortContainer, as the connections into one
 // arbitrated port share its event container.
 #pragma once
