@@ -13,7 +13,8 @@ A tracked file fails when it
 Paths with a folder are read from the repository root, then from the citing file's folder;
 Markdown link targets from the citing file's folder, as a Markdown viewer reads them. A bare
 page name (`checks.md`) is looked up beside the citing file, at the root, and in docs/.
-docs/design.md is the page these citations should use.
+docs/design.md is the page these citations should use. This file is not checked: its
+self-test fixtures are bad citations on purpose.
 """
 import os
 import re
@@ -166,8 +167,10 @@ class Checker:
                 self.check_target(rel, number, page, anchor, link=False)
 
     def run(self, files):
+        me = os.path.realpath(__file__)
         for rel in files:
-            self.check_file(rel)
+            if os.path.realpath(os.path.join(self.root, rel)) != me:  # its fixtures are bad on purpose
+                self.check_file(rel)
         return self.errors
 
 
