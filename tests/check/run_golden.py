@@ -2,12 +2,15 @@
 """Golden tests for `arbc check` (tests/check/<case>/<case>.spec + <case>.err).
 
 usage: run_golden.py ARBC [--update] [CASE...]
+       run_golden.py ARBC --ids
 
 For each case, runs `arbc check <case>.spec` inside the case's folder and compares what it
 prints on stderr with <case>.err, byte for byte. The expected exit code is 0 when <case>.err
-is empty and 2 otherwise; a signal is always a failure. Finally, every diagnostic id that
-`arbc check --list-ids` declares must appear in some case's .err, so each error the checker
-can give has a golden case. --update rewrites the .err files (review them by eye).
+is empty and 2 otherwise; a signal is always a failure. Without CASEs, every case runs, and
+then every diagnostic id that `arbc check --list-ids` declares must appear in some case's .err,
+so each error the checker can give has a golden case; --ids runs only that last check.
+--update rewrites the .err files (review them by eye). ctest runs each case as its own test
+(check_golden.CASE) and the id check as check_golden_ids.
 """
 import os
 import re
@@ -30,15 +33,23 @@ def main():
         sys.exit(__doc__)
     arbc = os.path.abspath(args[0])
     update = "--update" in args
-    only = [a for a in args[1:] if a != "--update"]
+    ids_only = "--ids" in args
+    only = [a for a in args[1:] if a not in ("--update", "--ids")]
     cases = sorted(d for d in os.listdir(HERE)
-                   if os.path.isdir(os.path.join(HERE, d)) and not d.startswith("."))
+                   if os.path.exists(os.path.join(HERE, d, d + ".spec")))
     if only:
+        unknown = sorted(set(only) - set(cases))
+        if unknown:
+            sys.exit(f"no such case: {', '.join(unknown)}")
         cases = [c for c in cases if c in only]
     failures = []
     seen_ids = set()
     for name in cases:
         err_path = os.path.join(HERE, name, name + ".err")
+        if ids_only:
+            if os.path.exists(err_path):
+                seen_ids.update(re.findall(r"\[([a-z0-9-]+)\]$", open(err_path).read(), re.M))
+            continue
         code, err, out = run_case(arbc, name)
         if update:
             with open(err_path, "w", encoding="utf-8") as f:
@@ -66,7 +77,7 @@ def main():
             failures.append(f"golden files use id [{unknown}], which --list-ids does not declare")
     for f in failures:
         print("FAIL", f)
-    print(f"{len(cases)} cases, {len(failures)} failures")
+    print(f"{0 if ids_only else len(cases)} cases run, {len(failures)} failures")
     sys.exit(1 if failures else 0)
 
 
