@@ -1,11 +1,13 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
 //                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
-// Runs a built application on the embedded runtime (docs/runtime.md, docs/cli.md#arbc-run), prints
-// the per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input, 3
-// run-time failure (the environment reports failure, or, with no environment, a connection was
-// quarantined). Given a SPEC, it is first built (and verified unless --no-verify) into a temporary
-// directory by `arbc build`; a refuted proof exits 1. --report writes an HTML page about the run
-// (cli/report/run_report.h) from the trace records kept in memory.
+// Runs a built application on the embedded runtime (docs/runtime.md), prints the
+// per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
+// 3 run-time failure (the environment reports failure, or, with no environment, a connection
+// was quarantined). The app is proved first, unless --no-verify (said in the output and the
+// report): a SPEC is built and verified into a temporary directory by `arbc build`, a DIR is
+// verified here; a refuted or unknown proof exits 1, and nothing runs. A DIR whose monitors
+// differ from the digests in its app.json is bad input. --report writes an HTML page about the
+// run (cli/report/run_report.h) from the trace records kept in memory.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
@@ -18,6 +20,8 @@
 #include "cli/commands.h"
 #include "cli/report/report_file.h"
 #include "cli/report/run_report.h"
+#include "cli/verify_gate.h"
+#include "core/diagnostic.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
 
@@ -112,14 +116,37 @@ void print_errors(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "arbc run: error: %s\n", e.c_str());
 }
 
+// Proves the app before it runs, as `arbc build` does, and sets *proof to what the output and
+// the report say about it (a spec was proved when it was built, and the build's summary said
+// so). Returns an exit code: kExitOk to run, else the proof's (1 refuted or unknown, 2 a
+// malformed model).
+int prove_app_dir(const model::App& app, const std::string& dir, bool built_from_spec,
+                  bool no_verify, std::string* proof) {
+  if (no_verify) {
+    *proof = "not verified (--no-verify)";
+  } else if (built_from_spec) {
+    *proof = verified_summary(app.arbitrated_ports.size());
+  } else {
+    SourceCache sources;
+    VerifyGate gate = verify_before_writing(
+        app, (fs::path(dir) / "app.json").string(), &sources, /*strict=*/false,
+        "nothing was run (fix the spec and rebuild, or run anyway with --no-verify)", "arbc run");
+    if (!gate.pass) return gate.exit_code;
+    *proof = gate.summary;
+  }
+  if (!built_from_spec) std::printf("%s\n", proof->c_str());
+  return kExitOk;
+}
+
 // The report's input: the header as `arbc run` prints it, the counters, the trace records.
 report::RunReportInput report_input(const model::App& app, Runtime& runtime,
                                     const RunOptions& options, bool success,
-                                    const std::string& verdict,
+                                    const std::string& verdict, const std::string& proof,
                                     const std::vector<TraceRecord>& records) {
   report::RunReportInput input;
   report::RunHeader& h = input.header;
   h.app = app.name;
+  h.proof = proof;
   h.description = app.description;
   h.scenario = runtime.scenario();
   h.seed = options.seed;
@@ -152,7 +179,8 @@ int run_command(std::span<char*> args) {
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
-  cli.add_flag("--no-verify", no_verify, "with a SPEC: build it without the proof");
+  cli.add_flag("--no-verify", no_verify,
+               "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   cli.add_option("--seed", options.seed, "seed of every random generator (default 1)");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
@@ -196,6 +224,10 @@ int run_command(std::span<char*> args) {
     print_errors(mismatches);
     return kExitBadInput;
   }
+  std::string proof;
+  int proved =
+      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), no_verify, &proof);
+  if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!report_path.empty()) options.trace_records = &records;
   std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
@@ -243,7 +275,7 @@ int run_command(std::span<char*> args) {
   std::printf("result: %s\n", verdict.c_str());
   if (!report_path.empty()) {
     report::RunReportInput input =
-        report_input(load.app, *runtime, options, success, verdict, records);
+        report_input(load.app, *runtime, options, success, verdict, proof, records);
     if (interrupted && input.header.stop_reason.empty()) input.header.stop_reason = "interrupted";
     std::string html = report::render_run_report(input);
     std::string write_error = report_file.write(html);

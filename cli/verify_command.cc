@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/model_loader.h"
 #include "core/diagnostic.h"
+#include "core/monitor_digests.h"
 #include "verify/report_format.h"
 #include "verify/verify.h"
 
@@ -20,6 +21,19 @@ constexpr const char* kDescription =
     "other checks (dead, unfed, unused, ownership, complete, assert; see docs/checks.md).\n"
     "With no inputs, verifies specs/*.spec in the current directory (for pre-commit hooks).\n"
     "Exit codes: 0 proved, 1 refuted or unknown, 2 bad input.";
+
+// An app.json (or a directory holding one) is proved together with its monitors: each must
+// have the bytes whose SHA-256 it records, or the proof would be about code that does not run.
+// Prints one line per changed or missing monitor; true when all match.
+bool monitors_match(const std::string& input, const model::App& app) {
+  std::error_code ec;
+  std::filesystem::path dir = std::filesystem::is_directory(input, ec)
+                                  ? std::filesystem::path(input)
+                                  : std::filesystem::path(input).parent_path();
+  std::vector<std::string> errors = model::check_monitor_files(app, dir.string());
+  for (const std::string& e : errors) std::fprintf(stderr, "arbc verify: %s\n", e.c_str());
+  return errors.empty();
+}
 
 // specs/*.spec under the current directory, sorted so the output is stable.
 std::vector<std::string> default_inputs() {
@@ -80,6 +94,10 @@ int verify_command(std::span<char*> args) {
     std::fputs(load.diagnostics.c_str(), stderr);
     if (!load.ok) {
       std::fprintf(stderr, "arbc verify: %s\n", load.error.c_str());
+      bad_input = true;
+      continue;
+    }
+    if (!load.spec && !monitors_match(input, load.app)) {
       bad_input = true;
       continue;
     }

@@ -9,8 +9,15 @@
 
 namespace arbc::cli {
 
+std::string verified_summary(size_t ports) {
+  return ports == 0 ? "verified: no arbitrated ports, nothing to prove"
+                    : "verified: " + count_of(ports, "arbitrated port", "arbitrated ports") +
+                          " proved exclusive";
+}
+
 VerifyGate verify_before_writing(const model::App& app, const std::string& input,
-                                 SourceCache* sources, bool strict) {
+                                 SourceCache* sources, bool strict, const std::string& refusal,
+                                 const char* command) {
   VerifyGate gate;
   verify::VerifyOptions options;
   options.strict = strict;
@@ -27,19 +34,13 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
     std::fputs(text.c_str(), stderr);
   }
   if (report.verdict != verify::Verdict::Proved) {
-    std::fprintf(stderr,
-                 "arbc build: verification %s; nothing was written (fix the spec, or build "
-                 "anyway with --no-verify)\n",
-                 verify::verdict_name(report.verdict));
+    std::fprintf(stderr, "%s: verification %s; %s\n", command, verify::verdict_name(report.verdict),
+                 refusal.c_str());
     gate.exit_code = kExitRefuted;
     return gate;
   }
   gate.pass = true;
-  gate.summary =
-      report.ports.empty()
-          ? "verified: no arbitrated ports, nothing to prove"
-          : "verified: " + count_of(report.ports.size(), "arbitrated port", "arbitrated ports") +
-                " proved exclusive";
+  gate.summary = verified_summary(report.ports.size());
   return gate;
 }
 

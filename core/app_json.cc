@@ -97,15 +97,27 @@ std::vector<SourceMapEntry> read_source_map(const Json& j, const std::string& pa
   return out;
 }
 
-// The text form is authoritative; the tree is for tools that do not want to parse.
+// A constraint is its text (grammar in core/constraint.h), the one representation.
 Constraint read_constraint(const Json& j, const std::string& path, const char* key) {
-  const Json& c = member(j, path, key);
-  std::string p = path + "." + key;
-  std::string text = get_string(c, p, "text");
+  std::string text = get_string(j, path, key);
   ConstraintParse parsed = parse_constraint(text);
   if (!parsed.ok)
-    throw LoadError(p + ".text: " + parsed.error + " at offset " + std::to_string(parsed.offset));
+    throw LoadError(path + "." + key + ": " + parsed.error + " at offset " +
+                    std::to_string(parsed.offset));
   return parsed.constraint;
+}
+
+// A monitor's SHA-256: required with a monitor (64 lower-case hex digits), absent without.
+std::string read_digest(const Json& j, const std::string& path, const std::string& monitor) {
+  std::string digest = opt_string(j, path, "monitor_sha256");
+  if (monitor.empty()) return digest;
+  bool hex =
+      digest.size() == 64 && digest.find_first_not_of("0123456789abcdef") == std::string::npos;
+  if (!hex)
+    throw LoadError(path + ".monitor_sha256: " +
+                    (digest.empty() ? std::string("missing") : "not 64 lower-case hex digits") +
+                    "; every monitor has the SHA-256 `arbc build` recorded (rebuild the app)");
+  return digest;
 }
 
 TypePtr read_type(const Json& j, const std::string& path) {
@@ -190,10 +202,12 @@ App read_app(const Json& root) {
     c.unsets = string_list(cj, p, "unsets");
     c.must_set = string_list(cj, p, "must_set");
     c.must_unset = string_list(cj, p, "must_unset");
+    c.activity_event = opt_string(cj, p, "activity_event");
     c.opaque = opt_bool(cj, p, "opaque");
     c.trig_interval = opt_number(cj, p, "trig_interval");
     c.throttle = opt_number(cj, p, "throttle");
     c.monitor = opt_string(cj, p, "monitor");
+    c.monitor_sha256 = read_digest(cj, p, c.monitor);
     c.source_map = read_source_map(cj, p);
     c.loc = read_location(cj, p);
     app.connections.push_back(std::move(c));

@@ -10,7 +10,10 @@ App small_app() {
   app.name = "demo";
   app.description = "two sources into one port";
   app.spec_file = "specs/demo.spec";
-  Module a{"A", "a source", {{"out", Direction::Out, parse_type("vec3"), {"demo.spec", 3, 12}}}, {"demo.spec", 3, 1}};
+  Module a{"A",
+           "a source",
+           {{"out", Direction::Out, parse_type("vec3"), {"demo.spec", 3, 12}}},
+           {"demo.spec", 3, 1}};
   Module h{"H", "", {{"gaze", Direction::In, parse_type("vec3"), {}}}, {}};
   app.modules = {a, h};
   app.events.push_back({"e_face", 1.0, "", {"demo.spec", 5, 7}});
@@ -22,6 +25,9 @@ App small_app() {
   c.must_set = {"e_face"};
   c.trig_interval = 0.5;
   c.monitor = "monitors/H.gaze__track.lua";
+  c.monitor_sha256 = std::string(64, 'a');
+  c.sets = {"act_track", "e_face"};
+  c.activity_event = "act_track";
   c.source_map = {{12, 7}, {13, 8}};
   app.connections.push_back(c);
   ArbitratedPort port;
@@ -43,6 +49,31 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
   EXPECT_EQ(*loaded.app.connections[0].trig_interval, 0.5);
   EXPECT_EQ(loaded.app.modules[0].loc.line, 3);
   EXPECT_EQ(loaded.app.connections[0].source_map, (std::vector<SourceMapEntry>{{12, 7}, {13, 8}}));
+  EXPECT_EQ(loaded.app.connections[0].activity_event, "act_track");
+  EXPECT_EQ(loaded.app.connections[0].monitor_sha256, std::string(64, 'a'));
+}
+
+// One representation of a constraint: its text (schema version 2 dropped the tree).
+TEST(AppJsonTest, AConstraintIsItsTextOnly) {
+  std::string text = to_app_json(small_app());
+  EXPECT_NE(text.find("\"constraint\": \"not e_face or e_face_2\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"property\": \"e_face\""), std::string::npos);
+  EXPECT_NE(text.find("\"formula\": \"e_face or not e_face_2\""), std::string::npos);
+  EXPECT_EQ(text.find("\"tree\""), std::string::npos);
+  EXPECT_NE(text.find("\"schema_version\": 2"), std::string::npos);
+}
+
+// A monitor without its digest cannot be checked against what was built: refused.
+TEST(AppJsonTest, EveryMonitorHasItsDigest) {
+  std::string text = to_app_json(small_app());
+  std::string bad = text;
+  bad.replace(bad.find(std::string(64, 'a')), 64, "");
+  EXPECT_EQ(from_app_json(bad).error,
+            "connections[0].monitor_sha256: missing; every monitor has the SHA-256 `arbc build` "
+            "recorded (rebuild the app)");
+  bad = text;
+  bad.replace(bad.find(std::string(64, 'a')), 64, std::string(64, 'A'));
+  EXPECT_NE(from_app_json(bad).error.find("not 64 lower-case hex digits"), std::string::npos);
 }
 
 TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
@@ -51,13 +82,13 @@ TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
   std::string text = to_app_json(small_app());
   std::string bad = text;
   bad.replace(bad.find("\"not e_face or e_face_2\""), 24, "\"not (e_face\"");
-  EXPECT_EQ(from_app_json(bad).error, "connections[0].constraint.text: expected ')' at offset 11");
+  EXPECT_EQ(from_app_json(bad).error, "connections[0].constraint: expected ')' at offset 11");
   bad = text;
   bad.replace(bad.find("\"vec3\""), 6, "\"quat\"");
   EXPECT_EQ(from_app_json(bad).error, "modules[0].ports[0].type: unknown type 'quat'");
   bad = text;
-  bad.replace(bad.find("\"schema_version\": 1"), 19, "\"schema_version\": 7");
-  EXPECT_NE(from_app_json(bad).error.find("this arbc reads version 1, the file has 7"),
+  bad.replace(bad.find("\"schema_version\": 2"), 19, "\"schema_version\": 1");
+  EXPECT_NE(from_app_json(bad).error.find("this arbc reads version 2, the file has 1"),
             std::string::npos);
 }
 

@@ -7,24 +7,6 @@ namespace arbc::model {
 
 namespace {
 
-const char* op_name(Constraint::Op op) {
-  switch (op) {
-    case Constraint::Op::True:
-      return "true";
-    case Constraint::Op::False:
-      return "false";
-    case Constraint::Op::Event:
-      return "event";
-    case Constraint::Op::Not:
-      return "not";
-    case Constraint::Op::And:
-      return "and";
-    case Constraint::Op::Or:
-      return "or";
-  }
-  return "?";
-}
-
 const char* kind_name(ConnectionKind k) {
   switch (k) {
     case ConnectionKind::Rule:
@@ -48,29 +30,9 @@ void write_location(JsonWriter& w, const SourceLocation& loc) {
   w.end_object();
 }
 
-void write_tree(JsonWriter& w, const Constraint& c) {
-  w.begin_object();
-  w.member("op", op_name(c.op));
-  if (c.op == Constraint::Op::Event) {
-    w.member("event", c.event);
-  }
-  if (!c.args.empty()) {
-    w.key("args");
-    w.begin_array();
-    for (const Constraint& a : c.args) write_tree(w, a);
-    w.end_array();
-  }
-  w.end_object();
-}
-
-// A constraint both as text (for people) and as a tree (for tools that do not parse the text).
+// A constraint is its text (core/constraint.h): the one representation in app.json.
 void write_constraint(JsonWriter& w, const char* key, const Constraint& c) {
-  w.key(key);
-  w.begin_object();
-  w.member("text", c.to_string());
-  w.key("tree");
-  write_tree(w, c);
-  w.end_object();
+  w.member(key, c.to_string());
 }
 
 void write_optional(JsonWriter& w, const char* key, const std::optional<double>& v) {
@@ -113,10 +75,12 @@ void write_connection(JsonWriter& w, const Connection& c) {
   w.member("unsets", c.unsets);
   w.member("must_set", c.must_set);
   w.member("must_unset", c.must_unset);
+  w.member("activity_event", c.activity_event);
   w.member("opaque", c.opaque);
   write_optional(w, "trig_interval", c.trig_interval);
   write_optional(w, "throttle", c.throttle);
   w.member("monitor", c.monitor);
+  w.member("monitor_sha256", c.monitor_sha256);
   w.key("source_map");
   w.begin_array();
   for (const SourceMapEntry& e : c.source_map) {

@@ -14,7 +14,7 @@
 
 namespace arbc::model {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 
 // A place in the spec, for diagnostics and the source map. Lines and columns count from 1;
 // 0 means unknown (e.g. a model loaded from a hand-written app.json).
@@ -70,16 +70,25 @@ struct Connection {
   std::string source;       // "Module.port"
   std::string destination;  // "Module.port"
   ConnectionKind kind = ConnectionKind::Rule;
-  bool generated = false;   // written by the compiler rather than by the user
-  Constraint constraint;    // selection constraint; false for feeds, true for plain connects
+  bool generated = false;  // written by the compiler rather than by the user
+  Constraint constraint;   // selection constraint; false for feeds, true for plain connects
   // Events the monitor can set / unset on some path, and on every accepting path
   // (docs/design.md#effective-guards uses must_set and must_unset).
   std::vector<std::string> sets, unsets;
   std::vector<std::string> must_set, must_unset;
+  // `by priority` (every rule but the lowest): the event the runtime sets, with its lifetime
+  // from `events` (the rule's hold), each time this connection delivers; after the decision,
+  // so it is not in must_set, but the effective guard includes it (core/effective_guard.h).
+  // Also listed in `sets`: the connection owns its entries. Empty: none.
+  std::string activity_event;
   bool opaque = false;                  // a `script` rule: its code is not analysed
   std::optional<double> trig_interval;  // seconds, from `every`
   std::optional<double> throttle;       // seconds, from `throttle`
   std::string monitor;                  // Lua file relative to the app directory; empty: none
+  // SHA-256 of the monitor file as `arbc build` wrote it (64 hex digits); readers of an app
+  // directory refuse a monitor whose bytes differ (core/monitor_digests.h). Empty in models
+  // built in code, which are not read from a directory.
+  std::string monitor_sha256;
   std::vector<SourceMapEntry> source_map;  // monitor lines -> spec lines (of loc.file)
   SourceLocation loc;
 };

@@ -5,8 +5,11 @@
 namespace arbc::model {
 
 Constraint effective_guard(std::span<const Connection* const> into, const Connection& rule) {
-  if (rule.opaque) return rule.constraint;
   std::vector<Constraint> parts{rule.constraint};
+  // The runtime sets the activity event as the rule delivers, whatever its monitor does: a
+  // delivery's decision state includes it (docs/design.md#priorities-and-holds).
+  if (!rule.activity_event.empty()) parts.push_back(Constraint::event_ref(rule.activity_event));
+  if (rule.opaque) return Constraint::conjunction(std::move(parts));
   for (const std::string& e : rule.must_set) parts.push_back(Constraint::event_ref(e));
   for (const std::string& e : rule.must_unset) {
     bool set_elsewhere = std::any_of(into.begin(), into.end(), [&](const Connection* other) {

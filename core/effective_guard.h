@@ -2,8 +2,13 @@
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every such path that no other connection of the port
 //             sets)
-// A `script` rule is opaque: E_c = G_c. The verifier proves facts about effective guards, and
-// the docs' decision tables show them, so both read this one definition.
+//             and act_c (`by priority`: the activity event the runtime sets when c delivers)
+// A `script` rule is opaque: E_c = G_c and act_c. The activity event is set after the
+// decision, on delivery only, so a message that is rejected or not selected suppresses
+// nothing; but c's delivery and the state it leaves are one step of the runtime, so no other
+// rule's decision sees c delivered without act_c (docs/design.md#priorities-and-holds). The
+// verifier proves facts about effective guards, and the docs' decision tables show them, so
+// both read this one definition.
 #pragma once
 
 #include <span>

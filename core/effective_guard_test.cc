@@ -42,5 +42,21 @@ TEST(EffectiveGuardTest, ScriptRulesAreOpaque) {
   EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[0]).to_string(), "y");
 }
 
+// `by priority`: the activity event is set by the runtime on delivery, not by the monitor
+// before the decision; the guard includes it all the same, also for a script rule.
+TEST(EffectiveGuardTest, IncludesTheActivityEventTheRuntimeSetsOnDelivery) {
+  App app;
+  Connection track = rule("track", "e_idle");
+  track.sets = {"act_track"};
+  track.activity_event = "act_track";
+  Connection search = rule("search", "e_idle and not act_track");
+  app.connections = {track, search};
+  EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[0]).to_string(), "e_idle and act_track");
+  EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[1]).to_string(),
+            "e_idle and not act_track");
+  app.connections[0].opaque = true;
+  EXPECT_EQ(effective_guard(app, "H.gaze", app.connections[0]).to_string(), "e_idle and act_track");
+}
+
 }  // namespace
 }  // namespace arbc::model

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/app_json.h"
+#include "core/monitor_digests.h"
 
 namespace arbc {
 
@@ -33,15 +34,8 @@ AppDirLoad load_app_dir(const std::string& dir) {
     load.errors.push_back(file.string() + ": " + parsed.error + " (rebuild it with `arbc build`)");
     return load;
   }
-  for (const model::Connection& c : parsed.app.connections) {
-    if (c.monitor.empty()) continue;
-    fs::path script = fs::path(dir) / c.monitor;
-    if (!fs::is_regular_file(script)) {
-      load.errors.push_back(file.string() + ": connection '" + c.name + "' names monitor " +
-                            c.monitor + ", but " + script.string() +
-                            " does not exist (rebuild the app with `arbc build`)");
-    }
-  }
+  // Every monitor exists and has the bytes `arbc build` wrote (the digests in app.json).
+  load.errors = model::check_monitor_files(parsed.app, dir);
   load.app = std::move(parsed.app);
   load.ok = load.errors.empty();
   return load;

@@ -17,7 +17,8 @@ struct AppDirLoad {
   std::vector<std::string> errors;  // each names the file and says what to do
 };
 
-// Reads DIR/app.json and checks that every monitor file it names exists.
+// Reads DIR/app.json and checks that every monitor file it names exists and has the bytes
+// whose SHA-256 app.json records (core/monitor_digests.h).
 AppDirLoad load_app_dir(const std::string& dir);
 
 // Checks that each module of the app is registered and declares the app's ports with the

@@ -47,19 +47,34 @@ TEST(AppLoaderTest, ChecksModulesAndPortTypes) {
             "with --plugin LIB (registered: Detector, Speak)");
 }
 
-TEST(AppLoaderTest, LoadsAnAppDirAndNamesMissingFiles) {
+TEST(AppLoaderTest, LoadsAnAppDirAndNamesMissingOrChangedMonitors) {
   testing::TestApp t;
   t.module("Src", {"out x: int"});
   t.module("Sink", {"in x: int"});
   t.connect("c", "Src.x", "Sink.x", "true", "PortMonitor.accept = function(m) return true end\n");
-  t.connect("d", "Src.x", "Sink.x", "true").monitor = "monitors/missing.lua";
+  model::Connection& d = t.connect("d", "Src.x", "Sink.x", "true");
+  d.monitor = "monitors/missing.lua";
+  d.monitor_sha256 = std::string(64, '0');
   std::ofstream(t.dir + "/app.json") << model::to_app_json(t.app);
   AppDirLoad load = load_app_dir(t.dir);
   EXPECT_FALSE(load.ok);
   ASSERT_EQ(load.errors.size(), 1u);
-  EXPECT_NE(load.errors[0].find("connection 'd' names monitor monitors/missing.lua"),
-            std::string::npos)
-      << load.errors[0];
+  EXPECT_EQ(load.errors[0], t.dir +
+                                "/monitors/missing.lua: connection 'd' names this monitor, "
+                                "but it cannot be read (rebuild the app with `arbc build`)");
+
+  // A monitor edited after the build: its bytes no longer match app.json's digest.
+  t.app.connections.pop_back();
+  std::ofstream(t.dir + "/app.json") << model::to_app_json(t.app);
+  EXPECT_TRUE(load_app_dir(t.dir).ok);
+  std::ofstream(t.dir + "/monitors/c.lua") << "PortMonitor.accept = function(m) return false end\n";
+  AppDirLoad edited = load_app_dir(t.dir);
+  ASSERT_EQ(edited.errors.size(), 1u);
+  EXPECT_EQ(edited.errors[0].rfind(t.dir + "/monitors/c.lua: this monitor of connection 'c' is "
+                                           "not the one `arbc build` wrote",
+                                   0),
+            0u)
+      << edited.errors[0];
 
   AppDirLoad none = load_app_dir(t.dir + "/nowhere");
   ASSERT_EQ(none.errors.size(), 1u);

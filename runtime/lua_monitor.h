@@ -5,7 +5,7 @@
 //   PortMonitor.accept(msg) -> boolean [, reason]   PortMonitor.update(msg) -> value
 //   PortMonitor.trig()                       PortMonitor.destroy()
 //   PortMonitor.setEvent(name [, lifetime_s])  PortMonitor.unsetEvent(name)
-//   PortMonitor.setConstraint(text)  PortMonitor.getConstraint()
+//   PortMonitor.setConstraint(text)  PortMonitor.getConstraint()   (setConstraint only checks)
 //   PortMonitor.setTrigInterval(s)   PortMonitor.now()   PortMonitor.hasEvent(name)
 //   PortMonitor.novalue()   -- ends the callback: the message has no value (drop `no-value`)
 //
@@ -18,9 +18,9 @@
 #include <string>
 #include <string_view>
 
-#include "runtime/lua_sandbox.h"
 #include "core/type.h"
 #include "core/value.h"
+#include "runtime/lua_sandbox.h"
 
 namespace arbc {
 
@@ -32,7 +32,9 @@ class MonitorHost {
   virtual void set_event(std::string_view name, std::optional<double> lifetime) = 0;
   virtual void unset_event(std::string_view name) = 0;
   virtual bool has_event(std::string_view name) = 0;
-  // Compiles text as the connection's constraint; returns an error message or "".
+  // The constraint is the model's (app.json), installed by the runtime: this only checks that
+  // text is the same formula. Returns an error message (a syntax error, or another
+  // constraint), or "".
   virtual std::string set_constraint(std::string_view text) = 0;
   virtual std::string get_constraint() = 0;
   virtual void set_trig_interval(double seconds) = 0;

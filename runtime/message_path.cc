@@ -1,5 +1,6 @@
-// The message path (docs/design.md#the-message-path): queueing, accept, constraint, throttle,
-// update, delivery; drops, script failures and quarantine; the PortMonitor calls of a connection.
+// The message path of docs/design.md#the-message-path: queueing, accept, constraint, throttle,
+// update, delivery (which sets a `by priority` rule's activity event); drops, script failures
+// and quarantine; the PortMonitor calls of a connection.
 #include <cmath>
 
 #include "runtime/runtime_internal.h"
@@ -152,6 +153,9 @@ void Runtime::process(Connection& c, const Value& msg) {
   c.last_delivery = t;
   ++c.stats.delivered;
   trace_.delivery(t, c.name, c.destination->qualified, *delivered);
+  // `by priority`: only a delivered message holds the lower rules off, for the event's
+  // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
+  if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
   Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
   // The message was delivered; if the module throws handling it, that is the module's fault.
   c.destination->slot->guarded("on_delivery", [&] { c.destination->module->on_delivery(d); });
@@ -208,7 +212,9 @@ void Runtime::schedule_trig(Connection& c) {
 
 double Runtime::Connection::now() { return runtime->now(); }
 
+// Without a lifetime, the one app.json declares for the event (none: until unset).
 void Runtime::Connection::set_event(std::string_view event, std::optional<double> lifetime) {
+  if (!lifetime) lifetime = runtime->declared_lifetime(event);
   double t = runtime->now();
   EventContainer& box = destination->container;
   int id = box.index().intern(event);
@@ -230,15 +236,23 @@ bool Runtime::Connection::has_event(std::string_view event) {
   return destination->container.has(event, runtime->now());
 }
 
+// The constraint is app.json's (what the proof is about): the call only checks. The same
+// formula (after parsing) passes silently; another one is refused, and remembered so that
+// Runtime::create reports a call at load (top level or create) as bad input.
 std::string Runtime::Connection::set_constraint(std::string_view text) {
   ConstraintParse parsed = parse_constraint(text);
   if (!parsed.ok) {
     return parsed.error + " at offset " + std::to_string(parsed.offset) + " in \"" +
            std::string(text) + "\"";
   }
-  constraint = CompiledConstraint::compile(parsed.constraint, destination->container.index());
-  constraint_text = std::string(text);
-  return {};
+  std::string wanted = parsed.constraint.to_string();
+  if (wanted == constraint_text) return {};
+  std::string why = "\"" + wanted + "\" would replace the constraint of connection '" +
+                    model->name + "', \"" + constraint_text +
+                    "\" (app.json's, which arbc verify proves and the runtime installs); remove "
+                    "the call, or change the rule's `when` in the spec and rebuild";
+  if (constraint_conflict.empty()) constraint_conflict = why;
+  return why;
 }
 
 void Runtime::Connection::set_trig_interval(double seconds) {

@@ -1,4 +1,4 @@
-// The message path semantics (docs/design.md#the-message-path).
+// The message path semantics of docs/design.md#the-message-path.
 #include <gtest/gtest.h>
 
 #include "runtime/runtime_test_util.h"
@@ -236,7 +236,8 @@ TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
   TestApp t;
   t.module("Src", {"out x: int"});
   t.module("Sink", {"in x: int"});
-  t.connect("c", "Src.x", "Sink.x", "true",
+  // The constraint is app.json's; setting the same one again is accepted (source_of_truth_test).
+  t.connect("c", "Src.x", "Sink.x", "e_ball and not e",
             "ticks = 0\n"
             "PortMonitor.create = function(o)\n"
             "  assert(o.connection == 'c' and o.source == 'Src.x' and o.destination == 'Sink.x')\n"

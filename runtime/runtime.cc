@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/monitor_digests.h"
 #include "runtime/runtime_internal.h"
 
 namespace arbc {
@@ -46,6 +47,13 @@ std::string construct(const Factory& factory, std::unique_ptr<T>* out) {
     return "its constructor threw an exception that is not a std::exception";
   }
   return *out ? "" : "its factory returned no object";
+}
+
+// A monitor asked for another constraint at load: the Lua error (file and line) when the
+// script let it through, else the file alone (the script caught the error itself).
+std::string conflict_error(const Runtime::Connection& c, const std::string& lua_error) {
+  if (lua_error.find(c.constraint_conflict) != std::string::npos) return lua_error;
+  return c.model->monitor + ": setConstraint: " + c.constraint_conflict;
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -92,6 +100,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   std::unique_ptr<Runtime> rt(new Runtime());
   rt->app_ = app;
   rt->options_ = options;
+  for (const model::Event& e : app.events) rt->lifetimes_.emplace(e.name, e.lifetime);
   if (options.realtime) {
     rt->executor_ = std::make_unique<RealtimeExecutor>();
   } else {
@@ -202,24 +211,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
     c->stats.name = c->name;
     c->stats.source = mc.source;
     c->stats.destination = mc.destination;
-    if (!mc.monitor.empty()) {
-      std::string path = app_dir + "/" + mc.monitor;
-      std::string script;
-      if (!read_file(path, &script)) {
-        *error = where + ": cannot read its monitor script " + path +
-                 " (rebuild the app with `arbc build`)";
-        return nullptr;
-      }
-      std::string load_error;
-      c->monitor = LuaMonitor::load(script, mc.monitor, options.limits, c.get(), &load_error);
-      if (!c->monitor) {
-        *error = where + ": its monitor script failed to load: " + load_error;
-        return nullptr;
-      }
-      c->has_accept = c->monitor->defines("accept");
-      c->has_update = c->monitor->defines("update");
-      c->has_trig = c->monitor->defines("trig");
-    }
+    if (!mc.monitor.empty() && !rt->load_monitor(*c, app_dir, error)) return nullptr;
     if (!c->has_update && !c->is_feed && !same_type(*c->source->type, *c->destination->type)) {
       *error = where + ": " + mc.source + " carries " + c->source->type->to_string() + " but " +
                mc.destination + " takes " + c->destination->type->to_string() +
@@ -238,7 +230,63 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       return nullptr;
     }
   }
+  if (!rt->create_monitors(error)) return nullptr;
   return rt;
+}
+
+// Each monitor's create runs at load, so that a setConstraint that would replace the
+// constraint app.json records is bad input before anything runs. A create that fails or
+// returns false quarantines its connection when the run starts (start()).
+bool Runtime::create_monitors(std::string* error) {
+  for (auto& cp : connections_) {
+    Connection& c = *cp;
+    if (!c.monitor) continue;
+    bool created = false;
+    LuaCall call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
+    if (!c.constraint_conflict.empty()) {
+      *error = conflict_error(c, call.error);
+      return false;
+    }
+    if (!call.ok()) {
+      c.create_failure = call.error;
+    } else {
+      c.create_refused = !created;
+    }
+  }
+  return true;
+}
+
+bool Runtime::load_monitor(Connection& c, const std::string& app_dir, std::string* error) {
+  const model::Connection& mc = *c.model;
+  std::string where = "connection '" + mc.name + "'";
+  std::string path = app_dir + "/" + mc.monitor;
+  std::string script;
+  if (!read_file(path, &script)) {
+    *error =
+        where + ": cannot read its monitor script " + path + " (rebuild the app with `arbc build`)";
+    return false;
+  }
+  // What runs must be what was built (and proved): the bytes, not only the file name.
+  if (!model::monitor_matches_digest(mc, path, script, error)) return false;
+  std::string load_error;
+  c.monitor = LuaMonitor::load(script, mc.monitor, options_.limits, &c, &load_error);
+  if (!c.constraint_conflict.empty()) {  // setConstraint at the script's top level
+    *error = conflict_error(c, load_error);
+    return false;
+  }
+  if (!c.monitor) {
+    *error = where + ": its monitor script failed to load: " + load_error;
+    return false;
+  }
+  c.has_accept = c.monitor->defines("accept");
+  c.has_update = c.monitor->defines("update");
+  c.has_trig = c.monitor->defines("trig");
+  return true;
+}
+
+std::optional<double> Runtime::declared_lifetime(std::string_view event) const {
+  auto it = lifetimes_.find(event);
+  return it == lifetimes_.end() ? std::nullopt : it->second;
 }
 
 Runtime::~Runtime() {
@@ -286,17 +334,14 @@ void Runtime::start() {
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (!c.monitor) continue;
-    MonitorOptions o{c.model->source, c.model->destination, c.name};
-    bool created = false;
-    LuaCall call = c.monitor->create(o, &created);
-    if (!call.ok()) {
-      ++c.stats.errors;  // counted and traced like any failing callback, then out of service
-      trace_.error(now(), c.name, call.error);
-      quarantine(c, "create failed: " + call.error, false);
+    if (c.create_refused) {
+      quarantine(c, "create returned false", false);
       continue;
     }
-    if (!created) {
-      quarantine(c, "create returned false", false);
+    if (!c.create_failure.empty()) {  // create (run at load) failed: counted, traced, out
+      ++c.stats.errors;
+      trace_.error(now(), c.name, c.create_failure);
+      quarantine(c, "create failed: " + c.create_failure, false);
       continue;
     }
     if (c.trig_interval == 0 && c.model->trig_interval && *c.model->trig_interval > 0) {

@@ -6,7 +6,11 @@
 //   2. c's constraint is evaluated on P's container at t; false: drop `not-selected`
 //      (`feed` for feed connections, whose constraint is false by design).
 //   3. throttle: a delivery on c less than its throttle period ago: drop `throttled`.
-//   4. c's update(msg) runs; its result is delivered to P's module.
+//   4. c's update(msg) runs; its result is delivered to P's module, and c's activity event
+//      (`by priority`) is set for its lifetime.
+// What runs is what was proved: constraints and event lifetimes come from the model
+// (app.json), monitors may not replace a constraint, and a monitor whose bytes differ from
+// the digest app.json records does not load.
 // Script errors drop the message (`monitor-error`); a connection whose callbacks fail
 // `quarantine_after` times in a row is quarantined: its monitor is destroyed and its further
 // messages are dropped (`quarantined`). Each connection keeps a bounded FIFO queue
@@ -134,8 +138,16 @@ class Runtime {
   void schedule_trig(Connection& c);
   void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
   void publish_from(ModuleSlot& m, std::string_view port, Value v);
+  // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;
+  // false with *error on bad input (a script that does not load, another constraint).
+  bool load_monitor(Connection& c, const std::string& app_dir, std::string* error);
+  // Runs every loaded monitor's create; false with *error when one sets another constraint.
+  bool create_monitors(std::string* error);
+  // The lifetime app.json declares for `event` (none: until unset, also for unknown names).
+  std::optional<double> declared_lifetime(std::string_view event) const;
 
   model::App app_;
+  std::map<std::string, std::optional<double>, std::less<>> lifetimes_;  // app.json's events
   std::string scenario_;
   RunOptions options_;
   std::unique_ptr<Executor> executor_;

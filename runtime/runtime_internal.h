@@ -39,8 +39,14 @@ struct Runtime::Connection : MonitorHost {
 
   std::unique_ptr<LuaMonitor> monitor;
   bool has_accept = false, has_update = false, has_trig = false;
+  // create() runs at load; a failure or a `false` quarantines the connection at start().
+  std::string create_failure;
+  bool create_refused = false;
+  // The constraint, installed from the model (app.json) and never replaced: what was proved.
   CompiledConstraint constraint;
   std::string constraint_text;
+  // Set when the monitor called setConstraint with another constraint: bad input at load.
+  std::string constraint_conflict;
 
   std::deque<Value> queue;
   bool drain_posted = false;

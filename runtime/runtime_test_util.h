@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sha256.h"
 #include "runtime/runtime.h"
 
 namespace arbc::testing {
@@ -57,7 +58,8 @@ class TestApp {
     app.modules.push_back(m);
   }
 
-  // Adds a connection; a non-empty script is written as monitors/<name>.lua.
+  // Adds a connection; a non-empty script is written as monitors/<name>.lua, its digest
+  // recorded in the model.
   model::Connection& connect(const std::string& name, const std::string& source,
                              const std::string& destination, const std::string& constraint,
                              const std::string& script = "",
@@ -72,6 +74,7 @@ class TestApp {
     c.constraint = p.constraint;
     if (!script.empty()) {
       c.monitor = "monitors/" + name + ".lua";
+      c.monitor_sha256 = sha256_hex(script);  // as `arbc build` records it
       std::ofstream(dir + "/" + c.monitor) << script;
     }
     app.connections.push_back(c);

@@ -28,8 +28,8 @@ std::string state_text(const EventState& s) {
 
 const std::string& rule_name(const ScopedRule& r) { return r.connection->name; }
 
-// Why rule r holds (or fails) in the state: its constraint, the events it reads, and the
-// events its own monitor sets or unsets before the decision.
+// Why rule r holds (or fails) in the state: its constraint, the events it reads, the events
+// its own monitor sets or unsets before the decision, and its activity event.
 Note explain_rule(const ScopedRule& r, const std::vector<std::string>& present, bool holds) {
   std::string m = "'" + rule_name(r) + "' " + (holds ? "holds" : "does not hold") + ": `" +
                   r.connection->constraint.to_string() + "` with " +
@@ -40,6 +40,7 @@ Note explain_rule(const ScopedRule& r, const std::vector<std::string>& present, 
   if (!r.forced_absent.empty()) {
     m += "; its monitor unsets " + list(r.forced_absent) + " on every accepting path";
   }
+  if (!r.activity.empty()) m += "; its delivery sets " + r.activity + " (by priority)";
   return {m, r.connection->loc};
 }
 

@@ -61,6 +61,7 @@ bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, 
     rule.connection = conn;
     // The one definition of E_c, shared with the docs' decision tables.
     rule.effective_guard = model::effective_guard(into, *conn);
+    rule.activity = conn->activity_event;
     if (!conn->opaque) {
       // The same parts again, named, to explain a counterexample ("its monitor sets ...").
       for (const std::string& e : conn->must_set) {

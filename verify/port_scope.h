@@ -4,11 +4,13 @@
 // For each rule c the effective guard (core/effective_guard.h) is
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every accepting path that no other connection
-//                      of the port sets),
-// because at the decision (step 2 of a delivery) c's own accept has already run. A `script`
-// rule is opaque: E_c = G_c. Every event in the port's scope is a free boolean, restricted only
-// by the exclusive groups and invariants that mention the scope (closed transitively, so an
-// invariant linking a scope event to another event brings that event's constraints in too).
+//                      of the port sets)
+//             and act_c (`by priority`: the activity event the runtime sets as c delivers),
+// because at the decision (step 2 of a delivery) c's own accept has already run, and c's
+// delivery sets act_c in the same step. A `script` rule is opaque: E_c = G_c and act_c. Every event
+// in the port's scope is a free boolean, restricted only by the exclusive groups and invariants
+// that mention the scope (closed transitively, so an invariant linking a scope event to another
+// event brings that event's constraints in too).
 #pragma once
 
 #include <string>
@@ -23,6 +25,7 @@ struct ScopedRule {
   Constraint effective_guard;
   std::vector<std::string> forced_present;  // must_set events that enter the guard
   std::vector<std::string> forced_absent;   // must_unset events that enter the guard
+  std::string activity;                     // the activity event set on delivery, if any
 };
 
 // A domain constraint: an exclusive group or an invariant, as a formula over events.

@@ -11,6 +11,7 @@ namespace {
 std::set<std::string> events_set_by(const model::Connection& c) {
   std::set<std::string> s(c.sets.begin(), c.sets.end());
   s.insert(c.must_set.begin(), c.must_set.end());
+  if (!c.activity_event.empty()) s.insert(c.activity_event);  // set by the runtime on delivery
   return s;
 }
 

@@ -34,7 +34,6 @@ model::Connection rule(const std::string& name, const std::string& from, const s
   c.destination = to;
   c.kind = model::ConnectionKind::Rule;
   c.constraint = parse(when);
-  c.monitor = "monitors/" + name + ".lua";
   c.loc = std::move(loc);
   return c;
 }
@@ -54,7 +53,6 @@ model::Connection feed(const std::string& from, const std::string& to,
   c.constraint = Constraint::constant(false);
   c.sets = events;
   c.unsets = events;
-  c.monitor = "monitors/" + c.name + ".lua";
   c.loc = std::move(loc);
   return c;
 }
@@ -142,13 +140,12 @@ model::App table_clean_model() {
                                  "not e_taken and e_arm_idle", at(43, 3, 4)));
   app.connections.push_back(
       feed("PickAndPlace.status", "PullObject.cmd", {"e_taken", "e_arm_idle"}, at(23, 1, 6)));
-  // HeadControl.gaze by priority: track gets the activity event act_track (set by its own
-  // accept on every accepting path, lifetime `hold`), search requires its absence.
-  model::Connection track =
-      rule("track", "FaceDetector.face", "HeadControl.gaze",
-           "e_unreachable and e_arm_idle and e_pull_idle and act_track", at(53, 3, 5));
+  // HeadControl.gaze by priority: track gets the activity event act_track (set by the runtime
+  // each time track delivers, lifetime `hold`), search requires its absence.
+  model::Connection track = rule("track", "FaceDetector.face", "HeadControl.gaze",
+                                 "e_unreachable and e_arm_idle and e_pull_idle", at(53, 3, 5));
   track.sets = {"act_track"};
-  track.must_set = {"act_track"};
+  track.activity_event = "act_track";
   app.connections.push_back(track);
   app.connections.push_back(rule("search", "LookAround.gaze", "HeadControl.gaze",
                                  "e_unreachable and e_arm_idle and e_pull_idle and not act_track",

@@ -18,8 +18,8 @@ import sys
 
 
 def constraint(text):
-    # app.json carries the text and the tree; the loader parses the text.
-    return {"text": text, "tree": {"op": "true"}}
+    # app.json (schema 2) carries a constraint as its text, the one representation.
+    return text
 
 
 def main():
@@ -31,7 +31,7 @@ def main():
     bits = max(1, math.ceil(math.log2(max(2, per_rule * (rules - overlaps)))))
     assert events > bits, "need more events than assignment bits"
     names = [f"e{i}" for i in range(events)]
-    app = {"schema_version": 1, "name": f"bench_{ports}x{rules}", "description": "",
+    app = {"schema_version": 2, "name": f"bench_{ports}x{rules}", "description": "",
            "spec_file": "", "modules": [], "events": [], "connections": [],
            "arbitrated_ports": []}
     for p in range(ports):

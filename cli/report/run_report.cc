@@ -63,6 +63,11 @@ void append_header(std::string& out, const RunHeader& h) {
   out += "<dl class=\"header\">\n";
   out += "<dt>scenario</dt><dd id=\"scenario\">" + escaped(h.scenario) + "</dd>\n";
   out += "<dt>seed</dt><dd id=\"seed\">" + std::to_string(h.seed) + "</dd>\n";
+  if (!h.proof.empty()) {
+    bool verified = h.proof.rfind("verified", 0) == 0;
+    out += std::string("<dt>proof</dt><dd id=\"proof\" class=\"") + (verified ? "ok" : "bad") +
+           "\">" + escaped(h.proof) + "</dd>\n";
+  }
   out += std::string("<dt>") + (h.realtime ? "wall-clock" : "simulated") +
          " time</dt><dd id=\"duration\">" + seconds_text(h.end) + " s of " +
          seconds_text(h.requested) + " s requested";

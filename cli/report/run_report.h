@@ -2,10 +2,10 @@
 // network, no external script, style or font: the timelines are inline SVG drawn here, so the
 // page reads the same with scripts off; a few lines of inline script only add a time cursor.
 //
-// Sections: header (app, scenario, seed, time run, outcome, the environment's summary),
-// totals, the delivery/drop timeline per connection, event presence per port and event,
-// drops by reason, the counters per connection with a totals row, errors and quarantines,
-// and the run's log.
+// Sections: header (app, scenario, seed, the proof, time run, outcome, the environment's
+// summary), totals, the delivery/drop timeline per connection, event presence per port and
+// event, drops by reason, the counters per connection with a totals row, errors and
+// quarantines, and the run's log.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +27,8 @@ struct RunHeader {
   bool success = false;
   std::string verdict;      // e.g. "success" or "failure (no environment; ...)"
   std::string environment;  // the environment's summary text, shown as is
+  // What `arbc run` said about the proof: "verified: ..." or "not verified (--no-verify)".
+  std::string proof;
 };
 
 struct ConnectionRow {

@@ -49,6 +49,7 @@ ReportedRun run_and_report(double duration) {
   input.header.end = rt->now();
   input.header.success = true;
   input.header.verdict = "success";
+  input.header.proof = "not verified (--no-verify)";
   for (size_t i = 0; i < run.stats.size(); ++i) {
     const model::Connection& c = t.app.connections[i];
     input.connections.push_back(
@@ -127,6 +128,13 @@ TEST_F(RunReportTest, OneDeliveryLanePerConnectionAndOneEventLane) {
   EXPECT_EQ(count(events, "<g class=\"lane\">"), 1u);
   EXPECT_NE(events.find(">e<"), std::string::npos);
   EXPECT_GT(count(events, "present "), 5u);
+}
+
+// The header says whether the app that ran was proved (issue 13).
+TEST_F(RunReportTest, TheHeaderSaysWhetherTheAppWasProved) {
+  EXPECT_NE(run_->html.find("<dt>proof</dt><dd id=\"proof\" class=\"bad\">not verified "
+                            "(--no-verify)</dd>"),
+            std::string::npos);
 }
 
 TEST_F(RunReportTest, CountersEqualTheRuntimeCounters) {

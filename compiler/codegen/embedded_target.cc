@@ -4,12 +4,13 @@
 #include "compiler/lower/lowered_app.h"
 #include "compiler/lower/script_check.h"
 #include "core/app_json.h"
+#include "core/sha256.h"
 
 namespace arbc::codegen {
 
 CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
   CodegenResult result;
-  model::App app = lowered.app;  // gains the monitors' source maps
+  model::App app = lowered.app;  // gains the monitors' source maps and digests
   SpecLines lines(lowered.spec_text);
   std::vector<OutputFile> monitors;
   lower::LuaSyntaxChecker lua;
@@ -29,6 +30,8 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
       result.diagnostics.push_back(std::move(d));
     }
     c.source_map = std::move(m.source_map);
+    // Readers of the app directory refuse a monitor whose bytes differ (docs/app-json.md).
+    c.monitor_sha256 = sha256_hex(m.text);
     monitors.push_back({c.monitor, std::move(m.text)});
   }
   result.files.push_back({"app.json", model::to_app_json(app)});

@@ -58,10 +58,10 @@ class App {
     if (it != monitors_.end()) return *it->second;
     std::string path = "monitors/" + port + "__" + name + ".lua";
     auto h = std::make_unique<LuaMonitorHarness>(files_[path], path, &this->port(port), name);
+    for (const model::Connection& c : model().connections)
+      if (c.destination == port && c.name == name) h->use_model(model(), c);
     EXPECT_EQ(h->load_error(), "") << path;
     EXPECT_TRUE(h->create().ok) << path;
-    for (const model::Connection& c : model().connections)
-      if (c.destination == port && c.name == name) h->set_throttle(c.throttle);
     return *(monitors_[key] = std::move(h));
   }
 
@@ -91,7 +91,8 @@ TEST_F(TableCleanTest, StatusFeedSetsListedFlagsAndUnsetsTheOthers) {
   auto r = c3.deliver("{ \"e_arm_idle\", \"something_else\" }");
   EXPECT_TRUE(r.ok) << r.error;
   EXPECT_FALSE(r.accepted);  // a feed never delivers
-  EXPECT_EQ(c3.calls(), (V{"unset e_taken", "set e_arm_idle 0.5"}));
+  // No lifetime in the monitor: the runtime applies app.json's (0.5 s, checked below).
+  EXPECT_EQ(c3.calls(), (V{"unset e_taken", "set e_arm_idle"}));
   EXPECT_EQ(app_.port("PickAndPlace.cmd").present(), (V{"e_arm_idle"}));
   app_.set_time(0.49);
   EXPECT_EQ(app_.port("PickAndPlace.cmd").present(), (V{"e_arm_idle"}));
@@ -151,7 +152,7 @@ TEST_F(TableCleanTest, DerivedEventsFollowTheirPredicate) {
 
   auto& face = app_.monitor("Speak.text", "feed_FaceDetector_face");
   face.deliver("{ pos = {x = 1, y = 0, z = 0}, certainty = 0.9 }");
-  EXPECT_EQ(face.calls(), (V{"set e_face_detected 1"}));
+  EXPECT_EQ(face.calls(), (V{"set e_face_detected"}));  // `for 1s`: app.json's lifetime
   face.deliver("{ pos = {x = 1, y = 0, z = 0}, certainty = 0.2 }");  // `for 1s`: not unset
   EXPECT_EQ(face.calls().size(), 1u);
   app_.set_time(100.5);
@@ -160,33 +161,40 @@ TEST_F(TableCleanTest, DerivedEventsFollowTheirPredicate) {
   EXPECT_EQ(app_.port("Speak.text").present(), V{});
 }
 
-TEST_F(TableCleanTest, TrackSuppressesSearchForItsHoldOnlyWhileItCouldDeliver) {
+TEST_F(TableCleanTest, TrackSuppressesSearchForItsHoldOnlyAfterItDelivered) {
   ASSERT_EQ(app_.error(), "");
   auto& track = app_.monitor("HeadControl.gaze", "track");
   auto& search = app_.monitor("HeadControl.gaze", "search");
+  auto& head = app_.port("HeadControl.gaze");
   const char* face = "{ pos = {x = 1, y = 2, z = 3}, certainty = 0.95 }";
-  // `when` does not hold: track rejects before setting act_track, so search is not blocked.
-  EXPECT_EQ(track.deliver(face).reason, "rejected");
-  EXPECT_EQ(track.calls(), V{});
+  const char* doubtful = "{ pos = {x = 1, y = 2, z = 3}, certainty = 0.5 }";
+  auto idle = [&] {
+    app_.monitor("HeadControl.gaze", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");
+    app_.monitor("HeadControl.gaze", "feed_PullObject_status").deliver("{ \"e_pull_idle\" }");
+  };
+  // `when` does not hold: track is not selected, and holds nothing off.
+  EXPECT_EQ(track.deliver(face).reason, "not-selected");
+  EXPECT_EQ(head.present(), V{});
   app_.monitor("HeadControl.gaze", "feed_ObjectDetector_objects")
       .deliver("{ {pos = {x = 0.9, y = 0, z = 0}, dist = 0.9} }");
-  app_.monitor("HeadControl.gaze", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");
-  app_.monitor("HeadControl.gaze", "feed_PullObject_status").deliver("{ \"e_pull_idle\" }");
+  idle();
+  // A face the body rejects (a joystick in its dead zone) suppresses nothing either.
+  EXPECT_EQ(track.deliver(doubtful).reason, "rejected");
+  EXPECT_EQ(head.present(), (V{"e_arm_idle", "e_pull_idle", "e_unreachable"}));
   auto s = search.deliver("{x = 0, y = 0, z = 1}");
-  EXPECT_TRUE(s.accepted) << s.reason << s.error << " present: "
-                          << ::testing::PrintToString(app_.port("HeadControl.gaze").present());
+  EXPECT_TRUE(s.accepted) << s.reason << s.error
+                          << " present: " << ::testing::PrintToString(head.present());
+  // A delivered face holds search off for the hold time; the monitor itself sets nothing.
   auto r = track.deliver(face);
   EXPECT_TRUE(r.accepted);
   EXPECT_EQ(r.value, "{x=1, y=2, z=3}");
-  EXPECT_EQ(track.calls(), (V{"set act_track 1"}));
+  EXPECT_EQ(track.calls(), V{});
   EXPECT_EQ(search.deliver("{x = 0, y = 0, z = 1}").reason, "not-selected");
   app_.set_time(0.4);  // status flags refreshed, act_track still held
-  app_.monitor("HeadControl.gaze", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");
-  app_.monitor("HeadControl.gaze", "feed_PullObject_status").deliver("{ \"e_pull_idle\" }");
+  idle();
   EXPECT_EQ(search.deliver("{x = 0, y = 0, z = 1}").reason, "not-selected");
   app_.set_time(1.0);  // the hold is over (status refreshed, as modules publish at 10 Hz)
-  app_.monitor("HeadControl.gaze", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");
-  app_.monitor("HeadControl.gaze", "feed_PullObject_status").deliver("{ \"e_pull_idle\" }");
+  idle();
   EXPECT_TRUE(search.deliver("{x = 0, y = 0, z = 1}").accepted);
 }
 
@@ -266,7 +274,7 @@ arbitrate Head.level {
   EXPECT_EQ(count.calls().back(), "unset e_seen");
 }
 
-TEST(MonitorExecTest, ScriptIsWrappedWithTheRulesConstraint) {
+TEST(MonitorExecTest, ScriptRunsUnderTheRulesConstraint) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / "arbc_exec_script";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "double.lua") << "local calls = 0\n"
@@ -296,7 +304,7 @@ connect Looker.gaze -> Head.gaze { accept norm(gaze) > 0.5; emit gaze * 2.0; }
 )");
   ASSERT_EQ(app.error(), "");
   auto& c = app.monitor("Head.gaze", "from_Looker_gaze");
-  EXPECT_EQ(c.constraint(), "");  // not arbitrated: no setConstraint call
+  EXPECT_EQ(c.constraint(), "true");  // not arbitrated: always selected
   EXPECT_EQ(c.deliver("{x = 1, y = 0, z = 0}").value, "{x=2, y=0, z=0}");
   EXPECT_EQ(c.deliver("{x = 0.1, y = 0, z = 0}").reason, "rejected");
 }

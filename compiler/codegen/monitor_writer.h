@@ -5,8 +5,9 @@
 // Conventions shared with the runtime (docs/runtime.md):
 //   accept(msg) returns false, or false plus a drop reason ("throttled", "no-value"), or true;
 //   update(msg) returns the value to deliver;
-//   the constraint is set in create() with PortMonitor.setConstraint (not for `connect`s, whose
-//   destination is not arbitrated).
+//   the constraint is not in the monitor: the runtime installs it from app.json, and sets a
+//   `by priority` rule's activity event when it delivers; setEvent without a lifetime gets
+//   the event's lifetime from app.json.
 #pragma once
 
 #include <string>

@@ -133,15 +133,17 @@ TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
   EXPECT_NE(md.find("- HeadControl.gaze: proved"), std::string::npos);
 }
 
-// A by-priority port: two rules with holds and the lowest without, as lowering writes them.
+// A by-priority port as lowering writes it: the higher rule has an activity event (its hold),
+// the lower one reads `not act_track`.
 model::App priority_app() {
   model::App app = search_and_track();
   app.arbitrated_ports[0].by_priority = true;
-  app.connections[0].constraint = parse_constraint("a and act_track").constraint;
+  app.connections[0].constraint = parse_constraint("a").constraint;
+  app.connections[0].activity_event = "act_track";
+  app.connections[0].sets = {"act_track", "e_face_detected"};
   app.connections[1].constraint =
       parse_constraint("not e_face_detected and not act_track").constraint;
   app.events.push_back({"act_track", 0.5, "", {}});
-  app.connections[0].must_set = {"act_track", "e_face_detected"};
   return app;
 }
 

@@ -63,8 +63,10 @@ void connections_section(const model::App& app, std::ostream& out) {
 
 void events_section(const model::App& app, std::ostream& out) {
   std::map<std::string, std::set<std::string>> set_by, read_by;
+  std::set<std::string> activity;  // `by priority`: set by the runtime as the rule delivers
   for (const model::Connection& c : app.connections) {
     for (const std::string& e : c.sets) set_by[e].insert(c.destination + " / " + c.name);
+    if (!c.activity_event.empty()) activity.insert(c.activity_event);
     std::set<std::string> read;
     c.constraint.collect_events(read);
     for (const std::string& e : read) read_by[e].insert(c.destination + " / " + c.name);
@@ -83,7 +85,10 @@ void events_section(const model::App& app, std::ostream& out) {
   };
   out << "## Events\n\n| event | source | lifetime | set by | read by |\n|---|---|---|---|---|\n";
   for (const model::Event& e : app.events)
-    out << "| " << code(e.name) << " | " << (e.source.empty() ? "monitor code" : cell(e.source))
+    out << "| " << code(e.name) << " | "
+        << (!e.source.empty()        ? cell(e.source)
+            : activity.count(e.name) ? "each delivery (by priority)"
+                                     : "monitor code")
         << " | " << (e.lifetime ? seconds(*e.lifetime) : "until unset") << " | "
         << join(set_by[e.name]) << " | " << join(read_by[e.name]) << " |\n";
   out << "\n";

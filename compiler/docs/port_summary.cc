@@ -30,17 +30,20 @@ PortSummary summarize_port(const model::App& app, const model::ArbitratedPort& p
                            std::span<const model::Connection* const> into) {
   PortSummary out;
   out.port = &port;
-  // Lowering names the activity event of rule r `act_r` and gives it the rule's hold.
+  // A `by priority` rule's activity event: the runtime sets it for the rule's hold (the
+  // event's lifetime) on each delivery; the lower rules' constraints read `not act_k`.
   std::set<std::string> activity;
-  if (port.by_priority) {
-    for (const std::string& rule : port.rules)
-      if (app.find_event("act_" + rule)) activity.insert("act_" + rule);
-  }
+  for (const model::Connection* c : into)
+    if (c->kind == model::ConnectionKind::Rule && !c->activity_event.empty())
+      activity.insert(c->activity_event);
   for (const std::string& rule : port.rules) {
     for (const model::Connection* c : into) {
       if (c->name != rule || c->kind != model::ConnectionKind::Rule) continue;
       RuleSummary r{c, when_text(c->constraint, activity), std::nullopt, {}};
-      if (activity.count("act_" + rule)) r.hold = app.find_event("act_" + rule)->lifetime;
+      if (!c->activity_event.empty()) {
+        const model::Event* e = app.find_event(c->activity_event);
+        if (e) r.hold = e->lifetime;
+      }
       for (const std::string& e : c->must_set)
         if (!activity.count(e)) r.sets.push_back(e);
       out.rules.push_back(std::move(r));

@@ -1,8 +1,8 @@
 // What the diagrams of `arbc docs` say about one arbitrated port: its rules in order (highest
 // first under `by priority`), each with the `when` the user wrote and its hold, and the event
 // feeds into the port with the events each carries. The core model keeps only the lowered
-// constraint, so the `when` is recovered by dropping the activity events that lowering adds
-// for `by priority` (docs/design.md#priorities-and-holds).
+// constraint, so the `when` is recovered by dropping the `not act_j` terms that lowering adds
+// for the higher rules under `by priority` (docs/design.md#priorities-and-holds).
 #pragma once
 
 #include <optional>

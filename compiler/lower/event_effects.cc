@@ -72,13 +72,9 @@ void walk(const ast::Block& block, PathState& path, EventEffects& effects) {
 
 }  // namespace
 
-EventEffects body_effects(const ast::Block& body, const std::set<std::string>& preset) {
+EventEffects body_effects(const ast::Block& body) {
   EventEffects effects;
   PathState path;
-  for (const std::string& e : preset) {
-    path.known[e] = EventState::Set;
-    effects.sets.insert(e);
-  }
   walk(body, path, effects);
   if (path.rejects) return effects;  // never accepts: nothing holds "on every accepting path"
   for (const auto& [event, state] : path.known)

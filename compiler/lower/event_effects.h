@@ -19,10 +19,9 @@ struct EventEffects {
   std::set<std::string> must_set, must_unset;
 };
 
-// Effects of `body` when it runs on a message, after the events in `preset` were already set
-// on every path (the activity event of a `by priority` rule). `every` blocks run from trig(),
-// not per message: they count for sets/unsets only.
-EventEffects body_effects(const ast::Block& body, const std::set<std::string>& preset = {});
+// Effects of `body` when it runs on a message. `every` blocks run from trig(), not per
+// message: they count for sets/unsets only.
+EventEffects body_effects(const ast::Block& body);
 
 // Event names passed as string literals to PortMonitor.setEvent / unsetEvent in a hand-written
 // script, so that the verifier knows what an opaque `script` rule can feed.

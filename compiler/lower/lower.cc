@@ -199,7 +199,7 @@ class Lowerer {
               error_at(r.loc,
                        "rule '" + r.name +
                            "' needs `hold D` under `by priority`: it suppresses the "
-                           "lower rules for D after each message it could deliver",
+                           "lower rules for D after each message it delivers",
                        "priority"));
       }
       model::Connection c;
@@ -214,24 +214,16 @@ class Lowerer {
       plan.message_name = r.message_name.empty() ? r.source.port : r.message_name;
       plan.body = &r.body;
       lower_body_options(r.body, c, plan);
-      std::set<std::string> preset;
-      if (!w.activity.empty()) preset.insert(w.activity);
       if (plan.script) {
         w.effects = script_effects(plan.script->text);
-        w.effects.sets.insert(preset.begin(), preset.end());
-        w.effects.must_set = preset;
         w.opaque = true;
       } else {
-        w.effects = body_effects(r.body, preset);
+        w.effects = body_effects(r.body);
       }
-      if (a.by_priority) {
-        PriorityGuard g;
-        g.when = r.constraint;
-        g.activity_event = w.activity;
-        if (!w.activity.empty() && r.hold) g.hold = r.hold->seconds;
-        g.loc = r.loc;
-        plan.priority = g;
-      }
+      // The runtime sets the activity event each time the rule delivers (after the decision,
+      // so not a must-set); the connection owns its entries, so it is among its `sets`.
+      if (!w.activity.empty()) w.effects.sets.insert(w.activity);
+      c.activity_event = w.activity;
       w.connection = add_connection(std::move(c), std::move(plan));
       ap.rules.push_back(r.name);
       if (!w.activity.empty()) {
@@ -257,8 +249,6 @@ class Lowerer {
       if (!rules[k].rule->otherwise) continue;
       Constraint none = otherwise_constraint(rules, k, fed);
       connection(rules[k]).constraint = priority_constraint(rules, k, none);
-      MonitorPlan& plan = out_.monitors[rules[k].connection];
-      if (plan.priority) plan.priority->when = none;
     }
     read = events_read(rules, ap, /*with_otherwise=*/true);
 
@@ -292,24 +282,26 @@ class Lowerer {
 
   model::Connection& connection(const RuleWork& w) { return out_.app.connections[w.connection]; }
 
-  // `when_k and act_k and not act_1 ... and not act_(k-1)` (docs/design.md#priorities-and-holds);
-  // just `when_k` outside `by priority`.
+  // `when_k and not act_1 ... and not act_(k-1)` (docs/design.md#priorities-and-holds): rule k
+  // is suppressed while a higher rule delivered within its hold; just `when_k` outside
+  // `by priority`. Rule k's own act_k is set as it delivers, so its constraint cannot read it.
   Constraint priority_constraint(const std::vector<RuleWork>& rules, size_t k, Constraint when) {
     std::vector<Constraint> parts{std::move(when)};
-    if (!rules[k].activity.empty()) parts.push_back(Constraint::event_ref(rules[k].activity));
     for (size_t j = 0; j < k; ++j)
       if (!rules[j].activity.empty())
         parts.push_back(Constraint::negate(Constraint::event_ref(rules[j].activity)));
     return all_of(std::move(parts));
   }
 
-  // E_c (docs/design.md#effective-guards): G_c and what c sets on every accepting path and not what
-  // it unsets on every such path that no other connection of the port sets.
+  // E_c of core/effective_guard.h: G_c and what c sets on every accepting path and not what it
+  // unsets on every such path that no other connection of the port sets, and c's activity
+  // event (set as it delivers).
   Constraint effective_guard(const std::vector<RuleWork>& rules, size_t c,
                              const std::set<std::string>& fed) {
     const RuleWork& w = rules[c];
     std::vector<Constraint> parts{connection(w).constraint};
-    if (w.opaque) return parts[0];
+    if (!w.activity.empty()) parts.push_back(Constraint::event_ref(w.activity));
+    if (w.opaque) return all_of(std::move(parts));
     for (const std::string& e : w.effects.must_set) parts.push_back(Constraint::event_ref(e));
     for (const std::string& e : w.effects.must_unset) {
       bool others_set = fed.count(e) > 0;

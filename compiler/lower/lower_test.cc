@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "compiler/lower/lower_test_util.h"
+#include "core/effective_guard.h"
 
 namespace arbc::lower {
 namespace {
@@ -128,20 +129,37 @@ arbitrate Head.gaze by priority {
 )"));
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
-  EXPECT_EQ(find_connection(app, "Head.gaze", "first")->constraint.to_string(), "a and act_first");
+  // A rule's own activity event is set as it delivers, after the decision: its constraint
+  // does not read it, and it is not a must-set (docs/design.md#priorities-and-holds).
+  const model::Connection* first = find_connection(app, "Head.gaze", "first");
+  EXPECT_EQ(first->constraint.to_string(), "a");
   EXPECT_EQ(find_connection(app, "Head.gaze", "second")->constraint.to_string(),
-            "b and act_second and not act_first");
+            "b and not act_first");
   EXPECT_EQ(find_connection(app, "Head.gaze", "third")->constraint.to_string(),
             "d and not act_first and not act_second");
-  EXPECT_EQ(find_connection(app, "Head.gaze", "first")->must_set, (V{"act_first"}));
-  EXPECT_TRUE(find_connection(app, "Head.gaze", "third")->must_set.empty());
+  EXPECT_EQ(first->activity_event, "act_first");
+  EXPECT_EQ(first->sets, (V{"act_first"}));
+  EXPECT_TRUE(first->must_set.empty());
+  EXPECT_EQ(find_connection(app, "Head.gaze", "third")->activity_event, "");
+  EXPECT_EQ(model::effective_guard(app, "Head.gaze", *first).to_string(), "a and act_first");
   ASSERT_NE(app.find_event("act_second"), nullptr);
   EXPECT_EQ(app.find_event("act_second")->lifetime, 0.3);
   EXPECT_EQ(app.find_event("act_third"), nullptr);  // the lowest rule has none
-  const MonitorPlan& first = c.lowered->monitors[0];
-  ASSERT_TRUE(first.priority.has_value());
-  EXPECT_EQ(first.priority->when.to_string(), "a");
-  EXPECT_EQ(first.priority->activity_event, "act_first");
+}
+
+// `otherwise` as the lowest rule under `by priority`: none of the others' effective guards
+// (each with its activity event), and not while a higher rule holds the port.
+TEST(LowerTest, OtherwiseUnderPriorityCountsTheActivityEvents) {
+  CompiledSpec c = compile_ok(spec(R"(
+event a;
+arbitrate Head.gaze by priority {
+  first:  from Looker.gaze when a hold 1s;
+  rest:   from Eye.face when otherwise;
+}
+)"));
+  ASSERT_TRUE(c.ok);
+  EXPECT_EQ(find_connection(c.lowered->app, "Head.gaze", "rest")->constraint.to_string(),
+            "not (a and act_first) and not act_first");
 }
 
 TEST(LowerTest, ActivityEventNameTakenIsAnError) {

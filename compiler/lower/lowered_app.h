@@ -31,15 +31,6 @@ struct DerivedFeed {
   model::SourceLocation loc;
 };
 
-// `by priority`: before its body, a rule's accept rejects unless its `when` holds on the
-// container now, then sets its activity event for `hold` (the lowest rule has none).
-struct PriorityGuard {
-  Constraint when;
-  std::string activity_event;  // empty for the lowest rule
-  std::optional<double> hold;  // seconds
-  model::SourceLocation loc;
-};
-
 // `script "file.lua";`: hand-written accept/update, inlined into the generated monitor.
 struct ScriptSource {
   std::string file;  // as resolved against the spec's directory
@@ -59,7 +50,6 @@ struct MonitorPlan {
 
   // Rule / Connect
   const ast::Block* body = nullptr;  // null or empty: accept everything, deliver unchanged
-  std::optional<PriorityGuard> priority;
   std::optional<ScriptSource> script;
 };
 

@@ -91,8 +91,7 @@ model::App paper_app() {
                  "not e_taken and e_arm_idle", "pull.lua"),
       connection("feed_pick_status_to_pull", "PickAndPlace.status", "PullObject.cmd", Feed, "false",
                  "pick_status_feed.lua"),
-      connection("track", "FaceDetector.face", "HeadControl.gaze", Rule, idle + " and act_track",
-                 "track.lua"),
+      connection("track", "FaceDetector.face", "HeadControl.gaze", Rule, idle, "track.lua"),
       connection("search", "LookAround.gaze", "HeadControl.gaze", Rule, idle + " and not act_track",
                  ""),
       connection("feed_objects_to_head", "ObjectDetector.objects", "HeadControl.gaze", Feed,
@@ -110,6 +109,10 @@ model::App paper_app() {
   };
   for (model::Connection& c : app.connections) {
     if (c.name == "ask") c.throttle = 5.0;
+    if (c.name == "track") {  // by priority: each delivery holds search off for 1 s
+      c.activity_event = "act_track";
+      c.sets = {"act_track"};
+    }
   }
   auto arbitrated = [](std::string port, std::vector<std::string> rules, bool priority) {
     model::ArbitratedPort p;

@@ -12,6 +12,7 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -64,10 +65,27 @@ std::string build(const std::string& spec, const std::string& out_name, bool ver
   return {};
 }
 
+// `arbc run` proves the app directory first; `verify = false` runs it without the proof.
 Result run(const std::string& app_dir, const std::string& plugin, const std::string& scenario,
-           int seed) {
+           int seed, bool verify = true) {
   return sh(kArbc + " run " + app_dir + " --plugin " + plugin + " --scenario " + scenario +
-            " --seed " + std::to_string(seed) + " --duration 300s");
+            " --seed " + std::to_string(seed) + " --duration 300s" +
+            (verify ? "" : " --no-verify"));
+}
+
+// One row of `arbc run`'s counters table: the numbers after the connection's name.
+std::vector<long> counters(const std::string& output, const std::string& connection) {
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    if (name != connection) continue;
+    std::vector<long> numbers;
+    for (long n; words >> n;) numbers.push_back(n);
+    return numbers;
+  }
+  return {};
 }
 
 class Scenario : public ::testing::TestWithParam<std::string> {
@@ -145,9 +163,16 @@ TEST_P(Mutated, IsRefutedByTheProofAndConflictsInSimulation) {
   EXPECT_NE(proof.output.find(std::string("[") + m.check + "]"), std::string::npos) << proof.output;
 
   const std::string app = build(spec.string(), m.name, /*verify=*/false);
+  // Run as it was built, unproved: `arbc run` refuses the directory unless told not to prove.
+  const Result refused = run(app, TABLE_CLEAN_PLUGIN, m.scenario, 1);
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("arbc run: verification refuted; nothing was run"),
+            std::string::npos)
+      << refused.output;
   bool conflicted = false;
   for (int seed = 1; seed <= 5 && !conflicted; ++seed) {
-    const Result r = run(app, TABLE_CLEAN_PLUGIN, m.scenario, seed);
+    const Result r = run(app, TABLE_CLEAN_PLUGIN, m.scenario, seed, /*verify=*/false);
+    EXPECT_NE(r.output.find("not verified (--no-verify)"), std::string::npos) << r.output;
     EXPECT_EQ(r.exit_code, 3) << r.output;  // run-time failure: the world's verdict
     conflicted = r.output.find(std::string("  ") + m.conflict + ": ") != std::string::npos;
   }
@@ -167,6 +192,39 @@ INSTANTIATE_TEST_SUITE_P(
                  "arbitrate HeadControl.gaze {", "exclusive", "human", "search_during_face_hold",
                  " hold 1s {", " {"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// Issue 13: a higher rule suppresses the lower ones only when it delivers. `track` never
+// delivers (no face is that certain), so `search` must deliver nearly everything: a joystick in
+// its dead zone must not lock out navigation.
+TEST(TableClean, AHigherRuleThatNeverDeliversSuppressesNothing) {
+  std::string text = read_file(kSpecs + "table_clean.spec");
+  const size_t begin = text.find("arbitrate HeadControl.gaze by priority {");
+  const size_t end = text.find("arbitrate Speak.text");
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  text.replace(begin, end - begin, R"(arbitrate HeadControl.gaze by priority {
+  track:  from FaceDetector.face hold 1s { accept face.certainty >= 2.0; emit face.pos; }
+  search: from LookAround.gaze;
+}
+
+)");
+  const fs::path spec = scratch() / "dead_zone.spec";
+  std::ofstream(spec) << text;
+  const std::string app = build(spec.string(), "dead_zone");
+  const Result r = run(app, TABLE_CLEAN_PLUGIN, "mixed", 1);
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.output;  // ran; the world judges
+  const std::vector<long> track = counters(r.output, "track");
+  const std::vector<long> search = counters(r.output, "search");
+  ASSERT_GE(track.size(), 3u) << r.output;
+  ASSERT_GE(search.size(), 2u) << r.output;
+  EXPECT_GT(track[0], 0) << "faces arrived";
+  EXPECT_EQ(track[1], 0) << "and none was delivered";
+  EXPECT_EQ(track[2], track[0]) << "every face was rejected by the body";
+  EXPECT_GT(search[0], 0);
+  EXPECT_GE(search[1] * 10, search[0] * 9)
+      << "search delivered " << search[1] << " of " << search[0] << "\n"
+      << r.output;
+}
 
 TEST(SearchAndTrack, FindsTracksAndResumesSearchingOverTwentySeeds) {
   const std::string app = build(kSpecs + "search_and_track.spec", "search_and_track");

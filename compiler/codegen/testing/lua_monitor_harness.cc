@@ -47,6 +47,10 @@ struct HarnessAccess {
     char buf[64] = "";
     if (life) std::snprintf(buf, sizeof buf, " %g", *life);
     h->calls_.push_back("set " + name + buf);
+    if (!life) {  // the event's lifetime in app.json, as the runtime applies it
+      auto it = h->lifetimes_.find(name);
+      if (it != h->lifetimes_.end()) life = it->second;
+    }
     h->container_->set(name, h->owner_, life);
     return 0;
   }
@@ -61,8 +65,15 @@ struct HarnessAccess {
     lua_pushboolean(L, self(L)->container_->has(luaL_checkstring(L, 1)));
     return 1;
   }
+  // Only checks, as the runtime does: the constraint is the model's.
   static int set_constraint(lua_State* L) {
-    self(L)->constraint_ = luaL_checkstring(L, 1);
+    const char* text = luaL_checkstring(L, 1);
+    bool same = false;
+    {  // no C++ object may be alive when lua_error longjmps
+      ConstraintParse parsed = parse_constraint(text);
+      same = parsed.ok && parsed.constraint.to_string() == self(L)->constraint_;
+    }
+    if (!same) return luaL_error(L, "setConstraint: not the model's constraint");
     return 0;
   }
   static int get_constraint(lua_State* L) {
@@ -217,6 +228,13 @@ CallResult LuaMonitorHarness::accept(const std::string& m) { return call("accept
 CallResult LuaMonitorHarness::update(const std::string& m) { return call("update", m, true); }
 CallResult LuaMonitorHarness::trig() { return call("trig", "", false); }
 
+void LuaMonitorHarness::use_model(const model::App& app, const model::Connection& c) {
+  constraint_ = c.constraint.to_string();
+  throttle_ = c.throttle;
+  activity_ = c.activity_event;
+  for (const model::Event& e : app.events) lifetimes_[e.name] = e.lifetime;
+}
+
 CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {
   CallResult a = accept(message_lua);
   if (!a.ok || !a.reason.empty()) return a;
@@ -243,7 +261,10 @@ CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {
   }
   CallResult u = update(message_lua);
   u.accepted = u.ok && u.reason.empty();
-  if (u.accepted) last_delivery_ = container_->now();
+  if (u.accepted) {
+    last_delivery_ = container_->now();
+    if (!activity_.empty()) container_->set(activity_, owner_, lifetimes_[activity_]);
+  }
   return u;
 }
 

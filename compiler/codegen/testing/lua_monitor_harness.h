@@ -1,13 +1,16 @@
-// Test support: runs a generated monitor in a real Lua 5.4 state with a small recording PortMonitor
-// table (docs/design.md#the-message-path, docs/runtime.md), until tests switch to the runtime's own
-// implementation. Several monitors may share one PortContainer, as the connections into one
-// arbitrated port share its event container.
+// Test support: runs a generated monitor in a real Lua 5.4 state with a small recording
+// PortMonitor table (docs/runtime.md), until tests switch to the runtime's own implementation.
+// Several monitors may share one PortContainer, as the connections into one arbitrated port
+// share its event container. As in the runtime, the connection's constraint, throttle,
+// activity event and the events' lifetimes come from the model (use_model), not the monitor.
 #pragma once
 
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "core/app_model.h"
 
 struct lua_State;
 
@@ -60,12 +63,14 @@ class LuaMonitorHarness {
   CallResult update(const std::string& message_lua);
   CallResult trig();
   // The runtime's message path (docs/runtime.md): accept, the constraint on the container, the
-  // throttle (counting deliveries only), update. `value` is the delivered value.
+  // throttle (counting deliveries only), update, then the activity event on delivery. `value`
+  // is the delivered value.
   CallResult deliver(const std::string& message_lua);
-  // app.json's `throttle` for this connection, which the runtime enforces.
-  void set_throttle(std::optional<double> seconds) { throttle_ = seconds; }
+  // What the runtime reads from app.json for connection `c` of `app`: its constraint, throttle
+  // and activity event, and every event's lifetime (setEvent without one gets it).
+  void use_model(const model::App& app, const model::Connection& c);
 
-  const std::string& constraint() const { return constraint_; }
+  const std::string& constraint() const { return constraint_; }  // the model's
   std::optional<double> trig_interval() const { return trig_interval_; }
   // Every setEvent/unsetEvent call, as "set e 0.5", "set e", "unset e".
   const std::vector<std::string>& calls() const { return calls_; }
@@ -86,6 +91,8 @@ class LuaMonitorHarness {
   std::string constraint_;
   std::optional<double> trig_interval_;
   std::optional<double> throttle_;
+  std::string activity_;
+  std::map<std::string, std::optional<double>> lifetimes_;
   std::optional<double> last_delivery_;
   std::vector<std::string> calls_;
 };

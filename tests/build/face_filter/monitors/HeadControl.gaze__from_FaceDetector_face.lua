@@ -17,10 +17,6 @@ local function arbc_body(face)
   return true
 end
 
-PortMonitor.create = function(options)
-  return true
-end
-
 PortMonitor.accept = function(face)
   arbc_emitted = face  -- without `emit`, the input unchanged
   return arbc_body(face)

@@ -3,11 +3,6 @@
 --   a rule of `arbitrate HeadControl.gaze`; selection constraint:
 --   not e_face_detected
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("not e_face_detected")
-  return true
-end
-
 PortMonitor.accept = function(gaze)
   return true
 end

@@ -29,11 +29,6 @@ local function arbc_holds_e_unreachable(objects)
   return (len(objects) > 0) and (min_by(objects, function(o) return o.dist end).dist > TOOL_REACHABLE)
 end
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("false")
-  return true
-end
-
 PortMonitor.accept = function(objects)
   local failure = nil  -- a predicate without a value, raised at the end
   local ok, holds = pcall(arbc_holds_e_unreachable, objects)

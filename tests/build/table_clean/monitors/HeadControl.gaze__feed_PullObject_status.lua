@@ -2,16 +2,11 @@
 -- Connection feed_PullObject_status: PullObject.status -> HeadControl.gaze (spec line 24)
 --   a generated event feed: keeps e_pull_idle in HeadControl.gaze's event container; it never delivers (constraint false).
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("false")
-  return true
-end
-
 PortMonitor.accept = function(status)
   -- The message is the module's whole status: the flags that hold now.
   local present = {}
   for i = 1, #status do present[status[i]] = true end
   -- spec line 24: events from PullObject.status   { e_pull_idle }         lifetime 0.5s;
-  if present["e_pull_idle"] then PortMonitor.setEvent("e_pull_idle", 0.5) else PortMonitor.unsetEvent("e_pull_idle") end
+  if present["e_pull_idle"] then PortMonitor.setEvent("e_pull_idle") else PortMonitor.unsetEvent("e_pull_idle") end
   return false  -- a feed never delivers
 end

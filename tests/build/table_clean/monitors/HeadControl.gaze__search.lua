@@ -3,11 +3,6 @@
 --   a rule of `arbitrate HeadControl.gaze`; selection constraint:
 --   e_unreachable and e_arm_idle and e_pull_idle and not act_track
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("e_unreachable and e_arm_idle and e_pull_idle and not act_track")
-  return true
-end
-
 PortMonitor.accept = function(gaze)
   return true
 end

@@ -2,17 +2,12 @@
 -- Connection feed_PickAndPlace_status: PickAndPlace.status -> PickAndPlace.cmd (spec line 23)
 --   a generated event feed: keeps e_taken, e_arm_idle in PickAndPlace.cmd's event container; it never delivers (constraint false).
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("false")
-  return true
-end
-
 PortMonitor.accept = function(status)
   -- The message is the module's whole status: the flags that hold now.
   local present = {}
   for i = 1, #status do present[status[i]] = true end
   -- spec line 23: events from PickAndPlace.status { e_taken, e_arm_idle } lifetime 0.5s;
-  if present["e_taken"] then PortMonitor.setEvent("e_taken", 0.5) else PortMonitor.unsetEvent("e_taken") end
-  if present["e_arm_idle"] then PortMonitor.setEvent("e_arm_idle", 0.5) else PortMonitor.unsetEvent("e_arm_idle") end
+  if present["e_taken"] then PortMonitor.setEvent("e_taken") else PortMonitor.unsetEvent("e_taken") end
+  if present["e_arm_idle"] then PortMonitor.setEvent("e_arm_idle") else PortMonitor.unsetEvent("e_arm_idle") end
   return false  -- a feed never delivers
 end

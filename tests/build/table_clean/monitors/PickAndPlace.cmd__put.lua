@@ -13,11 +13,6 @@ local function arbc_body(bucket)
   return true
 end
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("e_taken and e_arm_idle")
-  return true
-end
-
 PortMonitor.accept = function(bucket)
   arbc_emitted = bucket  -- without `emit`, the input unchanged
   return arbc_body(bucket)

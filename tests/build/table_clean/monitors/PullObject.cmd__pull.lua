@@ -47,11 +47,6 @@ local function arbc_body(objects)
   return true
 end
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("not e_taken and e_arm_idle")
-  return true
-end
-
 PortMonitor.accept = function(objects)
   arbc_emitted = objects  -- without `emit`, the input unchanged
   return arbc_body(objects)

@@ -15,11 +15,6 @@ local function arbc_body(face)
   return true
 end
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("e_unreachable and e_face_detected")
-  return true
-end
-
 PortMonitor.accept = function(face)
   arbc_emitted = face  -- without `emit`, the input unchanged
   return arbc_body(face)

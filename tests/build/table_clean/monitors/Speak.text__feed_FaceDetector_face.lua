@@ -7,12 +7,7 @@ local function arbc_holds_e_face_detected(face)
   return face.certainty >= 0.8
 end
 
-PortMonitor.create = function(options)
-  PortMonitor.setConstraint("false")
-  return true
-end
-
 PortMonitor.accept = function(face)
-  if arbc_holds_e_face_detected(face) then PortMonitor.setEvent("e_face_detected", 1.0) end
+  if arbc_holds_e_face_detected(face) then PortMonitor.setEvent("e_face_detected") end
   return false  -- a feed never delivers
 end

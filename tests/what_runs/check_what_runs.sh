@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# check_what_runs.sh ARBC PLUGIN SCRATCH: each case runs arbc as a user would and checks the exit
+# code and the message (the file, the connection, what to do).
+set -uo pipefail
+arbc=$1 plugin=$2 scratch=$3
+rm -rf "$scratch" && mkdir -p "$scratch"
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+# expect NAME CODE PATTERN COMMAND...: COMMAND exits CODE and its output contains PATTERN.
+expect() {
+  local name=$1 code=$2 pattern=$3
+  shift 3
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  [ "$rc" = "$code" ] || fail "$name: exit $rc, expected $code"$'\n'"$out"
+  [[ $out == *"$pattern"* ]] || fail "$name: no '$pattern' in"$'\n'"$out"
+}
+run=(--plugin "$plugin" --scenario appear_and_leave --duration 20s)
+
+# A proved app runs, and says it was proved.
+"$arbc" build specs/search_and_track.spec -o "$scratch/ok" > /dev/null || fail "build"
+app=$scratch/ok/search_and_track
+expect proved-dir-runs 0 "verified: 1 arbitrated port proved exclusive" "$arbc" run "$app" "${run[@]}"
+expect proved-dir-verifies 0 "proved" "$arbc" verify "$app"
+
+# A monitor edited after the build (here: it tries to select every message) is refused.
+cp -r "$app" "$scratch/edited"
+monitor=$scratch/edited/monitors/HeadControl.gaze__search.lua
+printf 'PortMonitor.create = function(o) PortMonitor.setConstraint("true") return true end\n' \
+  >> "$monitor"
+changed="$monitor: this monitor of connection 'search' is not the one \`arbc build\` wrote"
+expect edited-verify 2 "$changed" "$arbc" verify "$scratch/edited"
+expect edited-verify-json 2 "$changed" "$arbc" verify "$scratch/edited/app.json"
+expect edited-run 2 "$changed" "$arbc" run "$scratch/edited" "${run[@]}"
+expect edited-run-says-rebuild 2 "rebuild the app with \`arbc build\`" \
+  "$arbc" run "$scratch/edited" "${run[@]}" --no-verify
+
+# A hand-written script that sets another constraint builds and verifies (the proof is about
+# app.json's constraint) but does not load: exit 2 naming the file, the connection, both.
+mkdir -p "$scratch/script"
+sed 's|  search: from LookAround.gaze when not e_face_detected;|  search: from LookAround.gaze when not e_face_detected { script "search_true.lua"; }|' \
+  specs/search_and_track.spec > "$scratch/script/app.spec"
+cp tests/what_runs/search_true.lua "$scratch/script/"
+grep -q 'search_true.lua' "$scratch/script/app.spec" || fail "the spec edit did not apply"
+"$arbc" build "$scratch/script/app.spec" -o "$scratch/script/out" > /dev/null || fail "script build"
+expect script-run 2 "monitors/HeadControl.gaze__search.lua:" \
+  "$arbc" run "$scratch/script/out/search_and_track" "${run[@]}"
+expect script-run-names-both 2 \
+  "setConstraint: \"true\" would replace the constraint of connection 'search', \"not e_face_detected\"" \
+  "$arbc" run "$scratch/script/out/search_and_track" "${run[@]}"
+
+# An app built without the proof, that the proof refutes: `arbc run DIR` proves it and refuses;
+# with --no-verify it runs, says so in the output and the report, and conflicts (exit 3) as the
+# proof said it would.
+sed 's|  search: from LookAround.gaze when not e_face_detected;|  search: from LookAround.gaze;|' \
+  specs/search_and_track.spec > "$scratch/refuted.spec"
+"$arbc" build "$scratch/refuted.spec" -o "$scratch/refuted" --no-verify > /dev/null ||
+  fail "unverified build"
+app=$scratch/refuted/search_and_track
+expect refuted-run 1 "arbc run: verification refuted; nothing was run" "$arbc" run "$app" "${run[@]}"
+expect refuted-run-no-verify-output 3 "not verified (--no-verify)" \
+  "$arbc" run "$app" "${run[@]}" --no-verify --report "$scratch/report.html"
+grep -q 'id="proof" class="bad">not verified (--no-verify)<' "$scratch/report.html" ||
+  fail "the report does not say the run was not verified"
+
+[ "$failed" = 0 ] && echo "ok: every case"
+exit $failed
