@@ -17,5 +17,6 @@ int verify_command(std::span<char*> args);
 int build_command(std::span<char*> args);
 int run_command(std::span<char*> args);
 int docs_command(std::span<char*> args);
+int import_command(std::span<char*> args);
 
 }  // namespace arbc::cli

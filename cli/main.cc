@@ -14,10 +14,12 @@ constexpr const char* kUsage =
     "\n"
     "commands:\n"
     "  check  SPEC...                parse and semantic checks\n"
-    "  verify [SPEC | APP.json]...   prove that at most one rule per arbitrated port is selected\n"
+    "  verify [SPEC | APP.json | APP.xml]...\n"
+    "                                prove that at most one rule per arbitrated port is selected\n"
     "  build  SPEC [-o DIR]          verify, then write app.json and the Lua monitors\n"
     "  run    DIR|SPEC [options]     run the application on the embedded runtime\n"
     "  docs   SPEC [-o DIR]          Markdown, Graphviz DOT and SVG, Mermaid\n"
+    "  import yarp APP.xml -o SPEC   a yarpmanager application and its Lua monitors as a spec\n"
     "\n"
     "`arbc <command> --help` describes a command's options.\n"
     "exit codes: 0 fine, 1 refuted or unknown, 2 bad input, 3 run-time failure\n";
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
     if (command == "build") return build_command(args);
     if (command == "run") return run_command(args);
     if (command == "docs") return docs_command(args);
+    if (command == "import") return import_command(args);
   } catch (const std::exception& e) {
     // A bug, not a user error: say so plainly rather than dying on a signal.
     std::fprintf(stderr, "arbc: internal error: %s\n", e.what());

@@ -1,4 +1,4 @@
-// `arbc verify [SPEC | APP.json]...`: the proof (docs/design.md#the-proof) on each input.
+// `arbc verify [SPEC | APP.json | APP.xml]...`: the proof (docs/design.md#the-proof) on each input.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_loader.h"
+#include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
 #include "verify/report_format.h"
@@ -20,6 +21,7 @@ constexpr const char* kDescription =
     "Prove that in no event state can two rules of one arbitrated port be selected, and run the\n"
     "other checks (dead, unfed, unused, ownership, complete, assert; see docs/checks.md).\n"
     "With no inputs, verifies specs/*.spec in the current directory (for pre-commit hooks).\n"
+    "An APP.xml is a yarpmanager application with Lua monitors (docs/yarp.md).\n"
     "Exit codes: 0 proved, 1 refuted or unknown, 2 bad input.";
 
 // An app.json (or a directory holding one) is proved together with its monitors: each must
@@ -54,7 +56,10 @@ int verify_command(std::span<char*> args) {
   std::string format = "text";
   verify::VerifyOptions options;
   bool stats = false;
-  cli.add_option("inputs", inputs, "specs (*.spec), app.json files, or `arbc build` directories");
+  std::vector<std::string> yarp_paths;
+  cli.add_option("inputs", inputs,
+                 "specs (*.spec), app.json files, `arbc build` directories, or yarpmanager "
+                 "application XMLs (*.xml)");
   cli.add_option("--format", format, "output format")
       ->check(CLI::IsMember({"text", "json", "sarif"}))
       ->capture_default_str();
@@ -69,6 +74,8 @@ int verify_command(std::span<char*> args) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cli.add_flag("--stats", stats, "add timings and solver query counts");
+  cli.add_option("--yarp-path", yarp_paths,
+                 "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -90,6 +97,13 @@ int verify_command(std::span<char*> args) {
   bool bad_input = false;
   std::vector<verify::InputReport> reports;
   for (const std::string& input : inputs) {
+    if (is_yarp_application(input)) {
+      YarpVerify y = verify_yarp_application(input, options, yarp_paths);
+      std::fputs(y.diagnostics.c_str(), stderr);
+      bad_input |= !y.ok;
+      if (y.ok) reports.push_back({input, std::move(y.report)});
+      continue;
+    }
     ModelLoad load = load_model(input);
     std::fputs(load.diagnostics.c_str(), stderr);
     if (!load.ok) {

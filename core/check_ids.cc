@@ -50,6 +50,19 @@ constexpr CheckId kIds[] = {
     {"unknown-type", "a type name that is not declared"},
     {"unterminated-comment", "a `/*` comment without its `*/`"},
     {"unterminated-string", "a string literal without its closing quote"},
+    // `arbc verify APP.xml` and `arbc import yarp` (docs/yarp.md#diagnostics; golden cases in
+    // tests/yarp_verify/).
+    {"yarp-carrier", "a carrier string YARP reads differently, or a monitor arbc cannot read"},
+    {"yarp-constraint-syntax", "a monitor's constraint that does not parse"},
+    {"yarp-event-forever", "an event set without a lifetime that its monitor never unsets"},
+    {"yarp-keyword-event", "an event name that is, or is part of, and/or/not/true/false"},
+    {"yarp-monitor-missing", "the Lua file a carrier names is not found"},
+    {"yarp-opaque", "a monitor whose event names arbc cannot all know"},
+    {"yarp-script-error", "a monitor that fails to load, or whose create fails"},
+    {"yarp-shared-event", "an event set or read by monitors on different ports"},
+    {"yarp-substring-event", "an event name YARP also replaces inside another name"},
+    {"yarp-trig-interval", "PortMonitor.setTrigInterval, whose period YARP multiplies by 1000"},
+    {"yarp-xml", "a yarpmanager XML that cannot be read, or parts of it arbc does not read"},
 };
 
 }  // namespace

@@ -10,6 +10,7 @@ packages=(
   libz3-dev                                  # the proof
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtinyxml2-dev                            # arbc verify APP.xml: yarpmanager applications
   graphviz                                   # arbc docs: app.svg
 )
 if [[ "${1:-}" == "--test" ]]; then

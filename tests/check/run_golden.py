@@ -71,6 +71,8 @@ def main():
         listed = subprocess.run([arbc, "check", "--list-ids"], capture_output=True, text=True,
                                 check=True).stdout
         declared = {line.split()[0] for line in listed.splitlines() if line.strip()}
+        # The yarp-* ids come from `arbc verify APP.xml`: tests/yarp_verify/ has their cases.
+        declared = {i for i in declared if not i.startswith("yarp-")}
         for missing in sorted(declared - seen_ids):
             failures.append(f"diagnostic id [{missing}] has no golden case in tests/check/")
         for unknown in sorted(seen_ids - declared):

@@ -1,0 +1,60 @@
+// `arbc import yarp APP.xml -o app.spec`: a yarpmanager application as a spec whose rules run
+// the original Lua monitors (docs/yarp.md#moving-to-a-spec).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+
+#include "cli/commands.h"
+#include "core/diagnostic.h"
+#include "import/yarp/spec_writer.h"
+#include "import/yarp/yarp_import.h"
+
+namespace arbc::cli {
+namespace {
+
+constexpr const char* kDescription =
+    "Write a spec equivalent to an application written for another middleware. `yarp`: a\n"
+    "yarpmanager application XML and its Lua port monitors; rules become `script` rules that\n"
+    "run the original monitors (docs/yarp.md). YARP hazards are reported as warnings.\n"
+    "Exit codes: 0 written, 2 bad input.";
+
+}  // namespace
+
+int import_command(std::span<char*> args) {
+  CLI::App cli(kDescription, "arbc import");
+  std::string kind, input, output;
+  std::vector<std::string> search_paths;
+  cli.add_option("kind", kind, "what to import: yarp")->required()->check(CLI::IsMember({"yarp"}));
+  cli.add_option("input", input, "the yarpmanager application XML")->required();
+  cli.add_option("-o,--output", output, "the spec to write")->required();
+  cli.add_option("--yarp-path", search_paths,
+                 "a folder to search for the Lua monitors the carriers name (repeatable)");
+  try {
+    cli.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    int code = cli.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  yarp::YarpImport im = yarp::import_yarp(input, {search_paths});
+  SourceCache sources;
+  for (Diagnostic d : im.diagnostics) {
+    if (im.ok && d.severity == Severity::Error) d.severity = Severity::Warning;  // still written
+    std::fputs(render(d, &sources).c_str(), stderr);
+  }
+  if (!im.ok) {
+    std::fprintf(stderr, "arbc import: %s: nothing written (fix the errors above)\n",
+                 input.c_str());
+    return kExitBadInput;
+  }
+  std::ofstream out(output, std::ios::binary);
+  out << yarp::write_spec(im, output);
+  if (!out.flush()) {
+    std::fprintf(stderr, "arbc import: cannot write %s\n", output.c_str());
+    return kExitBadInput;
+  }
+  std::fprintf(stderr, "arbc import: wrote %s (%zu connections)\n", output.c_str(),
+               im.app.connections.size());
+  return kExitOk;
+}
+
+}  // namespace arbc::cli

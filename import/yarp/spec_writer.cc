@@ -1,0 +1,188 @@
+#include "import/yarp/spec_writer.h"
+
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "core/effective_guard.h"
+
+namespace arbc::yarp {
+namespace {
+
+constexpr const char* kSpecKeywords[] = {
+    "app",      "type",     "const", "module",    "in",        "out",       "event", "events",
+    "from",     "lifetime", "for",   "exclusive", "invariant", "arbitrate", "by",    "priority",
+    "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
+    "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
+    "not",      "and",      "or",    "true",      "false",     "otherwise"};
+
+bool is_keyword(const std::string& s) {
+  for (const char* k : kSpecKeywords) {
+    if (s == k) return true;
+  }
+  return false;
+}
+
+// A spec name for any text: letters, digits and '_', not starting with a digit, no keyword.
+std::string identifier(const std::string& text) {
+  std::string out;
+  for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  while (!out.empty() && out.front() == '_') out.erase(out.begin());
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "p_" + out;
+  if (is_keyword(out)) out += "_";
+  return out;
+}
+
+struct SpecPort {
+  std::string module, port;
+  bool out = false;
+};
+
+// YARP port name -> Module.port, unique.
+std::map<std::string, SpecPort> name_ports(const YarpImport& im) {
+  std::map<std::string, SpecPort> ports;
+  std::set<std::string> taken;
+  auto add = [&](const std::string& yarp, bool out) {
+    if (ports.count(yarp)) return;
+    size_t slash = yarp.find_last_of('/');
+    std::string module = slash == std::string::npos || slash == 0
+                             ? identifier(yarp)
+                             : identifier(yarp.substr(0, slash));
+    std::string port = identifier(slash == std::string::npos ? "port" : yarp.substr(slash + 1));
+    std::string base = port;
+    for (int i = 2; !taken.insert(module + "." + port).second; ++i)
+      port = base + "_" + std::to_string(i);
+    ports[yarp] = {module, port, out};
+  };
+  for (const model::Connection& c : im.app.connections) add(c.source, true);
+  for (const model::Connection& c : im.app.connections) add(c.destination, false);
+  return ports;
+}
+
+std::string qualified(const std::map<std::string, SpecPort>& ports, const std::string& yarp) {
+  const SpecPort& p = ports.at(yarp);
+  return p.module + "." + p.port;
+}
+
+std::string duration(double seconds) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%gs", seconds);
+  return buf;
+}
+
+std::string modules_text(const std::map<std::string, SpecPort>& ports) {
+  std::map<std::string, std::vector<std::string>> by_module;
+  for (const auto& [yarp, p] : ports) {
+    by_module[p.module].push_back(std::string(p.out ? "out " : "in ") + p.port + ": Bottle;");
+  }
+  std::string s;
+  for (const auto& [module, decls] : by_module) {
+    s += "module " + module + " {";
+    for (const std::string& d : decls) s += " " + d;
+    s += " }\n";
+  }
+  return s;
+}
+
+std::string events_text(const YarpImport& im) {
+  std::string s;
+  for (const model::Event& e : im.app.events) {
+    if (identifier(e.name) != e.name) {
+      s += "// event '" + e.name + "' has no spec name; constraints that read it are commented\n";
+      continue;
+    }
+    s += "event " + e.name + (e.lifetime ? " lifetime " + duration(*e.lifetime) : "") + ";\n";
+  }
+  for (const model::ExclusiveGroup& g : im.app.exclusive_groups) {
+    s += "exclusive { " + g.events[0] + ", " + g.events[1] + " };  // " +
+         std::filesystem::path(g.loc.file).filename().string() +
+         " sets one only with the other unset\n";
+  }
+  return s;
+}
+
+// `script "path";` relative to the spec's folder.
+std::string script_body(const ImportedConnection& ic, const std::string& spec_path) {
+  if (!ic.monitor) return ";";
+  std::filesystem::path base = std::filesystem::path(spec_path).parent_path();
+  std::filesystem::path rel =
+      std::filesystem::path(ic.monitor->path)
+          .lexically_relative(base.empty() ? std::filesystem::path(".") : base);
+  std::string p = rel.empty() ? ic.monitor->path : rel.generic_string();
+  return " { script \"" + p + "\"; }";
+}
+
+bool spec_names_ok(const Constraint& c) {
+  std::set<std::string> events;
+  c.collect_events(events);
+  for (const std::string& e : events) {
+    if (identifier(e) != e) return false;
+  }
+  return true;
+}
+
+// A `script` rule is opaque to the verifier, so what the monitor provably does before the
+// decision (must-set, must-unset) goes into its `when`: the effective guard, which selects the
+// same messages at run time (docs/design.md#effective-guards).
+std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string, SpecPort>& ports,
+                      const std::string& spec_path) {
+  const ImportedConnection& ic = im.connections[i];
+  const model::Connection& c = im.app.connections[i];
+  Constraint guard = model::effective_guard(im.app, c.destination, c);
+  std::string s;
+  if (ic.meaning.parsed && !(c.constraint == ic.meaning.written) &&
+      c.kind == model::ConnectionKind::Rule)
+    s += "  // written `" + ic.meaning.text + "`: YARP's evaluator selects as below\n";
+  if (c.kind == model::ConnectionKind::Feed)
+    s += "  // a feed: its accept never returns true, so it only sets events\n";
+  if (!(guard == c.constraint))
+    s += "  // its monitor sets or unsets events before the decision: selected on `" +
+         guard.to_string() + "`\n";
+  std::string when = guard.to_string();
+  if (!spec_names_ok(guard)) {
+    s += "  // constraint `" + ic.meaning.text + "` reads names a spec cannot hold\n";
+    when = "false";
+  }
+  s += "  " + identifier(c.name) + ": from " + qualified(ports, c.source);
+  if (when != "true") s += " when " + when;
+  return s + script_body(ic, spec_path) + "\n";
+}
+
+}  // namespace
+
+std::string write_spec(const YarpImport& im, const std::string& spec_path) {
+  std::map<std::string, SpecPort> ports = name_ports(im);
+  std::string s = "// Imported from " + im.xml.file + " by `arbc import yarp` (docs/yarp.md).\n";
+  s += "// Rules run the original monitors, written for YARP's Lua API (`script`).\n// Ports:\n";
+  for (const auto& [yarp, p] : ports) s += "//   " + yarp + " = " + p.module + "." + p.port + "\n";
+  s += "app " + identifier(im.app.name);
+  if (!im.app.description.empty()) {
+    std::string d;
+    for (char c : im.app.description) d += c == '"' || c == '\\' || c == '\n' ? ' ' : c;
+    s += " \"" + d + "\"";
+  }
+  s += ";\n\n// A YARP Bottle holds any values; the spec does not type them.\ntype Bottle = "
+       "list<string>;\n\n";
+  s += modules_text(ports) + "\n" + events_text(im);
+  for (const model::ArbitratedPort& ap : im.app.arbitrated_ports) {
+    s += "\narbitrate " + qualified(ports, ap.port) + " {\n";
+    for (size_t i = 0; i < im.app.connections.size(); ++i) {
+      const model::Connection& c = im.app.connections[i];
+      if (c.destination == ap.port) s += rule_text(im, i, ports, spec_path);
+    }
+    s += "}\n";
+  }
+  bool first = true;
+  for (size_t i = 0; i < im.app.connections.size(); ++i) {
+    const model::Connection& c = im.app.connections[i];
+    if (c.kind != model::ConnectionKind::Connect) continue;
+    s += std::string(first ? "\n" : "") + "connect " + qualified(ports, c.source) + " -> " +
+         qualified(ports, c.destination) + script_body(im.connections[i], spec_path) + "\n";
+    first = false;
+  }
+  return s;
+}
+
+}  // namespace arbc::yarp

@@ -1,0 +1,2 @@
+-- plain.lua: a monitor that does nothing (a constraint can come from the carrier string).
+require("yarp")

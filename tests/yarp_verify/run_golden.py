@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Golden tests of `arbc verify APP.xml` and `arbc import yarp` (tests/yarp_verify/<case>/).
+
+usage: run_golden.py ARBC [--update] [CASE...]
+
+For each case folder holding <case>.xml, runs `arbc verify <case>.xml` inside it and compares
+its exit code, stdout and stderr with <case>.out. When the case has <case>.spec, it also copies
+the folder to a temporary one, runs `arbc import yarp <case>.xml -o <case>.spec` there, compares
+the written spec with <case>.spec, and checks that `arbc check` accepts it and `arbc verify`
+gives the spec the XML's verdict. Finally every yarp-* id of `arbc check --list-ids` must
+appear in some <case>.out. --update rewrites the .out and .spec files (review them by eye).
+YARP_DATA_HOME and YARP_DATA_DIRS are cleared, so monitors are found only beside the XML.
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ENV = {k: v for k, v in os.environ.items() if k not in ("YARP_DATA_HOME", "YARP_DATA_DIRS")}
+
+
+def run(args, cwd):
+    p = subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=120, env=ENV)
+    return p.returncode, p.stdout, p.stderr
+
+
+def verify_text(arbc, name, folder):
+    code, out, err = run([arbc, "verify", name + ".xml"], folder)
+    return code, f"# arbc verify {name}.xml (exit {code})\n## stdout\n{out}## stderr\n{err}"
+
+
+def check_import(arbc, name, folder, update, xml_code):
+    """Failures of the import half of a case, as a list of strings."""
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        copy = os.path.join(tmp, name)
+        shutil.copytree(folder, copy)
+        os.remove(os.path.join(copy, name + ".spec"))
+        code, _, err = run([arbc, "import", "yarp", name + ".xml", "-o", name + ".spec"], copy)
+        if code != 0:
+            return [f"{name}: arbc import exited {code}\n{err}"]
+        written = open(os.path.join(copy, name + ".spec"), encoding="utf-8").read()
+        golden = os.path.join(folder, name + ".spec")
+        if update:
+            open(golden, "w", encoding="utf-8").write(written)
+        if written != open(golden, encoding="utf-8").read():
+            failures.append(f"{name}: imported spec differs from {name}.spec\n{written}")
+        code, _, err = run([arbc, "check", name + ".spec"], copy)
+        if code != 0:
+            failures.append(f"{name}: arbc check rejects the imported spec\n{err}")
+        code, out, err = run([arbc, "verify", name + ".spec"], copy)
+        if code != xml_code:
+            failures.append(f"{name}: the spec verifies with exit {code}, the XML with "
+                            f"{xml_code}\n{out}{err}")
+    return failures
+
+
+def main():
+    args = sys.argv[1:]
+    if not args:
+        sys.exit(__doc__)
+    arbc = os.path.abspath(args[0])
+    update = "--update" in args
+    only = [a for a in args[1:] if a != "--update"]
+    cases = sorted(d for d in os.listdir(HERE)
+                   if os.path.isfile(os.path.join(HERE, d, d + ".xml")))
+    if only:
+        cases = [c for c in cases if c in only]
+    failures, seen = [], set()
+    for name in cases:
+        folder = os.path.join(HERE, name)
+        code, text = verify_text(arbc, name, folder)
+        out_path = os.path.join(folder, name + ".out")
+        if update:
+            open(out_path, "w", encoding="utf-8").write(text)
+        expected = open(out_path, encoding="utf-8").read() if os.path.exists(out_path) else None
+        seen.update(re.findall(r"\[(yarp-[a-z-]+)\]$", expected or "", re.M))
+        if code < 0:
+            failures.append(f"{name}: killed by signal {-code}")
+        elif expected is None:
+            failures.append(f"{name}: no {name}.out (run with --update and review it)")
+        elif text != expected:
+            failures.append(f"{name}: output differs\n--- expected\n{expected}--- actual\n{text}")
+        if os.path.exists(os.path.join(folder, name + ".spec")):
+            failures += check_import(arbc, name, folder, update, code)
+    if not only:
+        listed = run([arbc, "check", "--list-ids"], HERE)[1]
+        declared = {l.split()[0] for l in listed.splitlines() if l.startswith("yarp-")}
+        for missing in sorted(declared - seen):
+            failures.append(f"diagnostic id [{missing}] has no golden case in tests/yarp_verify/")
+    for f in failures:
+        print("FAIL", f)
+    print(f"{len(cases)} cases, {len(failures)} failures")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,7 @@
+-- head_cmd.lua: a command reaches the head while it is not busy.
+require("yarp")
+
+PortMonitor.create = function(options)
+  PortMonitor.setConstraint("not e_busy")
+  return true
+end
