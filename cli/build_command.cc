@@ -1,4 +1,4 @@
-// `arbc build SPEC [-o DIR] [--target embedded] [--no-verify]` (DESIGN.md sections 6, 8):
+// `arbc build SPEC [-o DIR] [--target embedded] [--no-verify]` (docs/cli.md#arbc-build):
 // compile the spec, prove it, then write DIR/<app>/app.json and DIR/<app>/monitors/*.lua.
 #include <CLI/CLI.hpp>
 #include <algorithm>

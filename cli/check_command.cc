@@ -1,4 +1,4 @@
-// `arbc check SPEC... [--format text|json]`: parse and semantic checks (DESIGN.md section 8).
+// `arbc check SPEC... [--format text|json]`: parse and semantic checks (docs/cli.md#arbc-check).
 // Exit 0 when every spec is fine, 2 when any has an error. Text diagnostics go to stderr,
 // JSON to stdout.
 #include <CLI/CLI.hpp>

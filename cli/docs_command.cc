@@ -1,4 +1,5 @@
-// arbc docs SPEC|APP.json [-o DIR]: index.md, app.dot, app.svg, app.mmd.
+// arbc docs SPEC|APP.json [-o DIR]: index.md, app.dot, app.svg, app.mmd (docs/cli.md#arbc-docs).
+// Above docs::kMaxDiagramElements only index.md: the drawings are skipped, and it says so.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -72,13 +73,34 @@ int docs_command(std::span<char*> args) {
     return kExitBadInput;
   }
   std::filesystem::path dir(out_dir);
+  docs::DocsInput doc{&app.value(), verdict_lines(*app), "app.svg", ""};
+  size_t elements = docs::diagram_elements(*app);
+  if (elements > docs::kMaxDiagramElements) {
+    // Graphviz would run for minutes and nobody could read the result: tables only.
+    std::string why =
+        "The diagram is skipped for size: " + std::to_string(app->modules.size()) +
+        " modules, " + std::to_string(app->arbitrated_ports.size()) +
+        " arbitrated ports and " + std::to_string(app->connections.size()) +
+        " connections (" + std::to_string(elements) + " elements, more than " +
+        std::to_string(docs::kMaxDiagramElements) + ").";
+    doc.diagram_svg.clear();
+    doc.diagram_note = why + " The tables below describe the whole application.";
+    // Drawings from an earlier, smaller run would contradict index.md.
+    for (const char* stale : {"app.dot", "app.svg", "app.mmd"})
+      std::filesystem::remove(dir / stale, ec);
+    if (!write_file(dir / "index.md", docs::render_index_markdown(doc))) {
+      std::fprintf(stderr, "arbc docs: cannot write into '%s'\n", out_dir.c_str());
+      return kExitBadInput;
+    }
+    std::printf("%s\nwrote %s/index.md\n", why.c_str(), out_dir.c_str());
+    return kExitOk;
+  }
   std::string dot = docs::render_dot(*app);
   std::string svg, error;
   if (!docs::render_svg(dot, &svg, &error)) {
     std::fprintf(stderr, "arbc docs: %s\n", error.c_str());
     return kExitRuntimeFailure;
   }
-  docs::DocsInput doc{&app.value(), verdict_lines(*app), "app.svg"};
   bool ok = write_file(dir / "index.md", docs::render_index_markdown(doc)) &&
             write_file(dir / "app.dot", dot) && write_file(dir / "app.svg", svg) &&
             write_file(dir / "app.mmd", docs::render_mermaid(*app));

@@ -1,4 +1,4 @@
-// Loads the core model named on a command line (DESIGN.md section 2: the verifier and the code
+// Loads the core model named on a command line (docs/design.md#pipeline: the verifier and the code
 // generators read the core model, never the AST).
 //
 //   APP.json, or a directory holding app.json   read with core/app_json.h

@@ -1,4 +1,4 @@
-// `arbc verify [SPEC | APP.json | APP.xml]...`: the proof of DESIGN.md section 5 on each input.
+// `arbc verify [SPEC | APP.json | APP.xml]...`: the proof (docs/design.md#the-proof) on each input.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>

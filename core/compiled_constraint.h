@@ -1,5 +1,5 @@
 // Constraints compiled once, when set, into a form evaluated without parsing or allocation
-// (DESIGN.md section 4). Events are numbered per container by an EventIndex; the set of
+// (docs/design.md#the-message-path). Events are numbered per container by an EventIndex; the set of
 // present events is a bit mask.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Executors: who decides what runs when (DESIGN.md section 7).
+// Executors: who decides what runs when (docs/design.md#runtime).
 //
 // Both run tasks one at a time on the thread that called run(), in order of (time, posting
 // order), so everything the runtime and the modules do is serialised. The simulated executor

@@ -1,4 +1,5 @@
-// A port monitor script in its own sandbox, with the PortMonitor API of DESIGN.md section 6:
+// A port monitor script in its own sandbox, with the PortMonitor API
+// (docs/runtime.md#lua-monitors-the-portmonitor-api):
 //
 //   PortMonitor.create(options)  options = {source=, destination=, connection=}
 //   PortMonitor.accept(msg) -> boolean [, reason]   PortMonitor.update(msg) -> value

@@ -1,4 +1,4 @@
-// A sandboxed Lua state for one monitor (DESIGN.md section 6).
+// A sandboxed Lua state for one monitor (docs/runtime.md#the-sandbox).
 //
 // - Libraries: base, string, table, math, utf8, coroutine; no io, os, debug, package, and no
 //   require, load, loadstring, loadfile, dofile, string.dump. print writes to the run's log.

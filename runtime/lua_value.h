@@ -1,4 +1,5 @@
-// Conversion between Values and Lua values (the message form monitors see, DESIGN.md 6).
+// Conversion between Values and Lua values (the message form monitors see,
+// docs/runtime.md#messages-in-lua).
 //
 //   bool -> boolean, int -> integer, float -> float, string -> string,
 //   vec3 -> table {x=.., y=.., z=..}, list -> sequence {v1, v2, ...},

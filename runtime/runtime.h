@@ -1,5 +1,5 @@
 // A running application: modules from the registry, connections with their Lua monitors,
-// one event container per input port, an executor and a trace (DESIGN.md sections 4, 7).
+// one event container per input port, an executor and a trace (docs/design.md#runtime).
 //
 // The message path, for a message on connection c into port P at time t:
 //   1. c's accept(msg) runs (it may set and unset events); false: drop `rejected`.

@@ -1,5 +1,5 @@
 // Escapes and faults: each fails cleanly, is counted and reported, and the process (and the
-// rest of the app) keeps running (DESIGN.md section 6).
+// rest of the app) keeps running (docs/runtime.md#the-sandbox).
 #include <gtest/gtest.h>
 
 #include <chrono>

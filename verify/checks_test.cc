@@ -1,4 +1,4 @@
-// Each check of DESIGN.md section 5 on the table_clean model, with a mutation that triggers it.
+// Each check of docs/checks.md on the table_clean model, with a mutation that triggers it.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

@@ -104,7 +104,8 @@ model::App random_app(Generator& g) {
   return app;
 }
 
-// The reference semantics, written independently of verify/: DESIGN.md section 5 by enumeration.
+// The reference semantics, written independently of verify/: docs/design.md#the-proof by
+// enumeration.
 struct BruteForce {
   int n = 0;
   const model::App* app = nullptr;
@@ -126,7 +127,7 @@ struct BruteForce {
     return false;
   }
 
-  // DESIGN.md section 5: the port's events are those its effective guards and asserts read;
+  // docs/design.md#the-proof: the port's events are those its effective guards and asserts read;
   // the domain is the invariants and groups that mention them, closed transitively.
   void select_domain() {
     std::set<std::string> scope;

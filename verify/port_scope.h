@@ -1,4 +1,5 @@
-// The proof obligation of one arbitrated port, before any solver sees it (DESIGN.md section 5).
+// The proof obligation of one arbitrated port, before any solver sees it
+// (docs/design.md#the-proof).
 //
 // For each rule c the effective guard (core/effective_guard.h) is
 //   E_c = G_c and (events c sets on every accepting path)

@@ -1,4 +1,4 @@
-// What `arbc verify` found: per-port verdicts and findings (DESIGN.md section 5).
+// What `arbc verify` found: per-port verdicts and findings (docs/checks.md).
 //
 // The report is a plain value: the checks fill it in, the text / JSON / SARIF writers read it.
 // Nothing in it depends on Z3, so tools that only print reports need not link the solver.

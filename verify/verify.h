@@ -1,7 +1,7 @@
-// The verifier's public API (DESIGN.md section 5): proves, per arbitrated port, that no decision
-// state selects two rules, and runs the other checks (dead, unfed, unused, ownership, complete,
-// assert). Reads the core model only, so `arbc verify SPEC` (after lowering) and
-// `arbc verify app.json` give the same proof.
+// The verifier's public API (docs/design.md#the-proof): proves, per arbitrated port, that no
+// decision state selects two rules, and runs the other checks (dead, unfed, unused, ownership,
+// complete, assert). Reads the core model only, so `arbc verify SPEC` (after lowering) and `arbc
+// verify app.json` give the same proof.
 #pragma once
 
 #include <optional>

@@ -1,6 +1,7 @@
 // Generated monitors executed in a real Lua 5.4 state (not compared as text): messages go in,
-// accept/update results and the events in the port's container are checked. Section 4's
-// delivery steps are played by the harness; several monitors share one port's container.
+// accept/update results and the events in the port's container are checked. The delivery steps
+// (docs/design.md#the-message-path) are played by the harness; several monitors share one port's
+// container.
 #include <gtest/gtest.h>
 
 #include <filesystem>

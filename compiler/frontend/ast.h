@@ -1,4 +1,4 @@
-// The spec language's abstract syntax tree (DESIGN.md section 3), with source locations.
+// The spec language's abstract syntax tree (docs/language.md), with source locations.
 //
 // The parse-tree builder (ast_builder.*) fills the syntax; semantic analysis (sema.*) then
 // fills the fields marked "sema:" so that lowering never resolves a name or infers a type

@@ -1,5 +1,5 @@
 // Semantic analysis: resolves every name, types every expression, checks every rule of
-// DESIGN.md section 3, and fills the AST's "sema:" fields so lowering never resolves again.
+// docs/language.md, and fills the AST's "sema:" fields so lowering never resolves again.
 #pragma once
 
 #include <string>

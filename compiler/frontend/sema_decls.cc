@@ -1,5 +1,5 @@
 // Semantic analysis of declarations: duplicates, types, constants, modules and ports, events,
-// arbitrated ports and their rules, connects and assertions (DESIGN.md section 3).
+// arbitrated ports and their rules, connects and assertions (docs/language.md#declarations).
 #include <set>
 
 #include "compiler/frontend/sema.h"

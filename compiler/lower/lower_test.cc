@@ -1,4 +1,4 @@
-// One test (or a few) per lowering rule of DESIGN.md section 3, through the real front end.
+// One test (or a few) per lowering rule of docs/lowering.md, through the real front end.
 #include "compiler/lower/lower.h"
 
 #include <gtest/gtest.h>

@@ -5,8 +5,9 @@ usage: run_golden.py ARBC [--update] [CASE...]
 
 For each case, runs `arbc check <case>.spec` inside the case's folder and compares what it
 prints on stderr with <case>.err, byte for byte. The expected exit code is 0 when <case>.err
-is empty and 2 otherwise; a signal is always a failure. --update rewrites the .err files
-(review them by eye). That every diagnostic id has a golden case is check_ids_covered.py's job.
+is empty and 2 otherwise; a signal is always a failure. Without CASEs, every case runs.
+--update rewrites the .err files (review them by eye). ctest runs each case as its own test
+(check_golden.CASE). That every diagnostic id has a golden case is check_ids_covered.py's job.
 """
 import os
 import subprocess
@@ -30,8 +31,11 @@ def main():
     update = "--update" in args
     only = [a for a in args[1:] if a != "--update"]
     cases = sorted(d for d in os.listdir(HERE)
-                   if os.path.isdir(os.path.join(HERE, d)) and not d.startswith("."))
+                   if os.path.exists(os.path.join(HERE, d, d + ".spec")))
     if only:
+        unknown = sorted(set(only) - set(cases))
+        if unknown:
+            sys.exit(f"no such case: {', '.join(unknown)}")
         cases = [c for c in cases if c in only]
     failures = []
     for name in cases:
@@ -54,7 +58,7 @@ def main():
             failures.append(f"{name}: unexpected output on stdout: {out[:200]!r}")
     for f in failures:
         print("FAIL", f)
-    print(f"{len(cases)} cases, {len(failures)} failures")
+    print(f"{len(cases)} cases run, {len(failures)} failures")
     sys.exit(1 if failures else 0)
 
 
