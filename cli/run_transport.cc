@@ -78,6 +78,7 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
     }
   }
   if (!pick_domain(flags, dds.deployment, &dds.domain)) return false;
+  dds.wait_peers = flags.wait_peers.value_or(0);
   options->realtime = true;
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
@@ -101,6 +102,9 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "dds: a deployment file (domain, ros2, topics, types, qos; docs/distributed.md)");
   cli.add_option("--domain", flags->domain, "dds: the DDS domain (default: the deployment's, else "
                                             "ROS_DOMAIN_ID, else 0)");
+  cli.add_option("--wait-peers", flags->wait_peers,
+                 "dds: wait up to S wall seconds for a peer on every connected topic before "
+                 "starting (default 0: start at once)");
   cli.add_option("--time-scale", flags->time_scale,
                  "wall-clock runs: time runs K times as fast as the wall clock (default 1)");
 }
@@ -112,12 +116,17 @@ int apply_transport(const TransportFlags& flags, const model::App& app, RunOptio
                         : !flags.mediate.empty() ? "--mediate"
                         : !flags.deploy.empty()  ? "--deploy"
                         : flags.domain           ? "--domain"
+                        : flags.wait_peers       ? "--wait-peers"
                                                  : nullptr;
     if (needs) {
       print_error(std::string(needs) + " needs --transport dds (the in-process transport runs "
                                        "every module here)");
       return kExitBadInput;
     }
+  }
+  if (flags.wait_peers && !(*flags.wait_peers >= 0 && *flags.wait_peers <= 3600)) {
+    print_error("--wait-peers must be a number of seconds from 0 to 3600");
+    return kExitBadInput;
   }
   if (flags.time_scale && !(*flags.time_scale > 0 && *flags.time_scale <= 1000)) {
     print_error("--time-scale must be a number above 0 and at most 1000");

@@ -1,6 +1,6 @@
 // `arbc run`'s transport options (docs/distributed.md):
 //   --transport inproc|dds  --host M1,M2|all|none  --mediate M1,M2|all|none  --deploy FILE
-//   --domain N  --time-scale K
+//   --domain N  --time-scale K  --wait-peers S
 // `inproc` (the default) runs everything in this process on simulated time (or the wall clock
 // with --realtime). `dds` runs the hosted modules and the connections into the mediated ones
 // on the wall clock scaled by K, and exchanges the rest over DDS topics.
@@ -21,6 +21,7 @@ struct TransportFlags {
   std::string deploy;
   std::optional<int> domain;
   std::optional<double> time_scale;
+  std::optional<double> wait_peers;
 };
 
 void add_transport_options(CLI::App& cli, TransportFlags* flags);

@@ -1,6 +1,9 @@
 // What remote endpoints announce at discovery: a publisher or subscriber on one of this
 // process's topics with another type never matches (DDS matches by type name), so its
 // messages would silently not arrive. Report it, naming the topic and both types.
+#include <chrono>
+#include <thread>
+
 #include "dds/dds_transport_internal.h"
 
 namespace arbc::dds {
@@ -56,6 +59,54 @@ void DdsTransport::check_remote(const std::string& topic, const std::string& typ
     if (!mismatches_.insert(line).second) return;
   }
   report(line);
+}
+
+// A topic expects a peer when the app connects its port: an output read by some connection,
+// an input some connection delivers to. Others (an output nothing reads) may stay alone.
+std::vector<std::string> DdsTransport::topics_without_peers() const {
+  auto connected = [&](const std::string& port, bool as_source) {
+    for (const model::Connection& c : app_.connections) {
+      if ((as_source ? c.source : c.destination) == port) return true;
+    }
+    return false;
+  };
+  std::vector<std::string> alone;
+  for (const auto& r : readers_) {
+    if (r->publishers == 0 && connected(r->port.qualified, !r->input)) alone.push_back(r->topic);
+  }
+  for (const auto& w : writers_) {
+    if (w->subscribers == 0 && connected(w->port.qualified, !w->input)) alone.push_back(w->topic);
+  }
+  return alone;
+}
+
+// Waits (wall clock) until every topic that expects a peer has one, so that the first
+// messages of a run are not published before anyone listens; then a short grace, because a
+// match seen here may not be seen yet by the other side. Gives up after wait_peers seconds.
+void DdsTransport::start(const std::atomic<bool>* interrupt) {
+  if (options_.wait_peers <= 0 || !participant_) return;
+  using Clock = std::chrono::steady_clock;
+  auto begin = Clock::now();
+  auto deadline = begin + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(options_.wait_peers));
+  std::vector<std::string> alone = topics_without_peers();
+  while (!alone.empty() && Clock::now() < deadline && !(interrupt && interrupt->load())) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    alone = topics_without_peers();
+  }
+  double waited = std::chrono::duration<double>(Clock::now() - begin).count();
+  char line[160];
+  if (alone.empty()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    std::snprintf(line, sizeof line, "DDS: every connected topic has a peer (after %.1f s)",
+                  waited);
+    sink_->report(line);
+    return;
+  }
+  std::string names;
+  for (const std::string& t : alone) names += (names.empty() ? "" : ", ") + t;
+  std::snprintf(line, sizeof line, "DDS: starting after %.1f s with no peer yet on ", waited);
+  sink_->report(line + names + " (what is published there is lost until a peer comes)");
 }
 
 }  // namespace arbc::dds

@@ -29,6 +29,9 @@ struct DdsOptions {
   // Wall seconds without a message from a peer participant before it counts as gone (its
   // topics' publishers are then reported lost).
   double lease_seconds = 3;
+  // Wall seconds Transport::start waits for a peer on every topic that has one in the app
+  // (`--wait-peers`); then the run starts anyway, naming the topics still alone. 0: no wait.
+  double wait_peers = 0;
 };
 
 // A transport for `app` (its named types name the wire types). Nothing is created on the

@@ -119,6 +119,7 @@ class DdsTransport : public Transport {
   bool open(const TransportPlan& plan, TransportSink* sink, std::string* error) override;
   void publish(int out, const Value& v) override;
   void deliver(int in, const Delivery& d) override;
+  void start(const std::atomic<bool>* interrupt) override;
   void close() override;
   std::string summary() const override;
 
@@ -150,6 +151,8 @@ class DdsTransport : public Transport {
   bool add_reader(const Endpoint& e, std::string* error);
   bool add_writer(const Endpoint& e, std::string* error);
   // The wire type and topic of a port, checking that no two ports share a topic.
+  // The topics read or written here whose peer is still missing (dds_discovery.cc).
+  std::vector<std::string> topics_without_peers() const;
   bool wire_of(const TransportPort& port, std::string* topic,
                std::shared_ptr<const WireType>* wire, std::string* error);
 

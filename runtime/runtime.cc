@@ -92,6 +92,7 @@ void Runtime::report(const std::string& line) {
 void Runtime::start() {
   if (started_) return;
   started_ = true;  // from here on setTrigInterval schedules at once
+  transport_->start(options_.interrupt);  // may wait for peers: the run's time starts after
   start_time_ = now();
   if (options_.unknown_until_fed) collect_unknown_events();
   if (options_.report_silent_lapses) watch_lapses(0.1);
@@ -99,6 +100,7 @@ void Runtime::start() {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
     environment_slot_->name = "environment";
+    environment_slot_->kind = "environment";
     environment_slot_->random = seeded_generator(options_.seed, "environment");
     environment_slot_->guarded("setup", [&] { environment_->setup(*environment_slot_); });
   }
@@ -120,7 +122,6 @@ void Runtime::start() {
     }
     if (c.trig_interval > 0 && c.has_trig && c.trig_task == 0) schedule_trig(c);
   }
-  transport_->start();
   for (auto& m : modules_) m->guarded("start", [&] { m->module->start(); });
   for (auto& m : modules_) {
     double period = 0;
@@ -143,7 +144,24 @@ void Runtime::advance(double until) { executor_->run(until); }
 void Runtime::run() {
   start();
   if (stop_reason_.empty()) advance(options_.duration);
+  if (options_.interrupt && options_.interrupt->load() && stop_reason_.empty()) {
+    stop_reason_ = "interrupted";
+    trace_.log(now(), "runtime", "stop: interrupted");
+  }
   shutdown();
+}
+
+std::string Runtime::describe(const BusyMarker::Snapshot& b) {
+  if (b.kind.empty()) return "";
+  std::string who = b.kind == "monitor"  ? "the monitor of connection '" + b.name + "'"
+                    : b.kind == "module" ? "module '" + b.name + "'"
+                                         : "the environment";
+  return who + ", in " + b.callback;
+}
+
+void Runtime::abandon_trace(const std::string& why) {
+  trace_.log(now(), "runtime", "stop: " + why);
+  trace_.close();
 }
 
 void Runtime::shutdown() {
@@ -154,7 +172,11 @@ void Runtime::shutdown() {
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (c.monitor && !c.quarantined) {
-      LuaCall call = c.monitor->destroy();
+      LuaCall call;
+      {
+        BusyScope busy(busy_, "monitor", c.name, "destroy");
+        call = c.monitor->destroy();
+      }
       if (!call.ok()) monitor_failed(c, call, "destroy", false);
     }
   }

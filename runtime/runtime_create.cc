@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/join.h"
 #include "core/monitor_digests.h"
 #include "runtime/runtime_internal.h"
 
@@ -40,10 +41,9 @@ std::string conflict_error(const Runtime::Connection& c, const std::string& lua_
   return c.model->monitor + ": setConstraint: " + c.constraint_conflict;
 }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
+// The names, or "none".
+std::string names_or_none(const std::vector<std::string>& items) {
+  return items.empty() ? "none" : join(items);
 }
 
 std::unique_ptr<Executor> make_executor(const RunOptions& options) {
@@ -61,10 +61,12 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   std::unique_ptr<Runtime> rt(new Runtime());
   rt->app_ = app;
   rt->options_ = options;
+  if (!rt->options_.limits.interrupt) rt->options_.limits.interrupt = options.interrupt;
   rt->host_ = options.host;
   rt->mediate_ = options.mediate ? *options.mediate : options.host;
   for (const model::Event& e : app.events) rt->lifetimes_.emplace(e.name, e.lifetime);
   rt->executor_ = make_executor(options);
+  rt->executor_->set_interrupt(options.interrupt);
   if (!rt->create_environment(registry, error)) return nullptr;
   if (!rt->create_modules(registry, error)) return nullptr;
   if (!rt->create_connections(app_dir, error)) return nullptr;
@@ -95,7 +97,7 @@ bool Runtime::create_environment(const Registry& registry, std::string* error) {
   if (scenario_.empty()) scenario_ = scenarios.empty() ? "default" : scenarios.front();
   if (!scenarios.empty() &&
       std::find(scenarios.begin(), scenarios.end(), scenario_) == scenarios.end()) {
-    *error = "unknown scenario '" + scenario_ + "'; the environment knows: " + join(scenarios);
+    *error = "unknown scenario '" + scenario_ + "'; the environment knows: " + names_or_none(scenarios);
     return false;
   }
   return true;
@@ -112,7 +114,7 @@ bool Runtime::create_modules(const Registry& registry, std::string* error) {
         *error = "module '" + m.name +
                  "' is not registered; load the plugin that provides it with --plugin LIB "
                  "(registered modules: " +
-                 join(registry.module_names()) + ")";
+                 names_or_none(registry.module_names()) + ")";
         return false;
       }
       if (!create_module_slot(m, *factory, error)) return false;
@@ -273,7 +275,11 @@ bool Runtime::create_monitors(std::string* error) {
     Connection& c = *cp;
     if (!c.monitor) continue;
     bool created = false;
-    LuaCall call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "create");
+      call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
+    }
     if (!c.constraint_conflict.empty()) {
       *error = conflict_error(c, call.error);
       return false;

@@ -12,6 +12,7 @@
 // ports whose other end runs in another process through DDS topics.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <set>
@@ -81,8 +82,10 @@ class Transport {
   // Once, when the runtime is built: sets up what the plan needs (DDS: participant, topics,
   // readers, writers). False with *error when it cannot; nothing is exchanged yet.
   virtual bool open(const TransportPlan& plan, TransportSink* sink, std::string* error) = 0;
-  // Messages may flow from now on (called by Runtime::start, before the modules start).
-  virtual void start() {}
+  // Messages may flow from now on (called first by Runtime::start, before the modules and the
+  // environment start). A transport may wait here for its peers; it returns early once
+  // *interrupt (when not null) is true.
+  virtual void start(const std::atomic<bool>* interrupt) {}
   // A module hosted here published `v` on output `out` (v conforms to the port's type).
   virtual void publish(int out, const Value& v) = 0;
   // A connection mediated here delivers `d` into input `in`.

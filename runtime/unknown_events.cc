@@ -1,9 +1,10 @@
-// What a mediator does not know after it (re)starts (docs/design.md#feeds): an event a feed
-// provides is unknown until that feed has delivered once since start, or until the event's
-// lifetime has passed (by then any entry set before the start would have lapsed too). A rule
-// whose constraint reads an unknown event is not selected: absence of knowledge is not absence
-// of the event. This only removes selections, so the proof (at most one selected connection
-// per port) holds as before. Also: reporting events that lapse because their source is silent.
+// What a mediator does not know after it (re)starts
+// (docs/design.md#unknown-events-after-a-start): an event a feed provides is unknown until that
+// feed has delivered once since start, or until the event's lifetime has passed (by then any
+// entry set before the start would have lapsed too). A rule whose constraint reads an unknown
+// event is not selected: absence of knowledge is not absence of the event. This only removes
+// selections, so the proof (at most one selected connection per port) holds as before. Also:
+// reporting events that lapse because their source is silent.
 #include "runtime/runtime_internal.h"
 
 namespace arbc {

@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""The paper's experiment split in two processes over DDS (docs/distributed.md).
+
+W hosts the eight table_clean modules and the simulated world and mediates nothing; M hosts
+nothing and mediates every module; both run `--transport dds --time-scale 10`. Each case
+starts M, then W, and checks what each prints.
+
+usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
+  CASE  a scenario (reachable, tool, human, mixed, perturbed): every seed ends with a clean
+        table and 0 conflicts, and M ends cleanly on SIGTERM;
+        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again;
+        kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT.
+  SEEDS how many seeds (1..SEEDS) for a scenario (default 5).
+Every run gets a DDS domain of its own (a lock file under /tmp holds it), and the profile
+keeps DDS traffic on this machine, so parallel ctest runs do not see each other.
+"""
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+from dds_domain import Domain, environment
+
+SCALE = "10"
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+class Split:
+    def __init__(self, arbc, plugin, spec, profile):
+        self.arbc, self.plugin, self.profile = arbc, plugin, profile
+        self.dir = tempfile.mkdtemp(prefix="arbc-dds-split-")
+        built = subprocess.run([arbc, "build", spec, "-o", self.dir], capture_output=True, text=True)
+        if built.returncode != 0:
+            fail("arbc build: " + built.stdout + built.stderr)
+        self.app = os.path.join(self.dir, "table_clean")
+        self.domain = Domain()
+        self.env = environment(profile)
+
+    def start(self, role, extra):
+        common = ["--transport", "dds", "--time-scale", SCALE, "--domain", str(self.domain.id),
+                  "--wait-peers", "30"]
+        if role == "M":
+            words = [self.arbc, "run", self.app, "--host", "none", "--mediate", "all",
+                     "--duration", "100000s"] + common + extra
+        else:
+            words = [self.arbc, "run", self.app, "--plugin", self.plugin, "--host", "all",
+                     "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
+        return subprocess.Popen(words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, env=self.env)
+
+
+def finish(proc, name, timeout):
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+        fail(f"{name} did not end within {timeout} s:\n{out}")
+    return proc.returncode, out
+
+
+def stop(proc, name, sig=signal.SIGTERM):
+    proc.send_signal(sig)
+    return finish(proc, name, 15)
+
+
+def expect(cond, message, *outputs):
+    if not cond:
+        fail(message + "".join("\n--- output ---\n" + o for o in outputs))
+
+
+def check_w(rc, out, what):
+    expect(rc == 0, f"{what}: W exited {rc}", out)
+    expect("conflicts: 0\n" in out, f"{what}: W counted conflicts", out)
+    expect("stopped: table clean" in out, f"{what}: the table is not clean", out)
+
+
+def check_m_stopped(rc, out, what, signame="SIGTERM"):
+    expect(rc == 0, f"{what}: M exited {rc} after {signame}", out)
+    expect(f"interrupted ({signame})" in out, f"{what}: M did not say it was interrupted", out)
+    expect("result: success" in out, f"{what}: M did not end with its counters and result", out)
+    expect("dds: domain" in out, f"{what}: M printed no transport summary", out)
+
+
+def scenario(split, name, seeds):
+    for seed in range(1, seeds + 1):
+        what = f"{name} seed {seed}"
+        m = split.start("M", [])
+        w = split.start("W", ["--scenario", name, "--seed", str(seed)])
+        rc, out = finish(w, "W", 240)
+        mrc, mout = stop(m, "M")
+        check_w(rc, out, what)
+        check_m_stopped(mrc, mout, what)
+        expect("quarantined" not in mout, f"{what}: M quarantined a connection", mout)
+        print(f"ok {what}: {out.splitlines()[0] if out else ''}")
+
+
+def kill_m(split):
+    m = split.start("M", [])
+    w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
+    time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
+    expect(w.poll() is None, "W ended before M was killed", w.communicate()[0])
+    m.send_signal(signal.SIGKILL)
+    m.wait()
+    time.sleep(0.5)
+    m2 = split.start("M", [])
+    rc, out = finish(w, "W", 240)
+    mrc, mout = stop(m2, "M (restarted)")
+    check_w(rc, out, "kill-m")
+    check_m_stopped(mrc, mout, "kill-m")
+    print("ok kill-m: W survived M's SIGKILL; the restarted M finished the run\n" + out + mout)
+
+
+def kill_w(split):
+    m = split.start("M", [])
+    w = split.start("W", ["--scenario", "mixed", "--seed", "2"])
+    time.sleep(2.0)
+    expect(w.poll() is None, "W ended early", w.communicate()[0])
+    w.send_signal(signal.SIGKILL)
+    w.wait()
+    time.sleep(2.5)  # past every lifetime of table_clean's events at time scale 10
+    expect(m.poll() is None, "M ended when W was killed", m.communicate()[0])
+    mrc, mout = stop(m, "M", signal.SIGINT)
+    check_m_stopped(mrc, mout, "kill-w", "SIGINT")
+    expect(" lapsed at " in mout and "nothing from" in mout, "kill-w: M reported no lapse", mout)
+    expect("has no publisher any more" in mout, "kill-w: M did not notice W's topics go", mout)
+    print("ok kill-w: M kept running and reported the lapsed events\n" + mout)
+
+
+def main():
+    if len(sys.argv) < 6:
+        print(__doc__)
+        sys.exit(2)
+    arbc, plugin, spec, profile, case = sys.argv[1:6]
+    seeds = int(sys.argv[6]) if len(sys.argv) > 6 else 5
+    split = Split(arbc, plugin, spec, profile)
+    if case == "kill-m":
+        kill_m(split)
+    elif case == "kill-w":
+        kill_w(split)
+    else:
+        scenario(split, case, seeds)
+
+
+if __name__ == "__main__":
+    main()
