@@ -22,10 +22,10 @@
 
 #include "cli/commands.h"
 #include "cli/report/report_file.h"
-#include "cli/run_transport.h"
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
+#include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -207,8 +207,8 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  RunEnd end{load.app,   *runtime, options, records, report_path, report_file, proof,
-             describe_transport(transport, options)};
+  RunEnd end{load.app,    *runtime,    options, records,
+             report_path, report_file, proof,   describe_transport(transport, options)};
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;

@@ -100,8 +100,9 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "dds: the modules whose incoming connections run here (default: the hosted)");
   cli.add_option("--deploy", flags->deploy,
                  "dds: a deployment file (domain, ros2, topics, types, qos; docs/distributed.md)");
-  cli.add_option("--domain", flags->domain, "dds: the DDS domain (default: the deployment's, else "
-                                            "ROS_DOMAIN_ID, else 0)");
+  cli.add_option("--domain", flags->domain,
+                 "dds: the DDS domain (default: the deployment's, else "
+                 "ROS_DOMAIN_ID, else 0)");
   cli.add_option("--wait-peers", flags->wait_peers,
                  "dds: wait up to S wall seconds for a peer on every connected topic before "
                  "starting (default 0: start at once)");
@@ -119,8 +120,9 @@ int apply_transport(const TransportFlags& flags, const model::App& app, RunOptio
                         : flags.wait_peers       ? "--wait-peers"
                                                  : nullptr;
     if (needs) {
-      print_error(std::string(needs) + " needs --transport dds (the in-process transport runs "
-                                       "every module here)");
+      print_error(std::string(needs) +
+                  " needs --transport dds (the in-process transport runs "
+                  "every module here)");
       return kExitBadInput;
     }
   }

@@ -45,9 +45,9 @@ void DdsTransport::check_remote(const std::string& topic, const std::string& typ
            ", this process uses " + ours + "; they do not match, so nothing flows between them";
   } else if (user_data.rfind("arbc-type=", 0) == 0) {
     std::string remote = user_data.substr(10);
-    std::string local = port_of_topic_.count(topic) ? app_.find_port(port_of_topic_.at(topic))
-                                                           ->type->to_string()
-                                                     : remote;
+    std::string local = port_of_topic_.count(topic)
+                            ? app_.find_port(port_of_topic_.at(topic))->type->to_string()
+                            : remote;
     if (remote != local)
       line = "DDS: type mismatch on topic " + topic + ": both sides call the type " + ours +
              " but a remote " + what + " means " + remote + " and this process " + local +

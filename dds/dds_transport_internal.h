@@ -3,6 +3,8 @@
 // Not part of the public API.
 #pragma once
 
+#include <atomic>
+#include <deque>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -13,9 +15,6 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
-
-#include <atomic>
-#include <deque>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -133,8 +132,8 @@ class DdsTransport : public Transport {
   void report(std::string line);
   // A remote endpoint on `topic` announced `type` (and, when it is arbc, its spec type in
   // `user_data`): reported once when it is not this process's type.
-  void check_remote(const std::string& topic, const std::string& type,
-                    const std::string& user_data, const char* what);
+  void check_remote(const std::string& topic, const std::string& type, const std::string& user_data,
+                    const char* what);
 
  private:
   // A topic this process reads or writes, named before any DDS entity exists.
@@ -153,8 +152,8 @@ class DdsTransport : public Transport {
   // The wire type and topic of a port, checking that no two ports share a topic.
   // The topics read or written here whose peer is still missing (dds_discovery.cc).
   std::vector<std::string> topics_without_peers() const;
-  bool wire_of(const TransportPort& port, std::string* topic,
-               std::shared_ptr<const WireType>* wire, std::string* error);
+  bool wire_of(const TransportPort& port, std::string* topic, std::shared_ptr<const WireType>* wire,
+               std::string* error);
 
   model::App app_;
   DdsOptions options_;

@@ -126,42 +126,46 @@ void Runtime::drain(Connection& c) {
 
 // --- the path ----------------------------------------------------------------------------
 
+// Step 1 of the path: the monitor's accept (which also stages the message for update).
+// False when it dropped the message (counted with its reason).
+bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
+  if (!c.monitor || !(c.has_accept || c.has_update)) return true;
+  bool accepted = false;
+  std::string reason;
+  LuaCall call;
+  {
+    BusyScope busy(busy_, "monitor", c.name, "accept");
+    call = c.monitor->accept(msg, &accepted, &reason);
+  }
+  if (call.status == LuaCall::Status::NoValue) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NoValue, "accept");
+    return false;
+  }
+  if (!call.ok()) {
+    drop(c, DropReason::MonitorError, call.error);
+    monitor_failed(c, call, "accept");
+    return false;
+  }
+  c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
+  if (accepted) return true;
+  c.consecutive_errors = 0;
+  if (reason == drop_reason_name(DropReason::NoValue)) {
+    drop(c, DropReason::NoValue, "accept");
+  } else if (reason == drop_reason_name(DropReason::Throttled)) {
+    drop(c, DropReason::Throttled, "accept");
+  } else if (c.is_feed && reason.empty()) {
+    drop(c, DropReason::Feed);  // a feed's accept may itself say "never deliver"
+  } else {
+    drop(c, DropReason::Rejected, reason);
+  }
+  return false;
+}
+
 void Runtime::process(Connection& c, const Value& msg) {
   double t = now();
   // 1. accept (also stages the message for update).
-  if (c.monitor && (c.has_accept || c.has_update)) {
-    bool accepted = false;
-    std::string reason;
-    LuaCall call;
-    {
-      BusyScope busy(busy_, "monitor", c.name, "accept");
-      call = c.monitor->accept(msg, &accepted, &reason);
-    }
-    if (call.status == LuaCall::Status::NoValue) {
-      c.consecutive_errors = 0;
-      drop(c, DropReason::NoValue, "accept");
-      return;
-    }
-    if (!call.ok()) {
-      drop(c, DropReason::MonitorError, call.error);
-      monitor_failed(c, call, "accept");
-      return;
-    }
-    c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
-    if (!accepted) {
-      c.consecutive_errors = 0;
-      if (reason == drop_reason_name(DropReason::NoValue)) {
-        drop(c, DropReason::NoValue, "accept");
-      } else if (reason == drop_reason_name(DropReason::Throttled)) {
-        drop(c, DropReason::Throttled, "accept");
-      } else if (c.is_feed && reason.empty()) {
-        drop(c, DropReason::Feed);  // a feed's accept may itself say "never deliver"
-      } else {
-        drop(c, DropReason::Rejected, reason);
-      }
-      return;
-    }
-  }
+  if (!accepted_by_monitor(c, msg)) return;
   // 2. the constraint, on the container as accept left it; never on events not known yet.
   std::string unknown;
   if (!c.unknown.empty() && !knows_events_of(c, t, &unknown)) {

@@ -91,7 +91,7 @@ void Runtime::report(const std::string& line) {
 
 void Runtime::start() {
   if (started_) return;
-  started_ = true;  // from here on setTrigInterval schedules at once
+  started_ = true;                        // from here on setTrigInterval schedules at once
   transport_->start(options_.interrupt);  // may wait for peers: the run's time starts after
   start_time_ = now();
   if (options_.unknown_until_fed) collect_unknown_events();

@@ -198,6 +198,7 @@ class Runtime {
   // when they happen even when no message arrives any more.
   void watch_lapses(double period);
   void report(const std::string& line);
+  bool accepted_by_monitor(Connection& c, const Value& msg);
   void enqueue(Connection& c, const Value& v);
   void drain(Connection& c);
   void process(Connection& c, const Value& msg);

@@ -97,7 +97,8 @@ bool Runtime::create_environment(const Registry& registry, std::string* error) {
   if (scenario_.empty()) scenario_ = scenarios.empty() ? "default" : scenarios.front();
   if (!scenarios.empty() &&
       std::find(scenarios.begin(), scenarios.end(), scenario_) == scenarios.end()) {
-    *error = "unknown scenario '" + scenario_ + "'; the environment knows: " + names_or_none(scenarios);
+    *error =
+        "unknown scenario '" + scenario_ + "'; the environment knows: " + names_or_none(scenarios);
     return false;
   }
   return true;

@@ -24,7 +24,7 @@ struct Runtime::InPort {
   bool mediated = false;  // the connections into it run here
   EventContainer container;
   std::vector<Connection*> feeds;  // the feed connections into it
-  InputStats stats;  // what arrived mediated by another process
+  InputStats stats;                // what arrived mediated by another process
 };
 
 // An output port and the connections leaving it, in model order.

@@ -37,9 +37,9 @@ TEST(UnknownEventsTest, ARuleWaitsForItsFeedAfterStart) {
   RunOptions o;
   o.unknown_until_fed = true;
   auto rt = t.start(o);
-  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));     // unknown: not selected
+  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));      // unknown: not selected
   TestApp::publish_at(*rt, 0.2, "Src", "f", Value(false));  // the feed speaks: e is absent
-  TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));     // selected
+  TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));      // selected
   rt->advance(1);
   EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.3});
   auto s = TestApp::stats_of(rt->stats(), "r");

@@ -35,7 +35,7 @@ def main():
                             out_dir], capture_output=True, text=True)
     if built.returncode != 0:
         fail("arbc build", built.stdout + built.stderr)
-    receiver = subprocess.Popen([sub, domain, "3", "60"], stdout=subprocess.PIPE,
+    receiver = subprocess.Popen([sub, domain, "6", "60"], stdout=subprocess.PIPE,
                                 stderr=subprocess.STDOUT, text=True, env=env)
     mediator = subprocess.Popen(
         [arbc, "run", os.path.join(out_dir, "teleop"), "--transport", "dds", "--host", "none",

@@ -3,13 +3,12 @@
 // and the types fastddsgen generated from Twist.idl; no arbc code.
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
-
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "TwistPubSubTypes.h"

@@ -7,10 +7,9 @@
 //      held off by joy's 2 s hold;
 //   3. 4 s later (the hold is over) nav 301..310 every 50 ms: nav passes again.
 // usage: interop_pub DOMAIN
+#include <chrono>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
-
-#include <chrono>
 #include <thread>
 
 #include "interop_common.h"

@@ -2,11 +2,10 @@
 // ROS 2 node would on /cmd_vel, and prints each message's linear.x, one per line. It stops
 // `linger` seconds after the last message (or after `timeout` seconds with none).
 // usage: interop_sub DOMAIN LINGER TIMEOUT
+#include <chrono>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
-
-#include <chrono>
 #include <thread>
 
 #include "interop_common.h"
