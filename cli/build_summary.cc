@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/join.h"
+
 namespace arbc::cli {
 
 namespace {
@@ -10,12 +12,6 @@ namespace {
 std::string pad(std::string s, size_t width) {
   if (s.size() < width) s.append(width - s.size(), ' ');
   return s;
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// `arbc check SPEC... [--format text|json]`: parse and semantic checks (DESIGN.md section 8).
+// `arbc check SPEC... [--format text|json]`: parse and semantic checks (docs/cli.md#arbc-check).
 // Exit 0 when every spec is fine, 2 when any has an error. Text diagnostics go to stderr,
 // JSON to stdout.
 #include <CLI/CLI.hpp>
@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "core/check_ids.h"
 #include "compiler/frontend/frontend.h"
+#include "core/check_ids.h"
 
 namespace arbc::cli {
 
@@ -47,7 +47,9 @@ int check_command(std::span<char*> args) {
   app.add_option("SPEC", specs, "spec files to check")->type_name("FILE");
   app.add_option("--format", format, "text (compiler style, on stderr) or json (on stdout)")
       ->check(CLI::IsMember({"text", "json"}));
-  app.add_flag("--list-ids", list_ids, "print every diagnostic id the checker can report");
+  app.add_flag("--list-ids", list_ids,
+               "print every diagnostic id arbc can report: id, stage (check, verify, internal), "
+               "meaning");
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -56,7 +58,8 @@ int check_command(std::span<char*> args) {
   }
   if (list_ids) {
     for (const frontend::CheckId& id : frontend::all_check_ids())
-      std::printf("%-26s %s\n", std::string(id.id).c_str(), std::string(id.meaning).c_str());
+      std::printf("%-26s %-9s %s\n", std::string(id.id).c_str(), std::string(id.stage).c_str(),
+                  std::string(id.meaning).c_str());
     return kExitOk;
   }
   if (specs.empty()) {

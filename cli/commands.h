@@ -1,4 +1,4 @@
-// The subcommands of `arbc` (DESIGN.md section 8). Each takes the arguments after its name
+// The subcommands of `arbc` (docs/cli.md). Each takes the arguments after its name
 // (args[0] is the command name) and returns the process exit code:
 // 0 fine; 1 verification refuted or unknown; 2 bad input; 3 run-time failure.
 #pragma once

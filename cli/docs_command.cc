@@ -1,4 +1,5 @@
-// arbc docs SPEC|APP.json [-o DIR]: index.md, app.dot, app.svg, app.mmd.
+// arbc docs SPEC|APP.json [-o DIR]: index.md, app.dot, app.svg, app.mmd (docs/cli.md#arbc-docs).
+// Above docs::kMaxDiagramElements only index.md: the drawings are skipped, and it says so.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include "cli/model_loader.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
+#include "core/join.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -20,18 +22,14 @@ bool write_file(const std::filesystem::path& path, const std::string& text) {
   return static_cast<bool>(out);
 }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
-  return s;
-}
-
 // One line per arbitrated port: the verdict and what it covers, then any finding.
 std::vector<std::string> verdict_lines(const model::App& app) {
   std::vector<std::string> lines;
-  verify::VerifyResult result = verify::verify_app(app, verify::VerifyOptions{});
-  if (!result.ok) return {"not verified: " + result.error};
-  for (const verify::PortResult& p : result.report.ports) {
+  std::string error;
+  std::optional<verify::VerifyReport> report =
+      verify::verify_app(app, verify::VerifyOptions{}, &error);
+  if (!report) return {"not verified: " + error};
+  for (const verify::PortResult& p : report->ports) {
     lines.push_back("`" + p.port + "`: " + verify::verdict_name(p.verdict) + " (rules " +
                     join(p.rules) + "; events " + (p.events.empty() ? "none" : join(p.events)) +
                     ")");
@@ -39,7 +37,7 @@ std::vector<std::string> verdict_lines(const model::App& app) {
       lines.push_back("`" + p.port + "`: " + severity_name(f.severity) + " [" + f.check + "] " +
                       f.message);
   }
-  for (const verify::Finding& f : result.report.app_findings)
+  for (const verify::Finding& f : report->app_findings)
     lines.push_back(std::string(severity_name(f.severity)) + " [" + f.check + "] " + f.message);
   return lines;
 }
@@ -59,10 +57,12 @@ int docs_command(std::span<char*> args) {
     return cli.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
 
-  ModelLoad loaded = load_model(input);
-  if (!loaded.diagnostics.empty()) std::fputs(loaded.diagnostics.c_str(), stderr);
-  if (!loaded.ok) {
-    if (!loaded.error.empty()) std::fprintf(stderr, "%s\n", loaded.error.c_str());
+  LoadNotes notes;
+  std::string load_error;
+  std::optional<model::App> app = load_model(input, &notes, &load_error);
+  if (!notes.rendered.empty()) std::fputs(notes.rendered.c_str(), stderr);
+  if (!app) {
+    if (!load_error.empty()) std::fprintf(stderr, "%s\n", load_error.c_str());
     return kExitBadInput;
   }
   std::error_code ec;
@@ -73,16 +73,37 @@ int docs_command(std::span<char*> args) {
     return kExitBadInput;
   }
   std::filesystem::path dir(out_dir);
-  std::string dot = docs::render_dot(loaded.app);
+  docs::DocsInput doc{&app.value(), verdict_lines(*app), "app.svg", ""};
+  size_t elements = docs::diagram_elements(*app);
+  if (elements > docs::kMaxDiagramElements) {
+    // Graphviz would run for minutes and nobody could read the result: tables only.
+    std::string why =
+        "The diagram is skipped for size: " + std::to_string(app->modules.size()) +
+        " modules, " + std::to_string(app->arbitrated_ports.size()) +
+        " arbitrated ports and " + std::to_string(app->connections.size()) +
+        " connections (" + std::to_string(elements) + " elements, more than " +
+        std::to_string(docs::kMaxDiagramElements) + ").";
+    doc.diagram_svg.clear();
+    doc.diagram_note = why + " The tables below describe the whole application.";
+    // Drawings from an earlier, smaller run would contradict index.md.
+    for (const char* stale : {"app.dot", "app.svg", "app.mmd"})
+      std::filesystem::remove(dir / stale, ec);
+    if (!write_file(dir / "index.md", docs::render_index_markdown(doc))) {
+      std::fprintf(stderr, "arbc docs: cannot write into '%s'\n", out_dir.c_str());
+      return kExitBadInput;
+    }
+    std::printf("%s\nwrote %s/index.md\n", why.c_str(), out_dir.c_str());
+    return kExitOk;
+  }
+  std::string dot = docs::render_dot(*app);
   std::string svg, error;
   if (!docs::render_svg(dot, &svg, &error)) {
     std::fprintf(stderr, "arbc docs: %s\n", error.c_str());
     return kExitRuntimeFailure;
   }
-  docs::DocsInput doc{&loaded.app, verdict_lines(loaded.app), "app.svg"};
   bool ok = write_file(dir / "index.md", docs::render_index_markdown(doc)) &&
             write_file(dir / "app.dot", dot) && write_file(dir / "app.svg", svg) &&
-            write_file(dir / "app.mmd", docs::render_mermaid(loaded.app));
+            write_file(dir / "app.mmd", docs::render_mermaid(*app));
   if (!ok) {
     std::fprintf(stderr, "arbc docs: cannot write into '%s'\n", out_dir.c_str());
     return kExitBadInput;

@@ -25,51 +25,59 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
-ModelLoad load_spec_model(const std::string& path) {
-  ModelLoad out;
-  out.spec = true;
-#if ARBC_HAVE_SPEC_COMPILER
-  lower::CompiledSpec compiled = lower::compile_spec(path);
-  for (const Diagnostic& d : compiled.diagnostics) out.diagnostics += render(d, &compiled.sources);
-  if (!compiled.ok || !compiled.lowered) {
-    out.error = path + ": not verified: the spec has errors (fix them; `arbc check` lists them)";
-    return out;
-  }
-  out.ok = true;
-  out.app = compiled.lowered->app;
-#else
-  out.error = path +
-              ": verifying a spec needs the spec compiler (front end and lowering), which this "
-              "build of arbc does not include yet; build the app and verify its app.json "
-              "instead: arbc verify out/APP/app.json";
-#endif
-  return out;
+bool is_spec_path(const std::string& path) { return ends_with(path, ".spec"); }
+
+Diagnostic file_error(const std::string& file, std::string message, std::string id) {
+  Diagnostic d;
+  d.loc.file = file;
+  d.message = std::move(message);
+  d.id = std::move(id);
+  return d;
 }
 
-ModelLoad load_model(const std::string& path) {
+std::optional<model::App> load_spec_model(const std::string& path, LoadNotes* notes,
+                                          std::string* err) {
+#if ARBC_HAVE_SPEC_COMPILER
+  lower::CompiledSpec compiled = lower::compile_spec(path);
+  for (const Diagnostic& d : compiled.diagnostics) notes->rendered += render(d, &compiled.sources);
+  if (!compiled.ok || !compiled.lowered) {
+    *err = path + ": not verified: the spec has errors (fix them; `arbc check` lists them)";
+    notes->errors = compiled.diagnostics;
+    return std::nullopt;
+  }
+  return compiled.lowered->app;
+#else
+  *err = path +
+         ": verifying a spec needs the spec compiler (front end and lowering), which this "
+         "build of arbc does not include yet; build the app and verify its app.json "
+         "instead: arbc verify out/APP/app.json";
+  return std::nullopt;
+#endif
+}
+
+std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, std::string* err) {
   std::error_code ec;
-  if (ends_with(path, ".spec")) return load_spec_model(path);
+  if (is_spec_path(path)) return load_spec_model(path, notes, err);
   std::string file = path;
   if (std::filesystem::is_directory(path, ec))
     file = (std::filesystem::path(path) / "app.json").string();
   std::ifstream in(file, std::ios::binary);
-  ModelLoad out;
   if (!in) {
-    out.error = file +
-                ": cannot read the file; give a spec (*.spec), an app.json, or a directory "
-                "written by `arbc build`";
-    return out;
+    *err = file +
+           ": cannot read the file; give a spec (*.spec), an app.json, or a directory "
+           "written by `arbc build`";
+    notes->errors.push_back(file_error(file, err->substr(file.size() + 2), "io"));
+    return std::nullopt;
   }
   std::ostringstream text;
   text << in.rdbuf();
   model::AppLoad load = model::from_app_json(text.str());
   if (!load.ok) {
-    out.error = file + ": not a valid app.json: " + load.error;
-    return out;
+    *err = file + ": not a valid app.json: " + load.error;
+    notes->errors.push_back(file_error(file, "not a valid app.json: " + load.error, "app-json"));
+    return std::nullopt;
   }
-  out.ok = true;
-  out.app = std::move(load.app);
-  return out;
+  return std::move(load.app);
 }
 
 }  // namespace arbc::cli

@@ -7,10 +7,11 @@
 // report): a SPEC is built and verified into a temporary directory by `arbc build`, a DIR is
 // verified here; a refuted or unknown proof exits 1, and nothing runs. A DIR whose monitors
 // differ from the digests in its app.json is bad input. --report writes an HTML page about the
-// run (cli/report/run_report.h) from the trace records kept in memory.
+// run (cli/report/run_report.h) from the trace records kept in memory. Ctrl-C and SIGTERM end
+// the run within a second (cli/run_interrupt.h).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -19,7 +20,9 @@
 
 #include "cli/commands.h"
 #include "cli/report/report_file.h"
-#include "cli/report/run_report.h"
+#include "cli/run_end.h"
+#include "cli/run_interrupt.h"
+#include "cli/run_options.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -31,21 +34,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "60", "60s", "500ms", "2min" -> seconds; false on anything else.
-bool parse_duration(const std::string& text, double* seconds) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (...) {
-    return false;
-  }
-  std::string unit = text.substr(used);
-  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "min" ? 60 : -1;
-  if (scale < 0 || !(value > 0)) return false;
-  *seconds = value * scale;
-  return true;
-}
+// After a signal, how long the run may take to return before the watchdog gives up on it: a
+// stuck callback is then named and the process ends, within a second of the signal in all.
+constexpr double kStuckGrace = 0.6;
 
 // A temporary directory removed when the run ends.
 struct TempDir {
@@ -89,27 +80,17 @@ int prepare_app_dir(const std::string& input, bool no_verify, TempDir* temp, std
     *dir = input;
     return kExitOk;
   }
+  if (fs::path(input).filename() == "app.json" && fs::is_regular_file(input)) {
+    *dir = fs::path(input).parent_path().string();  // as `arbc verify` and `arbc docs` take it
+    if (dir->empty()) *dir = ".";
+    return kExitOk;
+  }
   if (fs::path(input).extension() == ".spec") return build_spec(input, no_verify, temp, dir);
   std::fprintf(stderr,
                "arbc run: error: %s: not an app directory (one with app.json and monitors/, "
-               "written by `arbc build`) nor a .spec file\n",
+               "written by `arbc build`), its app.json, nor a .spec file\n",
                input.c_str());
   return kExitBadInput;
-}
-
-// Ctrl-C ends the run cleanly (counters, summary, trace) instead of killing it.
-std::atomic<bool> interrupted{false};
-
-void on_interrupt(int) { interrupted = true; }
-
-void watch_for_interrupt(Runtime& runtime, double period) {
-  runtime.executor().post(runtime.now() + period, [&runtime, period] {
-    if (interrupted) {
-      runtime.executor().stop();
-      return;
-    }
-    watch_for_interrupt(runtime, period);
-  });
 }
 
 void print_errors(const std::vector<std::string>& errors) {
@@ -138,35 +119,6 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
   return kExitOk;
 }
 
-// The report's input: the header as `arbc run` prints it, the counters, the trace records.
-report::RunReportInput report_input(const model::App& app, Runtime& runtime,
-                                    const RunOptions& options, bool success,
-                                    const std::string& verdict, const std::string& proof,
-                                    const std::vector<TraceRecord>& records) {
-  report::RunReportInput input;
-  report::RunHeader& h = input.header;
-  h.app = app.name;
-  h.proof = proof;
-  h.description = app.description;
-  h.scenario = runtime.scenario();
-  h.seed = options.seed;
-  h.realtime = options.realtime;
-  h.requested = options.duration;
-  h.end = runtime.now();
-  h.stop_reason = runtime.stop_reason();
-  h.success = success;
-  h.verdict = verdict;
-  if (Environment* env = runtime.environment()) h.environment = env->summary();
-  std::vector<ConnectionStats> stats = runtime.stats();  // in the app's connection order
-  for (size_t i = 0; i < stats.size() && i < app.connections.size(); ++i) {
-    const model::Connection& c = app.connections[i];
-    input.connections.push_back(
-        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
-  }
-  input.records = &records;
-  return input;
-}
-
 }  // namespace
 
 int run_command(std::span<char*> args) {
@@ -175,14 +127,17 @@ int run_command(std::span<char*> args) {
   std::vector<std::string> plugins;
   bool no_verify = false;
   RunOptions options;
-  cli.add_option("app", input, "an app directory written by `arbc build` (or a .spec)")->required();
+  cli.add_option("app", input, "an app directory written by `arbc build`, its app.json, or a .spec")
+      ->required();
   cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
   cli.add_flag("--no-verify", no_verify,
                "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
-  cli.add_option("--seed", options.seed, "seed of every random generator (default 1)");
+  std::string seed_text = "1";
+  cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
+      ->type_name("UINT");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   std::string report_path;
   cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
@@ -192,11 +147,10 @@ int run_command(std::span<char*> args) {
     int rc = cli.exit(e);
     return rc == 0 ? kExitOk : kExitBadInput;
   }
-  if (!parse_duration(duration_text, &options.duration)) {
-    std::fprintf(stderr,
-                 "arbc run: error: --duration '%s' is not a positive duration such as 60s, "
-                 "500ms or 2min\n",
-                 duration_text.c_str());
+  std::string value_error;
+  if (!parse_run_duration(duration_text, &options.duration, &value_error) ||
+      !parse_seed(seed_text, &options.seed, &value_error)) {
+    std::fprintf(stderr, "arbc run: error: %s\n", value_error.c_str());
     return kExitBadInput;
   }
 
@@ -230,6 +184,8 @@ int run_command(std::span<char*> args) {
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!report_path.empty()) options.trace_records = &records;
+  RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
+  options.interrupt = interrupt.flag();
   std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
@@ -244,48 +200,17 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
-  watch_for_interrupt(*runtime, options.realtime ? 0.05 : 1.0);
+  RunEnd end{load.app, *runtime, options, records, report_path, report_file, proof};
+  interrupt.watch(kStuckGrace, [&] {
+    give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
+    std::error_code ignored;
+    if (!temp.path.empty()) fs::remove_all(temp.path, ignored);  // no destructor runs now
+  });
   runtime->run();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  if (interrupted) std::fputs("arbc run: interrupted\n", stderr);
-
-  std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", load.app.name.c_str(),
-              runtime->scenario().c_str(), static_cast<unsigned long long>(options.seed),
-              options.realtime ? "real" : "simulated", runtime->now(),
-              runtime->stopped_early() ? ", stopped: " : "", runtime->stop_reason().c_str());
-  std::fputs(runtime->stats_table().c_str(), stdout);
-  bool success = true;
-  std::string verdict;
-  if (Environment* env = runtime->environment()) {
-    std::string summary = env->summary();
-    if (!summary.empty()) {
-      std::fputs(summary.c_str(), stdout);
-      if (summary.back() != '\n') std::fputc('\n', stdout);
-    }
-    success = env->success();
-    verdict = success ? "success" : "failure";
-  } else {
-    for (const ConnectionStats& s : runtime->stats()) success &= !s.quarantined;
-    verdict = std::string(success ? "success" : "failure") +
-              " (no environment; judged by quarantined connections)";
+  if (!interrupt.run_returned()) {
+    for (;;) pause();  // the watchdog is ending the process
   }
-  std::printf("result: %s\n", verdict.c_str());
-  if (!report_path.empty()) {
-    report::RunReportInput input =
-        report_input(load.app, *runtime, options, success, verdict, proof, records);
-    if (interrupted && input.header.stop_reason.empty()) input.header.stop_reason = "interrupted";
-    std::string html = report::render_run_report(input);
-    std::string write_error = report_file.write(html);
-    if (!write_error.empty()) {
-      print_errors({write_error});
-      return kExitRuntimeFailure;
-    }
-    std::printf("report: %s (%zu bytes)\n", report_path.c_str(), html.size());
-  }
-  return success ? kExitOk : kExitRuntimeFailure;
+  return finish_run(end, interrupt.signal_name());
 }
 
 }  // namespace arbc::cli

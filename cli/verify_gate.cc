@@ -21,13 +21,14 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   VerifyGate gate;
   verify::VerifyOptions options;
   options.strict = strict;
-  verify::VerifyResult result = verify::verify_app(app, options);
-  if (!result.ok) {
-    std::fprintf(stderr, "%s: error: cannot verify: %s\n", input.c_str(), result.error.c_str());
+  std::string error;
+  std::optional<verify::VerifyReport> verified = verify::verify_app(app, options, &error);
+  if (!verified) {
+    std::fprintf(stderr, "%s: error: cannot verify: %s\n", input.c_str(), error.c_str());
     gate.exit_code = kExitBadInput;
     return gate;
   }
-  const verify::VerifyReport& report = result.report;
+  const verify::VerifyReport& report = *verified;
   bool findings = report.count(Severity::Error) + report.count(Severity::Warning) > 0;
   if (report.verdict != verify::Verdict::Proved || findings) {
     std::string text = verify::format_text({{input, report}}, sources, /*stats=*/false);

@@ -100,12 +100,13 @@ YarpVerify verify_yarp_application(const std::string& xml, const verify::VerifyO
     out.diagnostics += "arbc verify: " + xml + ": not verified (fix the errors above)\n";
     return out;
   }
-  verify::VerifyResult result = verify::verify_app(im.app, options);
-  if (!result.ok) {
-    out.diagnostics = "arbc verify: " + xml + ": " + result.error + "\n";
+  std::string error;
+  std::optional<verify::VerifyReport> report = verify::verify_app(im.app, options, &error);
+  if (!report) {
+    out.diagnostics = "arbc verify: " + xml + ": " + error + "\n";
     return out;
   }
-  out.report = std::move(result.report);
+  out.report = std::move(*report);
   drop_cross_port_findings(im.app, out.report);
   point_at_scripts(im, out.report);
   for (size_t i = 0; i < im.diagnostics.size(); ++i) {

@@ -1,5 +1,6 @@
 #include "core/app_json.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
@@ -261,15 +262,43 @@ App read_app(const Json& root) {
   return app;
 }
 
+// Line and column (1-based, in bytes) of byte offset `offset` of `text`.
+std::string position_of(std::string_view text, size_t offset) {
+  offset = std::min(offset, text.size());
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < offset; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// Parses text; on a syntax error says where ("not valid JSON at line 3, column 5: ...").
+// nlohmann-json reports syntax errors only as exceptions: caught here, at the boundary.
+bool parse_json(std::string_view text, Json* root, std::string* err) {
+  try {
+    *root = Json::parse(text.begin(), text.end());
+    return true;
+  } catch (const Json::parse_error& e) {
+    // e.byte is one past the offending byte; the library's own text repeats the position.
+    std::string what = e.what();
+    size_t colon = what.find(": ", what.find("parse error"));
+    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+    *err = "not valid JSON at " + position_of(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + detail;
+  }
+  return false;
+}
+
 }  // namespace
 
 AppLoad from_app_json(std::string_view text) {
   AppLoad result;
-  Json root = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (root.is_discarded()) {
-    result.error = "app.json: not valid JSON";
-    return result;
-  }
+  Json root;
+  if (!parse_json(text, &root, &result.error)) return result;
   try {
     result.app = read_app(root);
     result.ok = true;

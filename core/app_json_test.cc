@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace arbc::model {
 namespace {
 
@@ -77,7 +79,9 @@ TEST(AppJsonTest, EveryMonitorHasItsDigest) {
 }
 
 TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
-  EXPECT_EQ(from_app_json("{").error, "app.json: not valid JSON");
+  EXPECT_EQ(from_app_json("{").error,
+            "not valid JSON at line 1, column 2: syntax error while parsing object key - "
+            "unexpected end of input; expected string literal");
   EXPECT_EQ(from_app_json("[]").error, "app.json: expected a JSON object");
   std::string text = to_app_json(small_app());
   std::string bad = text;
@@ -90,6 +94,18 @@ TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
   bad.replace(bad.find("\"schema_version\": 2"), 19, "\"schema_version\": 1");
   EXPECT_NE(from_app_json(bad).error.find("this arbc reads version 2, the file has 1"),
             std::string::npos);
+}
+
+TEST(AppJsonTest, ASyntaxErrorNamesItsLineAndColumn) {
+  std::string text = to_app_json(small_app());
+  size_t at = text.find("\"modules\"");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, ",");  // a second comma after the previous member
+  size_t line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  size_t column = at - text.rfind('\n', at);
+  std::string want = "not valid JSON at line " + std::to_string(line) + ", column " +
+                     std::to_string(column) + ": syntax error";
+  EXPECT_EQ(from_app_json(text).error.substr(0, want.size()), want);
 }
 
 }  // namespace

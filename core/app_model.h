@@ -1,4 +1,4 @@
-// The core model: what an application is after lowering (DESIGN.md section 2).
+// The core model: what an application is after lowering (docs/design.md#pipeline).
 //
 // The compiler produces it, app.json serialises it (round trip), the verifier and the code
 // generators read it, and the runtime runs it. It lives in runtime/ because the runtime loads
@@ -73,7 +73,7 @@ struct Connection {
   bool generated = false;  // written by the compiler rather than by the user
   Constraint constraint;   // selection constraint; false for feeds, true for plain connects
   // Events the monitor can set / unset on some path, and on every accepting path
-  // (DESIGN.md section 5: the effective guard uses must_set and must_unset).
+  // (docs/design.md#effective-guards uses must_set and must_unset).
   std::vector<std::string> sets, unsets;
   std::vector<std::string> must_set, must_unset;
   // `by priority` (every rule but the lowest): the event the runtime sets, with its lifetime

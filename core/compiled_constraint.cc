@@ -44,44 +44,48 @@ void set_bit(std::vector<uint64_t>& words, int id) {
 
 }  // namespace
 
-CompiledConstraint CompiledConstraint::compile(const Constraint& c, EventIndex& index) {
-  CompiledConstraint out;
-  // Fast path: true, or a conjunction of literals (the common shape of rule guards).
+bool Cube::contradictory() const {
+  for (size_t i = 0; i < required.size(); ++i)
+    if (required[i] & forbidden[i]) return true;
+  return false;
+}
+
+std::optional<Cube> as_cube(const Constraint& c, EventIndex& index) {
   std::vector<const Constraint*> conjuncts;
   if (c.op == Constraint::Op::And) {
     for (const Constraint& a : c.args) conjuncts.push_back(&a);
   } else if (c.op != Constraint::Op::True) {
     conjuncts.push_back(&c);
   }
-  bool cube = true;
+  Cube cube;
   for (const Constraint* k : conjuncts) {
     const Constraint* ev;
     bool positive;
-    if (!as_literal(*k, &ev, &positive)) {
-      cube = false;
-      break;
-    }
+    if (!as_literal(*k, &ev, &positive)) return std::nullopt;
     int id = index.intern(ev->event);
-    set_bit(positive ? out.required_ : out.forbidden_, id);
+    set_bit(positive ? cube.required : cube.forbidden, id);
   }
-  if (cube) {
-    size_t n = std::max(out.required_.size(), out.forbidden_.size());
-    out.required_.resize(n, 0);
-    out.forbidden_.resize(n, 0);
-    // A literal and its negation together: unsatisfiable, keep it as a program for clarity.
-    bool contradiction = false;
-    for (size_t i = 0; i < n; ++i) contradiction |= (out.required_[i] & out.forbidden_[i]) != 0;
-    if (!contradiction) {
-      if (n > 0) {
-        out.required0_ = out.required_[0];
-        out.forbidden0_ = out.forbidden_[0];
-      }
-      return out;
+  size_t n = std::max(cube.required.size(), cube.forbidden.size());
+  cube.required.resize(n, 0);
+  cube.forbidden.resize(n, 0);
+  return cube;
+}
+
+CompiledConstraint CompiledConstraint::compile(const Constraint& c, EventIndex& index) {
+  CompiledConstraint out;
+  // Fast path: true, or a conjunction of literals (the common shape of rule guards). A literal
+  // and its negation together is unsatisfiable: kept as a program for clarity.
+  std::optional<Cube> cube = as_cube(c, index);
+  if (cube && !cube->contradictory()) {
+    out.required_ = std::move(cube->required);
+    out.forbidden_ = std::move(cube->forbidden);
+    if (!out.required_.empty()) {
+      out.required0_ = out.required_[0];
+      out.forbidden0_ = out.forbidden_[0];
     }
+    return out;
   }
   out.is_cube_ = false;
-  out.required_.clear();
-  out.forbidden_.clear();
   // Post-order emission.
   struct Emitter {
     EventIndex& index;

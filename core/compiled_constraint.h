@@ -1,9 +1,10 @@
 // Constraints compiled once, when set, into a form evaluated without parsing or allocation
-// (DESIGN.md section 4). Events are numbered per container by an EventIndex; the set of
+// (docs/design.md#the-message-path). Events are numbered per container by an EventIndex; the set of
 // present events is a bit mask.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -50,6 +51,19 @@ class EventMask {
   }
   std::vector<uint64_t> words_;
 };
+
+// A conjunction of literals: the events whose bits are in `required` present and those in
+// `forbidden` absent (bit sets by EventIndex id, of equal length).
+struct Cube {
+  std::vector<uint64_t> required, forbidden;
+  // Some event both required and forbidden: no state satisfies the cube.
+  bool contradictory() const;
+};
+
+// `c` as a cube when it is `true` or a conjunction of events and negated events, its events
+// interned in `index`; nullopt for any other shape. The one cube decomposition: the runtime's
+// compiled constraints and the verifier's shortcut both use it.
+std::optional<Cube> as_cube(const Constraint& c, EventIndex& index);
 
 class CompiledConstraint {
  public:

@@ -66,5 +66,33 @@ TEST(CompiledConstraintTest, DeepProgramsUseTheHeapStack) {
   EXPECT_FALSE(c.evaluate(mask));
 }
 
+// as_cube: the one cube decomposition (compiled constraints and verify's shortcut).
+TEST(CompiledConstraintTest, AsCubeSplitsConjunctionsOfLiterals) {
+  EventIndex index;
+  std::optional<Cube> cube = as_cube(parse_constraint("a and not b and c").constraint, index);
+  ASSERT_TRUE(cube.has_value());
+  EXPECT_EQ(cube->required, (std::vector<uint64_t>{0b101}));   // a = 0, c = 2
+  EXPECT_EQ(cube->forbidden, (std::vector<uint64_t>{0b010}));  // b = 1
+  EXPECT_FALSE(cube->contradictory());
+
+  std::optional<Cube> always = as_cube(parse_constraint("true").constraint, index);
+  ASSERT_TRUE(always.has_value());
+  EXPECT_TRUE(always->required.empty());
+
+  EXPECT_TRUE(as_cube(parse_constraint("a and not a").constraint, index)->contradictory());
+  EXPECT_FALSE(as_cube(parse_constraint("a or b").constraint, index).has_value());
+  EXPECT_FALSE(as_cube(parse_constraint("a and (b or c)").constraint, index).has_value());
+  EXPECT_FALSE(as_cube(parse_constraint("false").constraint, index).has_value());
+}
+
+TEST(CompiledConstraintTest, AsCubeSpansWordsBeyondSixtyFourEvents) {
+  EventIndex index;
+  for (int i = 0; i < 70; ++i) index.intern("e" + std::to_string(i));
+  std::optional<Cube> cube = as_cube(parse_constraint("e1 and not e69").constraint, index);
+  ASSERT_TRUE(cube.has_value());
+  EXPECT_EQ(cube->required, (std::vector<uint64_t>{0b10, 0}));
+  EXPECT_EQ(cube->forbidden, (std::vector<uint64_t>{0, uint64_t{1} << 5}));
+}
+
 }  // namespace
 }  // namespace arbc

@@ -1,4 +1,4 @@
-// Selection constraints: boolean formulas over event names (DESIGN.md section 4).
+// Selection constraints: boolean formulas over event names (docs/design.md#the-message-path).
 //
 // Text form, as passed to PortMonitor.setConstraint and stored in app.json:
 //   constraint := or ;  or := and ('or' and)* ;  and := unary ('and' unary)* ;

@@ -1,5 +1,5 @@
-// Diagnostics as values (DESIGN.md section 8): severity, location, message, check id, notes.
-// Rendered like a compiler's:
+// Diagnostics as values (docs/design.md#reporting-errors): severity, location, message, check id,
+// notes. Rendered like a compiler's:
 //   specs/x.spec:12:3: error: unknown event 'e_tken' [unknown-name]
 //     take: from ObjectDetector.objects when not e_tken
 //                                                ^~~~~~

@@ -40,6 +40,35 @@ TEST(Render, CountsColumnsInCharactersAndKeepsTabs) {
             "  \t      ^~~\n");
 }
 
+TEST(Render, ShowsControlCharactersEscapedAndKeepsTheCaretUnderTheColumn) {
+  SourceCache sources;
+  sources.add("x.spec", "a \x1b[31m b\x7f c;\n");
+  // Column 12 is the 'c' (the escape sequence counts 5 characters, DEL one); each escaped
+  // character takes 4 columns on screen.
+  EXPECT_EQ(render(at(1, 12, 13, "unknown name 'c'\x1b[0m"), &sources),
+            "x.spec:1:12: error: unknown name 'c'\\x1B[0m [unknown-event]\n"
+            "  a \\x1B[31m b\\x7F c;\n"
+            "  " +
+                std::string(17, ' ') + "^\n");
+}
+
+TEST(Render, CutsALongLineToAboutTwoHundredColumnsAroundTheCaret) {
+  SourceCache sources;
+  std::string line = std::string(1000, 'a') + " bad " + std::string(1000, 'b');
+  sources.add("x.spec", line + "\n");
+  std::string text = render(at(1, 1002, 1005, "m"), &sources);
+  size_t quote = text.find('\n') + 1;
+  std::string quoted = text.substr(quote, text.find('\n', quote) - quote);
+  std::string caret = text.substr(text.find('\n', quote) + 1);
+  // 100 columns left of the caret (99 a's and the space), 200 in all.
+  EXPECT_EQ(quoted, "  ..." + std::string(99, 'a') + " bad " + std::string(96, 'b') + "...");
+  EXPECT_EQ(caret, std::string(5 + 100, ' ') + "^~~\n");
+  // A short line is shown whole; a cut at the start only when the caret is far from it.
+  std::string start = render(at(1, 3, 4, "m"), &sources);
+  EXPECT_NE(start.find("\n  aaa"), std::string::npos);
+  EXPECT_NE(start.find(std::string(198, 'a') + "...\n  " + "  ^\n"), std::string::npos);
+}
+
 TEST(Render, WithoutSourcesOrLocationPrintsTheMessageOnly) {
   Diagnostic d;
   d.message = "no such file";

@@ -1,4 +1,4 @@
-// The arbc behaviour spec language (DESIGN.md section 3; docs/language.md describes it).
+// The arbc behaviour spec language (docs/language.md describes it).
 //
 // Notes for the next engineer:
 // - Type names (bool, int, float, string, vec3, list) are ordinary identifiers here; semantic

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/app_json.h"
+#include "core/join.h"
 #include "core/monitor_digests.h"
 
 namespace arbc {
@@ -31,7 +32,10 @@ AppDirLoad load_app_dir(const std::string& dir) {
   text << in.rdbuf();
   model::AppLoad parsed = model::from_app_json(text.str());
   if (!parsed.ok) {
-    load.errors.push_back(file.string() + ": " + parsed.error + " (rebuild it with `arbc build`)");
+    // One rebuild hint: the model's own error may already carry one (a newer schema).
+    std::string hint =
+        parsed.error.find("rebuild") == std::string::npos ? " (rebuild it with `arbc build`)" : "";
+    load.errors.push_back(file.string() + ": " + parsed.error + hint);
     return load;
   }
   // Every monitor exists and has the bytes `arbc build` wrote (the digests in app.json).
@@ -47,8 +51,7 @@ std::vector<std::string> check_modules(const model::App& app, const std::string&
   for (const model::Module& m : app.modules) {
     const ModuleFactory* factory = registry.find_module(m.name);
     if (!factory) {
-      std::string known;
-      for (const std::string& n : registry.module_names()) known += (known.empty() ? "" : ", ") + n;
+      std::string known = join(registry.module_names());
       errors.push_back(app_file + ": module '" + m.name +
                        "' is not registered; load the plugin that provides it with --plugin LIB" +
                        " (registered: " + (known.empty() ? "none" : known) + ")");

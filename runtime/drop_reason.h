@@ -1,5 +1,5 @@
-// Why a message did not reach its destination (DESIGN.md section 4: no message disappears
-// silently). The names are the trace's "reason" field and the counters' column names.
+// Why a message did not reach its destination (docs/design.md#the-message-path: no message
+// disappears silently). The names are the trace's "reason" field and the counters' column names.
 #pragma once
 
 namespace arbc {

@@ -1,5 +1,5 @@
-// The event container of one input port (DESIGN.md section 4): entries (event, owner
-// connection, expiry). An event is present at time t iff some owner's entry has t < expiry.
+// The event container of one input port (docs/design.md#events-and-lifetimes): entries (event,
+// owner connection, expiry). An event is present at time t iff some owner's entry has t < expiry.
 //
 // Presence is kept as a bit mask so that a compiled constraint decides in nanoseconds; the
 // earliest expiry is kept too, so that checking for lapsed entries costs one comparison

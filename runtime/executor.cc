@@ -32,12 +32,12 @@ Executor::TaskId SimulatedExecutor::post(double at, std::function<void()> fn) {
 
 void SimulatedExecutor::run(double until) {
   stopped_ = false;
-  while (!stopped_ && !queue_.empty() && queue_.next_time() <= until) {
+  while (!stopped_ && !interrupted() && !queue_.empty() && queue_.next_time() <= until) {
     now_ = queue_.next_time();
     std::function<void()> fn = queue_.pop();
     fn();
   }
-  if (!stopped_) now_ = std::max(now_, until);
+  if (!stopped_ && !interrupted()) now_ = std::max(now_, until);
 }
 
 double RealtimeExecutor::now() const {
@@ -75,7 +75,7 @@ void RealtimeExecutor::run(double until) {
     return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                         std::chrono::duration<double>(t));
   };
-  while (!stopped_) {
+  while (!stopped_ && !interrupted()) {
     double t = now();
     if (t >= until) break;
     if (!queue_.empty() && queue_.next_time() <= t) {
@@ -86,6 +86,7 @@ void RealtimeExecutor::run(double until) {
       continue;
     }
     double wake_at = queue_.empty() ? until : std::min(until, queue_.next_time());
+    if (interrupt_) wake_at = std::min(wake_at, t + 0.02);  // a signal cannot notify wake_
     wake_.wait_until(lock, deadline_of(wake_at));
   }
   runner_ = std::thread::id();

@@ -1,4 +1,4 @@
-// Executors: who decides what runs when (DESIGN.md section 7).
+// Executors: who decides what runs when (docs/design.md#runtime).
 //
 // Both run tasks one at a time on the thread that called run(), in order of (time, posting
 // order), so everything the runtime and the modules do is serialised. The simulated executor
@@ -6,6 +6,7 @@
 // sleeps until a task's wall-clock time; post() and cancel() may be called from any thread.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -32,6 +33,13 @@ class Executor {
   virtual void stop() = 0;
   // Is the caller on the thread inside run() (or is run() not active)?
   virtual bool on_executor_thread() const = 0;
+  // Not null: run() returns before the next task once *flag is true (a signal handler sets it;
+  // the real-time executor then sleeps in short slices so that it notices).
+  void set_interrupt(const std::atomic<bool>* flag) { interrupt_ = flag; }
+
+ protected:
+  bool interrupted() const { return interrupt_ && interrupt_->load(std::memory_order_relaxed); }
+  const std::atomic<bool>* interrupt_ = nullptr;
 };
 
 // Tasks ordered by (time, sequence number): a priority queue kept as an ordered map.

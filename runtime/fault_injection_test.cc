@@ -277,6 +277,19 @@ TEST(FaultInjectionTest, HelperMisuseInAcceptDropsTheMessage) {
   }
 }
 
+// print() in a monitor is the sandbox's (runtime/lua_sandbox.cc): each call is one log line
+// of the connection in the trace, its arguments separated by tabs.
+TEST(FaultInjectionTest, PrintInAMonitorIsALogLineOfItsConnection) {
+  FaultRun r =
+      run(monitor("PortMonitor.accept = function(m) print('got', m, nil) return true end\n"));
+  expect_unaffected_and_accounted(r);
+  EXPECT_EQ(r["faulty"].delivered, 3u);
+  std::vector<std::string> lines;
+  for (const auto& l : r.records("log"))
+    if (l["from"] == "faulty") lines.push_back(l["message"].get<std::string>());
+  EXPECT_EQ(lines, (std::vector<std::string>{"got\t1\tnil", "got\t2\tnil", "got\t3\tnil"}));
+}
+
 TEST(FaultInjectionTest, RepeatedErrorsQuarantineAndTheRestIsCounted) {
   Fault f = monitor("PortMonitor.accept = function(m) error('again') end\n");
   f.options.quarantine_after = 2;

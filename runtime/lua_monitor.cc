@@ -96,23 +96,6 @@ int api_novalue(lua_State* L) {
   return lua_error(L);
 }
 
-int api_print(lua_State* L) {
-  // First every argument to a string on the stack (__tostring may run Lua code and raise),
-  // then the C++ line, which nothing after can skip.
-  int n = lua_gettop(L);
-  luaL_checkstack(L, n, "too many arguments to print");
-  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);
-  std::string line;
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) line += '\t';
-    size_t len;
-    const char* s = lua_tolstring(L, n + i, &len);
-    line.append(s, len);
-  }
-  host_of(L)->print(line);
-  return 0;
-}
-
 int install(lua_State* L) {
   void* host = lua_touserdata(L, 1);
   static const luaL_Reg api[] = {
@@ -130,9 +113,6 @@ int install(lua_State* L) {
   lua_pushlightuserdata(L, host);
   luaL_setfuncs(L, api, 1);
   lua_setglobal(L, "PortMonitor");
-  lua_pushlightuserdata(L, host);
-  lua_pushcclosure(L, api_print, 1);
-  lua_setglobal(L, "print");
   return 0;
 }
 
@@ -176,18 +156,28 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   }
   m->host_ = host;
   m->file_ = file;
+  // The sandbox's print, into the host's log.
+  m->sandbox_->set_print([host](const std::string& line) { host->print(line); });
   LuaCall installed = m->sandbox_->protected_call(install, host);
   if (!installed.ok()) {
     *error = file + ": " + installed.error;
     return nullptr;
   }
-  LuaCall ran = m->sandbox_->run_chunk(script, file);
+  m->script_spans_ = script_spans(script);
+  LuaCall ran = m->cited(m->sandbox_->run_chunk(script, file));
   if (!ran.ok()) {
     *error = ran.status == LuaCall::Status::NoValue ? file + ": novalue() at top level" : ran.error;
     if (error->rfind(file, 0) != 0) *error = file + ": " + *error;
     return nullptr;
   }
   return m;
+}
+
+LuaCall LuaMonitor::cited(LuaCall call) const {
+  // Before the chunk compiled, Lua's name for it is the file name (unless over LUA_IDSIZE).
+  const std::string& chunk = sandbox_->chunk_source().empty() ? file_ : sandbox_->chunk_source();
+  if (!call.error.empty()) call.error = cite_script_lines(call.error, chunk, script_spans_);
+  return call;
 }
 
 // Protected: a script may have put metamethods on PortMonitor or _G that raise errors.
@@ -277,7 +267,7 @@ static LuaCall type_error(const std::string& file, const std::string& what) {
 LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
   Call call;
   call.options = &options;
-  LuaCall r = sandbox_->protected_call(run_create, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_create, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *created = r.ok() && call.result;
   return r;
@@ -286,7 +276,7 @@ LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
 LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason) {
   Call call;
   call.message = &msg;
-  LuaCall r = sandbox_->protected_call(run_accept, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_accept, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *accepted = r.ok() && call.result;
   if (reason) *reason = std::move(call.reason);
@@ -296,7 +286,7 @@ LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason
 LuaCall LuaMonitor::update(const Type& destination, Value* out) {
   Call call;
   call.destination = &destination;
-  LuaCall r = sandbox_->protected_call(run_update, &call);
+  LuaCall r = cited(sandbox_->protected_call(run_update, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   if (r.ok()) *out = std::move(call.output);
   return r;
@@ -305,13 +295,13 @@ LuaCall LuaMonitor::update(const Type& destination, Value* out) {
 LuaCall LuaMonitor::trig() {
   Call call;
   call.callback = "trig";
-  return sandbox_->protected_call(run_simple, &call);
+  return cited(sandbox_->protected_call(run_simple, &call));
 }
 
 LuaCall LuaMonitor::destroy() {
   Call call;
   call.callback = "destroy";
-  return sandbox_->protected_call(run_simple, &call);
+  return cited(sandbox_->protected_call(run_simple, &call));
 }
 
 }  // namespace arbc

@@ -1,4 +1,5 @@
-// A port monitor script in its own sandbox, with the PortMonitor API of DESIGN.md section 6:
+// A port monitor script in its own sandbox, with the PortMonitor API
+// (docs/runtime.md#lua-monitors-the-portmonitor-api):
 //
 //   PortMonitor.create(options)  options = {source=, destination=, connection=}
 //   PortMonitor.accept(msg) -> boolean [, reason]   PortMonitor.update(msg) -> value
@@ -16,7 +17,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "core/script_lines.h"
 #include "core/type.h"
 #include "core/value.h"
 #include "runtime/lua_sandbox.h"
@@ -75,9 +78,14 @@ class LuaMonitor {
   static int run_simple(lua_State* L);
   void install_api();
 
+  // Errors on lines inlined from a user's `script` cite that file and line
+  // (core/script_lines.h).
+  LuaCall cited(LuaCall call) const;
+
   std::unique_ptr<LuaSandbox> sandbox_;
   MonitorHost* host_ = nullptr;
   std::string file_;
+  std::vector<ScriptSpan> script_spans_;
 };
 
 }  // namespace arbc

@@ -1,9 +1,12 @@
 #include "runtime/lua_sandbox.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <lua.hpp>
+
+#include "runtime/sandbox_strings.h"
 
 namespace arbc {
 
@@ -52,6 +55,7 @@ int open_libraries(lua_State* L) {
   lua_pushnil(L);
   lua_setfield(L, -2, "dump");
   lua_pop(L, 1);
+  install_bounded_library(L);
   // luaL_requiref registered the libraries in package.loaded; drop that table too.
   lua_pushnil(L);
   lua_setfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
@@ -77,16 +81,81 @@ void* LuaSandbox::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
 
 void LuaSandbox::budget_hook(lua_State* L, lua_Debug*) {
   LuaSandbox* self = sandbox_of(L);
-  if (!self->budget_exhausted_) {
-    self->budget_exhausted_ = true;
-    lua_Debug here;
-    if (lua_getstack(L, 0, &here) && lua_getinfo(L, "Sl", &here) && here.currentline > 0) {
-      self->budget_where_ = std::string(here.short_src) + ":" + std::to_string(here.currentline);
-    }
+  int every = lua_gethookcount(L);
+  self->call_.instructions_left -= every;
+  if (self->call_.exhausted.empty() && self->within_limits(L, nullptr)) {
+    // A coroutine left firing on every instruction by an earlier callback's stop: back to normal.
+    if (every != self->hook_every_) lua_sethook(L, budget_hook, LUA_MASKCOUNT, self->hook_every_);
+    return;
   }
+  stop(L);
+}
+
+// file:line of the innermost Lua function on the stack (a C function has no line).
+static std::string innermost_position(lua_State* L) {
+  lua_Debug ar;
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
+      return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+  }
+  return "";
+}
+
+bool LuaSandbox::exhaust(lua_State* L, std::string why) {
+  call_.exhausted = std::move(why);
+  call_.where = innermost_position(L);
+  return false;
+}
+
+bool LuaSandbox::within_limits(lua_State* L, const char* function) {
+  if (limits_.interrupt && limits_.interrupt->load(std::memory_order_relaxed))
+    return exhaust(L, "interrupted");
+  if (call_.instructions_left <= 0) {
+    return exhaust(L, "instruction budget of " + std::to_string(limits_.instructions) +
+                          " exceeded (an endless loop?)");
+  }
+  if (call_.library_steps_left <= 0) {
+    std::string name = function ? function : "a library function";
+    bool pattern = name.rfind("string.", 0) == 0;
+    return exhaust(L, name + ": work budget of " + std::to_string(limits_.library_steps) +
+                          " steps exceeded" +
+                          (pattern ? " (a pattern that backtracks without end? Lua patterns "
+                                     "retry every split of a run of optional items)"
+                                   : ""));
+  }
+  auto now = std::chrono::steady_clock::now();
+  if (!call_.clock_started) {
+    call_.started = now;
+    call_.clock_started = true;
+  } else if (std::chrono::duration<double>(now - call_.started).count() > limits_.wall_seconds) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", limits_.wall_seconds);
+    return exhaust(L, std::string("wall-clock budget of ") + seconds + " s exceeded");
+  }
+  return true;
+}
+
+bool LuaSandbox::charge(lua_State* L, long long steps, const char* function) {
+  LuaSandbox* self = sandbox_of(L);
+  self->call_.library_steps_left -= steps;
+  return self->call_.exhausted.empty() && self->within_limits(L, function);
+}
+
+int LuaSandbox::stop(lua_State* L) {
+  LuaSandbox* self = sandbox_of(L);
+  if (self->call_.exhausted.empty()) self->exhaust(L, "stopped");
   // From now on, fire on every instruction of this thread until the callback is left.
   lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);
-  luaL_error(L, "instruction budget exceeded");
+  return luaL_error(L, "%s", self->call_.exhausted.c_str());
+}
+
+void LuaSandbox::arm() {
+  call_.instructions_left = limits_.instructions;
+  call_.library_steps_left = limits_.library_steps;
+  call_.clock_started = false;
+  call_.exhausted.clear();
+  call_.where.clear();
+  lua_sethook(L_, budget_hook, LUA_MASKCOUNT, hook_every_);
 }
 
 int LuaSandbox::print(lua_State* L) {
@@ -114,6 +183,7 @@ int LuaSandbox::print(lua_State* L) {
 std::unique_ptr<LuaSandbox> LuaSandbox::create(const SandboxLimits& limits) {
   std::unique_ptr<LuaSandbox> box(new LuaSandbox(limits));
   box->memory_.cap = limits.memory_bytes;
+  box->hook_every_ = static_cast<int>(std::clamp<long long>(limits.instructions, 1, kHookEvery));
   box->L_ = lua_newstate(&LuaSandbox::allocate, &box->memory_);
   if (!box->L_) return nullptr;
   *static_cast<LuaSandbox**>(lua_getextraspace(box->L_)) = box.get();
@@ -136,7 +206,9 @@ std::unique_ptr<LuaSandbox> LuaSandbox::create(const SandboxLimits& limits) {
 }
 
 LuaSandbox::~LuaSandbox() {
-  if (L_) lua_close(L_);
+  if (!L_) return;
+  arm();  // finalizers (__gc) run in lua_close: a looping one is cut off like any callback
+  lua_close(L_);
 }
 
 void LuaSandbox::push_novalue_marker(lua_State* L) { lua_pushlightuserdata(L, &novalue_key); }
@@ -144,15 +216,10 @@ void LuaSandbox::push_novalue_marker(lua_State* L) { lua_pushlightuserdata(L, &n
 LuaCall LuaSandbox::finish_call(int rc) {
   lua_sethook(L_, nullptr, 0, 0);
   LuaCall call;
-  if (rc == LUA_OK) {
-    budget_exhausted_ = false;
-    return call;
-  }
+  if (rc == LUA_OK && call_.exhausted.empty()) return call;
   call.status = LuaCall::Status::Error;
-  if (budget_exhausted_) {
-    call.error = (budget_where_.empty() ? std::string("?") : budget_where_) +
-                 ": instruction budget of " + std::to_string(limits_.instructions) +
-                 " exceeded (an endless loop?)";
+  if (!call_.exhausted.empty()) {
+    call.error = (call_.where.empty() ? std::string("?") : call_.where) + ": " + call_.exhausted;
   } else if (rc == LUA_ERRMEM) {
     call.error = "memory cap of " + std::to_string(limits_.memory_bytes / 1024) + " KiB exceeded";
   } else if (lua_islightuserdata(L_, -1) && lua_touserdata(L_, -1) == &novalue_key) {
@@ -162,8 +229,6 @@ LuaCall LuaSandbox::finish_call(int rc) {
   } else {
     call.error = std::string("error object is a ") + luaL_typename(L_, -1) + " value";
   }
-  budget_exhausted_ = false;
-  budget_where_.clear();
   lua_settop(L_, 0);
   // A failed allocation leaves garbage; collect it now rather than on the next message.
   if (rc == LUA_ERRMEM) lua_gc(L_, LUA_GCCOLLECT);
@@ -173,9 +238,14 @@ LuaCall LuaSandbox::finish_call(int rc) {
 LuaCall LuaSandbox::run_chunk(const std::string& text, const std::string& chunk_name) {
   std::string name = "@" + chunk_name;
   int rc = luaL_loadbufferx(L_, text.data(), text.size(), name.c_str(), "t");
-  if (rc != LUA_OK) return finish_call(rc);
-  budget_exhausted_ = false;
-  lua_sethook(L_, budget_hook, LUA_MASKCOUNT, static_cast<int>(limits_.instructions));
+  if (rc != LUA_OK) {
+    call_.exhausted.clear();
+    return finish_call(rc);
+  }
+  lua_Debug chunk;
+  lua_pushvalue(L_, -1);
+  if (lua_getinfo(L_, ">S", &chunk)) chunk_source_ = chunk.short_src;  // pops the copy
+  arm();
   return finish_call(lua_pcall(L_, 0, 0, 0));
 }
 
@@ -184,10 +254,9 @@ LuaCall LuaSandbox::protected_call(int (*fn)(lua_State*), void* argument) {
   lua_settop(L_, 0);
   lua_pushcfunction(L_, trampoline);
   lua_pushlightuserdata(L_, &t);
-  budget_exhausted_ = false;
-  lua_sethook(L_, budget_hook, LUA_MASKCOUNT, static_cast<int>(limits_.instructions));
+  arm();
   int rc = lua_pcall(L_, 1, LUA_MULTRET, 0);
-  if (rc != LUA_OK) return finish_call(rc);
+  if (rc != LUA_OK || !call_.exhausted.empty()) return finish_call(rc);
   lua_sethook(L_, nullptr, 0, 0);
   lua_settop(L_, 0);
   return LuaCall{};

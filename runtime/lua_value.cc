@@ -1,6 +1,8 @@
 #include "runtime/lua_value.h"
 
 #include <lua.hpp>
+#include <string_view>
+#include <vector>
 
 namespace arbc {
 
@@ -24,6 +26,76 @@ std::string lua_kind(lua_State* L, int index) {
 std::optional<double> read_number(lua_State* L, int index) {
   if (lua_type(L, index) != LUA_TNUMBER) return std::nullopt;
   return lua_tonumber(L, index);
+}
+
+std::optional<Value> too_deep(std::string* why) {
+  *why = "the value is nested too deeply";
+  return std::nullopt;
+}
+
+// The string key of the table entry lua_next just pushed (key at -2), or empty.
+std::string_view entry_key(lua_State* L) {
+  if (lua_type(L, -2) != LUA_TSTRING) return {};  // lua_tolstring would convert a number key
+  size_t len = 0;
+  const char* s = lua_tolstring(L, -2, &len);
+  return {s, len};
+}
+
+// Everything below reads tables raw (lua_next, lua_rawgeti): a metamethod would run Lua code
+// that may raise, and Lua's longjmp would skip the destructors of the C++ values being built.
+// Nothing here raises, so read_value may be called while C++ objects are alive.
+std::optional<Value> read_vec3(lua_State* L, int index, std::string* why) {
+  if (!lua_checkstack(L, 4)) return too_deep(why);
+  static const char* kNames[3] = {"x", "y", "z"};
+  std::optional<double> xyz[3];
+  bool named = false;
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    std::string_view key = entry_key(L);
+    for (int k = 0; k < 3; ++k) {
+      if (key != kNames[k]) continue;
+      named = true;
+      xyz[k] = read_number(L, -1);
+    }
+    lua_pop(L, 1);
+  }
+  for (int k = 0; k < 3 && !named; ++k) {
+    lua_rawgeti(L, index, k + 1);
+    xyz[k] = read_number(L, -1);
+    lua_pop(L, 1);
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (xyz[k]) continue;
+    *why = std::string("expected vec3 ({x=, y=, z=} or {x, y, z}), component ") + kNames[k] +
+           " is not a number";
+    return std::nullopt;
+  }
+  return Value(Eigen::Vector3d(*xyz[0], *xyz[1], *xyz[2]));
+}
+
+std::optional<Value> read_record(lua_State* L, int index, const Type& t, std::string* why) {
+  if (!lua_checkstack(L, 4)) return too_deep(why);
+  std::vector<std::optional<Value>> values(t.fields.size());
+  std::vector<std::string> errors(t.fields.size());
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    std::string_view key = entry_key(L);
+    for (size_t i = 0; i < t.fields.size(); ++i) {
+      if (key == t.fields[i].name) values[i] = read_value(L, -1, *t.fields[i].type, &errors[i]);
+    }
+    lua_pop(L, 1);
+  }
+  // The first bad field in the type's order, whatever order the table keeps its keys in.
+  ValueRecord fields;
+  for (size_t i = 0; i < t.fields.size(); ++i) {
+    if (!values[i]) {
+      *why = errors[i].empty() ? "missing field " + t.fields[i].name
+                               : "field " + t.fields[i].name + ": " + errors[i];
+      return std::nullopt;
+    }
+    fields.emplace(t.fields[i].name, std::move(*values[i]));
+  }
+  return Value(std::move(fields));
 }
 
 }  // namespace
@@ -103,33 +175,12 @@ std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::str
       const char* s = lua_tolstring(L, index, &len);
       return Value(std::string(s, len));
     }
-    case Type::Kind::Vec3: {
+    case Type::Kind::Vec3:
       if (!lua_istable(L, index)) return mismatch();
-      luaL_checkstack(L, 4, "message too deeply nested");
-      double xyz[3];
-      static const char* kNames[3] = {"x", "y", "z"};
-      bool named = lua_getfield(L, index, "x") != LUA_TNIL;
-      lua_pop(L, 1);
-      for (int k = 0; k < 3; ++k) {
-        if (named) {
-          lua_getfield(L, index, kNames[k]);
-        } else {
-          lua_rawgeti(L, index, k + 1);
-        }
-        auto d = read_number(L, -1);
-        lua_pop(L, 1);
-        if (!d) {
-          *why = std::string("expected vec3 ({x=, y=, z=} or {x, y, z}), component ") + kNames[k] +
-                 " is not a number";
-          return std::nullopt;
-        }
-        xyz[k] = *d;
-      }
-      return Value(Eigen::Vector3d(xyz[0], xyz[1], xyz[2]));
-    }
+      return read_vec3(L, index, why);
     case Type::Kind::List: {
       if (!lua_istable(L, index)) return mismatch();
-      luaL_checkstack(L, 4, "message too deeply nested");
+      if (!lua_checkstack(L, 4)) return too_deep(why);
       lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
       ValueList items;
       items.reserve(static_cast<size_t>(n));
@@ -146,28 +197,9 @@ std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::str
       }
       return Value(std::move(items));
     }
-    case Type::Kind::Record: {
+    case Type::Kind::Record:
       if (!lua_istable(L, index)) return mismatch();
-      luaL_checkstack(L, 4, "message too deeply nested");
-      ValueRecord fields;
-      for (const Field& f : t.fields) {
-        lua_getfield(L, index, f.name.c_str());
-        if (lua_isnil(L, -1)) {
-          lua_pop(L, 1);
-          *why = "missing field " + f.name;
-          return std::nullopt;
-        }
-        std::string inner;
-        auto field = read_value(L, -1, *f.type, &inner);
-        lua_pop(L, 1);
-        if (!field) {
-          *why = "field " + f.name + ": " + inner;
-          return std::nullopt;
-        }
-        fields.emplace(f.name, std::move(*field));
-      }
-      return Value(std::move(fields));
-    }
+      return read_record(L, index, t, why);
   }
   return mismatch();
 }

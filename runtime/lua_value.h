@@ -1,4 +1,5 @@
-// Conversion between Values and Lua values (the message form monitors see, DESIGN.md 6).
+// Conversion between Values and Lua values (the message form monitors see,
+// docs/runtime.md#messages-in-lua).
 //
 //   bool -> boolean, int -> integer, float -> float, string -> string,
 //   vec3 -> table {x=.., y=.., z=..}, list -> sequence {v1, v2, ...},
@@ -22,8 +23,9 @@ namespace arbc {
 void push_value(lua_State* L, const Value& v);
 
 // Reads the Lua value at `index` as type t. On mismatch returns nullopt and sets *why
-// ("field pos: expected vec3, got string"). Never raises a Lua error on mismatch, but may
-// raise a memory error: call it inside a protected call.
+// ("field pos: expected vec3, got string"). Never raises a Lua error: tables are read raw (no
+// __index or other metamethod runs) and nothing allocates on the Lua side, so it may be called
+// while C++ objects are alive.
 std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::string* why);
 
 }  // namespace arbc

@@ -58,5 +58,69 @@ TEST(LuaValueTest, AcceptsVec3AsSequenceAndRejectsMismatches) {
   EXPECT_FALSE(read_value(s.L, -1, *parse_type("list<list<int>>"), &why));
 }
 
+// A protected call of read_value, as the runtime makes it: a Lua error raised inside would
+// longjmp over the C++ values being built (a leak LeakSanitizer reports).
+struct ReadCall {
+  const Type* type;
+  std::optional<Value> value;
+  std::string why;
+};
+
+int read_top(lua_State* L) {
+  auto* call = static_cast<ReadCall*>(lua_touserdata(L, 2));
+  call->value = read_value(L, 1, *call->type, &call->why);
+  return 0;
+}
+
+// Returns the Lua status of the call (LUA_OK unless read_value raised).
+int read_protected(lua_State* L, const char* chunk, const Type& t, ReadCall* call) {
+  call->type = &t;
+  lua_pushcfunction(L, read_top);
+  if (luaL_dostring(L, chunk) != LUA_OK) return -1;
+  lua_pushlightuserdata(L, call);
+  int rc = lua_pcall(L, 2, 0, 0);
+  lua_settop(L, 0);
+  return rc;
+}
+
+TEST(LuaValueTest, ReadsTablesRawWithoutRunningMetamethods) {
+  State s;
+  TypePtr cmd = parse_type("{verb: string, pos: vec3, tags: list<string>}");
+  ASSERT_TRUE(cmd);
+  const char* raising = "local boom = { __index = function() error('metamethod ran') end }\n";
+  ReadCall call;
+  // Missing fields are looked up raw: __index never runs, the mismatch is reported.
+  std::string chunk =
+      std::string(raising) + "return setmetatable({verb = 'take', tags = {'a'}}, boom)";
+  ASSERT_EQ(read_protected(s.L, chunk.c_str(), *cmd, &call), LUA_OK) << call.why;
+  EXPECT_FALSE(call.value);
+  EXPECT_EQ(call.why, "missing field pos");
+  // Nested: a vec3 whose x is provided only through __index.
+  chunk = std::string(raising) +
+          "return {verb = 'take', tags = {}, pos = setmetatable({y = 1, z = 2}, boom)}";
+  ASSERT_EQ(read_protected(s.L, chunk.c_str(), *cmd, &call), LUA_OK) << call.why;
+  EXPECT_FALSE(call.value);
+  EXPECT_EQ(call.why,
+            "field pos: expected vec3 ({x=, y=, z=} or {x, y, z}), component x is not a number");
+  // A list reads its elements raw too, and a complete record still reads fine.
+  chunk = std::string(raising) +
+          "return {verb = 'put', tags = setmetatable({'a', 'b'}, boom), pos = {1, 2, 3}}";
+  ASSERT_EQ(read_protected(s.L, chunk.c_str(), *cmd, &call), LUA_OK) << call.why;
+  ASSERT_TRUE(call.value) << call.why;
+  EXPECT_EQ(*call.value, Value::record({{"verb", "put"},
+                                        {"pos", Value::vec3(1, 2, 3)},
+                                        {"tags", Value::list({"a", "b"})}}));
+}
+
+TEST(LuaValueTest, ReportsTheFirstBadFieldInTheTypesOrder) {
+  State s;
+  TypePtr t = parse_type("{a: int, b: int, c: int}");
+  ReadCall call;
+  ASSERT_EQ(read_protected(s.L, "return {c = 'x', b = 'y'}", *t, &call), LUA_OK);
+  EXPECT_EQ(call.why, "missing field a");
+  ASSERT_EQ(read_protected(s.L, "return {c = 'x', b = 'y', a = 1}", *t, &call), LUA_OK);
+  EXPECT_EQ(call.why, "field b: expected int, got string");
+}
+
 }  // namespace
 }  // namespace arbc

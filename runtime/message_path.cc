@@ -96,7 +96,11 @@ void Runtime::process(Connection& c, const Value& msg) {
   if (c.monitor && (c.has_accept || c.has_update)) {
     bool accepted = false;
     std::string reason;
-    LuaCall call = c.monitor->accept(msg, &accepted, &reason);
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "accept");
+      call = c.monitor->accept(msg, &accepted, &reason);
+    }
     if (call.status == LuaCall::Status::NoValue) {
       c.consecutive_errors = 0;
       drop(c, DropReason::NoValue, "accept");
@@ -137,7 +141,11 @@ void Runtime::process(Connection& c, const Value& msg) {
   Value out;
   const Value* delivered = &msg;
   if (c.monitor && c.has_update) {
-    LuaCall call = c.monitor->update(*c.destination->type, &out);
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "update");
+      call = c.monitor->update(*c.destination->type, &out);
+    }
     if (call.status == LuaCall::Status::NoValue) {
       c.consecutive_errors = 0;
       drop(c, DropReason::NoValue, "update");
@@ -191,7 +199,10 @@ void Runtime::quarantine(Connection& c, const std::string& why, bool destroy) {
   trace_.quarantine(now(), c.name, why);
   report("connection " + c.name + " quarantined: " + why +
          "; its messages are dropped from now on, the rest of the app keeps running");
-  if (destroy && c.monitor) c.monitor->destroy();  // its own failure changes nothing now
+  if (destroy && c.monitor) {
+    BusyScope busy(busy_, "monitor", c.name, "destroy");
+    c.monitor->destroy();  // its own failure changes nothing now
+  }
 }
 
 void Runtime::schedule_trig(Connection& c) {
@@ -199,7 +210,11 @@ void Runtime::schedule_trig(Connection& c) {
   c.trig_task = executor_->post(now() + c.trig_interval, [this, &c] {
     c.trig_task = 0;
     if (c.quarantined || !c.monitor) return;
-    LuaCall call = c.monitor->trig();
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "trig");
+      call = c.monitor->trig();
+    }
     if (call.status == LuaCall::Status::Error) {
       monitor_failed(c, call, "trig");
     } else {

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/join.h"
 #include "core/monitor_digests.h"
 #include "runtime/runtime_internal.h"
 
@@ -56,10 +57,9 @@ std::string conflict_error(const Runtime::Connection& c, const std::string& lua_
   return c.model->monitor + ": setConstraint: " + c.constraint_conflict;
 }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
+// The names, or "none".
+std::string names_or_none(const std::vector<std::string>& items) {
+  return items.empty() ? "none" : join(items);
 }
 
 }  // namespace
@@ -100,12 +100,14 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   std::unique_ptr<Runtime> rt(new Runtime());
   rt->app_ = app;
   rt->options_ = options;
+  if (!rt->options_.limits.interrupt) rt->options_.limits.interrupt = options.interrupt;
   for (const model::Event& e : app.events) rt->lifetimes_.emplace(e.name, e.lifetime);
   if (options.realtime) {
     rt->executor_ = std::make_unique<RealtimeExecutor>();
   } else {
     rt->executor_ = std::make_unique<SimulatedExecutor>();
   }
+  rt->executor_->set_interrupt(options.interrupt);
 
   // The environment: the one named after the app, else the only one registered.
   std::vector<std::string> env_names = registry.environment_names();
@@ -124,7 +126,8 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   if (rt->scenario_.empty()) rt->scenario_ = scenarios.empty() ? "default" : scenarios.front();
   if (!scenarios.empty() &&
       std::find(scenarios.begin(), scenarios.end(), rt->scenario_) == scenarios.end()) {
-    *error = "unknown scenario '" + rt->scenario_ + "'; the environment knows: " + join(scenarios);
+    *error = "unknown scenario '" + rt->scenario_ +
+             "'; the environment knows: " + names_or_none(scenarios);
     return nullptr;
   }
 
@@ -138,7 +141,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
       *error = "module '" + m.name +
                "' is not registered; load the plugin that provides it with --plugin LIB "
                "(registered modules: " +
-               join(registry.module_names()) + ")";
+               names_or_none(registry.module_names()) + ")";
       return nullptr;
     }
     auto slot = std::make_unique<ModuleSlot>();
@@ -242,7 +245,11 @@ bool Runtime::create_monitors(std::string* error) {
     Connection& c = *cp;
     if (!c.monitor) continue;
     bool created = false;
-    LuaCall call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
+    LuaCall call;
+    {
+      BusyScope busy(busy_, "monitor", c.name, "create");
+      call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
+    }
     if (!c.constraint_conflict.empty()) {
       *error = conflict_error(c, call.error);
       return false;
@@ -328,6 +335,7 @@ void Runtime::start() {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
     environment_slot_->name = "environment";
+    environment_slot_->kind = "environment";
     environment_slot_->random = seeded(options_.seed, "environment");
     environment_slot_->guarded("setup", [&] { environment_->setup(*environment_slot_); });
   }
@@ -371,7 +379,24 @@ void Runtime::advance(double until) { executor_->run(until); }
 void Runtime::run() {
   start();
   if (stop_reason_.empty()) advance(options_.duration);
+  if (options_.interrupt && options_.interrupt->load() && stop_reason_.empty()) {
+    stop_reason_ = "interrupted";
+    trace_.log(now(), "runtime", "stop: interrupted");
+  }
   shutdown();
+}
+
+std::string Runtime::describe(const BusyMarker::Snapshot& b) {
+  if (b.kind.empty()) return "";
+  std::string who = b.kind == "monitor"  ? "the monitor of connection '" + b.name + "'"
+                    : b.kind == "module" ? "module '" + b.name + "'"
+                                         : "the environment";
+  return who + ", in " + b.callback;
+}
+
+void Runtime::abandon_trace(const std::string& why) {
+  trace_.log(now(), "runtime", "stop: " + why);
+  trace_.close();
 }
 
 void Runtime::shutdown() {
@@ -381,7 +406,11 @@ void Runtime::shutdown() {
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (c.monitor && !c.quarantined) {
-      LuaCall call = c.monitor->destroy();
+      LuaCall call;
+      {
+        BusyScope busy(busy_, "monitor", c.name, "destroy");
+        call = c.monitor->destroy();
+      }
       if (!call.ok()) monitor_failed(c, call, "destroy", false);
     }
   }

@@ -1,5 +1,5 @@
 // A running application: modules from the registry, connections with their Lua monitors,
-// one event container per input port, an executor and a trace (DESIGN.md sections 4, 7).
+// one event container per input port, an executor and a trace (docs/design.md#runtime).
 //
 // The message path, for a message on connection c into port P at time t:
 //   1. c's accept(msg) runs (it may set and unset events); false: drop `rejected`.
@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -32,6 +33,7 @@
 
 #include "core/app_model.h"
 #include "core/compiled_constraint.h"
+#include "runtime/busy_marker.h"
 #include "runtime/drop_reason.h"
 #include "runtime/event_container.h"
 #include "runtime/executor.h"
@@ -53,6 +55,10 @@ struct RunOptions {
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks
+  // Not null: once *interrupt is true (a signal handler sets it), the run stops as soon as it
+  // can: the executor before its next task, a monitor callback at its next check (its message
+  // is dropped as `monitor-error`, "interrupted"); stop_reason() is then "interrupted".
+  const std::atomic<bool>* interrupt = nullptr;
 };
 
 // Counters of one connection, for the end-of-run table and tests.
@@ -114,6 +120,14 @@ class Runtime {
   // Exceptions caught from each module (in app order), then from the environment if any.
   std::vector<PluginStats> plugin_stats() const;
 
+  // What the executor thread runs now; any thread may ask (a watchdog).
+  BusyMarker::Snapshot busy() const { return busy_.snapshot(); }
+  // "the monitor of connection 'take', in accept", "module 'Arm', in on_delivery": `b` in words.
+  static std::string describe(const BusyMarker::Snapshot& b);
+  // For a watchdog thread when the executor thread is stuck in a callback and the run cannot
+  // shut down: writes `why` as a last log record and closes the trace.
+  void abandon_trace(const std::string& why);
+
   struct InPort;
   struct OutPort;
   struct Connection;
@@ -161,6 +175,7 @@ class Runtime {
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
   bool started_ = false, shut_down_ = false;
+  BusyMarker busy_;
 };
 
 }  // namespace arbc

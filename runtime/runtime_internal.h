@@ -74,7 +74,8 @@ struct Runtime::Connection : MonitorHost {
 // Where plugin code (a module or the environment) runs: exceptions it throws stop there.
 struct Runtime::PluginGuard {
   Runtime* runtime = nullptr;
-  std::string name;  // the module's name, or "environment"
+  std::string name;             // the module's name, or "environment"
+  const char* kind = "module";  // or "environment" (for BusyMarker)
   uint64_t errors = 0;
   std::set<std::string> reported_errors;
 
@@ -82,6 +83,7 @@ struct Runtime::PluginGuard {
   // text), and the run goes on. Returns false when fn threw.
   template <class F>
   bool guarded(const char* callback, F&& fn) {
+    BusyScope busy(runtime->busy_, kind, name, callback);
     try {
       fn();
       return true;

@@ -1,7 +1,8 @@
 // Escapes and faults: each fails cleanly, is counted and reported, and the process (and the
-// rest of the app) keeps running (DESIGN.md section 6).
+// rest of the app) keeps running (docs/runtime.md#the-sandbox).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 
 #include "runtime/runtime_test_util.h"
@@ -93,6 +94,80 @@ TEST(SandboxTest, ScriptPcallCannotSwallowTheBudget) {
       o);
   EXPECT_EQ(r.bad.errors, 3u);
   EXPECT_EQ(r.delivered_good, 3u);
+}
+
+// The pattern of issue 13: exponential backtracking inside one C call, where the instruction
+// hook never fires. It fails with the step budget's error and is handled as any failing monitor:
+// counted, dropped, quarantined after repeated failures; the other connection is unaffected.
+TEST(SandboxTest, CatastrophicPatternIsCountedAndQuarantined) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int", "in y: int"});
+  t.connect("bad", "Src.x", "Sink.x", "true",
+            "PortMonitor.accept = function(m)\n"
+            "  return string.find(string.rep(\"a\", 40), string.rep(\"a?\", 40) .. "
+            "string.rep(\"a\", 40) .. \"b\") ~= nil\n"
+            "end\n");
+  t.connect("good", "Src.x", "Sink.y", "true", "");
+  auto start = std::chrono::steady_clock::now();
+  auto rt = t.start();
+  for (int i = 0; i < 7; ++i) TestApp::publish_at(*rt, 1 + i, "Src", "x", Value(i));
+  rt->advance(10);
+  rt->shutdown();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ConnectionStats bad = TestApp::stats_of(rt->stats(), "bad");
+  EXPECT_EQ(bad.errors, 5u);
+  EXPECT_EQ(bad.drops(DropReason::MonitorError), 5u);
+  EXPECT_TRUE(bad.quarantined);
+  EXPECT_EQ(bad.drops(DropReason::Quarantined), 2u);
+  EXPECT_EQ(TestApp::stats_of(rt->stats(), "good").delivered, 7u);
+  ASSERT_FALSE(t.reports.empty());
+  EXPECT_NE(t.reports[0].find("monitors/bad.lua:2: string.find: work budget of 10000000 steps "
+                              "exceeded"),
+            std::string::npos)
+      << t.reports[0];
+  EXPECT_LT(seconds, 10.0);  // five budgets of well under a second each
+}
+
+// Coroutines run under the callback's one instruction budget: a loop that starts coroutines,
+// each just under a budget of its own, still stops.
+TEST(SandboxTest, CoroutinesShareTheCallbacksBudget) {
+  RunOptions o;
+  o.limits.instructions = 100000;
+  o.limits.wall_seconds = 60;  // the instruction budget, not the clock, must stop it
+  auto start = std::chrono::steady_clock::now();
+  Outcome r = run_with(
+      "PortMonitor.accept = function(m)\n"
+      "  while true do coroutine.wrap(function() for i = 1, 99000 do end end)() end\n"
+      "end\n",
+      o);
+  EXPECT_EQ(r.bad.errors, 3u);
+  EXPECT_EQ(r.delivered_good, 3u);
+  ASSERT_FALSE(r.reports.empty());
+  EXPECT_NE(r.reports[0].find("instruction budget of 100000 exceeded"), std::string::npos)
+      << r.reports[0];
+  // Each coroutine counted on its own would let one callback run about 10^9 instructions.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+}
+
+// update's result is read raw: a metamethod that raises does not run (it would have longjmp'd
+// over the C++ value being built: a leak LeakSanitizer reports); the field is missing.
+TEST(SandboxTest, UpdateResultIsReadWithoutRunningItsMetamethods) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: {verb: string, n: int}"});
+  t.connect("c", "Src.x", "Sink.x", "true",
+            "local boom = {__index = function() error('metamethod ran') end}\n"
+            "PortMonitor.update = function(m) return setmetatable({verb = 'go'}, boom) end\n");
+  auto rt = t.start();
+  for (int i = 0; i < 3; ++i) TestApp::publish_at(*rt, 1 + i, "Src", "x", Value(i));
+  rt->advance(5);
+  rt->shutdown();
+  ConnectionStats c = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(c.drops(DropReason::MonitorError), 3u);
+  ASSERT_FALSE(t.reports.empty());
+  EXPECT_NE(t.reports[0].find("missing field n"), std::string::npos) << t.reports[0];
+  EXPECT_EQ(t.reports[0].find("metamethod ran"), std::string::npos) << t.reports[0];
 }
 
 TEST(SandboxTest, MemoryBombHitsTheCap) {

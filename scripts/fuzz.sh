@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang into build-fuzz/ and runs each for SECONDS
 # (default 30) on a copy of its seed corpus. Crashes and hangs land in build-fuzz/findings/.
+# ARBC_WERROR=ON builds with warnings as errors (clang's view of our code; .ci/run sets it).
+# Ordinary builds replay the seed corpora without clang: the fuzz_corpus_* ctests.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 # Without TARGETs: every target whose name ends in "fuzz" (fuzz/CMakeLists.txt): app_json_fuzz,
 # constraint_fuzz, lua_value_fuzz, spec_frontend_fuzz. docs/reliability.md records their runs.
@@ -11,7 +13,7 @@ shift || true
 build=${ARBC_FUZZ_BUILD:-$root/build-fuzz}
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DARBC_FUZZ=ON -DARBC_TESTS=OFF -DARBC_BENCH=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   mapfile -t targets < <(cmake --build "$build" --target help | sed -n 's/^\.\.\. \(.*fuzz\)$/\1/p' | sort)

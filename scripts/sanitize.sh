@@ -12,7 +12,8 @@ ARBC_BUILD_DIR=$root/build-asan "$root/scripts/build.sh" -DARBC_SANITIZE=ON -DAR
   ctest --output-on-failure -j"$jobs")
 
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
-cmake -S "$root" -B "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_TSAN=ON -DARBC_BENCH=OFF >/dev/null
+cmake -S "$root" -B "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_TSAN=ON -DARBC_BENCH=OFF \
+  -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
 cmake --build "$root/build-tsan" -j"$jobs" --target runtime_test
 (cd "$root/build-tsan" &&
   TSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure -j"$jobs" -R Realtime --no-tests=error)

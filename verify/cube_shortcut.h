@@ -32,15 +32,16 @@ class CubeShortcut {
   bool pairwise_disjoint() const;
 
  private:
-  struct Cube {
+  // A rule's effective guard as a cube (core's as_cube), with its contradiction precomputed.
+  struct RuleCube {
     bool is_cube = false;
     bool contradictory = false;
-    std::vector<uint64_t> pos, neg;  // bit sets over the scope's events
+    Cube cube;  // required / forbidden over the scope's events, words_ words each
   };
   bool domain_holds(const std::vector<uint64_t>& present) const;
 
   EventIndex index_;  // the scope's events, in scope order
-  std::vector<Cube> cubes_;
+  std::vector<RuleCube> cubes_;
   std::vector<CompiledConstraint> domain_;
   int words_ = 0;
 };

@@ -20,10 +20,10 @@ PortScope scope_of(model::App& app, const std::vector<std::string>& guards) {
     port.rules.push_back(c.name);
   }
   app.arbitrated_ports.push_back(port);
-  PortScope scope;
   std::string error;
-  EXPECT_TRUE(build_port_scope(app, app.arbitrated_ports.back(), scope, error)) << error;
-  return scope;
+  std::optional<PortScope> scope = build_port_scope(app, app.arbitrated_ports.back(), &error);
+  EXPECT_TRUE(scope) << error;
+  return scope ? std::move(*scope) : PortScope{};
 }
 
 TEST(CubeShortcut, SettlesCubesAndLeavesTheRestToTheSolver) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/join.h"
 #include "verify/replay.h"
 
 namespace arbc::verify {
@@ -17,9 +18,7 @@ EventState state_of(const PortScope& scope, const std::vector<std::string>& pres
 }
 
 std::string list(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
+  return items.empty() ? "none" : join(items);
 }
 
 std::string state_text(const EventState& s) {
@@ -114,6 +113,7 @@ class PortChecker {
       Finding f;
       f.check = kCheckDead;
       f.severity = options_.strict ? Severity::Error : Severity::Warning;
+      f.strict = options_.strict;
       f.port = scope_.port->port;
       f.rules = {rule_name(r)};
       f.loc = r.connection->loc;

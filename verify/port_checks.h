@@ -1,4 +1,4 @@
-// The solver checks of one arbitrated port (DESIGN.md section 5): exclusive, dead, complete,
+// The solver checks of one arbitrated port (docs/checks.md): exclusive, dead, complete,
 // assert, each counterexample minimal (fewest events present) and replayed through the
 // runtime's evaluator before it is reported.
 #pragma once

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/effective_guard.h"
+#include "core/join.h"
 
 namespace arbc::verify {
 
@@ -34,16 +35,14 @@ bool set_by_other(const std::vector<const model::Connection*>& into, const model
 }
 
 std::string group_text(const std::vector<std::string>& events) {
-  std::string s = "exclusive { ";
-  for (size_t i = 0; i < events.size(); ++i) s += (i ? ", " : "") + events[i];
-  return s + " }";
+  return "exclusive { " + join(events) + " }";
 }
 
 }  // namespace
 
-bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, PortScope& scope,
-                      std::string& error) {
-  scope = PortScope{};
+std::optional<PortScope> build_port_scope(const model::App& app, const model::ArbitratedPort& port,
+                                          std::string* err) {
+  PortScope scope;
   scope.port = &port;
   std::vector<const model::Connection*> into = app.connections_into(port.port);
   std::set<std::string> events;
@@ -53,9 +52,9 @@ bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, 
       if (c->name == name && c->kind == model::ConnectionKind::Rule) conn = c;
     }
     if (!conn) {
-      error = "arbitrated port " + port.port + " names rule '" + name +
-              "', but no rule connection of that name goes into it";
-      return false;
+      *err = "arbitrated port " + port.port + " names rule '" + name +
+             "', but no rule connection of that name goes into it";
+      return std::nullopt;
     }
     ScopedRule rule;
     rule.connection = conn;
@@ -78,9 +77,9 @@ bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, 
   }
   for (const model::Assertion& a : port.asserts) {
     if (!contains(port.rules, a.rule)) {
-      error = "an assert on " + port.port + " names rule '" + a.rule +
-              "', which the port does not have";
-      return false;
+      *err = "an assert on " + port.port + " names rule '" + a.rule +
+             "', which the port does not have";
+      return std::nullopt;
     }
     a.property.collect_events(events);
   }
@@ -111,7 +110,7 @@ bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, 
     if (used[i]) scope.domain.push_back(std::move(all[i]));
   }
   scope.events.assign(events.begin(), events.end());
-  return true;
+  return scope;
 }
 
 }  // namespace arbc::verify

@@ -1,4 +1,5 @@
-// The proof obligation of one arbitrated port, before any solver sees it (DESIGN.md section 5).
+// The proof obligation of one arbitrated port, before any solver sees it
+// (docs/design.md#the-proof).
 //
 // For each rule c the effective guard (core/effective_guard.h) is
 //   E_c = G_c and (events c sets on every accepting path)
@@ -12,6 +13,7 @@
 // event brings that event's constraints in too).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,10 +45,10 @@ struct PortScope {
   std::vector<DomainConstraint> domain;  // in model order
 };
 
-// Builds the scope of `port`. Fails (returns false, fills `error`) when a rule named by the
-// port is not a rule connection into it, or an assert names a rule the port does not have.
-bool build_port_scope(const model::App& app, const model::ArbitratedPort& port, PortScope& scope,
-                      std::string& error);
+// The scope of `port`; nullopt (and `err`) when a rule named by the port is not a rule
+// connection into it, or an assert names a rule the port does not have.
+std::optional<PortScope> build_port_scope(const model::App& app, const model::ArbitratedPort& port,
+                                          std::string* err);
 
 // "at most one of the events" as a formula: pairwise "not (a and b)".
 Constraint at_most_one(const std::vector<std::string>& events);

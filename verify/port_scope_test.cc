@@ -12,22 +12,22 @@ using ::testing::ElementsAre;
 
 TEST(PortScope, EffectiveGuardAddsMustSetEvents) {
   model::App app = testing::search_and_track_model();
-  PortScope scope;
   std::string error;
-  ASSERT_TRUE(build_port_scope(app, app.arbitrated_ports[0], scope, error)) << error;
-  ASSERT_EQ(scope.rules.size(), 2u);
-  EXPECT_EQ(scope.rules[0].effective_guard.to_string(), "e_face_detected");
-  EXPECT_EQ(scope.rules[1].effective_guard.to_string(), "not e_face_detected");
-  EXPECT_THAT(scope.events, ElementsAre("e_face_detected"));
+  std::optional<PortScope> scope = build_port_scope(app, app.arbitrated_ports[0], &error);
+  ASSERT_TRUE(scope) << error;
+  ASSERT_EQ(scope->rules.size(), 2u);
+  EXPECT_EQ(scope->rules[0].effective_guard.to_string(), "e_face_detected");
+  EXPECT_EQ(scope->rules[1].effective_guard.to_string(), "not e_face_detected");
+  EXPECT_THAT(scope->events, ElementsAre("e_face_detected"));
 }
 
 TEST(PortScope, OpaqueRulesKeepTheirConstraint) {
   model::App app = testing::search_and_track_model();
   testing::connection(app, "track").opaque = true;
-  PortScope scope;
   std::string error;
-  ASSERT_TRUE(build_port_scope(app, app.arbitrated_ports[0], scope, error));
-  EXPECT_EQ(scope.rules[0].effective_guard.to_string(), "true");
+  std::optional<PortScope> scope = build_port_scope(app, app.arbitrated_ports[0], &error);
+  ASSERT_TRUE(scope) << error;
+  EXPECT_EQ(scope->rules[0].effective_guard.to_string(), "true");
 }
 
 TEST(PortScope, AtMostOneIsPairwise) {

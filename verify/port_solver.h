@@ -1,4 +1,4 @@
-// One Z3 solver per arbitrated port (DESIGN.md section 5).
+// One Z3 solver per arbitrated port (docs/design.md#the-proof).
 //
 // The solver holds the port's domain (exclusive groups, invariants) and, for each rule i, an
 // indicator h_i <=> E_i. Every check is then a query under assumptions or in a push/pop frame,

@@ -1,5 +1,5 @@
 // Replays a counterexample through the runtime's own evaluator (core/compiled_constraint.h)
-// before it is printed (DESIGN.md section 5): Z3 and the code that decides deliveries at run
+// before it is printed (docs/design.md#the-proof): Z3 and the code that decides deliveries at run
 // time must agree on every state the verifier reports. A disagreement is a bug in one of them.
 #pragma once
 

@@ -1,4 +1,4 @@
-// What `arbc verify` found: per-port verdicts and findings (DESIGN.md section 5).
+// What `arbc verify` found: per-port verdicts and findings (docs/checks.md).
 //
 // The report is a plain value: the checks fill it in, the text / JSON / SARIF writers read it.
 // Nothing in it depends on Z3, so tools that only print reports need not link the solver.
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "core/app_model.h"
+#include "core/diagnostic.h"
 
 namespace arbc::verify {
 
@@ -49,6 +49,7 @@ struct Finding {
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
   std::vector<Note> notes;  // why each side holds, what to do
+  bool strict = false;      // a warning (dead, unused) that --strict made an error
 };
 
 // The outcome for one arbitrated port.

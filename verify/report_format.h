@@ -11,18 +11,27 @@
 namespace arbc::verify {
 
 struct InputReport {
+  InputReport(std::string input, VerifyReport report, std::vector<Diagnostic> errors = {})
+      : input(std::move(input)), report(std::move(report)), errors(std::move(errors)) {}
   std::string input;  // the file given on the command line
   VerifyReport report;
+  // Bad input (a spec with errors, an app.json that does not load): what is wrong. Such an
+  // input was not verified (`report` is empty); its verdict is "error", never "proved".
+  std::vector<Diagnostic> errors;
+  bool bad_input() const { return !errors.empty(); }
 };
 
 // Compiler-style text: per port what was proved, or the findings with the spec lines quoted
-// from `sources` (may be null), then a summary line.
+// from `sources` (may be null), then a summary line. Bad inputs are left out (their diagnostics
+// went to stderr) but counted in the summary, whose verdict is then "error".
 std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats);
 
-// The JSON document described in docs/verify-json.md.
+// The JSON document described in docs/verify-json.md (a bad input: verdict "error" and its
+// diagnostics).
 std::string format_json(const std::vector<InputReport>& inputs, bool stats);
 
-// SARIF 2.1.0: one result per finding, ruleId = check id, help at docs/checks.md#<id>.
+// SARIF 2.1.0: one result per finding, ruleId = check id, help at docs/checks.md#<id>; a bad
+// input's diagnostics are results too (ruleId = diagnostic id, level error).
 std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version);
 
 }  // namespace arbc::verify

@@ -7,10 +7,12 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/app_json.h"
+#include "core/check_ids.h"
 #include "verify/test_models.h"
 #include "verify/verify.h"
 
@@ -53,9 +55,10 @@ TEST(Fixtures, AppJsonFilesMatchTheModels) {
 }
 
 std::vector<InputReport> reports(const model::App& app, VerifyOptions options = {}) {
-  VerifyResult r = verify_app(app, options);
-  EXPECT_TRUE(r.ok);
-  return {{"app.json", r.report}};
+  std::string error;
+  std::optional<VerifyReport> r = verify_app(app, options, &error);
+  EXPECT_TRUE(r) << error;
+  return {{"app.json", r ? std::move(*r) : VerifyReport{}}};
 }
 
 TEST(TextFormat, ProvedSaysWhatWasProvedWithoutTimings) {
@@ -86,6 +89,18 @@ TEST(TextFormat, LongListsAreCutToOneReadableLine) {
   EXPECT_THAT(text, Not(HasSubstr("r10,")));
   EXPECT_THAT(text, HasSubstr("over 2 events (a, b);"));  // short lists stay whole
   EXPECT_THAT(text, HasSubstr("proved: 1 port, 1000 rules"));
+}
+
+TEST(TextFormat, AssertCountAgreesWithItsVerb) {
+  VerifyReport report;
+  PortResult port;
+  port.port = "M.in";
+  port.rules = {"a", "b"};
+  port.asserts = 1;
+  report.ports.push_back(port);
+  EXPECT_THAT(format_text({{"one.json", report}}, nullptr, false), HasSubstr("; 1 assert holds\n"));
+  report.ports[0].asserts = 2;
+  EXPECT_THAT(format_text({{"two.json", report}}, nullptr, false), HasSubstr("; 2 asserts hold\n"));
 }
 
 TEST(TextFormat, RefutedQuotesTheRule) {
@@ -160,6 +175,18 @@ TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
                          kCheckComplete, kCheckAssert, kCheckUnknown, kCheckInternal}) {
     EXPECT_THAT(docs, HasSubstr(std::string("\n## ") + id + "\n")) << id;
   }
+}
+
+// `arbc check --list-ids` lists every id any stage reports: the verifier's too.
+TEST(Docs, EveryCheckIdIsRegistered) {
+  std::map<std::string, std::string> stage_of;
+  for (const frontend::CheckId& id : frontend::all_check_ids())
+    stage_of[std::string(id.id)] = std::string(id.stage);
+  for (const char* id : {kCheckExclusive, kCheckDead, kCheckUnfed, kCheckUnused, kCheckOwnership,
+                         kCheckComplete, kCheckAssert, kCheckUnknown}) {
+    EXPECT_EQ(stage_of[id], "verify") << id;
+  }
+  EXPECT_EQ(stage_of[kCheckInternal], "internal");
 }
 
 }  // namespace

@@ -39,6 +39,40 @@ Json finding_json(const Finding& f) {
   return j;
 }
 
+// A diagnostic of a bad input (the spec's errors, an app.json that does not load).
+Json diagnostic_json(const Diagnostic& d) {
+  Json j;
+  j["id"] = d.id;
+  j["severity"] = severity_name(d.severity);
+  j["message"] = d.message;
+  j["location"] = location_json(d.loc);
+  j["notes"] = Json::array();
+  for (const Diagnostic& n : d.notes)
+    j["notes"].push_back({{"message", n.message}, {"location", location_json(n.loc)}});
+  return j;
+}
+
+// An input that was not verified: verdict "error", no ports, its diagnostics.
+Json bad_input_json(const InputReport& in) {
+  Json j;
+  j["input"] = in.input;
+  j["app"] = "";
+  j["spec_file"] = "";
+  j["verdict"] = "error";
+  j["ports"] = Json::array();
+  j["findings"] = Json::array();
+  j["diagnostics"] = Json::array();
+  int errors = 0, warnings = 0;
+  for (const Diagnostic& d : in.errors) {
+    j["diagnostics"].push_back(diagnostic_json(d));
+    errors += d.severity == Severity::Error;
+    warnings += d.severity == Severity::Warning;
+  }
+  j["errors"] = errors;
+  j["warnings"] = warnings;
+  return j;
+}
+
 Json port_json(const PortResult& p, bool stats) {
   Json j;
   j["port"] = p.port;
@@ -65,9 +99,14 @@ Json port_json(const PortResult& p, bool stats) {
 std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
   Json root;
   root["schema"] = "arbc-verify/1";
-  bool refuted = false, unknown = false;
+  bool refuted = false, unknown = false, bad = false;
   root["inputs"] = Json::array();
   for (const InputReport& in : inputs) {
+    if (in.bad_input()) {
+      root["inputs"].push_back(bad_input_json(in));
+      bad = true;
+      continue;
+    }
     const VerifyReport& r = in.report;
     Json j;
     j["input"] = in.input;
@@ -78,6 +117,7 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     for (const PortResult& p : r.ports) j["ports"].push_back(port_json(p, stats));
     j["findings"] = Json::array();
     for (const Finding& f : r.app_findings) j["findings"].push_back(finding_json(f));
+    j["diagnostics"] = Json::array();
     j["errors"] = r.count(Severity::Error);
     j["warnings"] = r.count(Severity::Warning);
     if (stats) j["stats"] = {{"seconds", r.seconds}, {"solver_queries", r.solver_queries}};
@@ -85,7 +125,8 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     unknown |= r.verdict == Verdict::Unknown;
     root["inputs"].push_back(std::move(j));
   }
-  root["verdict"] = refuted ? "refuted" : unknown ? "unknown" : "proved";
+  // Bad input outranks every proof verdict, as exit code 2 outranks 1.
+  root["verdict"] = bad ? "error" : refuted ? "refuted" : unknown ? "unknown" : "proved";
   return root.dump(2) + "\n";
 }
 

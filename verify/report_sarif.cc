@@ -1,6 +1,8 @@
 // SARIF 2.1.0 (docs/verify-json.md, "SARIF"): one result per finding, for code scanning.
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "core/check_ids.h"
 #include "verify/report_format.h"
 
 namespace arbc::verify {
@@ -49,6 +51,44 @@ Json sarif_location(const model::SourceLocation& loc) {
   return Json{{"physicalLocation", phys}};
 }
 
+// Rules for the diagnostic ids of bad inputs (front-end ids, `io`, `app-json`), described by the
+// id registry; each once, after the proof's checks.
+void add_input_rules(const std::vector<InputReport>& inputs, Json& rules) {
+  std::set<std::string> listed;
+  for (const CheckDoc& c : kChecks) listed.insert(c.id);
+  for (const InputReport& in : inputs) {
+    for (const Diagnostic& d : in.errors) {
+      if (!listed.insert(d.id).second) continue;
+      std::string meaning = "a diagnostic of arbc";
+      for (const frontend::CheckId& id : frontend::all_check_ids())
+        if (id.id == d.id) meaning = std::string(id.meaning);
+      rules.push_back({{"id", d.id}, {"shortDescription", {{"text", meaning}}}});
+    }
+  }
+}
+
+// A bad input's diagnostic as a result: the input was not verified, whatever the level says.
+Json diagnostic_result(const Diagnostic& d) {
+  Json r;
+  r["ruleId"] = d.id;
+  r["level"] = sarif_level(d.severity);
+  std::string text = d.message;
+  for (const Diagnostic& n : d.notes) text += "\n" + n.message;
+  r["message"] = {{"text", text}};
+  r["locations"] = Json::array();
+  if (!d.loc.file.empty()) r["locations"].push_back(sarif_location(d.loc));
+  Json related = Json::array();
+  for (const Diagnostic& n : d.notes) {
+    if (n.loc.file.empty()) continue;
+    Json l = sarif_location(n.loc);
+    l["id"] = static_cast<int>(related.size());
+    l["message"] = {{"text", n.message}};
+    related.push_back(l);
+  }
+  if (!related.empty()) r["relatedLocations"] = related;
+  return r;
+}
+
 }  // namespace
 
 std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version) {
@@ -84,7 +124,9 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
     }
     results.push_back(std::move(r));
   };
+  add_input_rules(inputs, rules);
   for (const InputReport& in : inputs) {
+    for (const Diagnostic& d : in.errors) results.push_back(diagnostic_result(d));
     for (const PortResult& p : in.report.ports) {
       for (const Finding& f : p.findings) add(f);
     }

@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "core/join.h"
 #include "verify/report_format.h"
 
 namespace arbc::verify {
@@ -9,16 +10,11 @@ namespace {
 // line. The JSON and SARIF reports keep every name.
 constexpr size_t kListed = 12;
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (items.size() > kListed && i == kListed - 2) {
-      out += ", ..., " + items.back() + " (" + std::to_string(items.size()) + " in all)";
-      break;
-    }
-    out += (out.empty() ? "" : ", ") + items[i];
-  }
-  return out.empty() ? "none" : out;
+std::string listed(const std::vector<std::string>& items) {
+  if (items.empty()) return "none";
+  if (items.size() <= kListed) return join(items);
+  std::vector<std::string> first(items.begin(), items.begin() + (kListed - 2));
+  return join(first) + ", ..., " + items.back() + " (" + std::to_string(items.size()) + " in all)";
 }
 
 std::string plural(size_t n, const char* word) {
@@ -45,9 +41,12 @@ std::string port_line(const PortResult& p, bool stats) {
   line += verdict_name(p.verdict);
   if (p.verdict == Verdict::Proved) {
     line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
-                                : ": rules " + join(p.rules) + " are never selected together";
+                                : ": rules " + listed(p.rules) + " are never selected together";
     if (p.complete) line += "; some rule is selected in every state";
-    if (p.asserts) line += "; " + plural(static_cast<size_t>(p.asserts), "assert") + " hold";
+    if (p.asserts) {
+      line += "; " + plural(static_cast<size_t>(p.asserts), "assert") +
+              (p.asserts == 1 ? " holds" : " hold");
+    }
   } else {
     if (p.verdict == Verdict::Unknown) line += " (" + p.unknown_reason + ")";
     size_t errors = 0, warnings = 0;
@@ -65,10 +64,34 @@ std::string port_line(const PortResult& p, bool stats) {
     line += " [" + seconds_text(p.seconds) + ", " + std::to_string(p.solver_queries) +
             " solver quer" + (p.solver_queries == 1 ? "y" : "ies") + "]";
   }
-  line += "\n    over " + plural(p.events.size(), "event") + " (" + join(p.events) +
-          "); invariants used: " + join(p.invariants);
+  line += "\n    over " + plural(p.events.size(), "event") + " (" + listed(p.events) +
+          "); invariants used: " + listed(p.invariants);
   if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
   return line + "\n";
+}
+
+// "[dead] rule 'pull' of PullObject.cmd": what a warning that --strict made an error is about.
+std::string strict_item(const Finding& f) {
+  std::string what = "[" + f.check + "] ";
+  if (!f.event.empty())
+    return what + "event '" + f.event + "'" + (f.port.empty() ? "" : " of " + f.port);
+  if (!f.rules.empty())
+    return what + "rule '" + f.rules[0] + "'" + (f.port.empty() ? "" : " of " + f.port);
+  return what + f.port;
+}
+
+// The warnings that failed the run only because of --strict, for the summary line.
+std::vector<std::string> strict_failures(const std::vector<InputReport>& inputs) {
+  std::vector<std::string> out;
+  auto add = [&](const Finding& f) {
+    if (f.strict && f.severity == Severity::Error) out.push_back(strict_item(f));
+  };
+  for (const InputReport& in : inputs) {
+    for (const PortResult& p : in.report.ports)
+      for (const Finding& f : p.findings) add(f);
+    for (const Finding& f : in.report.app_findings) add(f);
+  }
+  return out;
 }
 
 }  // namespace
@@ -77,8 +100,13 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
   std::string out;
   size_t ports = 0, rules = 0, errors = 0, warnings = 0;
   bool refuted = false, unknown = false;
+  size_t bad = 0;
   double seconds = 0;
   for (const InputReport& in : inputs) {
+    if (in.bad_input()) {
+      ++bad;
+      continue;
+    }
     const VerifyReport& r = in.report;
     out += r.app.empty() ? in.input + ":\n" : r.app + " (" + in.input + "):\n";
     if (r.ports.empty()) out += "  no arbitrated ports\n";
@@ -95,9 +123,12 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
     unknown |= r.verdict == Verdict::Unknown;
     seconds += r.seconds;
   }
-  const char* verdict = refuted ? "refuted" : unknown ? "unknown" : "proved";
+  const char* verdict = bad ? "error" : refuted ? "refuted" : unknown ? "unknown" : "proved";
   out += std::string(verdict) + ": " + plural(ports, "port") + ", " + plural(rules, "rule") + "; " +
          plural(errors, "error") + ", " + plural(warnings, "warning");
+  if (bad) out += "; " + plural(bad, "input") + " not verified (bad input, on stderr)";
+  std::vector<std::string> strict = strict_failures(inputs);
+  if (!strict.empty()) out += "; warnings made errors by --strict: " + join(strict);
   if (stats) out += "; " + seconds_text(seconds);
   return out + "\n";
 }

@@ -58,14 +58,39 @@ std::map<std::string, Read> reads_of(const model::App& app, const model::Arbitra
   return reads;
 }
 
-}  // namespace
+// The fix for an event no rule or assert reads. Removing only its declaration would leave an
+// `invariant` or `exclusive` group that mentions it naming an unknown event (an error of
+// `arbc check`): the note names those too, each at its line.
+void add_unused_event_fix(const model::App& app, const std::string& event, Finding& f) {
+  std::vector<Note> mentions;
+  size_t invariants = 0;
+  for (const model::Invariant& inv : app.invariants) {
+    std::set<std::string> events;
+    inv.formula.collect_events(events);
+    if (!events.count(event)) continue;
+    mentions.push_back({"the invariant `" + inv.formula.to_string() + "` mentions it", inv.loc});
+    ++invariants;
+  }
+  for (const model::ExclusiveGroup& g : app.exclusive_groups) {
+    if (std::find(g.events.begin(), g.events.end(), event) != g.events.end())
+      mentions.push_back({"an exclusive group mentions it", g.loc});
+  }
+  if (mentions.empty()) {
+    f.notes.push_back({"remove it from the event declaration, or use it in a `when`", {}});
+    return;
+  }
+  std::string where = mentions.size() > 1 ? "the invariants and exclusive groups below"
+                      : invariants == 1   ? "the invariant below"
+                                          : "the exclusive group below";
+  f.notes.push_back(
+      {"use it in a `when`, or remove it from the event declaration and from " + where, {}});
+  f.notes.insert(f.notes.end(), mentions.begin(), mentions.end());
+}
 
-void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
-  std::map<std::string, std::map<std::string, Read>> reads;  // port -> event -> first reader
-  for (const model::ArbitratedPort& port : app.arbitrated_ports)
-    reads[port.port] = reads_of(app, port);
+using Reads = std::map<std::string, std::map<std::string, Read>>;  // port -> event -> reader
 
-  // unfed: per port, each read event must be set by some connection into the port.
+// unfed: per port, each read event must be set by some connection into the port.
+void check_unfed(const model::App& app, const Reads& reads, std::vector<Finding>& out) {
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
     std::set<std::string> fed;
     bool opaque_feeds = false;  // a `script` monitor may set any event: nothing is provably unfed
@@ -75,7 +100,7 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       opaque_feeds |= c->opaque;
     }
     if (opaque_feeds) continue;
-    for (const auto& [event, read] : reads[port.port]) {
+    for (const auto& [event, read] : reads.at(port.port)) {
       if (fed.count(event)) continue;
       Finding f;
       f.check = kCheckUnfed;
@@ -93,17 +118,22 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       out.push_back(std::move(f));
     }
   }
+}
 
-  // unused and ownership: per connection.
-  std::set<std::string> reported_unused;
+// unused and ownership, per connection: each event it sets is read by its port's rules or
+// asserts, and each event it unsets is one it sets. `reported_unused` gets the unused events.
+void check_connection_events(const model::App& app, bool strict, const Reads& reads,
+                             std::set<std::string>& reported_unused, std::vector<Finding>& out) {
   for (const model::Connection& c : app.connections) {
     const model::ArbitratedPort* dest = app.find_arbitrated(c.destination);
     std::set<std::string> sets = events_set_by(c);
     for (const std::string& event : sets) {
-      if (dest && reads[dest->port].count(event)) continue;
+      if (dest && reads.at(dest->port).count(event)) continue;
       Finding f;
       f.check = kCheckUnused;
       f.severity = strict ? Severity::Error : Severity::Warning;
+      f.strict = strict;
+      f.strict = strict;
       f.port = dest ? dest->port : "";
       f.rules = {c.name};
       f.event = event;
@@ -135,8 +165,11 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
       out.push_back(std::move(f));
     }
   }
+}
 
-  // unused: an event fed from a stream that no port reads (lowering generates no feed for it).
+// unused: an event fed from a stream that no port reads (lowering generates no feed for it).
+void check_stream_events(const model::App& app, bool strict, const Reads& reads,
+                         const std::set<std::string>& reported_unused, std::vector<Finding>& out) {
   for (const model::Event& e : app.events) {
     if (e.source.empty() || reported_unused.count(e.name)) continue;
     bool read = std::any_of(reads.begin(), reads.end(),
@@ -145,13 +178,26 @@ void run_structural_checks(const model::App& app, bool strict, std::vector<Findi
     Finding f;
     f.check = kCheckUnused;
     f.severity = strict ? Severity::Error : Severity::Warning;
+    f.strict = strict;
     f.event = e.name;
     f.loc = e.loc;
     f.message =
         "event '" + e.name + "' is set from " + e.source + ", but no rule or assert reads it";
-    f.notes.push_back({"remove it from the event declaration, or use it in a `when`", {}});
+    add_unused_event_fix(app, e.name, f);
     out.push_back(std::move(f));
   }
+}
+
+}  // namespace
+
+void run_structural_checks(const model::App& app, bool strict, std::vector<Finding>& out) {
+  Reads reads;
+  for (const model::ArbitratedPort& port : app.arbitrated_ports)
+    reads[port.port] = reads_of(app, port);
+  check_unfed(app, reads, out);
+  std::set<std::string> reported_unused;
+  check_connection_events(app, strict, reads, reported_unused, out);
+  check_stream_events(app, strict, reads, reported_unused, out);
 }
 
 }  // namespace arbc::verify

@@ -1,4 +1,4 @@
-// Checks that need no solver: who sets, unsets and reads which event (DESIGN.md section 5).
+// Checks that need no solver: who sets, unsets and reads which event (docs/checks.md).
 //   unfed      a constraint or assert of a port reads an event no connection into it sets
 //              (not reported for a port with a `script` rule: its code may set anything)
 //   unused     a connection sets an event its destination never reads

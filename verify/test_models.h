@@ -1,5 +1,5 @@
 // Core models built by hand for the verifier's tests: the paper's table-cleaning application as
-// the lowering produces it (DESIGN.md section 3: feeds, `by priority` activity events) and the
+// the lowering produces it (docs/lowering.md: feeds, `by priority` activity events) and the
 // search-and-track pair that verifies only thanks to must_set.
 #pragma once
 

@@ -20,9 +20,9 @@ double seconds_since(Clock::time_point start) {
 
 }  // namespace
 
-VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
-  VerifyResult out;
-  VerifyReport& report = out.report;
+std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOptions& options,
+                                       std::string* err) {
+  VerifyReport report;
   report.app = app.name;
   report.spec_file = app.spec_file;
   Clock::time_point start = Clock::now();
@@ -30,9 +30,11 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
       start + std::chrono::duration_cast<Clock::duration>(
                   std::chrono::duration<double>(std::max(0.0, options.timeout_seconds)));
 
-  std::vector<PortScope> scopes(app.arbitrated_ports.size());
-  for (size_t i = 0; i < app.arbitrated_ports.size(); ++i) {
-    if (!build_port_scope(app, app.arbitrated_ports[i], scopes[i], out.error)) return out;
+  std::vector<PortScope> scopes;
+  for (const model::ArbitratedPort& port : app.arbitrated_ports) {
+    std::optional<PortScope> scope = build_port_scope(app, port, err);
+    if (!scope) return std::nullopt;
+    scopes.push_back(std::move(*scope));
   }
 
   std::vector<Finding> structural;
@@ -69,8 +71,7 @@ VerifyResult verify_app(const model::App& app, const VerifyOptions& options) {
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);
-  out.ok = true;
-  return out;
+  return report;
 }
 
 }  // namespace arbc::verify

@@ -1,9 +1,10 @@
-// The verifier's public API (DESIGN.md section 5): proves, per arbitrated port, that no decision
-// state selects two rules, and runs the other checks (dead, unfed, unused, ownership, complete,
-// assert). Reads the core model only, so `arbc verify SPEC` (after lowering) and
-// `arbc verify app.json` give the same proof.
+// The verifier's public API (docs/design.md#the-proof): proves, per arbitrated port, that no
+// decision state selects two rules, and runs the other checks (dead, unfed, unused, ownership,
+// complete, assert). Reads the core model only, so `arbc verify SPEC` (after lowering) and `arbc
+// verify app.json` give the same proof.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/app_model.h"
@@ -20,16 +21,11 @@ struct VerifyOptions {
   int max_pairs_per_port = kDefaultMaxPairsPerPort;
 };
 
-// The model is malformed for verification (a port names a rule that does not go into it, an
-// assert names an unknown rule): a bad-input error, not a finding.
-struct VerifyResult {
-  bool ok = false;
-  std::string error;  // when !ok
-  VerifyReport report;
-};
-
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown
-// verdict, a Z3/runtime disagreement an `internal` error finding.
-VerifyResult verify_app(const model::App& app, const VerifyOptions& options);
+// verdict, a Z3/runtime disagreement an `internal` error finding. nullopt (and `err`) when the
+// model is malformed for verification (a port names a rule that does not go into it, an assert
+// names an unknown rule): a bad-input error, not a finding.
+std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOptions& options,
+                                       std::string* err);
 
 }  // namespace arbc::verify

@@ -32,9 +32,10 @@ z3::expr encode(z3::context& ctx, const Constraint& c) {
 PairwiseResult pairwise_baseline(const model::App& app) {
   PairwiseResult out;
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
-    PortScope scope;
     std::string error;
-    if (!build_port_scope(app, port, scope, error)) return out;
+    std::optional<PortScope> built = build_port_scope(app, port, &error);
+    if (!built) return out;
+    const PortScope& scope = *built;
     z3::context ctx;
     z3::solver solver(ctx);
     for (const DomainConstraint& d : scope.domain) solver.add(encode(ctx, d.formula));

@@ -41,11 +41,11 @@ struct RunTimeline {
   std::vector<EventLane> events;  // sorted by port, then event
 };
 
-// Builds the timeline of a run that ended at `end`: one lane per name in `connections`, in
-// that order (records naming another connection get a lane appended after them), and one
-// lane per (port, event) ever set. Presence is rebuilt from the set/unset records per owner
-// (an event is present while any owner's entry is: DESIGN.md section 4); `expire` records
-// only confirm what the expiry times already say, so they are not needed.
+// Builds the timeline of a run that ended at `end`: one lane per name in `connections`, in that
+// order (records naming another connection get a lane appended after them), and one lane per (port,
+// event) ever set. Presence is rebuilt from the set/unset records per owner (an event is present
+// while any owner's entry is: docs/design.md#events-and-lifetimes); `expire` records only confirm
+// what the expiry times already say, so they are not needed.
 RunTimeline build_run_timeline(const std::vector<std::string>& connections,
                                const std::vector<TraceRecord>& records, double end);
 

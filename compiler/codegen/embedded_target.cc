@@ -1,8 +1,8 @@
 #include "compiler/codegen/embedded_target.h"
 
 #include "compiler/codegen/monitor_writer.h"
+#include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/lowered_app.h"
-#include "compiler/lower/script_check.h"
 #include "core/app_json.h"
 #include "core/sha256.h"
 
@@ -13,15 +13,15 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
   model::App app = lowered.app;  // gains the monitors' source maps and digests
   SpecLines lines(lowered.spec_text);
   std::vector<OutputFile> monitors;
-  lower::LuaSyntaxChecker lua;
+  frontend::LuaSyntaxChecker lua;
   for (const lower::MonitorPlan& plan : lowered.monitors) {
     model::Connection& c = app.connections[plan.connection];
     if (c.monitor.empty()) continue;
     MonitorText m = write_monitor(lowered, plan, lines);
     // Every generated monitor must compile; if one does not, that is arbc's bug, and saying so
     // at build time beats a monitor failing on the robot.
-    std::string error = lua.check(m.text, c.monitor);
-    if (!error.empty()) {
+    std::string error;
+    if (!lua.check(m.text, c.monitor, &error)) {
       Diagnostic d;
       d.loc = c.loc;
       d.id = "codegen";

@@ -1,4 +1,5 @@
-// The `embedded` target: the bundled runtime's artifact directory (DESIGN.md section 6):
+// The `embedded` target: the bundled runtime's artifact directory
+// (docs/design.md#code-generation-targets):
 //   app.json                      the core model, with each monitor's source map
 //   monitors/<port>__<rule>.lua   one monitor per connection, generated feeds included
 #pragma once

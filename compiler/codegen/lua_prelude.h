@@ -1,6 +1,7 @@
-// The spec language's builtins (len, min_by, max_by, dist, norm, abs, min, max, now) as plain
-// Lua 5.4 local functions, copied into each generated monitor that uses them, so every monitor
-// is a self-contained file that needs nothing but the PortMonitor API (DESIGN.md section 6).
+// The spec language's builtins (len, min_by, max_by, dist, norm, abs, min, max, now) as plain Lua
+// 5.4 local functions, copied into each generated monitor that uses them, so every monitor is a
+// self-contained file that needs nothing but the PortMonitor API
+// (docs/runtime.md#lua-monitors-the-portmonitor-api).
 //
 // "No value" (min_by of an empty list, an index out of range) calls PortMonitor.novalue(),
 // which ends the callback; the runtime drops the message with the reason "no-value", counted

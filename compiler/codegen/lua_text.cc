@@ -3,9 +3,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "compiler/codegen/lua_prelude.h"
+#include "core/quote.h"
 
 namespace arbc::codegen {
 
@@ -33,38 +33,7 @@ bool is_lua_keyword(std::string_view name) {
   return false;
 }
 
-std::string lua_string(std::string_view text) {
-  std::string out = "\"";
-  for (unsigned char c : text) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      default:
-        if (c < 0x20 || c >= 0x7f) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\%03u", static_cast<unsigned>(c));
-          out += buf;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  out += '"';
-  return out;
-}
+std::string lua_string(std::string_view text) { return quoted(text, QuoteStyle::Lua); }
 
 std::string lua_float(double value) {
   if (std::isnan(value)) return "(0/0)";

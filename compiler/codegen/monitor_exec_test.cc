@@ -1,6 +1,7 @@
 // Generated monitors executed in a real Lua 5.4 state (not compared as text): messages go in,
-// accept/update results and the events in the port's container are checked. Section 4's
-// delivery steps are played by the harness; several monitors share one port's container.
+// accept/update results and the events in the port's container are checked. The delivery steps
+// (docs/design.md#the-message-path) are played by the harness; several monitors share one port's
+// container.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -306,6 +307,73 @@ connect Looker.gaze -> Head.gaze { accept norm(gaze) > 0.5; emit gaze * 2.0; }
   EXPECT_EQ(c.constraint(), "true");  // not arbitrated: always selected
   EXPECT_EQ(c.deliver("{x = 1, y = 0, z = 0}").value, "{x=2, y=0, z=0}");
   EXPECT_EQ(c.deliver("{x = 0.1, y = 0, z = 0}").reason, "rejected");
+}
+
+// ---- plausible bugs that survived mutation testing (issue 13; scripts/mutate.sh) ---------
+
+// `by priority` with a lowest `otherwise` rule: `otherwise` is "none of the others' effective
+// guards holds" AND the lowest rule is still suppressed while a higher rule's activity event
+// is held. Without the `not act_track` term, search would deliver as soon as the face is lost,
+// inside track's hold time.
+TEST(MonitorExecTest, OtherwiseUnderPriorityIsSuppressedDuringTheHold) {
+  App app(R"(app t;
+module Face   { out pos: vec3; }
+module Look   { out gaze: vec3; }
+module Status { out flags: list<string>; }
+module Head   { in gaze: vec3; }
+events from Status.flags { e_face } lifetime 5s;
+arbitrate Head.gaze by priority {
+  track:  from Face.pos when e_face hold 1s;
+  search: from Look.gaze when otherwise;
+}
+)");
+  ASSERT_EQ(app.error(), "");
+  auto& feed = app.monitor("Head.gaze", "feed_Status_flags");
+  auto& track = app.monitor("Head.gaze", "track");
+  auto& search = app.monitor("Head.gaze", "search");
+  const char* target = "{x = 1, y = 0, z = 0}";
+  EXPECT_TRUE(search.deliver(target).accepted);  // no face, nothing held: search looks around
+  feed.deliver("{ \"e_face\" }");
+  EXPECT_TRUE(track.deliver(target).accepted);  // act_track held for 1 s
+  EXPECT_EQ(search.deliver(target).reason, "not-selected");
+  app.set_time(0.1);
+  feed.deliver("{}");  // the face is lost: track's `when` no longer holds
+  EXPECT_EQ(track.deliver(target).reason, "not-selected");
+  EXPECT_EQ(search.deliver(target).reason, "not-selected");  // but the hold still suppresses it
+  app.set_time(0.9);
+  EXPECT_EQ(search.deliver(target).reason, "not-selected");
+  app.set_time(1.1);  // the hold is over
+  EXPECT_TRUE(search.deliver(target).accepted);
+}
+
+// `!=` on vec3, records and lists compares by content, run in Lua (not only as text): equal
+// values are rejected, different ones pass; `==` is its opposite.
+TEST(MonitorExecTest, NotEqualOnStructuredValuesComparesContent) {
+  App app(R"(app t;
+type Rec = { a: int, b: string };
+module Src { out p: vec3; out r: Rec; out l: list<int>; out q: vec3; }
+module Dst { in p: vec3; in r: Rec; in l: list<int>; in q: vec3; }
+connect Src.p -> Dst.p { accept p != vec3(1, 2, 3); }
+connect Src.r -> Dst.r { accept r != { a: 1, b: "x" }; }
+connect Src.l -> Dst.l { accept l != [1, 2]; }
+connect Src.q -> Dst.q { accept q == vec3(1, 2, 3); }
+)");
+  ASSERT_EQ(app.error(), "");
+  auto& p = app.monitor("Dst.p", "from_Src_p");
+  EXPECT_EQ(p.deliver("{x = 1, y = 2, z = 3}").reason, "rejected");
+  EXPECT_TRUE(p.deliver("{x = 1, y = 2, z = 4}").accepted);
+  auto& r = app.monitor("Dst.r", "from_Src_r");
+  EXPECT_EQ(r.deliver("{a = 1, b = \"x\"}").reason, "rejected");
+  EXPECT_TRUE(r.deliver("{a = 1, b = \"y\"}").accepted);
+  EXPECT_TRUE(r.deliver("{a = 2, b = \"x\"}").accepted);
+  auto& l = app.monitor("Dst.l", "from_Src_l");
+  EXPECT_EQ(l.deliver("{1, 2}").reason, "rejected");
+  EXPECT_TRUE(l.deliver("{1, 2, 3}").accepted);
+  EXPECT_TRUE(l.deliver("{2, 1}").accepted);
+  EXPECT_TRUE(l.deliver("{}").accepted);
+  auto& q = app.monitor("Dst.q", "from_Src_q");
+  EXPECT_TRUE(q.deliver("{x = 1, y = 2, z = 3}").accepted);
+  EXPECT_EQ(q.deliver("{x = 3, y = 2, z = 1}").reason, "rejected");
 }
 
 }  // namespace

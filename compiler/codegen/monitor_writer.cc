@@ -1,11 +1,14 @@
 #include "compiler/codegen/monitor_writer.h"
 
+#include <algorithm>
 #include <set>
 
 #include "compiler/codegen/lua_expr.h"
 #include "compiler/codegen/lua_prelude.h"
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/lua_writer.h"
+#include "core/join.h"
+#include "core/script_lines.h"
 
 namespace arbc::codegen {
 
@@ -36,12 +39,6 @@ using lower::MonitorPlan;
 
 // Where a body's statements run: accept() on a message, or trig() for `every`.
 enum class Mode { Message, Trig };
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
-  return out;
-}
 
 class MonitorWriter {
  public:
@@ -397,10 +394,12 @@ class MonitorWriter {
     w.line("local arbc_script = (function()");
     w.indent();
     w.line("local PortMonitor = setmetatable({}, { __index = PortMonitor })");
-    w.line("-- ---- begin " + lua_comment_text(s.file));
-    w.dedent();
     std::string text = s.text;
     if (!text.empty() && text.back() != '\n') text += '\n';
+    // The marker lets the runtime cite the user's file and line in errors (core/script_lines.h).
+    w.line(script_begin_line(lua_comment_text(s.file),
+                             static_cast<size_t>(std::count(text.begin(), text.end(), '\n'))));
+    w.dedent();
     w.raw(text);
     w.indent();
     w.line("-- ---- end " + lua_comment_text(s.file));

@@ -1,6 +1,6 @@
-// Writes one connection's Lua monitor (DESIGN.md section 6): a self-contained file using only
-// the PortMonitor API, with a header naming the spec, comments quoting the spec lines each part
-// comes from, and the builtins it needs defined at its top.
+// Writes one connection's Lua monitor (docs/lowering.md#the-generated-lua): a self-contained file
+// using only the PortMonitor API, with a header naming the spec, comments quoting the spec lines
+// each part comes from, and the builtins it needs defined at its top.
 //
 // Conventions shared with the runtime (docs/runtime.md):
 //   accept(msg) returns false, or false plus a drop reason ("throttled", "no-value"), or true;

@@ -1,6 +1,6 @@
-// Code-generation targets (DESIGN.md section 9). A target turns a lowered application into the
-// files of its artifact directory. `embedded` (the default) writes app.json and one Lua
-// monitor per connection for the bundled runtime; a `yarp` target (yarpmanager XML and
+// Code-generation targets (docs/design.md#code-generation-targets). A target turns a lowered
+// application into the files of its artifact directory. `embedded` (the default) writes app.json
+// and one Lua monitor per connection for the bundled runtime; a `yarp` target (yarpmanager XML and
 // YARP-compatible monitors) is an addition to the registry in target.cc, not a rewrite.
 #pragma once
 

@@ -44,38 +44,51 @@ bool write_file(const fs::path& path, const std::string& content) {
 // Puts the staging directory in the target's place in one step. renameat2 exchanges the two
 // atomically, so a program loading the app sees the old build or the new one, never neither;
 // where the file system cannot exchange, the old build is removed first.
-std::string swap_in(const fs::path& staging, const fs::path& target, bool target_exists) {
+bool swap_in(const fs::path& staging, const fs::path& target, bool target_exists,
+             std::string* err) {
   std::error_code ec;
   if (target_exists &&
       renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
     fs::remove_all(staging, ec);  // now the old build
-    return {};
+    return true;
   }
   fs::remove_all(target, ec);
-  if (ec) return "cannot replace " + quoted(target) + ": " + ec.message();
+  if (ec) {
+    *err = "cannot replace " + quoted(target) + ": " + ec.message();
+    return false;
+  }
   fs::rename(staging, target, ec);
-  if (ec) return "cannot move the build into " + quoted(target) + ": " + ec.message();
-  return {};
+  if (ec) {
+    *err = "cannot move the build into " + quoted(target) + ": " + ec.message();
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
 
-std::string write_artifacts(const std::string& out_dir, const std::string& app_name,
-                            const std::vector<OutputFile>& files) {
+bool write_artifacts(const std::string& out_dir, const std::string& app_name,
+                     const std::vector<OutputFile>& files, std::string* err) {
   std::error_code ec;
   fs::path target = fs::path(out_dir) / app_name;
   fs::path staging = fs::path(out_dir) / ("." + app_name + ".arbc-tmp");
   bool target_exists = fs::exists(target, ec);
   if (target_exists) {
-    if (!fs::is_directory(target, ec))
-      return quoted(target) + " exists and is not a directory; remove it or choose -o";
-    if (!fs::is_empty(target, ec) && !fs::exists(target / "app.json", ec))
-      return "refusing to replace " + quoted(target) +
+    if (!fs::is_directory(target, ec)) {
+      *err = quoted(target) + " exists and is not a directory; remove it or choose -o";
+      return false;
+    }
+    if (!fs::is_empty(target, ec) && !fs::exists(target / "app.json", ec)) {
+      *err = "refusing to replace " + quoted(target) +
              ": it is not empty and has no app.json (not an arbc build); choose another -o";
+      return false;
+    }
   }
   fs::remove_all(staging, ec);
-  if (!fs::create_directories(staging, ec) && ec)
-    return "cannot create " + quoted(staging) + ": " + ec.message();
+  if (!fs::create_directories(staging, ec) && ec) {
+    *err = "cannot create " + quoted(staging) + ": " + ec.message();
+    return false;
+  }
   fs::path made;  // the last directory created: monitors come in a row
   for (const OutputFile& f : files) {
     fs::path path = staging / f.path;
@@ -92,10 +105,11 @@ std::string write_artifacts(const std::string& out_dir, const std::string& app_n
       continue;
     if (!write_file(path, f.content)) {
       fs::remove_all(staging, ec);
-      return "cannot write " + quoted(previous);
+      *err = "cannot write " + quoted(previous);
+      return false;
     }
   }
-  return swap_in(staging, target, target_exists);
+  return swap_in(staging, target, target_exists, err);
 }
 
 }  // namespace arbc::codegen

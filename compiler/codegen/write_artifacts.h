@@ -13,8 +13,8 @@ namespace arbc::codegen {
 
 // Writes `files` (paths relative to the app directory) into `out_dir`/`app_name`, replacing an
 // earlier build there. Refuses to replace a non-empty directory that has no app.json (it is not
-// an arbc build). Returns an error message, or empty on success.
-std::string write_artifacts(const std::string& out_dir, const std::string& app_name,
-                            const std::vector<OutputFile>& files);
+// an arbc build). False (and `err`) when nothing was replaced.
+bool write_artifacts(const std::string& out_dir, const std::string& app_name,
+                     const std::vector<OutputFile>& files, std::string* err);
 
 }  // namespace arbc::codegen

@@ -38,21 +38,23 @@ class WriteArtifacts : public ::testing::Test {
 };
 
 TEST_F(WriteArtifacts, RebuildKeepsUnchangedFilesAndReplacesTheRest) {
-  ASSERT_EQ(write_artifacts(out_, "app",
-                            {{"app.json", "{}\n"},
-                             {"monitors/a.lua", "-- a\n"},
-                             {"monitors/b.lua", "-- b\n"},
-                             {"monitors/gone.lua", "-- gone\n"}}),
-            "");
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app",
+                              {{"app.json", "{}\n"},
+                               {"monitors/a.lua", "-- a\n"},
+                               {"monitors/b.lua", "-- b\n"},
+                               {"monitors/gone.lua", "-- gone\n"}},
+                              &error))
+      << error;
   fs::path app = out_ / "app";
   ino_t a_before = inode(app / "monitors/a.lua");
   ino_t b_before = inode(app / "monitors/b.lua");
 
-  ASSERT_EQ(write_artifacts(out_, "app",
-                            {{"app.json", "{}\n"},
-                             {"monitors/a.lua", "-- a\n"},
-                             {"monitors/b.lua", "-- b, changed\n"}}),
-            "");
+  ASSERT_TRUE(write_artifacts(
+      out_, "app",
+      {{"app.json", "{}\n"}, {"monitors/a.lua", "-- a\n"}, {"monitors/b.lua", "-- b, changed\n"}},
+      &error))
+      << error;
   EXPECT_EQ(inode(app / "monitors/a.lua"), a_before);  // the same file, linked
   EXPECT_EQ(read(app / "monitors/a.lua"), "-- a\n");
   EXPECT_EQ(read(app / "monitors/b.lua"), "-- b, changed\n");
@@ -65,7 +67,8 @@ TEST_F(WriteArtifacts, RebuildKeepsUnchangedFilesAndReplacesTheRest) {
 TEST_F(WriteArtifacts, RefusesToReplaceADirectoryThatIsNotABuild) {
   fs::create_directories(out_ / "app");
   std::ofstream(out_ / "app" / "notes.txt") << "mine\n";
-  std::string error = write_artifacts(out_, "app", {{"app.json", "{}\n"}});
+  std::string error;
+  EXPECT_FALSE(write_artifacts(out_, "app", {{"app.json", "{}\n"}}, &error));
   EXPECT_NE(error.find("refusing to replace"), std::string::npos) << error;
   EXPECT_EQ(read(out_ / "app" / "notes.txt"), "mine\n");
 }

@@ -29,8 +29,10 @@ std::vector<Cube> expand(const Constraint& c, bool negate, size_t cap, bool* tru
     case Op::True:
     case Op::False:
       return (c.op == Op::True) != negate ? std::vector<Cube>{Cube{}} : std::vector<Cube>{};
-    case Op::Event: return {Cube{{c.event, !negate}}};
-    case Op::Not: return expand(c.args[0], !negate, cap, truncated);
+    case Op::Event:
+      return {Cube{{c.event, !negate}}};
+    case Op::Not:
+      return expand(c.args[0], !negate, cap, truncated);
     case Op::And:
     case Op::Or: {
       // De Morgan: a negated conjunction is a disjunction of negations.
@@ -97,11 +99,15 @@ std::string dnf_text(const Constraint& c, size_t max_cubes) {
 }
 
 DecisionTable decision_table(const model::App& app, const model::ArbitratedPort& port) {
+  return decision_table(port, app.connections_into(port.port));
+}
+
+DecisionTable decision_table(const model::ArbitratedPort& port,
+                             std::span<const model::Connection* const> into) {
   DecisionTable table;
   table.port = port.port;
   std::vector<Constraint> guards;
   std::set<std::string> events;
-  std::vector<const model::Connection*> into = app.connections_into(port.port);
   for (const std::string& name : port.rules) {
     for (const model::Connection* c : into) {
       if (c->name != name || c->kind != model::ConnectionKind::Rule) continue;

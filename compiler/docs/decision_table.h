@@ -1,7 +1,8 @@
-// Decision tables for arbitrated ports: which rule an event state selects (arbc docs).
-// Rules are compared by their effective guards (DESIGN.md section 5), as the proof does.
+// Decision tables for arbitrated ports: which rule an event state selects (arbc docs). Rules are
+// compared by their effective guards (docs/design.md#effective-guards), as the proof does.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,8 @@ namespace arbc::docs {
 inline constexpr int kMaxTableEvents = 6;
 
 struct DecisionRow {
-  std::vector<bool> present;           // one per DecisionTable::events
-  std::vector<std::string> selected;   // rules whose effective guard holds; empty: none
+  std::vector<bool> present;          // one per DecisionTable::events
+  std::vector<std::string> selected;  // rules whose effective guard holds; empty: none
 };
 
 struct RuleGuard {
@@ -33,6 +34,10 @@ struct DecisionTable {
 };
 
 DecisionTable decision_table(const model::App& app, const model::ArbitratedPort& port);
+// The same, given every connection into the port (App::connections_into, or an index of them
+// when tabulating many ports).
+DecisionTable decision_table(const model::ArbitratedPort& port,
+                             std::span<const model::Connection* const> into);
 
 // Disjunctive normal form of a constraint, as text; contradictory cubes are dropped and the
 // expansion stops at `max_cubes` (then the text ends with " or ..."), so it always terminates

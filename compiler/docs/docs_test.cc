@@ -17,9 +17,13 @@ model::App search_and_track() {
   model::App app;
   app.name = "search_and_track";
   app.description = "Look around until a face appears | then track it.";
-  app.modules = {{"FaceDetector", "faces", {{"face", model::Direction::Out, parse_type("{pos: vec3, certainty: float}"), {}}}, {}},
-                 {"LookAround", "", {{"gaze", model::Direction::Out, parse_type("vec3"), {}}}, {}},
-                 {"HeadControl", "", {{"gaze", model::Direction::In, parse_type("vec3"), {}}}, {}}};
+  app.modules = {
+      {"FaceDetector",
+       "faces",
+       {{"face", model::Direction::Out, parse_type("{pos: vec3, certainty: float}"), {}}},
+       {}},
+      {"LookAround", "", {{"gaze", model::Direction::Out, parse_type("vec3"), {}}}, {}},
+      {"HeadControl", "", {{"gaze", model::Direction::In, parse_type("vec3"), {}}}, {}}};
   app.events.push_back({"e_face_detected", 1.0, "", {}});
   Connection track;
   track.name = "track";
@@ -70,7 +74,8 @@ TEST(DecisionTableTest, OverlapsShowBothRules) {
 TEST(DecisionTableTest, ManyEventsFallBackToNormalForm) {
   model::App app = search_and_track();
   app.connections[1].constraint =
-      parse_constraint("not e_face_detected and (a or b) and (c or d) and e and f and g").constraint;
+      parse_constraint("not e_face_detected and (a or b) and (c or d) and e and f and g")
+          .constraint;
   DecisionTable t = decision_table(app, app.arbitrated_ports[0]);
   EXPECT_FALSE(t.tabulated);
   EXPECT_TRUE(t.rows.empty());
@@ -85,7 +90,8 @@ TEST(DnfTest, DropsContradictionsAndCapsGrowth) {
   EXPECT_EQ(dnf_text(parse_constraint("a and not a").constraint), "false");
   EXPECT_EQ(dnf_text(parse_constraint("not (a and b)").constraint), "not a or not b");
   std::string big = "(a0 or b0)";
-  for (int i = 1; i < 20; ++i) big += " and (a" + std::to_string(i) + " or b" + std::to_string(i) + ")";
+  for (int i = 1; i < 20; ++i)
+    big += " and (a" + std::to_string(i) + " or b" + std::to_string(i) + ")";
   std::string text = dnf_text(parse_constraint(big).constraint, 8);
   EXPECT_EQ(text.substr(text.size() - 7), " or ...");
 }
@@ -112,11 +118,12 @@ void expect_consistent_tables(const std::string& markdown) {
 
 TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
   model::App app = search_and_track();
-  DocsInput input{&app, {"HeadControl.gaze: proved"}, "app.svg"};
+  DocsInput input{&app, {"HeadControl.gaze: proved"}, "app.svg", ""};
   std::string md = render_index_markdown(input);
   expect_consistent_tables(md);
   EXPECT_NE(md.find("\nLook around until a face appears | then track it.\n"), std::string::npos);
-  EXPECT_NE(md.find("| track | FaceDetector.face | HeadControl.gaze | `true` | sets e_face_detected | user |"),
+  EXPECT_NE(md.find("| track | FaceDetector.face | HeadControl.gaze | `true` | sets "
+                    "e_face_detected | user |"),
             std::string::npos);
   EXPECT_NE(md.find("| feed_x | FaceDetector.face | HeadControl.gaze | `false` | feeds x into the "
                     "container; never delivers | arbc |"),
@@ -126,11 +133,33 @@ TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
   EXPECT_NE(md.find("- HeadControl.gaze: proved"), std::string::npos);
 }
 
+// A by-priority port as lowering writes it: the higher rule has an activity event (its hold),
+// the lower one reads `not act_track`.
+model::App priority_app() {
+  model::App app = search_and_track();
+  app.arbitrated_ports[0].by_priority = true;
+  app.connections[0].constraint = parse_constraint("a").constraint;
+  app.connections[0].activity_event = "act_track";
+  app.connections[0].sets = {"act_track", "e_face_detected"};
+  app.connections[1].constraint =
+      parse_constraint("not e_face_detected and not act_track").constraint;
+  app.events.push_back({"act_track", 0.5, "", {}});
+  return app;
+}
+
 TEST(GraphDocsTest, GraphvizAcceptsTheDiagram) {
   model::App app = search_and_track();
   std::string dot = render_dot(app);
   EXPECT_NE(dot.find("style=dashed"), std::string::npos);  // the feed
-  EXPECT_NE(dot.find("label=\"track [M]\""), std::string::npos);
+  // The arbitrator box names its port, each rule with its `when`, and each feed's events;
+  // edges end at the rule's row.
+  EXPECT_NE(dot.find("<B>A HeadControl.gaze</B>"), std::string::npos);
+  EXPECT_NE(dot.find("<B>track</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when true<BR/>sets "
+                     "e_face_detected</TD>"),
+            std::string::npos);
+  EXPECT_NE(dot.find(">when not e_face_detected</TD>"), std::string::npos);
+  EXPECT_NE(dot.find("events from FaceDetector.face: x"), std::string::npos);
+  EXPECT_NE(dot.find("\"LookAround\" -> HeadControl_gaze:r1:w"), std::string::npos);
   std::string svg, error;
   ASSERT_TRUE(render_svg(dot, &svg, &error)) << error;
   EXPECT_NE(svg.find("<svg"), std::string::npos);
@@ -140,11 +169,50 @@ TEST(GraphDocsTest, GraphvizAcceptsTheDiagram) {
   EXPECT_EQ(error, "Graphviz `dot` failed on the generated diagram");
 }
 
+TEST(GraphDocsTest, PriorityShowsTheOrderTheWhenWrittenAndTheHold) {
+  std::string dot = render_dot(priority_app());
+  EXPECT_NE(dot.find("<B>A HeadControl.gaze</B> by priority, highest first"), std::string::npos);
+  // The activity events lowering added are not part of the `when` the user wrote.
+  EXPECT_NE(dot.find("<B>1 track</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when a<BR/>hold 0.5 "
+                     "s<BR/>sets e_face_detected</TD>"),
+            std::string::npos);
+  EXPECT_NE(dot.find("<B>2 search</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when not "
+                     "e_face_detected</TD>"),
+            std::string::npos);
+  std::string mmd = render_mermaid(priority_app());
+  EXPECT_NE(mmd.find("[[\"A HeadControl.gaze by priority<br/>1 track: when a, hold 0.5 s, sets "
+                     "e_face_detected<br/>2 search: when not e_face_detected\"]]"),
+            std::string::npos);
+}
+
+TEST(GraphDocsTest, LongConditionsWrapAndTextIsEscaped) {
+  model::App app = search_and_track();
+  app.connections[1].constraint =
+      parse_constraint("not e_face_detected and e_arm_idle and e_pull_idle and e_unreachable")
+          .constraint;
+  app.modules[0].name = "Face<Detector>";  // not a valid spec name, but the model allows it
+  app.connections[0].source = app.connections[2].source = "Face<Detector>.face";
+  std::string dot = render_dot(app);
+  EXPECT_NE(dot.find("when not e_face_detected and e_arm_idle and<BR/>e_pull_idle and "
+                     "e_unreachable"),
+            std::string::npos);
+  EXPECT_NE(dot.find("events from Face&lt;Detector&gt;.face: x"), std::string::npos);
+  std::string svg, error;
+  EXPECT_TRUE(render_svg(dot, &svg, &error)) << error;
+}
+
 TEST(GraphDocsTest, MermaidDrawsFeedsDashed) {
   std::string mmd = render_mermaid(search_and_track());
   EXPECT_EQ(mmd.rfind("flowchart LR\n", 0), 0u);
-  EXPECT_NE(mmd.find("FaceDetector -->|\"track M\"| HeadControl_gaze"), std::string::npos);
-  EXPECT_NE(mmd.find("FaceDetector -.->|\"feed_x\"| HeadControl_gaze"), std::string::npos);
+  EXPECT_NE(mmd.find("FaceDetector -->|track| HeadControl_gaze"), std::string::npos);
+  EXPECT_NE(mmd.find("FaceDetector -.->|\"x\"| HeadControl_gaze"), std::string::npos);
+  EXPECT_NE(mmd.find("HeadControl_gaze[[\"A HeadControl.gaze<br/>track: when true, sets "
+                     "e_face_detected<br/>search: when not e_face_detected\"]]"),
+            std::string::npos);
+}
+
+TEST(GraphDocsTest, CountsWhatADiagramWouldDraw) {
+  EXPECT_EQ(diagram_elements(search_and_track()), 3u + 1u + 3u);
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ struct DocsInput {
   // One line per verified port ("PickAndPlace.cmd: proved, 2 rules, 3 events"), or findings.
   // Empty when the verifier did not run.
   std::vector<std::string> verdicts;
-  std::string diagram_svg;  // file name of the diagram to embed, e.g. "app.svg"; empty: none
+  std::string diagram_svg;   // file name of the diagram to embed, e.g. "app.svg"; empty: none
+  std::string diagram_note;  // shown instead of the diagram when there is none (why not)
 };
 
 std::string render_index_markdown(const DocsInput& input);

@@ -2,17 +2,9 @@
 
 #include <sstream>
 
+#include "core/join.h"
+
 namespace arbc::docs {
-
-namespace {
-
-std::string join(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
-  return s;
-}
-
-}  // namespace
 
 std::string monitor_summary(const model::Connection& c) {
   std::vector<std::string> parts;

@@ -26,4 +26,6 @@ const ArbitrateDecl* Spec::find_arbitration(const std::string& qualified_port) c
   return nullptr;
 }
 
+std::string activity_event_name(const std::string& rule) { return "act_" + rule; }
+
 }  // namespace arbc::ast

@@ -1,4 +1,4 @@
-// The spec language's abstract syntax tree (DESIGN.md section 3), with source locations.
+// The spec language's abstract syntax tree (docs/language.md), with source locations.
 //
 // The parse-tree builder (ast_builder.*) fills the syntax; semantic analysis (sema.*) then
 // fills the fields marked "sema:" so that lowering never resolves a name or infers a type
@@ -326,5 +326,9 @@ struct Spec {
   const EventSymbol* find_event(const std::string& name) const;
   const ArbitrateDecl* find_arbitration(const std::string& qualified_port) const;
 };
+
+// The activity event `by priority` generates for a rule above the lowest: "act_" + rule
+// (docs/lowering.md). The name is reserved: sema rejects a declared event that takes it.
+std::string activity_event_name(const std::string& rule);
 
 }  // namespace arbc::ast

@@ -444,108 +444,169 @@ class Builder {
   void add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
     reported_depth_ = false;
     if (auto* c = ctx->appDecl()) {
-      AppDecl app;
-      app.name = tx(c->ID());
-      if (c->STRING()) app.doc = decode_string(c->STRING());
-      app.loc = loc(c->ID());
-      if (spec.app) {
-        error(app.loc,
-              "the app is already declared as '" + spec.app->name + "' at line " +
-                  std::to_string(spec.app->loc.line) + ": a spec describes one app",
-              "duplicate");
-        return;
-      }
-      spec.app = std::move(app);
+      add_app(spec, c);
     } else if (auto* c = ctx->typeDecl()) {
-      TypeDecl t;
-      t.name = tx(c->ID());
-      t.loc = loc(c->ID());
-      t.type = type_expr(c->typeExpr());
-      spec.types.push_back(std::move(t));
+      spec.types.push_back(type_decl(c));
     } else if (auto* c = ctx->constDecl()) {
-      ConstDecl k;
-      k.name = tx(c->ID());
-      k.loc = loc(c->ID());
-      k.value = expr(c->expr(), 0);
-      spec.consts.push_back(std::move(k));
+      spec.consts.push_back(const_decl(c));
     } else if (auto* c = ctx->moduleDecl()) {
-      ModuleDecl m;
-      m.name = tx(c->ID());
-      m.loc = loc(c->ID());
-      if (c->STRING()) m.doc = decode_string(c->STRING());
-      for (ArbcParser::PortDeclContext* p : c->portDecl()) {
-        PortDecl port;
-        port.name = tx(p->ID());
-        port.loc = loc(p->ID());
-        port.direction = tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
-        port.type = type_expr(p->typeExpr());
-        m.ports.push_back(std::move(port));
-      }
-      spec.modules.push_back(std::move(m));
+      spec.modules.push_back(module_decl(c));
     } else if (auto* c = ctx->eventDecl()) {
-      EventDecl e;
-      e.loc = loc(c);
-      for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({tx(id), loc(id)});
-      e.lifetime = optional_duration(c->duration());
-      spec.events.push_back(std::move(e));
+      spec.events.push_back(event_decl(c));
     } else if (auto* c = ctx->derivedEventDecl()) {
-      DerivedEventDecl e;
-      e.name = tx(c->ID());
-      e.loc = loc(c->ID());
-      e.source = port_ref(c->portRef());
-      e.predicate = expr(c->expr(), 0);
-      e.lifetime = optional_duration(c->duration());
-      spec.derived_events.push_back(std::move(e));
+      spec.derived_events.push_back(derived_event_decl(c));
     } else if (auto* c = ctx->statusEventsDecl()) {
-      StatusEventDecl e;
-      e.loc = loc(c);
-      e.source = port_ref(c->portRef());
-      for (ArbcParser::StatusEntryContext* entry : c->statusEntry()) {
-        StatusEventDecl::Entry x;
-        x.event = tx(entry->ID());
-        x.flag = entry->STRING() ? decode_string(entry->STRING()) : x.event;
-        x.loc = loc(entry);
-        e.entries.push_back(std::move(x));
-      }
-      e.lifetime = optional_duration(c->duration());
-      spec.status_events.push_back(std::move(e));
+      spec.status_events.push_back(status_events_decl(c));
     } else if (auto* c = ctx->exclusiveDecl()) {
-      ExclusiveDecl x;
-      x.loc = loc(c);
-      for (antlr4::tree::TerminalNode* id : c->ID()) x.events.push_back({tx(id), loc(id)});
-      spec.exclusives.push_back(std::move(x));
+      spec.exclusives.push_back(exclusive_decl(c));
     } else if (auto* c = ctx->invariantDecl()) {
-      InvariantDecl inv;
-      inv.loc = loc(c);
-      inv.formula = expr(c->expr(), 0);
-      spec.invariants.push_back(std::move(inv));
+      spec.invariants.push_back(invariant_decl(c));
     } else if (auto* c = ctx->arbitrateDecl()) {
-      ArbitrateDecl a;
-      a.loc = loc(c->getStart());
-      a.port = port_ref(c->portRef());
-      a.by_priority = c->byPriority != nullptr;
-      a.complete = c->isComplete != nullptr;
-      for (ArbcParser::RuleDeclContext* r : c->ruleDecl()) a.rules.push_back(rule(r));
-      spec.arbitrations.push_back(std::move(a));
+      spec.arbitrations.push_back(arbitrate_decl(c));
     } else if (auto* c = ctx->connectDecl()) {
-      ConnectDecl k;
-      k.loc = loc(c->getStart());
-      k.source = port_ref(c->portRef(0));
-      k.destination = port_ref(c->portRef(1));
-      if (c->block()) {
-        k.has_body = true;
-        k.body = block(c->block(), 0);
-      }
-      spec.connects.push_back(std::move(k));
+      spec.connects.push_back(connect_decl(c));
     } else if (auto* c = ctx->assertDecl()) {
-      AssertDecl a;
-      a.loc = loc(c->getStart());
-      a.port = port_ref(c->portRef());
-      a.rule = tx(c->ID());
-      a.rule_loc = loc(c->ID());
-      a.property = expr(c->expr(), 0);
-      spec.asserts.push_back(std::move(a));
+      spec.asserts.push_back(assert_decl(c));
     }
+  }
+
+  // appDecl : 'app' ID STRING? ';' ;   at most one per spec
+  void add_app(Spec& spec, ArbcParser::AppDeclContext* c) {
+    AppDecl app;
+    app.name = tx(c->ID());
+    if (c->STRING()) app.doc = decode_string(c->STRING());
+    app.loc = loc(c->ID());
+    if (spec.app) {
+      error(app.loc,
+            "the app is already declared as '" + spec.app->name + "' at line " +
+                std::to_string(spec.app->loc.line) + ": a spec describes one app",
+            "duplicate");
+      return;
+    }
+    spec.app = std::move(app);
+  }
+
+  // typeDecl : 'type' ID '=' typeExpr ';' ;
+  TypeDecl type_decl(ArbcParser::TypeDeclContext* c) {
+    TypeDecl t;
+    t.name = tx(c->ID());
+    t.loc = loc(c->ID());
+    t.type = type_expr(c->typeExpr());
+    return t;
+  }
+
+  // constDecl : 'const' ID '=' expr ';' ;
+  ConstDecl const_decl(ArbcParser::ConstDeclContext* c) {
+    ConstDecl k;
+    k.name = tx(c->ID());
+    k.loc = loc(c->ID());
+    k.value = expr(c->expr(), 0);
+    return k;
+  }
+
+  // moduleDecl : 'module' ID STRING? '{' portDecl* '}' ;
+  ModuleDecl module_decl(ArbcParser::ModuleDeclContext* c) {
+    ModuleDecl m;
+    m.name = tx(c->ID());
+    m.loc = loc(c->ID());
+    if (c->STRING()) m.doc = decode_string(c->STRING());
+    for (ArbcParser::PortDeclContext* p : c->portDecl()) {
+      PortDecl port;
+      port.name = tx(p->ID());
+      port.loc = loc(p->ID());
+      port.direction = tx(p->direction) == "in" ? model::Direction::In : model::Direction::Out;
+      port.type = type_expr(p->typeExpr());
+      m.ports.push_back(std::move(port));
+    }
+    return m;
+  }
+
+  // eventDecl : 'event' ID (',' ID)* ('lifetime' duration)? ';' ;
+  EventDecl event_decl(ArbcParser::EventDeclContext* c) {
+    EventDecl e;
+    e.loc = loc(c);
+    for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({tx(id), loc(id)});
+    e.lifetime = optional_duration(c->duration());
+    return e;
+  }
+
+  // derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? ';' ;
+  DerivedEventDecl derived_event_decl(ArbcParser::DerivedEventDeclContext* c) {
+    DerivedEventDecl e;
+    e.name = tx(c->ID());
+    e.loc = loc(c->ID());
+    e.source = port_ref(c->portRef());
+    e.predicate = expr(c->expr(), 0);
+    e.lifetime = optional_duration(c->duration());
+    return e;
+  }
+
+  // statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* '}'
+  //                    ('lifetime' duration)? ';' ;
+  StatusEventDecl status_events_decl(ArbcParser::StatusEventsDeclContext* c) {
+    StatusEventDecl e;
+    e.loc = loc(c);
+    e.source = port_ref(c->portRef());
+    for (ArbcParser::StatusEntryContext* entry : c->statusEntry()) {
+      StatusEventDecl::Entry x;
+      x.event = tx(entry->ID());
+      x.flag = entry->STRING() ? decode_string(entry->STRING()) : x.event;
+      x.loc = loc(entry);
+      e.entries.push_back(std::move(x));
+    }
+    e.lifetime = optional_duration(c->duration());
+    return e;
+  }
+
+  // exclusiveDecl : 'exclusive' '{' ID (',' ID)* '}' ';' ;
+  ExclusiveDecl exclusive_decl(ArbcParser::ExclusiveDeclContext* c) {
+    ExclusiveDecl x;
+    x.loc = loc(c);
+    for (antlr4::tree::TerminalNode* id : c->ID()) x.events.push_back({tx(id), loc(id)});
+    return x;
+  }
+
+  // invariantDecl : 'invariant' expr ';' ;
+  InvariantDecl invariant_decl(ArbcParser::InvariantDeclContext* c) {
+    InvariantDecl inv;
+    inv.loc = loc(c);
+    inv.formula = expr(c->expr(), 0);
+    return inv;
+  }
+
+  // arbitrateDecl : 'arbitrate' portRef ('by' 'priority')? 'complete'? '{' ruleDecl* '}' ;
+  ArbitrateDecl arbitrate_decl(ArbcParser::ArbitrateDeclContext* c) {
+    ArbitrateDecl a;
+    a.loc = loc(c->getStart());
+    a.port = port_ref(c->portRef());
+    a.by_priority = c->byPriority != nullptr;
+    a.complete = c->isComplete != nullptr;
+    for (ArbcParser::RuleDeclContext* r : c->ruleDecl()) a.rules.push_back(rule(r));
+    return a;
+  }
+
+  // connectDecl : 'connect' portRef '->' portRef (block | ';') ;
+  ConnectDecl connect_decl(ArbcParser::ConnectDeclContext* c) {
+    ConnectDecl k;
+    k.loc = loc(c->getStart());
+    k.source = port_ref(c->portRef(0));
+    k.destination = port_ref(c->portRef(1));
+    if (c->block()) {
+      k.has_body = true;
+      k.body = block(c->block(), 0);
+    }
+    return k;
+  }
+
+  // assertDecl : 'assert' portRef ':' ID '->' expr ';' ;
+  AssertDecl assert_decl(ArbcParser::AssertDeclContext* c) {
+    AssertDecl a;
+    a.loc = loc(c->getStart());
+    a.port = port_ref(c->portRef());
+    a.rule = tx(c->ID());
+    a.rule_loc = loc(c->ID());
+    a.property = expr(c->expr(), 0);
+    return a;
   }
 
   // ---- rules (private below) --------------------------------------------------------------

@@ -33,15 +33,25 @@ void sort_by_position(std::vector<Diagnostic>& diagnostics) {
                    });
 }
 
+// Editors on Windows may start a UTF-8 file with a byte-order mark: it is not part of the text
+// (and, kept, would be an invisible "unexpected character" at 1:1).
+std::string_view without_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text.substr(0, kBom.size()) == kBom) text.remove_prefix(kBom.size());
+  return text;
+}
+
 }  // namespace
 
-CheckResult check_text(std::string_view text, const std::string& file) {
+CheckResult check_text(std::string_view text, const std::string& file,
+                       const std::string& script_dir) {
+  text = without_bom(text);
   CheckResult result;
   result.source = std::string(text);
   ParseResult parsed = parse_spec(text, file);
   result.diagnostics = std::move(parsed.diagnostics);
   if (parsed.spec) {
-    check_spec(*parsed.spec, result.diagnostics);
+    check_spec(*parsed.spec, result.diagnostics, script_dir);
     result.spec = std::move(parsed.spec);
   }
   sort_by_position(result.diagnostics);

@@ -28,8 +28,10 @@ struct CheckResult {
   bool ok() const;
 };
 
-// Parses and checks spec text; `file` names it in diagnostics.
-CheckResult check_text(std::string_view text, const std::string& file);
+// Parses and checks spec text; `file` names it in diagnostics. `script_dir` as for check_spec
+// (sema.h): where `script` paths are relative to, by default the folder of `file` on disk.
+CheckResult check_text(std::string_view text, const std::string& file,
+                       const std::string& script_dir = "");
 
 // Reads and checks a spec file. A missing file, a directory, an unreadable or oversized file
 // (over kMaxSpecBytes) is a diagnostic with id "io".

@@ -190,6 +190,19 @@ TEST(Frontend, NonAsciiTextKeepsItsBytesAndColumnsCountCharacters) {
   EXPECT_EQ(r.diagnostics[0].loc.column, 25);  // characters, not bytes (which would be 27)
 }
 
+TEST(Frontend, AByteOrderMarkIsNotPartOfTheText) {
+  CheckResult r = check_text(
+      "\xEF\xBB\xBF"
+      "app t; module M { out x: flot; }\n",
+      "bom.spec");
+  ASSERT_TRUE(r.spec);
+  EXPECT_EQ(r.spec->app->name, "t");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << ids(r);
+  EXPECT_EQ(r.diagnostics[0].id, "unknown-type");
+  EXPECT_EQ(r.diagnostics[0].loc.column, 26);  // counted from after the mark
+  EXPECT_EQ(r.source.substr(0, 3), "app");
+}
+
 TEST(Frontend, RenderCapsTheNumberOfErrors) {
   std::vector<Diagnostic> many(60);
   for (Diagnostic& d : many) d.message = "x";

@@ -3,13 +3,16 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
+#include "core/diagnostic.h"
 
 namespace arbc::frontend {
+
+struct BuiltinInfo;  // sema_expr.cc
 
 // One name visible in a monitor body or predicate.
 struct Binding {
@@ -45,11 +48,57 @@ struct BodyContext {
   bool saw_every = false;
 };
 
+// A monitor body and the connection it runs on: what check_monitor needs of a rule or a connect.
+struct MonitorSite {
+  ast::Block* body = nullptr;
+  const ast::PortRef* source = nullptr;
+  bool source_ok = false;  // the source resolved
+  std::string message_name;
+  TypePtr destination_type;  // null if the destination did not resolve
+  std::string destination;   // "Module.port"
+  ast::Loc loc;              // the rule or connect, for "delivers its input unchanged"
+};
+
+// Checks one spec (check_spec's work). Only run() is public: the passes, the symbol tables and
+// the reporting helpers are its own business (sema_decls.cc, sema_body.cc, sema_expr.cc).
 class Sema {
  public:
-  Sema(ast::Spec& spec, std::vector<Diagnostic>& out) : spec_(spec), out_(out) {}
+  Sema(ast::Spec& spec, std::vector<Diagnostic>& out, std::string script_dir)
+      : spec_(spec), out_(out), script_dir_(std::move(script_dir)) {}
 
   void run();  // sema_decls.cc
+
+ private:
+  // ---- the passes, one per kind of declaration, in run()'s order (sema_decls.cc) ----
+  // The spec starts with `app NAME;`.
+  void check_app_declared();
+  // Registers type, constant and module names (reporting duplicates), then resolves them.
+  void declare_types();
+  void declare_consts();
+  void declare_modules();
+  // Registers every event name once, whatever declares it (manual, status flag, derived).
+  void declare_events();
+  void add_event(ast::EventSymbol symbol);  // reports a name declared twice
+  void declare_manual_events(ast::EventDecl& e);
+  // `events from M.p { ... }`: a list<string> source, each flag mapped once.
+  void declare_status_events(ast::StatusEventDecl& e);
+  // After all events exist, so that a predicate naming an event gets the right message.
+  void check_derived_predicates();
+  // `exclusive` groups and invariants: domain knowledge for the proof.
+  void check_domain();
+  // An arbitrated port (once per port) and each of its rules: name, source, when, hold, body.
+  void check_arbitration(ast::ArbitrateDecl& a);
+  // A rule's `when` (or `otherwise`, at most one per port) into r.constraint.
+  void check_rule_when(ast::Rule& r, const std::string& port, const ast::Rule*& otherwise_rule);
+  // `hold` only under `by priority`, never on the lowest rule, and required on the others.
+  void check_rule_hold(ast::ArbitrateDecl& a, size_t i);
+  // The body of a rule or connect, and that an input delivered unchanged fits the destination.
+  // `owner` names it in body messages ("rule 'take'"), `subject` in the unchanged-input one.
+  void check_monitor(const MonitorSite& site, const std::string& owner, const std::string& subject);
+  // A plain connection: into a port nothing else feeds and no `arbitrate` block owns.
+  void check_connect(ast::ConnectDecl& c);
+  // An assertion names a rule of an arbitrated port; its property is a constraint.
+  void check_assert(ast::AssertDecl& a);
 
   // ---- reporting (sema_decls.cc) ----
   Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
@@ -59,8 +108,26 @@ class Sema {
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
 
+  // ---- types and ports (sema_decls.cc) ----
+  // The structural type of a type expression (records the result in it); null on error.
+  TypePtr resolve_type(ast::TypeExpr& t);
+  // The type a `type` declaration names, resolving it once; reports cycles.
+  TypePtr resolve_type_decl(ast::TypeDecl& decl);
+  TypePtr resolve_named_type(ast::TypeExpr& t);
+  // Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
+  // empty (no check). Returns false if it did not resolve.
+  bool resolve_port(ast::PortRef& ref, const char* role, const std::string& use);
+
   // ---- expressions (sema_expr.cc) ----
+  // Types `e` and resolves its names (the "sema:" fields of ast::Expr); reports what is wrong.
   void check_expr(ast::Expr& e, Scope& scope);
+  void check_name(ast::Expr& e, Scope& scope);
+  void check_field(ast::Expr& e, Scope& scope);
+  void check_index(ast::Expr& e, Scope& scope);
+  void check_unary(ast::Expr& e, Scope& scope);
+  void check_binary(ast::Expr& e, Scope& scope);
+  void check_record(ast::Expr& e, Scope& scope);
+  void check_list(ast::Expr& e, Scope& scope);
   // A condition (`accept`, `if`, a derived event's predicate): reports non-bool with `id`.
   void check_condition(ast::Expr& e, Scope& scope, const std::string& what, const char* id);
   // Resolves a duration position to seconds; `what` names it ("the lifetime").
@@ -69,25 +136,45 @@ class Sema {
   // (the caller records it). Reports anything but events, true, false, not, and, or.
   Constraint check_constraint(ast::Expr& e, const std::string& where, bool otherwise_ok);
   void check_const(size_t index);
+  // A builtin call: the function exists, takes that many arguments of those types.
+  void check_call(ast::Expr& e, Scope& scope);
+  bool check_arity(ast::Expr& e, const BuiltinInfo& info);
+  // min_by / max_by: a list and a lambda giving each element a number.
+  void check_best_by(ast::Expr& e, Scope& scope);
+  // The argument types of the other builtins (all typed already) and the call's type.
+  void check_builtin_args(ast::Expr& e, const BuiltinInfo& info);
+  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
 
   // ---- bodies (sema_body.cc) ----
+  // The statements of a body in a scope of their own; `ctx` says where the body runs.
   void check_body(ast::Block& body, Scope& scope, BodyContext& ctx);
+  // `script` at the top level of a body is the whole body.
+  void check_script_alone(const ast::Block& body, const BodyContext& ctx);
+  // One statement, by kind (the functions below); may define a name in `scope`.
+  void check_stmt(ast::Stmt& s, Scope& scope, BodyContext& ctx);
+  void check_local(ast::Stmt& s, Scope& scope, const BodyContext& ctx);
+  void check_assign(ast::Stmt& s, Scope& scope);
+  void check_set(ast::Stmt& s);
+  void check_if(ast::Stmt& s, Scope& scope, BodyContext& ctx);
+  void check_emit(ast::Stmt& s, Scope& scope, const BodyContext& ctx);
+  void check_throttle(ast::Stmt& s, BodyContext& ctx);
+  void check_every(ast::Stmt& s, Scope& scope, BodyContext& ctx);
   static bool definitely_emits(const ast::Block& body);
   void check_script_file(const ast::Stmt& s);
 
   ast::Spec& spec_;
   std::vector<Diagnostic>& out_;
+  std::string script_dir_;  // check_spec's: where script paths are relative to
   std::map<std::string, ast::TypeDecl*> types_;
+  std::set<const ast::TypeDecl*> types_active_, types_done_;  // resolve_type_decl's progress
   std::map<std::string, size_t> consts_;
   std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
   std::map<const Type*, std::string> type_names_;
   std::map<std::string, size_t> events_;                   // name -> index in spec_.event_symbols
   std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each
   std::vector<std::string> event_names_;
-
- private:
-  void check_call(ast::Expr& e, Scope& scope);
-  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
+  std::map<std::string, const ast::ArbitrateDecl*> arbitrated_;  // "Module.port" -> its block
+  std::map<std::string, const ast::ConnectDecl*> fed_;  // ports a connect feeds -> the connect
 };
 
 }  // namespace arbc::frontend

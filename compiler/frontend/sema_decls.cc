@@ -1,5 +1,5 @@
 // Semantic analysis of declarations: duplicates, types, constants, modules and ports, events,
-// arbitrated ports and their rules, connects and assertions (DESIGN.md section 3).
+// arbitrated ports and their rules, connects and assertions (docs/language.md#declarations).
 #include <set>
 
 #include "compiler/frontend/sema.h"
@@ -57,125 +57,111 @@ const TypePtr& scalar_type(TypeExpr::Kind kind) {
 
 // ---- types --------------------------------------------------------------------------------
 
-class TypeResolver {
- public:
-  explicit TypeResolver(Sema& sema) : sema_(sema) {}
-
-  TypePtr resolve(TypeExpr& t) {
-    switch (t.kind) {
-      case TypeExpr::Kind::Bool:
-      case TypeExpr::Kind::Int:
-      case TypeExpr::Kind::Float:
-      case TypeExpr::Kind::String:
-      case TypeExpr::Kind::Vec3:
-        t.resolved = scalar_type(t.kind);
-        break;
-      case TypeExpr::Kind::List: {
-        TypePtr element = resolve(*t.element);
-        if (element) t.resolved = Type::list(element);
-        break;
+TypePtr Sema::resolve_type(TypeExpr& t) {
+  switch (t.kind) {
+    case TypeExpr::Kind::Bool:
+    case TypeExpr::Kind::Int:
+    case TypeExpr::Kind::Float:
+    case TypeExpr::Kind::String:
+    case TypeExpr::Kind::Vec3:
+      t.resolved = scalar_type(t.kind);
+      break;
+    case TypeExpr::Kind::List: {
+      TypePtr element = resolve_type(*t.element);
+      if (element) t.resolved = Type::list(element);
+      break;
+    }
+    case TypeExpr::Kind::Record: {
+      std::vector<Field> fields;
+      bool ok = true;
+      for (size_t i = 0; i < t.fields.size(); ++i) {
+        for (size_t j = 0; j < i; ++j)
+          if (t.fields[j].first == t.fields[i].first)
+            error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
+                  "duplicate");
+        TypePtr f = resolve_type(*t.fields[i].second);
+        if (!f) ok = false;
+        fields.push_back({t.fields[i].first, f});
       }
-      case TypeExpr::Kind::Record: {
-        std::vector<Field> fields;
-        bool ok = true;
-        for (size_t i = 0; i < t.fields.size(); ++i) {
-          for (size_t j = 0; j < i; ++j)
-            if (t.fields[j].first == t.fields[i].first)
-              sema_.error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
-                          "duplicate");
-          TypePtr f = resolve(*t.fields[i].second);
-          if (!f) ok = false;
-          fields.push_back({t.fields[i].first, f});
-        }
-        if (ok) t.resolved = Type::record(std::move(fields));
-        break;
-      }
-      case TypeExpr::Kind::Named:
-        t.resolved = resolve_named(t);
-        break;
+      if (ok) t.resolved = Type::record(std::move(fields));
+      break;
     }
-    return t.resolved;
+    case TypeExpr::Kind::Named:
+      t.resolved = resolve_named_type(t);
+      break;
   }
+  return t.resolved;
+}
 
-  TypePtr resolve_decl(TypeDecl& decl) {
-    if (done_.count(&decl)) return decl.type.resolved;
-    if (active_.count(&decl)) {
-      sema_.error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
-      done_.insert(&decl);
-      return nullptr;
-    }
-    active_.insert(&decl);
-    TypePtr t = resolve(decl.type);
-    active_.erase(&decl);
-    done_.insert(&decl);
-    // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
-    // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
-    bool creates =
-        decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
-    bool registered = sema_.types_.count(decl.name) && sema_.types_.at(decl.name) == &decl;
-    if (t && creates && registered && !sema_.type_names_.count(t.get()))
-      sema_.type_names_[t.get()] = decl.name;
-    return t;
+TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
+  if (types_done_.count(&decl)) return decl.type.resolved;
+  if (types_active_.count(&decl)) {
+    error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
+    types_done_.insert(&decl);
+    return nullptr;
   }
+  types_active_.insert(&decl);
+  TypePtr t = resolve_type(decl.type);
+  types_active_.erase(&decl);
+  types_done_.insert(&decl);
+  // A named record or list keeps its name in messages ("Cmd", not its fields). Only types
+  // this declaration creates: an alias (`type A = B;`, `type A = vec3;`) shares B's object.
+  bool creates = decl.type.kind == TypeExpr::Kind::Record || decl.type.kind == TypeExpr::Kind::List;
+  bool registered = types_.count(decl.name) && types_.at(decl.name) == &decl;
+  if (t && creates && registered && !type_names_.count(t.get())) type_names_[t.get()] = decl.name;
+  return t;
+}
 
- private:
-  TypePtr resolve_named(TypeExpr& t) {
-    auto it = sema_.types_.find(t.name);
-    if (it == sema_.types_.end()) {
-      std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
-      for (auto& [name, decl] : sema_.types_) names.push_back(name);
-      sema_.unknown(t.loc,
-                    "unknown type '" + t.name +
-                        "': the types are bool, int, float, string, vec3, list<T>, records and "
-                        "declared type names",
-                    "unknown-type", t.name, names);
-      return nullptr;
-    }
-    return resolve_decl(*it->second);
+TypePtr Sema::resolve_named_type(TypeExpr& t) {
+  auto it = types_.find(t.name);
+  if (it == types_.end()) {
+    std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
+    for (auto& [name, decl] : types_) names.push_back(name);
+    unknown(t.loc,
+            "unknown type '" + t.name +
+                "': the types are bool, int, float, string, vec3, list<T>, records and "
+                "declared type names",
+            "unknown-type", t.name, names);
+    return nullptr;
   }
-
-  Sema& sema_;
-  std::set<const TypeDecl*> active_, done_;
-};
+  return resolve_type_decl(*it->second);
+}
 
 // ---- port references ----------------------------------------------------------------------
 
-namespace {
-
-// Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
-// empty (no check). Returns false if it did not resolve.
-bool resolve_port(Sema& sema, PortRef& ref, const char* role, const std::string& use) {
-  auto found = sema.modules_.find(ref.module);
-  ref.module_decl = found == sema.modules_.end() ? nullptr : found->second;
+bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) {
+  auto found = modules_.find(ref.module);
+  ref.module_decl = found == modules_.end() ? nullptr : found->second;
   if (!ref.module_decl) {
     std::vector<std::string> names;
-    for (const ModuleDecl& m : sema.spec_.modules) names.push_back(m.name);
-    sema.unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module,
-                 names);
+    for (const ModuleDecl& m : spec_.modules) names.push_back(m.name);
+    unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module, names);
     return false;
   }
   ref.port_decl = ref.module_decl->find_port(ref.port);
   if (!ref.port_decl) {
     std::vector<std::string> names;
     for (const PortDecl& p : ref.module_decl->ports) names.push_back(p.name);
-    sema.unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
-                 "unknown-port", ref.port, names);
+    unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'", "unknown-port",
+            ref.port, names);
     return false;
   }
   std::string role_s = role;
   if (role_s == "source" && ref.port_decl->direction == model::Direction::In) {
-    sema.error(ref.loc,
-               ref.qualified() + " is an `in` port; " + use +
-                   " needs a source, which must be an `out` port",
-               "port-direction");
+    error(ref.loc,
+          ref.qualified() + " is an `in` port; " + use +
+              " needs a source, which must be an `out` port",
+          "port-direction");
   } else if (role_s == "destination" && ref.port_decl->direction == model::Direction::Out) {
-    sema.error(ref.loc,
-               ref.qualified() + " is an `out` port; " + use +
-                   " needs a destination, which must be an `in` port",
-               "port-direction");
+    error(ref.loc,
+          ref.qualified() + " is an `out` port; " + use +
+              " needs a destination, which must be an `in` port",
+          "port-direction");
   }
   return true;
 }
+
+namespace {
 
 TypePtr port_type(const PortRef& ref) {
   return ref.port_decl ? ref.port_decl->type.resolved : nullptr;
@@ -186,16 +172,31 @@ TypePtr port_type(const PortRef& ref) {
 // ---- the passes ---------------------------------------------------------------------------
 
 void Sema::run() {
-  if (!spec_.app) {
-    Loc start;
-    start.file = spec_.file;
-    start.line = 1;
-    start.column = 1;
-    error(start, "the spec has no app declaration: start it with `app NAME \"what it does\";`",
-          "missing-app");
-  }
+  check_app_declared();
+  declare_types();
+  declare_consts();
+  declare_modules();
+  declare_events();
+  check_derived_predicates();
+  check_domain();
+  for (ArbitrateDecl& a : spec_.arbitrations) check_arbitration(a);
+  for (ConnectDecl& c : spec_.connects) check_connect(c);
+  for (AssertDecl& a : spec_.asserts) check_assert(a);
+}
 
-  // Types (any order; cycles reported).
+void Sema::check_app_declared() {
+  if (spec_.app) return;
+  Loc start;
+  start.file = spec_.file;
+  start.line = 1;
+  start.column = 1;
+  error(start, "the spec has no app declaration: start it with `app NAME \"what it does\";`",
+        "missing-app");
+}
+
+// ---- types, constants, modules --------------------------------------------------------------
+
+void Sema::declare_types() {
   for (TypeDecl& t : spec_.types) {
     if (types_.count(t.name) || t.name == "bool" || t.name == "int" || t.name == "float" ||
         t.name == "string" || t.name == "vec3" || t.name == "list") {
@@ -210,10 +211,10 @@ void Sema::run() {
     }
     types_[t.name] = &t;
   }
-  TypeResolver types(*this);
-  for (TypeDecl& t : spec_.types) types.resolve_decl(t);
+  for (TypeDecl& t : spec_.types) resolve_type_decl(t);
+}
 
-  // Constants (any order; cycles reported).
+void Sema::declare_consts() {
   const_state_.assign(spec_.consts.size(), 0);
   for (size_t i = 0; i < spec_.consts.size(); ++i) {
     ConstDecl& c = spec_.consts[i];
@@ -228,16 +229,16 @@ void Sema::run() {
     consts_[c.name] = i;
   }
   for (size_t i = 0; i < spec_.consts.size(); ++i) check_const(i);
+}
 
-  // Modules and ports.
-  std::map<std::string, const ModuleDecl*>& modules = modules_;
+void Sema::declare_modules() {
   for (ModuleDecl& m : spec_.modules) {
-    if (modules.count(m.name)) {
+    if (modules_.count(m.name)) {
       error(m.loc,
-            "module '" + m.name + "' is already defined at " + where_defined(modules[m.name]->loc),
+            "module '" + m.name + "' is already defined at " + where_defined(modules_[m.name]->loc),
             "duplicate");
     } else {
-      modules[m.name] = &m;
+      modules_[m.name] = &m;
     }
     std::map<std::string, const PortDecl*> ports;
     for (PortDecl& p : m.ports) {
@@ -248,66 +249,16 @@ void Sema::run() {
               "duplicate");
       }
       ports[p.name] = &p;
-      types.resolve(p.type);
+      resolve_type(p.type);
     }
   }
+}
 
-  // Events: every name once, whatever declares it.
-  auto add_event = [&](EventSymbol symbol) {
-    auto it = events_.find(symbol.name);
-    if (it != events_.end()) {
-      error(symbol.loc,
-            "event '" + symbol.name + "' is already declared at " +
-                where_defined(spec_.event_symbols[it->second].loc),
-            "duplicate");
-      return;
-    }
-    events_[symbol.name] = spec_.event_symbols.size();
-    event_names_.push_back(symbol.name);
-    spec_.event_symbols.push_back(std::move(symbol));
-  };
-  for (EventDecl& e : spec_.events) {
-    if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
-    for (const EventName& n : e.names) {
-      EventSymbol s;
-      s.kind = EventSymbol::Kind::Manual;
-      s.name = n.name;
-      s.loc = n.loc;
-      if (e.lifetime) s.lifetime = e.lifetime->seconds;
-      add_event(std::move(s));
-    }
-  }
-  for (StatusEventDecl& e : spec_.status_events) {
-    if (resolve_port(*this, e.source, "source", "`events from`")) {
-      TypePtr t = port_type(e.source);
-      if (t &&
-          !(t->kind == Type::Kind::List && t->element && t->element->kind == Type::Kind::String)) {
-        error(e.source.loc,
-              "`events from` reads status flags, so " + e.source.qualified() +
-                  " must carry list<string>, not " + describe(t),
-              "status-source-type");
-      }
-    }
-    if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
-    std::map<std::string, Loc> flags;
-    for (const StatusEventDecl::Entry& entry : e.entries) {
-      if (flags.count(entry.flag)) {
-        error(entry.loc,
-              "flag \"" + entry.flag + "\" is already mapped to an event at " +
-                  where_defined(flags[entry.flag]),
-              "duplicate");
-      }
-      flags[entry.flag] = entry.loc;
-      EventSymbol s;
-      s.kind = EventSymbol::Kind::Status;
-      s.name = entry.event;
-      s.loc = entry.loc;
-      s.source = e.source.qualified();
-      s.flag = entry.flag;
-      if (e.lifetime) s.lifetime = e.lifetime->seconds;
-      add_event(std::move(s));
-    }
-  }
+// ---- events -------------------------------------------------------------------------------
+
+void Sema::declare_events() {
+  for (EventDecl& e : spec_.events) declare_manual_events(e);
+  for (StatusEventDecl& e : spec_.status_events) declare_status_events(e);
   for (DerivedEventDecl& e : spec_.derived_events) {
     EventSymbol s;
     s.kind = EventSymbol::Kind::Derived;
@@ -320,10 +271,70 @@ void Sema::run() {
     }
     add_event(std::move(s));
   }
-  // Predicates after all events exist, so a predicate naming an event gets the right message.
+}
+
+void Sema::add_event(EventSymbol symbol) {
+  auto it = events_.find(symbol.name);
+  if (it != events_.end()) {
+    error(symbol.loc,
+          "event '" + symbol.name + "' is already declared at " +
+              where_defined(spec_.event_symbols[it->second].loc),
+          "duplicate");
+    return;
+  }
+  events_[symbol.name] = spec_.event_symbols.size();
+  event_names_.push_back(symbol.name);
+  spec_.event_symbols.push_back(std::move(symbol));
+}
+
+void Sema::declare_manual_events(EventDecl& e) {
+  if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
+  for (const EventName& n : e.names) {
+    EventSymbol s;
+    s.kind = EventSymbol::Kind::Manual;
+    s.name = n.name;
+    s.loc = n.loc;
+    if (e.lifetime) s.lifetime = e.lifetime->seconds;
+    add_event(std::move(s));
+  }
+}
+
+void Sema::declare_status_events(StatusEventDecl& e) {
+  if (resolve_port(e.source, "source", "`events from`")) {
+    TypePtr t = port_type(e.source);
+    if (t &&
+        !(t->kind == Type::Kind::List && t->element && t->element->kind == Type::Kind::String)) {
+      error(e.source.loc,
+            "`events from` reads status flags, so " + e.source.qualified() +
+                " must carry list<string>, not " + describe(t),
+            "status-source-type");
+    }
+  }
+  if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
+  std::map<std::string, Loc> flags;
+  for (const StatusEventDecl::Entry& entry : e.entries) {
+    if (flags.count(entry.flag)) {
+      error(entry.loc,
+            "flag \"" + entry.flag + "\" is already mapped to an event at " +
+                where_defined(flags[entry.flag]),
+            "duplicate");
+    }
+    flags[entry.flag] = entry.loc;
+    EventSymbol s;
+    s.kind = EventSymbol::Kind::Status;
+    s.name = entry.event;
+    s.loc = entry.loc;
+    s.source = e.source.qualified();
+    s.flag = entry.flag;
+    if (e.lifetime) s.lifetime = e.lifetime->seconds;
+    add_event(std::move(s));
+  }
+}
+
+void Sema::check_derived_predicates() {
   for (DerivedEventDecl& e : spec_.derived_events) {
     Scope scope;
-    if (resolve_port(*this, e.source, "source", "a derived event")) {
+    if (resolve_port(e.source, "source", "a derived event")) {
       Binding message;
       message.kind = NameKind::Message;
       message.type = port_type(e.source);
@@ -332,8 +343,9 @@ void Sema::run() {
     check_condition(*e.predicate, scope, "the predicate of derived event '" + e.name + "'",
                     "predicate-type");
   }
+}
 
-  // Domain knowledge for the proof.
+void Sema::check_domain() {
   for (ExclusiveDecl& x : spec_.exclusives) {
     std::set<std::string> seen;
     for (const EventName& n : x.events) {
@@ -346,170 +358,169 @@ void Sema::run() {
   }
   for (InvariantDecl& inv : spec_.invariants)
     inv.constraint = check_constraint(*inv.formula, "an invariant", false);
+}
 
-  // Arbitrated ports and their rules.
-  std::map<std::string, const ArbitrateDecl*> arbitrated;
-  for (ArbitrateDecl& a : spec_.arbitrations) {
-    bool resolved = resolve_port(*this, a.port, "destination", "`arbitrate`");
-    std::string port = a.port.qualified();
-    if (arbitrated.count(port)) {
-      error(a.port.loc,
-            port + " is already arbitrated at " + where_defined(arbitrated[port]->loc) +
-                ": put all its rules in one `arbitrate` block",
+// ---- arbitrated ports and their rules ---------------------------------------------------------
+
+void Sema::check_arbitration(ArbitrateDecl& a) {
+  bool resolved = resolve_port(a.port, "destination", "`arbitrate`");
+  std::string port = a.port.qualified();
+  if (arbitrated_.count(port)) {
+    error(a.port.loc,
+          port + " is already arbitrated at " + where_defined(arbitrated_[port]->loc) +
+              ": put all its rules in one `arbitrate` block",
+          "duplicate");
+  } else {
+    arbitrated_[port] = &a;
+  }
+  TypePtr destination = resolved ? port_type(a.port) : nullptr;
+  std::map<std::string, const Rule*> names;
+  const Rule* otherwise_rule = nullptr;
+  for (size_t i = 0; i < a.rules.size(); ++i) {
+    Rule& r = a.rules[i];
+    r.port = &a;
+    r.message_name = r.source.port;
+    if (names.count(r.name)) {
+      error(r.loc,
+            "port " + port + " already has a rule '" + r.name + "' (" +
+                where_defined(names[r.name]->loc) + ")",
             "duplicate");
-    } else {
-      arbitrated[port] = &a;
     }
-    TypePtr destination = resolved ? port_type(a.port) : nullptr;
-    std::map<std::string, const Rule*> names;
-    const Rule* otherwise_rule = nullptr;
-    for (size_t i = 0; i < a.rules.size(); ++i) {
-      Rule& r = a.rules[i];
-      r.port = &a;
-      r.message_name = r.source.port;
-      if (names.count(r.name)) {
-        error(r.loc,
-              "port " + port + " already has a rule '" + r.name + "' (" +
-                  where_defined(names[r.name]->loc) + ")",
-              "duplicate");
-      }
-      names[r.name] = &r;
-      bool source_ok = resolve_port(*this, r.source, "source", "rule '" + r.name + "'");
-      if (r.when) {
-        if (r.when->kind == Expr::Kind::Otherwise) {
-          r.otherwise = true;
-          r.constraint = Constraint::constant(false);
-          if (otherwise_rule) {
-            error(r.when->loc,
-                  "port " + port + " already has an `otherwise` rule ('" + otherwise_rule->name +
-                      "', " + where_defined(otherwise_rule->loc) + "); at most one per port",
-                  "otherwise");
-          }
-          otherwise_rule = &r;
-        } else {
-          r.constraint =
-              check_constraint(*r.when, "the constraint of rule '" + r.name + "'", false);
-        }
-      } else {
-        r.constraint = Constraint::constant(true);
-      }
-      bool lowest = i + 1 == a.rules.size();
-      if (r.hold) {
-        check_duration(*r.hold, "the `hold` time");
-        if (!a.by_priority) {
-          error(r.hold->expr->loc,
-                "`hold` applies only to rules of a `by priority` port; " + port +
-                    " is not `by priority`",
-                "hold-without-priority");
-        } else if (lowest) {
-          error(r.hold->expr->loc,
-                "rule '" + r.name + "' is the lowest priority of " + port +
-                    ": nothing below it to suppress, so it takes no `hold`",
-                "hold-on-lowest");
-        }
-      } else if (a.by_priority && !lowest) {
-        error(r.loc,
-              "rule '" + r.name + "' outranks later rules of " + port +
-                  ": say how long it suppresses them with `hold D` (e.g. hold 1s)",
-              "hold-missing");
-      }
-      Scope scope;
-      Binding message;
-      message.kind = NameKind::Message;
-      message.type = source_ok ? port_type(r.source) : nullptr;
-      scope.define(r.message_name, message);
-      BodyContext ctx;
-      ctx.owner = "rule '" + r.name + "'";
-      ctx.destination_type = destination;
-      ctx.destination = port;
-      check_body(r.body, scope, ctx);
-      bool script = r.body.size() == 1 && r.body[0]->kind == Stmt::Kind::Script;
-      if (!script && !definitely_emits(r.body) && message.type && destination &&
-          !assignable(*message.type, *destination)) {
-        error(r.loc,
-              "rule '" + r.name + "' delivers its input unchanged" +
-                  (r.body.empty() ? "" : " on a path without `emit`") + ": " +
-                  r.source.qualified() + " carries " + describe(message.type) + " but " + port +
-                  " takes " + describe(destination) + " (add `emit VALUE;`)",
-              "emit-type");
-      }
-    }
-  }
-
-  // Plain monitored connections.
-  std::map<std::string, const ConnectDecl*> fed;
-  for (ConnectDecl& c : spec_.connects) {
-    bool source_ok = resolve_port(*this, c.source, "source", "`connect`");
-    bool destination_ok = resolve_port(*this, c.destination, "destination", "`connect`");
-    c.message_name = c.source.port;
-    std::string port = c.destination.qualified();
-    if (destination_ok) {
-      if (arbitrated.count(port)) {
-        error(c.destination.loc,
-              port + " is arbitrated (" + where_defined(arbitrated[port]->loc) +
-                  "): add a rule to its `arbitrate` block instead of a `connect`",
-              "connect-into-arbitrated");
-      } else if (fed.count(port)) {
-        error(c.destination.loc,
-              port + " already has a source (the connect at " + where_defined(fed[port]->loc) +
-                  "): two sources into one port must be arbitrated with `arbitrate " + port +
-                  " { ... }`",
-              "fan-in");
-      } else {
-        fed[port] = &c;
-      }
-    }
-    Scope scope;
-    Binding message;
-    message.kind = NameKind::Message;
-    message.type = source_ok ? port_type(c.source) : nullptr;
-    scope.define(c.message_name, message);
-    BodyContext ctx;
-    ctx.owner = "the connect into " + port;
-    ctx.destination_type = destination_ok ? port_type(c.destination) : nullptr;
-    ctx.destination = port;
-    check_body(c.body, scope, ctx);
-    bool script = c.body.size() == 1 && c.body[0]->kind == Stmt::Kind::Script;
-    if (!script && !definitely_emits(c.body) && message.type && ctx.destination_type &&
-        !assignable(*message.type, *ctx.destination_type)) {
-      error(c.loc,
-            "this connect delivers its input unchanged" +
-                std::string(c.body.empty() ? "" : " on a path without `emit`") + ": " +
-                c.source.qualified() + " carries " + describe(message.type) + " but " + port +
-                " takes " + describe(ctx.destination_type) + " (add `emit VALUE;`)",
-            "emit-type");
-    }
-  }
-
-  // Assertions.
-  for (AssertDecl& a : spec_.asserts) {
-    if (resolve_port(*this, a.port, "", "`assert`")) {
-      auto it = arbitrated.find(a.port.qualified());
-      if (it == arbitrated.end()) {
-        error(a.port.loc,
-              a.port.qualified() +
-                  " has no `arbitrate` block: assertions are about the rules "
-                  "of an arbitrated port",
-              "not-arbitrated");
-      } else {
-        std::vector<std::string> names;
-        for (const Rule& r : it->second->rules) {
-          names.push_back(r.name);
-          if (r.name == a.rule) a.rule_decl = &r;
-        }
-        if (!a.rule_decl) {
-          unknown(a.rule_loc, "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
-                  "unknown-rule", a.rule, names);
-        }
-      }
-    }
-    a.constraint = check_constraint(*a.property, "an assertion", false);
+    names[r.name] = &r;
+    bool source_ok = resolve_port(r.source, "source", "rule '" + r.name + "'");
+    check_rule_when(r, port, otherwise_rule);
+    check_rule_hold(a, i);
+    MonitorSite site{&r.body, &r.source, source_ok, r.message_name, destination, port, r.loc};
+    check_monitor(site, "rule '" + r.name + "'", "rule '" + r.name + "'");
   }
 }
 
-void check_spec(Spec& spec, std::vector<Diagnostic>& out) {
-  Sema sema(spec, out);
+void Sema::check_rule_when(Rule& r, const std::string& port, const Rule*& otherwise_rule) {
+  if (!r.when) {
+    r.constraint = Constraint::constant(true);
+    return;
+  }
+  if (r.when->kind != Expr::Kind::Otherwise) {
+    r.constraint = check_constraint(*r.when, "the constraint of rule '" + r.name + "'", false);
+    return;
+  }
+  r.otherwise = true;
+  r.constraint = Constraint::constant(false);
+  if (otherwise_rule) {
+    error(r.when->loc,
+          "port " + port + " already has an `otherwise` rule ('" + otherwise_rule->name + "', " +
+              where_defined(otherwise_rule->loc) + "); at most one per port",
+          "otherwise");
+  }
+  otherwise_rule = &r;
+}
+
+void Sema::check_rule_hold(ArbitrateDecl& a, size_t i) {
+  Rule& r = a.rules[i];
+  const std::string port = a.port.qualified();
+  bool lowest = i + 1 == a.rules.size();
+  if (r.hold) {
+    check_duration(*r.hold, "the `hold` time");
+    if (!a.by_priority) {
+      error(
+          r.hold->expr->loc,
+          "`hold` applies only to rules of a `by priority` port; " + port + " is not `by priority`",
+          "hold-without-priority");
+    } else if (lowest) {
+      error(r.hold->expr->loc,
+            "rule '" + r.name + "' is the lowest priority of " + port +
+                ": nothing below it to suppress, so it takes no `hold`",
+            "hold-on-lowest");
+    }
+  } else if (a.by_priority && !lowest) {
+    error(r.loc,
+          "rule '" + r.name + "' outranks later rules of " + port +
+              ": say how long it suppresses them with `hold D` (e.g. hold 1s)",
+          "hold-missing");
+  }
+}
+
+void Sema::check_monitor(const MonitorSite& site, const std::string& owner,
+                         const std::string& subject) {
+  Scope scope;
+  Binding message;
+  message.kind = NameKind::Message;
+  message.type = site.source_ok ? port_type(*site.source) : nullptr;
+  scope.define(site.message_name, message);
+  BodyContext ctx;
+  ctx.owner = owner;
+  ctx.destination_type = site.destination_type;
+  ctx.destination = site.destination;
+  Block& body = *site.body;
+  check_body(body, scope, ctx);
+  bool script = body.size() == 1 && body[0]->kind == Stmt::Kind::Script;
+  if (!script && !definitely_emits(body) && message.type && site.destination_type &&
+      !assignable(*message.type, *site.destination_type)) {
+    error(site.loc,
+          subject + " delivers its input unchanged" +
+              (body.empty() ? "" : " on a path without `emit`") + ": " + site.source->qualified() +
+              " carries " + describe(message.type) + " but " + site.destination + " takes " +
+              describe(site.destination_type) + " (add `emit VALUE;`)",
+          "emit-type");
+  }
+}
+
+// ---- plain connections and assertions -------------------------------------------------------
+
+void Sema::check_connect(ConnectDecl& c) {
+  bool source_ok = resolve_port(c.source, "source", "`connect`");
+  bool destination_ok = resolve_port(c.destination, "destination", "`connect`");
+  c.message_name = c.source.port;
+  std::string port = c.destination.qualified();
+  if (destination_ok) {
+    if (arbitrated_.count(port)) {
+      error(c.destination.loc,
+            port + " is arbitrated (" + where_defined(arbitrated_[port]->loc) +
+                "): add a rule to its `arbitrate` block instead of a `connect`",
+            "connect-into-arbitrated");
+    } else if (fed_.count(port)) {
+      error(c.destination.loc,
+            port + " already has a source (the connect at " + where_defined(fed_[port]->loc) +
+                "): two sources into one port must be arbitrated with `arbitrate " + port +
+                " { ... }`",
+            "fan-in");
+    } else {
+      fed_[port] = &c;
+    }
+  }
+  TypePtr destination = destination_ok ? port_type(c.destination) : nullptr;
+  MonitorSite site{&c.body, &c.source, source_ok, c.message_name, destination, port, c.loc};
+  check_monitor(site, "the connect into " + port, "this connect");
+}
+
+void Sema::check_assert(AssertDecl& a) {
+  if (resolve_port(a.port, "", "`assert`")) {
+    auto it = arbitrated_.find(a.port.qualified());
+    if (it == arbitrated_.end()) {
+      error(a.port.loc,
+            a.port.qualified() +
+                " has no `arbitrate` block: assertions are about the rules "
+                "of an arbitrated port",
+            "not-arbitrated");
+    } else {
+      std::vector<std::string> names;
+      for (const Rule& r : it->second->rules) {
+        names.push_back(r.name);
+        if (r.name == a.rule) a.rule_decl = &r;
+      }
+      if (!a.rule_decl) {
+        unknown(a.rule_loc, "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
+                "unknown-rule", a.rule, names);
+      }
+    }
+  }
+  a.constraint = check_constraint(*a.property, "an assertion", false);
+}
+
+void check_spec(Spec& spec, std::vector<Diagnostic>& out, const std::string& script_dir) {
+  Sema sema(spec, out, script_dir);
   sema.run();
+  check_activity_names(spec, out);
 }
 
 }  // namespace arbc::frontend

@@ -10,14 +10,7 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-namespace {
-
-const TypePtr kBool = Type::scalar(Type::Kind::Bool);
-const TypePtr kInt = Type::scalar(Type::Kind::Int);
-const TypePtr kFloat = Type::scalar(Type::Kind::Float);
-const TypePtr kString = Type::scalar(Type::Kind::String);
-const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
-
+// A builtin function: its name, arity and signature (for messages).
 struct BuiltinInfo {
   const char* name;
   Builtin builtin;
@@ -25,6 +18,14 @@ struct BuiltinInfo {
   int max_args;  // -1: any number
   const char* signature;
 };
+
+namespace {
+
+const TypePtr kBool = Type::scalar(Type::Kind::Bool);
+const TypePtr kInt = Type::scalar(Type::Kind::Int);
+const TypePtr kFloat = Type::scalar(Type::Kind::Float);
+const TypePtr kString = Type::scalar(Type::Kind::String);
+const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
 
 constexpr BuiltinInfo kBuiltins[] = {
     {"len", Builtin::Len, 1, 1, "len(list or string) -> int"},
@@ -71,7 +72,7 @@ const char* kind_word(Expr::Kind kind) {
 
 }  // namespace
 
-// ---- names --------------------------------------------------------------------------------
+// ---- expressions, one function per kind --------------------------------------------------
 
 void Sema::check_expr(Expr& e, Scope& scope) {
   switch (e.kind) {
@@ -92,203 +93,20 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       error(e.loc, "'otherwise' is a whole rule constraint (`when otherwise`), not a value",
             "otherwise");
       return;
-    case Expr::Kind::Name: {
-      if (const Binding* b = scope.find(e.text)) {
-        if (b->message_unavailable) {
-          error(e.loc,
-                "the message '" + e.text +
-                    "' is not available in an `every` body: it runs on a timer, not on a message",
-                "statement-context");
-          return;
-        }
-        e.name_kind = b->kind;
-        e.type = b->type;
-        e.is_duration = b->is_duration;
-        e.local = b->local;
-        e.lambda = b->lambda;
-        return;
-      }
-      auto k = consts_.find(e.text);
-      if (k != consts_.end()) {
-        check_const(k->second);
-        ConstDecl& c = spec_.consts[k->second];
-        e.name_kind = NameKind::Const;
-        e.constant = &c;
-        if (c.value) {
-          e.type = c.value->type;
-          e.is_duration = c.value->is_duration;
-        }
-        return;
-      }
-      if (events_.count(e.text)) {
-        error(e.loc,
-              "event '" + e.text +
-                  "' cannot be read in a value expression: events appear in `when`, `assert` "
-                  "and `invariant` constraints",
-              "event-in-expression");
-        return;
-      }
-      std::vector<std::string> candidates = scope.names();
-      for (auto& [name, index] : consts_) candidates.push_back(name);
-      unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
-      return;
-    }
-    case Expr::Kind::Field: {
-      Expr& base = *e.args[0];
-      check_expr(base, scope);
-      if (!base.type) return;
-      if (base.type->kind == Type::Kind::Vec3) {
-        if (e.text == "x" || e.text == "y" || e.text == "z") {
-          e.type = kFloat;
-          return;
-        }
-        unknown(e.loc, "vec3 has no field '" + e.text + "' (it has x, y and z)", "unknown-field",
-                e.text, {"x", "y", "z"});
-        return;
-      }
-      if (base.type->kind != Type::Kind::Record) {
-        error(e.loc,
-              "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
-              "type-mismatch");
-        return;
-      }
-      std::vector<std::string> names;
-      for (const Field& f : base.type->fields) {
-        if (f.name == e.text) {
-          e.type = f.type;
-          return;
-        }
-        names.push_back(f.name);
-      }
-      unknown(e.loc, describe(base.type) + " has no field '" + e.text + "'", "unknown-field",
-              e.text, names);
-      return;
-    }
-    case Expr::Kind::Index: {
-      check_expr(*e.args[0], scope);
-      check_expr(*e.args[1], scope);
-      const TypePtr& list = e.args[0]->type;
-      const TypePtr& index = e.args[1]->type;
-      if (list && list->kind != Type::Kind::List) {
-        error(e.loc, "only lists can be indexed, but this is " + describe(list), "type-mismatch");
-        return;
-      }
-      if (index && index->kind != Type::Kind::Int) {
-        error(e.args[1]->loc, "a list index must be an int, not " + describe(index),
-              "type-mismatch");
-        return;
-      }
-      if (list) e.type = list->element;
-      return;
-    }
-    case Expr::Kind::Unary: {
-      Expr& operand = *e.args[0];
-      check_expr(operand, scope);
-      if (!operand.type) return;
-      if (e.op == "not") {
-        if (operand.type->kind != Type::Kind::Bool) {
-          error(e.loc, "'not' needs a bool, not " + describe(operand.type), "type-mismatch");
-          return;
-        }
-        e.type = kBool;
-        return;
-      }
-      if (!is_numeric(operand.type) && operand.type->kind != Type::Kind::Vec3) {
-        error(e.loc, "unary '-' needs a number or a vec3, not " + describe(operand.type),
-              "type-mismatch");
-        return;
-      }
-      e.type = operand.type;
-      e.is_duration = operand.is_duration;
-      return;
-    }
-    case Expr::Kind::Binary: {
-      Expr& a = *e.args[0];
-      Expr& b = *e.args[1];
-      check_expr(a, scope);
-      check_expr(b, scope);
-      if (!a.type || !b.type) return;
-      auto mismatch = [&] {
-        error(e.loc,
-              "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " +
-                  describe(b.type),
-              "type-mismatch");
-      };
-      const std::string& op = e.op;
-      if (op == "and" || op == "or") {
-        if (a.type->kind != Type::Kind::Bool || b.type->kind != Type::Kind::Bool) return mismatch();
-        e.type = kBool;
-      } else if (op == "==" || op == "!=") {
-        bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
-                  (assignable(*a.type, *b.type) && assignable(*b.type, *a.type));
-        if (!ok) return mismatch();
-        e.type = kBool;
-      } else if (op == "<" || op == "<=" || op == ">" || op == ">=") {
-        bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
-                  (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String));
-        if (!ok) return mismatch();
-        e.type = kBool;
-      } else if (is_numeric(a.type) && is_numeric(b.type)) {
-        e.type = op == "/" ? kFloat : numeric_join(a.type, b.type);
-        if (op == "+" || op == "-") e.is_duration = a.is_duration && b.is_duration;
-        if (op == "*") e.is_duration = a.is_duration != b.is_duration;
-        if (op == "/") e.is_duration = a.is_duration && !b.is_duration;
-      } else if (is_kind(a.type, Type::Kind::Vec3) && is_kind(b.type, Type::Kind::Vec3) &&
-                 (op == "+" || op == "-")) {
-        e.type = kVec3;
-      } else if (is_kind(a.type, Type::Kind::Vec3) && is_numeric(b.type) &&
-                 (op == "*" || op == "/")) {
-        e.type = kVec3;
-      } else if (is_numeric(a.type) && is_kind(b.type, Type::Kind::Vec3) && op == "*") {
-        e.type = kVec3;
-      } else if (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String) &&
-                 op == "+") {
-        e.type = kString;
-      } else {
-        mismatch();
-      }
-      return;
-    }
-    case Expr::Kind::Record: {
-      std::vector<Field> fields;
-      bool ok = true;
-      for (size_t i = 0; i < e.args.size(); ++i) {
-        for (size_t j = 0; j < i; ++j) {
-          if (e.field_names[j] == e.field_names[i]) {
-            error(e.field_locs[i], "field '" + e.field_names[i] + "' is given twice", "duplicate");
-          }
-        }
-        check_expr(*e.args[i], scope);
-        if (!e.args[i]->type) ok = false;
-        fields.push_back({e.field_names[i], e.args[i]->type});
-      }
-      if (ok) e.type = Type::record(std::move(fields));
-      return;
-    }
-    case Expr::Kind::List: {
-      TypePtr element;
-      bool ok = true;
-      for (ExprPtr& item : e.args) {
-        check_expr(*item, scope);
-        if (!item->type) {
-          ok = false;
-          continue;
-        }
-        if (!element) {
-          element = item->type;
-        } else if (is_numeric(element) && is_numeric(item->type)) {
-          element = numeric_join(element, item->type);
-        } else if (!assignable(*item->type, *element)) {
-          error(item->loc,
-                "list items must have one type: this is " + describe(item->type) +
-                    ", earlier items are " + describe(element),
-                "type-mismatch");
-          ok = false;
-        }
-      }
-      if (ok) e.type = Type::list(element);
-      return;
-    }
+    case Expr::Kind::Name:
+      return check_name(e, scope);
+    case Expr::Kind::Field:
+      return check_field(e, scope);
+    case Expr::Kind::Index:
+      return check_index(e, scope);
+    case Expr::Kind::Unary:
+      return check_unary(e, scope);
+    case Expr::Kind::Binary:
+      return check_binary(e, scope);
+    case Expr::Kind::Record:
+      return check_record(e, scope);
+    case Expr::Kind::List:
+      return check_list(e, scope);
     case Expr::Kind::Lambda:
       error(e.loc, "a lambda ('x => ...') can only be the second argument of min_by or max_by",
             "lambda");
@@ -297,6 +115,207 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       check_call(e, scope);
       return;
   }
+}
+
+// A name: a local, the message or a lambda parameter (innermost first), then a constant;
+// an event or an unknown name is reported.
+void Sema::check_name(Expr& e, Scope& scope) {
+  if (const Binding* b = scope.find(e.text)) {
+    if (b->message_unavailable) {
+      error(e.loc,
+            "the message '" + e.text +
+                "' is not available in an `every` body: it runs on a timer, not on a message",
+            "statement-context");
+      return;
+    }
+    e.name_kind = b->kind;
+    e.type = b->type;
+    e.is_duration = b->is_duration;
+    e.local = b->local;
+    e.lambda = b->lambda;
+    return;
+  }
+  auto k = consts_.find(e.text);
+  if (k != consts_.end()) {
+    check_const(k->second);
+    ConstDecl& c = spec_.consts[k->second];
+    e.name_kind = NameKind::Const;
+    e.constant = &c;
+    if (c.value) {
+      e.type = c.value->type;
+      e.is_duration = c.value->is_duration;
+    }
+    return;
+  }
+  if (events_.count(e.text)) {
+    error(e.loc,
+          "event '" + e.text +
+              "' cannot be read in a value expression: events appear in `when`, `assert` "
+              "and `invariant` constraints",
+          "event-in-expression");
+    return;
+  }
+  std::vector<std::string> candidates = scope.names();
+  for (auto& [name, index] : consts_) candidates.push_back(name);
+  unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
+}
+
+// `base.field` of a record or a vec3.
+void Sema::check_field(Expr& e, Scope& scope) {
+  Expr& base = *e.args[0];
+  check_expr(base, scope);
+  if (!base.type) return;
+  if (base.type->kind == Type::Kind::Vec3) {
+    if (e.text == "x" || e.text == "y" || e.text == "z") {
+      e.type = kFloat;
+      return;
+    }
+    unknown(e.loc, "vec3 has no field '" + e.text + "' (it has x, y and z)", "unknown-field",
+            e.text, {"x", "y", "z"});
+    return;
+  }
+  if (base.type->kind != Type::Kind::Record) {
+    error(e.loc, "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
+          "type-mismatch");
+    return;
+  }
+  std::vector<std::string> names;
+  for (const Field& f : base.type->fields) {
+    if (f.name == e.text) {
+      e.type = f.type;
+      return;
+    }
+    names.push_back(f.name);
+  }
+  unknown(e.loc, describe(base.type) + " has no field '" + e.text + "'", "unknown-field", e.text,
+          names);
+}
+
+// `list[int]`: the list's element type.
+void Sema::check_index(Expr& e, Scope& scope) {
+  check_expr(*e.args[0], scope);
+  check_expr(*e.args[1], scope);
+  const TypePtr& list = e.args[0]->type;
+  const TypePtr& index = e.args[1]->type;
+  if (list && list->kind != Type::Kind::List) {
+    error(e.loc, "only lists can be indexed, but this is " + describe(list), "type-mismatch");
+    return;
+  }
+  if (index && index->kind != Type::Kind::Int) {
+    error(e.args[1]->loc, "a list index must be an int, not " + describe(index), "type-mismatch");
+    return;
+  }
+  if (list) e.type = list->element;
+}
+
+// `not bool`, or `-` of a number or a vec3 (a negated duration stays one).
+void Sema::check_unary(Expr& e, Scope& scope) {
+  Expr& operand = *e.args[0];
+  check_expr(operand, scope);
+  if (!operand.type) return;
+  if (e.op == "not") {
+    if (operand.type->kind != Type::Kind::Bool) {
+      error(e.loc, "'not' needs a bool, not " + describe(operand.type), "type-mismatch");
+      return;
+    }
+    e.type = kBool;
+    return;
+  }
+  if (!is_numeric(operand.type) && operand.type->kind != Type::Kind::Vec3) {
+    error(e.loc, "unary '-' needs a number or a vec3, not " + describe(operand.type),
+          "type-mismatch");
+    return;
+  }
+  e.type = operand.type;
+  e.is_duration = operand.is_duration;
+}
+
+// The type of `a op b` by the operand types; durations stay durations where the units do.
+void Sema::check_binary(Expr& e, Scope& scope) {
+  Expr& a = *e.args[0];
+  Expr& b = *e.args[1];
+  check_expr(a, scope);
+  check_expr(b, scope);
+  if (!a.type || !b.type) return;
+  auto mismatch = [&] {
+    error(e.loc,
+          "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " + describe(b.type),
+          "type-mismatch");
+  };
+  const std::string& op = e.op;
+  if (op == "and" || op == "or") {
+    if (a.type->kind != Type::Kind::Bool || b.type->kind != Type::Kind::Bool) return mismatch();
+    e.type = kBool;
+  } else if (op == "==" || op == "!=") {
+    bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
+              (assignable(*a.type, *b.type) && assignable(*b.type, *a.type));
+    if (!ok) return mismatch();
+    e.type = kBool;
+  } else if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+    bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
+              (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String));
+    if (!ok) return mismatch();
+    e.type = kBool;
+  } else if (is_numeric(a.type) && is_numeric(b.type)) {
+    e.type = op == "/" ? kFloat : numeric_join(a.type, b.type);
+    if (op == "+" || op == "-") e.is_duration = a.is_duration && b.is_duration;
+    if (op == "*") e.is_duration = a.is_duration != b.is_duration;
+    if (op == "/") e.is_duration = a.is_duration && !b.is_duration;
+  } else if (is_kind(a.type, Type::Kind::Vec3) && is_kind(b.type, Type::Kind::Vec3) &&
+             (op == "+" || op == "-")) {
+    e.type = kVec3;
+  } else if (is_kind(a.type, Type::Kind::Vec3) && is_numeric(b.type) && (op == "*" || op == "/")) {
+    e.type = kVec3;
+  } else if (is_numeric(a.type) && is_kind(b.type, Type::Kind::Vec3) && op == "*") {
+    e.type = kVec3;
+  } else if (is_kind(a.type, Type::Kind::String) && is_kind(b.type, Type::Kind::String) &&
+             op == "+") {
+    e.type = kString;
+  } else {
+    mismatch();
+  }
+}
+
+// `{ name: value, ... }`: a record type of its fields, each named once.
+void Sema::check_record(Expr& e, Scope& scope) {
+  std::vector<Field> fields;
+  bool ok = true;
+  for (size_t i = 0; i < e.args.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (e.field_names[j] == e.field_names[i]) {
+        error(e.field_locs[i], "field '" + e.field_names[i] + "' is given twice", "duplicate");
+      }
+    }
+    check_expr(*e.args[i], scope);
+    if (!e.args[i]->type) ok = false;
+    fields.push_back({e.field_names[i], e.args[i]->type});
+  }
+  if (ok) e.type = Type::record(std::move(fields));
+}
+
+// `[ items ]`: one element type (ints and floats together are floats).
+void Sema::check_list(Expr& e, Scope& scope) {
+  TypePtr element;
+  bool ok = true;
+  for (ExprPtr& item : e.args) {
+    check_expr(*item, scope);
+    if (!item->type) {
+      ok = false;
+      continue;
+    }
+    if (!element) {
+      element = item->type;
+    } else if (is_numeric(element) && is_numeric(item->type)) {
+      element = numeric_join(element, item->type);
+    } else if (!assignable(*item->type, *element)) {
+      error(item->loc,
+            "list items must have one type: this is " + describe(item->type) +
+                ", earlier items are " + describe(element),
+            "type-mismatch");
+      ok = false;
+    }
+  }
+  if (ok) e.type = Type::list(element);
 }
 
 // ---- builtins -----------------------------------------------------------------------------
@@ -318,61 +337,70 @@ void Sema::check_call(Expr& e, Scope& scope) {
     return;
   }
   e.builtin = info->builtin;
-  int n = static_cast<int>(e.args.size());
-  if (n < info->min_args || (info->max_args >= 0 && n > info->max_args)) {
-    error(e.loc,
-          "'" + e.text + "' takes " +
-              (info->max_args < 0 ? "at least " + std::to_string(info->min_args)
-                                  : std::to_string(info->min_args)) +
-              (info->min_args == 1 && info->max_args == 1 ? " argument" : " arguments") + ", not " +
-              std::to_string(n) + ": " + info->signature,
-          "arity");
-    return;
-  }
-  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy) {
-    Expr& list = *e.args[0];
-    Expr& key = *e.args[1];
-    check_expr(list, scope);
-    if (key.kind != Expr::Kind::Lambda) {
-      check_expr(key, scope);
-      error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
-            "type-mismatch");
-      return;
-    }
-    if (!list.type) return;
-    if (list.type->kind != Type::Kind::List || !list.type->element) {
-      error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
-      return;
-    }
-    scope.push();
-    Binding param;
-    param.kind = NameKind::Param;
-    param.type = list.type->element;
-    param.lambda = &key;
-    scope.define(key.text, param);
-    check_expr(*key.args[0], scope);
-    scope.pop();
-    if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
-      error(key.args[0]->loc,
-            "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
-            "type-mismatch");
-      return;
-    }
-    e.type = list.type->element;
-    return;
-  }
+  if (!check_arity(e, *info)) return;
+  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy)
+    return check_best_by(e, scope);
   for (ExprPtr& arg : e.args) check_expr(*arg, scope);
   for (ExprPtr& arg : e.args)
     if (!arg->type) return;
+  check_builtin_args(e, *info);
+}
+
+bool Sema::check_arity(Expr& e, const BuiltinInfo& info) {
+  int n = static_cast<int>(e.args.size());
+  if (n >= info.min_args && (info.max_args < 0 || n <= info.max_args)) return true;
+  error(e.loc,
+        "'" + e.text + "' takes " +
+            (info.max_args < 0 ? "at least " + std::to_string(info.min_args)
+                               : std::to_string(info.min_args)) +
+            (info.min_args == 1 && info.max_args == 1 ? " argument" : " arguments") + ", not " +
+            std::to_string(n) + ": " + info.signature,
+        "arity");
+  return false;
+}
+
+void Sema::check_best_by(Expr& e, Scope& scope) {
+  Expr& list = *e.args[0];
+  Expr& key = *e.args[1];
+  check_expr(list, scope);
+  if (key.kind != Expr::Kind::Lambda) {
+    check_expr(key, scope);
+    error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
+          "type-mismatch");
+    return;
+  }
+  if (!list.type) return;
+  if (list.type->kind != Type::Kind::List || !list.type->element) {
+    error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
+    return;
+  }
+  scope.push();
+  Binding param;
+  param.kind = NameKind::Param;
+  param.type = list.type->element;
+  param.lambda = &key;
+  scope.define(key.text, param);
+  check_expr(*key.args[0], scope);
+  scope.pop();
+  if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
+    error(key.args[0]->loc,
+          "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
+          "type-mismatch");
+    return;
+  }
+  e.type = list.type->element;
+}
+
+void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
   auto expect = [&](size_t i, bool ok, const char* what) {
     if (!ok)
       error(e.args[i]->loc,
             "argument " + std::to_string(i + 1) + " of '" + e.text + "' must be " + what +
-                ", not " + describe(e.args[i]->type) + " (" + info->signature + ")",
+                ", not " + describe(e.args[i]->type) + " (" + info.signature + ")",
             "type-mismatch");
     return ok;
   };
-  switch (info->builtin) {
+  switch (info.builtin) {
     case Builtin::Len: {
       const TypePtr& t = e.args[0]->type;
       if (expect(0, is_kind(t, Type::Kind::List) || is_kind(t, Type::Kind::String),

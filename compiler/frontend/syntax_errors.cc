@@ -8,6 +8,7 @@
 
 #include "compiler/frontend/suggest.h"
 #include "compiler/frontend/token_checks.h"
+#include "core/join.h"
 
 namespace arbc::frontend {
 
@@ -107,14 +108,32 @@ bool is_keyword(const antlr4::dfa::Vocabulary& vocabulary, const antlr4::Token* 
   return literal.size() > 2 && std::isalpha(static_cast<unsigned char>(literal[1]));
 }
 
-// "a, b or c"
-std::string join_or(const std::vector<std::string>& items) {
-  std::string s;
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) s += i + 1 == items.size() ? " or " : ", ";
-    s += items[i];
+const std::vector<std::string> kStatementKeywords = {"let", "var",  "accept",   "set",   "unset",
+                                                     "if",  "emit", "throttle", "every", "script"};
+
+// The tokens the parser would have accepted where it stopped.
+struct Expected {
+  std::set<std::string> literals;   // literal tokens, unquoted
+  std::set<size_t> kinds;           // token types
+  std::vector<std::string> wanted;  // as the user names them, minus operators that would only
+                                    // continue an expression
+  bool has(const char* literal) const { return literals.count(literal) > 0; }
+};
+
+Expected expected_tokens(antlr4::Parser* parser) {
+  const antlr4::dfa::Vocabulary& vocabulary = parser->getVocabulary();
+  Expected x;
+  for (size_t type : parser->getExpectedTokens().toList()) {
+    x.kinds.insert(type);
+    std::string literal = vocabulary.getLiteralName(type);
+    if (literal.size() >= 2) x.literals.insert(literal.substr(1, literal.size() - 2));
   }
-  return s;
+  for (size_t type : x.kinds) {
+    std::string literal = vocabulary.getLiteralName(type);
+    if (literal.size() >= 2 && kOperators.count(literal.substr(1, literal.size() - 2))) continue;
+    x.wanted.push_back(token_name(vocabulary, type));
+  }
+  return x;
 }
 
 }  // namespace
@@ -163,76 +182,74 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
   const antlr4::Token* next_declaration_ = nullptr;
 
  private:
+  // The first syntax error as a user would say it: what was expected, in what, found what.
   Diagnostic describe(antlr4::Parser* parser, antlr4::Token* offending) {
-    const antlr4::dfa::Vocabulary& vocabulary = parser->getVocabulary();
-    antlr4::ParserRuleContext* ctx = parser->getContext();
-    std::set<std::string> literals;  // expected literal tokens, unquoted
-    std::set<size_t> kinds;          // expected token types
-    for (size_t type : parser->getExpectedTokens().toList()) {
-      kinds.insert(type);
-      std::string literal = vocabulary.getLiteralName(type);
-      if (literal.size() >= 2) literals.insert(literal.substr(1, literal.size() - 2));
-    }
-    std::string context = describe_context(ctx);
-    std::string found = found_text(offending);
-    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
-
+    Expected x = expected_tokens(parser);
     Diagnostic d;
     d.id = "syntax";
     d.loc = token_location(offending, file_);
-    auto has = [&](const char* literal) { return literals.count(literal) > 0; };
+    if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
+    return d;
+  }
 
-    // Tokens the user could mean, minus the operators that could continue an expression.
-    std::vector<std::string> wanted;
-    bool after_expression = false;
-    for (size_t type : kinds) {
-      std::string literal = vocabulary.getLiteralName(type);
-      if (literal.size() >= 2 && kOperators.count(literal.substr(1, literal.size() - 2))) {
-        after_expression = true;
-        continue;
-      }
-      wanted.push_back(token_name(vocabulary, type));
-    }
-
+  // When the expected tokens show which construct comes next (a declaration, a port, a
+  // statement, a type, an expression, a duration, a rule): "expected a statement ...".
+  bool describe_construct(antlr4::Parser* parser, antlr4::Token* offending, const Expected& x,
+                          Diagnostic& d) {
+    antlr4::ParserRuleContext* ctx = parser->getContext();
+    std::string found = found_text(offending);
     bool decl_start = false;
-    for (const std::string& k : kDeclKeywords) decl_start |= has(k.c_str());
-    if (decl_start || (kinds.size() == 1 && kinds.count(antlr4::Token::EOF))) {
+    for (const std::string& k : kDeclKeywords) decl_start |= x.has(k.c_str());
+    if (decl_start || (x.kinds.size() == 1 && x.kinds.count(antlr4::Token::EOF))) {
       d.message =
           "expected a declaration (app, type, const, module, event, events, exclusive, "
           "invariant, arbitrate, connect or assert), found " +
           found;
       suggest_keyword(offending,
                       std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);
-    } else if (has("in") && has("out")) {
+    } else if (x.has("in") && x.has("out")) {
       d.message =
           "expected a port declaration ('in NAME: TYPE;' or 'out NAME: TYPE;') or '}', "
           "found " +
           found;
       suggest_keyword(offending, {"in", "out"}, d);
-    } else if (has("let") && has("emit")) {
+    } else if (x.has("let") && x.has("emit")) {
       d.message =
           "expected a statement (let, var, accept, set, unset, if, emit, throttle, "
           "every, script) or '}', found " +
           found;
-      suggest_keyword(
-          offending,
-          {"let", "var", "accept", "set", "unset", "if", "emit", "throttle", "every", "script"}, d);
-    } else if (kinds.count(ArbcParser::ID) && has("{") &&
+      suggest_keyword(offending, kStatementKeywords, d);
+    } else if (x.kinds.count(ArbcParser::ID) && x.has("{") &&
                (in_rule(ctx, ArbcParser::RuleTypeExpr) ||
                 ctx->getRuleIndex() == ArbcParser::RuleTypeDecl ||
                 ctx->getRuleIndex() == ArbcParser::RulePortDecl ||
                 ctx->getRuleIndex() == ArbcParser::RuleFieldType)) {
       d.message = "expected a type such as float, vec3 or list<T>, found " + found;
-    } else if (kinds.count(ArbcParser::NUMBER) && kinds.count(ArbcParser::STRING)) {
-      d.message = "expected an expression in " + context + ", found " + found;
-    } else if (kinds.count(ArbcParser::DURATION)) {
+    } else if (x.kinds.count(ArbcParser::NUMBER) && x.kinds.count(ArbcParser::STRING)) {
+      d.message = "expected an expression in " + describe_context(ctx) + ", found " + found;
+    } else if (x.kinds.count(ArbcParser::DURATION)) {
       d.message = "expected a duration such as 500ms, 1s or 2min, found " + found;
-    } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && has("}") &&
-               kinds.count(ArbcParser::ID)) {
+    } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && x.has("}") &&
+               x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
-    } else if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
-               (wanted.size() == 1 || (previous && (previous->getLine() < offending->getLine() ||
-                                                    offending->getType() == antlr4::Token::EOF)))) {
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  // Otherwise by what was written before: a missing ';', a misspelled statement, a name, or
+  // the few tokens that could come next.
+  void describe_by_position(antlr4::Parser* parser, antlr4::Token* offending, const Expected& x,
+                            Diagnostic& d) {
+    antlr4::ParserRuleContext* ctx = parser->getContext();
+    std::string context = describe_context(ctx);
+    std::string found = found_text(offending);
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    const std::vector<std::string>& wanted = x.wanted;
+    if (std::find(wanted.begin(), wanted.end(), "';'") != wanted.end() &&
+        (wanted.size() == 1 || (previous && (previous->getLine() < offending->getLine() ||
+                                             offending->getType() == antlr4::Token::EOF)))) {
       d.message = "expected ';' after " + context;
       // Point just past the previous token, where the ';' belongs, as compilers do.
       if (previous && (previous->getLine() != offending->getLine() ||
@@ -252,23 +269,20 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       d.message = "unknown statement '" + previous->getText() +
                   "': a statement is let, var, accept, set, unset, if, emit, throttle, every, "
                   "script, or an assignment NAME = VALUE;";
-      suggest_keyword(
-          previous,
-          {"let", "var", "accept", "set", "unset", "if", "emit", "throttle", "every", "script"}, d);
-    } else if (wanted.size() == 1 && kinds.count(ArbcParser::ID)) {
+      suggest_keyword(previous, kStatementKeywords, d);
+    } else if (wanted.size() == 1 && x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a name in " + context + ", found " + found;
-      if (is_keyword(vocabulary, offending)) d.message += " (a keyword cannot be used as a name)";
+      if (is_keyword(parser->getVocabulary(), offending))
+        d.message += " (a keyword cannot be used as a name)";
     } else if (!wanted.empty() && wanted.size() <= 6) {
-      d.message = "expected " + join_or(wanted) + " in " + context + ", found " + found;
+      d.message = "expected " + join(wanted, ", ", " or ") + " in " + context + ", found " + found;
       std::vector<std::string> keywords;
-      for (const std::string& l : literals)
+      for (const std::string& l : x.literals)
         if (!l.empty() && std::isalpha(static_cast<unsigned char>(l[0]))) keywords.push_back(l);
       suggest_keyword(offending, keywords, d);
     } else {
       d.message = "unexpected " + found + " in " + context;
     }
-    (void)after_expression;
-    return d;
   }
 
   // Adds "did you mean 'module'?" when a misspelled keyword was written as a name.

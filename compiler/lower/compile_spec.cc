@@ -33,7 +33,7 @@ CompiledSpec finish(frontend::CheckResult checked, const std::string& file,
 
 CompiledSpec compile_spec_text(std::string_view text, const std::string& file,
                                const std::string& script_dir) {
-  return finish(frontend::check_text(text, file), file, script_dir);
+  return finish(frontend::check_text(text, file, script_dir), file, script_dir);
 }
 
 CompiledSpec compile_spec(const std::string& path) {

@@ -1,6 +1,6 @@
 // Which events a monitor body sets and unsets: on some path (`sets`, `unsets`: for the
 // verifier's `unused`, `unfed` and `ownership` checks) and on every path on which the message is
-// accepted (`must_set`, `must_unset`: the effective guard of DESIGN.md section 5).
+// accepted (`must_set`, `must_unset`: docs/design.md#effective-guards).
 //
 // The analysis is an under-approximation of the "every path" sets, which keeps the proof sound:
 // fewer must-events make a rule's effective guard weaker, so the verifier may report an overlap

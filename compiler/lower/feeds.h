@@ -1,4 +1,4 @@
-// Event feeds (DESIGN.md section 3): for each event source port whose events an arbitrated
+// Event feeds (docs/design.md#feeds): for each event source port whose events an arbitrated
 // port reads, one generated connection into that port that sets and unsets exactly those
 // events and never delivers. In the paper's table-cleaning app these are C3, C5, C6, C7, C11,
 // C12 and C13, plus the FaceDetector feed into Speak.

@@ -8,7 +8,7 @@
 
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
-#include "compiler/lower/script_check.h"
+#include "core/effective_guard.h"
 
 namespace arbc::lower {
 
@@ -124,52 +124,26 @@ class Lowerer {
     std::ostringstream text;
     text << in.rdbuf();
     ScriptSource script{path.lexically_normal().string(), text.str(), s.loc};
-    std::string error = check_lua_syntax(script.text, s.text);
-    if (!error.empty()) {
-      diagnostics_.push_back(
-          error_at(s.loc, "script '" + s.text + "' is not valid Lua: " + error, "script"));
-      return std::nullopt;
-    }
-    return script;
+    return script;  // Sema has checked that it compiles (frontend/lua_syntax.h)
   }
 
   // Fills throttle, trig interval and the script of a rule or connect body; false on error.
+  // Sema has checked the body's shape: at most one `throttle` and one `every`, both at the
+  // top level, and a `script` alone in its body.
   bool lower_body_options(const ast::Block& body, model::Connection& c, MonitorPlan& plan) {
-    bool ok = true;
-    const ast::Stmt* every = nullptr;
     const ast::Stmt* script = nullptr;
     for_each_stmt(body, [&](const ast::Stmt& s) {
       if (s.kind == ast::Stmt::Kind::Throttle && !c.throttle && s.duration)
         c.throttle = s.duration->seconds;
-      if (s.kind == ast::Stmt::Kind::Every) {
-        if (every) {
-          Diagnostic d = error_at(s.loc,
-                                  "a monitor has one trig interval: use one `every` block per "
-                                  "rule",
-                                  "every");
-          d.notes.push_back(error_at(every->loc, "the first `every` is here", ""));
-          d.notes.back().severity = Severity::Note;
-          diagnostics_.push_back(std::move(d));
-          ok = false;
-        }
-        every = &s;
-        if (s.duration) c.trig_interval = s.duration->seconds;
-      }
+      if (s.kind == ast::Stmt::Kind::Every && s.duration) c.trig_interval = s.duration->seconds;
       if (s.kind == ast::Stmt::Kind::Script) script = &s;
     });
     if (script) {
-      if (body.size() != 1) {
-        diagnostics_.push_back(error_at(script->loc,
-                                        "`script` replaces the whole body: move the other "
-                                        "statements into the script or drop `script`",
-                                        "script"));
-        return false;
-      }
       plan.script = read_script(*script);
       if (!plan.script) return false;
       c.opaque = true;
     }
-    return ok;
+    return true;
   }
 
   void lower_arbitration(const ast::ArbitrateDecl& a) {
@@ -188,19 +162,6 @@ class Lowerer {
       bool lowest = k + 1 == a.rules.size();
       if (a.by_priority && !lowest) {
         w.activity = activity_event_name(r.name);
-        if (spec_.find_event(w.activity))
-          diagnostics_.push_back(error_at(
-              r.loc,
-              "rule '" + r.name + "' needs the activity event '" + w.activity +
-                  "' (by priority), but an event of that name is declared; rename one of them",
-              "priority"));
-        if (!r.hold)
-          diagnostics_.push_back(
-              error_at(r.loc,
-                       "rule '" + r.name +
-                           "' needs `hold D` under `by priority`: it suppresses the "
-                           "lower rules for D after each message it delivers",
-                       "priority"));
       }
       model::Connection c;
       c.name = r.name;
@@ -233,7 +194,15 @@ class Lowerer {
       }
       rules.push_back(std::move(w));
     }
+    lower_constraints(rules, ap);
+    lower_feeds(rules, ap);
+    out_.app.arbitrated_ports.push_back(std::move(ap));
+  }
 
+  // The selection constraint of each rule (`otherwise` last: it needs the others' effective
+  // guards), the port's assertions, and each rule's event effects.
+  void lower_constraints(std::vector<RuleWork>& rules, model::ArbitratedPort& ap) {
+    const std::string& port = ap.port;
     // Constraints of the rules that are not `otherwise`.
     for (size_t k = 0; k < rules.size(); ++k) {
       if (rules[k].rule->otherwise) continue;
@@ -242,16 +211,7 @@ class Lowerer {
     for (const ast::AssertDecl& as : spec_.asserts)
       if (as.port.qualified() == port) ap.asserts.push_back({as.rule, as.constraint, as.loc});
 
-    // Feeds for what the constraints so far read; `otherwise` needs to know what they set.
-    std::set<std::string> read = events_read(rules, ap, /*with_otherwise=*/false);
-    std::set<std::string> fed = fed_events(read);
-    for (size_t k = 0; k < rules.size(); ++k) {
-      if (!rules[k].rule->otherwise) continue;
-      Constraint none = otherwise_constraint(rules, k, fed);
-      connection(rules[k]).constraint = priority_constraint(rules, k, none);
-    }
-    read = events_read(rules, ap, /*with_otherwise=*/true);
-
+    // The effects first: `otherwise` reads them through the other rules' effective guards.
     for (RuleWork& w : rules) {
       model::Connection& c = connection(w);
       c.sets = sorted(w.effects.sets);
@@ -260,7 +220,18 @@ class Lowerer {
       c.must_unset = sorted(w.effects.must_unset);
       c.opaque = w.opaque;
     }
+    for (size_t k = 0; k < rules.size(); ++k) {
+      if (!rules[k].rule->otherwise) continue;
+      Constraint none = otherwise_constraint(rules, k);
+      connection(rules[k]).constraint = priority_constraint(rules, k, none);
+    }
+  }
 
+  // A generated feed connection per source of the stream events the port's constraints and
+  // assertions read.
+  void lower_feeds(const std::vector<RuleWork>& rules, const model::ArbitratedPort& ap) {
+    const std::string& port = ap.port;
+    std::set<std::string> read = events_read(rules, ap);
     std::set<std::string> taken_names(ap.rules.begin(), ap.rules.end());
     for (FeedGroup& g : plan_feeds(spec_, read)) {
       model::Connection c;
@@ -277,7 +248,6 @@ class Lowerer {
       g.plan.kind = MonitorPlan::Kind::Feed;
       add_connection(std::move(c), std::move(g.plan));
     }
-    out_.app.arbitrated_ports.push_back(std::move(ap));
   }
 
   model::Connection& connection(const RuleWork& w) { return out_.app.connections[w.connection]; }
@@ -293,52 +263,27 @@ class Lowerer {
     return all_of(std::move(parts));
   }
 
-  // E_c of core/effective_guard.h: G_c and what c sets on every accepting path and not what it
-  // unsets on every such path that no other connection of the port sets, and c's activity
-  // event (set as it delivers).
-  Constraint effective_guard(const std::vector<RuleWork>& rules, size_t c,
-                             const std::set<std::string>& fed) {
-    const RuleWork& w = rules[c];
-    std::vector<Constraint> parts{connection(w).constraint};
-    if (!w.activity.empty()) parts.push_back(Constraint::event_ref(w.activity));
-    if (w.opaque) return all_of(std::move(parts));
-    for (const std::string& e : w.effects.must_set) parts.push_back(Constraint::event_ref(e));
-    for (const std::string& e : w.effects.must_unset) {
-      bool others_set = fed.count(e) > 0;
-      for (size_t j = 0; j < rules.size(); ++j)
-        if (j != c && rules[j].effects.sets.count(e)) others_set = true;
-      if (!others_set) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
-    }
-    return all_of(std::move(parts));
-  }
-
-  // `otherwise`: none of the other rules' effective guards holds.
-  Constraint otherwise_constraint(const std::vector<RuleWork>& rules, size_t k,
-                                  const std::set<std::string>& fed) {
+  // `otherwise`: none of the other rules' effective guards (core/effective_guard.h) holds. The
+  // feeds are not there yet; they set only stream events, which no monitor code unsets, so the
+  // guards are the same without them.
+  Constraint otherwise_constraint(const std::vector<RuleWork>& rules, size_t k) {
+    std::vector<const model::Connection*> into;
+    for (const RuleWork& w : rules) into.push_back(&connection(w));
     std::vector<Constraint> others;
     for (size_t j = 0; j < rules.size(); ++j)
-      if (j != k && !rules[j].rule->otherwise) others.push_back(effective_guard(rules, j, fed));
+      if (j != k && !rules[j].rule->otherwise)
+        others.push_back(model::effective_guard(into, *into[j]));
     if (others.empty()) return Constraint::constant(true);
     return Constraint::negate(Constraint::disjunction(std::move(others)));
   }
 
+  // The events the port's rule constraints and assertions read.
   std::set<std::string> events_read(const std::vector<RuleWork>& rules,
-                                    const model::ArbitratedPort& ap, bool with_otherwise) {
+                                    const model::ArbitratedPort& ap) {
     std::set<std::string> read;
-    for (const RuleWork& w : rules)
-      if (with_otherwise || !w.rule->otherwise) connection(w).constraint.collect_events(read);
+    for (const RuleWork& w : rules) connection(w).constraint.collect_events(read);
     for (const model::Assertion& as : ap.asserts) as.property.collect_events(read);
     return read;
-  }
-
-  // The stream events (status flags, derived events) among `read`: what feeds will set.
-  std::set<std::string> fed_events(const std::set<std::string>& read) {
-    std::set<std::string> fed;
-    for (const std::string& e : read) {
-      const ast::EventSymbol* sym = spec_.find_event(e);
-      if (sym && sym->kind != ast::EventSymbol::Kind::Manual) fed.insert(e);
-    }
-    return fed;
   }
 
   static std::string feed_name(const std::string& source) {
@@ -389,7 +334,7 @@ std::string monitor_path(const std::string& port, const std::string& name) {
   return "monitors/" + port + "__" + name + ".lua";
 }
 
-std::string activity_event_name(const std::string& rule) { return "act_" + rule; }
+std::string activity_event_name(const std::string& rule) { return ast::activity_event_name(rule); }
 
 LowerResult lower_spec(std::shared_ptr<const ast::Spec> spec, const LowerOptions& options) {
   LowerResult result;

@@ -1,5 +1,5 @@
 // Lowering: a checked spec (the AST after sema) to the core model plus monitor plans
-// (DESIGN.md section 3, "Lowering"; docs/lowering.md walks through each rule).
+// (docs/lowering.md walks through each rule; docs/design.md explains why).
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// One test (or a few) per lowering rule of DESIGN.md section 3, through the real front end.
+// One test (or a few) per lowering rule of docs/lowering.md, through the real front end.
 #include "compiler/lower/lower.h"
 
 #include <gtest/gtest.h>
@@ -198,6 +198,34 @@ arbitrate Head.gaze {
             "not (e_face or busy)");
 }
 
+// `otherwise` is built before the feeds exist; the guards it negates must be the ones the
+// verifier and the docs compute from the finished app (core/effective_guard.h), feeds included.
+TEST(LowerTest, OtherwiseNegatesTheCoreEffectiveGuardsOfTheFinishedApp) {
+  CompiledSpec c = compile_ok(spec(R"(
+event seen, lost, busy;
+events from Rake.status { holding = "holding" } lifetime 500ms;
+event near = Eye.face : face > 0.5;
+arbitrate Head.gaze {
+  track:  from Eye.face { set seen; unset lost; accept face > 0.2; }
+  voice:  from Timer.tick when holding and near { set busy; set lost; }
+  idle:   from Eye.objects when not busy { unset busy; emit 1.0; }
+  search: from Looker.gaze when otherwise;
+}
+)"));
+  ASSERT_TRUE(c.ok);
+  const model::App& app = c.lowered->app;
+  ASSERT_GT(app.connections_into("Head.gaze").size(), 4u);  // the feeds are there now
+  std::vector<Constraint> guards;
+  for (const char* rule : {"track", "voice", "idle"})
+    guards.push_back(
+        model::effective_guard(app, "Head.gaze", *find_connection(app, "Head.gaze", rule)));
+  Constraint expected = Constraint::negate(Constraint::disjunction(std::move(guards)));
+  EXPECT_EQ(find_connection(app, "Head.gaze", "search")->constraint.to_string(),
+            expected.to_string());
+  // track's `not lost` is gone: voice sets lost too (and idle's unset busy: voice sets busy).
+  EXPECT_EQ(expected.to_string(), "not (seen or holding and near and busy and lost or not busy)");
+}
+
 // ---- body effects ---------------------------------------------------------------------------
 
 TEST(LowerTest, MustSetIsWhatEveryAcceptingPathSets) {
@@ -281,14 +309,19 @@ arbitrate Head.gaze { mine: from Looker.gaze when a { script "nowhere.lua"; } }
 )");
   CompiledSpec missing = compile_spec_text(text, "test.spec", dir.string());
   ASSERT_FALSE(missing.ok);
-  EXPECT_EQ(missing.diagnostics.back().id, "script");
-  EXPECT_NE(missing.diagnostics.back().message.find("cannot read script 'nowhere.lua'"),
+  EXPECT_EQ(missing.diagnostics.back().id, "script-missing");
+  EXPECT_NE(missing.diagnostics.back().message.find("script file 'nowhere.lua' not found"),
             std::string::npos);
   EXPECT_GT(missing.diagnostics.back().loc.line, 0);
   text.replace(text.find("nowhere.lua"), 11, "broken.lua");
   CompiledSpec broken = compile_spec_text(text, "test.spec", dir.string());
   ASSERT_FALSE(broken.ok);
-  EXPECT_NE(broken.diagnostics.back().message.find("is not valid Lua: broken.lua:2:"),
+  // Sema rejects it (frontend/lua_syntax.h) before lowering reads the script for its text.
+  EXPECT_EQ(broken.lowered, nullptr);
+  EXPECT_EQ(broken.diagnostics.back().id, "script");
+  EXPECT_NE(broken.diagnostics.back().loc.file.find("broken.lua"), std::string::npos);
+  EXPECT_EQ(broken.diagnostics.back().loc.line, 2);
+  EXPECT_NE(broken.diagnostics.back().message.find("does not compile as Lua 5.4"),
             std::string::npos)
       << broken.diagnostics.back().message;
 }

@@ -1,4 +1,4 @@
-// The result of lowering a checked spec (DESIGN.md section 3, "Lowering"): the core model
+// The result of lowering a checked spec (docs/lowering.md): the core model
 // (core/app_model.h) that app.json, the verifier and the runtime read, plus one monitor
 // plan per connection that code generation turns into Lua. Plans point into the checked AST,
 // which the LoweredApp keeps alive.

@@ -1,6 +1,7 @@
-// Conflicts: commands that a correctly coordinated application never sends (DESIGN.md "The
-// reference world"). The modules still react as real ones would (they refuse the command), and
-// the world counts each case by kind so that a wrong rule shows up in the run's summary.
+// Conflicts: commands that a correctly coordinated application never sends
+// (examples/table_clean/README.md#conflicts-conflictsh). The modules still react as real ones
+// would (they refuse the command), and the world counts each case by kind so that a wrong rule
+// shows up in the run's summary.
 #pragma once
 
 #include <array>

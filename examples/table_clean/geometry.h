@@ -1,6 +1,6 @@
 // The table's geometry: the robot sits at the origin, the table top is the plane z = 0 in front
 // of it (+x), and an object's distance is its distance from the origin. The paper's three zones
-// (DESIGN.md "The reference world") follow from that distance alone.
+// (examples/table_clean/README.md#the-world-worldh) follow from that distance alone.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // The simulated physical world of the table-cleaning experiment: objects on the table, the
 // bucket, the rake's rack, a person, the robot's head and arm. Modules share only this world;
-// none of them knows about another (DESIGN.md "The reference world").
+// none of them knows about another (examples/table_clean/README.md#the-world-worldh).
 //
 // Time is the caller's simulated clock. Scheduled happenings (a person moving an object) sit
 // on an agenda that every entry point first advances to `now`, so the world is the same whoever

@@ -2,11 +2,10 @@
 // YARP evaluates it. Part of yarp_import.h.
 #include "import/yarp/connection_import.h"
 
-#include "import/yarp/app_xml.h"
-
 #include <fstream>
 #include <sstream>
 
+#include "import/yarp/app_xml.h"
 #include "import/yarp/script_locator.h"
 
 namespace arbc::yarp {

@@ -72,17 +72,19 @@ void several_setters(const YarpImport& im,
         lifetime |= c.has_second;
         if (!first) first = &c;
       }
-      if (first) sites.push_back(locate(ic.monitor->path, ic.monitor->text, first->line, "setEvent"));
+      if (first)
+        sites.push_back(locate(ic.monitor->path, ic.monitor->text, first->line, "setEvent"));
     }
     if (sites.size() < 2 || !lifetime) continue;
-    Diagnostic d = warning(sites[0], "event '" + event + "' is set by " +
-                                         std::to_string(sites.size()) +
-                                         " monitors, with a lifetime: when one's entry expires, "
-                                         "YARP's next lookup of '" + event +
-                                         "' can answer absent although another's is live");
+    Diagnostic d =
+        warning(sites[0], "event '" + event + "' is set by " + std::to_string(sites.size()) +
+                              " monitors, with a lifetime: when one's entry expires, "
+                              "YARP's next lookup of '" +
+                              event + "' can answer absent although another's is live");
     for (size_t i = 1; i < sites.size(); ++i) add_note(d, "also set here", sites[i]);
-    add_note(d, "give each event one monitor that sets it (and unsets it: a monitor unsets only "
-                "its own entry)");
+    add_note(d,
+             "give each event one monitor that sets it (and unsets it: a monitor unsets only "
+             "its own entry)");
     out.push_back(std::move(d));
   }
 }

@@ -1,7 +1,11 @@
 // A tiny plugin for the runtime's end-to-end tests: a ticker, an arm that is busy every
 // other second, and an environment that counts commands reaching the arm while it is busy.
+// Scenario "stuck": the arm never returns from its first command (plugin code stuck where no
+// interrupt reaches it, for tests/interrupt/).
 // testdata/pingpong/ is the app that wires them (as `arbc build` would).
+#include <chrono>
 #include <sstream>
+#include <thread>
 
 #include "runtime/module.h"
 
@@ -9,11 +13,13 @@ namespace pingpong {
 
 class World : public arbc::Environment {
  public:
-  std::vector<std::string> scenarios() const override { return {"normal", "impossible"}; }
+  std::vector<std::string> scenarios() const override { return {"normal", "impossible", "stuck"}; }
   void setup(arbc::EnvironmentContext& ctx) override {
     ctx_ = &ctx;
-    wanted_ = ctx.scenario() == "impossible" ? 1000 : 8;
+    wanted_ = ctx.scenario() == "normal" ? 8 : 1000;
+    stuck_ = ctx.scenario() == "stuck";
   }
+  bool stuck() const { return stuck_; }
   void command(bool busy) {
     ++commands_;
     if (busy) ++conflicts_;
@@ -29,6 +35,7 @@ class World : public arbc::Environment {
  private:
   arbc::EnvironmentContext* ctx_ = nullptr;
   int commands_ = 0, conflicts_ = 0, wanted_ = 0;
+  bool stuck_ = false;
 };
 
 class Ticker : public arbc::Module {
@@ -53,7 +60,9 @@ class Arm : public arbc::Module {
   double tick_period() const override { return 0.1; }
   void tick() override { report(); }
   void on_message(const std::string& port, const arbc::Value& v) override {
-    if (auto* world = environment<World>()) world->command(busy_);
+    auto* world = environment<World>();
+    while (world && world->stuck()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (world) world->command(busy_);
   }
 
  private:

@@ -26,6 +26,9 @@ for p in root.rglob("CMakeLists.txt"):
     if p.relative_to(root).parts[0] in skip:
         continue
     ctests.update(re.findall(r"add_test\(NAME (\S+)", p.read_text()))
+# A name built in a loop (`check_golden.${case}`) stands for every name it can take.
+ctest_patterns = [re.compile(re.escape(t).replace(re.escape("${"), "${").split("${")[0] + ".*"
+                             if "${" in t else re.escape(t)) for t in ctests]
 
 # Identifiers the page names that are not tests.
 not_tests = {"expect_unaffected_and_accounted", "soak_bench", "on_delivery"}
@@ -46,6 +49,15 @@ for line in doc.splitlines():
             elif suite and re.fullmatch(r"[A-Z][a-z]\w+", token):
                 if (suite, token) not in tests:
                     errors.append(f"no test {suite}.{token}")
+            elif re.fullmatch(r"[a-z0-9]+(_[a-z0-9]+)+\.[\w.-]+", token):
+                # One case of a per-case ctest family: the family exists and so does the case.
+                family, case = token.split(".", 1)
+                where = {"check_golden": root / "tests/check" / case,
+                         "verify_golden": root / "tests/verify/golden" / case}.get(family)
+                if not any(p.fullmatch(token) for p in ctest_patterns):
+                    errors.append(f"no ctest {token}")
+                elif where is not None and not where.exists():
+                    errors.append(f"no case {case} for {family} ({where.relative_to(root)})")
             elif re.fullmatch(r"[a-z0-9]+(_[a-z0-9]+)+(_\*)?", token) and "fuzz" not in token:
                 pattern = re.compile(token.replace("*", ".*") + "$")
                 golden = (root / "tests/check" / token).is_dir()  # a check_golden case

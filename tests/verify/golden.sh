@@ -1,18 +1,34 @@
 #!/usr/bin/env bash
 # Golden tests of `arbc verify` as a whole process: output and exit code per case.
-#   golden.sh ARBC            compare (run from the repository root)
-#   ARBC_UPDATE_GOLDEN=1 golden.sh ARBC    rewrite the expected files (review them by eye)
-# Each case: name, expected exit code, arguments. Expected stdout+stderr in tests/verify/golden/NAME.
+#   golden.sh ARBC [CASE...]                        run the cases (all without CASE arguments)
+#   ARBC_UPDATE_GOLDEN=1 golden.sh ARBC [CASE...]   rewrite the expected files (review them by eye)
+# Run from the repository root. Each `golden` line below is one case: its name (the expected
+# stdout+stderr is tests/verify/golden/NAME), where it runs (`repo`: the repository root;
+# `empty`: a scratch folder; `specs`: a scratch folder whose specs/ holds the take mutant, as a
+# pre-commit hook sees a repository), the expected exit code, and the arguments of `arbc verify`.
+# ctest runs each case as its own test, verify_golden.NAME: tests/verify/CMakeLists.txt reads the
+# names from the `golden` lines, so a case added here is a test after the next configure.
 set -uo pipefail
-arbc=$1
-dir=tests/verify/golden
-mkdir -p "$dir"
+root=$PWD
+arbc=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+shift
+selected=("$@")
+dir=$root/tests/verify/golden
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p "$scratch/empty" "$scratch/specs/specs"
+cp "$root/tests/verify/table_clean_take_mutant.spec" "$scratch/specs/specs/"
 failed=0
-check() {
-  local name=$1 want=$2
-  shift 2
-  local out rc
-  out=$("$arbc" verify "$@" 2>&1)
+ran=()
+
+golden() {
+  local name=$1 where=$2 want=$3
+  shift 3
+  if ((${#selected[@]})) && [[ " ${selected[*]} " != *" $name "* ]]; then return; fi
+  ran+=("$name")
+  local cwd=$root out rc
+  [ "$where" = repo ] || cwd=$scratch/$where
+  out=$(cd "$cwd" && "$arbc" verify "$@" 2>&1)
   rc=$?
   if [ "$rc" != "$want" ]; then
     echo "FAIL $name: exit $rc, expected $want"; failed=1
@@ -23,40 +39,40 @@ check() {
     echo "FAIL $name: output differs from $dir/$name"; failed=1
   fi
 }
-check proved.txt 0 tests/verify/table_clean.app.json tests/verify/search_and_track.app.json
-check proved.json 0 --format json tests/verify/table_clean.app.json
-check proved.sarif 0 --format sarif tests/verify/table_clean.app.json
-check refuted.txt 1 tests/verify/table_clean_take_mutant.app.json
-check refuted.json 1 --format json tests/verify/table_clean_take_mutant.app.json
-check refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.app.json
-check warnings.txt 0 tests/verify/table_clean_warnings.app.json
-check warnings_strict.txt 1 --strict tests/verify/table_clean_warnings.app.json
-# Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
-check missing.txt 2 tests/verify/no_such_app.json
-# Specs go through the compiler when this arbc has it (front end + lowering); else a clear error.
-probe=$("$arbc" verify specs/search_and_track.spec 2>&1)
-if [[ $probe == *"needs the spec compiler"* ]]; then
-  check spec_without_compiler.txt 2 tests/verify/table_clean.spec
-else
-  check spec_proved.txt 0 specs/table_clean.spec specs/search_and_track.spec
-  check spec_refuted.txt 1 tests/verify/table_clean_take_mutant.spec
-  check spec_refuted.sarif 1 --format sarif tests/verify/table_clean_take_mutant.spec
-fi
 
+golden proved.txt repo 0 tests/verify/table_clean.app.json tests/verify/search_and_track.app.json
+golden proved.json repo 0 --format json tests/verify/table_clean.app.json
+golden proved.sarif repo 0 --format sarif tests/verify/table_clean.app.json
+golden refuted.txt repo 1 tests/verify/table_clean_take_mutant.app.json
+golden refuted.json repo 1 --format json tests/verify/table_clean_take_mutant.app.json
+golden refuted.sarif repo 1 --format sarif tests/verify/table_clean_take_mutant.app.json
+golden warnings.txt repo 0 tests/verify/table_clean_warnings.app.json
+golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app.json
+# Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
+golden missing.txt repo 2 tests/verify/no_such_app.json
+golden bad_format.txt specs 2 --format xml tests/verify/table_clean.app.json
+# Specs go through the compiler (front end + lowering).
+golden spec_proved.txt repo 0 specs/table_clean.spec specs/search_and_track.spec
+golden spec_refuted.txt repo 1 tests/verify/table_clean_take_mutant.spec
+golden spec_refuted.sarif repo 1 --format sarif tests/verify/table_clean_take_mutant.spec
+# Each proof check the fixtures above do not show: unfed, ownership, complete.
+golden findings.txt repo 1 tests/verify/findings.spec
+# No time to decide is "unknown", exit 1, never "proved".
+golden unknown_timeout.txt repo 1 --timeout 1e-9 tests/verify/overlap.spec
+golden unknown_timeout.json repo 1 --timeout 1e-9 --format json tests/verify/overlap.spec
+# An event only an invariant or exclusive group mentions: the fix names them too.
+golden invariant_only.txt repo 0 tests/verify/invariant_only.spec
+# Input with errors never looks clean: verdict "error", the diagnostics, exit 2.
+golden bad_input.json repo 2 --format json tests/verify/bad.spec
+golden bad_input.sarif repo 2 --format sarif tests/verify/bad.spec tests/verify/no_such_app.json \
+  tests/verify/malformed.app.json
+golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spec
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
-root=$PWD
-arbc=$(cd "$(dirname "$arbc")" && pwd)/$(basename "$arbc")
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-cd "$scratch"
-dir=$root/$dir
-check no_args_no_specs.txt 2
-mkdir specs
-cp "$root/tests/verify/table_clean_take_mutant.spec" specs/
-if [[ $probe == *"needs the spec compiler"* ]]; then
-  check no_args_without_compiler.txt 2
-else
-  check no_args.txt 1
-fi
-check bad_format.txt 2 --format xml tests/verify/table_clean.app.json
+golden no_args_no_specs.txt empty 2
+golden no_args.txt specs 1
+
+for name in "${selected[@]}"; do
+  [[ " ${ran[*]} " == *" $name "* ]] || { echo "FAIL: no case named $name"; failed=1; }
+done
+echo "${#ran[@]} cases run"
 exit $failed

@@ -37,14 +37,15 @@ expect edited-run-says-rebuild 2 "rebuild the app with \`arbc build\`" \
   "$arbc" run "$scratch/edited" "${run[@]}" --no-verify
 
 # A hand-written script that sets another constraint builds and verifies (the proof is about
-# app.json's constraint) but does not load: exit 2 naming the file, the connection, both.
+# app.json's constraint) but does not load: exit 2 naming the
+# hand-written file and line (not the generated monitor), the connection, both.
 mkdir -p "$scratch/script"
 sed 's|  search: from LookAround.gaze when not e_face_detected;|  search: from LookAround.gaze when not e_face_detected { script "search_true.lua"; }|' \
   specs/search_and_track.spec > "$scratch/script/app.spec"
 cp tests/what_runs/search_true.lua "$scratch/script/"
 grep -q 'search_true.lua' "$scratch/script/app.spec" || fail "the spec edit did not apply"
 "$arbc" build "$scratch/script/app.spec" -o "$scratch/script/out" > /dev/null || fail "script build"
-expect script-run 2 "monitors/HeadControl.gaze__search.lua:" \
+expect script-run 2 "search_true.lua:4:" \
   "$arbc" run "$scratch/script/out/search_and_track" "${run[@]}"
 expect script-run-names-both 2 \
   "setConstraint: \"true\" would replace the constraint of connection 'search', \"not e_face_detected\"" \

@@ -1,7 +1,7 @@
 // Drives a timed state machine (the arm, the rake) from a module: publishes the machine's
 // status flags on every change and on every heartbeat (10 Hz), and wakes the machine exactly
 // when its next step is due, so that a status change is published at the simulated instant it
-// happens (DESIGN.md "The reference world").
+// happens (examples/table_clean/README.md#the-modules-modules).
 #pragma once
 
 #include <functional>

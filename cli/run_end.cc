@@ -1,0 +1,118 @@
+#include "cli/run_end.h"
+
+#include <cstdio>
+
+#include "cli/report/run_report.h"
+
+namespace arbc::cli {
+
+namespace {
+
+// The report's input: the header as `arbc run` prints it, the counters, the trace records.
+// `environment` is the environment's summary ("" when it must not be asked).
+report::RunReportInput report_input(const RunEnd& end, bool success, const std::string& verdict,
+                                    const std::string& environment) {
+  report::RunReportInput input;
+  report::RunHeader& h = input.header;
+  h.app = end.app.name;
+  h.proof = end.proof;
+  h.description = end.app.description;
+  h.scenario = end.runtime.scenario();
+  h.seed = end.options.seed;
+  h.realtime = end.options.realtime;
+  h.requested = end.options.duration;
+  h.end = end.runtime.now();
+  h.stop_reason = end.runtime.stop_reason();
+  h.success = success;
+  h.verdict = verdict;
+  h.environment = environment;
+  std::vector<ConnectionStats> stats = end.runtime.stats();  // in the app's connection order
+  for (size_t i = 0; i < stats.size() && i < end.app.connections.size(); ++i) {
+    const model::Connection& c = end.app.connections[i];
+    input.connections.push_back(
+        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
+  }
+  input.records = &end.records;
+  return input;
+}
+
+void print_run_line(const RunEnd& end, const std::string& stop_reason) {
+  std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", end.app.name.c_str(),
+              end.runtime.scenario().c_str(), static_cast<unsigned long long>(end.options.seed),
+              end.options.realtime ? "real" : "simulated", end.runtime.now(),
+              stop_reason.empty() ? "" : ", stopped: ", stop_reason.c_str());
+  std::fputs(end.runtime.stats_table().c_str(), stdout);
+}
+
+// Writes the report, if one was asked for; false (after saying why) when it cannot be written.
+bool write_report(const RunEnd& end, const report::RunReportInput& input) {
+  if (end.report_path.empty()) return true;
+  std::string html = report::render_run_report(input);
+  std::string error = end.report_file.write(html);
+  if (!error.empty()) {
+    std::fprintf(stderr, "arbc run: error: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("report: %s (%zu bytes)\n", end.report_path.c_str(), html.size());
+  return true;
+}
+
+}  // namespace
+
+int finish_run(const RunEnd& end, const std::string& signal) {
+  if (!signal.empty()) std::fprintf(stderr, "arbc run: interrupted (%s)\n", signal.c_str());
+  print_run_line(end, end.runtime.stop_reason());
+  bool success = true;
+  std::string verdict, summary;
+  if (Environment* env = end.runtime.environment()) {
+    summary = env->summary();
+    if (!summary.empty()) {
+      std::fputs(summary.c_str(), stdout);
+      if (summary.back() != '\n') std::fputc('\n', stdout);
+    }
+    success = env->success();
+    verdict = success ? "success" : "failure";
+  } else {
+    for (const ConnectionStats& s : end.runtime.stats()) success &= !s.quarantined;
+    verdict = std::string(success ? "success" : "failure") +
+              " (no environment; judged by quarantined connections)";
+  }
+  std::printf("result: %s\n", verdict.c_str());
+  if (!write_report(end, report_input(end, success, verdict, summary))) return 3;
+  return success ? 0 : 3;
+}
+
+void give_up_stuck_run(const RunEnd& end, const std::string& signal, double waited) {
+  BusyMarker::Snapshot busy = end.runtime.busy();
+  std::string who = Runtime::describe(busy);
+  std::string why;
+  if (who.empty()) {
+    char line[96];
+    std::snprintf(line, sizeof line, "the run did not stop within %.1f s", waited);
+    why = line;
+  } else {
+    char budget[96] = "";
+    if (busy.kind == "monitor") {
+      std::snprintf(budget, sizeof budget, ", past its wall-clock budget of %g s",
+                    end.options.limits.wall_seconds);
+    } else {
+      std::snprintf(budget, sizeof budget, " (plugin code cannot be stopped)");
+    }
+    char line[512];
+    std::snprintf(line, sizeof line, "%s is still running %.1f s after the interrupt%s",
+                  who.c_str(), waited, budget);
+    why = line;
+  }
+  std::fprintf(stderr, "arbc run: interrupted (%s), but %s; ending the run without it\n",
+               signal.c_str(), why.c_str());
+  std::string stop = "interrupted; " + why;
+  end.runtime.abandon_trace(stop);
+  print_run_line(end, stop);
+  std::string verdict = "interrupted (the run did not finish)";
+  std::printf("result: %s\n", verdict.c_str());
+  report::RunReportInput input = report_input(end, false, verdict, "");
+  input.header.stop_reason = stop;
+  write_report(end, input);
+}
+
+}  // namespace arbc::cli

@@ -1,0 +1,35 @@
+// The end of `arbc run`: what it prints (the run line, a row of counters per connection, the
+// environment's summary, the verdict) and the report it writes, for a run that returned, and
+// for one whose executor thread is stuck after an interrupt (cli/run_interrupt.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/report/report_file.h"
+#include "core/app_model.h"
+#include "runtime/runtime.h"
+
+namespace arbc::cli {
+
+struct RunEnd {
+  const model::App& app;
+  Runtime& runtime;
+  const RunOptions& options;
+  const std::vector<TraceRecord>& records;  // the trace in memory (with --report)
+  const std::string& report_path;           // empty: no report
+  report::ReportFile& report_file;
+  const std::string& proof;  // "verified: ..." or "not verified (--no-verify)", for the report
+};
+
+// After runtime.run() returned: prints everything and writes the report. `signal` names the
+// signal that interrupted the run ("" for none). Returns the exit code.
+int finish_run(const RunEnd& end, const std::string& signal);
+
+// On the watchdog thread, when the run did not return `waited` seconds after `signal`: names
+// the callback still running (past its wall-clock budget, for a monitor), prints the counters
+// as they are, closes the trace and writes the report of an interrupted run. Nothing here calls
+// plugin code (the environment may be what is stuck). The caller then ends the process.
+void give_up_stuck_run(const RunEnd& end, const std::string& signal, double waited);
+
+}  // namespace arbc::cli

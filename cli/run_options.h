@@ -1,0 +1,18 @@
+// Parsing of `arbc run`'s values that CLI11 would accept too loosely (docs/cli.md, `arbc run`):
+// a duration needs its unit, a seed is a whole number that does not wrap.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace arbc::cli {
+
+// "60s", "500ms", "2min" -> seconds (> 0). A number without a unit is refused: `5` could mean
+// seconds or milliseconds, and a run of the wrong length is a silent wrong answer.
+bool parse_run_duration(const std::string& text, double* seconds, std::string* err);
+
+// "0" .. "18446744073709551615" -> the seed. A sign, a fraction or an overflow is refused
+// (CLI11 would turn "-1" into 2^64 - 1).
+bool parse_seed(const std::string& text, uint64_t* seed, std::string* err);
+
+}  // namespace arbc::cli

@@ -1,0 +1,71 @@
+// What the executor thread is running now, readable from any other thread: a watchdog that must
+// name a callback stuck past its budget when Ctrl-C cannot stop it (docs/reliability.md,
+// "A stuck monitor"). One writer (the executor thread), any number of readers; no lock, so
+// marking costs a few stores per callback.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+namespace arbc {
+
+class BusyMarker {
+ public:
+  // kind: "monitor", "module" or "environment"; `name` must outlive the callback.
+  void enter(const char* kind, const std::string* name, const char* callback) {
+    kind_.store(kind, std::memory_order_relaxed);
+    name_.store(name, std::memory_order_relaxed);
+    callback_.store(callback, std::memory_order_relaxed);
+    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+  }
+  void leave() {
+    kind_.store(nullptr, std::memory_order_relaxed);
+    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+  }
+
+  struct Snapshot {
+    uint64_t serial = 0;               // changes with every callback entered or left
+    std::string kind, name, callback;  // kind empty: between callbacks
+  };
+  // A consistent view (retried while the writer moves on).
+  Snapshot snapshot() const {
+    Snapshot s;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      s.serial = serial_.load(std::memory_order_acquire);
+      const char* kind = kind_.load(std::memory_order_relaxed);
+      const std::string* name = name_.load(std::memory_order_relaxed);
+      const char* callback = callback_.load(std::memory_order_relaxed);
+      std::atomic_thread_fence(std::memory_order_acquire);
+      if (serial_.load(std::memory_order_relaxed) != s.serial) continue;
+      s.kind = kind ? kind : "";
+      s.name = kind && name ? *name : "";
+      s.callback = kind && callback ? callback : "";
+      return s;
+    }
+    return s;
+  }
+
+ private:
+  std::atomic<uint64_t> serial_{0};
+  std::atomic<const char*> kind_{nullptr};
+  std::atomic<const std::string*> name_{nullptr};
+  std::atomic<const char*> callback_{nullptr};
+};
+
+// Marks a callback for as long as it is alive.
+class BusyScope {
+ public:
+  BusyScope(BusyMarker& marker, const char* kind, const std::string& name, const char* callback)
+      : marker_(marker) {
+    marker_.enter(kind, &name, callback);
+  }
+  ~BusyScope() { marker_.leave(); }
+  BusyScope(const BusyScope&) = delete;
+  BusyScope& operator=(const BusyScope&) = delete;
+
+ private:
+  BusyMarker& marker_;
+};
+
+}  // namespace arbc
