@@ -32,6 +32,31 @@ std::map<std::string, std::vector<double>> real_expiries(const std::vector<nlohm
   return out;
 }
 
+// The instants at which an event of each port changes presence for one owner: a set of an
+// entry that is not live, an unset of one that is. Messages of other connections around such
+// an instant are decided in an order the replay only approximates.
+std::map<std::string, std::vector<double>> changes(const std::vector<nlohmann::json>& events) {
+  using Key = std::tuple<std::string, std::string, std::string>;
+  std::map<Key, double> live_until;  // absent from the map: no entry
+  std::map<std::string, std::vector<double>> out;
+  for (const nlohmann::json& e : events) {
+    std::string op = e.value("op", "");
+    if (op == "expire") continue;
+    Key key{e.value("port", ""), e.value("event", ""), e.value("owner", "")};
+    double t = e["t"].get<double>();
+    auto it = live_until.find(key);
+    bool live = it != live_until.end() && t < it->second;
+    if (op == "set") {
+      if (!live) out[std::get<0>(key)].push_back(t);
+      live_until[key] = e.contains("expiry") ? e["expiry"].get<double>() : 1e300;
+    } else if (op == "unset") {
+      if (live) out[std::get<0>(key)].push_back(t);
+      live_until.erase(key);
+    }
+  }
+  return out;
+}
+
 bool near_any(double t, const std::vector<double>& instants, double tolerance) {
   for (double x : instants)
     if (std::fabs(x - t) <= tolerance) return true;
@@ -74,8 +99,10 @@ bool read_recorded_run(const std::string& path, const std::map<std::string, std:
     if (deliver && throttle.count(c)) throttle_ends[c].push_back(t + throttle.at(c));
   }
   std::map<std::string, std::vector<double>> expiries = real_expiries(events, tolerance);
+  std::map<std::string, std::vector<double>> changed = changes(events);
   for (Decision& d : out->decisions) {
     d.sensitive = near_any(d.t, expiries[d.port], tolerance) ||
+                  near_any(d.t, changed[d.port], tolerance) ||
                   near_any(d.t, throttle_ends[d.connection], tolerance);
   }
   return true;

@@ -34,9 +34,10 @@ struct RecordedRun {
 
 // Reads `path`; `destination` maps each connection's name to its destination port, and
 // `throttle` gives the connections with a throttle period. Decisions after `window` seconds
-// and publishes at or after it are left out. A decision at time t is sensitive when an event
-// entry of its port expires (is not refreshed or unset first) within `tolerance` of t, or its
-// connection's throttle period ends within `tolerance` of t.
+// and publishes at or after it are left out. A decision at time t is sensitive when, within
+// `tolerance` of t, an event entry of its port expires (is not refreshed or unset first) or
+// changes presence (the order of messages around it matters), or its connection's throttle
+// period ends.
 bool read_recorded_run(const std::string& path, const std::map<std::string, std::string>& destination,
                        const std::map<std::string, double>& throttle, double window,
                        double tolerance, RecordedRun* out, std::string* err);
