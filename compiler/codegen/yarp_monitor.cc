@@ -163,14 +163,16 @@ std::string YarpMonitorWriter::accept_function() const {
   out += "\nlocal function arbc_accept(thing)\n";
   out += "  local msg = arbc_read(thing, arbc_in_type)\n";
   out += "  if msg == nil then return false end  -- not the layout of " + link_.source + "\n";
+  // The feeds first: their events count at the rule's decision, as YARP evaluates it.
+  for (size_t k = 0; k < link_.parts.size(); ++k) {
+    const model::Connection& c = conn(k);
+    if (c.kind == model::ConnectionKind::Feed && !c.monitor.empty())
+      out += "  pcall(" + table(k) + ".accept, msg)  -- " + c.name + ": events only\n";
+  }
   for (size_t k = 0; k < link_.parts.size(); ++k) {
     const model::Connection& c = conn(k);
     bool has_code = !c.monitor.empty();
-    if (c.kind == model::ConnectionKind::Feed) {
-      if (has_code) out += "  pcall(" + table(k) + ".accept, msg)  -- " + c.name + ": events only\n";
-      continue;
-    }
-    if (link_.parts[k] != *link_.delivering) continue;
+    if (c.kind == model::ConnectionKind::Feed || link_.parts[k] != *link_.delivering) continue;
     out += "  -- " + c.name + "\n";
     if (has_code) {
       out += "  local ok, accepted = pcall(" + table(k) + ".accept, msg)\n";
