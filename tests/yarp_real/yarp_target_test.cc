@@ -190,9 +190,9 @@ TEST_F(YarpTargetTest, SearchAndTrackDeliversTheSameOnYarp) {
   run_case({"specs/search_and_track.spec", SEARCH_AND_TRACK_PLUGIN, "", "16s", 16.0});
 }
 
-TEST_F(YarpTargetTest, FaceFilterDeliversTheSameOnYarp) {
-  run_case({"specs/face_filter.spec", SEARCH_AND_TRACK_PLUGIN, "", "16s", 16.0});
-}
+// specs/face_filter.spec has no replay: no simulated world shows its FaceDetector a face (the
+// head never turns without LookAround), so its run publishes nothing. Its YARP build is proved
+// by the round trip (tests/build/check_yarp_build.sh).
 
 }  // namespace
 }  // namespace arbc::yarp_test
