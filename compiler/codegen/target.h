@@ -42,7 +42,8 @@ class Target {
   // Takes the deployment's options; false (and `err`) when the target has no use for them.
   virtual bool configure(const TargetOptions& options, std::string* err) {
     if (options.port_names.empty()) return true;
-    *err = "the " + std::string(name()) + " target does not name ports; --deploy is for --target yarp";
+    *err =
+        "the " + std::string(name()) + " target does not name ports; --deploy is for --target yarp";
     return false;
   }
   virtual std::string_view name() const = 0;

@@ -12,11 +12,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -32,9 +41,10 @@ std::string module_xml(const model::Module& m, const YarpNames& names) {
   std::string out = "  <!-- " + comment_text(m.name + (m.doc.empty() ? "" : ": " + m.doc)) +
                     ". Fill in the executable that opens these ports:\n";
   for (const model::Port& p : m.ports) {
-    out += "       " + comment_text(std::string(p.direction == model::Direction::Out ? "out " : "in  ") +
-                                    p.name + ": " + (p.type ? p.type->to_string() : "?") + " on " +
-                                    names.port(m.name + "." + p.name)) +
+    out += "       " +
+           comment_text(std::string(p.direction == model::Direction::Out ? "out " : "in  ") +
+                        p.name + ": " + (p.type ? p.type->to_string() : "?") + " on " +
+                        names.port(m.name + "." + p.name)) +
            "\n";
   }
   out += "  -->\n  <module>\n    <name>" + xml_escape(m.name) + "</name>\n";

@@ -1,4 +1,5 @@
-// The yarpmanager application and the port map of a YARP deployment (docs/yarp.md#deploying-a-spec-on-yarp-step-by-step).
+// The yarpmanager application and the port map of a YARP deployment
+// (docs/yarp.md#deploying-a-spec-on-yarp-step-by-step).
 #pragma once
 
 #include <string>

@@ -21,8 +21,8 @@ std::string yarp_type_descriptor(const Type& t) {
     case Type::Kind::Record: {
       std::string fields, order;
       for (const Field& f : t.fields) {
-        fields += (fields.empty() ? "" : ", ") + lua_table_key(f.name) +
-                  yarp_type_descriptor(*f.type);
+        fields +=
+            (fields.empty() ? "" : ", ") + lua_table_key(f.name) + yarp_type_descriptor(*f.type);
         order += (order.empty() ? "" : ", ") + lua_string(f.name);
       }
       return "{ kind = \"record\", fields = { " + fields + " }, order = { " + order + " } }";

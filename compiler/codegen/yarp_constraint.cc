@@ -41,8 +41,7 @@ std::string text(const Constraint& c, const std::string& port, const YarpNames& 
 // Does a connection into `port` other than `c` set `event`?
 bool set_by_another(const model::App& app, const model::Connection& c, const std::string& event) {
   for (const model::Connection* o : app.connections_into(c.destination)) {
-    if (o != &c && std::find(o->sets.begin(), o->sets.end(), event) != o->sets.end())
-      return true;
+    if (o != &c && std::find(o->sets.begin(), o->sets.end(), event) != o->sets.end()) return true;
   }
   return false;
 }

@@ -43,10 +43,11 @@ class YarpMonitorWriter {
     out += yarp_bottle_lua() + "\n";
     out += "local arbc_in_type = " + yarp_type_descriptor(*type_of(link_.source)) + "\n";
     out += "local arbc_out_type = " + yarp_type_descriptor(*type_of(link_.destination)) + "\n\n";
-    out += "-- An expression without a value ends the part that computes it: the message is\n"
-           "-- dropped (\"no-value\" on the embedded runtime).\n"
-           "local ARBC_NO_VALUE = {}\n"
-           "local function arbc_novalue() error(ARBC_NO_VALUE, 0) end\n\n";
+    out +=
+        "-- An expression without a value ends the part that computes it: the message is\n"
+        "-- dropped (\"no-value\" on the embedded runtime).\n"
+        "local ARBC_NO_VALUE = {}\n"
+        "local function arbc_novalue() error(ARBC_NO_VALUE, 0) end\n\n";
     for (size_t k = 0; k < link_.parts.size(); ++k) out += part(k);
     out += accept_function();
     out += callbacks();
@@ -65,8 +66,9 @@ class YarpMonitorWriter {
     for (size_t k = 0; k < link_.parts.size(); ++k) {
       const model::Connection& c = conn(k);
       if (lowered_.monitors[link_.parts[k]].script)
-        diags_.push_back(unsupported(c, "`script` rules run arbc's PortMonitor API, not YARP's; "
-                                        "write the rule's body in the spec"));
+        diags_.push_back(unsupported(c,
+                                     "`script` rules run arbc's PortMonitor API, not YARP's; "
+                                     "write the rule's body in the spec"));
       if (c.kind != model::ConnectionKind::Feed && link_.delivering &&
           *link_.delivering != link_.parts[k])
         diags_.push_back(unsupported(
@@ -117,20 +119,20 @@ class YarpMonitorWriter {
   std::string part(size_t k) {
     const model::Connection& c = conn(k);
     std::string out = "-- ---- " + c.name + " (spec line " + std::to_string(c.loc.line) + ", " +
-                      (c.kind == model::ConnectionKind::Feed ? "a generated event feed"
-                       : c.kind == model::ConnectionKind::Rule
-                           ? "a rule"
-                           : "a monitored connection") +
+                      (c.kind == model::ConnectionKind::Feed   ? "a generated event feed"
+                       : c.kind == model::ConnectionKind::Rule ? "a rule"
+                                                               : "a monitored connection") +
                       ")\n";
     out += "local " + table(k) + " = {}\n";
     if (c.monitor.empty() || lowered_.monitors[link_.parts[k]].script) return out + "\n";
-    std::string text = write_monitor(lowered_, lowered_.monitors[link_.parts[k]], lines_,
-                                     style(k)).text;
+    std::string text =
+        write_monitor(lowered_, lowered_.monitors[link_.parts[k]], lines_, style(k)).text;
     replace_all(text, "PortMonitor.novalue()", "arbc_novalue()");
     replace_all(text, "PortMonitor.now()", "yarp.now()");
     if (text.find("PortMonitor.hasEvent") != std::string::npos)
-      diags_.push_back(unsupported(c, "it reads an event in an expression, and YARP's Lua API "
-                                      "cannot read events; use the event in a `when`"));
+      diags_.push_back(unsupported(c,
+                                   "it reads an event in an expression, and YARP's Lua API "
+                                   "cannot read events; use the event in a `when`"));
     out += "do\n" + text + "end\n\n";
     return out;
   }
@@ -157,8 +159,7 @@ std::string YarpMonitorWriter::accept_function() const {
       "-- The embedded runtime's message path (docs/design.md#the-message-path), in accept:\n"
       "-- the parts run in the spec's order, each under pcall; a feed never delivers.\n"
       "local arbc_out = nil  -- the Bottle update() delivers, made by accept\n";
-  const model::Connection* d =
-      link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
+  const model::Connection* d = link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
   if (d && d->throttle) out += "local arbc_last_delivery = nil  -- for the throttle\n";
   out += "\nlocal function arbc_accept(thing)\n";
   out += "  local msg = arbc_read(thing, arbc_in_type)\n";
@@ -208,8 +209,8 @@ std::string YarpMonitorWriter::every_due() const {
     body += "  if arbc_every_next[" + i + "] ~= nil and now >= arbc_every_next[" + i + "] then\n";
     body += "    pcall(" + table(k) + ".trig)\n";
     body += "    arbc_every_next[" + i + "] = arbc_every_next[" + i + "] + " + d + "\n";
-    body += "    if arbc_every_next[" + i + "] <= now then arbc_every_next[" + i + "] = now + " + d +
-            " end\n";
+    body += "    if arbc_every_next[" + i + "] <= now then arbc_every_next[" + i + "] = now + " +
+            d + " end\n";
     body += "  end\n";
   }
   if (body.empty()) return "";
@@ -222,8 +223,7 @@ std::string YarpMonitorWriter::every_due() const {
 
 std::string YarpMonitorWriter::create() const {
   std::string out = "PortMonitor.create = function(options)\n";
-  const model::Connection* d =
-      link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
+  const model::Connection* d = link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
   if (app_.find_arbitrated(link_.destination)) {
     std::string c = d ? yarp_constraint(app_, *d, names_) : "false";
     out += "  PortMonitor.setConstraint(" + lua_string(" " + c + " ") + ")\n";
@@ -255,11 +255,12 @@ std::string YarpMonitorWriter::callbacks() const {
     if (!d.activity_event.empty())
       out += "  PortMonitor.setEvent(" +
              lua_string(names_.event(d.destination, d.activity_event, d.name)) + ", " +
-             declared_lifetime(app_, d.activity_event) + ")  -- by priority: " +
-             d.activity_event + "\n";
+             declared_lifetime(app_, d.activity_event) + ")  -- by priority: " + d.activity_event +
+             "\n";
     if (d.throttle) out += "  arbc_last_delivery = yarp.now()\n";
-    out += "  pcall(function()\n    local b = thing:asBottle()\n    b:clear()\n"
-           "    b:append(arbc_out)\n  end)\n  return thing\nend\n\n";
+    out +=
+        "  pcall(function()\n    local b = thing:asBottle()\n    b:clear()\n"
+        "    b:append(arbc_out)\n  end)\n  return thing\nend\n\n";
   }
   if (every) out += "PortMonitor.trig = function()\n" + guard_every + "end\n\n";
   out += "-- YARP keeps a monitor's events after its connection is gone: unset them.\n";

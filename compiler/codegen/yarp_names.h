@@ -18,10 +18,10 @@ namespace arbc::codegen {
 // The connections of the spec that share one (source, destination) pair: YARP allows one
 // connection per pair, so they become one YARP connection with one monitor.
 struct YarpLink {
-  std::string source, destination;  // spec ports "Module.port"
-  std::vector<size_t> parts;        // indexes into App::connections, in model order
-  std::string id;                   // the XML connection id: the delivering rule's name
-  std::string monitor;              // file name without ".lua"; empty: a plain tcp connection
+  std::string source, destination;   // spec ports "Module.port"
+  std::vector<size_t> parts;         // indexes into App::connections, in model order
+  std::string id;                    // the XML connection id: the delivering rule's name
+  std::string monitor;               // file name without ".lua"; empty: a plain tcp connection
   std::optional<size_t> delivering;  // the part that may deliver (rule or connect), if any
 };
 

@@ -180,16 +180,19 @@ TEST(ScriptFacts, NotADeliveryEventWhenSetElsewhereOnSomePathsOrForever) {
   EXPECT_TRUE(facts_of(R"(
 PortMonitor.accept = function(thing) PortMonitor.setEvent("e_act", 1.0) return true end
 PortMonitor.update = function(thing) PortMonitor.setEvent("e_act", 1.0) return thing end
-)").delivery_set.empty());
+)")
+                  .delivery_set.empty());
   EXPECT_TRUE(facts_of(R"(
 PortMonitor.update = function(thing)
   if thing:asBottle():size() > 1 then PortMonitor.setEvent("e_act", 1.0) end
   return thing
 end
-)").delivery_set.empty());
+)")
+                  .delivery_set.empty());
   EXPECT_TRUE(facts_of(R"(
 PortMonitor.update = function(thing) PortMonitor.setEvent("e_act") return thing end
-)").delivery_set.empty());
+)")
+                  .delivery_set.empty());
 }
 
 }  // namespace

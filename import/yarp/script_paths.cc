@@ -408,8 +408,8 @@ void delivery_events(const Outcomes& update, const std::vector<std::string>& eve
       if (!c.text || *c.text != events[i]) continue;
       bool in_update = c.callback == "update" && c.function == "setEvent";
       bool destroy_unset = c.callback == "destroy" && c.function == "unsetEvent";
-      every = every && (in_update || destroy_unset) && (!in_update || (c.has_second && c.number &&
-                                                                         *c.number > 0));
+      every = every && (in_update || destroy_unset) &&
+              (!in_update || (c.has_second && c.number && *c.number > 0));
     }
     if (every) facts.delivery_set.insert(events[i]);
   }

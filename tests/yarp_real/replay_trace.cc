@@ -65,7 +65,8 @@ bool near_any(double t, const std::vector<double>& instants, double tolerance) {
 
 }  // namespace
 
-bool read_recorded_run(const std::string& path, const std::map<std::string, std::string>& destination,
+bool read_recorded_run(const std::string& path,
+                       const std::map<std::string, std::string>& destination,
                        const std::map<std::string, double>& throttle, double window,
                        double tolerance, RecordedRun* out, std::string* err) {
   std::ifstream in(path);

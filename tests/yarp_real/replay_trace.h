@@ -5,10 +5,9 @@
 #pragma once
 
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace arbc::yarp_test {
 
@@ -38,7 +37,8 @@ struct RecordedRun {
 // `tolerance` of t, an event entry of its port expires (is not refreshed or unset first) or
 // changes presence (the order of messages around it matters), or its connection's throttle
 // period ends.
-bool read_recorded_run(const std::string& path, const std::map<std::string, std::string>& destination,
+bool read_recorded_run(const std::string& path,
+                       const std::map<std::string, std::string>& destination,
                        const std::map<std::string, double>& throttle, double window,
                        double tolerance, RecordedRun* out, std::string* err);
 

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kTolerance = 0.06;  // seconds; see docs/yarp.md#the-proof-on-real-yarp
+constexpr double kTolerance = 0.06;        // seconds; see docs/yarp.md#the-proof-on-real-yarp
 constexpr double kSameInstantGap = 0.004;  // between messages the trace publishes at one instant
 
 struct Case {
@@ -69,10 +69,10 @@ class YarpTargetTest : public YarpTest {
                     dir_ / "build.log"),
               0)
         << slurp(dir_ / "build.log");
-    ASSERT_EQ(shell(arbc + " build '" + spec + "' --target yarp -o '" + (dir_ / "yarp").string() +
-                        "'",
-                    dir_ / "build-yarp.log"),
-              0)
+    ASSERT_EQ(
+        shell(arbc + " build '" + spec + "' --target yarp -o '" + (dir_ / "yarp").string() + "'",
+              dir_ / "build-yarp.log"),
+        0)
         << slurp(dir_ / "build-yarp.log");
     fs::path app_dir = *fs::directory_iterator(dir_ / "embedded");
     model::AppLoad load = model::from_app_json(slurp(app_dir / "app.json"));
@@ -131,8 +131,8 @@ class YarpTargetTest : public YarpTest {
     }
     RecordedRun run;
     std::string err;
-    ASSERT_TRUE(read_recorded_run((dir_ / "trace.jsonl").string(), destination, throttle,
-                                  c.window, kTolerance, &run, &err))
+    ASSERT_TRUE(read_recorded_run((dir_ / "trace.jsonl").string(), destination, throttle, c.window,
+                                  kTolerance, &run, &err))
         << err;
     ASSERT_FALSE(run.publishes.empty());
     ASSERT_NO_FATAL_FAILURE(wire());
@@ -163,12 +163,13 @@ class YarpTargetTest : public YarpTest {
       first = false;
       PortComparison r = compare_deliveries(expected[port], sensitive[port], got);
       total += r.arbc;
-      std::printf("%s: arbc %zu, YARP %zu, matched %zu, sensitive not delivered %zu, extra %zu "
-                  "(sensitive drops %zu)\n",
-                  port.c_str(), r.arbc, r.yarp, r.matched, r.missing_sensitive, r.extra.size(),
-                  sensitive_drops[port]);
-      EXPECT_TRUE(r.missing.empty()) << port << ": arbc delivered, YARP did not: "
-                                     << r.missing.front();
+      std::printf(
+          "%s: arbc %zu, YARP %zu, matched %zu, sensitive not delivered %zu, extra %zu "
+          "(sensitive drops %zu)\n",
+          port.c_str(), r.arbc, r.yarp, r.matched, r.missing_sensitive, r.extra.size(),
+          sensitive_drops[port]);
+      EXPECT_TRUE(r.missing.empty())
+          << port << ": arbc delivered, YARP did not: " << r.missing.front();
       EXPECT_LE(r.extra.size(), sensitive_drops[port])
           << port << ": YARP delivered what arbc did not: " << (r.extra.empty() ? "" : r.extra[0]);
       // The tolerance must stay the exception, or the test proves little.
