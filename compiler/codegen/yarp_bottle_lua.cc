@@ -31,8 +31,11 @@ std::string yarp_type_descriptor(const Type& t) {
   return "{ kind = \"string\" }";
 }
 
-std::string yarp_bottle_lua() {
-  return R"lua(-- Bottles and spec values (docs/yarp.md#the-bottle-layout). Reading gives nil for a
+namespace {
+
+// Reading a message's Bottle into a spec value.
+constexpr const char* kReadLua =
+    R"lua(-- Bottles and spec values (docs/yarp.md#the-bottle-layout). Reading gives nil for a
 -- Bottle without the layout; nothing here raises on a value of the declared type.
 local arbc_read_item
 
@@ -114,7 +117,10 @@ local function arbc_read(thing, t)
   return arbc_read_contents(b, t)
 end
 
-local arbc_write_contents
+)lua";
+
+// Writing a spec value into a Bottle.
+constexpr const char* kWriteLua = R"lua(local arbc_write_contents
 
 local function arbc_write_item(b, x, t)
   if t.kind == "float" then
@@ -155,6 +161,9 @@ local function arbc_write(x, t)
   return b
 end
 )lua";
-}
+
+}  // namespace
+
+std::string yarp_bottle_lua() { return std::string(kReadLua) + kWriteLua; }
 
 }  // namespace arbc::codegen
