@@ -50,10 +50,14 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     }
     return;
   }
+  trace_.publish(now(), out.qualified, v);
   transport_->publish(out.index, v);
 }
 
+// A message from `out` for the connections mediated here. One from a module hosted elsewhere
+// is this process's input: traced as a `publish` line here (a hosted one was, in publish_from).
 void Runtime::from_source(OutPort& out, const Value& v) {
+  if (!out.hosted) trace_.publish(now(), out.qualified, v);
   for (Connection* c : out.connections) enqueue(*c, v);
 }
 
