@@ -32,7 +32,8 @@ void set_common_qos(Qos& qos, int depth, const WireType& wire) {
 
 WireSample* new_sample(const WireType& wire) {
   auto* s = new WireSample;
-  s->data = eprosima::fastrtps::types::DynamicDataFactory::get_instance()->create_data(wire.dynamic);
+  s->data =
+      eprosima::fastrtps::types::DynamicDataFactory::get_instance()->create_data(wire.dynamic);
   return s;
 }
 
@@ -52,7 +53,8 @@ bool DdsTransport::add_reader(const Endpoint& e, std::string* error) {
   auto r = std::make_unique<TopicReader>(this, e.port, e.input, e.topic, e.wire);
   fdds::DataReaderQos qos = subscriber_->get_default_datareader_qos();
   set_common_qos(qos, depth(), *e.wire);
-  fdds::StatusMask mask = fdds::StatusMask::data_available() << fdds::StatusMask::sample_lost()
+  fdds::StatusMask mask = fdds::StatusMask::data_available()
+                          << fdds::StatusMask::sample_lost()
                           << fdds::StatusMask::subscription_matched();
   r->reader = subscriber_->create_datareader(t, qos, r.get(), mask);
   if (!r->reader) {
@@ -69,8 +71,8 @@ bool DdsTransport::add_writer(const Endpoint& e, std::string* error) {
   auto w = std::make_unique<TopicWriter>(this, e.port, e.input, e.topic, e.wire);
   fdds::DataWriterQos qos = publisher_->get_default_datawriter_qos();
   set_common_qos(qos, depth(), *e.wire);
-  w->writer = publisher_->create_datawriter(t, qos, w.get(),
-                                            fdds::StatusMask::publication_matched());
+  w->writer =
+      publisher_->create_datawriter(t, qos, w.get(), fdds::StatusMask::publication_matched());
   if (!w->writer) {
     *error = "DDS: cannot create a writer on topic " + e.topic;
     return false;
@@ -96,21 +98,27 @@ TopicReader::~TopicReader() { delete_sample(sample_); }
 void TopicReader::on_data_available(fdds::DataReader* r) {
   std::lock_guard<std::mutex> take(take_mutex_);
   fdds::SampleInfo info;
-  while (!transport_->closing() && r->take_next_sample(sample_, &info) == ReturnCode_t::RETCODE_OK) {
+  while (!transport_->closing() &&
+         r->take_next_sample(sample_, &info) == ReturnCode_t::RETCODE_OK) {
     if (!info.valid_data) continue;  // a lifecycle notice, not a message
     ++received;
-    Value v;
+    Buffered b;
     std::string why;
     if (sample_->bad) {
       why = "a sample on " + topic + " does not decode as " + wire->name;
-    } else if (!from_wire(*wire, sample_->data, &v, &why)) {
+    } else if (!from_wire(*wire, sample_->data, &b.value, &why)) {
       sample_->bad = true;
     }
-    buffer(std::move(v), sample_->bad, why);
+    if (input) {
+      b.identity = info.sample_identity;
+    } else if (!sample_->bad) {
+      b.answered = transport_->answered(info);
+    }
+    buffer(std::move(b), sample_->bad, why);
   }
 }
 
-void TopicReader::buffer(Value v, bool bad, const std::string& why) {
+void TopicReader::buffer(Buffered b, bool bad, const std::string& why) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (bad) {
     ++undecodable;
@@ -120,7 +128,7 @@ void TopicReader::buffer(Value v, bool bad, const std::string& why) {
     ++lost;
     ++overflow_;
   } else {
-    pending_.push_back(std::move(v));
+    pending_.push_back(std::move(b));
   }
   if (!drain_posted_) {
     drain_posted_ = true;
@@ -157,7 +165,7 @@ void TopicReader::on_subscription_matched(fdds::DataReader*,
 }
 
 void TopicReader::drain() {
-  std::deque<Value> values;
+  std::deque<Buffered> values;
   uint64_t overflow = 0, bad = 0;
   std::string why;
   {
@@ -172,11 +180,13 @@ void TopicReader::drain() {
   if (overflow) sink.lost(input, port.index, DropReason::QueueFull, overflow, "DDS: " + topic);
   if (bad) sink.lost(input, port.index, DropReason::BadType, bad, why);
   Executor& ex = sink.executor();
-  for (const Value& v : values) {
+  for (const Buffered& b : values) {
     if (input) {
-      sink.to_module(port.index, Delivery{port.port, v, topic, topic, ex.now()});
+      // Before the module sees it: what it publishes from now on answers this sample.
+      transport_->received(b.identity);
+      sink.to_module(port.index, Delivery{port.port, b.value, topic, topic, ex.now()});
     } else {
-      sink.from_source(port.index, v);
+      sink.from_source(port.index, b.value, b.answered);
     }
   }
 }
@@ -194,11 +204,11 @@ TopicWriter::TopicWriter(DdsTransport* transport, const TransportPort& port, boo
 
 TopicWriter::~TopicWriter() { delete_sample(sample_); }
 
-void TopicWriter::write(const Value& v) {
+bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params) {
   std::string error;
-  if (to_wire(*wire, v, sample_->data, &error) && writer->write(sample_)) {
+  if (to_wire(*wire, v, sample_->data, &error) && writer->write(sample_, params)) {
     ++written;
-    return;
+    return true;
   }
   ++failed;
   if (!reported_) {
@@ -207,6 +217,7 @@ void TopicWriter::write(const Value& v) {
                               (error.empty() ? "" : " (" + error + ")") +
                               "; such failures are counted in the summary");
   }
+  return false;
 }
 
 void TopicWriter::on_publication_matched(fdds::DataWriter*,

@@ -108,16 +108,53 @@ fdds::Topic* DdsTransport::topic_for(const std::string& topic,
 }
 
 void DdsTransport::publish(int out, const Value& v) {
-  if (output_mediated_[static_cast<size_t>(out)]) sink_->from_source(out, v);
-  if (TopicWriter* w = output_writer_[static_cast<size_t>(out)]) w->write(v);
+  if (output_mediated_[static_cast<size_t>(out)])
+    sink_->from_source(out, v, TransportSink::kAnswersAll);
+  if (TopicWriter* w = output_writer_[static_cast<size_t>(out)]) {
+    SampleIdentity none;  // "received nothing yet": this writer, sequence number 0
+    none.writer_guid(w->writer->guid()).sequence_number({});
+    eprosima::fastrtps::rtps::WriteParams params;
+    params.related_sample_identity(related(none));
+    w->write(v, params);
+  }
 }
 
+// Into a module hosted elsewhere: written, and pending until answered. A write that failed
+// is answered at once (nothing reached the module).
 void DdsTransport::deliver(int in, const Delivery& d) {
   if (input_hosted_[static_cast<size_t>(in)]) {
     sink_->to_module(in, d);
-  } else if (TopicWriter* w = input_writer_[static_cast<size_t>(in)]) {
-    w->write(d.value);
+    return;
   }
+  TopicWriter* w = input_writer_[static_cast<size_t>(in)];
+  eprosima::fastrtps::rtps::WriteParams params;
+  WireTime time;
+  WireTime::now(time);
+  bool written = w && w->write(d.value, params);
+  std::lock_guard<std::mutex> lock(acks_mutex_);
+  ++sent_;
+  if (written) {
+    const SampleIdentity& id = params.sample_identity();
+    pending_.push_back({id.writer_guid(), id.sequence_number(), sent_, time});
+  }
+}
+
+// An arbc process handles its inputs in the order they reach it, which is the order they
+// were written here as long as samples on two topics do not overtake each other: a related
+// sample answers every delivery written up to it (docs/distributed.md#known-limits).
+uint64_t DdsTransport::answered(const fdds::SampleInfo& info) {
+  std::lock_guard<std::mutex> lock(acks_mutex_);
+  const SampleIdentity& related = info.related_sample_identity;
+  if (related == SampleIdentity::unknown()) {
+    std::erase_if(pending_, [&](const Pending& p) { return p.time <= info.source_timestamp; });
+  } else {
+    uint64_t upto = 0;
+    for (const Pending& p : pending_) {
+      if (p.writer == related.writer_guid() && p.seq <= related.sequence_number()) upto = p.ticket;
+    }
+    std::erase_if(pending_, [&](const Pending& p) { return p.ticket <= upto; });
+  }
+  return pending_.empty() ? sent_ : pending_.front().ticket - 1;
 }
 
 void DdsTransport::post(std::function<void()> fn) {

@@ -30,6 +30,8 @@ namespace arbc::dds {
 
 namespace fdds = eprosima::fastdds::dds;
 using ReturnCode_t = eprosima::fastrtps::types::ReturnCode_t;
+using eprosima::fastrtps::rtps::SampleIdentity;
+using WireTime = eprosima::fastrtps::rtps::Time_t;
 
 class DdsTransport;
 
@@ -58,13 +60,19 @@ class TopicReader : public fdds::DataReaderListener {
   std::atomic<int> publishers{0};
 
  private:
+  // A decoded sample, with what it answers (an output) or who wrote it (an input).
+  struct Buffered {
+    Value value;
+    uint64_t answered = 0;
+    SampleIdentity identity;
+  };
   // Adds a decoded sample (or counts it lost); posts a drain when none is pending.
-  void buffer(Value v, bool bad, const std::string& why);
+  void buffer(Buffered b, bool bad, const std::string& why);
   DdsTransport* transport_;
   std::mutex take_mutex_;  // one taker at a time (DDS may call from several threads)
   WireSample* sample_ = nullptr;
   std::mutex mutex_;  // guards what follows
-  std::deque<Value> pending_;
+  std::deque<Buffered> pending_;
   uint64_t overflow_ = 0, bad_ = 0;
   std::string bad_why_;
   bool drain_posted_ = false;
@@ -78,7 +86,9 @@ class TopicWriter : public fdds::DataWriterListener {
   TopicWriter(DdsTransport* transport, const TransportPort& port, bool input, std::string topic,
               std::shared_ptr<const WireType> wire);
   ~TopicWriter() override;
-  void write(const Value& v);
+  // Writes v with `params` (in: the related sample; out: the sample's identity); false when
+  // it could not (counted, reported once).
+  bool write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params);
   void on_publication_matched(fdds::DataWriter* writer,
                               const fdds::PublicationMatchedStatus& status) override;
 
@@ -130,6 +140,17 @@ class DdsTransport : public Transport {
   void post(std::function<void()> fn);
   // Reports `line` (from any thread) on the executor thread.
   void report(std::string line);
+  // Deliveries not yet answered (docs/design.md#deliveries-not-yet-answered). DDS threads: how
+  // many of this process's deliveries into modules hosted elsewhere a sample answers: those
+  // up to the one it names as related (an arbc process names the last input sample it
+  // received), else (a program without arbc) those written before its source timestamp.
+  uint64_t answered(const fdds::SampleInfo& info);
+  // Executor thread: a hosted module received the input sample `id`; the related sample every
+  // output names from now on (none yet: `none`, which answers nothing).
+  void received(const SampleIdentity& id) { last_received_ = id; }
+  SampleIdentity related(const SampleIdentity& none) const {
+    return last_received_ == SampleIdentity::unknown() ? none : last_received_;
+  }
   // A remote endpoint on `topic` announced `type` (and, when it is arbc, its spec type in
   // `user_data`): reported once when it is not this process's type.
   void check_remote(const std::string& topic, const std::string& type, const std::string& user_data,
@@ -172,6 +193,17 @@ class DdsTransport : public Transport {
   std::vector<bool> output_mediated_, input_hosted_;
   std::atomic<bool> closing_{false};
   bool closed_ = false;
+  // Deliveries written into modules hosted elsewhere, by module, not yet answered.
+  struct Pending {
+    eprosima::fastrtps::rtps::GUID_t writer;
+    eprosima::fastrtps::rtps::SequenceNumber_t seq;
+    uint64_t ticket = 0;  // 1 for the first delivery into the module, ...
+    WireTime time;
+  };
+  std::mutex acks_mutex_;  // guards sent_ and pending_
+  uint64_t sent_ = 0;
+  std::deque<Pending> pending_;   // in the order written
+  SampleIdentity last_received_;  // the last input sample a hosted module received
   mutable std::mutex mismatch_mutex_;
   std::set<std::string> mismatches_;  // reported lines
 };

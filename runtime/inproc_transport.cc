@@ -22,7 +22,9 @@ class InprocTransport : public Transport {
     sink_ = sink;
     return true;
   }
-  void publish(int out, const Value& v) override { sink_->from_source(out, v); }
+  void publish(int out, const Value& v) override {
+    sink_->from_source(out, v, TransportSink::kAnswersAll);
+  }
   void deliver(int in, const Delivery& d) override { sink_->to_module(in, d); }
 
  private:

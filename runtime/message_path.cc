@@ -56,9 +56,10 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
 
 // A message from `out` for the connections mediated here. One from a module hosted elsewhere
 // is this process's input: traced as a `publish` line here (a hosted one was, in publish_from).
-void Runtime::from_source(OutPort& out, const Value& v) {
+void Runtime::from_source(OutPort& out, const Value& v, uint64_t answered) {
   if (!out.hosted) trace_.publish(now(), out.qualified, v);
-  for (Connection* c : out.connections) enqueue(*c, v);
+  ++arrivals_;
+  for (Connection* c : out.connections) enqueue(*c, v, answered);
 }
 
 void Runtime::to_module(InPort& in, const Delivery& d) {
@@ -92,7 +93,7 @@ void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
   }
 }
 
-void Runtime::enqueue(Connection& c, const Value& v) {
+void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   ++c.stats.arrived;
   c.last_arrival = now();
   if (!c.silence_reported.empty()) c.silence_reported.clear();
@@ -104,7 +105,7 @@ void Runtime::enqueue(Connection& c, const Value& v) {
     drop(c, DropReason::QueueFull);
     return;
   }
-  c.queue.push_back(v);
+  c.queue.push_back({v, answered, arrivals_});
   if (!c.drain_posted) {
     c.drain_posted = true;
     executor_->post(now(), [this, &c] { drain(c); });
@@ -115,7 +116,9 @@ void Runtime::enqueue(Connection& c, const Value& v) {
 void Runtime::drain(Connection& c) {
   c.drain_posted = false;
   if (c.queue.empty()) return;
-  Value msg = std::move(c.queue.front());
+  Value msg = std::move(c.queue.front().value);
+  c.incoming_answered = c.queue.front().answered;
+  c.message = c.queue.front().message;
   c.queue.pop_front();
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
@@ -152,6 +155,7 @@ bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
     return false;
   }
   c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
+  c.answered = std::max(c.answered, c.incoming_answered);  // answered_deliveries.cc
   if (accepted) return true;
   c.consecutive_errors = 0;
   if (reason == drop_reason_name(DropReason::NoValue)) {
@@ -173,6 +177,11 @@ void Runtime::process(Connection& c, const Value& msg) {
   // 2. the constraint, on the container as accept left it; never on events not known yet.
   std::string unknown;
   if (!c.unknown.empty() && !knows_events_of(c, t, &unknown)) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NotSelected, unknown);
+    return;
+  }
+  if (!c.feedback.empty() && !answered_events_of(c, t, &unknown)) {
     c.consecutive_errors = 0;
     drop(c, DropReason::NotSelected, unknown);
     return;
@@ -217,6 +226,7 @@ void Runtime::process(Connection& c, const Value& msg) {
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
   Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
+  if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
   transport_->deliver(c.destination->index, d);
 }
 

@@ -95,6 +95,7 @@ void Runtime::start() {
   transport_->start(options_.interrupt);  // may wait for peers: the run's time starts after
   start_time_ = now();
   if (options_.unknown_until_fed) collect_unknown_events();
+  collect_feedback_events();
   if (options_.report_silent_lapses) watch_lapses(0.1);
   if (environment_) {
     environment_slot_ = std::make_unique<EnvironmentSlot>();

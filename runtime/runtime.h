@@ -161,6 +161,7 @@ class Runtime {
   // shut down: writes `why` as a last log record and closes the trace.
   void abandon_trace(const std::string& why);
 
+  struct RemoteModule;
   struct InPort;
   struct OutPort;
   struct Connection;
@@ -182,7 +183,7 @@ class Runtime {
   bool open_trace(std::string* error);
   bool open_transport(std::string* error);
   // Routes a message published on `out` to each connection from it mediated here.
-  void from_source(OutPort& out, const Value& v);
+  void from_source(OutPort& out, const Value& v, uint64_t answered);
   // Hands a mediated delivery to the hosted module of input `in`.
   void to_module(InPort& in, const Delivery& d);
   void lost(bool input, int index, DropReason reason, uint64_t count, const std::string& detail);
@@ -192,6 +193,12 @@ class Runtime {
   void collect_unknown_events();
   // Removes what is known by now from c.unknown; false (with *why) while something is not.
   bool knows_events_of(Connection& c, double t, std::string* why);
+  // The deliveries-not-yet-answered rule (answered_deliveries.cc): which events each rule reads
+  // from feeds of modules hosted elsewhere; whether all are answered at t (else *why); and the
+  // bookkeeping of a delivery into a module hosted elsewhere.
+  void collect_feedback_events();
+  bool answered_events_of(Connection& c, double t, std::string* why);
+  void delivered_to_remote(RemoteModule& m, double t, uint64_t message);
   // An event entry lapsed in `in`'s container; reports it when its source went silent.
   void lapsed(InPort& in, int event, int owner, double expiry);
   // Looks at every mediated container each `period` s, so that lapses are seen (and reported)
@@ -199,7 +206,7 @@ class Runtime {
   void watch_lapses(double period);
   void report(const std::string& line);
   bool accepted_by_monitor(Connection& c, const Value& msg);
-  void enqueue(Connection& c, const Value& v);
+  void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
   void process(Connection& c, const Value& msg);
   void drop(Connection& c, DropReason reason, std::string_view detail = {});
@@ -235,6 +242,10 @@ class Runtime {
   std::vector<std::unique_ptr<Connection>> connections_;
   std::map<std::string, InPort*, std::less<>> inputs_by_name_;
   std::map<std::string, OutPort*, std::less<>> outputs_by_name_;
+  std::map<std::string, RemoteModule, std::less<>> remote_modules_;  // by name; stable addresses
+  uint64_t arrivals_ = 0;        // messages from sources so far (each from_source call)
+  uint64_t remote_sent_ = 0;     // deliveries into modules hosted elsewhere so far
+  double longest_lifetime_ = 0;  // of app.json's events: how long delivery times matter
   ModuleSet host_, mediate_;
   std::unique_ptr<TransportLink> link_;
   std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor

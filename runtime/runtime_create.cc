@@ -64,7 +64,10 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   if (!rt->options_.limits.interrupt) rt->options_.limits.interrupt = options.interrupt;
   rt->host_ = options.host;
   rt->mediate_ = options.mediate ? *options.mediate : options.host;
-  for (const model::Event& e : app.events) rt->lifetimes_.emplace(e.name, e.lifetime);
+  for (const model::Event& e : app.events) {
+    rt->lifetimes_.emplace(e.name, e.lifetime);
+    if (e.lifetime) rt->longest_lifetime_ = std::max(rt->longest_lifetime_, *e.lifetime);
+  }
   rt->executor_ = make_executor(options);
   rt->executor_->set_interrupt(options.interrupt);
   if (!rt->create_environment(registry, error)) return nullptr;
@@ -144,6 +147,11 @@ bool Runtime::create_module_slot(const model::Module& m, const ModuleFactory& fa
 
 // The ports of module m; `slot` is its instance, null when another process hosts it.
 void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
+  RemoteModule* remote = nullptr;
+  if (!slot) {
+    remote = &remote_modules_[m.name];
+    remote->name = m.name;
+  }
   for (const model::Port& p : m.ports) {
     std::string qualified = m.name + "." + p.name;
     if (p.direction == model::Direction::In) {
@@ -155,6 +163,7 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
       in->slot = slot;
       in->type = p.type;
       in->mediated = mediate_.contains(m.name);
+      in->remote = remote;
       in->stats.port = qualified;
       InPort* raw = in.get();
       in->container.on_expiry(
@@ -168,6 +177,7 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
       out->port = p.name;
       out->type = p.type;
       out->hosted = slot != nullptr;
+      out->remote = remote;
       if (slot) slot->outputs.emplace(p.name, out.get());
       outputs_by_name_.emplace(qualified, out.get());
       out_ports_.push_back(std::move(out));

@@ -61,7 +61,12 @@ class TransportSink {
  public:
   virtual ~TransportSink() = default;
   // A message published on output `out`, for the connections from it mediated here.
-  virtual void from_source(int out, const Value& v) = 0;
+  // `answered`: how many of this process's deliveries into the module of `out` (one hosted
+  // elsewhere) that module had received when it published the message, counted in the order
+  // Transport::deliver was called (docs/design.md#deliveries-not-yet-answered); kAnswersAll
+  // for a module hosted here.
+  static constexpr uint64_t kAnswersAll = UINT64_MAX;
+  virtual void from_source(int out, const Value& v, uint64_t answered) = 0;
   // A message mediated for input `in` of a module hosted here.
   virtual void to_module(int in, const Delivery& d) = 0;
   // `count` messages for a port were lost before the engine saw them (a transport's queue
