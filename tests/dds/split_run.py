@@ -9,11 +9,14 @@ usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
   CASE  a scenario (reachable, tool, human, mixed, perturbed): every seed ends with a clean
         table and 0 conflicts, and M ends cleanly on SIGTERM;
         kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again;
-        kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT.
+        kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT;
+        signals: W and M each ended mid-run by SIGINT, then by SIGTERM: each exits, prints
+        its counters, writes its trace and report and deletes its DDS entities.
   SEEDS how many seeds (1..SEEDS) for a scenario (default 5).
 Every run gets a DDS domain of its own (a lock file under /tmp holds it), and the profile
 keeps DDS traffic on this machine, so parallel ctest runs do not see each other.
 """
+import json
 import os
 import re
 import signal
@@ -44,8 +47,13 @@ class Split:
         self.env = environment(profile)
 
     def start(self, role, extra):
+        """Starts M or W; its trace and report go to self.files(role)."""
+        trace, report = self.files(role)
+        for f in (trace, report):
+            if os.path.exists(f):
+                os.remove(f)
         common = ["--transport", "dds", "--time-scale", SCALE, "--domain", str(self.domain.id),
-                  "--wait-peers", "30"]
+                  "--wait-peers", "30", "--trace", trace, "--report", report]
         if role == "M":
             words = [self.arbc, "run", self.app, "--host", "none", "--mediate", "all",
                      "--duration", "100000s"] + common + extra
@@ -54,6 +62,24 @@ class Split:
                      "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
         return subprocess.Popen(words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 text=True, env=self.env)
+
+    def files(self, role):
+        return os.path.join(self.dir, role + ".trace.jsonl"), os.path.join(self.dir, role + ".html")
+
+    def check_files(self, role, what, interrupted, *outputs):
+        """The trace of `role` is JSON lines and its report was written (as interrupted)."""
+        trace, report = self.files(role)
+        expect(os.path.exists(trace) and os.path.exists(report),
+               f"{what}: {role} wrote no trace or no report", *outputs)
+        lines = open(trace).read().splitlines()
+        expect(len(lines) > 1, f"{what}: {role}'s trace is empty", *outputs)
+        for line in lines:
+            json.loads(line)  # every line is a JSON record (raises on a torn line)
+        html = open(report).read()
+        expect("</html>" in html, f"{what}: {role}'s report is not complete", *outputs)
+        expect(("interrupted" in html) == interrupted,
+               f"{what}: {role}'s report {'does not say' if interrupted else 'says'} it was interrupted",
+               *outputs)
 
 
 def finish(proc, name, timeout):
@@ -99,6 +125,8 @@ def scenario(split, name, seeds):
         check_w(rc, out, what)
         check_m_stopped(mrc, mout, what)
         expect(not re.search(r"connection \S+ quarantined:", mout), f"{what}: M quarantined a connection", mout)
+        split.check_files("W", what, False, out)
+        split.check_files("M", what, True, mout)
         print(f"ok {what}: {out.splitlines()[0] if out else ''}")
 
 
@@ -115,6 +143,8 @@ def kill_m(split):
     mrc, mout = stop(m2, "M (restarted)")
     check_w(rc, out, "kill-m")
     check_m_stopped(mrc, mout, "kill-m")
+    expect("conflicts: 0" in out, "kill-m: conflicts after the restart", out)
+    split.check_files("M", "kill-m (restarted M)", True, mout)
     print("ok kill-m: W survived M's SIGKILL; the restarted M finished the run\n" + out + mout)
 
 
@@ -131,7 +161,30 @@ def kill_w(split):
     check_m_stopped(mrc, mout, "kill-w", "SIGINT")
     expect(" lapsed at " in mout and "nothing from" in mout, "kill-w: M reported no lapse", mout)
     expect("has no publisher any more" in mout, "kill-w: M did not notice W's topics go", mout)
+    split.check_files("M", "kill-w", True, mout)
     print("ok kill-w: M kept running and reported the lapsed events\n" + mout)
+
+
+def signals(split):
+    """Each process ends cleanly on each signal: W by SIGINT and M by SIGTERM, then the reverse."""
+    for wsig, msig in ((signal.SIGINT, signal.SIGTERM), (signal.SIGTERM, signal.SIGINT)):
+        what = f"W {wsig.name}, M {msig.name}"
+        m = split.start("M", [])
+        w = split.start("W", ["--scenario", "mixed", "--seed", "1"])
+        time.sleep(2.0)  # mid-run
+        expect(w.poll() is None, f"{what}: W ended early", w.communicate()[0])
+        wrc, wout = stop(w, "W", wsig)
+        expect(wrc in (0, 1), f"{what}: W exited {wrc}", wout)
+        expect(f"interrupted ({wsig.name})" in wout and "stopped: interrupted" in wout,
+               f"{what}: W did not say it was interrupted", wout)
+        expect("conflicts: 0" in wout, f"{what}: W counted conflicts", wout)
+        expect("dds: domain" in wout and "input (mediated elsewhere)" in wout,
+               f"{what}: W printed no counters or transport summary", wout)
+        split.check_files("W", what, True, wout)
+        mrc, mout = stop(m, "M", msig)
+        check_m_stopped(mrc, mout, what, msig.name)
+        split.check_files("M", what, True, mout)
+        print(f"ok {what}: both ended cleanly")
 
 
 def main():
@@ -145,6 +198,8 @@ def main():
         kill_m(split)
     elif case == "kill-w":
         kill_w(split)
+    elif case == "signals":
+        signals(split)
     else:
         scenario(split, case, seeds)
 
