@@ -110,7 +110,8 @@ def case_unit_test_of_one_rule(arbc, tmp):
                           "let obj = max_by(objects, o => o.dist);\n    accept obj.dist <= HAND")
     code, out, err = run(arbc, "test", broken, "--filter", "take picks*")
     expect(code == 1, f"exit {code}", out, err)
-    expect("but take dropped (rejected) at 0.1s" in out, "unit test did not see the drop", out, err)
+    expect("but nothing reached PickAndPlace.cmd at 0.1s" in out and
+           "0.1s  drop take (rejected)" in out, "unit test did not see the drop", out, err)
 
 
 def write_lines(path, lines):
@@ -158,8 +159,19 @@ def case_inputs_bad_line_is_bad_input(arbc, tmp):
 
 
 def case_trace_replay_and_diff(arbc, tmp):
-    first = os.path.join(tmp, "first.jsonl")
-    code, out, err = run(arbc, "run", SPEC, "--stub", "--duration", "3s", "--trace", first)
+    # An object out of reach, idle arm and rake, a search, a face, a search within the hold.
+    inputs, first = os.path.join(tmp, "inputs.jsonl"), os.path.join(tmp, "first.jsonl")
+    lines = [{"t": 0, "port": "ObjectDetector.objects",
+              "value": [{"pos": [0.9, 0, 0], "dist": 0.9}]}]
+    for t in (0, 0.4, 0.8):
+        lines += [{"t": t, "port": "PickAndPlace.status", "value": ["e_arm_idle"]},
+                  {"t": t, "port": "PullObject.status", "value": ["e_pull_idle"]}]
+    lines += [{"t": 0.1, "port": "LookAround.gaze", "value": [1, 0, 0]},
+              {"t": 0.2, "port": "FaceDetector.face", "value": {"pos": [0, 0, 1], "certainty": 0.9}},
+              {"t": 0.7, "port": "LookAround.gaze", "value": [-1, 0, 0]}]
+    write_lines(inputs, sorted(lines, key=lambda l: l["t"]))
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--duration", "3s",
+                         "--trace", first)
     expect(code == 0, f"exit {code}", out, err)
     # Replaying the trace on the same spec decides the same.
     code, out, err = run(arbc, "run", SPEC, "--inputs", first, "--duration", "3s",
