@@ -40,7 +40,7 @@ class StandIn : public Module {
       auto rate = log_->stub.period_of_port.find(qualified);
       double period =
           rate == log_->stub.period_of_port.end() ? log_->stub.default_period : rate->second;
-      if (period > 0) sample(o, period);
+      if (period > 0) sample(o, now(), period, 0);
     }
   }
 
@@ -69,10 +69,11 @@ class StandIn : public Module {
     publish(qualified.substr(name_.size() + 1), v);
   }
 
-  // Publishes a sample on `o` now and every `period` seconds after.
-  void sample(const OutPort& o, double period) {
+  // Publishes sample k on `o` now, at origin + k * period, and schedules the next (no drift).
+  void sample(const OutPort& o, double origin, double period, uint64_t k) {
     send(name_ + "." + o.name, sample_value(*o.type, rng(), o.flags));
-    schedule(period, [this, &o, period] { sample(o, period); });
+    double next = origin + static_cast<double>(k + 1) * period;
+    schedule(next - now(), [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
   }
 
   std::string name_;
