@@ -194,7 +194,8 @@ int run_command(std::span<char*> args) {
   if (!report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
-  std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error, stand_ins.registry());
+  std::unique_ptr<Runtime> runtime =
+      Runtime::create(load.app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;

@@ -50,9 +50,10 @@ bool read_line(const Json& j, const LineRef& at, const model::App& app,
   if (!j.contains("value")) return *err = at("field 'value': missing"), false;
   std::string why;
   std::optional<Value> v = value_from_json(j["value"], *p->type, &why);
-  if (!v) return *err = at("field 'value': " + why + " (port " + port + " is " +
-                           p->type->to_string() + ")"),
-              false;
+  if (!v)
+    return *err =
+               at("field 'value': " + why + " (port " + port + " is " + p->type->to_string() + ")"),
+           false;
   log->inputs[module].push_back({j["t"].get<double>(), port, std::move(*v)});
   ++read->messages;
   return true;

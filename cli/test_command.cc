@@ -92,7 +92,8 @@ std::vector<TestOutcome> run_all(const model::App& app, const std::string& dir,
   std::vector<TestOutcome> out(tests.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
-    for (size_t i = next++; i < tests.size(); i = next++) out[i] = run_test_case(app, dir, *tests[i]);
+    for (size_t i = next++; i < tests.size(); i = next++)
+      out[i] = run_test_case(app, dir, *tests[i]);
   };
   std::vector<std::thread> threads;
   for (unsigned k = 1; k < jobs; ++k) threads.emplace_back(work);
@@ -115,7 +116,8 @@ std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
       ->type_name("GLOB");
   cli.add_option("--junit", a.junit, "write JUnit XML of the results to FILE");
   cli.add_flag("--no-verify", a.no_verify, "run the tests without proving the spec first");
-  cli.add_option("--jobs", a.jobs, "threads (default: one per core when there are 32 tests or more)");
+  cli.add_option("--jobs", a.jobs,
+                 "threads (default: one per core when there are 32 tests or more)");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {

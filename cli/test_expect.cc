@@ -53,7 +53,8 @@ std::string check_drops(const model::Expectation& e, const TestRun& run) {
     if (r.connection != e.connection || !in_window(r.t, e)) continue;
     if (r.kind == TraceKind::Drop) {
       if (e.reason.empty() || e.reason == drop_reason_name(r.reason)) return "";
-      if (count++ < 5) seen += ", dropped (" + std::string(drop_reason_name(r.reason)) + ") at " + seconds(r.t);
+      if (count++ < 5)
+        seen += ", dropped (" + std::string(drop_reason_name(r.reason)) + ") at " + seconds(r.t);
     } else if (r.kind == TraceKind::Deliver && count++ < 5) {
       seen += ", delivered at " + seconds(r.t);
     }
@@ -64,8 +65,8 @@ std::string check_drops(const model::Expectation& e, const TestRun& run) {
 
 // The events present at t in any container (after the messages of that instant).
 std::set<std::string> present_at(const TestRun& run, double t) {
-  report::RunTimeline timeline = report::build_run_timeline(
-      {}, run.records, std::numeric_limits<double>::infinity());
+  report::RunTimeline timeline =
+      report::build_run_timeline({}, run.records, std::numeric_limits<double>::infinity());
   std::set<std::string> out;
   for (const report::EventLane& lane : timeline.events) {
     for (const report::Interval& i : lane.present) {

@@ -12,9 +12,9 @@
 namespace arbc::cli {
 
 struct TestRun {
-  const std::vector<Received>& received;     // what reached the stand-ins' in-ports
-  const std::vector<TraceRecord>& records;   // the trace
-  double end = 0;                            // the last instant the run reached
+  const std::vector<Received>& received;    // what reached the stand-ins' in-ports
+  const std::vector<TraceRecord>& records;  // the trace
+  double end = 0;                           // the last instant the run reached
 };
 
 // "" when `e` holds in `run`; else what happened instead, in a line or a few.

@@ -1,7 +1,7 @@
 #include "cli/test_runner.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>

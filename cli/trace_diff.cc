@@ -31,12 +31,16 @@ bool reason_of(const std::string& name, DropReason* r) {
 
 // The trace line `j` as a record; false when it is not one.
 bool to_record(const Json& j, TraceRecord* r) {
-  static const std::map<std::string, TraceKind> kinds = {
-      {"deliver", TraceKind::Deliver},       {"drop", TraceKind::Drop},
-      {"event", TraceKind::Event},           {"error", TraceKind::Error},
-      {"quarantine", TraceKind::Quarantine}, {"log", TraceKind::Log},
-      {"publish-error", TraceKind::PublishError}, {"plugin-error", TraceKind::PluginError},
-      {"pending", TraceKind::Pending},       {"publish", TraceKind::Publish}};
+  static const std::map<std::string, TraceKind> kinds = {{"deliver", TraceKind::Deliver},
+                                                         {"drop", TraceKind::Drop},
+                                                         {"event", TraceKind::Event},
+                                                         {"error", TraceKind::Error},
+                                                         {"quarantine", TraceKind::Quarantine},
+                                                         {"log", TraceKind::Log},
+                                                         {"publish-error", TraceKind::PublishError},
+                                                         {"plugin-error", TraceKind::PluginError},
+                                                         {"pending", TraceKind::Pending},
+                                                         {"publish", TraceKind::Publish}};
   if (!j.is_object() || !j.contains("t") || !j["t"].is_number()) return false;
   auto kind = kinds.find(text_of(j, "type"));
   if (kind == kinds.end()) return false;
@@ -81,7 +85,8 @@ std::string describe(const TraceRecord* r) {
 
 bool same(const TraceRecord* a, const TraceRecord* b) {
   if (!a || !b) return a == b;
-  return a->kind == b->kind && a->t == b->t && (a->kind == TraceKind::Deliver || a->reason == b->reason);
+  return a->kind == b->kind && a->t == b->t &&
+         (a->kind == TraceKind::Deliver || a->reason == b->reason);
 }
 
 // The events present in `port`'s container just before records[index] (at time t).

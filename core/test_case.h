@@ -18,8 +18,8 @@ struct TestStep {
   enum class Kind { Input, Set, Unset };
   Kind kind = Kind::Input;
   double t = 0;
-  std::string port;  // Input: "Module.port", an out-port
-  Value value;       // Input
+  std::string port;   // Input: "Module.port", an out-port
+  Value value;        // Input
   std::string event;  // Set, Unset
   SourceLocation loc;
 };
@@ -40,7 +40,7 @@ struct Expectation {
 
 struct TestCase {
   std::string name;
-  std::string rule;  // `on RULE`: the rule tested alone; empty: the whole app
+  std::string rule;             // `on RULE`: the rule tested alone; empty: the whole app
   std::vector<TestStep> steps;  // in the order written (same-instant steps keep it)
   std::vector<Expectation> expectations;
   SourceLocation loc;

@@ -54,8 +54,8 @@ std::optional<Value> convert_vec3(const nlohmann::json& j, const std::string& pa
   return Value::vec3(xyz[0], xyz[1], xyz[2]);
 }
 
-std::optional<Value> convert_record(const nlohmann::json& j, const Type& t,
-                                    const std::string& path, std::string* err) {
+std::optional<Value> convert_record(const nlohmann::json& j, const Type& t, const std::string& path,
+                                    std::string* err) {
   if (!j.is_object()) {
     fail(path, t.to_string(), j, err);
     return std::nullopt;

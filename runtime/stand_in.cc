@@ -128,9 +128,8 @@ Registry registry_with_stand_ins(const model::App& app, const Registry& base,
   for (const model::Module& m : app.modules) {
     if (base.find_module(m.name)) continue;
     stand_ins->push_back(m.name);
-    out.add_module(m.name, [m, shared_app, log] {
-      return std::make_unique<StandIn>(m, *shared_app, log);
-    });
+    out.add_module(m.name,
+                   [m, shared_app, log] { return std::make_unique<StandIn>(m, *shared_app, log); });
   }
   return out;
 }

@@ -35,7 +35,7 @@ struct Received {
 // `period` seconds on each out-port that has no scripted value.
 struct StubPlan {
   bool enabled = false;
-  double default_period = 0.1;                    // 10 Hz
+  double default_period = 0.1;                   // 10 Hz
   std::map<std::string, double> period_of_port;  // "Module.port" -> seconds; 0: silent
 };
 
@@ -44,7 +44,7 @@ struct StubPlan {
 struct StandInLog {
   std::map<std::string, std::vector<TimedValue>> inputs;  // by module name, in time order
   StubPlan stub;
-  std::vector<Received> received;  // in delivery order
+  std::vector<Received> received;             // in delivery order
   std::map<std::string, uint64_t> published;  // "Module.port" -> messages published
 };
 

@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/value.h"
 #include "runtime/drop_reason.h"
 #include "runtime/trace_record.h"
-#include "core/value.h"
 
 namespace arbc {
 

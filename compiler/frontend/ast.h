@@ -313,8 +313,8 @@ struct TestStep {
   enum class Kind { Input, Set, Unset };
   Kind kind = Kind::Input;
   Duration at;
-  PortRef port;  // Input
-  ExprPtr value;  // Input
+  PortRef port;       // Input
+  ExprPtr value;      // Input
   std::string event;  // Set, Unset
   Loc event_loc;
   Loc loc;
@@ -328,8 +328,8 @@ struct TestExpect {
     State,     // `expect CONSTRAINT at D;`
   };
   Kind kind = Kind::Receives;
-  PortRef port;  // Receives, Nothing
-  ExprPtr value;  // Receives: null means any value; State: the constraint
+  PortRef port;      // Receives, Nothing
+  ExprPtr value;     // Receives: null means any value; State: the constraint
   std::string rule;  // Drops
   Loc rule_loc;
   std::string reason;  // Drops: empty means any reason
@@ -349,7 +349,7 @@ struct TestDecl {
   Loc on_loc;
   std::vector<TestStep> steps;  // in the order written
   std::vector<TestExpect> expects;
-  Loc loc;  // the name
+  Loc loc;                        // the name
   const Rule* on_rule = nullptr;  // sema
 };
 

@@ -3,8 +3,8 @@
 #include <ArbcParser.h>
 #include <antlr4-runtime.h>
 
-#include <cstdlib>
 #include <cctype>
+#include <cstdlib>
 #include <typeinfo>
 
 #include "compiler/frontend/token_checks.h"
@@ -694,8 +694,9 @@ class Builder {
       std::string text = tx(tokens[i]);
       bool glue = previous == "." || previous == "(" || previous == "[" || previous == ".." ||
                   text == "." || text == "," || text == ")" || text == "]" || text == ".." ||
-                  text == ":" || (text == "(" && !previous.empty() && std::isalnum(
-                      static_cast<unsigned char>(previous.back())));
+                  text == ":" ||
+                  (text == "(" && !previous.empty() &&
+                   std::isalnum(static_cast<unsigned char>(previous.back())));
       if (!out.empty() && !glue) out += ' ';
       out += text;
       previous = text;

@@ -77,8 +77,8 @@ std::optional<Value> record(const Expr& e, const Type& want, std::string* err) {
 std::optional<Value> list(const Expr& e, const Type& want, std::string* err) {
   Value out = Value::list();
   for (const ast::ExprPtr& item : e.args) {
-    const Type* element = want.kind == Type::Kind::List && want.element ? want.element.get()
-                                                                        : item->type.get();
+    const Type* element =
+        want.kind == Type::Kind::List && want.element ? want.element.get() : item->type.get();
     std::optional<Value> v = literal_value(*item, *element, err);
     if (!v) return std::nullopt;
     out.push_back(std::move(*v));

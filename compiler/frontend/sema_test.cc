@@ -16,9 +16,9 @@ using namespace ast;
 namespace {
 
 // The drop reasons of docs/runtime.md#drop-reasons, as `expect RULE drops "reason"` names them.
-const std::vector<std::string> kDropReasons = {
-    "rejected",      "no-value",    "not-selected", "throttled", "feed",
-    "monitor-error", "quarantined", "queue-full",   "bad-type"};
+const std::vector<std::string> kDropReasons = {"rejected",    "no-value",   "not-selected",
+                                               "throttled",   "feed",       "monitor-error",
+                                               "quarantined", "queue-full", "bad-type"};
 
 }  // namespace
 
@@ -124,8 +124,7 @@ void Sema::check_test_window(TestWindow& w, bool instant_only) {
   }
   check_test_time(w.to, "the end of a window");
   if (w.to.seconds < w.from.seconds) {
-    error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`",
-          "test-window");
+    error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`", "test-window");
   }
 }
 

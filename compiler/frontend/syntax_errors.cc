@@ -78,7 +78,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
                                              "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert", "test"};
+                                             "arbitrate", "connect", "assert",    "test"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
