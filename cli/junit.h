@@ -1,4 +1,4 @@
-// JUnit XML of an `arbc test` run, for CI (docs/testing.md#in-ci): one <testsuite> per spec,
+// JUnit XML of an `arbc test` run, for CI (docs/testing.md#in-ci-and-pre-commit): one <testsuite> per spec,
 // one <testcase> per test, a <failure> with the expectation and what happened.
 #pragma once
 

@@ -1,5 +1,5 @@
 // `arbc run --inputs FILE`: timed messages for the out-ports of the modules no plugin provides
-// (docs/testing.md#inputs-files). FILE is JSON Lines: input lines
+// (docs/testing.md#scripted-inputs---inputs). FILE is JSON Lines: input lines
 //   {"t": 1.25, "port": "FaceDetector.face", "value": {...}}
 // or a trace written by `arbc run --trace`, whose `publish` lines are replayed (its other lines
 // are what that run did, not inputs). Every line is checked against the app before the run.

@@ -1,4 +1,4 @@
-// The expectations of `arbc test` (docs/testing.md#expectations), checked against one run:
+// The expectations of `arbc test` (docs/testing.md#tests-in-the-spec), checked against one run:
 // what the stand-ins received and the trace records.
 #pragma once
 

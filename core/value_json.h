@@ -1,5 +1,5 @@
 // Values read back from JSON, typed by a port's type: the inverse of Value::to_json (the
-// `value` of a trace line, an `arbc run --inputs` line; docs/testing.md#inputs-files).
+// `value` of a trace line, an `arbc run --inputs` line; docs/testing.md#scripted-inputs---inputs).
 #pragma once
 
 #include <nlohmann/json.hpp>
