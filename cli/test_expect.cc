@@ -6,17 +6,13 @@
 #include <set>
 
 #include "cli/report/run_timeline.h"
-#include "core/json_text.h"
+#include "core/time_text.h"
 
 namespace arbc::cli {
 
 namespace {
 
-std::string seconds(double t) {
-  std::string s;
-  append_json_double(s, t);
-  return s + "s";
-}
+std::string seconds(double t) { return time_text(t) + "s"; }
 
 bool in_window(double t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
 
@@ -148,10 +144,18 @@ std::string check_expectation(const model::Expectation& e, const TestRun& run) {
 
 std::string trace_around(const TestRun& run, double from, double to) {
   double lo = from - 0.5, hi = (std::isinf(to) ? run.end : to) + 0.5;
+  // The runtime notices an expiry when it next looks at the container, so the trace records
+  // it late, stamped with the time it happened: in time order the excerpt reads as it ran.
+  std::vector<const TraceRecord*> window;
+  for (const TraceRecord& r : run.records) {
+    if (r.t >= lo && r.t <= hi) window.push_back(&r);
+  }
+  std::stable_sort(window.begin(), window.end(),
+                   [](const TraceRecord* a, const TraceRecord* b) { return a->t < b->t; });
   std::string out;
   size_t shown = 0, more = 0;
-  for (const TraceRecord& r : run.records) {
-    if (r.t < lo || r.t > hi) continue;
+  for (const TraceRecord* rp : window) {
+    const TraceRecord& r = *rp;
     if (shown == 20) {
       ++more;
       continue;

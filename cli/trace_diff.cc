@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/report/run_timeline.h"
-#include "core/json_text.h"
+#include "core/time_text.h"
 
 namespace arbc::cli {
 
@@ -105,11 +105,7 @@ std::string events_before(const std::vector<TraceRecord>& records, size_t index,
   return out.empty() ? "(none)" : out;
 }
 
-std::string seconds(double t) {
-  std::string s;
-  append_json_double(s, t);
-  return s + " s";
-}
+std::string seconds(double t) { return time_text(t) + " s"; }
 
 }  // namespace
 

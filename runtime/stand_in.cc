@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "core/json_text.h"
+#include "core/time_text.h"
 
 namespace arbc {
 
@@ -153,10 +153,8 @@ std::string stand_in_summary(const model::App& app, const std::vector<std::strin
       const std::vector<const Received*>& got = by_port[q];
       out += "  " + q + " (stand-in sink): received " + std::to_string(got.size());
       if (!got.empty()) {
-        std::string first, last;
-        append_json_double(first, got.front()->t);
-        append_json_double(last, got.back()->t);
-        out += ", first at " + first + " s, last at " + last + " s (" + got.back()->connection +
+        out += ", first at " + time_text(got.front()->t) + " s, last at " +
+               time_text(got.back()->t) + " s (" + got.back()->connection +
                "): " + got.back()->value.to_json();
       }
       out += "\n";

@@ -12,7 +12,6 @@
 namespace arbc {
 
 enum class TraceKind {
-  Publish,
   Deliver,
   Drop,
   Event,
