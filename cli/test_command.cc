@@ -171,7 +171,8 @@ int test_command(std::span<char*> args) {
       return kExitBadInput;
     }
   }
-  std::printf("%zu tests, %zu passed, %zu failed\n", total, total - failed, failed);
+  std::printf("%zu test%s, %zu passed, %zu failed\n", total, total == 1 ? "" : "s", total - failed,
+              failed);
   if (total == 0) std::printf("no test matched (the specs declare `test \"name\" { ... }`)\n");
   return failed ? kExitRefuted : kExitOk;
 }

@@ -62,6 +62,8 @@ constexpr CheckId kIds[] = {
     {"test-value", kCheck, "a test's message literal is not a constant value of its port's type"},
     {"test-window", kCheck,
      "a test window that ends before it starts, or an event state without `at`"},
+    {"tests-file", kCheck,
+     "a tests file (`tests for`) that declares more than tests, or whose app cannot be read"},
     {"type-cycle", kCheck, "a named type defined in terms of itself"},
     {"type-mismatch", kCheck, "an operand, condition or value of the wrong type"},
     {"unfed", kVerify, "a constraint or assert reads an event nothing sets into the port"},

@@ -29,6 +29,7 @@ decl
   | connectDecl
   | assertDecl
   | testDecl
+  | testsForDecl
   ;
 
 appDecl          : 'app' ID STRING? ';' ;
@@ -51,6 +52,8 @@ assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
 // `arbc test` (docs/testing.md): timed inputs and expectations, checked by the front end and
 // run on the embedded runtime in simulated time. Not part of the app: lowering ignores them.
 testDecl : 'test' STRING ('on' ID)? '{' testStep* '}' ;
+// A tests file: `tests for "app.spec";` then only `test` declarations, checked against that app.
+testsForDecl : 'tests' 'for' STRING ';' ;
 testStep
   : 'at' duration portRef '<-' expr ';'                                  # testInput
   | 'at' duration op=('set' | 'unset') ID ';'                            # testEvent

@@ -353,6 +353,12 @@ struct TestDecl {
   const Rule* on_rule = nullptr;  // sema
 };
 
+// `tests for "app.spec";`: this file holds tests of the app in that spec (docs/testing.md).
+struct TestsFor {
+  std::string path;  // as written: relative to the tests file's folder
+  Loc loc;           // the string
+};
+
 // One spec file.
 struct Spec {
   std::string file;
@@ -369,6 +375,7 @@ struct Spec {
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
   std::vector<TestDecl> tests;
+  std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)
 
   // sema: every event by name, in declaration order.
   std::vector<EventSymbol> event_symbols;

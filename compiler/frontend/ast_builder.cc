@@ -470,6 +470,8 @@ class Builder {
       spec.asserts.push_back(assert_decl(c));
     } else if (auto* c = ctx->testDecl()) {
       spec.tests.push_back(test_decl(c));
+    } else if (auto* c = ctx->testsForDecl()) {
+      add_tests_for(spec, c);
     }
   }
 
@@ -610,6 +612,20 @@ class Builder {
     a.rule_loc = loc(c->ID());
     a.property = expr(c->expr(), 0);
     return a;
+  }
+
+  // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file
+  void add_tests_for(Spec& spec, ArbcParser::TestsForDeclContext* c) {
+    TestsFor f{decode_string(c->STRING()), loc(c->STRING())};
+    if (spec.tests_for) {
+      error(f.loc,
+            "this file already names the app it tests (\"" + spec.tests_for->path + "\" at line " +
+                std::to_string(spec.tests_for->loc.line) +
+                "); a tests file tests one app: keep one `tests for`",
+            "duplicate");
+      return;
+    }
+    spec.tests_for = std::move(f);
   }
 
   // testDecl : 'test' STRING ('on' ID)? '{' testStep* '}' ;

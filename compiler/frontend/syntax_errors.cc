@@ -52,6 +52,8 @@ const char* describe_rule(size_t rule) {
       return "the statement";
     case ArbcParser::RuleTestDecl:
       return "the test";
+    case ArbcParser::RuleTestsForDecl:
+      return "the `tests for` declaration";
     case ArbcParser::RuleTestStep:
       return "the test step";
     case ArbcParser::RuleFieldType:
@@ -78,7 +80,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
                                              "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert",    "test"};
+                                             "arbitrate", "connect", "assert",    "test",   "tests"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
