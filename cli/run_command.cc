@@ -1,7 +1,8 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
 //                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
 //                    [--transport inproc|dds] [--host ..] [--mediate ..] [--deploy FILE]
-//                    [--domain N] [--time-scale K]`  (the last six: cli/run_transport.h)
+//                    [--domain N] [--time-scale K]  (these six: cli/run_transport.h)
+//                    [--inputs FILE] [--stub] [--stub-rate PORT=HZ]... [--diff TRACE]`
 // Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
@@ -27,6 +28,7 @@
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
 #include "cli/run_transport.h"
+#include "cli/run_stand_ins.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -131,6 +133,7 @@ struct RunArgs {
   RunOptions options;
   std::string report_path;
   TransportFlags transport;  // --transport, --host, --mediate, ... (cli/run_transport.h)
+  RunStandIns stand_ins;  // --inputs, --stub, --stub-rate, --diff
 };
 
 // Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -155,6 +158,7 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
   add_transport_options(cli, &a.transport);
+  a.stand_ins.add_options(cli);  // --inputs, --stub, --stub-rate, --diff
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -189,6 +193,7 @@ int run_command(std::span<char*> args) {
   RunArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
   RunOptions& options = a.options;
+  RunStandIns& stand_ins = a.stand_ins;
   if (!load_plugins(a.plugins)) return kExitBadInput;
 
   std::string dir, error;
@@ -202,8 +207,13 @@ int run_command(std::span<char*> args) {
   }
   int placed = apply_transport(a.transport, load.app, &options);
   if (placed != kExitOk) return placed;
-  std::vector<std::string> mismatches = check_modules(
-      load.app, (fs::path(dir) / "app.json").string(), Registry::global(), options.host);
+  if (!stand_ins.prepare(load.app, &error)) {
+    print_errors({error});
+    return kExitBadInput;
+  }
+  std::vector<std::string> mismatches =
+      check_modules(load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry(),
+                    options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
@@ -213,10 +223,11 @@ int run_command(std::span<char*> args) {
       prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
-  if (!a.report_path.empty()) options.trace_records = &records;
+  if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
-  std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
+  std::unique_ptr<Runtime> runtime =
+      Runtime::create(load.app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;
@@ -232,6 +243,7 @@ int run_command(std::span<char*> args) {
 
   RunEnd end{load.app,      *runtime,    options, records,
              a.report_path, report_file, proof,   describe_transport(a.transport, options)};
+  if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(load.app); };
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;
@@ -241,7 +253,7 @@ int run_command(std::span<char*> args) {
   if (!interrupt.run_returned()) {
     for (;;) pause();  // the watchdog is ending the process
   }
-  return finish_run(end, interrupt.signal_name());
+  return stand_ins.diff(load.app, records, finish_run(end, interrupt.signal_name()));
 }
 
 }  // namespace arbc::cli

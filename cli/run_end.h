@@ -3,6 +3,7 @@
 // for one whose executor thread is stuck after an interrupt (cli/run_interrupt.h).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct RunEnd {
   report::ReportFile& report_file;
   const std::string& proof;  // "verified: ..." or "not verified (--no-verify)", for the report
   std::string placement;     // "dds (domain 7, ...)" (cli/run_transport.h); "" in-process
+  // Not empty: what the stand-ins received (cli/run_stand_ins.h), printed after the
+  // environment's summary and shown with it in the report.
+  std::function<std::string()> stand_ins = {};
 };
 
 // After runtime.run() returned: prints everything and writes the report. `signal` names the

@@ -50,14 +50,14 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     }
     return;
   }
-  trace_.publish(now(), out.qualified, v);
+  if (trace_.enabled()) trace_.publish(now(), out.qualified, v);
   transport_->publish(out.index, v);
 }
 
 // A message from `out` for the connections mediated here. One from a module hosted elsewhere
 // is this process's input: traced as a `publish` line here (a hosted one was, in publish_from).
 void Runtime::from_source(OutPort& out, const Value& v, uint64_t answered) {
-  if (!out.hosted) trace_.publish(now(), out.qualified, v);
+  if (!out.hosted && trace_.enabled()) trace_.publish(now(), out.qualified, v);
   ++arrivals_;
   for (Connection* c : out.connections) enqueue(*c, v, answered);
 }
