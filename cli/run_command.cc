@@ -27,8 +27,8 @@
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
-#include "cli/run_transport.h"
 #include "cli/run_stand_ins.h"
+#include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -133,7 +133,7 @@ struct RunArgs {
   RunOptions options;
   std::string report_path;
   TransportFlags transport;  // --transport, --host, --mediate, ... (cli/run_transport.h)
-  RunStandIns stand_ins;  // --inputs, --stub, --stub-rate, --diff
+  RunStandIns stand_ins;     // --inputs, --stub, --stub-rate, --diff
 };
 
 // Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -211,9 +211,8 @@ int run_command(std::span<char*> args) {
     print_errors({error});
     return kExitBadInput;
   }
-  std::vector<std::string> mismatches =
-      check_modules(load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry(),
-                    options.host);
+  std::vector<std::string> mismatches = check_modules(
+      load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;

@@ -91,7 +91,8 @@ struct Peer {
 };
 
 // Waits (at most 30 s) until w has a reader and r a writer, then lets discovery settle.
-void await_peers(const std::vector<fdds::DataWriter*>& ws, const std::vector<fdds::DataReader*>& rs) {
+void await_peers(const std::vector<fdds::DataWriter*>& ws,
+                 const std::vector<fdds::DataReader*>& rs) {
   for (auto deadline = Clock::now() + 30s;; std::this_thread::sleep_for(20ms)) {
     bool all = true;
     for (auto* w : ws) {
