@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The DDS figures (issue 15; docs/benchmarks.md#distributed-runs-over-dds), one JSON line each.
+"""The DDS figures (issue 15; docs/benchmarks.md#distributed-runs-over-dds-issue-15), one JSON line each.
 
   dds_direct_latency_us        dds_peer ping -> dds_peer echo -> dds_peer ping: two plain
                                Fast-DDS processes, round trip halved (median of COUNT round
