@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <ostream>
+
+#include "compiler/docs/decision_table.h"
 #include "core/app_model.h"
 
 namespace arbc::docs {
@@ -19,6 +22,11 @@ struct DocsInput {
 };
 
 std::string render_index_markdown(const DocsInput& input);
+
+// One port's decision table as Markdown: each rule's effective guard, then a row per event
+// state (or the guards in DNF when the port has more than kMaxTableEvents events). Shared by
+// index.md and the language server's hover.
+void decision_table_markdown(const DecisionTable& t, std::ostream& out);
 
 // A Markdown table cell: pipes escaped, newlines folded, so every row keeps its column count.
 std::string cell(std::string_view text);

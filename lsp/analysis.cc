@@ -1,0 +1,45 @@
+#include "lsp/analysis.h"
+
+#include <chrono>
+
+#include "compiler/frontend/frontend.h"
+#include "compiler/lower/lower.h"
+
+namespace arbc::lsp {
+
+std::shared_ptr<const Analysis> analyze(const std::string& text, int version,
+                                        const std::string& file, const std::string& script_dir,
+                                        const Analysis* previous) {
+  auto start = std::chrono::steady_clock::now();
+  auto a = std::make_shared<Analysis>();
+  a->version = version;
+  a->text = text;
+  frontend::CheckResult check = frontend::check_text(text, file, script_dir);
+  a->diagnostics = std::move(check.diagnostics);
+  bool ok = check.ok();
+  if (check.spec) {
+    std::shared_ptr<const ast::Spec> spec = std::move(check.spec);
+    a->spec = spec;
+    a->index = build_index(*spec);
+    a->index_text = text;
+    a->current = true;
+    if (ok) {
+      lower::LowerOptions options;
+      if (!script_dir.empty()) options.script_dir = script_dir;
+      lower::LowerResult lowered = lower::lower_spec(spec, options);
+      if (lowered.ok) {
+        a->lowered = std::move(lowered.lowered);
+        a->lowered_current = true;
+      }
+    }
+  } else if (previous) {
+    a->spec = previous->spec;
+    a->index = previous->index;
+    a->index_text = previous->index_text;
+  }
+  if (!a->lowered && previous) a->lowered = previous->lowered;
+  a->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return a;
+}
+
+}  // namespace arbc::lsp

@@ -1,0 +1,389 @@
+#!/usr/bin/env python3
+"""Protocol-level tests of `arbc lsp`: a real server process driven over stdio.
+
+usage: test_protocol.py ARBC [unittest args]   (run from the repository root)
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lsp_client import LspClient, apply_edits, file_uri, position_of  # noqa: E402
+
+ARBC = None
+ROOT = os.getcwd()
+SPEC = os.path.join(ROOT, "specs", "table_clean.spec")
+
+
+def read(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def check_json(text):
+    """`arbc check --format json` of text saved as a file next to the spec (same script dir)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(SPEC),
+                                     delete=False) as f:
+        f.write(text)
+    try:
+        proc = subprocess.run([ARBC, "check", "--format", "json", f.name], capture_output=True,
+                              text=True, timeout=60)
+        return json.loads(proc.stdout)["diagnostics"]
+    finally:
+        os.unlink(f.name)
+
+
+class Session(unittest.TestCase):
+    verify = False
+
+    def setUp(self):
+        command = [ARBC, "lsp"] + ([] if self.verify else ["--no-verify"])
+        self.c = LspClient(command)
+        self.init = self.c.initialize(ROOT)
+        self.text = read(SPEC)
+        self.uri = file_uri(SPEC)
+
+    def tearDown(self):
+        self.c.close()
+
+    def open_spec(self, text=None, uri=None):
+        uri = uri or self.uri
+        self.c.open(uri, text if text is not None else self.text)
+        return self.c.wait_diagnostics(uri, version=1)
+
+    def at(self, needle, occurrence=0, offset=0, text=None):
+        return {"textDocument": {"uri": self.uri},
+                "position": position_of(text or self.text, needle, occurrence, offset)}
+
+
+class Lifecycle(Session):
+    def test_capabilities_name_every_feature(self):
+        caps = self.init["capabilities"]
+        self.assertEqual(caps["textDocumentSync"]["change"], 2)  # incremental
+        for feature in ("hoverProvider", "definitionProvider", "referencesProvider",
+                        "documentSymbolProvider", "completionProvider", "codeActionProvider",
+                        "renameProvider"):
+            self.assertIn(feature, caps)
+        self.assertEqual(caps["completionProvider"]["triggerCharacters"], ["."])
+
+    def test_shutdown_then_exit_exits_0(self):
+        self.assertEqual(self.c.shutdown_and_exit(), 0)
+
+    def test_exit_without_shutdown_exits_1(self):
+        self.c.notify("exit", None)
+        self.assertEqual(self.c.proc.wait(timeout=30), 1)
+
+    def test_end_of_input_ends_the_server(self):
+        self.c.proc.stdin.close()
+        self.assertEqual(self.c.proc.wait(timeout=30), 1)
+
+    def test_requests_after_shutdown_are_refused(self):
+        self.c.request("shutdown", None)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", self.at("take"))
+        self.assertEqual(e.exception.args[0], -32600)
+
+
+class BeforeInitialize(unittest.TestCase):
+    def test_a_request_before_initialize_is_refused(self):
+        with LspClient([ARBC, "lsp", "--no-verify"]) as c:
+            with self.assertRaises(RuntimeError) as e:
+                c.request("textDocument/hover", {"textDocument": {"uri": "file:///x.spec"},
+                                                 "position": {"line": 0, "character": 0}})
+            self.assertEqual(e.exception.args[0], -32002)
+
+
+class Diagnostics(Session):
+    def test_a_clean_spec_has_no_diagnostics(self):
+        self.assertEqual(self.open_spec(), [])
+
+    def test_diagnostics_are_those_of_arbc_check(self):
+        self.open_spec()
+        start = position_of(self.text, "not e_taken and e_arm_idle", 0, len("not "))
+        end = dict(start, character=start["character"] + len("e_taken"))
+        self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_tken"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        broken = self.text.replace("not e_taken and e_arm_idle", "not e_tken and e_arm_idle", 1)
+        expected = check_json(broken)
+        self.assertEqual([(d["code"], d["message"]) for d in diags],
+                         [(d["id"], d["message"]) for d in expected])
+        d = diags[0]
+        self.assertEqual(d["code"], "unknown-event")
+        self.assertEqual(d["range"]["start"], start)
+        self.assertEqual(d["range"]["end"]["character"], start["character"] + len("e_tken"))
+        self.assertEqual(d["relatedInformation"][0]["message"], "did you mean 'e_taken'?")
+        self.assertEqual(d["source"], "arbc")
+
+    def test_a_syntax_error_and_its_repair(self):
+        self.open_spec()
+        end = position_of(self.text, "module Speak")
+        self.c.change(self.uri, 2, [{"range": {"start": end, "end": end}, "text": "modle X { }\n"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        self.assertTrue(diags and diags[0]["severity"] == 1, diags)
+        self.c.change(self.uri, 3, [{"text": self.text}])  # a full-text change
+        self.assertEqual(self.c.wait_diagnostics(self.uri, version=3), [])
+
+    def test_notes_with_a_location_point_there(self):
+        text = self.text.replace("event e_face_detected", "event e_unreachable", 1)
+        diags = self.open_spec(text)
+        dup = [d for d in diags if d["code"] == "duplicate"]
+        self.assertTrue(dup, diags)
+        related = dup[0]["relatedInformation"][0]
+        self.assertEqual(related["location"]["uri"], self.uri)
+        self.assertEqual(related["location"]["range"]["start"]["line"],
+                         position_of(text, "event e_unreachable")["line"])
+
+
+class Navigation(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def definition_line(self, needle, occurrence=0, offset=0):
+        loc = self.c.request("textDocument/definition", self.at(needle, occurrence, offset))
+        self.assertIsNotNone(loc, needle)
+        self.assertEqual(loc["uri"], self.uri)
+        return loc["range"]["start"]
+
+    def test_definitions(self):
+        cases = [  # (use, occurrence, offset into it) -> declaration
+            ("not e_taken", 0, 4, "e_taken, e_arm_idle }"),
+            ("HAND_REACHABLE;", 0, 0, "HAND_REACHABLE = 0.40"),
+            ("list<Object>", 0, 5, "Object = {"),
+            ("arbitrate PickAndPlace.cmd", 0, 10, "PickAndPlace    {"),
+            ("arbitrate PickAndPlace.cmd", 0, 23, "cmd: Cmd; out status"),
+            ("take -> not", 0, 0, "take: from"),
+            ("obj.dist <= HAND", 0, 0, "obj = min_by"),
+            ("SPEAK_PERIOD;", 0, 0, "SPEAK_PERIOD   = 5s"),
+        ]
+        for use, occurrence, offset, decl in cases:
+            with self.subTest(use=use):
+                self.assertEqual(self.definition_line(use, occurrence, offset),
+                                 position_of(self.text, decl))
+
+    def test_references_of_an_event(self):
+        refs = self.c.request("textDocument/references",
+                              dict(self.at("e_pull_idle }"), context={"includeDeclaration": True}))
+        lines = sorted(r["range"]["start"]["line"] for r in refs)
+        # The declaration, take, track and search's `when`s, and one assert.
+        expected = sorted(i for i, l in enumerate(self.text.split("\n"))
+                          for _ in range(l.split("//")[0].count("e_pull_idle")))
+        self.assertEqual(lines, expected)
+        for r in refs:
+            s, e = r["range"]["start"], r["range"]["end"]
+            self.assertEqual(self.text.split("\n")[s["line"]][s["character"]:e["character"]],
+                             "e_pull_idle")
+
+    def test_outline(self):
+        symbols = self.c.request("textDocument/documentSymbol", {"textDocument": {"uri": self.uri}})
+        names = [s["name"] for s in symbols]
+        for name in ("table_clean", "Object", "HAND_REACHABLE", "ObjectDetector", "e_taken",
+                     "arbitrate PickAndPlace.cmd", "arbitrate HeadControl.gaze"):
+            self.assertIn(name, names)
+        pick = symbols[names.index("arbitrate PickAndPlace.cmd")]
+        self.assertEqual([c["name"] for c in pick["children"]], ["take", "put"])
+        module = symbols[names.index("PickAndPlace")]
+        self.assertEqual([c["name"] for c in module["children"]], ["cmd", "status"])
+
+
+class Hover(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def hover(self, needle, occurrence=0, offset=0):
+        h = self.c.request("textDocument/hover", self.at(needle, occurrence, offset))
+        self.assertIsNotNone(h, needle)
+        self.assertEqual(h["contents"]["kind"], "markdown")
+        return h["contents"]["value"]
+
+    def test_a_rule_shows_its_effective_guard_and_decision_table(self):
+        text = self.hover("take: from")
+        self.assertIn("**rule** `take` into `PickAndPlace.cmd`", text)
+        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle`", text)
+        self.assertIn("| e_arm_idle | e_pull_idle | e_taken | selects |", text)
+        self.assertIn("| 1 | 1 | 0 | take |", text)
+
+    def test_a_by_priority_rule_shows_its_activity_event(self):
+        self.assertIn("act_track", self.hover("track:  from"))
+
+    def test_an_event_shows_where_it_comes_from(self):
+        text = self.hover("not e_taken", 0, 4)
+        self.assertIn("status flag `\"e_taken\"` of `PickAndPlace.status`", text)
+        self.assertIn("lifetime 0.5 s", text)
+        self.assertIn("in the `when` of: `take`, `put`, `pull`", text)
+        self.assertIn("derived from `FaceDetector.face`", self.hover("e_face_detected ="))
+
+    def test_types_of_names_and_fields(self):
+        self.assertIn("`obj`: `Object = {pos: vec3, dist: float}`", self.hover("obj.dist <= HAND"))
+        self.assertIn(": `float`", self.hover("obj.dist <= HAND", 0, 5))
+        self.assertIn("**const** `HAND_REACHABLE`: `float` = `0.40`", self.hover("HAND_REACHABLE;"))
+        self.assertIn("**in port** `PickAndPlace.cmd`: `Cmd = {verb: string, pos: vec3}`",
+                      self.hover("arbitrate PickAndPlace.cmd", 0, 23))
+
+    def test_nothing_under_a_comment(self):
+        self.assertIsNone(self.c.request("textDocument/hover", self.at("// never take")))
+
+
+class Editing(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def test_completion_after_a_dot(self):
+        # `obj.` inside take's body: the text does not parse, the last version that did helps.
+        where = position_of(self.text, "emit { verb: \"take\"")
+        self.c.change(self.uri, 2, [{"range": {"start": where, "end": where}, "text": "obj."}])
+        self.c.wait_diagnostics(self.uri, version=2)
+        p = dict(where, character=where["character"] + 4)
+        items = self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": p})["items"]
+        self.assertEqual(sorted(i["label"] for i in items), ["dist", "pos"])
+
+    def test_completion_of_ports_names_and_keywords(self):
+        p = position_of(self.text, "arbitrate PickAndPlace.cmd", 0, len("arbitrate PickAndPlace."))
+        items = self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": p})["items"]
+        self.assertEqual(sorted(i["label"] for i in items), ["cmd", "status"])
+        p = position_of(self.text, "when not e_taken", 0, len("when "))
+        labels = {i["label"] for i in self.c.request(
+            "textDocument/completion", {"textDocument": {"uri": self.uri}, "position": p})["items"]}
+        for expected in ("arbitrate", "when", "e_taken", "HAND_REACHABLE", "Object", "obj"):
+            self.assertIn(expected, labels)
+
+    def test_a_did_you_mean_quick_fix(self):
+        start = position_of(self.text, "e_arm_idle and e_pull_idle {")
+        end = dict(start, character=start["character"] + len("e_arm_idle"))
+        self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_arm_idel"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        actions = self.c.request("textDocument/codeAction", {
+            "textDocument": {"uri": self.uri}, "range": diags[0]["range"],
+            "context": {"diagnostics": diags}})
+        self.assertEqual(len(actions), 1)
+        self.assertEqual(actions[0]["title"], "Change to 'e_arm_idle'")
+        edits = actions[0]["edit"]["changes"][self.uri]
+        broken = self.text.replace("e_arm_idle and e_pull_idle {", "e_arm_idel and e_pull_idle {", 1)
+        self.assertEqual(apply_edits(broken, edits), self.text)
+
+    def test_rename_an_event_keeps_its_status_flag(self):
+        edit = self.c.request("textDocument/rename", dict(self.at("not e_taken", 0, 4),
+                                                          newName="e_holding"))
+        renamed = apply_edits(self.text, edit["changes"][self.uri])
+        self.assertIn('events from PickAndPlace.status { e_holding = "e_taken", e_arm_idle }',
+                      renamed)
+        self.assertNotIn("e_taken and", renamed)
+        self.assertEqual([d for d in check_json(renamed) if d["severity"] == "error"], [])
+
+    def test_rename_a_rule(self):
+        edit = self.c.request("textDocument/rename", dict(self.at("take: from"), newName="grab"))
+        renamed = apply_edits(self.text, edit["changes"][self.uri])
+        self.assertIn("grab: from", renamed)
+        self.assertIn("PickAndPlace.cmd: grab -> not e_taken", renamed)
+        self.assertEqual(check_json(renamed), [])
+
+    def test_rename_refuses_keywords_taken_names_and_modules(self):
+        for needle, name, why in [("take: from", "when", "not a name"),
+                                  ("take: from", "put", "already"),
+                                  ("module PickAndPlace", "Arm", "only events and rules")]:
+            with self.subTest(name=name):
+                with self.assertRaises(RuntimeError) as e:
+                    offset = len("module ") if needle.startswith("module") else 0
+                    self.c.request("textDocument/rename", dict(self.at(needle, 0, offset),
+                                                               newName=name))
+                self.assertIn(why, e.exception.args[1])
+
+
+class Verification(Session):
+    verify = True
+
+    def test_a_counterexample_lands_on_both_rules(self):
+        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle {",
+                                 "when e_arm_idle and e_pull_idle {", 1)
+        self.c.open(self.uri, text)
+        diags = self.c.wait_diagnostics(
+            self.uri, accept=lambda ds: any(d.get("code") == "exclusive" for d in ds), timeout=120)
+        exclusive = [d for d in diags if d.get("code") == "exclusive"]
+        lines = sorted(d["range"]["start"]["line"] for d in exclusive)
+        self.assertEqual(lines, sorted([position_of(text, "take: from")["line"],
+                                        position_of(text, "put: from")["line"]]))
+        for d in exclusive:
+            self.assertIn("rules 'take' and 'put' of PickAndPlace.cmd can both be selected",
+                          d["message"])
+            self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
+
+    def test_a_proved_spec_gets_no_findings_on_save(self):
+        self.assertEqual(self.open_spec(), [])
+        self.c.notify("textDocument/didSave", {"textDocument": {"uri": self.uri}})
+        # The proof publishes again; still nothing.
+        self.assertEqual(self.c.wait_diagnostics(self.uri, timeout=120), [])
+
+
+class Robustness(Session):
+    def test_garbage_gets_errors_and_the_server_goes_on(self):
+        self.c.send_raw(b"Content-Length: 5\r\n\r\n{nope")
+        self.c.send_raw(b"X-Nothing: 1\r\n\r\n")  # no Content-Length: skipped
+        self.c.send({"jsonrpc": "2.0", "id": 99, "method": "textDocument/nosuch", "params": {}})
+        self.assertEqual(self.c.response(99)["error"]["code"], -32601)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", {"textDocument": {"uri": 5}})
+        self.assertEqual(e.exception.args[0], -32602)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", {"textDocument": {"uri": "file:///not/open.spec"},
+                                                  "position": {"line": 0, "character": 0}})
+        self.assertEqual(e.exception.args[0], -32602)
+        self.c.notify("textDocument/didChange", {"textDocument": {"uri": 7}})
+        self.assertEqual(self.open_spec(), [])
+
+    def test_random_edits_never_crash_it(self):
+        self.open_spec()
+        rng = random.Random(20)
+        text = self.text
+        pieces = ["{", "}", ";", "when", " not ", "e_taken", ".", "->", "\"", "//", "\n", "é", "😀",
+                  "arbitrate X.y {", "0.5s", "(", ")"]
+        for version in range(2, 302):
+            lines = text.split("\n")
+            line = rng.randrange(len(lines) + 2)  # sometimes past the end
+            start = {"line": line, "character": rng.randrange(0, 90)}
+            end = {"line": line + rng.randrange(0, 2), "character": rng.randrange(0, 90)}
+            if (end["line"], end["character"]) < (start["line"], start["character"]):
+                start, end = end, start
+            self.c.change(self.uri, version, [{"range": {"start": start, "end": end},
+                                               "text": rng.choice(pieces)}])
+            if version % 50 == 0:
+                self.c.request("textDocument/hover", self.at("arbitrate", text=self.text))
+                self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": start})
+                self.c.request("textDocument/documentSymbol", {"textDocument": {"uri": self.uri}})
+        self.c.change(self.uri, 400, [{"text": self.text}])
+        self.assertEqual(self.c.wait_diagnostics(self.uri, version=400), [])
+
+    def test_a_huge_document_does_not_stop_the_others(self):
+        huge = "module M { in p: int; }\n" + "".join(
+            f"event e{i};\n" for i in range(200000))
+        big_uri = file_uri(os.path.join(ROOT, "specs", "huge.spec"))
+        self.c.open(big_uri, huge)
+        self.assertEqual(self.open_spec(), [])
+        self.assertIn("**rule**", self.c.request("textDocument/hover",
+                                                 self.at("take: from"))["contents"]["value"])
+        self.c.wait_diagnostics(big_uri, timeout=300)
+
+    def test_deep_nesting_is_a_diagnostic(self):
+        text = self.text + "\nconst DEEP = " + "(" * 5000 + "1" + ")" * 5000 + ";\n"
+        diags = self.open_spec(text)
+        self.assertTrue(diags)
+
+    def test_the_parser_cache_is_reset_between_documents(self):
+        self.open_spec()
+        other = file_uri(os.path.join(ROOT, "specs", "face_filter.spec"))
+        self.open_spec(read(os.path.join(ROOT, "specs", "face_filter.spec")), uri=other)
+        status = self.c.request("arbc/status", None)
+        self.assertGreaterEqual(status["parserCacheResets"], 1)
+
+
+if __name__ == "__main__":
+    ARBC = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=2)
