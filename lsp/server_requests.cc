@@ -1,5 +1,7 @@
 // Server::request and Server::notification: the methods the server handles, each handed to
 // its feature (features.h) with a snapshot of the document.
+#include <set>
+
 #include "lsp/features.h"
 #include "lsp/server.h"
 
@@ -46,7 +48,11 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
   }
   if (method == "arbc/status")  // ours: what the tests and benchmarks look at
     return nlohmann::json{{"parserCacheResets", gate_.resets()}};
-  if (method.rfind("textDocument/", 0) != 0) {
+  static const std::set<std::string> kDocumentMethods = {
+      "textDocument/hover",          "textDocument/definition", "textDocument/references",
+      "textDocument/documentHighlight", "textDocument/documentSymbol", "textDocument/completion",
+      "textDocument/codeAction",     "textDocument/prepareRename", "textDocument/rename"};
+  if (!kDocumentMethods.count(method)) {
     *err = {kMethodNotFound, "unknown method " + method};
     return std::nullopt;
   }
