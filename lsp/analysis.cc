@@ -15,8 +15,8 @@ std::shared_ptr<const Analysis> analyze(const std::string& text, int version,
   a->version = version;
   a->text = text;
   frontend::CheckResult check = frontend::check_text(text, file, script_dir);
+  bool ok = check.ok();  // before the diagnostics move out
   a->diagnostics = std::move(check.diagnostics);
-  bool ok = check.ok();
   if (check.spec) {
     std::shared_ptr<const ast::Spec> spec = std::move(check.spec);
     a->spec = spec;

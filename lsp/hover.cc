@@ -41,7 +41,7 @@ const model::App* lowered_app(const Document& doc, std::ostringstream& out) {
 void port_table(const model::App& app, const std::string& port, std::ostringstream& out) {
   const model::ArbitratedPort* p = app.find_arbitrated(port);
   if (!p) return;
-  out << "\n**Decision table of " << code(port) << "**"
+  out << "\n\n**Decision table of " << code(port) << "**"
       << (p->by_priority ? " (by priority)" : "") << "\n\n";
   docs::decision_table_markdown(docs::decision_table(app, *p), out);
 }
@@ -81,7 +81,8 @@ void describe_rule(const Document& doc, const Symbol& s, std::ostringstream& out
   out << "**rule** " << code(s.name) << " into " << code(s.container);
   if (!r) return;
   out << " from " << code(r->source.qualified());
-  out << "\n\nwhen: " << code(r->otherwise ? "otherwise" : r->constraint.to_string());
+  // As written: with errors in the text, sema's constraint tree may be incomplete.
+  out << "\n\nwhen: " << code(r->when ? source_text(doc, r->when->loc) : "true");
   if (r->hold) out << "; hold " << r->hold->seconds << " s";
   const model::App* app = lowered_app(doc, out);
   if (!app) return;
