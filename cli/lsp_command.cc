@@ -19,8 +19,9 @@ int lsp_command(std::span<char*> args) {
   options.version = ARBC_VERSION;
   bool no_verify = false;
   bool stdio = true;
-  app.add_flag("--stdio", stdio, "talk over stdin/stdout (the default; accepted for clients "
-                                 "that pass it)");
+  app.add_flag("--stdio", stdio,
+               "talk over stdin/stdout (the default; accepted for clients "
+               "that pass it)");
   app.add_flag("--no-verify", no_verify, "do not prove documents on open and save");
   app.add_option("--timeout", options.verify_timeout_seconds,
                  "seconds the proof of one document may take")

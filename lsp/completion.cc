@@ -14,8 +14,16 @@ namespace arbc::lsp {
 namespace {
 
 // LSP CompletionItemKind numbers.
-enum Kind { kField = 5, kVariable = 6, kModule = 9, kKeyword = 14, kFunction = 3,
-            kConstant = 21, kStruct = 22, kEvent = 23 };
+enum Kind {
+  kField = 5,
+  kVariable = 6,
+  kModule = 9,
+  kKeyword = 14,
+  kFunction = 3,
+  kConstant = 21,
+  kStruct = 22,
+  kEvent = 23
+};
 
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -36,12 +44,18 @@ std::vector<std::string> chain_before(std::string_view line, size_t end) {
 
 int kind_of(SymbolKind k) {
   switch (k) {
-    case SymbolKind::Event: return kEvent;
-    case SymbolKind::Const: return kConstant;
-    case SymbolKind::Type: return kStruct;
-    case SymbolKind::Module: return kModule;
-    case SymbolKind::Rule: return kFunction;
-    default: return kVariable;
+    case SymbolKind::Event:
+      return kEvent;
+    case SymbolKind::Const:
+      return kConstant;
+    case SymbolKind::Type:
+      return kStruct;
+    case SymbolKind::Module:
+      return kModule;
+    case SymbolKind::Rule:
+      return kFunction;
+    default:
+      return kVariable;
   }
 }
 
@@ -78,8 +92,8 @@ void add_members(const SymbolIndex& ix, const std::vector<std::string>& chain, i
       items.push_back({{"label", axis}, {"kind", kField}, {"detail", "float"}});
   if (t && t->kind == Type::Kind::Record)
     for (const Field& f : t->fields)
-      items.push_back({{"label", f.name}, {"kind", kField},
-                       {"detail", f.type ? f.type->to_string() : "?"}});
+      items.push_back(
+          {{"label", f.name}, {"kind", kField}, {"detail", f.type ? f.type->to_string() : "?"}});
 }
 
 // The rule whose body the cursor is probably in: the last declared above the cursor.
@@ -98,8 +112,8 @@ void add_names(const SymbolIndex& ix, int line, nlohmann::json& items) {
     if (s.kind == SymbolKind::Port || s.kind == SymbolKind::App) continue;
     if (s.kind == SymbolKind::Local && (s.container != rule || s.def.line > line)) continue;
     if (!seen.insert(s.name).second) continue;
-    items.push_back({{"label", s.name}, {"kind", kind_of(s.kind)},
-                     {"detail", symbol_kind_name(s.kind)}});
+    items.push_back(
+        {{"label", s.name}, {"kind", kind_of(s.kind)}, {"detail", symbol_kind_name(s.kind)}});
   }
 }
 

@@ -39,8 +39,7 @@ class DocumentStore {
   void open(const std::string& uri, std::string text, int version);
   // Applies contentChanges; false (and `err`) if the document is not open or a change is
   // malformed (the changes before it stay applied: the client will resend the text).
-  bool change(const std::string& uri, const nlohmann::json& changes, int version,
-              std::string* err);
+  bool change(const std::string& uri, const nlohmann::json& changes, int version, std::string* err);
   void close(const std::string& uri);
 
   std::optional<Document> get(const std::string& uri) const;  // a copy

@@ -8,8 +8,18 @@ namespace arbc::lsp {
 namespace {
 
 // LSP SymbolKind numbers.
-enum Kind { kModule = 2, kNamespace = 3, kPackage = 4, kProperty = 7, kFunction = 12,
-            kConstant = 14, kBoolean = 17, kOperator = 25, kStruct = 23, kEvent = 24 };
+enum Kind {
+  kModule = 2,
+  kNamespace = 3,
+  kPackage = 4,
+  kProperty = 7,
+  kFunction = 12,
+  kConstant = 14,
+  kBoolean = 17,
+  kOperator = 25,
+  kStruct = 23,
+  kEvent = 24
+};
 
 // The smallest location covering both.
 Loc span(Loc a, const Loc& b) {
@@ -74,8 +84,9 @@ nlohmann::json document_symbols(const Document& doc) {
   nlohmann::json out = nlohmann::json::array();
   if (!doc.analysis || !doc.analysis->spec) return out;
   const ast::Spec& spec = *doc.analysis->spec;
-  if (spec.app) out.push_back(item(doc, spec.app->name, kPackage, spec.app->loc,
-                                   name_loc(spec.app->loc, spec.app->name), "app"));
+  if (spec.app)
+    out.push_back(item(doc, spec.app->name, kPackage, spec.app->loc,
+                       name_loc(spec.app->loc, spec.app->name), "app"));
   for (const ast::TypeDecl& t : spec.types)
     out.push_back(item(doc, t.name, kStruct, span(t.loc, t.type.loc), name_loc(t.loc, t.name)));
   for (const ast::ConstDecl& c : spec.consts)

@@ -33,8 +33,7 @@ std::string names(const std::vector<std::string>& v) {
 // The lowered model, and a note when it is older than the text (the spec has errors now).
 const model::App* lowered_app(const Document& doc, std::ostringstream& out) {
   if (!doc.analysis || !doc.analysis->lowered) return nullptr;
-  if (!doc.analysis->lowered_current)
-    out << "\n*(from the last version without errors)*\n";
+  if (!doc.analysis->lowered_current) out << "\n*(from the last version without errors)*\n";
   return &doc.analysis->lowered->app;
 }
 
@@ -111,9 +110,15 @@ void describe_port(const Document& doc, const SymbolIndex& ix, const Symbol& s,
 void describe(const Document& doc, const SymbolIndex& ix, const Symbol& s,
               std::ostringstream& out) {
   switch (s.kind) {
-    case SymbolKind::Event: describe_event(doc, ix, s, out); break;
-    case SymbolKind::Rule: describe_rule(doc, s, out); break;
-    case SymbolKind::Port: describe_port(doc, ix, s, out); break;
+    case SymbolKind::Event:
+      describe_event(doc, ix, s, out);
+      break;
+    case SymbolKind::Rule:
+      describe_rule(doc, s, out);
+      break;
+    case SymbolKind::Port:
+      describe_port(doc, ix, s, out);
+      break;
     case SymbolKind::Module:
       out << "**module** " << code(s.name);
       if (s.module && !s.module->doc.empty()) out << "\n\n" << s.module->doc;
@@ -122,13 +127,17 @@ void describe(const Document& doc, const SymbolIndex& ix, const Symbol& s,
           out << "\n- " << (p.direction == model::Direction::In ? "in " : "out ") << code(p.name)
               << ": " << code(type_text(ix, p.type.resolved));
       break;
-    case SymbolKind::Type: out << "**type** " << code(type_text(ix, s.type)); break;
+    case SymbolKind::Type:
+      out << "**type** " << code(type_text(ix, s.type));
+      break;
     case SymbolKind::Const:
       out << "**const** " << code(s.name) << ": " << code(type_text(ix, s.type));
       if (s.constant && s.constant->value)
         out << " = " << code(source_text(doc, s.constant->value->loc));
       break;
-    case SymbolKind::Local: out << code(s.name) << ": " << code(type_text(ix, s.type)); break;
+    case SymbolKind::Local:
+      out << code(s.name) << ": " << code(type_text(ix, s.type));
+      break;
     case SymbolKind::App:
       out << "**app** " << code(s.name);
       if (doc.analysis && doc.analysis->spec && doc.analysis->spec->app)

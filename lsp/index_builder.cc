@@ -9,8 +9,7 @@ namespace arbc::lsp {
 namespace {
 
 std::string loc_key(const char* prefix, const Loc& l, const std::string& name) {
-  return std::string(prefix) + std::to_string(l.line) + ":" + std::to_string(l.column) + ":" +
-         name;
+  return std::string(prefix) + std::to_string(l.line) + ":" + std::to_string(l.column) + ":" + name;
 }
 
 // The `port` part of `Module.port` (the end of the reference).
@@ -48,31 +47,52 @@ class Builder {
   }
 
   void declare_all() {
-    if (spec_.app) declare({.kind = SymbolKind::App, .name = spec_.app->name, .key = "app",
-                            .def = name_loc(spec_.app->loc, spec_.app->name)});
+    if (spec_.app)
+      declare({.kind = SymbolKind::App,
+               .name = spec_.app->name,
+               .key = "app",
+               .def = name_loc(spec_.app->loc, spec_.app->name)});
     for (const ast::TypeDecl& t : spec_.types) {
       if (t.type.resolved) ix_.type_names.emplace(t.type.resolved.get(), t.name);
-      declare({.kind = SymbolKind::Type, .name = t.name, .key = "type:" + t.name,
-               .def = name_loc(t.loc, t.name), .type = t.type.resolved, .type_decl = &t});
+      declare({.kind = SymbolKind::Type,
+               .name = t.name,
+               .key = "type:" + t.name,
+               .def = name_loc(t.loc, t.name),
+               .type = t.type.resolved,
+               .type_decl = &t});
     }
     for (const ast::ConstDecl& c : spec_.consts)
-      declare({.kind = SymbolKind::Const, .name = c.name, .key = "const:" + c.name,
-               .def = name_loc(c.loc, c.name), .type = c.value ? c.value->type : nullptr,
+      declare({.kind = SymbolKind::Const,
+               .name = c.name,
+               .key = "const:" + c.name,
+               .def = name_loc(c.loc, c.name),
+               .type = c.value ? c.value->type : nullptr,
                .constant = &c});
     for (const ast::ModuleDecl& m : spec_.modules) declare_module(m);
     declare_events();
     for (const ast::ArbitrateDecl& a : spec_.arbitrations)
       for (const ast::Rule& r : a.rules)
-        declare({.kind = SymbolKind::Rule, .name = r.name, .key = "rule:" + r.name,
-                 .def = name_loc(r.loc, r.name), .container = a.port.qualified(), .rule = &r});
+        declare({.kind = SymbolKind::Rule,
+                 .name = r.name,
+                 .key = "rule:" + r.name,
+                 .def = name_loc(r.loc, r.name),
+                 .container = a.port.qualified(),
+                 .rule = &r});
   }
 
   void declare_module(const ast::ModuleDecl& m) {
-    declare({.kind = SymbolKind::Module, .name = m.name, .key = "module:" + m.name,
-             .def = name_loc(m.loc, m.name), .module = &m});
+    declare({.kind = SymbolKind::Module,
+             .name = m.name,
+             .key = "module:" + m.name,
+             .def = name_loc(m.loc, m.name),
+             .module = &m});
     for (const ast::PortDecl& p : m.ports)
-      declare({.kind = SymbolKind::Port, .name = p.name, .key = "port:" + m.name + "." + p.name,
-               .def = name_loc(p.loc, p.name), .container = m.name, .type = p.type.resolved,
+      declare({.kind = SymbolKind::Port,
+               .name = p.name,
+               .key = "port:" + m.name + "." + p.name,
+               .def = name_loc(p.loc, p.name),
+               .container = m.name,
+               .type = p.type.resolved,
                .module = &m});
   }
 
@@ -83,11 +103,15 @@ class Builder {
       if (e.kind == ast::EventSymbol::Kind::Status) {
         // `{ e }` writes only the name; `{ e = "flag" }` is wider than it.
         Loc n = name_loc(e.loc, e.name);
-        implicit_flag = e.flag == e.name && (e.loc.end_line <= 0 || (e.loc.end_line == n.line &&
-                                                                     e.loc.end_column <= n.end_column));
+        implicit_flag =
+            e.flag == e.name &&
+            (e.loc.end_line <= 0 || (e.loc.end_line == n.line && e.loc.end_column <= n.end_column));
       }
-      declare({.kind = SymbolKind::Event, .name = e.name, .key = "event:" + e.name,
-               .def = name_loc(e.loc, e.name), .event = &e},
+      declare({.kind = SymbolKind::Event,
+               .name = e.name,
+               .key = "event:" + e.name,
+               .def = name_loc(e.loc, e.name),
+               .event = &e},
               implicit_flag);
     }
   }
@@ -139,9 +163,12 @@ class Builder {
     Loc at = port_part(source);
     message_key_ = loc_key("message:", at, name);
     // No occurrence at the definition: the port's own occurrence is there.
-    ix_.add_symbol({.kind = SymbolKind::Local, .name = name.empty() ? source.port : name,
-             .key = message_key_, .def = at, .container = owner_,
-             .type = source.port_decl ? source.port_decl->type.resolved : nullptr});
+    ix_.add_symbol({.kind = SymbolKind::Local,
+                    .name = name.empty() ? source.port : name,
+                    .key = message_key_,
+                    .def = at,
+                    .container = owner_,
+                    .type = source.port_decl ? source.port_decl->type.resolved : nullptr});
     body();
     message_key_.clear();
   }
@@ -181,9 +208,13 @@ void Builder::stmt(const ast::Stmt& s) {
   switch (s.kind) {
     case K::Let:
     case K::Var:
-      declare({.kind = SymbolKind::Local, .name = s.name,
-               .key = loc_key("local:", s.name_loc, s.name), .def = name_loc(s.name_loc, s.name),
-               .container = owner_, .type = s.expr ? s.expr->type : nullptr, .stmt = &s});
+      declare({.kind = SymbolKind::Local,
+               .name = s.name,
+               .key = loc_key("local:", s.name_loc, s.name),
+               .def = name_loc(s.name_loc, s.name),
+               .container = owner_,
+               .type = s.expr ? s.expr->type : nullptr,
+               .stmt = &s});
       break;
     case K::Assign:
       if (s.var_decl)
@@ -206,8 +237,11 @@ void Builder::expr(const ast::Expr* e) {
   if (!e) return;
   if (e->kind == ast::Expr::Kind::Lambda && !e->field_locs.empty()) {
     const Loc& at = e->field_locs[0];
-    declare({.kind = SymbolKind::Local, .name = e->text, .key = loc_key("param:", at, e->text),
-             .def = name_loc(at, e->text), .container = owner_});
+    declare({.kind = SymbolKind::Local,
+             .name = e->text,
+             .key = loc_key("param:", at, e->text),
+             .def = name_loc(at, e->text),
+             .container = owner_});
   } else {
     ix_.expressions.push_back(e);
   }
@@ -218,7 +252,9 @@ void Builder::expr(const ast::Expr* e) {
 void Builder::name(const ast::Expr& e) {
   Loc at = name_loc(e.loc, e.text);
   switch (e.name_kind) {
-    case ast::NameKind::Message: ix_.add_occurrence(message_key_, at); break;
+    case ast::NameKind::Message:
+      ix_.add_occurrence(message_key_, at);
+      break;
     case ast::NameKind::Let:
     case ast::NameKind::Var:
       if (e.local) ix_.add_occurrence(loc_key("local:", e.local->name_loc, e.text), at);
@@ -227,9 +263,14 @@ void Builder::name(const ast::Expr& e) {
       if (e.lambda && !e.lambda->field_locs.empty())
         ix_.add_occurrence(loc_key("param:", e.lambda->field_locs[0], e.text), at);
       break;
-    case ast::NameKind::Const: ix_.add_occurrence("const:" + e.text, at); break;
-    case ast::NameKind::Event: ix_.add_occurrence("event:" + e.text, at); break;
-    case ast::NameKind::Unresolved: break;
+    case ast::NameKind::Const:
+      ix_.add_occurrence("const:" + e.text, at);
+      break;
+    case ast::NameKind::Event:
+      ix_.add_occurrence("event:" + e.text, at);
+      break;
+    case ast::NameKind::Unresolved:
+      break;
   }
 }
 

@@ -9,9 +9,12 @@ namespace {
 
 int lsp_severity(Severity s) {
   switch (s) {
-    case Severity::Error: return 1;
-    case Severity::Warning: return 2;
-    case Severity::Note: return 3;
+    case Severity::Error:
+      return 1;
+    case Severity::Warning:
+      return 2;
+    case Severity::Note:
+      return 3;
   }
   return 1;
 }
@@ -29,8 +32,7 @@ std::optional<std::string> suggested_fix(const Diagnostic& d) {
   return std::nullopt;
 }
 
-nlohmann::json diagnostic_json(const Diagnostic& d, std::string_view text,
-                               const std::string& uri) {
+nlohmann::json diagnostic_json(const Diagnostic& d, std::string_view text, const std::string& uri) {
   model::SourceLocation at = d.loc;
   if (at.line <= 0) at = {d.loc.file, 1, 1, 1, 1};  // about the whole file: its start
   nlohmann::json j = {{"range", range_json(text, at)},
@@ -49,9 +51,9 @@ nlohmann::json diagnostic_json(const Diagnostic& d, std::string_view text,
       range = {{"start", position_json({n.loc.line - 1, n.loc.column - 1})},
                {"end", position_json({end_line - 1, end_column - 1})}};
     }
-    related.push_back({{"location", {{"uri", elsewhere ? path_to_uri(n.loc.file) : uri},
-                                     {"range", range}}},
-                       {"message", n.message}});
+    related.push_back(
+        {{"location", {{"uri", elsewhere ? path_to_uri(n.loc.file) : uri}, {"range", range}}},
+         {"message", n.message}});
   }
   if (!related.empty()) j["relatedInformation"] = related;
   if (auto fix = suggested_fix(d)) j["data"] = {{"fix", *fix}};

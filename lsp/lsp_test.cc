@@ -54,7 +54,7 @@ TEST(Framing, WritesContentLength) {
 }
 
 TEST(Positions, CountUtf16UnitsAgainstCodePoints) {
-  std::string text = "ab\né😀x\n";  // é: 1 unit, 😀: 2 units, 1 code point each
+  std::string text = "ab\né😀x\n";                    // é: 1 unit, 😀: 2 units, 1 code point each
   EXPECT_EQ(lsp_position(text, 2, 3).character, 3);  // before x
   EXPECT_EQ(offset_of(text, {1, 3}), text.find('x'));
   EXPECT_EQ(arbc_position(text, {1, 3}), std::make_pair(2, 3));
@@ -65,9 +65,10 @@ TEST(Positions, CountUtf16UnitsAgainstCodePoints) {
 TEST(TextEdits, AppliesRangesAndWholeText) {
   std::string text = "line one\nline two\n";
   std::string err;
-  nlohmann::json change = {{"range", {{"start", {{"line", 1}, {"character", 5}}},
-                                      {"end", {{"line", 1}, {"character", 8}}}}},
-                           {"text", "2"}};
+  nlohmann::json change = {
+      {"range",
+       {{"start", {{"line", 1}, {"character", 5}}}, {"end", {{"line", 1}, {"character", 8}}}}},
+      {"text", "2"}};
   ASSERT_TRUE(apply_change(text, change, &err));
   EXPECT_EQ(text, "line one\nline 2\n");
   ASSERT_TRUE(apply_change(text, {{"text", "new"}}, &err));

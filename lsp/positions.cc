@@ -63,9 +63,7 @@ std::pair<int, int> arbc_position(std::string_view text, Position p) {
   return {p.line + 1, column};
 }
 
-nlohmann::json position_json(Position p) {
-  return {{"line", p.line}, {"character", p.character}};
-}
+nlohmann::json position_json(Position p) { return {{"line", p.line}, {"character", p.character}}; }
 
 Position parse_position(const nlohmann::json& j) {
   Position p;

@@ -25,7 +25,8 @@ int Server::run() {
     if (body->empty()) continue;
     nlohmann::json message = nlohmann::json::parse(*body, nullptr, /*allow_exceptions=*/false);
     if (message.is_discarded() || !message.is_object()) {
-      send({{"jsonrpc", "2.0"}, {"id", nullptr},
+      send({{"jsonrpc", "2.0"},
+            {"id", nullptr},
             {"error", {{"code", kParseError}, {"message", "the message is not a JSON object"}}}});
       continue;
     }
@@ -39,7 +40,8 @@ void Server::dispatch(const nlohmann::json& message) {
   auto id = message.find("id");
   if (method_it == message.end() || !method_it->is_string()) {
     if (id == message.end()) return;  // a response to us (we send no requests): ignore
-    send({{"jsonrpc", "2.0"}, {"id", *id},
+    send({{"jsonrpc", "2.0"},
+          {"id", *id},
           {"error", {{"code", kInvalidRequest}, {"message", "a request needs a method"}}}});
     return;
   }
@@ -63,7 +65,8 @@ void Server::dispatch(const nlohmann::json& message) {
   if (result)
     send({{"jsonrpc", "2.0"}, {"id", *id}, {"result", *result}});
   else
-    send({{"jsonrpc", "2.0"}, {"id", *id},
+    send({{"jsonrpc", "2.0"},
+          {"id", *id},
           {"error", {{"code", err.code}, {"message", err.message}}}});
 }
 

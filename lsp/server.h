@@ -23,12 +23,12 @@
 namespace arbc::lsp {
 
 struct ServerOptions {
-  std::string version = "0";                       // serverInfo.version
-  std::chrono::milliseconds check_delay{30};       // quiet time before checking
-  std::chrono::milliseconds verify_delay{200};     // quiet time before proving
-  std::chrono::milliseconds request_wait{1000};    // how long a request waits for an analysis
-  double verify_timeout_seconds = 30;              // the solver's budget per proof
-  bool verify = true;                              // prove on open and save
+  std::string version = "0";                     // serverInfo.version
+  std::chrono::milliseconds check_delay{30};     // quiet time before checking
+  std::chrono::milliseconds verify_delay{200};   // quiet time before proving
+  std::chrono::milliseconds request_wait{1000};  // how long a request waits for an analysis
+  double verify_timeout_seconds = 30;            // the solver's budget per proof
+  bool verify = true;                            // prove on open and save
 };
 
 class Server {

@@ -20,7 +20,8 @@ nlohmann::json Server::initialize_result() const {
       {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
       {"renameProvider", {{"prepareProvider", true}}},
   };
-  return {{"capabilities", caps}, {"serverInfo", {{"name", "arbc"}, {"version", options_.version}}}};
+  return {{"capabilities", caps},
+          {"serverInfo", {{"name", "arbc"}, {"version", options_.version}}}};
 }
 
 std::optional<Document> Server::document(const nlohmann::json& params) {
@@ -49,9 +50,11 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
   if (method == "arbc/status")  // ours: what the tests and benchmarks look at
     return nlohmann::json{{"parserCacheResets", gate_.resets()}};
   static const std::set<std::string> kDocumentMethods = {
-      "textDocument/hover",          "textDocument/definition", "textDocument/references",
-      "textDocument/documentHighlight", "textDocument/documentSymbol", "textDocument/completion",
-      "textDocument/codeAction",     "textDocument/prepareRename", "textDocument/rename"};
+      "textDocument/hover",          "textDocument/definition",
+      "textDocument/references",     "textDocument/documentHighlight",
+      "textDocument/documentSymbol", "textDocument/completion",
+      "textDocument/codeAction",     "textDocument/prepareRename",
+      "textDocument/rename"};
   if (!kDocumentMethods.count(method)) {
     *err = {kMethodNotFound, "unknown method " + method};
     return std::nullopt;
@@ -65,8 +68,9 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
   if (method == "textDocument/hover") return hover(*doc, p);
   if (method == "textDocument/definition") return definition(*doc, p);
   if (method == "textDocument/references")
-    return references(*doc, p, params.value("context", nlohmann::json::object())
-                                   .value("includeDeclaration", true));
+    return references(
+        *doc, p,
+        params.value("context", nlohmann::json::object()).value("includeDeclaration", true));
   if (method == "textDocument/documentHighlight") return highlights(*doc, p);
   if (method == "textDocument/documentSymbol") return document_symbols(*doc);
   if (method == "textDocument/completion") return completion(*doc, p);
@@ -103,7 +107,8 @@ void Server::notification(const std::string& method, const nlohmann::json& param
     store_.close(uri);
     check_worker_.cancel(uri);
     verify_worker_.cancel(uri);
-    send({{"jsonrpc", "2.0"}, {"method", "textDocument/publishDiagnostics"},
+    send({{"jsonrpc", "2.0"},
+          {"method", "textDocument/publishDiagnostics"},
           {"params", {{"uri", uri}, {"diagnostics", nlohmann::json::array()}}}});
   }
   // Anything else (initialized, $/cancelRequest, $/setTrace, configuration) needs nothing.

@@ -6,14 +6,22 @@ namespace arbc::lsp {
 
 const char* symbol_kind_name(SymbolKind k) {
   switch (k) {
-    case SymbolKind::App: return "app";
-    case SymbolKind::Type: return "type";
-    case SymbolKind::Const: return "const";
-    case SymbolKind::Module: return "module";
-    case SymbolKind::Port: return "port";
-    case SymbolKind::Event: return "event";
-    case SymbolKind::Rule: return "rule";
-    case SymbolKind::Local: return "local";
+    case SymbolKind::App:
+      return "app";
+    case SymbolKind::Type:
+      return "type";
+    case SymbolKind::Const:
+      return "const";
+    case SymbolKind::Module:
+      return "module";
+    case SymbolKind::Port:
+      return "port";
+    case SymbolKind::Event:
+      return "event";
+    case SymbolKind::Rule:
+      return "rule";
+    case SymbolKind::Local:
+      return "local";
   }
   return "?";
 }

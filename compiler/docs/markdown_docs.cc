@@ -118,12 +118,14 @@ void decision_section(const model::App& app, std::ostream& out) {
 
 void decision_table_markdown(const DecisionTable& t, std::ostream& out) {
   out << "| rule | effective guard |\n|---|---|\n";
-  for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
+  for (const RuleGuard& r : t.rules)
+    out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
   out << "\n";
   if (!t.tabulated) {
     out << "With " << t.events.size() << " events (more than " << kMaxTableEvents
         << "), the guards in disjunctive normal form:\n\n| rule | guard (DNF) |\n|---|---|\n";
-    for (const RuleGuard& r : t.rules) out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
+    for (const RuleGuard& r : t.rules)
+      out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
     return;
   }
   out << "|";

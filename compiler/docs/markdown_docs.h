@@ -2,10 +2,9 @@
 // connections, events, a decision table per arbitrated port, and the verification verdicts.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
-
-#include <ostream>
 
 #include "compiler/docs/decision_table.h"
 #include "core/app_model.h"
