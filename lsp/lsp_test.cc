@@ -87,7 +87,7 @@ TEST(Uri, RoundTripsPathsWithSpacesAndPercent) {
 
 TEST(Diagnostics, DidYouMeanIsAFix) {
   frontend::CheckResult r = frontend::check_text(
-      "module M { in p: int; out q: int; }\nevent e_taken;\n"
+      "app a \"x\";\nmodule M { in p: int; out q: int; }\nevent e_taken;\n"
       "arbitrate M.p { r: from M.q when e_tkn; }\n",
       "x.spec", ".");
   ASSERT_EQ(r.diagnostics.size(), 1u);
@@ -95,22 +95,22 @@ TEST(Diagnostics, DidYouMeanIsAFix) {
   nlohmann::json j = diagnostic_json(r.diagnostics[0], r.source, "file:///x.spec");
   EXPECT_EQ(j["code"], "unknown-event");
   EXPECT_EQ(j["data"]["fix"], "e_taken");
-  EXPECT_EQ(j["range"]["start"]["line"], 2);
+  EXPECT_EQ(j["range"]["start"]["line"], 3);
 }
 
 TEST(SymbolIndex, ResolvesUsesToDeclarations) {
   frontend::CheckResult r = frontend::check_text(
-      "module M { in p: int; out q: int; }\nevent e;\n"
+      "app a \"x\";\nmodule M { in p: int; out q: int; }\nevent e;\n"
       "arbitrate M.p { r: from M.q when not e { let v = q + 1; accept v > 0; set e; } }\n",
       "x.spec", ".");
   ASSERT_TRUE(r.ok()) << frontend::render_diagnostics(r.diagnostics, nullptr);
   std::unique_ptr<SymbolIndex> ix = build_index(*r.spec);
-  const Occurrence* o = ix->occurrence_at(3, 38);  // the `e` of `not e`
+  const Occurrence* o = ix->occurrence_at(4, 38);  // the `e` of `not e`
   ASSERT_NE(o, nullptr);
   EXPECT_EQ(ix->symbols[o->symbol].key, "event:e");
   EXPECT_EQ(ix->occurrences_of(o->symbol).size(), 3u);  // declared, when, set
   EXPECT_EQ(ix->set_by.at("e"), std::vector<std::string>{"r"});
-  const Occurrence* v = ix->occurrence_at(3, 64);  // the `v` of `accept v`
+  const Occurrence* v = ix->occurrence_at(4, 64);  // the `v` of `accept v`
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(ix->symbols[v->symbol].kind, SymbolKind::Local);
   EXPECT_EQ(ix->symbols[v->symbol].def.column, 46);
@@ -123,7 +123,8 @@ TEST(GrammarInfo, KeywordsComeFromTheGrammar) {
   EXPECT_EQ(std::find(k.begin(), k.end(), "{"), k.end());
   // The cache can be dropped between parses, and parsing still works.
   frontend::reset_parser_cache();
-  EXPECT_TRUE(frontend::check_text("module M { in p: int; }\n", "x.spec", ".").ok());
+  EXPECT_TRUE(frontend::check_text("app a \"x\";\nmodule M { in p: int; }\n", "x.spec", ".")
+                  .ok());
 }
 
 TEST(DebouncedWorker, RunsOnceForABurstOfSchedules) {

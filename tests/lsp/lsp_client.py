@@ -25,6 +25,7 @@ class LspClient:
         self.next_id = 1
         self.responses = {}
         self.notifications = queue.Queue()
+        self.backlog = []  # notifications kept for a later wait_notification
         self.cond = threading.Condition()
         self.stderr_lines = []
         self.reader = threading.Thread(target=self._read, daemon=True)
@@ -124,7 +125,12 @@ class LspClient:
         self.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": version},
                                                "contentChanges": changes})
 
-    def wait_notification(self, accept, timeout=30):
+    def wait_notification(self, accept, timeout=30, keep=None):
+        """The next notification `accept` takes. Those it does not take are dropped, except
+        those `keep` takes: they wait in a backlog that later calls look at first."""
+        for i, message in enumerate(self.backlog):
+            if accept(message):
+                return self.backlog.pop(i)
         deadline = time.monotonic() + timeout
         while True:
             left = deadline - time.monotonic()
@@ -136,18 +142,26 @@ class LspClient:
                 raise TimeoutError("no matching notification")
             if accept(message):
                 return message
+            if keep is not None and keep(message):
+                self.backlog.append(message)
 
     def wait_diagnostics(self, uri, version=None, accept=None, timeout=30):
         """The diagnostics of the next publishDiagnostics for `uri` (of `version`, if given)
-        that `accept` (if given) takes."""
+        that `accept` (if given) takes. Other documents' diagnostics wait for their turn."""
+        def publishes(m):
+            return m.get("method") == "textDocument/publishDiagnostics"
+
         def match(m):
-            if m.get("method") != "textDocument/publishDiagnostics":
+            if not publishes(m):
                 return False
             p = m["params"]
             if p["uri"] != uri or (version is not None and p.get("version") != version):
                 return False
             return accept is None or accept(p["diagnostics"])
-        return self.wait_notification(match, timeout)["params"]["diagnostics"]
+
+        def other_document(m):
+            return publishes(m) and m["params"]["uri"] != uri
+        return self.wait_notification(match, timeout, keep=other_document)["params"]["diagnostics"]
 
 
 def position_of(text, needle, occurrence=0, offset=0):
