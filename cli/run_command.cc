@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -119,28 +120,36 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
   return kExitOk;
 }
 
-}  // namespace
-
-int run_command(std::span<char*> args) {
-  CLI::App cli{"Run a built application on the embedded runtime", "arbc run"};
-  std::string input, duration_text = "60s";
+// The command line of `arbc run`.
+struct RunArgs {
+  std::string input;
   std::vector<std::string> plugins;
   bool no_verify = false;
   RunOptions options;
-  cli.add_option("app", input, "an app directory written by `arbc build`, its app.json, or a .spec")
+  std::string report_path;
+};
+
+// Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
+// a bad option or value).
+std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
+  CLI::App cli{"Run a built application on the embedded runtime", "arbc run"};
+  std::string duration_text = "60s";
+  RunOptions& options = a.options;
+  cli.add_option("app", a.input,
+                 "an app directory written by `arbc build`, its app.json, or a .spec")
       ->required();
-  cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
+  cli.add_option("--plugin", a.plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
-  cli.add_flag("--no-verify", no_verify,
+  cli.add_flag("--no-verify", a.no_verify,
                "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   std::string seed_text = "1";
   cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
       ->type_name("UINT");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
-  std::string report_path;
-  cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
+  cli.add_option("--report", a.report_path,
+                 "write a self-contained HTML report of the run to FILE");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -153,19 +162,33 @@ int run_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc run: error: %s\n", value_error.c_str());
     return kExitBadInput;
   }
+  return std::nullopt;
+}
 
+// Loads each --plugin library; false (the error printed) when one cannot be loaded.
+bool load_plugins(const std::vector<std::string>& plugins) {
   for (const std::string& lib : plugins) {
     std::string error = load_plugin(lib);
     if (!error.empty()) {
       print_errors({lib + ": " + error});
-      return kExitBadInput;
+      return false;
     }
   }
   print_errors(Registry::global().errors());
+  return true;
+}
+
+}  // namespace
+
+int run_command(std::span<char*> args) {
+  RunArgs a;
+  if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  RunOptions& options = a.options;
+  if (!load_plugins(a.plugins)) return kExitBadInput;
 
   std::string dir, error;
   TempDir temp;
-  int prepared = prepare_app_dir(input, no_verify, &temp, &dir);
+  int prepared = prepare_app_dir(a.input, a.no_verify, &temp, &dir);
   if (prepared != kExitOk) return prepared;
   AppDirLoad load = load_app_dir(dir);
   if (!load.ok) {
@@ -180,10 +203,10 @@ int run_command(std::span<char*> args) {
   }
   std::string proof;
   int proved =
-      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), no_verify, &proof);
+      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
-  if (!report_path.empty()) options.trace_records = &records;
+  if (!a.report_path.empty()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
@@ -192,15 +215,15 @@ int run_command(std::span<char*> args) {
     return kExitBadInput;
   }
   report::ReportFile report_file;
-  if (!report_path.empty()) {
-    std::string open_error = report_file.open(report_path);
-    if (!open_error.empty()) {
+  if (!a.report_path.empty()) {
+    std::string open_error;
+    if (!report_file.open(a.report_path, &open_error)) {
       print_errors({open_error});
       return kExitBadInput;
     }
   }
 
-  RunEnd end{load.app, *runtime, options, records, report_path, report_file, proof};
+  RunEnd end{load.app, *runtime, options, records, a.report_path, report_file, proof};
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;

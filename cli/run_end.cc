@@ -48,8 +48,8 @@ void print_run_line(const RunEnd& end, const std::string& stop_reason) {
 bool write_report(const RunEnd& end, const report::RunReportInput& input) {
   if (end.report_path.empty()) return true;
   std::string html = report::render_run_report(input);
-  std::string error = end.report_file.write(html);
-  if (!error.empty()) {
+  std::string error;
+  if (!end.report_file.write(html, &error)) {
     std::fprintf(stderr, "arbc run: error: %s\n", error.c_str());
     return false;
   }

@@ -25,6 +25,9 @@ class Trace {
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }
   bool enabled() const { return file_ != nullptr || records_ != nullptr; }
 
+  // A message a module published on its out-port `port`, as every connection from it received
+  // it: replaying these lines replays the run's inputs (docs/runtime.md, "Trace format").
+  void publish(double t, std::string_view port, const Value& v);
   void delivery(double t, std::string_view connection, std::string_view port, const Value& v);
   void drop(double t, std::string_view connection, DropReason reason, std::string_view detail);
   // kind: "set", "unset" or "expire"; expiry < 0 means none.

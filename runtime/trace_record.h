@@ -12,6 +12,7 @@
 namespace arbc {
 
 enum class TraceKind {
+  Publish,
   Deliver,
   Drop,
   Event,
@@ -29,7 +30,8 @@ struct TraceRecord {
   // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from");
   // PluginError: the module or environment whose callback threw ("from").
   std::string connection;
-  // Deliver: the destination port; Event: the port whose container changed; PublishError.
+  // Publish: the source's out-port; Deliver: the destination port; Event: the port whose
+  // container changed; PublishError.
   std::string port;
   DropReason reason = DropReason::Rejected;  // Drop only
   std::string op;                            // Event: "set", "unset" or "expire"
