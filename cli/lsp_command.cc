@@ -1,7 +1,9 @@
 // `arbc lsp`: the language server on stdin/stdout (docs/cli.md#arbc-lsp, docs/editors.md).
-// Exit 0 after the client's shutdown and exit, 1 when the input ends without them (as the LSP
-// specifies), 2 on bad options.
+// Exit 0 after the client's shutdown and exit, 1 when the input ends without them, the client
+// stops reading or its process is gone (as the LSP specifies), 2 on bad options.
 #include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdlib>
 #include <iostream>
 
 #include "cli/commands.h"
@@ -33,6 +35,14 @@ int lsp_command(std::span<char*> args) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   options.verify = !no_verify;
+  // A client that goes away closes our stdout: writes then fail (the server sees it and
+  // exits 1) instead of killing the process with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  // A client whose process is gone: nothing is left to save, the workers may be mid-proof.
+  options.on_client_gone = [] {
+    std::cerr.flush();
+    std::_Exit(1);  // as the LSP asks of an exit without `shutdown`
+  };
   std::ios::sync_with_stdio(false);
   lsp::Server server(std::cin, std::cout, std::cerr, options);
   return server.run();

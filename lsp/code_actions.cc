@@ -7,12 +7,19 @@ namespace arbc::lsp {
 
 namespace {
 
-bool overlaps(const nlohmann::json& a, const nlohmann::json& b) {
-  auto before = [](const nlohmann::json& x, const nlohmann::json& y) {  // x < y
-    return x["line"].get<int>() < y["line"].get<int>() ||
-           (x["line"] == y["line"] && x["character"].get<int>() < y["character"].get<int>());
+bool before(Position x, Position y) {
+  return x.line < y.line || (x.line == y.line && x.character < y.character);
+}
+
+// Whether two LSP ranges overlap. `client` comes from the request: a part it lacks reads as
+// the start of the text (parse_position), never as a missing key.
+bool overlaps(const nlohmann::json& ours, const nlohmann::json& client) {
+  auto position = [](const nlohmann::json& range, const char* which) {
+    return range.is_object() ? parse_position(range.value(which, nlohmann::json::object()))
+                             : Position{};
   };
-  return !before(a["end"], b["start"]) && !before(b["end"], a["start"]);
+  return !before(position(ours, "end"), position(client, "start")) &&
+         !before(position(client, "end"), position(ours, "start"));
 }
 
 }  // namespace

@@ -58,8 +58,10 @@ std::optional<std::string> read_message(std::istream& in, std::string* err) {
 
 void MessageWriter::write(const std::string& body) {
   std::lock_guard lock(mutex_);
+  if (broken_) return;
   out_ << "Content-Length: " << body.size() << "\r\n\r\n" << body;
   out_.flush();
+  if (!out_) broken_ = true;
 }
 
 }  // namespace arbc::lsp

@@ -3,6 +3,7 @@
 // no library is in docs/editors.md#the-server.
 #pragma once
 
+#include <atomic>
 #include <istream>
 #include <mutex>
 #include <optional>
@@ -26,10 +27,13 @@ class MessageWriter {
  public:
   explicit MessageWriter(std::ostream& out) : out_(out) {}
   void write(const std::string& body);
+  // Whether a write failed (the client closed its end): nobody reads what we send any more.
+  bool broken() const { return broken_; }
 
  private:
   std::ostream& out_;
   std::mutex mutex_;
+  std::atomic<bool> broken_{false};
 };
 
 }  // namespace arbc::lsp

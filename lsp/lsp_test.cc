@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -60,6 +61,20 @@ TEST(Positions, CountUtf16UnitsAgainstCodePoints) {
   EXPECT_EQ(arbc_position(text, {1, 3}), std::make_pair(2, 3));
   EXPECT_EQ(offset_of(text, {1, 99}), text.find('x') + 1);  // past the end of the line
   EXPECT_EQ(offset_of(text, {9, 0}), text.size());          // past the last line
+}
+
+TEST(Positions, ClampOutOfRangeNumbersFromTheClient) {
+  std::string text = "ab\ncd";
+  Position p = parse_position({{"line", 1e15}, {"character", -7}});  // 1e15: a float, ignored
+  EXPECT_EQ(p.line, 0);
+  p = parse_position({{"line", int64_t{1} << 40}, {"character", -7}});
+  EXPECT_EQ(p.line, std::numeric_limits<int>::max() - 1);
+  EXPECT_EQ(p.character, 0);
+  EXPECT_EQ(offset_of(text, p), text.size());
+  EXPECT_EQ(arbc_position(text, p).first, std::numeric_limits<int>::max());
+  EXPECT_EQ(parse_position({{"line", uint64_t{1} << 63}}).line,
+            std::numeric_limits<int>::max() - 1);
+  EXPECT_EQ(parse_position("x").line, 0);
 }
 
 TEST(TextEdits, AppliesRangesAndWholeText) {
@@ -123,8 +138,7 @@ TEST(GrammarInfo, KeywordsComeFromTheGrammar) {
   EXPECT_EQ(std::find(k.begin(), k.end(), "{"), k.end());
   // The cache can be dropped between parses, and parsing still works.
   frontend::reset_parser_cache();
-  EXPECT_TRUE(frontend::check_text("app a \"x\";\nmodule M { in p: int; }\n", "x.spec", ".")
-                  .ok());
+  EXPECT_TRUE(frontend::check_text("app a \"x\";\nmodule M { in p: int; }\n", "x.spec", ".").ok());
 }
 
 TEST(DebouncedWorker, RunsOnceForABurstOfSchedules) {

@@ -1,6 +1,8 @@
 #include "lsp/positions.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 namespace arbc::lsp {
 
@@ -68,11 +70,18 @@ nlohmann::json position_json(Position p) { return {{"line", p.line}, {"character
 Position parse_position(const nlohmann::json& j) {
   Position p;
   if (!j.is_object()) return p;
-  auto line = j.find("line");
-  auto character = j.find("character");
-  if (line != j.end() && line->is_number_integer()) p.line = std::max(line->get<int>(), 0);
-  if (character != j.end() && character->is_number_integer())
-    p.character = std::max(character->get<int>(), 0);
+  // A number outside [0, INT_MAX - 1] is clamped (past the end of the text is its end; the
+  // 1-based line of arbc_position stays an int).
+  constexpr int64_t kMax = std::numeric_limits<int>::max() - 1;
+  auto read = [&](const char* name) {
+    auto it = j.find(name);
+    if (it == j.end() || !it->is_number_integer()) return 0;
+    if (it->is_number_unsigned())
+      return static_cast<int>(std::min<uint64_t>(it->get<uint64_t>(), kMax));
+    return static_cast<int>(std::clamp<int64_t>(it->get<int64_t>(), 0, kMax));
+  };
+  p.line = read("line");
+  p.character = read("character");
   return p;
 }
 

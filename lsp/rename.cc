@@ -25,17 +25,27 @@ bool is_identifier(const std::string& name) {
   return true;
 }
 
+// Whether the index is of the text the client has: edits from an older text would land on the
+// wrong characters.
+bool index_is_current(const Document& doc) {
+  return doc.analysis && doc.analysis->index && doc.analysis->index_text == doc.text;
+}
+
 }  // namespace
 
 nlohmann::json prepare_rename(const Document& doc, Position p) {
   Lookup l = look_up(doc, p);
-  if (!renamable(l.symbol)) return nullptr;
+  if (!renamable(l.symbol) || !index_is_current(doc)) return nullptr;
   return {{"range", index_range(doc, l.occurrence->loc)}, {"placeholder", l.symbol->name}};
 }
 
 std::optional<nlohmann::json> rename(const Document& doc, Position p, const std::string& name,
                                      std::string* err) {
   Lookup l = look_up(doc, p);
+  if (!index_is_current(doc)) {
+    *err = "the text does not parse now: fix the syntax error first, then rename";
+    return std::nullopt;
+  }
   if (!renamable(l.symbol)) {
     *err = "only events and rules can be renamed";
     return std::nullopt;

@@ -12,12 +12,17 @@ Server::Server(std::istream& in, std::ostream& out, std::ostream& log, ServerOpt
                      [this](const std::string& uri) { verify_document(uri); }) {}
 
 Server::~Server() {
+  client_watch_.reset();
   check_worker_.stop();
   verify_worker_.stop();
 }
 
 int Server::run() {
   for (;;) {
+    if (writer_.broken()) {  // the client closed its end of our output: it is gone
+      log("the client stopped reading the server's output; exiting");
+      return 1;
+    }
     std::string err;
     std::optional<std::string> body = read_message(in_, &err);
     if (!err.empty()) log(err);
@@ -30,7 +35,8 @@ int Server::run() {
             {"error", {{"code", kParseError}, {"message", "the message is not a JSON object"}}}});
       continue;
     }
-    if (message.value("method", "") == "exit") return shutdown_ ? 0 : 1;
+    auto method = message.find("method");  // any JSON value: dispatch() answers a bad one
+    if (method != message.end() && *method == "exit") return shutdown_ ? 0 : 1;
     dispatch(message);
   }
 }

@@ -9,12 +9,15 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <istream>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
+#include "lsp/client_watch.h"
 #include "lsp/debounced_worker.h"
 #include "lsp/document_store.h"
 #include "lsp/framing.h"
@@ -29,6 +32,10 @@ struct ServerOptions {
   std::chrono::milliseconds request_wait{1000};  // how long a request waits for an analysis
   double verify_timeout_seconds = 30;            // the solver's budget per proof
   bool verify = true;                            // prove on open and save
+  // Called (on a watch thread) once the process named by initialize's processId is gone;
+  // `arbc lsp` exits there. Null: the client's process is not watched.
+  std::function<void()> on_client_gone;
+  std::chrono::milliseconds client_poll{1000};  // how often the client's process is looked at
 };
 
 class Server {
@@ -45,6 +52,7 @@ class Server {
                                         struct RequestError* err);
   void notification(const std::string& method, const nlohmann::json& params);
   nlohmann::json initialize_result() const;
+  void watch_client(const nlohmann::json& initialize_params);
   std::optional<Document> document(const nlohmann::json& params);
   void check_document(const std::string& uri);   // on the check worker
   void verify_document(const std::string& uri);  // on the verify worker
@@ -63,6 +71,7 @@ class Server {
   bool shutdown_ = false;
   DebouncedWorker check_worker_;
   DebouncedWorker verify_worker_;
+  std::unique_ptr<ClientWatch> client_watch_;
 };
 
 // JSON-RPC error codes (LSP).

@@ -24,6 +24,17 @@ nlohmann::json Server::initialize_result() const {
           {"serverInfo", {{"name", "arbc"}, {"version", options_.version}}}};
 }
 
+void Server::watch_client(const nlohmann::json& initialize_params) {
+  auto pid = initialize_params.find("processId");
+  if (!options_.on_client_gone || pid == initialize_params.end() || !pid->is_number_integer())
+    return;
+  int id = pid->get<int>();
+  client_watch_ = std::make_unique<ClientWatch>(id, options_.client_poll, [this, id] {
+    log("the client's process " + std::to_string(id) + " is gone; exiting");
+    options_.on_client_gone();
+  });
+}
+
 std::optional<Document> Server::document(const nlohmann::json& params) {
   std::string uri = params.at("textDocument").at("uri").get<std::string>();
   return store_.wait_current(uri, std::chrono::steady_clock::now() + options_.request_wait);
@@ -33,6 +44,7 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
                                               const nlohmann::json& params, RequestError* err) {
   if (method == "initialize") {
     initialized_ = true;
+    watch_client(params);
     return initialize_result();
   }
   if (!initialized_) {

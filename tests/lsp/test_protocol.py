@@ -208,6 +208,19 @@ class Hover(Session):
         self.assertIn("in the `when` of: `take`, `put`, `pull`", text)
         self.assertIn("derived from `FaceDetector.face`", self.hover("e_face_detected ="))
 
+    def test_an_event_set_by_a_rule_names_it(self):
+        path = os.path.join(ROOT, "specs", "search_and_track.spec")
+        text, uri = read(path), file_uri(path)
+        self.c.open(uri, text)
+        self.assertEqual(self.c.wait_diagnostics(uri, version=1), [])
+        h = self.c.request("textDocument/hover", {
+            "textDocument": {"uri": uri},
+            "position": position_of(text, "not e_face_detected", 0, len("not "))})
+        value = h["contents"]["value"]
+        self.assertIn("set by monitor code", value)  # not fed by a stream
+        self.assertIn("set by: `track`", value)
+        self.assertIn("in the `when` of: `search`", value)
+
     def test_types_of_names_and_fields(self):
         self.assertIn("`obj`: `Object = {pos: vec3, dist: float}`", self.hover("obj.dist <= HAND"))
         self.assertIn(": `float`", self.hover("obj.dist <= HAND", 0, 5))
@@ -326,7 +339,33 @@ class Robustness(Session):
                                                   "position": {"line": 0, "character": 0}})
         self.assertEqual(e.exception.args[0], -32602)
         self.c.notify("textDocument/didChange", {"textDocument": {"uri": 7}})
+        self.c.send_raw(b"Content-Length: 7\r\n\r\n[1,2,3]")  # a batch: not supported
+        self.assertEqual(self.c.response(None)["error"]["code"], -32700)
+        self.c.send({"jsonrpc": "2.0", "id": 98, "method": 12})
+        self.assertEqual(self.c.response(98)["error"]["code"], -32600)
+        not_utf8 = b'{"id": 1, "x": "\xff"}'
+        self.c.send_raw(b"Content-Length: %d\r\n\r\n" % len(not_utf8) + not_utf8)
+        self.assertEqual(self.c.response(None)["error"]["code"], -32700)
         self.assertEqual(self.open_spec(), [])
+        # Requests on the open document with parameters of the wrong shape.
+        for method, params in [
+                ("textDocument/hover", {"textDocument": {"uri": self.uri}, "position": "x"}),
+                ("textDocument/hover", {"textDocument": {"uri": self.uri},
+                                        "position": {"line": 10**12, "character": -5}}),
+                ("textDocument/codeAction", {"textDocument": {"uri": self.uri}, "range": {}}),
+                ("textDocument/codeAction", {"textDocument": {"uri": self.uri}, "range": 3}),
+                ("textDocument/rename", {"textDocument": {"uri": self.uri},
+                                         "position": {"line": 0, "character": 0}}),
+                ("textDocument/references", {"textDocument": {"uri": self.uri},
+                                             "position": {"line": 3}, "context": 5})]:
+            with self.subTest(method=method, params=params):
+                try:
+                    self.c.request(method, params)
+                except RuntimeError as e:
+                    self.assertIn(e.args[0], (-32602, -32803))
+        self.assertIn("**rule**", self.c.request("textDocument/hover",
+                                                 self.at("take: from"))["contents"]["value"])
+        self.assertIsNone(self.c.proc.poll())
 
     def test_random_edits_never_crash_it(self):
         self.open_spec()
@@ -365,6 +404,52 @@ class Robustness(Session):
         self.assertEqual([(d["code"], d["range"]["start"]["line"]) for d in big],
                          [("duplicate", 20002)])
 
+    def test_every_request_at_every_position_answers(self):
+        """Every position request at every other column of table_clean, and of a copy with a
+        syntax error (the index is then of the last text that parsed): an answer each time."""
+        broken = self.text.replace("module Speak", "modle Speak", 1)
+        for version, text in ((1, self.text), (2, broken)):
+            if version == 1:
+                self.open_spec()
+            else:
+                self.c.change(self.uri, 2, [{"text": broken}])
+                self.assertTrue(self.c.wait_diagnostics(self.uri, version=2))
+            answered = 0
+            for line, content in enumerate(text.split("\n")):
+                for character in range(0, len(content) + 2, 2):
+                    where = {"textDocument": {"uri": self.uri},
+                             "position": {"line": line, "character": character}}
+                    ids = [self.c.request_async(m, where) for m in (
+                        "textDocument/hover", "textDocument/definition",
+                        "textDocument/documentHighlight", "textDocument/completion",
+                        "textDocument/prepareRename")]
+                    ids.append(self.c.request_async("textDocument/references",
+                                                    dict(where, context={})))
+                    for rid in ids:
+                        self.assertNotIn("error", self.c.response(rid), (line, character))
+                        answered += 1
+            self.assertGreater(answered, 5000)
+
+    def test_rename_waits_for_text_that_parses(self):
+        self.open_spec()
+        self.c.change(self.uri, 2, [{"text": self.text + "modle X { }\n"}])
+        self.assertTrue(self.c.wait_diagnostics(self.uri, version=2))
+        at = self.at("take: from")  # the index of the last text that parsed still knows it
+        self.assertIsNotNone(self.c.request("textDocument/hover", at))
+        self.assertIsNone(self.c.request("textDocument/prepareRename", at))
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/rename", dict(at, newName="grab"))
+        self.assertIn("does not parse now", e.exception.args[1])
+
+    def test_a_document_over_the_limit_is_an_io_diagnostic(self):
+        huge = "// " + "x" * (64 << 20) + "\n"  # 64 MiB and a bit: arbc check's limit
+        big_uri = file_uri(os.path.join(ROOT, "specs", "too_big.spec"))
+        self.c.open(big_uri, huge)
+        diags = self.c.wait_diagnostics(big_uri, timeout=120)
+        self.assertEqual([d["code"] for d in diags], ["io"])
+        self.assertIn("larger than 64 MiB", diags[0]["message"])
+        self.assertEqual(self.open_spec(), [])
+
     def test_deep_nesting_is_a_diagnostic(self):
         text = self.text + "\nconst DEEP = " + "(" * 5000 + "1" + ")" * 5000 + ";\n"
         diags = self.open_spec(text)
@@ -376,6 +461,58 @@ class Robustness(Session):
         self.open_spec(read(os.path.join(ROOT, "specs", "face_filter.spec")), uri=other)
         status = self.c.request("arbc/status", None)
         self.assertGreaterEqual(status["parserCacheResets"], 1)
+
+
+class ClientGone(unittest.TestCase):
+    """A client that disappears: the server exits 1 (no `shutdown`), never hangs or dies of a
+    signal, and says why on stderr."""
+
+    def start(self, process_id=None):
+        proc = subprocess.Popen([ARBC, "lsp", "--no-verify"], stdin=subprocess.PIPE,
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        body = json.dumps({"jsonrpc": "2.0", "id": 1, "method": "initialize",
+                           "params": {"processId": process_id, "capabilities": {}}}).encode()
+        proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        proc.stdin.flush()
+        header = proc.stdout.readline()
+        self.assertTrue(header.startswith(b"Content-Length:"), header)
+        return proc
+
+    def finish(self, proc, why):
+        try:
+            code = proc.wait(timeout=30)
+        finally:
+            if proc.poll() is None:
+                proc.kill()
+        err = proc.stderr.read().decode()
+        self.assertEqual(code, 1, err)
+        self.assertIn(why, err)
+
+    def test_input_ends_inside_a_message(self):
+        proc = self.start()
+        proc.stdin.write(b"Content-Length: 100\r\n\r\n{\"jsonrpc\"")
+        proc.stdin.close()
+        self.finish(proc, "the input ended inside a message body")
+
+    def test_the_client_stops_reading(self):
+        proc = self.start()
+        proc.stdout.close()
+        body = json.dumps({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}).encode()
+        for _ in range(3):  # the first answer may still fit in the pipe's buffer
+            try:
+                proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+                proc.stdin.flush()
+            except BrokenPipeError:
+                break
+        self.finish(proc, "the client stopped reading")
+        proc.stdin.close()
+
+    def test_the_client_process_is_gone(self):
+        client = subprocess.Popen(["sleep", "0.5"])
+        proc = self.start(process_id=client.pid)
+        client.wait()  # gone and reaped; the server's pipes stay open
+        self.finish(proc, "the client's process %d is gone" % client.pid)
+        proc.stdin.close()
 
 
 if __name__ == "__main__":
