@@ -1,5 +1,6 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
+//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
+//                    [--inputs FILE] [--stub] [--stub-rate PORT=HZ]... [--diff TRACE]`
 // Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
@@ -24,6 +25,7 @@
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
+#include "cli/run_stand_ins.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -127,6 +129,7 @@ struct RunArgs {
   bool no_verify = false;
   RunOptions options;
   std::string report_path;
+  RunStandIns stand_ins;  // --inputs, --stub, --stub-rate, --diff
 };
 
 // Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -150,6 +153,7 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
+  a.stand_ins.add_options(cli);  // --inputs, --stub, --stub-rate, --diff
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -184,6 +188,7 @@ int run_command(std::span<char*> args) {
   RunArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
   RunOptions& options = a.options;
+  RunStandIns& stand_ins = a.stand_ins;
   if (!load_plugins(a.plugins)) return kExitBadInput;
 
   std::string dir, error;
@@ -195,8 +200,12 @@ int run_command(std::span<char*> args) {
     print_errors(load.errors);
     return kExitBadInput;
   }
+  if (!stand_ins.prepare(load.app, &error)) {
+    print_errors({error});
+    return kExitBadInput;
+  }
   std::vector<std::string> mismatches =
-      check_modules(load.app, (fs::path(dir) / "app.json").string());
+      check_modules(load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry());
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
@@ -206,10 +215,11 @@ int run_command(std::span<char*> args) {
       prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
-  if (!a.report_path.empty()) options.trace_records = &records;
+  if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
-  std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
+  std::unique_ptr<Runtime> runtime =
+      Runtime::create(load.app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;
@@ -224,6 +234,7 @@ int run_command(std::span<char*> args) {
   }
 
   RunEnd end{load.app, *runtime, options, records, a.report_path, report_file, proof};
+  if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(load.app); };
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;
@@ -233,7 +244,7 @@ int run_command(std::span<char*> args) {
   if (!interrupt.run_returned()) {
     for (;;) pause();  // the watchdog is ending the process
   }
-  return finish_run(end, interrupt.signal_name());
+  return stand_ins.diff(load.app, records, finish_run(end, interrupt.signal_name()));
 }
 
 }  // namespace arbc::cli

@@ -77,6 +77,11 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     verdict = std::string(success ? "success" : "failure") +
               " (no environment; judged by quarantined connections)";
   }
+  if (end.stand_ins) {
+    std::string received = end.stand_ins();
+    std::fputs(received.c_str(), stdout);
+    summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
+  }
   std::printf("result: %s\n", verdict.c_str());
   if (!write_report(end, report_input(end, success, verdict, summary))) return 3;
   return success ? 0 : 3;

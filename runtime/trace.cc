@@ -51,10 +51,7 @@ void Trace::end() {
 }
 
 void Trace::publish(double t, std::string_view port, const Value& v) {
-  if (records_) {
-    TraceRecord& r = record(t, TraceKind::Publish);
-    r.port = port;
-  }
+  if (records_) record(t, TraceKind::Publish).port = port;
   if (!file_) return;
   begin(t, "publish");
   field("port", port);

@@ -55,8 +55,9 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
   std::istringstream lines(text);
   std::string line;
   size_t i = 0;
-  static const char* kTypes[] = {"publish", "deliver", "drop",          "event",        "error",  "quarantine",
-                                 "log",     "publish-error", "plugin-error", "pending"};
+  static const char* kTypes[] = {"deliver",      "drop",         "event",   "error",
+                                 "quarantine",   "log",          "publish-error",
+                                 "plugin-error", "pending",      "publish"};
   while (std::getline(lines, line)) {
     ASSERT_LT(i, records.size()) << line;
     const TraceRecord& r = records[i++];

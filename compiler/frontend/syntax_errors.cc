@@ -50,6 +50,12 @@ const char* describe_rule(size_t rule) {
       return "the assertion";
     case ArbcParser::RuleStmt:
       return "the statement";
+    case ArbcParser::RuleTestDecl:
+      return "the test";
+    case ArbcParser::RuleTestsForDecl:
+      return "the `tests for` declaration";
+    case ArbcParser::RuleTestStep:
+      return "the test step";
     case ArbcParser::RuleFieldType:
       return "the record field";
     case ArbcParser::RuleFieldInit:
@@ -74,7 +80,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
                                              "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert"};
+                                             "arbitrate", "connect", "assert",    "test",   "tests"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
