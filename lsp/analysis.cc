@@ -20,8 +20,10 @@ std::shared_ptr<const Analysis> analyze(const std::string& text, int version,
   if (check.spec) {
     std::shared_ptr<const ast::Spec> spec = std::move(check.spec);
     a->spec = spec;
-    a->index = build_index(*spec);
+    a->index = build_index(*spec, file);
     a->index_text = text;
+    a->app_file = std::move(check.app_file);
+    a->app_text = std::move(check.app_source);
     a->current = true;
     if (ok) {
       lower::LowerOptions options;
@@ -36,6 +38,8 @@ std::shared_ptr<const Analysis> analyze(const std::string& text, int version,
     a->spec = previous->spec;
     a->index = previous->index;
     a->index_text = previous->index_text;
+    a->app_file = previous->app_file;
+    a->app_text = previous->app_text;
   }
   if (!a->lowered && previous) a->lowered = previous->lowered;
   a->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

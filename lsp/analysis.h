@@ -23,6 +23,9 @@ struct Analysis {
   std::shared_ptr<const ast::Spec> spec;
   std::shared_ptr<const SymbolIndex> index;
   std::string index_text;  // the text spec and index locations refer to
+  // A tests file (`tests for "app.spec";`): the app's spec, where the app's names are
+  // declared (docs/testing.md). Empty for any other document.
+  std::string app_file, app_text;
   bool current = false;
   // The last version without errors, lowered (effective guards, decision tables).
   std::shared_ptr<const lower::LoweredApp> lowered;

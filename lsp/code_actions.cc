@@ -31,6 +31,7 @@ nlohmann::json code_actions(const Document& doc, const nlohmann::json& range) {
     std::optional<std::string> fix = suggested_fix(d);
     if (!fix || d.loc.line <= 0) continue;
     nlohmann::json diagnostic = diagnostic_json(d, doc.text, doc.uri);
+    if (!diagnostic.contains("data")) continue;  // in another file: no name here to replace
     if (!overlaps(diagnostic["range"], range)) continue;
     nlohmann::json edit = {{"range", diagnostic["range"]}, {"newText", *fix}};
     out.push_back({{"title", "Change to '" + *fix + "'"},

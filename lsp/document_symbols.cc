@@ -1,5 +1,7 @@
 // The outline (textDocument/documentSymbol): declarations in file order, ports under their
 // module and rules under their port, from the last text that parsed.
+#include <algorithm>
+
 #include "lsp/features.h"
 #include "lsp/lookup.h"
 
@@ -12,6 +14,7 @@ enum Kind {
   kModule = 2,
   kNamespace = 3,
   kPackage = 4,
+  kMethod = 6,
   kProperty = 7,
   kFunction = 12,
   kConstant = 14,
@@ -33,14 +36,24 @@ Loc span(Loc a, const Loc& b) {
   return a;
 }
 
+// Null for a declaration in another file (a tests file's app spec).
 nlohmann::json item(const Document& doc, const std::string& name, int kind, const Loc& range,
                     const Loc& selection, const std::string& detail = "") {
+  if (in_app_spec(doc, selection)) return nullptr;
   nlohmann::json j = {{"name", name.empty() ? "?" : name},
                       {"kind", kind},
                       {"range", index_range(doc, span(range, selection))},
                       {"selectionRange", index_range(doc, selection)}};
   if (!detail.empty()) j["detail"] = detail;
   return j;
+}
+
+// A test from its name to its last step or expectation.
+Loc test_span(const ast::TestDecl& t) {
+  Loc whole = t.loc;
+  for (const ast::TestStep& s : t.steps) whole = span(whole, s.loc);
+  for (const ast::TestExpect& x : t.expects) whole = span(whole, x.loc);
+  return whole;
 }
 
 void add_modules(const Document& doc, const ast::Spec& spec, nlohmann::json& out) {
@@ -55,6 +68,7 @@ void add_modules(const Document& doc, const ast::Spec& spec, nlohmann::json& out
                               p.direction == model::Direction::In ? "in" : "out"));
     }
     nlohmann::json j = item(doc, m.name, kModule, whole, name, m.doc);
+    if (j.is_null()) continue;
     j["children"] = children;
     out.push_back(j);
   }
@@ -73,6 +87,7 @@ void add_arbitrations(const Document& doc, const ast::Spec& spec, nlohmann::json
     }
     nlohmann::json j = item(doc, "arbitrate " + a.port.qualified(), kNamespace, whole, a.port.loc,
                             a.by_priority ? "by priority" : "");
+    if (j.is_null()) continue;
     j["children"] = children;
     out.push_back(j);
   }
@@ -101,6 +116,10 @@ nlohmann::json document_symbols(const Document& doc) {
   for (const ast::AssertDecl& a : spec.asserts)
     out.push_back(item(doc, "assert " + a.port.qualified() + ": " + a.rule, kBoolean,
                        a.property ? span(a.loc, a.property->loc) : a.loc, a.port.loc));
+  for (const ast::TestDecl& t : spec.tests)
+    out.push_back(item(doc, "test \"" + t.name + "\"", kMethod, test_span(t), t.loc,
+                       t.on.empty() ? "" : "on " + t.on));
+  out.erase(std::remove(out.begin(), out.end(), nullptr), out.end());
   return out;
 }
 

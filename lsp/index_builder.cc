@@ -36,6 +36,7 @@ class Builder {
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
     for (const ast::InvariantDecl& i : spec_.invariants) expr(i.formula.get());
+    for (const ast::TestDecl& t : spec_.tests) test(t);
   }
 
  private:
@@ -157,6 +158,32 @@ class Builder {
     expr(a.property.get());
   }
 
+  // A `test`: its rule, ports, events and the names in its values and times. A test's
+  // `set` is not a rule's: set_by stays the rules'.
+  void test(const ast::TestDecl& t) {
+    if (t.on_rule) ix_.add_occurrence("rule:" + t.on, name_loc(t.on_loc, t.on));
+    for (const ast::TestStep& s : t.steps) {
+      expr(s.at.expr.get());
+      if (s.kind == ast::TestStep::Kind::Input) {
+        port_ref(s.port);
+        expr(s.value.get());
+      } else {
+        ix_.add_occurrence("event:" + s.event, name_loc(s.event_loc, s.event));
+      }
+    }
+    for (const ast::TestExpect& x : t.expects) {
+      if (x.kind == ast::TestExpect::Kind::Drops && x.rule_decl)
+        ix_.add_occurrence("rule:" + x.rule, name_loc(x.rule_loc, x.rule));
+      if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing)
+        port_ref(x.port);
+      expr(x.value.get());
+      if (x.window.present) {
+        expr(x.window.from.expr.get());
+        expr(x.window.to.expr.get());
+      }
+    }
+  }
+
   // Declares the message name a body or predicate sees, at the source port's name.
   template <typename F>
   void with_message(const ast::PortRef& source, const std::string& name, F body) {
@@ -276,8 +303,9 @@ void Builder::name(const ast::Expr& e) {
 
 }  // namespace
 
-std::unique_ptr<SymbolIndex> build_index(const ast::Spec& spec) {
+std::unique_ptr<SymbolIndex> build_index(const ast::Spec& spec, const std::string& file) {
   auto ix = std::make_unique<SymbolIndex>();
+  ix->file = file;
   Builder(spec, *ix).run();
   return ix;
 }

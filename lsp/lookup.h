@@ -20,7 +20,10 @@ struct Lookup {
 
 Lookup look_up(const Document& doc, Position p);
 
-// {"uri", "range"} of a location in the indexed text.
+// Whether `loc` is in the app's spec of a tests file (`tests for`), not in the document.
+bool in_app_spec(const Document& doc, const Loc& loc);
+
+// {"uri", "range"} of a location in the indexed text (or in a tests file's app spec).
 nlohmann::json location_json(const Document& doc, const Loc& loc);
 nlohmann::json index_range(const Document& doc, const Loc& loc);
 

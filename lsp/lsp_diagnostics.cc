@@ -32,31 +32,52 @@ std::optional<std::string> suggested_fix(const Diagnostic& d) {
   return std::nullopt;
 }
 
+namespace {
+
+// A range in a file whose text we do not have: columns count code points.
+nlohmann::json range_elsewhere(const model::SourceLocation& loc) {
+  int end_line = loc.end_line > 0 ? loc.end_line : loc.line;
+  int end_column = loc.end_line > 0 ? loc.end_column : loc.column + 1;
+  return {{"start", position_json({loc.line - 1, loc.column - 1})},
+          {"end", position_json({end_line - 1, end_column - 1})}};
+}
+
+}  // namespace
+
 nlohmann::json diagnostic_json(const Diagnostic& d, std::string_view text, const std::string& uri) {
+  const std::string path = uri_to_path(uri);
   model::SourceLocation at = d.loc;
+  std::string message = d.message;
+  nlohmann::json related = nlohmann::json::array();
+  // In another file (a tests file's app spec, docs/testing.md): shown at the start of this
+  // document, saying where, with that place as related information.
+  bool moved = at.line > 0 && !at.file.empty() && at.file != path;
+  if (moved) {
+    message =
+        at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + message;
+    related.push_back(
+        {{"location", {{"uri", path_to_uri(at.file)}, {"range", range_elsewhere(at)}}},
+         {"message", "the error is here"}});
+    at.line = 0;
+  }
   if (at.line <= 0) at = {d.loc.file, 1, 1, 1, 1};  // about the whole file: its start
   nlohmann::json j = {{"range", range_json(text, at)},
                       {"severity", lsp_severity(d.severity)},
                       {"source", "arbc"},
-                      {"message", d.message}};
+                      {"message", message}};
   if (!d.id.empty()) j["code"] = d.id;
-  nlohmann::json related = nlohmann::json::array();
   for (const Diagnostic& n : d.notes) {
-    bool here = n.loc.line > 0 && (n.loc.file.empty() || n.loc.file == d.loc.file);
+    bool here = n.loc.line > 0 && (n.loc.file.empty() ? !moved : n.loc.file == path);
     bool elsewhere = n.loc.line > 0 && !here;
-    nlohmann::json range = range_json(text, here ? n.loc : at);
-    if (elsewhere) {  // without that file's text, columns count code points
-      int end_line = n.loc.end_line > 0 ? n.loc.end_line : n.loc.line;
-      int end_column = n.loc.end_line > 0 ? n.loc.end_column : n.loc.column + 1;
-      range = {{"start", position_json({n.loc.line - 1, n.loc.column - 1})},
-               {"end", position_json({end_line - 1, end_column - 1})}};
-    }
     related.push_back(
-        {{"location", {{"uri", elsewhere ? path_to_uri(n.loc.file) : uri}, {"range", range}}},
+        {{"location",
+          {{"uri", elsewhere ? path_to_uri(n.loc.file.empty() ? d.loc.file : n.loc.file) : uri},
+           {"range", elsewhere ? range_elsewhere(n.loc) : range_json(text, here ? n.loc : at)}}},
          {"message", n.message}});
   }
   if (!related.empty()) j["relatedInformation"] = related;
-  if (auto fix = suggested_fix(d)) j["data"] = {{"fix", *fix}};
+  // A fix replaces the diagnostic's range: only where that range is the misspelt name.
+  if (auto fix = suggested_fix(d); fix && !moved) j["data"] = {{"fix", *fix}};
   return j;
 }
 

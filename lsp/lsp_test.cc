@@ -104,13 +104,35 @@ TEST(Diagnostics, DidYouMeanIsAFix) {
   frontend::CheckResult r = frontend::check_text(
       "app a \"x\";\nmodule M { in p: int; out q: int; }\nevent e_taken;\n"
       "arbitrate M.p { r: from M.q when e_tkn; }\n",
-      "x.spec", ".");
+      "/x.spec", ".");
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(suggested_fix(r.diagnostics[0]), "e_taken");
   nlohmann::json j = diagnostic_json(r.diagnostics[0], r.source, "file:///x.spec");
   EXPECT_EQ(j["code"], "unknown-event");
   EXPECT_EQ(j["data"]["fix"], "e_taken");
   EXPECT_EQ(j["range"]["start"]["line"], 3);
+}
+
+// A tests file shows an error in its app's spec at its own start, saying where, with the
+// place as related information and no fix (the name to replace is not in this document).
+TEST(Diagnostics, AnotherFilesErrorIsAtTheStartWithItsPlace) {
+  frontend::CheckResult r = frontend::check_text(
+      "app a \"x\";\nmodule M { in p: int; out q: int; }\nevent e_taken;\n"
+      "arbitrate M.p { r: from M.q when e_tkn; }\n",
+      "/app.spec", ".");
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  nlohmann::json j =
+      diagnostic_json(r.diagnostics[0], "tests for \"app.spec\";\n", "file:///app.test.spec");
+  EXPECT_EQ(j["message"], "/app.spec:4:34: unknown event 'e_tkn'");
+  EXPECT_EQ(j["range"]["start"]["line"], 0);
+  EXPECT_FALSE(j.contains("data"));
+  ASSERT_GE(j["relatedInformation"].size(), 2u);
+  EXPECT_EQ(j["relatedInformation"][0]["location"]["uri"], "file:///app.spec");
+  EXPECT_EQ(j["relatedInformation"][0]["location"]["range"]["start"]["line"], 3);
+  EXPECT_EQ(j["relatedInformation"][0]["location"]["range"]["start"]["character"], 33);
+  // The "did you mean" note has no place of its own: it points at the diagnostic as shown.
+  EXPECT_EQ(j["relatedInformation"][1]["location"]["uri"], "file:///app.test.spec");
+  EXPECT_EQ(j["relatedInformation"][1]["message"], "did you mean 'e_taken'?");
 }
 
 TEST(SymbolIndex, ResolvesUsesToDeclarations) {

@@ -35,7 +35,8 @@ bool index_is_current(const Document& doc) {
 
 nlohmann::json prepare_rename(const Document& doc, Position p) {
   Lookup l = look_up(doc, p);
-  if (!renamable(l.symbol) || !index_is_current(doc)) return nullptr;
+  if (!renamable(l.symbol) || !index_is_current(doc) || in_app_spec(doc, l.symbol->def))
+    return nullptr;
   return {{"range", index_range(doc, l.occurrence->loc)}, {"placeholder", l.symbol->name}};
 }
 
@@ -48,6 +49,11 @@ std::optional<nlohmann::json> rename(const Document& doc, Position p, const std:
   }
   if (!renamable(l.symbol)) {
     *err = "only events and rules can be renamed";
+    return std::nullopt;
+  }
+  if (in_app_spec(doc, l.symbol->def)) {
+    *err = "'" + l.symbol->name + "' is declared in " + l.symbol->def.file +
+           ": rename it there (its tests files are not renamed with it)";
     return std::nullopt;
   }
   if (!is_identifier(name)) {

@@ -9,7 +9,14 @@ Server::Server(std::istream& in, std::ostream& out, std::ostream& log, ServerOpt
       options_(std::move(options)),
       check_worker_(options_.check_delay, [this](const std::string& uri) { check_document(uri); }),
       verify_worker_(options_.verify_delay,
-                     [this](const std::string& uri) { verify_document(uri); }) {}
+                     [this](const std::string& uri) { verify_document(uri); }) {
+  // A stream tied to `out` flushes it before its own input or output: std::cin and std::cerr
+  // are tied to std::cout. That flush would run outside the writer's lock (reading the next
+  // message on this thread, logging on any) while a worker writes a message: a data race
+  // seen as a header whose body was lost under random edits (tests/lsp/random_edits.py).
+  in_.tie(nullptr);
+  log_.tie(nullptr);
+}
 
 Server::~Server() {
   client_watch_.reset();

@@ -50,6 +50,7 @@ void SymbolIndex::add_occurrence(const std::string& key, Loc loc, bool definitio
                                  bool implicit_flag) {
   auto it = by_key_.find(key);
   if (it == by_key_.end() || loc.line <= 0) return;
+  if (!file.empty() && !loc.file.empty() && loc.file != file) return;
   occurrences.push_back({std::move(loc), it->second, definition, implicit_flag});
 }
 

@@ -67,14 +67,17 @@ class SymbolIndex {
   size_t add_symbol(Symbol s);  // keeps the first of equal keys; returns its index
   void add_occurrence(const std::string& key, Loc loc, bool definition = false,
                       bool implicit_flag = false);
+  std::string file;  // occurrences in other files are not added; empty: all are
 
  private:
   std::map<std::string, size_t> by_key_;
 };
 
 // Builds the index of a spec that went through sema (errors allowed: unresolved names are
-// left out).
-std::unique_ptr<SymbolIndex> build_index(const ast::Spec& spec);
+// left out). With `file`, only occurrences written in that file are kept: a tests file's
+// spec is its app's with the tests added, and the app's names are written in the app's spec
+// (their symbols keep their definitions there).
+std::unique_ptr<SymbolIndex> build_index(const ast::Spec& spec, const std::string& file = "");
 
 // A location covering only `name` at the start of `loc` (declarations whose loc is wider).
 Loc name_loc(const Loc& loc, const std::string& name);

@@ -5,7 +5,7 @@ usage: test_protocol.py ARBC [unittest args]   (run from the repository root)
 """
 import json
 import os
-import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -27,6 +27,19 @@ def read(path):
 def check_json(text):
     """`arbc check --format json` of text saved as a file next to the spec (same script dir)."""
     with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(SPEC),
+                                     delete=False) as f:
+        f.write(text)
+    try:
+        proc = subprocess.run([ARBC, "check", "--format", "json", f.name], capture_output=True,
+                              text=True, timeout=60)
+        return json.loads(proc.stdout)["diagnostics"]
+    finally:
+        os.unlink(f.name)
+
+
+def check_json_at(text, path):
+    """`arbc check --format json` of text saved beside `path` (so that relative paths hold)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(path),
                                      delete=False) as f:
         f.write(text)
     try:
@@ -159,9 +172,12 @@ class Navigation(Session):
         refs = self.c.request("textDocument/references",
                               dict(self.at("e_pull_idle }"), context={"includeDeclaration": True}))
         lines = sorted(r["range"]["start"]["line"] for r in refs)
-        # The declaration, take, track and search's `when`s, and one assert.
+        # The declaration, take, track and search's `when`s, one assert and the tests' `set`s;
+        # not the flags in the tests' status messages ("e_pull_idle": a string).
         expected = sorted(i for i, l in enumerate(self.text.split("\n"))
-                          for _ in range(l.split("//")[0].count("e_pull_idle")))
+                          for _ in re.finditer(r'(?<!")\be_pull_idle\b(?!")', l.split("//")[0]))
+        self.assertGreaterEqual(len([l for l in expected if l > position_of(
+            self.text, "test ")["line"]]), 2)  # the tests' `set e_pull_idle;`
         self.assertEqual(lines, expected)
         for r in refs:
             s, e = r["range"]["start"], r["range"]["end"]
@@ -178,6 +194,51 @@ class Navigation(Session):
         self.assertEqual([c["name"] for c in pick["children"]], ["take", "put"])
         module = symbols[names.index("PickAndPlace")]
         self.assertEqual([c["name"] for c in module["children"]], ["cmd", "status"])
+        self.assertIn('test "put after take"', names)
+        on_take = symbols[names.index('test "take picks the closest object within hand reach"')]
+        self.assertEqual(on_take["detail"], "on take")
+
+    def test_references_of_a_rule_reach_into_the_tests(self):
+        refs = self.c.request("textDocument/references",
+                              dict(self.at("take: from"), context={"includeDeclaration": False}))
+        lines = self.text.split("\n")
+        quoted = [lines[r["range"]["start"]["line"]].strip() for r in refs]
+        for start in ('expect take drops "not', 'test "take picks the c', "assert PickAndPlace.cmd"):
+            self.assertTrue(any(q.startswith(start) for q in quoted), (start, quoted))
+
+    def test_definition_from_a_test_step(self):
+        self.assertEqual(self.definition_line("BucketDetector.bucket <-", 0, len("BucketDetector.")),
+                         position_of(self.text, "bucket: vec3"))
+        self.assertEqual(self.definition_line("set e_pull_idle;", 0, len("set ")),
+                         position_of(self.text, "e_pull_idle }"))
+
+
+class TestsFile(Session):
+    """A tests file (`tests for "gaze.spec";`): checked against its app; names declared in the
+    app's spec lead there."""
+
+    def setUp(self):
+        super().setUp()
+        self.path = os.path.join(ROOT, "specs", "testing", "gaze.test.spec")
+        self.app = os.path.join(ROOT, "specs", "testing", "gaze.spec")
+        self.text, self.uri = read(self.path), file_uri(self.path)
+
+    def test_checked_against_its_app(self):
+        self.assertEqual(self.open_spec(), [])
+        loc = self.c.request("textDocument/definition",
+                             self.at("HeadControl.gaze receives", 0, len("HeadControl.")))
+        self.assertEqual(loc["uri"], file_uri(self.app))
+        self.assertEqual(loc["range"]["start"], position_of(read(self.app), "in gaze: vec3", 0, 3))
+        names = [s["name"] for s in self.c.request("textDocument/documentSymbol",
+                                                   {"textDocument": {"uri": self.uri}})]
+        self.assertTrue(names and all(n.startswith("test ") for n in names), names)
+
+    def test_an_error_is_at_its_place_in_the_tests_file(self):
+        broken = self.text.replace("HeadControl.gaze receives", "HeadControl.gaze_x receives", 1)
+        diags = self.open_spec(broken)
+        self.assertEqual([(d["code"], d["range"]["start"]) for d in diags], [(
+            check_json_at(broken, self.path)[0]["id"],
+            position_of(broken, "HeadControl.gaze_x", 0, 0))])
 
 
 class Hover(Session):
@@ -366,29 +427,6 @@ class Robustness(Session):
         self.assertIn("**rule**", self.c.request("textDocument/hover",
                                                  self.at("take: from"))["contents"]["value"])
         self.assertIsNone(self.c.proc.poll())
-
-    def test_random_edits_never_crash_it(self):
-        self.open_spec()
-        rng = random.Random(20)
-        text = self.text
-        pieces = ["{", "}", ";", "when", " not ", "e_taken", ".", "->", "\"", "//", "\n", "é", "😀",
-                  "arbitrate X.y {", "0.5s", "(", ")"]
-        for version in range(2, 302):
-            lines = text.split("\n")
-            line = rng.randrange(len(lines) + 2)  # sometimes past the end
-            start = {"line": line, "character": rng.randrange(0, 90)}
-            end = {"line": line + rng.randrange(0, 2), "character": rng.randrange(0, 90)}
-            if (end["line"], end["character"]) < (start["line"], start["character"]):
-                start, end = end, start
-            self.c.change(self.uri, version, [{"range": {"start": start, "end": end},
-                                               "text": rng.choice(pieces)}])
-            if version % 50 == 0:
-                self.c.request("textDocument/hover", self.at("arbitrate", text=self.text))
-                self.c.request("textDocument/completion",
-                               {"textDocument": {"uri": self.uri}, "position": start})
-                self.c.request("textDocument/documentSymbol", {"textDocument": {"uri": self.uri}})
-        self.c.change(self.uri, 400, [{"text": self.text}])
-        self.assertEqual(self.c.wait_diagnostics(self.uri, version=400), [])
 
     def test_a_huge_document_does_not_stop_the_others(self):
         # 20000 lines (a table_clean is 100): checked, and the small spec opened after it

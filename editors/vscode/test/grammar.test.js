@@ -63,3 +63,27 @@ test("keywords, names, durations, strings and comments get their scopes", async 
   assert.strictEqual(scope("// c"), "comment.line.double-slash.arbc");
   assert.strictEqual(scope(" b "), "comment.block.arbc");
 });
+
+test("test declarations: keywords, the rule, the arrow and the window", async () => {
+  const grammar = await loadGrammar();
+  const { tokens } = tokenize(grammar,
+    'tests for "gaze.spec";\ntest "t" on track {\n  at 0s Face.face <- { certainty: 0.9 };\n' +
+    '  expect search drops "not-selected" within 1s..2s;\n  expect Head.gaze receives nothing;\n}\n');
+  const scope = (text, n = 0) =>
+    tokens.filter((t) => t.text === text)[n].scopes.slice(1).join(" ");
+  assert.strictEqual(scope("tests"), "keyword.declaration.arbc");
+  assert.strictEqual(scope("for"), "keyword.other.arbc");
+  assert.strictEqual(scope("test"), "keyword.declaration.arbc");
+  assert.strictEqual(scope("on"), "keyword.other.arbc");
+  assert.strictEqual(scope("track"), "entity.name.function.rule.arbc");
+  assert.strictEqual(scope("at"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("<-"), "keyword.operator.arrow.arbc");
+  assert.strictEqual(scope("expect"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("search"), "entity.name.function.rule.arbc");
+  assert.strictEqual(scope("drops"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("within"), "keyword.control.test.arbc");
+  assert.strictEqual(scope(".."), "punctuation.separator.range.arbc");
+  assert.strictEqual(scope("2s"), "constant.numeric.duration.arbc");
+  assert.strictEqual(scope("receives"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("nothing"), "keyword.control.test.arbc");
+});
