@@ -1,4 +1,5 @@
 #include "core/app_json.h"
+#include "core/body_text.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -96,6 +97,22 @@ std::vector<SourceMapEntry> read_source_map(const Json& j, const std::string& pa
     out.push_back({pair[0].get<int>(), pair[1].get<int>()});
   }
   return out;
+}
+
+// `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded.
+std::optional<Body> read_body(const Json& j, const std::string& path) {
+  if (!j.contains("body")) return std::nullopt;
+  const Json& arr = array_member(j, path, "body");
+  Body body;
+  for (size_t i = 0; i < arr.size(); ++i) {
+    std::string p = path + ".body[" + std::to_string(i) + "]";
+    if (!arr[i].is_string()) throw LoadError(p + ": expected a string");
+    std::string err;
+    std::optional<BodyStmt> s = parse_body_stmt(arr[i].get<std::string>(), &err);
+    if (!s) throw LoadError(p + ": " + err);
+    body.push_back(std::move(*s));
+  }
+  return body;
 }
 
 // A constraint is its text (grammar in core/constraint.h), the one representation.
@@ -205,6 +222,7 @@ App read_app(const Json& root) {
     c.must_unset = string_list(cj, p, "must_unset");
     c.activity_event = opt_string(cj, p, "activity_event");
     c.opaque = opt_bool(cj, p, "opaque");
+    c.body = read_body(cj, p);
     c.trig_interval = opt_number(cj, p, "trig_interval");
     c.throttle = opt_number(cj, p, "throttle");
     c.monitor = opt_string(cj, p, "monitor");
@@ -257,6 +275,22 @@ App read_app(const Json& root) {
       inv.formula = read_constraint(invs[i], p, "formula");
       inv.loc = read_location(invs[i], p);
       app.invariants.push_back(std::move(inv));
+    }
+  }
+  if (root.contains("resources")) {
+    const Json& rs = array_member(root, r, "resources");
+    for (size_t i = 0; i < rs.size(); ++i) {
+      std::string p = "resources[" + std::to_string(i) + "]";
+      Resource res;
+      res.name = get_string(rs[i], p, "name");
+      res.ports = string_list(rs[i], p, "ports");
+      if (rs[i].contains("uses")) {
+        std::string err;
+        res.uses = parse_body_expr(get_string(rs[i], p, "uses"), &err);
+        if (!res.uses) throw LoadError(p + ".uses: " + err);
+      }
+      res.loc = read_location(rs[i], p);
+      app.resources.push_back(std::move(res));
     }
   }
   return app;

@@ -28,6 +28,7 @@ decl
   | arbitrateDecl
   | connectDecl
   | assertDecl
+  | resourceDecl
   ;
 
 appDecl          : 'app' ID STRING? ';' ;
@@ -46,6 +47,8 @@ arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete=
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;
 assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
+// A resource shared by several ports: at most one of them receives a command that uses it.
+resourceDecl     : 'resource' ID '{' portRef (',' portRef)* ','? '}' ('when' expr)? ';' ;
 
 portRef  : ID '.' ID ;
 duration : DURATION | NUMBER | ID ;
