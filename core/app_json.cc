@@ -1,10 +1,11 @@
 #include "core/app_json.h"
-#include "core/body_text.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
+
+#include "core/body_text.h"
 
 namespace arbc::model {
 

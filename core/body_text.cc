@@ -10,8 +10,8 @@ namespace arbc::model {
 
 namespace {
 
-const char* const kBinaryOps[] = {"+", "-",  "*",  "/",  "%",   "<",  "<=",
-                                  ">", ">=", "==", "!=", "and", "or"};
+const char* const kBinaryOps[] = {
+    "+", "-", "*", "/", "%", "<", "<=", ">", ">=", "==", "!=", "and", "or"};
 
 bool is_binary_op(std::string_view s) {
   for (const char* op : kBinaryOps)
@@ -240,8 +240,8 @@ bool Reader::string_literal(std::string& out) {
         break;
       case 'u': {
         if (pos_ + 4 > t_.size()) return fail("bad \\u escape");
-        unsigned v = static_cast<unsigned>(std::strtoul(std::string(t_.substr(pos_, 4)).c_str(),
-                                                        nullptr, 16));
+        unsigned v = static_cast<unsigned>(
+            std::strtoul(std::string(t_.substr(pos_, 4)).c_str(), nullptr, 16));
         if (v > 0x7f) return fail("\\u escape above 0x7f");
         out += static_cast<char>(v);
         pos_ += 4;
@@ -292,8 +292,10 @@ bool Reader::node(BodyExpr& e, int depth) {
     const char* head;
     Op op;
   };
-  static const Named kNamed[] = {{"local", Op::Local}, {"param", Op::Param},
-                                 {"field", Op::Field}, {"lambda", Op::Lambda},
+  static const Named kNamed[] = {{"local", Op::Local},
+                                 {"param", Op::Param},
+                                 {"field", Op::Field},
+                                 {"lambda", Op::Lambda},
                                  {"call", Op::Call}};
   static const Named kPlain[] = {
       {"index", Op::Index}, {"neg", Op::Neg}, {"not", Op::Not}, {"list", Op::List}};
@@ -320,10 +322,9 @@ bool Reader::node(BodyExpr& e, int depth) {
     if (!expr(a, depth + 1)) return false;
     e.args.push_back(std::move(a));
   }
-  size_t want = e.op == Op::Index || e.op == Op::Binary ? 2
-                : e.op == Op::Neg || e.op == Op::Not || e.op == Op::Field || e.op == Op::Lambda
-                    ? 1
-                : e.op == Op::Local || e.op == Op::Param ? 0
+  size_t want = e.op == Op::Index || e.op == Op::Binary                                         ? 2
+                : e.op == Op::Neg || e.op == Op::Not || e.op == Op::Field || e.op == Op::Lambda ? 1
+                : e.op == Op::Local || e.op == Op::Param                                        ? 0
                                                          : e.args.size();
   if (e.args.size() != want) return fail("wrong number of operands of '" + head + "'");
   return eat(')');
@@ -346,8 +347,8 @@ bool Reader::stmt(BodyStmt& s, int depth) {
   if (!eat('(')) return false;
   std::string head = word();
   bool known = false;
-  for (Kind k : {Kind::Let, Kind::Var, Kind::Assign, Kind::Accept, Kind::Set, Kind::Unset,
-                 Kind::If, Kind::Emit, Kind::Throttle, Kind::Every})
+  for (Kind k : {Kind::Let, Kind::Var, Kind::Assign, Kind::Accept, Kind::Set, Kind::Unset, Kind::If,
+                 Kind::Emit, Kind::Throttle, Kind::Every})
     if (head == stmt_head(k)) s.kind = k, known = true;
   if (!known) return fail("unknown statement '" + head + "'");
   std::string line = word();
@@ -372,8 +373,8 @@ bool Reader::stmt(BodyStmt& s, int depth) {
       ok = !s.name.empty();
       break;
     case Kind::If:
-      ok = expr(s.expr, depth + 1) && block(s.then_body, depth + 1) &&
-           block(s.else_body, depth + 1);
+      ok =
+          expr(s.expr, depth + 1) && block(s.then_body, depth + 1) && block(s.else_body, depth + 1);
       break;
     case Kind::Every:
       ok = block(s.then_body, depth + 1);

@@ -37,8 +37,13 @@ TEST(BodyText, IntAndFloatLiteralsStayApart) {
 }
 
 TEST(BodyText, MalformedTextIsAnErrorWithAnOffset) {
-  const char* bad[] = {"(accept)", "(accept x (> msg 1))", "(frobnicate 1 msg)", "(emit 1 (+ 1))",
-                       "(emit 1 (call len msg)", "(let 1 x msg) trailing", "(if 1 true (emit 1 2))"};
+  const char* bad[] = {"(accept)",
+                       "(accept x (> msg 1))",
+                       "(frobnicate 1 msg)",
+                       "(emit 1 (+ 1))",
+                       "(emit 1 (call len msg)",
+                       "(let 1 x msg) trailing",
+                       "(if 1 true (emit 1 2))"};
   for (const char* t : bad) {
     std::string err;
     EXPECT_FALSE(parse_body_stmt(t, &err)) << t;

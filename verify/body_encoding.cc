@@ -348,8 +348,10 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
     if (auto it = params_.find(lambda.text); it != params_.end()) saved = it->second;
     params_.insert_or_assign(lambda.text, list.v.items[k]);
     Ev key = eval(lambda.args[0]);
-    if (saved) params_.insert_or_assign(lambda.text, *saved);
-    else params_.erase(lambda.text);
+    if (saved)
+      params_.insert_or_assign(lambda.text, *saved);
+    else
+      params_.erase(lambda.text);
     if (!key.v.numeric()) return bad(e.text + " with a key that is not a number");
     z3::expr in = list.v.scalar > static_cast<int>(k);
     ok = ok && z3::implies(in, key.ok);

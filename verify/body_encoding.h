@@ -11,10 +11,11 @@
 // accepted or emitted (their effect on events is the effective guard's business).
 #pragma once
 
+#include <z3++.h>
+
 #include <optional>
 #include <string>
 #include <vector>
-#include <z3++.h>
 
 #include "core/body.h"
 #include "verify/sym_value.h"
@@ -28,14 +29,14 @@ struct AcceptTracker {
 };
 
 struct EncodedBody {
-  std::string opaque;  // non-empty: why the body is opaque for data; the rest is unset
-  z3::expr accepts;    // the monitor accepts: no `accept` fails and every value exists
+  std::string opaque;               // non-empty: why the body is opaque for data; the rest is unset
+  z3::expr accepts;                 // the monitor accepts: no `accept` fails and every value exists
   std::optional<SymValue> emitted;  // what update() delivers when it accepts
   std::vector<z3::expr> side;       // definitions of auxiliary constants (square roots)
   // Each `accept E` is encoded as `literal implies E`: assume every literal to ask about the
   // body; an unsat core of them names the accepts that matter.
   std::vector<AcceptTracker> trackers;
-  std::vector<std::string> abstracted;  // state read: "var x", "now()"
+  std::vector<std::string> abstracted;                  // state read: "var x", "now()"
   std::vector<std::pair<std::string, SymValue>> state;  // the abstracted values, by name
 
   explicit EncodedBody(z3::context& ctx) : accepts(ctx.bool_val(false)) {}

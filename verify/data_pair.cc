@@ -21,8 +21,8 @@ bool replay_accepts(const MonitorRunner* runner, const std::vector<const model::
     MonitorRun run;
     std::string err;
     if (!runner->run(c, msg, &run, &err)) {
-      *why = "the monitor of '" + c.name + "' could not be run on " + spec_value_text(msg) +
-             ": " + err;
+      *why = "the monitor of '" + c.name + "' could not be run on " + spec_value_text(msg) + ": " +
+             err;
       return false;
     }
     if (!run.accepted) {
@@ -49,16 +49,15 @@ Finding internal_data_error(const std::string& port, const model::SourceLocation
   return f;
 }
 
-DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner,
-                           const model::Connection& a, const model::Connection& b) {
+DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const model::Connection& a,
+                           const model::Connection& b) {
   DataPair d;
   if (a.source != b.source) return d;
   for (const model::Connection* c : {&a, &b}) {
     std::string why = data.opaque_reason(*c);
     if (!why.empty())
-      d.notes.push_back({"data not considered: '" + c->name + "' is opaque for data (" + why +
-                             ")",
-                         {}});
+      d.notes.push_back(
+          {"data not considered: '" + c->name + "' is opaque for data (" + why + ")", {}});
   }
   if (!d.notes.empty()) return d;
   DataWitness w;

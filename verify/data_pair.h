@@ -27,8 +27,8 @@ struct DataPair {
   int queries = 0;
 };
 
-DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner,
-                           const model::Connection& a, const model::Connection& b);
+DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const model::Connection& a,
+                           const model::Connection& b);
 
 // "accepts on lines 33, 34 of 'take'": the part of an unsat core that belongs to one rule.
 std::string core_lines_text(const std::vector<int>& lines, const std::string& rule);

@@ -85,9 +85,8 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
   auto it = predicates_.find(key);
   if (it != predicates_.end()) return it->second;
   const Encoded& e = encoded(c);
-  z3::expr lit = ctx_.bool_const(("uses!" + c.destination + "/" + c.name + "#" +
-                                  std::to_string(predicates_.size()))
-                                     .c_str());
+  z3::expr lit = ctx_.bool_const(
+      ("uses!" + c.destination + "/" + c.name + "#" + std::to_string(predicates_.size())).c_str());
   EncodedBody pe = encode_body(ctx_, predicate_body(p), *e.body.emitted,
                                c.destination + "/" + c.name + ".emitted");
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
@@ -206,8 +205,8 @@ std::string spec_value_text(const Value& v) {
       return out;
     case Value::Kind::Vec3: {
       const Eigen::Vector3d& p = v.as_vec3();
-      return "vec3(" + spec_value_text(Value(p.x())) + ", " + spec_value_text(Value(p.y())) +
-             ", " + spec_value_text(Value(p.z())) + ")";
+      return "vec3(" + spec_value_text(Value(p.x())) + ", " + spec_value_text(Value(p.y())) + ", " +
+             spec_value_text(Value(p.z())) + ")";
     }
     case Value::Kind::List: {
       out = "[";

@@ -4,12 +4,13 @@
 // nonlinear real and integer arithmetic, strings, bounded lists).
 #pragma once
 
+#include <z3++.h>
+
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-#include <z3++.h>
 
 #include "core/app_model.h"
 #include "core/value.h"

@@ -136,7 +136,8 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         rj["location"] = location_json(res.loc);
         rj["pairs"] = res.pairs;
         rj["exclusive_by_data"] = res.proved;
-        rj["unknown_reason"] = res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
+        rj["unknown_reason"] =
+            res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
         rj["findings"] = Json::array();
         for (const Finding& f : res.findings) rj["findings"].push_back(finding_json(f));
         j["resources"].push_back(std::move(rj));

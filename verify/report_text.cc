@@ -74,7 +74,8 @@ std::string port_line(const PortResult& p, bool stats) {
 
 // "resource arm (PickAndPlace.cmd, PullObject.cmd): proved: ..." and why, per pair.
 std::string resource_lines(const ResourceResult& r) {
-  std::string line = "  resource " + r.name + " (" + join(r.ports) + "): " + verdict_name(r.verdict);
+  std::string line =
+      "  resource " + r.name + " (" + join(r.ports) + "): " + verdict_name(r.verdict);
   if (r.verdict == Verdict::Proved) {
     line += r.pairs == 0 ? ": no two rules into different ports"
                          : ": " + plural(static_cast<size_t>(r.pairs), "pair") +

@@ -153,13 +153,12 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
     return unknown("whether " + pair_name(a, b) + " can both use it", data_.unknown_reason());
   if (ans == Answer::Sat) return refuted(a, b, same, w, *state);
   std::string why = same ? "no " + a.connection->source + " message passes both " +
-                               core_lines_text(core.accept_lines[0], a.connection->name) +
-                               " and " + core_lines_text(core.accept_lines[1], b.connection->name)
+                               core_lines_text(core.accept_lines[0], a.connection->name) + " and " +
+                               core_lines_text(core.accept_lines[1], b.connection->name)
                          : "one of them never delivers a command that uses it";
   std::vector<std::string> by_when;
   for (size_t s = 0; s < 2; ++s)
-    if (core.predicate_used[s])
-      by_when.push_back("'" + (s == 0 ? a : b).connection->name + "'");
+    if (core.predicate_used[s]) by_when.push_back("'" + (s == 0 ? a : b).connection->name + "'");
   if (!by_when.empty() && res_.uses)
     why += " with what " + join(by_when, ", ", " and ") + " then emit" +
            (by_when.size() == 1 ? "s" : "") + " satisfying the resource's `when`";
@@ -169,8 +168,8 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
 
 bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool same,
                              const DataWitness& w, MessageExample& ex, std::string* why) {
-  if (!replay_accepts(options_.runner, {a.connection, b.connection}, w.messages,
-                      {0, same ? 0 : 1}, ex, why))
+  if (!replay_accepts(options_.runner, {a.connection, b.connection}, w.messages, {0, same ? 0 : 1},
+                      ex, why))
     return false;
   if (!res_.uses) return true;
   for (const ResourceRule* r : {&a, &b}) {
@@ -193,9 +192,10 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
                               const DataWitness& w, const std::vector<std::string>& state) {
   Finding f = base_finding(kCheckResource);
   f.rules = {a.connection->name, b.connection->name};
-  f.message = pair_name(a, b) + " can both deliver a command that uses resource '" +
-              res_.name + "' (" + (same ? "from one " + a.connection->source + " message" :
-                                          "from two independent messages") + ")";
+  f.message =
+      pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name + "' (" +
+      (same ? "from one " + a.connection->source + " message" : "from two independent messages") +
+      ")";
   f.notes.push_back({"in the event state (fewest events present): present: " +
                          (state.empty() ? std::string("none") : join(state)),
                      {}});
@@ -204,10 +204,10 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
     ex.source = w.message_sources[m];
     ex.value = spec_value_text(w.messages[m]);
     f.messages.push_back(ex);
-    f.notes.push_back({std::string(same ? "the message: " : "message " + std::to_string(m + 1) +
-                                                               ": ") +
-                           ex.source + " = " + ex.value,
-                       {}});
+    f.notes.push_back(
+        {std::string(same ? "the message: " : "message " + std::to_string(m + 1) + ": ") +
+             ex.source + " = " + ex.value,
+         {}});
   }
   for (size_t s = 0; s < 2; ++s) {
     const ResourceRule& r = s == 0 ? a : b;
@@ -235,18 +235,19 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
   } else {
     f.notes.push_back({"not replayed (no monitor runner)", {}});
   }
-  f.notes.push_back({"make the rules' bodies exclusive on the message (an `accept` or an `if` "
-                     "on the same field), or their `when`s exclusive through an event both "
-                     "ports read",
-                     {}});
+  f.notes.push_back(
+      {"make the rules' bodies exclusive on the message (an `accept` or an `if` "
+       "on the same field), or their `when`s exclusive through an event both "
+       "ports read",
+       {}});
   out_.findings.push_back(std::move(f));
 }
 
 }  // namespace
 
 void run_resource_checks(const model::App& app, const std::vector<PortScope>& scopes,
-                         const VerifyOptions& options, z3::context& ctx,
-                         Clock::time_point deadline, DataQuery& data, VerifyReport& report) {
+                         const VerifyOptions& options, z3::context& ctx, Clock::time_point deadline,
+                         DataQuery& data, VerifyReport& report) {
   for (const model::Resource& res : app.resources) {
     ResourceResult out;
     ResourceChecker(app, scopes, options, ctx, deadline, data, res, out).run();

@@ -4,8 +4,9 @@
 // ports' event states are independent: each rule only has to be selectable (not dead).
 #pragma once
 
-#include <vector>
 #include <z3++.h>
+
+#include <vector>
 
 #include "verify/data_query.h"
 #include "verify/port_scope.h"
@@ -15,7 +16,7 @@
 namespace arbc::verify {
 
 void run_resource_checks(const model::App& app, const std::vector<PortScope>& scopes,
-                         const VerifyOptions& options, z3::context& ctx,
-                         Clock::time_point deadline, DataQuery& data, VerifyReport& report);
+                         const VerifyOptions& options, z3::context& ctx, Clock::time_point deadline,
+                         DataQuery& data, VerifyReport& report);
 
 }  // namespace arbc::verify

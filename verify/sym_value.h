@@ -8,11 +8,12 @@
 //   elements are covered exactly.
 #pragma once
 
+#include <z3++.h>
+
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
-#include <z3++.h>
 
 #include "core/type.h"
 #include "core/value.h"
@@ -22,8 +23,8 @@ namespace arbc::verify {
 struct SymValue {
   enum class Kind { Bool, Int, Real, String, Vec3, List, Record };
   Kind kind = Kind::Bool;
-  z3::expr scalar;               // Bool/Int/Real/String; List: the length
-  std::vector<SymValue> items;   // Vec3: x, y, z; List: elements; Record: fields
+  z3::expr scalar;                 // Bool/Int/Real/String; List: the length
+  std::vector<SymValue> items;     // Vec3: x, y, z; List: elements; Record: fields
   std::vector<std::string> names;  // Record: field names, sorted
 
   explicit SymValue(z3::context& ctx) : scalar(ctx.bool_val(true)) {}

@@ -36,17 +36,18 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
     } else if (same && !same_type(*type, *t)) {
       same = false;
       error(p.loc,
-            "the ports of resource '" + r.name + "' must have one type, so that its `when` "
-            "means the same on each: " + r.ports.front().qualified() + " is " + describe(type) +
-                ", " + q + " is " + describe(t),
+            "the ports of resource '" + r.name +
+                "' must have one type, so that its `when` "
+                "means the same on each: " +
+                r.ports.front().qualified() + " is " + describe(type) + ", " + q + " is " +
+                describe(t),
             "resource-type");
     }
   }
   if (seen.size() < 2)
     error(r.loc,
-          "resource '" + r.name + "' lists " + std::to_string(seen.size()) +
-              " port" + (seen.size() == 1 ? "" : "s") +
-              "; a resource is shared by at least two ports",
+          "resource '" + r.name + "' lists " + std::to_string(seen.size()) + " port" +
+              (seen.size() == 1 ? "" : "s") + "; a resource is shared by at least two ports",
           "resource-port");
   return same ? type : nullptr;
 }

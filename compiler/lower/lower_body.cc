@@ -63,7 +63,7 @@ BodyExpr expr(const ast::Expr& e) {
   switch (e.kind) {
     case Kind::Number:
       out.op = e.is_int && e.type && e.type->kind == Type::Kind::Int ? BodyExpr::Op::Int
-                                                                      : BodyExpr::Op::Float;
+                                                                     : BodyExpr::Op::Float;
       out.number = e.number;
       return out;
     case Kind::Duration:

@@ -41,105 +41,159 @@ class Gen {
     static const char* lits[] = {"0.5", "-1.0", "0.25", "2.0", "0.0", "C"};
     if (d <= 0) {
       switch (pick(4)) {
-        case 0: return "m.a";
-        case 1: return "m.p.x";
-        case 2: return lits[pick(6)];
-        default: return "m.p.z";
+        case 0:
+          return "m.a";
+        case 1:
+          return "m.p.x";
+        case 2:
+          return lits[pick(6)];
+        default:
+          return "m.p.z";
       }
     }
     switch (pick(15)) {
-      case 0: return "(" + flt(d - 1) + " + " + flt(d - 1) + ")";
-      case 1: return "(" + flt(d - 1) + " - " + num(d - 1) + ")";
-      case 2: return "(" + flt(d - 1) + " * " + flt(d - 1) + ")";
-      case 3: return "abs(" + flt(d - 1) + ")";
-      case 4: return "min(" + flt(d - 1) + ", " + num(d - 1) + ")";
-      case 5: return "max(" + num(d - 1) + ", " + flt(d - 1) + ", " + flt(d - 1) + ")";
-      case 6: return "min_by(m.xs, o => " + key() + ").d";
-      case 7: return "max_by(m.xs, o => " + key() + ").d";
-      case 8: return "m.xs[" + idx() + "].d";
-      case 9: return "norm(" + vec(d - 1) + ")";
-      case 10: return "dist(" + vec(d - 1) + ", " + vec(d - 1) + ")";
-      case 11: return "(" + flt(d - 1) + " / 2)";
-      case 12: return "(" + num(d - 1) + " % 2.0)";
-      case 13: return "-" + flt(0);
-      default: return "vec3(" + flt(d - 1) + ", 0.0, 1.0).x";
+      case 0:
+        return "(" + flt(d - 1) + " + " + flt(d - 1) + ")";
+      case 1:
+        return "(" + flt(d - 1) + " - " + num(d - 1) + ")";
+      case 2:
+        return "(" + flt(d - 1) + " * " + flt(d - 1) + ")";
+      case 3:
+        return "abs(" + flt(d - 1) + ")";
+      case 4:
+        return "min(" + flt(d - 1) + ", " + num(d - 1) + ")";
+      case 5:
+        return "max(" + num(d - 1) + ", " + flt(d - 1) + ", " + flt(d - 1) + ")";
+      case 6:
+        return "min_by(m.xs, o => " + key() + ").d";
+      case 7:
+        return "max_by(m.xs, o => " + key() + ").d";
+      case 8:
+        return "m.xs[" + idx() + "].d";
+      case 9:
+        return "norm(" + vec(d - 1) + ")";
+      case 10:
+        return "dist(" + vec(d - 1) + ", " + vec(d - 1) + ")";
+      case 11:
+        return "(" + flt(d - 1) + " / 2)";
+      case 12:
+        return "(" + num(d - 1) + " % 2.0)";
+      case 13:
+        return "-" + flt(0);
+      default:
+        return "vec3(" + flt(d - 1) + ", 0.0, 1.0).x";
     }
   }
   std::string key() {
     switch (pick(4)) {
-      case 0: return "o.d";
-      case 1: return "o.k";
-      case 2: return "abs(o.d - m.a)";
-      default: return "-o.d";
+      case 0:
+        return "o.d";
+      case 1:
+        return "o.k";
+      case 2:
+        return "abs(o.d - m.a)";
+      default:
+        return "-o.d";
     }
   }
   std::string idx() {
     switch (pick(3)) {
-      case 0: return std::to_string(pick(5));
-      case 1: return "m.b";
-      default: return "len(m.xs) - 1";
+      case 0:
+        return std::to_string(pick(5));
+      case 1:
+        return "m.b";
+      default:
+        return "len(m.xs) - 1";
     }
   }
   std::string integer(int d) {
     if (d <= 0) {
       switch (pick(3)) {
-        case 0: return "m.b";
-        case 1: return "len(m.xs)";
-        default: return std::to_string(pick(5) - 1);
+        case 0:
+          return "m.b";
+        case 1:
+          return "len(m.xs)";
+        default:
+          return std::to_string(pick(5) - 1);
       }
     }
     switch (pick(8)) {
-      case 0: return "(" + integer(d - 1) + " + " + integer(d - 1) + ")";
-      case 1: return "(" + integer(d - 1) + " * " + integer(d - 1) + ")";
-      case 2: return "abs(" + integer(d - 1) + ")";
-      case 3: return "min(" + integer(d - 1) + ", " + integer(d - 1) + ")";
-      case 4: return "max_by(m.xs, o => " + key() + ").k";
-      case 5: return "(" + integer(d - 1) + " % 3)";
-      case 6: return "m.xs[" + idx() + "].k";
-      default: return "max(" + integer(d - 1) + ", 1)";
+      case 0:
+        return "(" + integer(d - 1) + " + " + integer(d - 1) + ")";
+      case 1:
+        return "(" + integer(d - 1) + " * " + integer(d - 1) + ")";
+      case 2:
+        return "abs(" + integer(d - 1) + ")";
+      case 3:
+        return "min(" + integer(d - 1) + ", " + integer(d - 1) + ")";
+      case 4:
+        return "max_by(m.xs, o => " + key() + ").k";
+      case 5:
+        return "(" + integer(d - 1) + " % 3)";
+      case 6:
+        return "m.xs[" + idx() + "].k";
+      default:
+        return "max(" + integer(d - 1) + ", 1)";
     }
   }
   std::string num(int d) { return pick(2) ? flt(d) : integer(d); }
   std::string str(int d) {
     switch (pick(d > 0 ? 5 : 3)) {
-      case 0: return "m.s";
-      case 1: return pick(2) ? "\"go\"" : "\"stop\"";
-      case 2: return "\"\"";
-      case 3: return "(" + str(d - 1) + " + " + str(d - 1) + ")";
-      default: return "min_by(m.xs, o => " + key() + ").t";
+      case 0:
+        return "m.s";
+      case 1:
+        return pick(2) ? "\"go\"" : "\"stop\"";
+      case 2:
+        return "\"\"";
+      case 3:
+        return "(" + str(d - 1) + " + " + str(d - 1) + ")";
+      default:
+        return "min_by(m.xs, o => " + key() + ").t";
     }
   }
   std::string vec(int d) {
     switch (pick(d > 0 ? 5 : 2)) {
-      case 0: return "m.p";
-      case 1: return "vec3(" + flt(0) + ", " + flt(0) + ", 0.5)";
-      case 2: return "(" + vec(d - 1) + " + m.p)";
-      case 3: return "(" + vec(d - 1) + " * 2.0)";
-      default: return "-" + vec(0);
+      case 0:
+        return "m.p";
+      case 1:
+        return "vec3(" + flt(0) + ", " + flt(0) + ", 0.5)";
+      case 2:
+        return "(" + vec(d - 1) + " + m.p)";
+      case 3:
+        return "(" + vec(d - 1) + " * 2.0)";
+      default:
+        return "-" + vec(0);
     }
   }
   std::string cmp(int d) {
     static const char* ops[] = {"<", "<=", ">", ">=", "==", "!="};
     switch (pick(5)) {
-      case 0: return num(d) + " " + ops[pick(6)] + " " + num(d);
-      case 1: return str(d) + (pick(2) ? " == " : " != ") + str(d);
-      case 2: return vec(d) + " == " + vec(d);
-      case 3: return "[" + num(0) + ", " + num(0) + "] != [" + num(0) + "]";
-      default: return "len(m.xs) " + std::string(ops[pick(6)]) + " " + std::to_string(pick(4));
+      case 0:
+        return num(d) + " " + ops[pick(6)] + " " + num(d);
+      case 1:
+        return str(d) + (pick(2) ? " == " : " != ") + str(d);
+      case 2:
+        return vec(d) + " == " + vec(d);
+      case 3:
+        return "[" + num(0) + ", " + num(0) + "] != [" + num(0) + "]";
+      default:
+        return "len(m.xs) " + std::string(ops[pick(6)]) + " " + std::to_string(pick(4));
     }
   }
   std::string boolean(int d) {
     if (d <= 0) return cmp(0);
     switch (pick(4)) {
-      case 0: return "(" + boolean(d - 1) + " and " + boolean(d - 1) + ")";
-      case 1: return "(" + boolean(d - 1) + " or " + boolean(d - 1) + ")";
-      case 2: return "not (" + boolean(d - 1) + ")";
-      default: return cmp(d - 1);
+      case 0:
+        return "(" + boolean(d - 1) + " and " + boolean(d - 1) + ")";
+      case 1:
+        return "(" + boolean(d - 1) + " or " + boolean(d - 1) + ")";
+      case 2:
+        return "not (" + boolean(d - 1) + ")";
+      default:
+        return cmp(d - 1);
     }
   }
-  std::string emit(int d) {
-    return "emit { verb: " + str(d) + ", v: " + flt(d) + " };";
-  }
+  std::string emit(int d) { return "emit { verb: " + str(d) + ", v: " + flt(d) + " };"; }
 
   // A body: a first emit (every path delivers a Cmd), then random statements.
   std::string body() {
@@ -152,8 +206,8 @@ class Gen {
           break;
         case 1:
           out += "    let x" + std::to_string(i) + " = " + flt(2) + ";\n";
-          out += "    accept x" + std::to_string(i) + " " + (pick(2) ? "<" : ">=") + " " +
-                 flt(1) + ";\n";
+          out += "    accept x" + std::to_string(i) + " " + (pick(2) ? "<" : ">=") + " " + flt(1) +
+                 ";\n";
           break;
         case 2:
           out += "    if " + boolean(1) + " { " + emit(1) + " } else { " +
@@ -173,8 +227,8 @@ class Gen {
     ValueList xs;
     int n = pick(kBound + 1);
     for (int i = 0; i < n; ++i)
-      xs.push_back(Value::record(
-          {{"d", f()}, {"k", Value(pick(5) - 1)}, {"t", Value(strings[pick(4)])}}));
+      xs.push_back(
+          Value::record({{"d", f()}, {"k", Value(pick(5) - 1)}, {"t", Value(strings[pick(4)])}}));
     return Value::record({{"a", f()},
                           {"b", Value(pick(5) - 1)},
                           {"s", Value(strings[pick(4)])},
@@ -247,8 +301,8 @@ TEST(DataDifferential, EncodingAgreesWithLuaMonitors) {
     lower::CompiledSpec c = lower::compile_spec_text(spec, "diff.spec");
     if (!c.ok) continue;  // a random body sema rejects (e.g. a type clash): not a case
     ++rules;
-    for (const char* b : {"len(", "min_by(", "max_by(", "dist(", "norm(", "abs(", "min(",
-                          "max(", "vec3(", "%", "/", "[", " + \""})
+    for (const char* b : {"len(", "min_by(", "max_by(", "dist(", "norm(", "abs(", "min(", "max(",
+                          "vec3(", "%", "/", "[", " + \""})
       if (body.find(b) != std::string::npos) builtins_seen.insert(b);
     codegen::CodegenResult g = codegen::EmbeddedTarget().generate(*c.lowered);
     const model::App& app = c.lowered->app;
@@ -277,12 +331,14 @@ TEST(DataDifferential, EncodingAgreesWithLuaMonitors) {
       Encoded enc = decide(ctx, *conn.body, msg_type, msg);
       ++cases;
       accepted += lua_accepted;
-      ASSERT_EQ(enc.accepted, lua_accepted)
-          << "body:\n" << body << "message: " << spec_value_text(msg);
-      if (lua_accepted)
+      ASSERT_EQ(enc.accepted, lua_accepted) << "body:\n"
+                                            << body << "message: " << spec_value_text(msg);
+      if (lua_accepted) {
         ASSERT_TRUE(close_values(enc.emitted, delivered))
-            << "body:\n" << body << "message: " << spec_value_text(msg)
+            << "body:\n"
+            << body << "message: " << spec_value_text(msg)
             << "\nZ3: " << spec_value_text(enc.emitted) << "\nLua: " << spec_value_text(delivered);
+      }
     }
   }
   EXPECT_GE(cases, 1000);
