@@ -1,5 +1,6 @@
-// `arbc build SPEC [-o DIR] [--target embedded] [--no-verify]` (docs/cli.md#arbc-build):
-// compile the spec, prove it, then write DIR/<app>/app.json and DIR/<app>/monitors/*.lua.
+// `arbc build SPEC [-o DIR] [--target embedded|yarp] [--deploy FILE] [--no-verify]`
+// (docs/cli.md#arbc-build): compile the spec, prove it, then write DIR/<app>/: app.json and
+// monitors/*.lua, or for YARP the application XML, its monitors and ports.json (docs/yarp.md).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
+#include "compiler/codegen/yarp_deployment.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "core/join.h"
@@ -29,6 +31,7 @@ struct BuildArgs {
   std::string spec;
   std::string out_dir = "out";
   std::string target_name{codegen::kDefaultTarget};
+  std::string deploy;
   bool no_verify = false;
   bool strict = false;
   bool stats = false;
@@ -39,7 +42,8 @@ struct BuildArgs {
 std::optional<int> parse_args(std::span<char*> args, BuildArgs& a) {
   CLI::App cli{
       "Compile a behaviour spec, prove that each arbitrated port selects at most one rule, and "
-      "write DIR/<app>/app.json and one Lua monitor per connection under DIR/<app>/monitors/.\n"
+      "write DIR/<app>/app.json and one Lua monitor per connection under DIR/<app>/monitors/\n"
+      "(--target yarp: DIR/<app>/<app>.xml, ports.json and contexts/<app>/*.lua for YARP).\n"
       "Nothing is written when the proof fails (exit 1) or the spec has errors (exit 2).",
       "arbc build"};
   cli.add_option("SPEC", a.spec, "the spec file, e.g. specs/table_clean.spec")->required();
@@ -47,6 +51,9 @@ std::optional<int> parse_args(std::span<char*> args, BuildArgs& a) {
       ->default_val("out");
   cli.add_option("--target", a.target_name, "code-generation target: " + target_list())
       ->default_val(std::string(codegen::kDefaultTarget));
+  cli.add_option("--deploy", a.deploy,
+                 "deployment file (JSON); --target yarp reads its \"topics\": "
+                 "{\"Module.port\": \"/yarp/name\"}");
   cli.add_flag("--no-verify", a.no_verify, "write the artifacts without running the proof");
   cli.add_flag("--strict", a.strict, "verifier warnings (dead, unused rules) stop the build too");
   cli.add_flag("--stats", a.stats, "print the time each phase took to stderr");
@@ -85,6 +92,26 @@ class PhaseTimer {
   std::clock_t c0_ = std::clock();
 };
 
+// Reads the deployment file (if any) into the target's options; an exit code on bad input.
+std::optional<int> configure_target(codegen::Target& target, const std::string& deploy,
+                                    const model::App& app) {
+  codegen::TargetOptions options;
+  std::string error;
+  if (!deploy.empty()) {
+    auto names = codegen::read_yarp_deployment(deploy, app, &error);
+    if (!names) {
+      std::fprintf(stderr, "arbc build: %s\n", error.c_str());
+      return kExitBadInput;
+    }
+    options.port_names = std::move(*names);
+  }
+  if (!target.configure(options, &error)) {
+    std::fprintf(stderr, "arbc build: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int build_command(std::span<char*> args) {
@@ -107,6 +134,7 @@ int build_command(std::span<char*> args) {
     return kExitBadInput;
   }
   const lower::LoweredApp& lowered = *compiled.lowered;
+  if (std::optional<int> exit = configure_target(*target, a.deploy, lowered.app)) return *exit;
 
   std::string verified = "not verified (--no-verify)";
   if (!a.no_verify) {
@@ -130,6 +158,12 @@ int build_command(std::span<char*> args) {
     return kExitBadInput;
   }
   timer.phase("write");
+  if (a.target_name == "yarp") {
+    std::vector<std::string> paths;
+    for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);
+    std::fputs(yarp_build_summary(lowered.app, spec, a.out_dir, verified, paths).c_str(), stdout);
+    return kExitOk;
+  }
   std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
   return kExitOk;
 }

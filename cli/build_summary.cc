@@ -60,4 +60,21 @@ std::string build_summary(const model::App& app, const std::string& spec,
   return out;
 }
 
+std::string yarp_build_summary(const model::App& app, const std::string& spec,
+                               const std::string& out_dir, const std::string& verified,
+                               const std::vector<std::string>& files) {
+  size_t monitors = 0;
+  for (const std::string& f : files) monitors += f.rfind("contexts/", 0) == 0 ? 1 : 0;
+  std::string dir = out_dir + "/" + app.name;
+  std::string out = "arbc build: " + spec + " -> " + dir + "/ (YARP)\n";
+  out += "  " + verified + "\n";
+  out += "  " + app.name + ".xml, ports.json and " +
+         count_of(monitors, "YARP monitor", "YARP monitors") + " for " +
+         count_of(app.connections.size(), "connection", "connections") +
+         " (connections that share a source and a destination are one YARP connection)\n";
+  out += "  next: fill in the modules of " + app.name +
+         ".xml; docs/yarp.md#deploying-a-spec-on-yarp-step-by-step\n";
+  return out;
+}
+
 }  // namespace arbc::cli

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
 
@@ -13,5 +14,10 @@ std::string count_of(size_t n, const std::string& singular, const std::string& p
 
 std::string build_summary(const model::App& app, const std::string& spec,
                           const std::string& out_dir, const std::string& verified);
+
+// The same for `--target yarp`: what was written, given the generated files' paths.
+std::string yarp_build_summary(const model::App& app, const std::string& spec,
+                               const std::string& out_dir, const std::string& verified,
+                               const std::vector<std::string>& files);
 
 }  // namespace arbc::cli

@@ -18,6 +18,7 @@ constexpr const char* kUsage =
     "                                prove that at most one rule per arbitrated port is selected\n"
     "  build  SPEC [-o DIR]          verify, then write app.json and the Lua monitors\n"
     "  run    DIR|SPEC [options]     run the application on the embedded runtime\n"
+    "  test   SPEC... [options]      run the specs' `test` declarations in simulated time\n"
     "  docs   SPEC [-o DIR]          Markdown, Graphviz DOT and SVG, Mermaid\n"
     "  import yarp APP.xml -o SPEC   a yarpmanager application and its Lua monitors as a spec\n"
     "\n"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     if (command == "verify") return verify_command(args);
     if (command == "build") return build_command(args);
     if (command == "run") return run_command(args);
+    if (command == "test") return test_command(args);
     if (command == "docs") return docs_command(args);
     if (command == "import") return import_command(args);
   } catch (const std::exception& e) {

@@ -71,13 +71,13 @@ std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, 
   }
   std::ostringstream text;
   text << in.rdbuf();
-  model::AppLoad load = model::from_app_json(text.str());
-  if (!load.ok) {
-    *err = file + ": not a valid app.json: " + load.error;
-    notes->errors.push_back(file_error(file, "not a valid app.json: " + load.error, "app-json"));
-    return std::nullopt;
+  std::string error;
+  std::optional<model::App> app = model::from_app_json(text.str(), &error);
+  if (!app) {
+    *err = file + ": not a valid app.json: " + error;
+    notes->errors.push_back(file_error(file, "not a valid app.json: " + error, "app-json"));
   }
-  return std::move(load.app);
+  return app;
 }
 
 }  // namespace arbc::cli

@@ -1,5 +1,6 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]`
+//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
+//                    [--inputs FILE] [--stub] [--stub-rate PORT=HZ]... [--diff TRACE]`
 // Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
 // 3 run-time failure (the environment reports failure, or, with no environment, a connection
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
+#include "cli/run_stand_ins.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -119,28 +122,38 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
   return kExitOk;
 }
 
-}  // namespace
-
-int run_command(std::span<char*> args) {
-  CLI::App cli{"Run a built application on the embedded runtime", "arbc run"};
-  std::string input, duration_text = "60s";
+// The command line of `arbc run`.
+struct RunArgs {
+  std::string input;
   std::vector<std::string> plugins;
   bool no_verify = false;
   RunOptions options;
-  cli.add_option("app", input, "an app directory written by `arbc build`, its app.json, or a .spec")
+  std::string report_path;
+  RunStandIns stand_ins;  // --inputs, --stub, --stub-rate, --diff
+};
+
+// Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
+// a bad option or value).
+std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
+  CLI::App cli{"Run a built application on the embedded runtime", "arbc run"};
+  std::string duration_text = "60s";
+  RunOptions& options = a.options;
+  cli.add_option("app", a.input,
+                 "an app directory written by `arbc build`, its app.json, or a .spec")
       ->required();
-  cli.add_option("--plugin", plugins, "a shared library with modules (repeatable)");
+  cli.add_option("--plugin", a.plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
   cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
-  cli.add_flag("--no-verify", no_verify,
+  cli.add_flag("--no-verify", a.no_verify,
                "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
   std::string seed_text = "1";
   cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
       ->type_name("UINT");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
-  std::string report_path;
-  cli.add_option("--report", report_path, "write a self-contained HTML report of the run to FILE");
+  cli.add_option("--report", a.report_path,
+                 "write a self-contained HTML report of the run to FILE");
+  a.stand_ins.add_options(cli);  // --inputs, --stub, --stub-rate, --diff
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -153,54 +166,75 @@ int run_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc run: error: %s\n", value_error.c_str());
     return kExitBadInput;
   }
+  return std::nullopt;
+}
 
+// Loads each --plugin library; false (the error printed) when one cannot be loaded.
+bool load_plugins(const std::vector<std::string>& plugins) {
   for (const std::string& lib : plugins) {
     std::string error = load_plugin(lib);
     if (!error.empty()) {
       print_errors({lib + ": " + error});
-      return kExitBadInput;
+      return false;
     }
   }
   print_errors(Registry::global().errors());
+  return true;
+}
+
+}  // namespace
+
+int run_command(std::span<char*> args) {
+  RunArgs a;
+  if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  RunOptions& options = a.options;
+  RunStandIns& stand_ins = a.stand_ins;
+  if (!load_plugins(a.plugins)) return kExitBadInput;
 
   std::string dir, error;
   TempDir temp;
-  int prepared = prepare_app_dir(input, no_verify, &temp, &dir);
+  int prepared = prepare_app_dir(a.input, a.no_verify, &temp, &dir);
   if (prepared != kExitOk) return prepared;
   AppDirLoad load = load_app_dir(dir);
   if (!load.ok) {
     print_errors(load.errors);
     return kExitBadInput;
   }
+  if (!stand_ins.prepare(load.app, &error)) {
+    print_errors({error});
+    return kExitBadInput;
+  }
   std::vector<std::string> mismatches =
-      check_modules(load.app, (fs::path(dir) / "app.json").string());
+      check_modules(load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry());
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
   }
   std::string proof;
   int proved =
-      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), no_verify, &proof);
+      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
-  if (!report_path.empty()) options.trace_records = &records;
+  if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
-  std::unique_ptr<Runtime> runtime = Runtime::create(load.app, dir, options, &error);
+  std::unique_ptr<Runtime> runtime =
+      Runtime::create(load.app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;
   }
   report::ReportFile report_file;
-  if (!report_path.empty()) {
-    std::string open_error = report_file.open(report_path);
-    if (!open_error.empty()) {
+  if (!a.report_path.empty()) {
+    std::string open_error;
+    if (!report_file.open(a.report_path, &open_error)) {
       print_errors({open_error});
       return kExitBadInput;
     }
   }
 
-  RunEnd end{load.app, *runtime, options, records, report_path, report_file, proof};
+  RunEnd end{load.app, *runtime, options, records, a.report_path, report_file, proof};
+  if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(load.app); };
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;
@@ -210,7 +244,7 @@ int run_command(std::span<char*> args) {
   if (!interrupt.run_returned()) {
     for (;;) pause();  // the watchdog is ending the process
   }
-  return finish_run(end, interrupt.signal_name());
+  return stand_ins.diff(load.app, records, finish_run(end, interrupt.signal_name()));
 }
 
 }  // namespace arbc::cli

@@ -48,8 +48,8 @@ void print_run_line(const RunEnd& end, const std::string& stop_reason) {
 bool write_report(const RunEnd& end, const report::RunReportInput& input) {
   if (end.report_path.empty()) return true;
   std::string html = report::render_run_report(input);
-  std::string error = end.report_file.write(html);
-  if (!error.empty()) {
+  std::string error;
+  if (!end.report_file.write(html, &error)) {
     std::fprintf(stderr, "arbc run: error: %s\n", error.c_str());
     return false;
   }
@@ -76,6 +76,11 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     for (const ConnectionStats& s : end.runtime.stats()) success &= !s.quarantined;
     verdict = std::string(success ? "success" : "failure") +
               " (no environment; judged by quarantined connections)";
+  }
+  if (end.stand_ins) {
+    std::string received = end.stand_ins();
+    std::fputs(received.c_str(), stdout);
+    summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
   }
   std::printf("result: %s\n", verdict.c_str());
   if (!write_report(end, report_input(end, success, verdict, summary))) return 3;

@@ -3,6 +3,7 @@
 // for one whose executor thread is stuck after an interrupt (cli/run_interrupt.h).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct RunEnd {
   const std::string& report_path;           // empty: no report
   report::ReportFile& report_file;
   const std::string& proof;  // "verified: ..." or "not verified (--no-verify)", for the report
+  // Not empty: what the stand-ins received (cli/run_stand_ins.h), printed after the
+  // environment's summary and shown with it in the report.
+  std::function<std::string()> stand_ins = {};
 };
 
 // After runtime.run() returned: prints everything and writes the report. `signal` names the

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
+#include <optional>
 #include <utility>
 
 #include "core/body_text.h"
@@ -13,287 +13,295 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-// Reading: each helper throws LoadError with the JSON path of the offending value.
-struct LoadError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// Reading (docs/design.md#reporting-errors): each helper returns false (or nullptr) and sets
+// *err to the JSON path of the offending value and what is wrong. nlohmann-json is asked for a
+// value only after its type was checked, so it throws only on a bug (caught in from_app_json).
 
-const Json& member(const Json& j, const std::string& path, const char* key) {
-  if (!j.is_object()) throw LoadError(path + ": expected an object");
+bool fail(std::string message, std::string* err) {
+  *err = std::move(message);
+  return false;
+}
+
+const Json* member(const Json& j, const std::string& path, const char* key, std::string* err) {
+  if (!j.is_object()) {
+    *err = path + ": expected an object";
+    return nullptr;
+  }
   auto it = j.find(key);
-  if (it == j.end()) throw LoadError(path + ": missing \"" + key + "\"");
-  return *it;
+  if (it == j.end()) {
+    *err = path + ": missing \"" + key + "\"";
+    return nullptr;
+  }
+  return &*it;
 }
 
-std::string get_string(const Json& j, const std::string& path, const char* key) {
-  const Json& v = member(j, path, key);
-  if (!v.is_string()) throw LoadError(path + "." + key + ": expected a string");
-  return v.get<std::string>();
+bool get_string(const Json& j, const std::string& path, const char* key, std::string* out,
+                std::string* err) {
+  const Json* v = member(j, path, key, err);
+  if (!v) return false;
+  if (!v->is_string()) return fail(path + "." + key + ": expected a string", err);
+  *out = v->get<std::string>();
+  return true;
 }
 
-std::string opt_string(const Json& j, const std::string& path, const char* key) {
-  if (!j.contains(key)) return {};
-  return get_string(j, path, key);
+bool opt_string(const Json& j, const std::string& path, const char* key, std::string* out,
+                std::string* err) {
+  return !j.contains(key) || get_string(j, path, key, out, err);
 }
 
-std::optional<double> opt_number(const Json& j, const std::string& path, const char* key) {
-  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
-  if (!j[key].is_number()) throw LoadError(path + "." + key + ": expected a number or null");
-  return j[key].get<double>();
+bool opt_number(const Json& j, const std::string& path, const char* key, std::optional<double>* out,
+                std::string* err) {
+  if (!j.contains(key) || j[key].is_null()) return true;
+  if (!j[key].is_number()) return fail(path + "." + key + ": expected a number or null", err);
+  *out = j[key].get<double>();
+  return true;
 }
 
-bool opt_bool(const Json& j, const std::string& path, const char* key) {
-  if (!j.contains(key)) return false;
-  if (!j[key].is_boolean()) throw LoadError(path + "." + key + ": expected true or false");
-  return j[key].get<bool>();
+bool opt_bool(const Json& j, const std::string& path, const char* key, bool* out,
+              std::string* err) {
+  if (!j.contains(key)) return true;
+  if (!j[key].is_boolean()) return fail(path + "." + key + ": expected true or false", err);
+  *out = j[key].get<bool>();
+  return true;
 }
 
-const Json& array_member(const Json& j, const std::string& path, const char* key) {
-  const Json& v = member(j, path, key);
-  if (!v.is_array()) throw LoadError(path + "." + key + ": expected an array");
+const Json* array_member(const Json& j, const std::string& path, const char* key,
+                         std::string* err) {
+  const Json* v = member(j, path, key, err);
+  if (v && !v->is_array()) {
+    *err = path + "." + key + ": expected an array";
+    return nullptr;
+  }
   return v;
 }
 
-std::vector<std::string> string_list(const Json& j, const std::string& path, const char* key) {
-  std::vector<std::string> out;
-  if (!j.contains(key)) return out;
-  const Json& arr = array_member(j, path, key);
-  for (size_t i = 0; i < arr.size(); ++i) {
-    if (!arr[i].is_string())
-      throw LoadError(path + "." + key + "[" + std::to_string(i) + "]: expected a string");
-    out.push_back(arr[i].get<std::string>());
+// Reads the array `key` of `j` (absent: empty unless `required`) with read_one(item, path, T*,
+// err) per item; the items' paths are `prefix` + key + "[i]".
+template <typename T, typename ReadOne>
+bool read_array(const Json& j, const std::string& path, const std::string& prefix, const char* key,
+                bool required, std::vector<T>* out, ReadOne read_one, std::string* err) {
+  if (!required && !j.contains(key)) return true;
+  const Json* arr = array_member(j, path, key, err);
+  if (!arr) return false;
+  for (size_t i = 0; i < arr->size(); ++i) {
+    T item{};
+    if (!read_one((*arr)[i], prefix + key + "[" + std::to_string(i) + "]", &item, err))
+      return false;
+    out->push_back(std::move(item));
   }
-  return out;
+  return true;
 }
 
-SourceLocation read_location(const Json& j, const std::string& path) {
-  SourceLocation loc;
-  if (!j.contains("loc")) return loc;
+bool read_string_item(const Json& j, const std::string& path, std::string* out, std::string* err) {
+  if (!j.is_string()) return fail(path + ": expected a string", err);
+  *out = j.get<std::string>();
+  return true;
+}
+
+bool string_list(const Json& j, const std::string& path, const char* key,
+                 std::vector<std::string>* out, std::string* err) {
+  return read_array(j, path, path + ".", key, false, out, read_string_item, err);
+}
+
+bool read_location(const Json& j, const std::string& path, SourceLocation* loc, std::string* err) {
+  if (!j.contains("loc")) return true;
   const Json& l = j["loc"];
   std::string p = path + ".loc";
-  loc.file = opt_string(l, p, "file");
-  auto num = [&](const char* key) {
-    if (!l.contains(key)) return 0;
-    if (!l[key].is_number_integer()) throw LoadError(p + "." + key + ": expected an integer");
-    return l[key].get<int>();
+  auto num = [&](const char* key, int* out) {
+    if (!l.contains(key)) return true;
+    if (!l[key].is_number_integer()) return fail(p + "." + key + ": expected an integer", err);
+    *out = l[key].get<int>();
+    return true;
   };
-  loc.line = num("line");
-  loc.column = num("column");
-  loc.end_line = num("end_line");
-  loc.end_column = num("end_column");
-  return loc;
+  return opt_string(l, p, "file", &loc->file, err) && num("line", &loc->line) &&
+         num("column", &loc->column) && num("end_line", &loc->end_line) &&
+         num("end_column", &loc->end_column);
 }
 
-// `"source_map": [[monitor_line, spec_line], ...]`; optional (older files have none).
-std::vector<SourceMapEntry> read_source_map(const Json& j, const std::string& path) {
-  std::vector<SourceMapEntry> out;
-  if (!j.contains("source_map")) return out;
-  const Json& arr = array_member(j, path, "source_map");
-  for (size_t i = 0; i < arr.size(); ++i) {
-    const Json& pair = arr[i];
-    if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
-        !pair[1].is_number_integer())
-      throw LoadError(path + ".source_map[" + std::to_string(i) +
-                      "]: expected [monitor_line, spec_line]");
-    out.push_back({pair[0].get<int>(), pair[1].get<int>()});
-  }
-  return out;
+bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapEntry* out,
+                           std::string* err) {
+  if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
+      !pair[1].is_number_integer())
+    return fail(path + ": expected [monitor_line, spec_line]", err);
+  *out = {pair[0].get<int>(), pair[1].get<int>()};
+  return true;
 }
 
-// `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded.
-std::optional<Body> read_body(const Json& j, const std::string& path) {
-  if (!j.contains("body")) return std::nullopt;
-  const Json& arr = array_member(j, path, "body");
+// `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded (nullopt).
+bool read_body(const Json& j, const std::string& path, std::optional<Body>* out,
+               std::string* err) {
+  if (!j.contains("body")) return true;
+  const Json* arr = array_member(j, path, "body", err);
+  if (!arr) return false;
   Body body;
-  for (size_t i = 0; i < arr.size(); ++i) {
-    std::string p = path + ".body[" + std::to_string(i) + "]";
-    if (!arr[i].is_string()) throw LoadError(p + ": expected a string");
-    std::string err;
-    std::optional<BodyStmt> s = parse_body_stmt(arr[i].get<std::string>(), &err);
-    if (!s) throw LoadError(p + ": " + err);
+  for (size_t i = 0; i < arr->size(); ++i) {
+    std::string p = path + ".body[" + std::to_string(i) + "]", error;
+    if (!(*arr)[i].is_string()) return fail(p + ": expected a string", err);
+    std::optional<BodyStmt> s = parse_body_stmt((*arr)[i].get<std::string>(), &error);
+    if (!s) return fail(p + ": " + error, err);
     body.push_back(std::move(*s));
   }
-  return body;
+  *out = std::move(body);
+  return true;
 }
 
 // A constraint is its text (grammar in core/constraint.h), the one representation.
-Constraint read_constraint(const Json& j, const std::string& path, const char* key) {
-  std::string text = get_string(j, path, key);
-  ConstraintParse parsed = parse_constraint(text);
-  if (!parsed.ok)
-    throw LoadError(path + "." + key + ": " + parsed.error + " at offset " +
-                    std::to_string(parsed.offset));
-  return parsed.constraint;
+bool read_constraint(const Json& j, const std::string& path, const char* key, Constraint* out,
+                     std::string* err) {
+  std::string text, error;
+  if (!get_string(j, path, key, &text, err)) return false;
+  std::optional<Constraint> parsed = parse_constraint(text, &error);
+  if (!parsed) return fail(path + "." + key + ": " + error, err);
+  *out = std::move(*parsed);
+  return true;
 }
 
 // A monitor's SHA-256: required with a monitor (64 lower-case hex digits), absent without.
-std::string read_digest(const Json& j, const std::string& path, const std::string& monitor) {
-  std::string digest = opt_string(j, path, "monitor_sha256");
-  if (monitor.empty()) return digest;
+bool read_digest(const Json& j, const std::string& path, const std::string& monitor,
+                 std::string* digest, std::string* err) {
+  if (!opt_string(j, path, "monitor_sha256", digest, err)) return false;
+  if (monitor.empty()) return true;
   bool hex =
-      digest.size() == 64 && digest.find_first_not_of("0123456789abcdef") == std::string::npos;
-  if (!hex)
-    throw LoadError(path + ".monitor_sha256: " +
-                    (digest.empty() ? std::string("missing") : "not 64 lower-case hex digits") +
-                    "; every monitor has the SHA-256 `arbc build` recorded (rebuild the app)");
-  return digest;
+      digest->size() == 64 && digest->find_first_not_of("0123456789abcdef") == std::string::npos;
+  if (hex) return true;
+  return fail(path + ".monitor_sha256: " +
+                  (digest->empty() ? std::string("missing") : "not 64 lower-case hex digits") +
+                  "; every monitor has the SHA-256 `arbc build` recorded (rebuild the app)",
+              err);
 }
 
-TypePtr read_type(const Json& j, const std::string& path) {
-  std::string text = get_string(j, path, "type");
-  std::string error;
-  TypePtr t = parse_type(text, &error);
-  if (!t) throw LoadError(path + ".type: " + error);
-  return t;
+bool read_type(const Json& j, const std::string& path, TypePtr* out, std::string* err) {
+  std::string text, error;
+  if (!get_string(j, path, "type", &text, err)) return false;
+  *out = parse_type(text, &error);
+  return *out ? true : fail(path + ".type: " + error, err);
 }
 
-App read_app(const Json& root) {
+// The file's version must be the one this arbc reads; then the app's name and description.
+bool read_header(const Json& root, const std::string& r, App* app, std::string* err) {
+  if (!root.is_object()) return fail(r + ": expected a JSON object", err);
+  const Json* version = member(root, r, "schema_version", err);
+  if (!version) return false;
+  if (!version->is_number_integer()) return fail(r + ".schema_version: expected an integer", err);
+  app->schema_version = version->get<int>();
+  if (app->schema_version != kSchemaVersion)
+    return fail(r + ".schema_version: this arbc reads version " + std::to_string(kSchemaVersion) +
+                    ", the file has " + std::to_string(app->schema_version) +
+                    "; rebuild it with this arbc",
+                err);
+  return get_string(root, r, "name", &app->name, err) &&
+         opt_string(root, r, "description", &app->description, err) &&
+         opt_string(root, r, "spec_file", &app->spec_file, err);
+}
+
+bool read_port(const Json& j, const std::string& p, Port* port, std::string* err) {
+  std::string dir;
+  if (!get_string(j, p, "name", &port->name, err) || !get_string(j, p, "direction", &dir, err))
+    return false;
+  if (dir != "in" && dir != "out") return fail(p + ".direction: expected \"in\" or \"out\"", err);
+  port->direction = dir == "in" ? Direction::In : Direction::Out;
+  return read_type(j, p, &port->type, err) && read_location(j, p, &port->loc, err);
+}
+
+bool read_module(const Json& j, const std::string& p, Module* m, std::string* err) {
+  return get_string(j, p, "name", &m->name, err) && opt_string(j, p, "doc", &m->doc, err) &&
+         read_location(j, p, &m->loc, err) &&
+         read_array(j, p, p + ".", "ports", true, &m->ports, read_port, err);
+}
+
+bool read_event(const Json& j, const std::string& p, Event* e, std::string* err) {
+  return get_string(j, p, "name", &e->name, err) &&
+         opt_number(j, p, "lifetime", &e->lifetime, err) &&
+         opt_string(j, p, "source", &e->source, err) && read_location(j, p, &e->loc, err);
+}
+
+bool read_kind(const Json& j, const std::string& p, ConnectionKind* kind, std::string* err) {
+  std::string text;
+  if (!get_string(j, p, "kind", &text, err)) return false;
+  if (text == "rule") {
+    *kind = ConnectionKind::Rule;
+  } else if (text == "feed") {
+    *kind = ConnectionKind::Feed;
+  } else if (text == "connect") {
+    *kind = ConnectionKind::Connect;
+  } else {
+    return fail(p + ".kind: expected \"rule\", \"feed\" or \"connect\"", err);
+  }
+  return true;
+}
+
+// A connection: its ends and kind, its constraint and events, its timing, its monitor.
+bool read_connection(const Json& j, const std::string& p, Connection* c, std::string* err) {
+  return get_string(j, p, "name", &c->name, err) && get_string(j, p, "source", &c->source, err) &&
+         get_string(j, p, "destination", &c->destination, err) && read_kind(j, p, &c->kind, err) &&
+         opt_bool(j, p, "generated", &c->generated, err) &&
+         read_constraint(j, p, "constraint", &c->constraint, err) &&
+         string_list(j, p, "sets", &c->sets, err) && string_list(j, p, "unsets", &c->unsets, err) &&
+         string_list(j, p, "must_set", &c->must_set, err) &&
+         string_list(j, p, "must_unset", &c->must_unset, err) &&
+         opt_string(j, p, "activity_event", &c->activity_event, err) &&
+         opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
+         opt_number(j, p, "trig_interval", &c->trig_interval, err) &&
+         opt_number(j, p, "throttle", &c->throttle, err) &&
+         opt_string(j, p, "monitor", &c->monitor, err) &&
+         read_digest(j, p, c->monitor, &c->monitor_sha256, err) &&
+         read_array(j, p, p + ".", "source_map", false, &c->source_map, read_source_map_entry,
+                    err) &&
+         read_location(j, p, &c->loc, err);
+}
+
+bool read_assertion(const Json& j, const std::string& p, Assertion* a, std::string* err) {
+  return get_string(j, p, "rule", &a->rule, err) &&
+         read_constraint(j, p, "property", &a->property, err) && read_location(j, p, &a->loc, err);
+}
+
+bool read_arbitrated_port(const Json& j, const std::string& p, ArbitratedPort* a,
+                          std::string* err) {
+  return get_string(j, p, "port", &a->port, err) &&
+         opt_bool(j, p, "by_priority", &a->by_priority, err) &&
+         opt_bool(j, p, "complete", &a->complete, err) &&
+         string_list(j, p, "rules", &a->rules, err) && read_location(j, p, &a->loc, err) &&
+         read_array(j, p, p + ".", "asserts", false, &a->asserts, read_assertion, err);
+}
+
+bool read_exclusive_group(const Json& j, const std::string& p, ExclusiveGroup* g,
+                          std::string* err) {
+  return string_list(j, p, "events", &g->events, err) && read_location(j, p, &g->loc, err);
+}
+
+bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::string* err) {
+  return read_constraint(j, p, "formula", &inv->formula, err) &&
+         read_location(j, p, &inv->loc, err);
+}
+
+// A resource: its name, its ports and, optionally, the predicate saying which commands use it.
+bool read_resource(const Json& j, const std::string& p, Resource* res, std::string* err) {
+  if (!get_string(j, p, "name", &res->name, err) || !string_list(j, p, "ports", &res->ports, err))
+    return false;
+  if (j.contains("uses")) {
+    std::string text, error;
+    if (!get_string(j, p, "uses", &text, err)) return false;
+    res->uses = parse_body_expr(text, &error);
+    if (!res->uses) return fail(p + ".uses: " + error, err);
+  }
+  return read_location(j, p, &res->loc, err);
+}
+
+// The model in `root`, section by section; nullopt and *err at the first bad value.
+std::optional<App> read_app(const Json& root, std::string* err) {
   App app;
   const std::string r = "app.json";
-  if (!root.is_object()) throw LoadError(r + ": expected a JSON object");
-  const Json& version = member(root, r, "schema_version");
-  if (!version.is_number_integer()) throw LoadError(r + ".schema_version: expected an integer");
-  app.schema_version = version.get<int>();
-  if (app.schema_version != kSchemaVersion)
-    throw LoadError(r + ".schema_version: this arbc reads version " +
-                    std::to_string(kSchemaVersion) + ", the file has " +
-                    std::to_string(app.schema_version) + "; rebuild it with this arbc");
-  app.name = get_string(root, r, "name");
-  app.description = opt_string(root, r, "description");
-  app.spec_file = opt_string(root, r, "spec_file");
-
-  const Json& modules = array_member(root, r, "modules");
-  for (size_t i = 0; i < modules.size(); ++i) {
-    std::string p = "modules[" + std::to_string(i) + "]";
-    Module m;
-    m.name = get_string(modules[i], p, "name");
-    m.doc = opt_string(modules[i], p, "doc");
-    m.loc = read_location(modules[i], p);
-    const Json& ports = array_member(modules[i], p, "ports");
-    for (size_t k = 0; k < ports.size(); ++k) {
-      std::string pp = p + ".ports[" + std::to_string(k) + "]";
-      Port port;
-      port.name = get_string(ports[k], pp, "name");
-      std::string dir = get_string(ports[k], pp, "direction");
-      if (dir != "in" && dir != "out")
-        throw LoadError(pp + ".direction: expected \"in\" or \"out\"");
-      port.direction = dir == "in" ? Direction::In : Direction::Out;
-      port.type = read_type(ports[k], pp);
-      port.loc = read_location(ports[k], pp);
-      m.ports.push_back(std::move(port));
-    }
-    app.modules.push_back(std::move(m));
-  }
-
-  if (root.contains("events")) {
-    const Json& events = array_member(root, r, "events");
-    for (size_t i = 0; i < events.size(); ++i) {
-      std::string p = "events[" + std::to_string(i) + "]";
-      Event e;
-      e.name = get_string(events[i], p, "name");
-      e.lifetime = opt_number(events[i], p, "lifetime");
-      e.source = opt_string(events[i], p, "source");
-      e.loc = read_location(events[i], p);
-      app.events.push_back(std::move(e));
-    }
-  }
-
-  const Json& connections = array_member(root, r, "connections");
-  for (size_t i = 0; i < connections.size(); ++i) {
-    std::string p = "connections[" + std::to_string(i) + "]";
-    const Json& cj = connections[i];
-    Connection c;
-    c.name = get_string(cj, p, "name");
-    c.source = get_string(cj, p, "source");
-    c.destination = get_string(cj, p, "destination");
-    std::string kind = get_string(cj, p, "kind");
-    if (kind == "rule")
-      c.kind = ConnectionKind::Rule;
-    else if (kind == "feed")
-      c.kind = ConnectionKind::Feed;
-    else if (kind == "connect")
-      c.kind = ConnectionKind::Connect;
-    else
-      throw LoadError(p + ".kind: expected \"rule\", \"feed\" or \"connect\"");
-    c.generated = opt_bool(cj, p, "generated");
-    c.constraint = read_constraint(cj, p, "constraint");
-    c.sets = string_list(cj, p, "sets");
-    c.unsets = string_list(cj, p, "unsets");
-    c.must_set = string_list(cj, p, "must_set");
-    c.must_unset = string_list(cj, p, "must_unset");
-    c.activity_event = opt_string(cj, p, "activity_event");
-    c.opaque = opt_bool(cj, p, "opaque");
-    c.body = read_body(cj, p);
-    c.trig_interval = opt_number(cj, p, "trig_interval");
-    c.throttle = opt_number(cj, p, "throttle");
-    c.monitor = opt_string(cj, p, "monitor");
-    c.monitor_sha256 = read_digest(cj, p, c.monitor);
-    c.source_map = read_source_map(cj, p);
-    c.loc = read_location(cj, p);
-    app.connections.push_back(std::move(c));
-  }
-
-  if (root.contains("arbitrated_ports")) {
-    const Json& ports = array_member(root, r, "arbitrated_ports");
-    for (size_t i = 0; i < ports.size(); ++i) {
-      std::string p = "arbitrated_ports[" + std::to_string(i) + "]";
-      ArbitratedPort a;
-      a.port = get_string(ports[i], p, "port");
-      a.by_priority = opt_bool(ports[i], p, "by_priority");
-      a.complete = opt_bool(ports[i], p, "complete");
-      a.rules = string_list(ports[i], p, "rules");
-      a.loc = read_location(ports[i], p);
-      if (ports[i].contains("asserts")) {
-        const Json& asserts = array_member(ports[i], p, "asserts");
-        for (size_t k = 0; k < asserts.size(); ++k) {
-          std::string ap = p + ".asserts[" + std::to_string(k) + "]";
-          Assertion as;
-          as.rule = get_string(asserts[k], ap, "rule");
-          as.property = read_constraint(asserts[k], ap, "property");
-          as.loc = read_location(asserts[k], ap);
-          a.asserts.push_back(std::move(as));
-        }
-      }
-      app.arbitrated_ports.push_back(std::move(a));
-    }
-  }
-
-  if (root.contains("exclusive_groups")) {
-    const Json& groups = array_member(root, r, "exclusive_groups");
-    for (size_t i = 0; i < groups.size(); ++i) {
-      std::string p = "exclusive_groups[" + std::to_string(i) + "]";
-      ExclusiveGroup g;
-      g.events = string_list(groups[i], p, "events");
-      g.loc = read_location(groups[i], p);
-      app.exclusive_groups.push_back(std::move(g));
-    }
-  }
-  if (root.contains("invariants")) {
-    const Json& invs = array_member(root, r, "invariants");
-    for (size_t i = 0; i < invs.size(); ++i) {
-      std::string p = "invariants[" + std::to_string(i) + "]";
-      Invariant inv;
-      inv.formula = read_constraint(invs[i], p, "formula");
-      inv.loc = read_location(invs[i], p);
-      app.invariants.push_back(std::move(inv));
-    }
-  }
-  if (root.contains("resources")) {
-    const Json& rs = array_member(root, r, "resources");
-    for (size_t i = 0; i < rs.size(); ++i) {
-      std::string p = "resources[" + std::to_string(i) + "]";
-      Resource res;
-      res.name = get_string(rs[i], p, "name");
-      res.ports = string_list(rs[i], p, "ports");
-      if (rs[i].contains("uses")) {
-        std::string err;
-        res.uses = parse_body_expr(get_string(rs[i], p, "uses"), &err);
-        if (!res.uses) throw LoadError(p + ".uses: " + err);
-      }
-      res.loc = read_location(rs[i], p);
-      app.resources.push_back(std::move(res));
-    }
-  }
+  bool ok = read_header(root, r, &app, err) &&
+            read_array(root, r, "", "modules", true, &app.modules, read_module, err) &&
+            read_array(root, r, "", "events", false, &app.events, read_event, err) &&
+            read_array(root, r, "", "connections", true, &app.connections, read_connection, err) &&
+            read_array(root, r, "", "arbitrated_ports", false, &app.arbitrated_ports,
+                       read_arbitrated_port, err) &&
+            read_array(root, r, "", "exclusive_groups", false, &app.exclusive_groups,
+                       read_exclusive_group, err) &&
+            read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
+            read_array(root, r, "", "resources", false, &app.resources, read_resource, err);
+  if (!ok) return std::nullopt;
   return app;
 }
 
@@ -330,17 +338,22 @@ bool parse_json(std::string_view text, Json* root, std::string* err) {
 
 }  // namespace
 
+std::optional<App> from_app_json(std::string_view text, std::string* err) {
+  Json root;
+  if (!parse_json(text, &root, err)) return std::nullopt;
+  try {
+    return read_app(root, err);
+  } catch (const Json::exception& e) {  // a bug above (a value read before its type was checked)
+    *err = std::string("app.json: ") + e.what();
+    return std::nullopt;
+  }
+}
+
 AppLoad from_app_json(std::string_view text) {
   AppLoad result;
-  Json root;
-  if (!parse_json(text, &root, &result.error)) return result;
-  try {
-    result.app = read_app(root);
+  if (std::optional<App> app = from_app_json(text, &result.error)) {
+    result.app = std::move(*app);
     result.ok = true;
-  } catch (const LoadError& e) {
-    result.error = e.what();
-  } catch (const Json::exception& e) {
-    result.error = std::string("app.json: ") + e.what();
   }
   return result;
 }

@@ -2,6 +2,7 @@
 // Writing is deterministic: the same model gives the same bytes.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -11,14 +12,17 @@ namespace arbc::model {
 
 std::string to_app_json(const App& app);
 
-// Errors are values: on failure `ok` is false and `error` says where ("connections[3].source")
-// and what is wrong.
+// The model in `text`; nullopt and *err on failure, saying where ("connections[3].source", or
+// the line and column of a JSON syntax error) and what is wrong.
+std::optional<App> from_app_json(std::string_view text, std::string* err);
+
+// The same as a result struct, kept only for runtime/app_loader.cc until runtime/ moves to the
+// form above (issue 14); new code uses that one.
 struct AppLoad {
   bool ok = false;
   App app;
   std::string error;
 };
-
 AppLoad from_app_json(std::string_view text);
 
 }  // namespace arbc::model

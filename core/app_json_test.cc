@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace arbc::model {
 namespace {
@@ -42,17 +43,26 @@ App small_app() {
   return app;
 }
 
+// The error from_app_json gives for `text` (empty, and a test failure, when it loads).
+std::string load_error(std::string_view text) {
+  std::string err;
+  EXPECT_FALSE(from_app_json(text, &err)) << "loaded";
+  return err;
+}
+
 TEST(AppJsonTest, RoundTripsByteForByte) {
   std::string text = to_app_json(small_app());
-  AppLoad loaded = from_app_json(text);
-  ASSERT_TRUE(loaded.ok) << loaded.error;
-  EXPECT_EQ(to_app_json(loaded.app), text);
-  EXPECT_EQ(loaded.app.connections[0].constraint.to_string(), "not e_face or e_face_2");
-  EXPECT_EQ(*loaded.app.connections[0].trig_interval, 0.5);
-  EXPECT_EQ(loaded.app.modules[0].loc.line, 3);
-  EXPECT_EQ(loaded.app.connections[0].source_map, (std::vector<SourceMapEntry>{{12, 7}, {13, 8}}));
-  EXPECT_EQ(loaded.app.connections[0].activity_event, "act_track");
-  EXPECT_EQ(loaded.app.connections[0].monitor_sha256, std::string(64, 'a'));
+  std::string err;
+  std::optional<App> app = from_app_json(text, &err);
+  ASSERT_TRUE(app) << err;
+  EXPECT_TRUE(err.empty());
+  EXPECT_EQ(to_app_json(*app), text);
+  EXPECT_EQ(app->connections[0].constraint.to_string(), "not e_face or e_face_2");
+  EXPECT_EQ(*app->connections[0].trig_interval, 0.5);
+  EXPECT_EQ(app->modules[0].loc.line, 3);
+  EXPECT_EQ(app->connections[0].source_map, (std::vector<SourceMapEntry>{{12, 7}, {13, 8}}));
+  EXPECT_EQ(app->connections[0].activity_event, "act_track");
+  EXPECT_EQ(app->connections[0].monitor_sha256, std::string(64, 'a'));
 }
 
 // One representation of a constraint: its text (schema version 2 dropped the tree).
@@ -70,30 +80,75 @@ TEST(AppJsonTest, EveryMonitorHasItsDigest) {
   std::string text = to_app_json(small_app());
   std::string bad = text;
   bad.replace(bad.find(std::string(64, 'a')), 64, "");
-  EXPECT_EQ(from_app_json(bad).error,
+  EXPECT_EQ(load_error(bad),
             "connections[0].monitor_sha256: missing; every monitor has the SHA-256 `arbc build` "
             "recorded (rebuild the app)");
   bad = text;
   bad.replace(bad.find(std::string(64, 'a')), 64, std::string(64, 'A'));
-  EXPECT_NE(from_app_json(bad).error.find("not 64 lower-case hex digits"), std::string::npos);
+  EXPECT_NE(load_error(bad).find("not 64 lower-case hex digits"), std::string::npos);
 }
 
 TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
-  EXPECT_EQ(from_app_json("{").error,
+  EXPECT_EQ(load_error("{"),
             "not valid JSON at line 1, column 2: syntax error while parsing object key - "
             "unexpected end of input; expected string literal");
-  EXPECT_EQ(from_app_json("[]").error, "app.json: expected a JSON object");
+  EXPECT_EQ(load_error("[]"), "app.json: expected a JSON object");
   std::string text = to_app_json(small_app());
   std::string bad = text;
   bad.replace(bad.find("\"not e_face or e_face_2\""), 24, "\"not (e_face\"");
-  EXPECT_EQ(from_app_json(bad).error, "connections[0].constraint: expected ')' at offset 11");
+  EXPECT_EQ(load_error(bad), "connections[0].constraint: expected ')' at offset 11");
   bad = text;
   bad.replace(bad.find("\"vec3\""), 6, "\"quat\"");
-  EXPECT_EQ(from_app_json(bad).error, "modules[0].ports[0].type: unknown type 'quat'");
+  EXPECT_EQ(load_error(bad), "modules[0].ports[0].type: unknown type 'quat'");
   bad = text;
   bad.replace(bad.find("\"schema_version\": 2"), 19, "\"schema_version\": 1");
-  EXPECT_NE(from_app_json(bad).error.find("this arbc reads version 2, the file has 1"),
-            std::string::npos);
+  EXPECT_NE(load_error(bad).find("this arbc reads version 2, the file has 1"), std::string::npos);
+}
+
+// Each section of the file names the path of its bad value (one reader per section).
+TEST(AppJsonTest, EverySectionNamesThePathOfItsBadValue) {
+  using Json = nlohmann::ordered_json;
+  const Json good = Json::parse(to_app_json(small_app()));
+  auto with = [&](const std::string& pointer, const Json& value) {
+    Json bad = good;
+    bad[Json::json_pointer(pointer)] = value;
+    return load_error(bad.dump(2));
+  };
+  auto without = [&](const std::string& key) {
+    Json bad = good;
+    bad.erase(key);
+    return load_error(bad.dump(2));
+  };
+  EXPECT_EQ(without("modules"), "app.json: missing \"modules\"");
+  EXPECT_EQ(without("connections"), "app.json: missing \"connections\"");
+  EXPECT_EQ(with("/modules/0", 7), "modules[0]: expected an object");
+  EXPECT_EQ(with("/modules/0/ports/0/direction", "up"),
+            "modules[0].ports[0].direction: expected \"in\" or \"out\"");
+  EXPECT_EQ(with("/modules/0/loc/line", "3"), "modules[0].loc.line: expected an integer");
+  EXPECT_EQ(with("/events/0/lifetime", true), "events[0].lifetime: expected a number or null");
+  EXPECT_EQ(with("/connections/0/kind", "rul"),
+            "connections[0].kind: expected \"rule\", \"feed\" or \"connect\"");
+  EXPECT_EQ(with("/connections/0/opaque", 0), "connections[0].opaque: expected true or false");
+  EXPECT_EQ(with("/connections/0/sets/1", 2), "connections[0].sets[1]: expected a string");
+  EXPECT_EQ(with("/connections/0/source_map/0", Json::array({12})),
+            "connections[0].source_map[0]: expected [monitor_line, spec_line]");
+  EXPECT_EQ(with("/arbitrated_ports/0/asserts/0/property", "e_face and"),
+            "arbitrated_ports[0].asserts[0].property: expected an event name, 'not', 'true', "
+            "'false' or '(' at offset 10");
+  EXPECT_EQ(with("/exclusive_groups/0/events", "e_face"),
+            "exclusive_groups[0].events: expected an array");
+  EXPECT_EQ(with("/invariants/0", Json::object()), "invariants[0]: missing \"formula\"");
+}
+
+// The result-struct form (kept for runtime/app_loader.cc) says the same.
+TEST(AppJsonTest, TheResultStructSaysTheSame) {
+  std::string text = to_app_json(small_app());
+  AppLoad loaded = from_app_json(text);
+  ASSERT_TRUE(loaded.ok) << loaded.error;
+  EXPECT_EQ(to_app_json(loaded.app), text);
+  AppLoad bad = from_app_json("[]");
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.error, load_error("[]"));
 }
 
 TEST(AppJsonTest, ASyntaxErrorNamesItsLineAndColumn) {
@@ -105,7 +160,7 @@ TEST(AppJsonTest, ASyntaxErrorNamesItsLineAndColumn) {
   size_t column = at - text.rfind('\n', at);
   std::string want = "not valid JSON at line " + std::to_string(line) + ", column " +
                      std::to_string(column) + ": syntax error";
-  EXPECT_EQ(from_app_json(text).error.substr(0, want.size()), want);
+  EXPECT_EQ(load_error(text).substr(0, want.size()), want);
 }
 
 }  // namespace

@@ -62,6 +62,14 @@ constexpr CheckId kIds[] = {
      "a statement where it cannot run (emit in `every`, nested `every`)"},
     {"status-source-type", kCheck, "an `events from` source port that is not list<string>"},
     {"syntax", kCheck, "the text does not follow the grammar"},
+    {"test-port", kCheck,
+     "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},
+    {"test-reason", kCheck, "`expect RULE drops \"reason\"` with an unknown drop reason"},
+    {"test-value", kCheck, "a test's message literal is not a constant value of its port's type"},
+    {"test-window", kCheck,
+     "a test window that ends before it starts, or an event state without `at`"},
+    {"tests-file", kCheck,
+     "a tests file (`tests for`) that declares more than tests, or whose app cannot be read"},
     {"type-cycle", kCheck, "a named type defined in terms of itself"},
     {"type-mismatch", kCheck, "an operand, condition or value of the wrong type"},
     {"unfed", kVerify, "a constraint or assert reads an event nothing sets into the port"},
@@ -79,7 +87,8 @@ constexpr CheckId kIds[] = {
     {"unused", kVerify, "an event is set but nothing reads it (warning; an error with --strict)"},
     // `arbc verify APP.xml` and `arbc import yarp` (docs/yarp.md#diagnostics; golden cases in
     // tests/yarp_verify/).
-    {"yarp-carrier", kYarp, "a carrier string YARP reads differently, or a monitor arbc cannot read"},
+    {"yarp-carrier", kYarp,
+     "a carrier string YARP reads differently, or a monitor arbc cannot read"},
     {"yarp-constraint-syntax", kYarp, "a monitor's constraint that does not parse"},
     {"yarp-event-forever", kYarp, "an event set without a lifetime that its monitor never unsets"},
     {"yarp-keyword-event", kYarp, "an event name that is, or is part of, and/or/not/true/false"},
@@ -88,7 +97,8 @@ constexpr CheckId kIds[] = {
     {"yarp-script-error", kYarp, "a monitor that fails to load, or whose create fails"},
     {"yarp-shared-event", kYarp, "an event set or read by monitors on different ports"},
     {"yarp-substring-event", kYarp, "an event name YARP also replaces inside another name"},
-    {"yarp-trig-interval", kYarp, "PortMonitor.setTrigInterval, whose period YARP multiplies by 1000"},
+    {"yarp-trig-interval", kYarp,
+     "PortMonitor.setTrigInterval, whose period YARP multiplies by 1000"},
     {"yarp-xml", kYarp, "a yarpmanager XML that cannot be read, or parts of it arbc does not read"},
 };
 

@@ -47,10 +47,14 @@ Constraint nary(Constraint::Op op, std::vector<Constraint> args) {
 // Binding strength, to print only the parentheses the grammar needs.
 int precedence(Constraint::Op op) {
   switch (op) {
-    case Constraint::Op::Or: return 1;
-    case Constraint::Op::And: return 2;
-    case Constraint::Op::Not: return 3;
-    default: return 4;
+    case Constraint::Op::Or:
+      return 1;
+    case Constraint::Op::And:
+      return 2;
+    case Constraint::Op::Not:
+      return 3;
+    default:
+      return 4;
   }
 }
 
@@ -58,9 +62,15 @@ void print(const Constraint& c, int parent_precedence, std::string& out) {
   bool parens = precedence(c.op) < parent_precedence;
   if (parens) out += '(';
   switch (c.op) {
-    case Constraint::Op::True: out += "true"; break;
-    case Constraint::Op::False: out += "false"; break;
-    case Constraint::Op::Event: out += c.event; break;
+    case Constraint::Op::True:
+      out += "true";
+      break;
+    case Constraint::Op::False:
+      out += "false";
+      break;
+    case Constraint::Op::Event:
+      out += c.event;
+      break;
     case Constraint::Op::Not:
       out += "not ";
       print(c.args[0], precedence(Constraint::Op::Not), out);
@@ -129,9 +139,15 @@ class Parser {
     }
     if (!error_.empty()) return {};
     switch (token_kind_) {
-      case Tok::Not: next(); return Constraint::negate(parse_unary(depth + 1));
-      case Tok::True: next(); return Constraint::constant(true);
-      case Tok::False: next(); return Constraint::constant(false);
+      case Tok::Not:
+        next();
+        return Constraint::negate(parse_unary(depth + 1));
+      case Tok::True:
+        next();
+        return Constraint::constant(true);
+      case Tok::False:
+        next();
+        return Constraint::constant(false);
       case Tok::Ident: {
         Constraint c = Constraint::event_ref(std::string(token_));
         next();
@@ -144,7 +160,9 @@ class Parser {
         next();
         return c;
       }
-      case Tok::End: fail("expected an event name, 'not', 'true', 'false' or '('"); return {};
+      case Tok::End:
+        fail("expected an event name, 'not', 'true', 'false' or '('");
+        return {};
       default:
         fail("expected an event name, 'not', 'true', 'false' or '(' but found '" +
              std::string(token_) + "'");
@@ -215,7 +233,8 @@ Constraint Constraint::conjunction(std::vector<Constraint> args) {
   if (c.op == Op::And && c.args.size() <= 64) {
     std::vector<Constraint> unique;
     for (Constraint& a : c.args)
-      if (std::find(unique.begin(), unique.end(), a) == unique.end()) unique.push_back(std::move(a));
+      if (std::find(unique.begin(), unique.end(), a) == unique.end())
+        unique.push_back(std::move(a));
     if (unique.size() == 1) return std::move(unique.front());
     c.args = std::move(unique);
   }
@@ -244,12 +263,23 @@ void Constraint::collect_events(std::set<std::string>& out) const {
 
 ConstraintParse parse_constraint(std::string_view text) { return Parser(text).run(); }
 
+std::optional<Constraint> parse_constraint(std::string_view text, std::string* err) {
+  ConstraintParse parsed = Parser(text).run();
+  if (parsed.ok) return std::move(parsed.constraint);
+  *err = parsed.error + " at offset " + std::to_string(parsed.offset);
+  return std::nullopt;
+}
+
 bool evaluate(const Constraint& c, const std::set<std::string>& present) {
   switch (c.op) {
-    case Constraint::Op::True: return true;
-    case Constraint::Op::False: return false;
-    case Constraint::Op::Event: return present.count(c.event) > 0;
-    case Constraint::Op::Not: return !evaluate(c.args[0], present);
+    case Constraint::Op::True:
+      return true;
+    case Constraint::Op::False:
+      return false;
+    case Constraint::Op::Event:
+      return present.count(c.event) > 0;
+    case Constraint::Op::Not:
+      return !evaluate(c.args[0], present);
     case Constraint::Op::And:
       for (const Constraint& a : c.args)
         if (!evaluate(a, present)) return false;

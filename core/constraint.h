@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -19,7 +20,7 @@ namespace arbc {
 struct Constraint {
   enum class Op { True, False, Event, Not, And, Or };
   Op op = Op::True;
-  std::string event;            // Op::Event
+  std::string event;             // Op::Event
   std::vector<Constraint> args;  // Op::Not: one; Op::And / Op::Or: two or more
 
   static Constraint constant(bool value);
@@ -36,12 +37,16 @@ struct Constraint {
   bool operator==(const Constraint&) const = default;
 };
 
-// The result of parsing constraint text; an error is a value, not an exception.
+// The constraint in `text`; nullopt and *err on failure ("expected ')' at offset 11").
+std::optional<Constraint> parse_constraint(std::string_view text, std::string* err);
+
+// The same with the error's byte offset as a number, for tools that point into the text (the
+// YARP importer's messages, the fuzzer) and for runtime/ until it moves to the form above.
 struct ConstraintParse {
   bool ok = false;
   Constraint constraint;
-  std::string error;   // what is wrong, for the user
-  size_t offset = 0;   // byte offset of the error in the text
+  std::string error;  // what is wrong, for the user
+  size_t offset = 0;  // byte offset of the error in the text
 };
 
 // Nesting deeper than this is rejected, so hostile text cannot exhaust the stack.

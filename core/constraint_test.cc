@@ -20,7 +20,8 @@ TEST(ConstraintTest, PrintsWithFewestParentheses) {
 }
 
 TEST(ConstraintTest, TextRoundTrips) {
-  for (const char* text : {"true", "false", "not not a", "a and (b or c or not d)", "e or e_ball"}) {
+  for (const char* text :
+       {"true", "false", "not not a", "a and (b or c or not d)", "e or e_ball"}) {
     Constraint c = parse_ok(text);
     EXPECT_EQ(parse_ok(c.to_string()), c) << text;
   }
@@ -58,6 +59,19 @@ TEST(ConstraintTest, ReportsErrorsWithOffsets) {
   p = parse_constraint("a & b");
   EXPECT_FALSE(p.ok);
   EXPECT_EQ(p.offset, 2u);
+}
+
+// The project's one error form (docs/design.md#reporting-errors): the value, or *err.
+TEST(ConstraintTest, TheErrFormGivesTheConstraintOrSaysWhereItFailed) {
+  std::string err;
+  std::optional<Constraint> c = parse_constraint("a and (b or", &err);
+  EXPECT_FALSE(c);
+  EXPECT_EQ(err, "expected an event name, 'not', 'true', 'false' or '(' at offset 11");
+  err.clear();
+  c = parse_constraint("not (a or b)", &err);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->to_string(), "not (a or b)");
+  EXPECT_TRUE(err.empty());
 }
 
 TEST(ConstraintTest, DeepNestingIsAnErrorNotACrash) {

@@ -1,4 +1,5 @@
-// core/join.h and core/quote.h: the one join and the one escaping routine.
+// core/join.h, core/quote.h and core/time_text.h: the one join, the one escaping routine and
+// the one way a time is printed for people.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -7,6 +8,7 @@
 
 #include "core/join.h"
 #include "core/quote.h"
+#include "core/time_text.h"
 
 namespace arbc {
 namespace {
@@ -45,6 +47,15 @@ TEST(Quote, AppendsAfterWhatIsThere) {
   std::string out = "x=";
   append_quoted(out, "v", QuoteStyle::Json);
   EXPECT_EQ(out, "x=\"v\"");
+}
+
+TEST(TimeText, DropsBinaryNoiseAndTrailingZeros) {
+  EXPECT_EQ(time_text(0.1 + 0.2), "0.3");
+  EXPECT_EQ(time_text(2.9000000000000012), "2.9");
+  EXPECT_EQ(time_text(1.25), "1.25");
+  EXPECT_EQ(time_text(3.0), "3");
+  EXPECT_EQ(time_text(0.0000016), "0.000002");  // to the microsecond
+  EXPECT_EQ(time_text(-0.0000001), "0");
 }
 
 }  // namespace

@@ -8,13 +8,14 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);
-  arbc::model::AppLoad loaded = arbc::model::from_app_json(text);
-  if (!loaded.ok) {
-    if (loaded.error.empty()) std::abort();
+  std::string error;
+  std::optional<arbc::model::App> loaded = arbc::model::from_app_json(text, &error);
+  if (!loaded) {
+    if (error.empty()) std::abort();
     return 0;
   }
-  std::string written = arbc::model::to_app_json(loaded.app);
-  arbc::model::AppLoad again = arbc::model::from_app_json(written);
-  if (!again.ok || arbc::model::to_app_json(again.app) != written) std::abort();
+  std::string written = arbc::model::to_app_json(*loaded);
+  std::optional<arbc::model::App> again = arbc::model::from_app_json(written, &error);
+  if (!again || arbc::model::to_app_json(*again) != written) std::abort();
   return 0;
 }

@@ -29,6 +29,8 @@ decl
   | connectDecl
   | assertDecl
   | resourceDecl
+  | testDecl
+  | testsForDecl
   ;
 
 appDecl          : 'app' ID STRING? ';' ;
@@ -49,6 +51,20 @@ connectDecl      : 'connect' portRef '->' portRef (block | ';') ;
 assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
 // A resource shared by several ports: at most one of them receives a command that uses it.
 resourceDecl     : 'resource' ID '{' portRef (',' portRef)* ','? '}' ('when' expr)? ';' ;
+
+// `arbc test` (docs/testing.md): timed inputs and expectations, checked by the front end and
+// run on the embedded runtime in simulated time. Not part of the app: lowering ignores them.
+testDecl : 'test' STRING ('on' ID)? '{' testStep* '}' ;
+// A tests file: `tests for "app.spec";` then only `test` declarations, checked against that app.
+testsForDecl : 'tests' 'for' STRING ';' ;
+testStep
+  : 'at' duration portRef '<-' expr ';'                                  # testInput
+  | 'at' duration op=('set' | 'unset') ID ';'                            # testEvent
+  | 'expect' portRef 'receives' (nothing='nothing' | expr)? testWindow? ';' # expectReceives
+  | 'expect' ID 'drops' STRING? testWindow? ';'                          # expectDrops
+  | 'expect' expr testWindow ';'                                         # expectState
+  ;
+testWindow : 'at' duration | 'within' duration '..' duration ;
 
 portRef  : ID '.' ID ;
 duration : DURATION | NUMBER | ID ;

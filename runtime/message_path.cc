@@ -50,6 +50,7 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     }
     return;
   }
+  if (trace_.enabled()) trace_.publish(now(), out.qualified, v);
   for (Connection* c : out.connections) enqueue(*c, v);
 }
 

@@ -50,6 +50,16 @@ void Trace::end() {
   std::fwrite(line_.data(), 1, line_.size(), file_);
 }
 
+void Trace::publish(double t, std::string_view port, const Value& v) {
+  if (records_) record(t, TraceKind::Publish).port = port;
+  if (!file_) return;
+  begin(t, "publish");
+  field("port", port);
+  line_ += ",\"value\":";
+  line_ += v.to_json();
+  end();
+}
+
 void Trace::delivery(double t, std::string_view connection, std::string_view port, const Value& v) {
   if (records_) {
     TraceRecord& r = record(t, TraceKind::Deliver);

@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/value.h"
 #include "runtime/drop_reason.h"
 #include "runtime/trace_record.h"
-#include "core/value.h"
 
 namespace arbc {
 
@@ -25,6 +25,9 @@ class Trace {
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }
   bool enabled() const { return file_ != nullptr || records_ != nullptr; }
 
+  // A module published v on its out-port `port` ("Module.port"); written before the message
+  // enters the connections from the port, so a replay of the trace can publish it again.
+  void publish(double t, std::string_view port, const Value& v);
   void delivery(double t, std::string_view connection, std::string_view port, const Value& v);
   void drop(double t, std::string_view connection, DropReason reason, std::string_view detail);
   // kind: "set", "unset" or "expire"; expiry < 0 means none.

@@ -20,7 +20,8 @@ enum class TraceKind {
   Log,
   PublishError,
   PluginError,
-  Pending
+  Pending,
+  Publish  // a value a module published on an out-port (what `arbc run --inputs` replays)
 };
 
 struct TraceRecord {
@@ -29,7 +30,8 @@ struct TraceRecord {
   // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from");
   // PluginError: the module or environment whose callback threw ("from").
   std::string connection;
-  // Deliver: the destination port; Event: the port whose container changed; PublishError.
+  // Deliver: the destination port; Event: the port whose container changed; PublishError;
+  // Publish: the out-port ("Module.port").
   std::string port;
   DropReason reason = DropReason::Rejected;  // Drop only
   std::string op;                            // Event: "set", "unset" or "expire"

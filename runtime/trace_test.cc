@@ -41,7 +41,7 @@ TEST(TraceTest, SameSeedGivesByteIdenticalTraces) {
   EXPECT_GT(a.size(), 1000u);
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
-  for (const char* kind : {"\"type\":\"deliver\"", "\"reason\":\"feed\"", "\"reason\":\"rejected\"",
+  for (const char* kind : {"\"type\":\"publish\"", "\"type\":\"deliver\"", "\"reason\":\"feed\"", "\"reason\":\"rejected\"",
                            "\"reason\":\"not-selected\"", "\"reason\":\"no-value\"",
                            "\"op\":\"set\"", "\"op\":\"unset\"", "\"op\":\"expire\""}) {
     EXPECT_NE(a.find(kind), std::string::npos) << kind;
@@ -55,8 +55,9 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
   std::istringstream lines(text);
   std::string line;
   size_t i = 0;
-  static const char* kTypes[] = {"deliver", "drop",          "event",        "error",  "quarantine",
-                                 "log",     "publish-error", "plugin-error", "pending"};
+  static const char* kTypes[] = {"deliver",      "drop",         "event",   "error",
+                                 "quarantine",   "log",          "publish-error",
+                                 "plugin-error", "pending",      "publish"};
   while (std::getline(lines, line)) {
     ASSERT_LT(i, records.size()) << line;
     const TraceRecord& r = records[i++];
@@ -99,6 +100,7 @@ TEST(TraceTest, LineFormat) {
   Trace trace;
   std::string path = t.dir + "/t.jsonl";
   ASSERT_EQ(trace.open(path), "");
+  trace.publish(1.5, "ObjectDetector.objects", Value::list({Value::record({{"dist", 0.3}})}));
   trace.delivery(1.5, "take", "PickAndPlace.cmd", Value::record({{"verb", "take"}}));
   trace.drop(2, "put", DropReason::NotSelected, "");
   trace.event(2.25, "Speak.text", "set", "e_face", "feed_face", 3.25);
@@ -108,6 +110,8 @@ TEST(TraceTest, LineFormat) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(),
+            "{\"t\":1.5,\"type\":\"publish\",\"port\":\"ObjectDetector.objects\","
+            "\"value\":[{\"dist\":0.3}]}\n"
             "{\"t\":1.5,\"type\":\"deliver\",\"connection\":\"take\",\"port\":\"PickAndPlace.cmd\","
             "\"value\":{\"verb\":\"take\"}}\n"
             "{\"t\":2.0,\"type\":\"drop\",\"connection\":\"put\",\"reason\":\"not-selected\"}\n"

@@ -13,7 +13,8 @@
 #
 # Environment: ARBC_MUTATE_DIR (scratch directory, default a new one under /tmp, kept for its
 # logs), ARBC_MUTATE_EXCLUDE (a ctest -E regex; default: the installed-package and Chromium
-# tests, which check packaging and HTML, not the logic mutated here), ARBC_MUTATE_JOBS (2).
+# tests, which check packaging and HTML, not the logic mutated here, and the site-list checks,
+# which fail on any mutated tree by construction and would "kill" every mutant), ARBC_MUTATE_JOBS (2).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 sites_py="python3 $root/scripts/mutation_sites.py"
@@ -27,7 +28,9 @@ $sites_py check "$root" >/dev/null || { $sites_py check "$root"; exit 2; }
 if [ $# -gt 0 ]; then ids=("$@"); else mapfile -t ids < <($sites_py list | cut -f1); fi
 
 jobs=${ARBC_MUTATE_JOBS:-2}
-exclude=${ARBC_MUTATE_EXCLUDE:-installed_package|report_in_chromium}
+exclude=${ARBC_MUTATE_EXCLUDE:-installed_package|report_in_chromium|mutation_site}
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')  # the tree tested
+git -C "$root" diff --quiet HEAD 2>/dev/null || commit="$commit with uncommitted changes"
 scratch=${ARBC_MUTATE_DIR:-$(mktemp -d /tmp/arbc-mutate.XXXXXX)}
 mkdir -p "$scratch/logs"
 echo "scratch copy: $scratch (logs in $scratch/logs)"
@@ -77,7 +80,7 @@ done
 total=$((killed + survived))
 echo
 echo "mutation score: $killed killed of $total mutants ($(( total ? 100 * killed / total : 0 ))%)," \
-  "$(date -u +%Y-%m-%d), $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')"
+  "$(date -u +%Y-%m-%d), $commit"
 [ "$broken" -eq 0 ] || echo "sites that do not build (not counted): ${unbuildable[*]}"
 for id in "${survivors[@]}"; do
   echo "survivor $id: $($sites_py show "$id" | sed -n 's/^why: //p')"

@@ -48,9 +48,10 @@ TEST(Fixtures, AppJsonFilesMatchTheModels) {
     if (std::getenv("ARBC_UPDATE_GOLDEN"))
       std::ofstream(fixture_path(name), std::ios::binary) << json;
     EXPECT_EQ(read(fixture_path(name)), json) << name << " is stale: run with ARBC_UPDATE_GOLDEN=1";
-    model::AppLoad back = model::from_app_json(json);
-    ASSERT_TRUE(back.ok) << back.error;
-    EXPECT_EQ(model::to_app_json(back.app), json);
+    std::string error;
+    std::optional<model::App> back = model::from_app_json(json, &error);
+    ASSERT_TRUE(back) << error;
+    EXPECT_EQ(model::to_app_json(*back), json);
   }
 }
 

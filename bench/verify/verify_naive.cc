@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/app_json.h"
 #include "bench/verify/pairwise_baseline.h"
+#include "core/app_json.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -16,12 +16,14 @@ int main(int argc, char** argv) {
   std::ifstream in(argv[1], std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  arbc::model::AppLoad load = arbc::model::from_app_json(text.str());
-  if (!in || !load.ok) {
-    std::fprintf(stderr, "verify_naive: %s: %s\n", argv[1], load.error.c_str());
+  std::string error = "cannot read the file";
+  std::optional<arbc::model::App> app;
+  if (in) app = arbc::model::from_app_json(text.str(), &error);
+  if (!app) {
+    std::fprintf(stderr, "verify_naive: %s: %s\n", argv[1], error.c_str());
     return 2;
   }
-  arbc::verify::PairwiseResult r = arbc::verify::pairwise_baseline(load.app);
+  arbc::verify::PairwiseResult r = arbc::verify::pairwise_baseline(*app);
   if (!r.ok) {
     std::fprintf(stderr, "verify_naive: %s: malformed model\n", argv[1]);
     return 2;

@@ -14,10 +14,11 @@ class ReportFile {
   ReportFile& operator=(const ReportFile&) = delete;
   ~ReportFile();
 
-  // Creates (or truncates) path. Returns "" or "cannot write report file PATH: REASON".
-  std::string open(const std::string& path);
-  // Writes text and closes the file. Returns "" or what failed (a full disk, say).
-  std::string write(const std::string& text);
+  // Creates (or truncates) path; false and *err ("cannot write report file PATH: REASON") when
+  // it cannot.
+  bool open(const std::string& path, std::string* err);
+  // Writes text and closes the file; false and *err when that fails (a full disk, say).
+  bool write(const std::string& text, std::string* err);
 
  private:
   std::FILE* file_ = nullptr;

@@ -42,8 +42,10 @@ enum class Mode { Message, Trig };
 
 class MonitorWriter {
  public:
-  MonitorWriter(const lower::LoweredApp& app, const MonitorPlan& plan, const SpecLines& lines)
+  MonitorWriter(const lower::LoweredApp& app, const MonitorPlan& plan, const SpecLines& lines,
+                const MonitorStyle& style)
       : app_(app),
+        style_(style),
         plan_(plan),
         conn_(app.app.connections[plan.connection]),
         lines_(lines),
@@ -65,7 +67,7 @@ class MonitorWriter {
         break;
     }
     LuaWriter out;
-    header(out);
+    if (style_.header) header(out);
     std::string prelude = lua_prelude(tr_.helpers_used());
     if (!prelude.empty()) {
       out.line("-- Builtins of the spec language, in plain Lua.");
@@ -133,8 +135,8 @@ class MonitorWriter {
   // The runtime installs the constraint from app.json (docs/runtime.md): create only starts
   // the `every` timer, and is left out when there is none.
   void create(LuaWriter& w) {
-    if (!conn_.trig_interval) return;
-    w.line("PortMonitor.create = function(options)");
+    if (!conn_.trig_interval || !style_.trig_in_create) return;
+    w.line(style_.callbacks + ".create = function(options)");
     w.indent();
     w.line("PortMonitor.setTrigInterval(" + lua_float(*conn_.trig_interval) + ")",
            every_ ? every_->loc.line : 0);
@@ -167,7 +169,7 @@ class MonitorWriter {
     w.append(preds);
 
     create(w);
-    w.line("PortMonitor.accept = function(" + msg_ + ")");
+    w.line(style_.callbacks + ".accept = function(" + msg_ + ")");
     w.indent();
     if (!plan_.status_flags.empty()) {
       w.line("-- The message is the module's whole status: the flags that hold now.");
@@ -176,9 +178,8 @@ class MonitorWriter {
       // setEvent without a lifetime: the runtime applies the event's lifetime from app.json.
       for (const lower::StatusFlagFeed& f : plan_.status_flags) {
         quote(w, f.loc.line);
-        w.line("if present[" + lua_string(f.flag) + "] then PortMonitor.setEvent(" +
-                   lua_string(f.event) + ") else PortMonitor.unsetEvent(" + lua_string(f.event) +
-                   ") end",
+        w.line("if present[" + lua_string(f.flag) + "] then " + set_call(f.event, "") + " else " +
+                   unset_call(f.event) + " end",
                f.loc.line);
       }
     }
@@ -190,9 +191,8 @@ class MonitorWriter {
       // The event's lifetime (`for D`) comes from app.json: the runtime applies it. With it
       // the event lapses D after the last message on which it held; without, a message on
       // which it does not hold unsets it.
-      std::string set = "PortMonitor.setEvent(" + lua_string(d.event) + ")";
-      std::string otherwise =
-          d.lifetime ? "" : " else PortMonitor.unsetEvent(" + lua_string(d.event) + ")";
+      std::string set = set_call(d.event, "");
+      std::string otherwise = d.lifetime ? "" : " else " + unset_call(d.event);
       if (may_lack_value[i]) {
         // Without a value the event is left as it was; the other events are still updated,
         // then the message is dropped as `no-value` (PortMonitor.novalue's error, re-raised).
@@ -238,9 +238,19 @@ class MonitorWriter {
   // `set e for D` passes D; plain `set e` passes none, and the runtime applies the event's
   // declared lifetime from app.json (one source of truth, docs/runtime.md).
   std::string set_event_call(const ast::Stmt& s) {
-    if (s.duration)
-      return "PortMonitor.setEvent(" + lua_string(s.name) + ", " + duration(*s.duration) + ")";
-    return "PortMonitor.setEvent(" + lua_string(s.name) + ")";
+    return set_call(s.name, s.duration ? duration(*s.duration) : "");
+  }
+
+  // The host call that sets `event` (lifetime: Lua text, empty for the declared one).
+  std::string set_call(const std::string& event, const std::string& lifetime) {
+    if (style_.set_event) return style_.set_event(event, lifetime);
+    if (!lifetime.empty())
+      return "PortMonitor.setEvent(" + lua_string(event) + ", " + lifetime + ")";
+    return "PortMonitor.setEvent(" + lua_string(event) + ")";
+  }
+  std::string unset_call(const std::string& event) {
+    if (style_.unset_event) return style_.unset_event(event);
+    return "PortMonitor.unsetEvent(" + lua_string(event) + ")";
   }
 
   void if_chain(const ast::Stmt& s, LuaWriter& w, Mode mode, bool elseif) {
@@ -294,7 +304,7 @@ class MonitorWriter {
         w.line(set_event_call(s), line);
         break;
       case Kind::Unset:
-        w.line("PortMonitor.unsetEvent(" + lua_string(s.name) + ")", line);
+        w.line(unset_call(s.name), line);
         break;
       case Kind::If:
         if_chain(s, w, mode, false);
@@ -353,7 +363,7 @@ class MonitorWriter {
     w.append(trig);
     create(w);
 
-    w.line("PortMonitor.accept = function(" + msg_ + ")");
+    w.line(style_.callbacks + ".accept = function(" + msg_ + ")");
     w.indent();
     if (emits_) w.line("arbc_emitted = " + msg_ + "  -- without `emit`, the input unchanged");
     if (!has_body) {
@@ -365,7 +375,7 @@ class MonitorWriter {
     w.line("end");
     w.blank();
 
-    w.line("PortMonitor.update = function(" + msg_ + ")");
+    w.line(style_.callbacks + ".update = function(" + msg_ + ")");
     w.indent();
     w.line(std::string("return ") + (emits_ ? "arbc_emitted" : msg_));
     w.dedent();
@@ -373,7 +383,7 @@ class MonitorWriter {
 
     if (every_) {
       w.blank();
-      w.line("PortMonitor.trig = function()");
+      w.line(style_.callbacks + ".trig = function()");
       w.indent();
       w.line("arbc_every()  -- a missing value here ends this trig only");
       w.dedent();
@@ -448,6 +458,7 @@ class MonitorWriter {
   }
 
   const lower::LoweredApp& app_;
+  const MonitorStyle& style_;
   const MonitorPlan& plan_;
   const model::Connection& conn_;
   const SpecLines& lines_;
@@ -463,8 +474,8 @@ class MonitorWriter {
 }  // namespace
 
 MonitorText write_monitor(const lower::LoweredApp& app, const lower::MonitorPlan& plan,
-                          const SpecLines& spec_lines) {
-  return MonitorWriter(app, plan, spec_lines).run();
+                          const SpecLines& spec_lines, const MonitorStyle& style) {
+  return MonitorWriter(app, plan, spec_lines, style).run();
 }
 
 }  // namespace arbc::codegen

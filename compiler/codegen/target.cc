@@ -1,6 +1,7 @@
 #include "compiler/codegen/target.h"
 
 #include "compiler/codegen/embedded_target.h"
+#include "compiler/codegen/yarp_target.h"
 
 namespace arbc::codegen {
 
@@ -14,6 +15,7 @@ struct Registration {
 // Add a target here (one line) and in its own file; nothing else changes.
 constexpr Registration kTargets[] = {
     {"embedded", [] { return std::unique_ptr<Target>(new EmbeddedTarget()); }},
+    {"yarp", [] { return std::unique_ptr<Target>(new YarpTarget()); }},
 };
 
 }  // namespace

@@ -1,9 +1,10 @@
 // Code-generation targets (docs/design.md#code-generation-targets). A target turns a lowered
 // application into the files of its artifact directory. `embedded` (the default) writes app.json
-// and one Lua monitor per connection for the bundled runtime; a `yarp` target (yarpmanager XML and
-// YARP-compatible monitors) is an addition to the registry in target.cc, not a rewrite.
+// and one Lua monitor per connection for the bundled runtime; `yarp` writes a yarpmanager
+// application with monitors for YARP's portmonitor carrier (yarp_target.h).
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -30,9 +31,21 @@ struct CodegenResult {
   std::vector<Diagnostic> diagnostics;
 };
 
+// What a deployment file (`arbc build --deploy FILE`) tells a target.
+struct TargetOptions {
+  std::map<std::string, std::string> port_names;  // "Module.port" -> the middleware's name
+};
+
 class Target {
  public:
   virtual ~Target() = default;
+  // Takes the deployment's options; false (and `err`) when the target has no use for them.
+  virtual bool configure(const TargetOptions& options, std::string* err) {
+    if (options.port_names.empty()) return true;
+    *err =
+        "the " + std::string(name()) + " target does not name ports; --deploy is for --target yarp";
+    return false;
+  }
   virtual std::string_view name() const = 0;
   virtual std::string_view description() const = 0;  // one line, for --help
   // Generates every file. Deterministic; never throws for a checked, lowered application.

@@ -78,9 +78,12 @@ bool write_artifacts(const std::string& out_dir, const std::string& app_name,
       *err = quoted(target) + " exists and is not a directory; remove it or choose -o";
       return false;
     }
-    if (!fs::is_empty(target, ec) && !fs::exists(target / "app.json", ec)) {
+    // An arbc build has app.json (embedded target) or ports.json (yarp target).
+    if (!fs::is_empty(target, ec) && !fs::exists(target / "app.json", ec) &&
+        !fs::exists(target / "ports.json", ec)) {
       *err = "refusing to replace " + quoted(target) +
-             ": it is not empty and has no app.json (not an arbc build); choose another -o";
+             ": it is not empty and has no app.json or ports.json (not an arbc build); choose "
+             "another -o";
       return false;
     }
   }

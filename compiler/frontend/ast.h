@@ -306,6 +306,68 @@ struct EventSymbol {
   Loc loc;
 };
 
+// ---------------------------------------------------------------------------------------------
+// Tests (`arbc test`, docs/testing.md). They describe runs of the app, not the app: lowering to
+// app.json ignores them; compiler/lower/test_cases.h turns them into model::TestCase values.
+
+// `at D` or `within D1..D2` after an expectation; absent: the whole test.
+struct TestWindow {
+  bool present = false;
+  Duration from, to;  // `at D`: both are D (to.expr is null)
+  Loc loc;
+};
+
+// `at D M.p <- VALUE;` (Input) or `at D set e;` / `at D unset e;`.
+struct TestStep {
+  enum class Kind { Input, Set, Unset };
+  Kind kind = Kind::Input;
+  Duration at;
+  PortRef port;       // Input
+  ExprPtr value;      // Input
+  std::string event;  // Set, Unset
+  Loc event_loc;
+  Loc loc;
+};
+
+struct TestExpect {
+  enum class Kind {
+    Receives,  // `expect M.p receives [VALUE] [window];`
+    Nothing,   // `expect M.p receives nothing [window];`
+    Drops,     // `expect RULE drops ["reason"] [window];`
+    State,     // `expect CONSTRAINT at D;`
+  };
+  Kind kind = Kind::Receives;
+  PortRef port;      // Receives, Nothing
+  ExprPtr value;     // Receives: null means any value; State: the constraint
+  std::string rule;  // Drops
+  Loc rule_loc;
+  std::string reason;  // Drops: empty means any reason
+  Loc reason_loc;
+  TestWindow window;
+  std::string text;  // as written (without `expect` and `;`), for failure messages
+  Loc loc;
+  // sema:
+  const Rule* rule_decl = nullptr;  // Drops
+  Constraint constraint;            // State
+};
+
+// `test "name" [on RULE] { steps and expectations }`
+struct TestDecl {
+  std::string name;
+  std::string on;  // a rule to test alone; empty: the whole app
+  Loc on_loc;
+  std::vector<TestStep> steps;  // in the order written
+  std::vector<TestExpect> expects;
+  Loc loc;                        // the name
+  const Rule* on_rule = nullptr;  // sema
+};
+
+// `tests for "app.spec";`: this file holds tests of the app in that spec (docs/testing.md).
+struct TestsFor {
+  std::string path;  // as written: relative to the tests file's folder
+  Loc loc;           // the string
+};
+
 // One spec file.
 struct Spec {
   std::string file;
@@ -322,6 +384,8 @@ struct Spec {
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
   std::vector<ResourceDecl> resources;
+  std::vector<TestDecl> tests;
+  std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)
 
   // sema: every event by name, in declaration order.
   std::vector<EventSymbol> event_symbols;

@@ -3,6 +3,7 @@
 #include <ArbcParser.h>
 #include <antlr4-runtime.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <typeinfo>
 
@@ -469,6 +470,10 @@ class Builder {
       spec.asserts.push_back(assert_decl(c));
     } else if (auto* c = ctx->resourceDecl()) {
       spec.resources.push_back(resource_decl(c));
+    } else if (auto* c = ctx->testDecl()) {
+      spec.tests.push_back(test_decl(c));
+    } else if (auto* c = ctx->testsForDecl()) {
+      add_tests_for(spec, c);
     }
   }
 
@@ -621,8 +626,120 @@ class Builder {
     return a;
   }
 
+  // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file
+  void add_tests_for(Spec& spec, ArbcParser::TestsForDeclContext* c) {
+    TestsFor f{decode_string(c->STRING()), loc(c->STRING())};
+    if (spec.tests_for) {
+      error(f.loc,
+            "this file already names the app it tests (\"" + spec.tests_for->path + "\" at line " +
+                std::to_string(spec.tests_for->loc.line) +
+                "); a tests file tests one app: keep one `tests for`",
+            "duplicate");
+      return;
+    }
+    spec.tests_for = std::move(f);
+  }
+
+  // testDecl : 'test' STRING ('on' ID)? '{' testStep* '}' ;
+  TestDecl test_decl(ArbcParser::TestDeclContext* c) {
+    TestDecl t;
+    t.name = decode_string(c->STRING());
+    t.loc = loc(c->STRING());
+    if (c->ID()) {
+      t.on = tx(c->ID());
+      t.on_loc = loc(c->ID());
+    }
+    for (ArbcParser::TestStepContext* step : c->testStep()) add_test_step(t, step);
+    return t;
+  }
+
   // ---- rules (private below) --------------------------------------------------------------
  private:
+  // testStep : 'at' duration portRef '<-' expr ';' | 'at' duration ('set'|'unset') ID ';'
+  //          | 'expect' ... ;   (the four expectations of ast::TestExpect)
+  void add_test_step(TestDecl& t, ArbcParser::TestStepContext* step) {
+    if (auto* c = as<ArbcParser::TestInputContext>(step)) {
+      TestStep s;
+      s.loc = loc(c);
+      s.at = duration(c->duration());
+      s.port = port_ref(c->portRef());
+      s.value = expr(c->expr(), 0);
+      t.steps.push_back(std::move(s));
+    } else if (auto* c = as<ArbcParser::TestEventContext>(step)) {
+      TestStep s;
+      s.kind = tx(c->op) == "set" ? TestStep::Kind::Set : TestStep::Kind::Unset;
+      s.loc = loc(c);
+      s.at = duration(c->duration());
+      s.event = tx(c->ID());
+      s.event_loc = loc(c->ID());
+      t.steps.push_back(std::move(s));
+    } else {
+      t.expects.push_back(test_expect(step));
+    }
+  }
+
+  TestExpect test_expect(ArbcParser::TestStepContext* step) {
+    TestExpect e;
+    e.loc = loc(step);
+    e.text = spaced_text(step);
+    ArbcParser::TestWindowContext* window = nullptr;
+    if (auto* c = as<ArbcParser::ExpectReceivesContext>(step)) {
+      e.kind = c->nothing ? TestExpect::Kind::Nothing : TestExpect::Kind::Receives;
+      e.port = port_ref(c->portRef());
+      if (c->expr()) e.value = expr(c->expr(), 0);
+      window = c->testWindow();
+    } else if (auto* c = as<ArbcParser::ExpectDropsContext>(step)) {
+      e.kind = TestExpect::Kind::Drops;
+      e.rule = tx(c->ID());
+      e.rule_loc = loc(c->ID());
+      if (c->STRING()) {
+        e.reason = decode_string(c->STRING());
+        e.reason_loc = loc(c->STRING());
+      }
+      window = c->testWindow();
+    } else if (auto* c = as<ArbcParser::ExpectStateContext>(step)) {
+      e.kind = TestExpect::Kind::State;
+      e.value = expr(c->expr(), 0);
+      window = c->testWindow();
+    }
+    if (window) {
+      e.window.present = true;
+      e.window.loc = loc(window);
+      e.window.from = duration(window->duration(0));
+      if (window->duration().size() > 1) e.window.to = duration(window->duration(1));
+    }
+    return e;
+  }
+
+  // The text of an expectation as written, minus `expect` and `;`, tokens joined by single
+  // spaces except around `.`, `,`, brackets and `..`: for a test's failure message.
+  std::string spaced_text(antlr4::ParserRuleContext* ctx) {
+    std::vector<antlr4::Token*> tokens;
+    collect_tokens(ctx, tokens);
+    std::string out;
+    std::string previous;
+    for (size_t i = 1; i + 1 < tokens.size(); ++i) {
+      std::string text = tx(tokens[i]);
+      bool glue = previous == "." || previous == "(" || previous == "[" || previous == ".." ||
+                  text == "." || text == "," || text == ")" || text == "]" || text == ".." ||
+                  text == ":" ||
+                  (text == "(" && !previous.empty() &&
+                   std::isalnum(static_cast<unsigned char>(previous.back())));
+      if (!out.empty() && !glue) out += ' ';
+      out += text;
+      previous = text;
+    }
+    return out;
+  }
+
+  static void collect_tokens(antlr4::tree::ParseTree* node, std::vector<antlr4::Token*>& out) {
+    if (auto* leaf = dynamic_cast<antlr4::tree::TerminalNode*>(node)) {
+      out.push_back(leaf->getSymbol());
+      return;
+    }
+    for (antlr4::tree::ParseTree* child : node->children) collect_tokens(child, out);
+  }
+
   // ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
   Rule rule(ArbcParser::RuleDeclContext* c) {
     Rule r;

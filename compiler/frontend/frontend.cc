@@ -1,13 +1,11 @@
 #include "compiler/frontend/frontend.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <tuple>
 
 #include "compiler/frontend/parse.h"
 #include "compiler/frontend/sema.h"
+#include "compiler/frontend/tests_file.h"
 
 namespace arbc::frontend {
 
@@ -18,19 +16,14 @@ bool CheckResult::ok() const {
 
 namespace {
 
-Diagnostic io_error(const std::string& path, std::string message) {
-  Diagnostic d;
-  d.loc.file = path;
-  d.message = std::move(message);
-  d.id = "io";
-  return d;
-}
-
-void sort_by_position(std::vector<Diagnostic>& diagnostics) {
+// By line and column; for a tests file, its own diagnostics before those of the app it names
+// (`app_file`, empty for any other spec).
+void sort_by_position(std::vector<Diagnostic>& diagnostics, const std::string& app_file) {
+  auto key = [&](const Diagnostic& d) {
+    return std::make_tuple(!app_file.empty() && d.loc.file == app_file, d.loc.line, d.loc.column);
+  };
   std::stable_sort(diagnostics.begin(), diagnostics.end(),
-                   [](const Diagnostic& a, const Diagnostic& b) {
-                     return std::tie(a.loc.line, a.loc.column) < std::tie(b.loc.line, b.loc.column);
-                   });
+                   [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
 }
 
 // Editors on Windows may start a UTF-8 file with a byte-order mark: it is not part of the text
@@ -50,47 +43,26 @@ CheckResult check_text(std::string_view text, const std::string& file,
   result.source = std::string(text);
   ParseResult parsed = parse_spec(text, file);
   result.diagnostics = std::move(parsed.diagnostics);
+  if (parsed.spec && parsed.spec->tests_for) {
+    parsed.spec = merge_with_app(std::move(parsed.spec), file, result.diagnostics, &result.app_file,
+                                 &result.app_source);
+    if (!parsed.spec) result.app_file.clear();
+  }
   if (parsed.spec) {
-    check_spec(*parsed.spec, result.diagnostics, script_dir);
+    // The app's scripts are relative to the app's spec, wherever its tests live.
+    check_spec(*parsed.spec, result.diagnostics, result.app_file.empty() ? script_dir : "");
     result.spec = std::move(parsed.spec);
   }
-  sort_by_position(result.diagnostics);
+  sort_by_position(result.diagnostics, result.app_file);
   return result;
 }
 
 CheckResult check_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  CheckResult result;
-  std::error_code ec;
-  fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) {
-    result.diagnostics.push_back(io_error(path, "no such file: check the path"));
-    return result;
-  }
-  if (fs::is_directory(status)) {
-    result.diagnostics.push_back(
-        io_error(path, "is a directory, not a spec file: name a .spec file inside it"));
-    return result;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    result.diagnostics.push_back(
-        io_error(path, std::string("cannot open the file: ") + std::strerror(errno)));
-    return result;
-  }
   std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<size_t>(in.gcount()));
-    if (text.size() > kMaxSpecBytes) {
-      result.diagnostics.push_back(
-          io_error(path, "the file is larger than " + std::to_string(kMaxSpecBytes >> 20) +
-                             " MiB; a spec this large is surely not hand-written text"));
-      return result;
-    }
-  }
-  if (in.bad()) {
-    result.diagnostics.push_back(io_error(path, "error while reading the file"));
+  Diagnostic problem;
+  if (!read_spec_file(path, &text, &problem)) {
+    CheckResult result;
+    result.diagnostics.push_back(std::move(problem));
     return result;
   }
   return check_text(text, path);

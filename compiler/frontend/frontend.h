@@ -23,12 +23,16 @@ struct CheckResult {
   std::unique_ptr<ast::Spec> spec;
   std::vector<Diagnostic> diagnostics;  // sorted by position
   std::string source;                   // the text that was checked (for quoting lines)
+  // A tests file (`tests for`, tests_file.h): `spec` is the app it names with its tests added;
+  // these are the app's spec file and text. Empty for any other spec.
+  std::string app_file, app_source;
 
   // True when no diagnostic is an error: the spec may be lowered.
   bool ok() const;
 };
 
-// Parses and checks spec text; `file` names it in diagnostics. `script_dir` as for check_spec
+// Parses and checks spec text; `file` names it in diagnostics. A tests file is checked with
+// the app it names, read from disk. `script_dir` as for check_spec
 // (sema.h): where `script` paths are relative to, by default the folder of `file` on disk.
 CheckResult check_text(std::string_view text, const std::string& file,
                        const std::string& script_dir = "");

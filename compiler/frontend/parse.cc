@@ -20,7 +20,7 @@ namespace {
 
 const std::set<std::string> kDeclStarts = {"app",       "type",    "const",     "module",
                                            "event",     "events",  "exclusive", "invariant",
-                                           "arbitrate", "connect", "assert",
+                                           "arbitrate", "connect", "assert",    "test",
                                            "resource"};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket

@@ -103,6 +103,21 @@ class Sema {
   void check_resources();
   TypePtr check_resource_ports(ast::ResourceDecl& r);
 
+  // ---- tests (sema_test.cc) ----
+  // Every `test`: unique names, steps and expectations against the app.
+  void check_tests();
+  // The rule a test names (`on RULE`, `expect RULE drops`); null (reported) when none or
+  // ambiguous.
+  const ast::Rule* find_test_rule(const std::string& name, const ast::Loc& loc);
+  // A test time: a duration >= 0 (`at 0s` is the start).
+  void check_test_time(ast::Duration& d, const std::string& what);
+  // A message literal: a constant value of the port's type.
+  void check_test_value(ast::Expr& e, const ast::PortRef& port);
+  void check_test_step(const ast::TestDecl& t, ast::TestStep& s);
+  void check_test_expect(const ast::TestDecl& t, ast::TestExpect& e);
+  // `at D` or `within A..B` (A <= B); `instant_only` for event states.
+  void check_test_window(ast::TestWindow& w, bool instant_only);
+
   // ---- reporting (sema_decls.cc) ----
   Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
   // Reports an unknown name, with "did you mean" when a candidate is close.

@@ -52,6 +52,12 @@ const char* describe_rule(size_t rule) {
       return "the `resource` declaration";
     case ArbcParser::RuleStmt:
       return "the statement";
+    case ArbcParser::RuleTestDecl:
+      return "the test";
+    case ArbcParser::RuleTestsForDecl:
+      return "the `tests for` declaration";
+    case ArbcParser::RuleTestStep:
+      return "the test step";
     case ArbcParser::RuleFieldType:
       return "the record field";
     case ArbcParser::RuleFieldInit:
@@ -76,7 +82,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
                                              "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert",
+                                             "arbitrate", "connect", "assert",    "test",   "tests",
                                              "resource"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};

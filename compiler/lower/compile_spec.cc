@@ -14,16 +14,23 @@ CompiledSpec finish(frontend::CheckResult checked, const std::string& file,
                     const std::string& script_dir) {
   CompiledSpec out;
   out.sources.add(file, checked.source);
+  std::string dir = script_dir;
+  if (!checked.app_file.empty()) {  // a tests file: the app is in its own spec
+    out.sources.add(checked.app_file, checked.app_source);
+    dir = std::filesystem::path(checked.app_file).parent_path().string();
+    if (dir.empty()) dir = ".";
+  }
   bool checked_ok = checked.ok() && checked.spec;  // before the diagnostics move out
   out.diagnostics = std::move(checked.diagnostics);
   if (!checked_ok) return out;
   std::shared_ptr<const ast::Spec> spec(std::move(checked.spec));
   LowerOptions options;
-  options.script_dir = script_dir;
+  options.script_dir = dir;
   LowerResult lowered = lower_spec(spec, options);
   for (Diagnostic& d : lowered.diagnostics) out.diagnostics.push_back(std::move(d));
   if (!lowered.ok) return out;
-  lowered.lowered->spec_text = std::move(checked.source);
+  lowered.lowered->spec_text =
+      std::move(checked.app_file.empty() ? checked.source : checked.app_source);
   out.lowered = std::move(lowered.lowered);
   out.ok = true;
   return out;

@@ -48,6 +48,11 @@ struct ScriptFacts {
   bool accept_may_accept = true;  // some path of accept returns a true value (or no accept)
   std::set<std::string> must_set, must_unset;                   // on every accepting path of accept
   std::vector<std::pair<std::string, std::string>> never_both;  // sorted pairs
+  // Events `update` sets with a known positive lifetime on every path, and nothing but update
+  // sets or unsets (destroy may unset them): YARP runs update on what is delivered, so such an
+  // event is a `by priority` activity event, set as the connection delivers
+  // (docs/design.md#priorities-and-holds).
+  std::set<std::string> delivery_set;
 
   std::set<std::string> sets() const;    // literal names passed to setEvent
   std::set<std::string> unsets() const;  // literal names passed to unsetEvent

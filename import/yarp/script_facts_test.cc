@@ -162,5 +162,38 @@ TEST(ScriptFacts, GotoDropsPathFacts) {
   EXPECT_NE(f.paths_reason.find("goto"), std::string::npos);
 }
 
+TEST(ScriptFacts, AnEventUpdateAlwaysSetsIsSetAsTheConnectionDelivers) {
+  ScriptFacts f = facts_of(R"(
+PortMonitor.accept = function(thing) return true end
+PortMonitor.update = function(thing)
+  PortMonitor.setEvent("e_act", 1.0)
+  return thing
+end
+PortMonitor.destroy = function() PortMonitor.unsetEvent("e_act") end
+)");
+  ASSERT_TRUE(f.paths_ok) << f.paths_reason;
+  EXPECT_EQ(f.delivery_set, (Names{"e_act"}));
+  EXPECT_TRUE(f.must_set.empty());
+}
+
+TEST(ScriptFacts, NotADeliveryEventWhenSetElsewhereOnSomePathsOrForever) {
+  EXPECT_TRUE(facts_of(R"(
+PortMonitor.accept = function(thing) PortMonitor.setEvent("e_act", 1.0) return true end
+PortMonitor.update = function(thing) PortMonitor.setEvent("e_act", 1.0) return thing end
+)")
+                  .delivery_set.empty());
+  EXPECT_TRUE(facts_of(R"(
+PortMonitor.update = function(thing)
+  if thing:asBottle():size() > 1 then PortMonitor.setEvent("e_act", 1.0) end
+  return thing
+end
+)")
+                  .delivery_set.empty());
+  EXPECT_TRUE(facts_of(R"(
+PortMonitor.update = function(thing) PortMonitor.setEvent("e_act") return thing end
+)")
+                  .delivery_set.empty());
+}
+
 }  // namespace
 }  // namespace arbc::yarp

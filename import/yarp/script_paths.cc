@@ -398,6 +398,23 @@ bool safe_pair(uint8_t a, uint8_t b) {
   return !present_after(a) && !present_after(b);
 }
 
+// Fills facts.delivery_set from the outcomes of update (script_facts.h).
+void delivery_events(const Outcomes& update, const std::vector<std::string>& events,
+                     ScriptFacts& facts) {
+  for (size_t i = 0; i < events.size(); ++i) {
+    bool every = !update.empty();
+    for (const Outcome& o : update) every = every && o.effects[i] == kSet;
+    for (const MonitorCall& c : facts.calls) {
+      if (!c.text || *c.text != events[i]) continue;
+      bool in_update = c.callback == "update" && c.function == "setEvent";
+      bool destroy_unset = c.callback == "destroy" && c.function == "unsetEvent";
+      every = every && (in_update || destroy_unset) &&
+              (!in_update || (c.has_second && c.number && *c.number > 0));
+    }
+    if (every) facts.delivery_set.insert(events[i]);
+  }
+}
+
 }  // namespace
 
 void analyse_paths(const LuaFunction& chunk, ScriptFacts& facts) {
@@ -441,6 +458,7 @@ void analyse_paths(const LuaFunction& chunk, ScriptFacts& facts) {
       if (all_unset[i]) facts.must_unset.insert(events[i]);
     }
   }
+  if (runs.count("update")) delivery_events(runs["update"], events, facts);
   for (size_t a = 0; a < events.size(); ++a) {
     for (size_t b = a + 1; b < events.size(); ++b) {
       bool safe = true;

@@ -56,6 +56,8 @@ model::Connection model_connection(const ImportedConnection& ic) {
       c.must_set = sorted(m.facts.must_set);
       c.must_unset = sorted(m.facts.must_unset);
     }
+    if (!c.opaque && m.facts.paths_ok && m.facts.delivery_set.size() == 1)
+      c.activity_event = *m.facts.delivery_set.begin();
   }
   return c;
 }
@@ -81,6 +83,19 @@ void restrict_must_unset(model::App& app) {
       if (!elsewhere) kept.push_back(e);
     }
     app.connections[i].must_unset = std::move(kept);
+  }
+}
+
+// An activity event (set by update as the connection delivers) counts only when no other
+// monitor into the port sets it: otherwise it is present without this connection delivering.
+void restrict_activity_events(model::App& app) {
+  for (model::Connection& c : app.connections) {
+    if (c.activity_event.empty()) continue;
+    for (const model::Connection& o : app.connections) {
+      if (&o == &c || o.destination != c.destination) continue;
+      if (o.opaque || std::count(o.sets.begin(), o.sets.end(), c.activity_event))
+        c.activity_event.clear();
+    }
   }
 }
 
@@ -175,6 +190,7 @@ YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& opt
   for (const ImportedConnection& ic : im.connections)
     im.app.connections.push_back(model_connection(ic));
   restrict_must_unset(im.app);
+  restrict_activity_events(im.app);
   arbitrated_ports(im);
   derive_exclusive_groups(im);
   collect_events(im);

@@ -10,9 +10,10 @@ escapes it by mistake.
 A snippet is a *fragment* of the base spec (default specs/table_clean.spec): it is spliced into
 the base, replacing every base declaration that declares one of the same names, and the result
 is checked. A declaration "declares" its kind and name: `app`, `type N`, `const N`, `module N`,
-each event of `event a, b` / `event e = ...` / `events from M.p { a, b }`, `resource N`, and
-the destination port of `arbitrate M.p` or `connect X.q -> M.p`. An `assert M.p: ...` of the base goes with its
-port: it is dropped when the snippet replaces `M.p`. The snippet takes the place of the first
+each event of `event a, b` / `event e = ...` / `events from M.p { a, b }`, `resource N`, the
+destination port of `arbitrate M.p` or `connect X.q -> M.p`, and `test "NAME"`. An `assert M.p: ...` of the base goes with its
+port: it is dropped when the snippet replaces `M.p`; the base's tests are dropped unless the
+snippet is a test itself. The snippet takes the place of the first
 declaration it replaces (so line numbers stay near the base's), or goes at the end.
 
 An HTML comment on the last non-blank line before the fence changes what is done:
@@ -84,7 +85,7 @@ def split_declarations(text):
             depth += 1
         elif c == "}":
             depth -= 1
-            if depth == 0 and first_word in ("module", "arbitrate", "connect"):
+            if depth == 0 and first_word in ("module", "arbitrate", "connect", "test"):
                 # `connect A.b -> C.d { ... }` and bodies end here, unless a `;` follows.
                 rest = text[i + 1:].lstrip(" \t")
                 if not rest.startswith(";"):
@@ -131,6 +132,9 @@ def declared_keys(decl):
     if kind == "connect":
         m = re.match(r"connect\s+[\w.]+\s*->\s*([\w.]+)", code)
         return {f"port:{m.group(1)}"}, None
+    if kind == "test":  # by its name, which strip_comments blanked
+        m = re.search(r'\btest\s+"((?:\\.|[^"\\])*)"', re.sub(r"//[^\n]*", "", decl))
+        return {f"test:{m.group(1)}"} if m else set(), None
     if kind == "assert":
         m = re.match(r"assert\s+([\w.]+)\s*:", code)
         return set(), f"port:{m.group(1)}" if m else None
@@ -155,9 +159,14 @@ def splice(base, snippet):
     for decl, _ in snippet_decls:
         replaced |= declared_keys(decl)[0]
     base_decls, tail = split_declarations(base)
+    # The base's tests speak of the base's rules: a snippet that is not a test drops them.
+    drop_tests = not any(k.startswith("test:") for k in replaced)
     out, placed = [], False
     for decl, _ in base_decls:
         keys, owner = declared_keys(decl)
+        if drop_tests and any(k.startswith("test:") for k in keys):
+            out.append(decl[:code_offset(decl)])
+            continue
         if keys & replaced or owner in replaced:
             # Keep the blank lines and comments before the declaration, so that line numbers
             # move only by the difference in length.

@@ -1,0 +1,75 @@
+#include "cli/run_stand_ins.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "cli/commands.h"
+#include "cli/run_inputs.h"
+#include "cli/trace_diff.h"
+
+namespace arbc::cli {
+
+void RunStandIns::add_options(CLI::App& cli) {
+  cli.add_option("--inputs", inputs_,
+                 "JSON lines of timed messages (or a trace) for modules no plugin provides");
+  cli.add_flag("--stub", stub_,
+               "run modules no plugin provides as stand-ins publishing typed samples (10 Hz)");
+  cli.add_option("--stub-rate", rates_, "PORT=HZ: a stand-in port's sample rate (0: silent)");
+  cli.add_option("--diff", diff_, "a trace of another run: show the first differing decision");
+}
+
+bool RunStandIns::parse_rates(std::string* err) {
+  for (const std::string& r : rates_) {
+    size_t eq = r.find('=');
+    char* end = nullptr;
+    double hz = eq == std::string::npos ? -1 : std::strtod(r.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || !end || *end != '\0' || end == r.c_str() + eq + 1 || hz < 0) {
+      *err = "--stub-rate " + r + ": expected PORT=HZ, e.g. ObjectDetector.objects=5";
+      return false;
+    }
+    log_->stub.period_of_port[r.substr(0, eq)] = hz == 0 ? 0 : 1 / hz;
+  }
+  return true;
+}
+
+bool RunStandIns::prepare(const model::App& app, std::string* err) {
+  registry_ = Registry::global();
+  if (!rates_.empty() && !stub_) return *err = "--stub-rate needs --stub", false;
+  if (!diff_.empty() && !read_trace_file(diff_, &other_, err)) return false;
+  if (!active()) return true;
+  log_->stub.enabled = stub_;
+  if (!parse_rates(err)) return false;
+  for (const auto& [port, period] : log_->stub.period_of_port) {
+    const model::Port* p = app.find_port(port);
+    if (!p || p->direction != model::Direction::Out)
+      return *err = "--stub-rate: '" + port + "' is not an out-port of app " + app.name, false;
+  }
+  registry_ = registry_with_stand_ins(app, Registry::global(), log_, &stand_ins_);
+  if (inputs_.empty()) return true;
+  InputsRead read;
+  if (!read_inputs(inputs_, app, stand_ins_, log_.get(), &read, err)) return false;
+  std::printf("inputs: %zu messages from %s%s", read.messages, inputs_.c_str(),
+              read.from_trace ? " (a trace: its publications are replayed)" : "");
+  if (read.skipped_provided)
+    std::printf("; %zu of modules a plugin provides skipped", read.skipped_provided);
+  std::printf("\n");
+  return true;
+}
+
+std::string RunStandIns::summary(const model::App& app) const {
+  return stand_in_summary(app, stand_ins_, *log_);
+}
+
+int RunStandIns::diff(const model::App& app, const std::vector<TraceRecord>& records,
+                      int run_exit) const {
+  if (diff_.empty()) return run_exit;
+  std::string difference = first_difference(app, records, other_, diff_);
+  if (difference.empty()) {
+    std::printf("diff: every decision is the same as in %s\n", diff_.c_str());
+    return run_exit;
+  }
+  std::fputs(("diff: " + difference).c_str(), stdout);
+  return run_exit == kExitOk ? kExitRefuted : run_exit;
+}
+
+}  // namespace arbc::cli

@@ -1,0 +1,180 @@
+// `arbc test SPEC... [--filter GLOB] [--junit FILE] [--no-verify] [--jobs N]`
+// (docs/testing.md): runs the `test` declarations of each spec on the embedded runtime in
+// simulated time, one line per test, the details of each failure. Each spec is compiled and,
+// unless --no-verify, proved first (as `arbc run` does). Exit: 0 every test passed, 1 a test
+// failed (or a proof was refuted), 2 bad input.
+#include <fnmatch.h>
+#include <stdlib.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <thread>
+
+#include "cli/commands.h"
+#include "cli/junit.h"
+#include "cli/test_runner.h"
+#include "cli/verify_gate.h"
+#include "compiler/codegen/target.h"
+#include "compiler/codegen/write_artifacts.h"
+#include "compiler/frontend/frontend.h"
+#include "compiler/lower/compile_spec.h"
+#include "compiler/lower/test_cases.h"
+#include "runtime/app_loader.h"
+
+namespace arbc::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TestArgs {
+  std::vector<std::string> specs;
+  std::string filter = "*", junit;
+  bool no_verify = false;
+  unsigned jobs = 0;  // 0: one per core when there are many tests
+};
+
+// A scratch directory for one spec's build, removed at the end.
+struct Scratch {
+  std::string path;
+  ~Scratch() {
+    std::error_code ignored;
+    if (!path.empty()) fs::remove_all(path, ignored);
+  }
+};
+
+// The spec compiled, proved (unless no_verify) and written to a scratch directory, with the
+// test harness; its tests. Returns an exit code (kExitOk: *app_dir, *app and *tests are set).
+int prepare_spec(const std::string& spec, bool no_verify, Scratch* scratch, std::string* app_dir,
+                 model::App* app, std::vector<model::TestCase>* tests) {
+  lower::CompiledSpec compiled = lower::compile_spec(spec);
+  std::fputs(frontend::render_diagnostics(compiled.diagnostics, &compiled.sources).c_str(), stderr);
+  if (!compiled.ok) return kExitBadInput;
+  const lower::LoweredApp& lowered = *compiled.lowered;
+  if (!no_verify) {
+    VerifyGate gate = verify_before_writing(
+        lowered.app, spec, &compiled.sources, false,
+        "no test was run (fix the spec, or run the tests anyway with --no-verify)", "arbc test");
+    if (!gate.pass) return gate.exit_code;
+  }
+  std::unique_ptr<codegen::Target> target = codegen::make_target(codegen::kDefaultTarget);
+  codegen::CodegenResult generated = target->generate(lowered);
+  std::string pattern = (fs::temp_directory_path() / "arbc-test-XXXXXX").string();
+  std::string error;
+  if (!generated.ok || !mkdtemp(pattern.data())) {
+    std::fprintf(stderr, "arbc test: %s: cannot generate the monitors\n", spec.c_str());
+    return kExitRuntimeFailure;
+  }
+  scratch->path = pattern;
+  if (!codegen::write_artifacts(pattern, lowered.app.name, generated.files, &error)) {
+    std::fprintf(stderr, "arbc test: %s\n", error.c_str());
+    return kExitRuntimeFailure;
+  }
+  *app_dir = (fs::path(pattern) / lowered.app.name).string();
+  AppDirLoad load = load_app_dir(*app_dir);
+  if (!load.ok || !write_test_harness(*app_dir, &error)) {
+    for (const std::string& e : load.errors) std::fprintf(stderr, "arbc test: %s\n", e.c_str());
+    if (!error.empty()) std::fprintf(stderr, "arbc test: %s\n", error.c_str());
+    return kExitRuntimeFailure;
+  }
+  *app = std::move(load.app);
+  *tests = lower_tests(*lowered.spec);
+  return kExitOk;
+}
+
+// Runs `tests` on `jobs` threads (1: this one); outcomes in the tests' order.
+std::vector<TestOutcome> run_all(const model::App& app, const std::string& dir,
+                                 const std::vector<const model::TestCase*>& tests, unsigned jobs) {
+  std::vector<TestOutcome> out(tests.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < tests.size(); i = next++)
+      out[i] = run_test_case(app, dir, *tests[i]);
+  };
+  std::vector<std::thread> threads;
+  for (unsigned k = 1; k < jobs; ++k) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  return out;
+}
+
+unsigned jobs_for(size_t tests, unsigned asked) {
+  if (asked) return asked;
+  unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return tests >= 32 ? cores : 1;  // a thread costs more than a few short tests
+}
+
+std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
+  CLI::App cli{"Run the `test` declarations of specs on the embedded runtime, in simulated time",
+               "arbc test"};
+  cli.add_option("SPEC", a.specs, "spec files with tests")->required();
+  cli.add_option("--filter", a.filter, "run only the tests whose name matches GLOB (default *)")
+      ->type_name("GLOB");
+  cli.add_option("--junit", a.junit, "write JUnit XML of the results to FILE");
+  cli.add_flag("--no-verify", a.no_verify, "run the tests without proving the spec first");
+  cli.add_option("--jobs", a.jobs,
+                 "threads (default: one per core when there are 32 tests or more)");
+  try {
+    cli.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    int code = cli.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  return std::nullopt;
+}
+
+// Prints one line per test and each failure's details; returns how many failed.
+size_t print_outcomes(const std::string& spec, const std::vector<TestOutcome>& outcomes) {
+  size_t failed = 0;
+  for (const TestOutcome& t : outcomes) {
+    std::printf("%s  %s: %s\n", t.passed ? "PASS" : "FAIL", spec.c_str(), t.name.c_str());
+    if (!t.passed) {
+      ++failed;
+      std::fputs(t.detail.c_str(), stdout);
+    }
+  }
+  return failed;
+}
+
+}  // namespace
+
+int test_command(std::span<char*> args) {
+  TestArgs a;
+  if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  std::vector<SuiteOutcome> suites;
+  size_t total = 0, failed = 0;
+  for (const std::string& spec : a.specs) {
+    Scratch scratch;
+    std::string dir;
+    model::App app;
+    std::vector<model::TestCase> tests;
+    int rc = prepare_spec(spec, a.no_verify, &scratch, &dir, &app, &tests);
+    if (rc != kExitOk) return rc;
+    std::vector<const model::TestCase*> chosen;
+    for (const model::TestCase& t : tests) {
+      if (fnmatch(a.filter.c_str(), t.name.c_str(), 0) == 0) chosen.push_back(&t);
+    }
+    std::vector<TestOutcome> outcomes = run_all(app, dir, chosen, jobs_for(chosen.size(), a.jobs));
+    failed += print_outcomes(spec, outcomes);
+    total += outcomes.size();
+    suites.push_back({spec, app.name, std::move(outcomes)});
+  }
+  if (!a.junit.empty()) {
+    std::ofstream out(a.junit);
+    out << junit_xml(suites);
+    if (!out) {
+      std::fprintf(stderr, "arbc test: error: cannot write %s\n", a.junit.c_str());
+      return kExitBadInput;
+    }
+  }
+  std::printf("%zu test%s, %zu passed, %zu failed\n", total, total == 1 ? "" : "s", total - failed,
+              failed);
+  if (total == 0) std::printf("no test matched (the specs declare `test \"name\" { ... }`)\n");
+  return failed ? kExitRefuted : kExitOk;
+}
+
+}  // namespace arbc::cli

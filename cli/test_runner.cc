@@ -1,0 +1,166 @@
+#include "cli/test_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "cli/test_expect.h"
+#include "runtime/runtime.h"
+#include "runtime/stand_in.h"
+
+namespace arbc::cli {
+
+namespace {
+
+constexpr const char* kHarnessModule = "arbc_test";
+constexpr const char* kHarnessMonitor = "monitors/arbc_test_events.lua";
+
+// Sets or unsets the event a step names, for good (until the test unsets it): a test gives
+// event states directly. A feed: it never delivers.
+constexpr const char* kHarnessScript =
+    "-- arbc test: sets and unsets the events a test gives directly (docs/testing.md).\n"
+    "PortMonitor.accept = function(step)\n"
+    "  if step.op == 'set' then PortMonitor.setEvent(step.event, 1e12)\n"
+    "  else PortMonitor.unsetEvent(step.event) end\n"
+    "  return false\n"
+    "end\n";
+
+// The app a test runs: the whole app, or one rule between its two modules.
+model::App test_app(const model::App& app, const model::TestCase& test) {
+  if (test.rule.empty()) return app;
+  model::App sub;
+  sub.name = app.name;
+  sub.events = app.events;
+  for (const model::Connection& c : app.connections) {
+    if (c.kind != model::ConnectionKind::Rule || c.name != test.rule) continue;
+    sub.connections.push_back(c);
+    for (const std::string& port : {c.source, c.destination}) {
+      const model::Module* m = app.find_module(port.substr(0, port.find('.')));
+      if (m && !sub.find_module(m->name)) sub.modules.push_back(*m);
+    }
+    if (const model::ArbitratedPort* a = app.find_arbitrated(c.destination)) {
+      model::ArbitratedPort only = *a;
+      only.rules = {c.name};
+      sub.arbitrated_ports.push_back(only);
+    }
+    break;
+  }
+  return sub;
+}
+
+// The harness module and one feed into each arbitrated port, for `set`/`unset` steps.
+void add_harness(model::App& app) {
+  model::Module m;
+  m.name = kHarnessModule;
+  model::Port out;
+  out.name = "events";
+  out.direction = model::Direction::Out;
+  out.type = parse_type("{op: string, event: string}");
+  m.ports.push_back(out);
+  app.modules.push_back(m);
+  for (const model::ArbitratedPort& a : app.arbitrated_ports) {
+    model::Connection c;
+    c.name = std::string(kHarnessModule) + "_events_" + std::to_string(app.connections.size());
+    c.source = std::string(kHarnessModule) + ".events";
+    c.destination = a.port;
+    c.kind = model::ConnectionKind::Feed;
+    c.generated = true;
+    c.constraint = Constraint::constant(false);
+    c.monitor = kHarnessMonitor;
+    app.connections.push_back(c);
+  }
+}
+
+// The last instant a test looks at: its last step, window start or finite window end.
+double test_end(const model::TestCase& test) {
+  double end = 0;
+  for (const model::TestStep& s : test.steps) end = std::max(end, s.t);
+  for (const model::Expectation& e : test.expectations) {
+    end = std::max(end, e.from);
+    if (std::isfinite(e.to)) end = std::max(end, e.to);
+  }
+  return end;
+}
+
+// Publishes each step at its time, in the order written (same-instant steps keep it).
+void post_steps(Runtime& rt, const model::TestCase& test) {
+  for (const model::TestStep& s : test.steps) {
+    rt.executor().post(s.t, [&rt, &s] {
+      if (s.kind == model::TestStep::Kind::Input) {
+        size_t dot = s.port.find('.');
+        rt.publish(s.port.substr(0, dot), s.port.substr(dot + 1), s.value);
+        return;
+      }
+      Value step = Value::record(
+          {{"op", s.kind == model::TestStep::Kind::Set ? "set" : "unset"}, {"event", s.event}});
+      rt.publish(kHarnessModule, "events", step);
+    });
+  }
+}
+
+// Each failed expectation with what happened and the trace around it.
+std::string failures(const model::TestCase& test, const TestRun& run,
+                     const std::vector<std::string>& reports) {
+  std::string out;
+  for (const model::Expectation& e : test.expectations) {
+    std::string why = check_expectation(e, run);
+    if (why.empty()) continue;
+    out += "  " + e.loc.file + ":" + std::to_string(e.loc.line) + ": expected " + e.text + "\n";
+    out += "  " + why + "\n  trace:\n" + trace_around(run, e.from, e.to);
+  }
+  if (!out.empty()) {
+    for (const std::string& r : reports) out += "  runtime: " + r + "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+bool write_test_harness(const std::string& app_dir, std::string* err) {
+  std::filesystem::path path = std::filesystem::path(app_dir) / kHarnessMonitor;
+  std::ofstream out(path);
+  out << kHarnessScript;
+  if (!out) {
+    *err = "cannot write " + path.string();
+    return false;
+  }
+  return true;
+}
+
+TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
+                          const model::TestCase& test) {
+  auto started = std::chrono::steady_clock::now();
+  TestOutcome outcome;
+  outcome.name = test.name;
+  model::App run_app = test_app(app, test);
+  add_harness(run_app);
+  auto log = std::make_shared<StandInLog>();
+  std::vector<std::string> stand_ins;
+  Registry registry = registry_with_stand_ins(run_app, Registry(), log, &stand_ins);
+  std::vector<TraceRecord> records;
+  RunOptions options;
+  options.trace_records = &records;
+  std::string error;
+  std::unique_ptr<Runtime> rt = Runtime::create(run_app, app_dir, options, &error, registry);
+  if (!rt) {
+    outcome.detail = "  the app did not start: " + error + "\n";
+    return outcome;
+  }
+  std::vector<std::string> reports;
+  rt->set_reporter([&reports](const std::string& line) { reports.push_back(line); });
+  rt->start();
+  post_steps(*rt, test);
+  double end = test_end(test);
+  rt->advance(end);
+  rt->shutdown();
+  TestRun run{log->received, records, end};
+  outcome.detail = failures(test, run, reports);
+  outcome.passed = outcome.detail.empty();
+  outcome.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return outcome;
+}
+
+}  // namespace arbc::cli

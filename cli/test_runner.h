@@ -1,0 +1,33 @@
+// Runs one `test` of a spec (core/test_case.h) on the embedded runtime in simulated time
+// (docs/testing.md): every module is a stand-in (runtime/stand_in.h), the test's inputs are
+// published at their times in the order written, events given directly are set by a harness
+// connection into each arbitrated port, and the expectations are checked against what the
+// stand-ins received and the trace. Deterministic: the same test gives the same outcome.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "core/test_case.h"
+
+namespace arbc::cli {
+
+struct TestOutcome {
+  std::string name;
+  bool passed = false;
+  // For a failure: each failed expectation, what happened instead and the trace around it.
+  std::string detail;
+  double seconds = 0;  // wall time of the run
+};
+
+// The harness monitor (monitors/arbc_test_events.lua) that `set`/`unset` steps go through;
+// written once into `app_dir` before tests run there. False with *err when it cannot be.
+bool write_test_harness(const std::string& app_dir, std::string* err);
+
+// Runs `test` on `app` (built into `app_dir`, with the harness written). A test `on RULE`
+// runs that rule's connection alone, between stand-ins of its two modules.
+TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
+                          const model::TestCase& test);
+
+}  // namespace arbc::cli

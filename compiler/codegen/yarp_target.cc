@@ -1,0 +1,71 @@
+#include "compiler/codegen/yarp_target.h"
+
+#include <map>
+
+#include "compiler/codegen/monitor_writer.h"
+#include "compiler/codegen/yarp_app_xml.h"
+#include "compiler/codegen/yarp_monitor.h"
+#include "compiler/codegen/yarp_names.h"
+#include "compiler/frontend/lua_syntax.h"
+#include "compiler/lower/lowered_app.h"
+
+namespace arbc::codegen {
+
+namespace {
+
+// Two spec ports that end up with one YARP name (an override equal to another's default).
+bool unique_port_names(const model::App& app, const YarpNames& names, Diagnostic* d) {
+  std::map<std::string, std::string> seen;
+  for (const model::Module& m : app.modules) {
+    for (const model::Port& p : m.ports) {
+      std::string q = m.name + "." + p.name, y = names.port(q);
+      auto [it, fresh] = seen.emplace(y, q);
+      if (fresh) continue;
+      d->loc = p.loc;
+      d->id = "codegen";
+      d->message = "ports " + it->second + " and " + q + " would both be the YARP port " + y +
+                   "; name one of them in the deployment file's \"topics\"";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool YarpTarget::configure(const TargetOptions& options, std::string*) {
+  options_ = options;
+  return true;
+}
+
+CodegenResult YarpTarget::generate(const lower::LoweredApp& lowered) const {
+  CodegenResult result;
+  const model::App& app = lowered.app;
+  YarpNames names(app, options_.port_names);
+  Diagnostic clash;
+  if (!unique_port_names(app, names, &clash)) result.diagnostics.push_back(clash);
+  SpecLines lines(lowered.spec_text);
+  frontend::LuaSyntaxChecker lua;
+  std::vector<OutputFile> monitors;
+  for (const YarpLink& link : names.links()) {
+    if (link.monitor.empty()) continue;
+    std::string text = write_yarp_monitor(lowered, link, names, lines, result.diagnostics);
+    std::string path = yarp_monitor_path(app, link), error;
+    if (!lua.check(text, path, &error)) {
+      Diagnostic d;
+      d.loc = app.connections[link.parts[0]].loc;
+      d.id = "codegen";
+      d.message = "internal error: the YARP monitor generated for '" + link.id +
+                  "' is not valid Lua (" + error + "); please report this with the spec";
+      result.diagnostics.push_back(std::move(d));
+    }
+    monitors.push_back({path, std::move(text)});
+  }
+  result.files.push_back({app.name + ".xml", yarp_application_xml(app, names)});
+  result.files.push_back({"ports.json", yarp_port_map(app, names)});
+  for (OutputFile& f : monitors) result.files.push_back(std::move(f));
+  result.ok = result.diagnostics.empty();
+  return result;
+}
+
+}  // namespace arbc::codegen

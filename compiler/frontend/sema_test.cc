@@ -1,0 +1,165 @@
+// Semantic checks of `test` declarations (docs/testing.md): every name resolves against the
+// app, every message literal is a constant value of its port's type, every time is a duration,
+// and a test `on RULE` stays on that rule's ports.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "compiler/frontend/literal_value.h"
+#include "compiler/frontend/sema_context.h"
+#include "compiler/frontend/type_rules.h"
+
+namespace arbc::frontend {
+
+using namespace ast;
+
+namespace {
+
+// The drop reasons of docs/runtime.md#drop-reasons, as `expect RULE drops "reason"` names them.
+const std::vector<std::string> kDropReasons = {"rejected",    "no-value",   "not-selected",
+                                               "throttled",   "feed",       "monitor-error",
+                                               "quarantined", "queue-full", "bad-type"};
+
+}  // namespace
+
+void Sema::check_tests() {
+  std::map<std::string, const TestDecl*> names;
+  for (TestDecl& t : spec_.tests) {
+    auto [it, added] = names.emplace(t.name, &t);
+    if (!added) {
+      error(t.loc,
+            "test \"" + t.name + "\" is already defined at line " +
+                std::to_string(it->second->loc.line),
+            "duplicate");
+    }
+    if (!t.on.empty()) t.on_rule = find_test_rule(t.on, t.on_loc);
+    for (TestStep& s : t.steps) check_test_step(t, s);
+    for (TestExpect& e : t.expects) check_test_expect(t, e);
+  }
+}
+
+const Rule* Sema::find_test_rule(const std::string& name, const Loc& loc) {
+  std::vector<const Rule*> found;
+  std::vector<std::string> all;
+  for (const ArbitrateDecl& a : spec_.arbitrations) {
+    for (const Rule& r : a.rules) {
+      all.push_back(r.name);
+      if (r.name == name) found.push_back(&r);
+    }
+  }
+  if (found.empty()) {
+    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    return nullptr;
+  }
+  if (found.size() > 1) {
+    error(loc,
+          "rule name '" + name + "' is used by " + std::to_string(found.size()) +
+              " ports; a test can name only a rule whose name is unique: rename one",
+          "test-port");
+  }
+  return found.front();
+}
+
+void Sema::check_test_time(Duration& d, const std::string& what) {
+  Expr& e = *d.expr;
+  if (e.kind == Expr::Kind::Number) {
+    check_duration(d, what);  // reports the missing unit
+    return;
+  }
+  Scope empty;
+  check_expr(e, empty);
+  if (!e.type) return;
+  d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
+  if (!e.is_duration && e.kind != Expr::Kind::Duration) {
+    error(e.loc, what + " must be a time such as 1.5s or 200ms", "duration");
+  } else if (!(d.seconds >= 0) || !std::isfinite(d.seconds)) {
+    error(e.loc, what + " must be a time >= 0s", "duration");
+  }
+}
+
+void Sema::check_test_value(Expr& e, const PortRef& port) {
+  Scope empty;
+  check_expr(e, empty);
+  TypePtr want = port.port_decl ? port.port_decl->type.resolved : nullptr;
+  if (!e.type || !want) return;
+  if (!assignable(*e.type, *want)) {
+    error(e.loc,
+          "the value is " + describe(e.type) + ", but " + port.qualified() + " carries " +
+              describe(want),
+          "test-value");
+    return;
+  }
+  std::string why;
+  if (!literal_value(e, *want, &why)) error(e.loc, "this value is " + why, "test-value");
+}
+
+void Sema::check_test_step(const TestDecl& t, TestStep& s) {
+  check_test_time(s.at, "the time of a test step");
+  if (s.kind != TestStep::Kind::Input) {
+    if (!events_.count(s.event)) {
+      unknown(s.event_loc, "unknown event '" + s.event + "'", "unknown-event", s.event,
+              event_names_);
+    }
+    return;
+  }
+  if (!resolve_port(s.port, "source", "a test input")) return;
+  if (t.on_rule && s.port.qualified() != t.on_rule->source.qualified()) {
+    error(s.port.loc,
+          "test \"" + t.name + "\" is on rule '" + t.on + "', whose messages come from " +
+              t.on_rule->source.qualified() + "; an input on " + s.port.qualified() +
+              " would not reach it",
+          "test-port");
+  }
+  check_test_value(*s.value, s.port);
+}
+
+void Sema::check_test_window(TestWindow& w, bool instant_only) {
+  if (!w.present) return;
+  check_test_time(w.from, "the start of a window");
+  if (!w.to.expr) return;
+  if (instant_only) {
+    error(w.loc, "an event state is checked at one time: write `at D`, not a window",
+          "test-window");
+    return;
+  }
+  check_test_time(w.to, "the end of a window");
+  if (w.to.seconds < w.from.seconds) {
+    error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`", "test-window");
+  }
+}
+
+void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
+  switch (e.kind) {
+    case TestExpect::Kind::Receives:
+    case TestExpect::Kind::Nothing:
+      if (resolve_port(e.port, "destination", "an expectation") && t.on_rule &&
+          e.port.qualified() != t.on_rule->port->port.qualified()) {
+        error(e.port.loc,
+              "test \"" + t.name + "\" is on rule '" + t.on + "', which delivers only to " +
+                  t.on_rule->port->port.qualified(),
+              "test-port");
+      }
+      if (e.value) check_test_value(*e.value, e.port);
+      break;
+    case TestExpect::Kind::Drops:
+      e.rule_decl = find_test_rule(e.rule, e.rule_loc);
+      if (t.on_rule && e.rule_decl && e.rule_decl != t.on_rule) {
+        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", "test-port");
+      }
+      if (!e.reason.empty() &&
+          std::find(kDropReasons.begin(), kDropReasons.end(), e.reason) == kDropReasons.end()) {
+        unknown(e.reason_loc, "unknown drop reason \"" + e.reason + "\"", "test-reason", e.reason,
+                kDropReasons);
+      }
+      break;
+    case TestExpect::Kind::State:
+      e.constraint = check_constraint(*e.value, "an expectation", false);
+      if (!e.window.present) {
+        error(e.loc, "an event state is checked at a time: add `at D`", "test-window");
+      }
+      break;
+  }
+  check_test_window(e.window, e.kind == TestExpect::Kind::State);
+}
+
+}  // namespace arbc::frontend

@@ -1,0 +1,49 @@
+// A test of an app (`test "name" { ... }` in a spec, docs/testing.md), after the front end
+// checked it: timed inputs, events given directly, and expectations, all with values and
+// times resolved. `arbc test` runs these on the embedded runtime in simulated time.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "core/constraint.h"
+#include "core/value.h"
+
+namespace arbc::model {
+
+struct TestStep {
+  enum class Kind { Input, Set, Unset };
+  Kind kind = Kind::Input;
+  double t = 0;
+  std::string port;   // Input: "Module.port", an out-port
+  Value value;        // Input
+  std::string event;  // Set, Unset
+  SourceLocation loc;
+};
+
+struct Expectation {
+  enum class Kind { Receives, Nothing, Drops, State };
+  Kind kind = Kind::Receives;
+  std::string port;            // Receives, Nothing: "Module.port", an in-port
+  std::optional<Value> value;  // Receives: none means any value
+  std::string connection;      // Drops: the rule
+  std::string reason;          // Drops: empty means any reason
+  Constraint state;            // State
+  // The window, both ends included; without one, the whole test.
+  double from = 0, to = std::numeric_limits<double>::infinity();
+  std::string text;  // the expectation as written, for failure messages
+  SourceLocation loc;
+};
+
+struct TestCase {
+  std::string name;
+  std::string rule;             // `on RULE`: the rule tested alone; empty: the whole app
+  std::vector<TestStep> steps;  // in the order written (same-instant steps keep it)
+  std::vector<Expectation> expectations;
+  SourceLocation loc;
+};
+
+}  // namespace arbc::model

@@ -1,0 +1,126 @@
+#include "core/value_json.h"
+
+#include <cmath>
+
+namespace arbc {
+
+namespace {
+
+const char* json_kind(const nlohmann::json& j) {
+  if (j.is_null()) return "null";
+  if (j.is_boolean()) return "bool";
+  if (j.is_number_integer() || j.is_number_unsigned()) return "int";
+  if (j.is_number()) return "float";
+  if (j.is_string()) return "string";
+  if (j.is_array()) return "list";
+  return "record";
+}
+
+// "field pos.x: " / "item 3: " / "" at the root: where a mismatch is.
+std::string at(const std::string& path) { return path.empty() ? "" : path + ": "; }
+
+std::string child(const std::string& path, const std::string& name) {
+  if (path.empty()) return "field " + name;
+  return path + "." + name;
+}
+
+std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::string& path,
+                             std::string* err);
+
+bool fail(const std::string& path, const std::string& expected, const nlohmann::json& j,
+          std::string* err) {
+  *err = at(path) + "expected " + expected + ", got " + json_kind(j);
+  return false;
+}
+
+std::optional<Value> convert_vec3(const nlohmann::json& j, const std::string& path,
+                                  std::string* err) {
+  double xyz[3];
+  static const char* names[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    const nlohmann::json* c = nullptr;
+    if (j.is_array() && j.size() == 3) c = &j[i];
+    if (j.is_object() && j.size() == 3 && j.contains(names[i])) c = &j[names[i]];
+    if (!c) {
+      fail(path, "vec3 ({\"x\":..,\"y\":..,\"z\":..} or [x, y, z])", j, err);
+      return std::nullopt;
+    }
+    if (!c->is_number()) {
+      fail(child(path, names[i]), "float", *c, err);
+      return std::nullopt;
+    }
+    xyz[i] = c->get<double>();
+  }
+  return Value::vec3(xyz[0], xyz[1], xyz[2]);
+}
+
+std::optional<Value> convert_record(const nlohmann::json& j, const Type& t, const std::string& path,
+                                    std::string* err) {
+  if (!j.is_object()) {
+    fail(path, t.to_string(), j, err);
+    return std::nullopt;
+  }
+  Value out = Value::record();
+  for (const Field& f : t.fields) {
+    if (!j.contains(f.name)) {
+      *err = at(path) + "missing field '" + f.name + "' (" + f.type->to_string() + ")";
+      return std::nullopt;
+    }
+    std::optional<Value> v = convert(j[f.name], *f.type, child(path, f.name), err);
+    if (!v) return std::nullopt;
+    out.set(f.name, std::move(*v));
+  }
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    bool known = false;
+    for (const Field& f : t.fields) known |= f.name == it.key();
+    if (!known) {
+      *err = at(path) + "unknown field '" + it.key() + "' (the type is " + t.to_string() + ")";
+      return std::nullopt;
+    }
+  }
+  return out;
+}
+
+std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::string& path,
+                             std::string* err) {
+  switch (t.kind) {
+    case Type::Kind::Bool:
+      if (!j.is_boolean()) return fail(path, "bool", j, err), std::nullopt;
+      return Value(j.get<bool>());
+    case Type::Kind::Int:
+      if (j.is_number_integer() || j.is_number_unsigned()) return Value(j.get<int64_t>());
+      if (j.is_number_float() && std::nearbyint(j.get<double>()) == j.get<double>())
+        return Value(static_cast<int64_t>(j.get<double>()));
+      return fail(path, "int", j, err), std::nullopt;
+    case Type::Kind::Float:
+      if (!j.is_number()) return fail(path, "float", j, err), std::nullopt;
+      return Value(j.get<double>());
+    case Type::Kind::String:
+      if (!j.is_string()) return fail(path, "string", j, err), std::nullopt;
+      return Value(j.get<std::string>());
+    case Type::Kind::Vec3:
+      return convert_vec3(j, path, err);
+    case Type::Kind::List: {
+      if (!j.is_array()) return fail(path, t.to_string(), j, err), std::nullopt;
+      Value out = Value::list();
+      for (size_t i = 0; i < j.size(); ++i) {
+        std::string item = (path.empty() ? "item " : path + " item ") + std::to_string(i);
+        std::optional<Value> v = convert(j[i], *t.element, item, err);
+        if (!v) return std::nullopt;
+        out.push_back(std::move(*v));
+      }
+      return out;
+    }
+    case Type::Kind::Record:
+      return convert_record(j, t, path, err);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Value> value_from_json(const nlohmann::json& j, const Type& t, std::string* err) {
+  return convert(j, t, "", err);
+}
+
+}  // namespace arbc

@@ -1,0 +1,166 @@
+#include "runtime/stand_in.h"
+
+#include <algorithm>
+#include <set>
+
+#include "core/time_text.h"
+
+namespace arbc {
+
+namespace {
+
+// A module of the app that no plugin provides (stand_in.h).
+class StandIn : public Module {
+ public:
+  StandIn(const model::Module& m, const model::App& app, std::shared_ptr<StandInLog> log)
+      : name_(m.name), log_(std::move(log)) {
+    for (const model::Port& p : m.ports) {
+      if (p.direction == model::Direction::In) {
+        in(p.name, p.type->to_string());
+        continue;
+      }
+      out(p.name, p.type->to_string());
+      outs_.push_back({p.name, p.type, flags_of(app, m.name + "." + p.name)});
+    }
+  }
+
+  void start() override {
+    auto it = log_->inputs.find(name_);
+    std::set<std::string> scripted;
+    if (it != log_->inputs.end()) {
+      for (const TimedValue& v : it->second) {
+        scripted.insert(v.port);
+        schedule(std::max(0.0, v.t - now()), [this, &v] { send(v.port, v.value); });
+      }
+    }
+    if (!log_->stub.enabled) return;
+    for (const OutPort& o : outs_) {
+      std::string qualified = name_ + "." + o.name;
+      if (scripted.count(qualified)) continue;  // an inputs file speaks for this port
+      auto rate = log_->stub.period_of_port.find(qualified);
+      double period =
+          rate == log_->stub.period_of_port.end() ? log_->stub.default_period : rate->second;
+      if (period > 0) sample(o, now(), period, 0);
+    }
+  }
+
+  void on_delivery(const Delivery& d) override {
+    log_->received.push_back({d.time, name_ + "." + d.port, d.connection, d.value});
+  }
+
+ private:
+  struct OutPort {
+    std::string name;
+    TypePtr type;
+    std::vector<std::string> flags;
+  };
+
+  // The events a status port feeds: the flags a sample of it draws from.
+  static std::vector<std::string> flags_of(const model::App& app, const std::string& port) {
+    std::vector<std::string> flags;
+    for (const model::Event& e : app.events) {
+      if (e.source == port) flags.push_back(e.name);
+    }
+    return flags;
+  }
+
+  void send(const std::string& qualified, const Value& v) {
+    ++log_->published[qualified];
+    publish(qualified.substr(name_.size() + 1), v);
+  }
+
+  // Publishes sample k on `o` now, at origin + k * period, and schedules the next (no drift).
+  void sample(const OutPort& o, double origin, double period, uint64_t k) {
+    send(name_ + "." + o.name, sample_value(*o.type, rng(), o.flags));
+    double next = origin + static_cast<double>(k + 1) * period;
+    schedule(next - now(), [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
+  }
+
+  std::string name_;
+  std::shared_ptr<StandInLog> log_;
+  std::vector<OutPort> outs_;
+};
+
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+}  // namespace
+
+Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags) {
+  switch (t.kind) {
+    case Type::Kind::Bool:
+      return Value(rng() % 2 == 0);
+    case Type::Kind::Int:
+      return Value(static_cast<int64_t>(rng() % 10));
+    case Type::Kind::Float:
+      return Value(uniform(rng, 0, 1));
+    case Type::Kind::String:
+      return Value("sample");
+    case Type::Kind::Vec3:
+      return Value::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    case Type::Kind::List: {
+      Value out = Value::list();
+      if (!flags.empty() && t.element->kind == Type::Kind::String) {
+        for (const std::string& f : flags) {
+          if (rng() % 2 == 0) out.push_back(Value(f));  // each flag holds half of the time
+        }
+        return out;
+      }
+      size_t n = 1 + rng() % 3;
+      for (size_t i = 0; i < n; ++i) out.push_back(sample_value(*t.element, rng, {}));
+      return out;
+    }
+    case Type::Kind::Record: {
+      Value out = Value::record();
+      for (const Field& f : t.fields) out.set(f.name, sample_value(*f.type, rng, {}));
+      return out;
+    }
+  }
+  return Value();
+}
+
+Registry registry_with_stand_ins(const model::App& app, const Registry& base,
+                                 std::shared_ptr<StandInLog> log,
+                                 std::vector<std::string>* stand_ins) {
+  Registry out = base;
+  auto shared_app = std::make_shared<model::App>(app);  // the factories outlive the caller's app
+  for (const model::Module& m : app.modules) {
+    if (base.find_module(m.name)) continue;
+    stand_ins->push_back(m.name);
+    out.add_module(m.name,
+                   [m, shared_app, log] { return std::make_unique<StandIn>(m, *shared_app, log); });
+  }
+  return out;
+}
+
+std::string stand_in_summary(const model::App& app, const std::vector<std::string>& stand_ins,
+                             const StandInLog& log) {
+  std::map<std::string, std::vector<const Received*>> by_port;
+  for (const Received& r : log.received) by_port[r.port].push_back(&r);
+  std::string out;
+  for (const std::string& name : stand_ins) {
+    const model::Module* m = app.find_module(name);
+    if (!m) continue;
+    for (const model::Port& p : m->ports) {
+      std::string q = name + "." + p.name;
+      if (p.direction == model::Direction::Out) {
+        auto it = log.published.find(q);
+        uint64_t n = it == log.published.end() ? 0 : it->second;
+        out += "  " + q + " (stand-in source): published " + std::to_string(n) + "\n";
+        continue;
+      }
+      const std::vector<const Received*>& got = by_port[q];
+      out += "  " + q + " (stand-in sink): received " + std::to_string(got.size());
+      if (!got.empty()) {
+        out += ", first at " + time_text(got.front()->t) + " s, last at " +
+               time_text(got.back()->t) + " s (" + got.back()->connection +
+               "): " + got.back()->value.to_json();
+      }
+      out += "\n";
+    }
+  }
+  return out.empty() ? out : "stand-ins:\n" + out;
+}
+
+}  // namespace arbc

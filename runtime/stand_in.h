@@ -1,0 +1,66 @@
+// Stand-in modules: what runs in place of a module no plugin provides, so that a spec can be
+// tried and tested without C++ (docs/testing.md). A stand-in declares the app's ports of its
+// module, publishes the timed values it is given (an `arbc run --inputs` file, the inputs of an
+// `arbc test`) and, with `--stub`, typed sample values at a rate per port; it records every
+// message delivered to it. It uses only the module API (runtime/module.h): the runtime cannot
+// tell it from a plugin's module.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "runtime/module.h"
+
+namespace arbc {
+
+// A value to publish on an out-port of a stand-in at time t.
+struct TimedValue {
+  double t = 0;
+  std::string port;  // "Module.port"
+  Value value;
+};
+
+// A message delivered to a stand-in.
+struct Received {
+  double t = 0;
+  std::string port;  // "Module.port"
+  std::string connection;
+  Value value;
+};
+
+// What stand-ins publish, beyond their scripted values: with `--stub`, a sample value every
+// `period` seconds on each out-port that has no scripted value.
+struct StubPlan {
+  bool enabled = false;
+  double default_period = 0.1;                   // 10 Hz
+  std::map<std::string, double> period_of_port;  // "Module.port" -> seconds; 0: silent
+};
+
+// What every stand-in of one run shares: its inputs, and what it received. The runtime runs all
+// callbacks on one thread, so no lock is needed.
+struct StandInLog {
+  std::map<std::string, std::vector<TimedValue>> inputs;  // by module name, in time order
+  StubPlan stub;
+  std::vector<Received> received;             // in delivery order
+  std::map<std::string, uint64_t> published;  // "Module.port" -> messages published
+};
+
+// A sample of type t for `--stub`: drawn from rng; a `list<string>` port that feeds events
+// (`events from`) draws its flags from `flags`.
+Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags);
+
+// `base` plus a stand-in for every module of `app` that `base` does not register; the
+// stand-ins' names are appended to *stand_ins. The stand-ins share `log`.
+Registry registry_with_stand_ins(const model::App& app, const Registry& base,
+                                 std::shared_ptr<StandInLog> log,
+                                 std::vector<std::string>* stand_ins);
+
+// One line per in-port of a stand-in: how many messages it received, when, and the last value;
+// then per out-port how many it published. For `arbc run`'s output and report.
+std::string stand_in_summary(const model::App& app, const std::vector<std::string>& stand_ins,
+                             const StandInLog& log);
+
+}  // namespace arbc

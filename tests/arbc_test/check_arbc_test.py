@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""`arbc test` and `arbc run --inputs/--stub/--diff` end to end (issue 17, docs/testing.md).
+
+usage: check_arbc_test.py ARBC CASE        (run from the repository root)
+
+Each case runs the arbc binary and checks its exit code and the words of its output.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+SPEC = "specs/table_clean.spec"
+PAPER_TESTS = [
+    "take only when the arm is idle and not holding",
+    "a rake that is out suppresses take",
+    "put after take",
+    "search only while no face was tracked for the hold time",
+    "speak at most every 5 s",
+]
+
+
+def run(arbc, *args):
+    proc = subprocess.run([arbc, *args], capture_output=True, text=True, timeout=300)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def expect(cond, what, out="", err=""):
+    if not cond:
+        sys.exit(f"FAIL: {what}\n--- stdout\n{out}\n--- stderr\n{err}")
+
+
+def changed_spec(tmp, old, new, name="changed.spec"):
+    """A copy of table_clean.spec with `old` replaced by `new` (which must occur)."""
+    text = open(SPEC, encoding="utf-8").read()
+    assert old in text, old
+    path = os.path.join(tmp, name)
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text.replace(old, new))
+    return path
+
+
+def case_table_clean_tests_pass(arbc, tmp):
+    code, out, err = run(arbc, "test", SPEC)
+    expect(code == 0, f"exit {code}", out, err)
+    for name in PAPER_TESTS:
+        expect(f"PASS  {SPEC}: {name}\n" in out, f"no PASS line for {name!r}", out, err)
+    expect("FAIL" not in out, "a test failed", out, err)
+    expect(re.search(r"^(\d+) tests, \1 passed, 0 failed$", out, re.M), "no count line", out, err)
+
+
+def case_tests_are_deterministic(arbc, tmp):
+    broken = changed_spec(tmp, "hold 1s", "hold 300ms")
+    first = run(arbc, "test", broken)
+    for _ in range(3):
+        expect(run(arbc, "test", broken) == first, "two runs differ", *first[1:])
+    several = run(arbc, "test", broken, "--jobs", "4")
+    expect(several == first, "a run on 4 threads differs from one on 1", *several[1:])
+
+
+def case_changed_spec_fails_with_trace(arbc, tmp):
+    # With a hold of 300 ms, search is selected again at 700 ms: the paper's hold is broken.
+    broken = changed_spec(tmp, "hold 1s", "hold 300ms")
+    code, out, err = run(arbc, "test", broken)
+    expect(code == 1, f"exit {code}, expected 1", out, err)
+    name = "search only while no face was tracked for the hold time"
+    expect(f"FAIL  {broken}: {name}\n" in out, "the hold test did not fail", out, err)
+    expect('expected search drops "not-selected" at 700ms' in out, "no expectation", out, err)
+    expect("but search delivered at 0.7s" in out, "no account of what happened", out, err)
+    expect("0.7s  deliver search -> HeadControl.gaze" in out, "no trace around it", out, err)
+    expect(out.count("FAIL  ") == 1, "other tests failed too", out, err)
+
+
+def case_refuted_spec_needs_no_verify(arbc, tmp):
+    # Without `not e_taken`, take and put overlap: the proof refutes the spec.
+    broken = changed_spec(tmp, "take: from ObjectDetector.objects when not e_taken and",
+                          "take: from ObjectDetector.objects when")
+    code, out, err = run(arbc, "test", broken)
+    expect(code == 1, f"exit {code}, expected 1 (refuted)", out, err)
+    expect("no test was run" in err and "PASS" not in out, "tests ran on a refuted spec", out, err)
+    code, out, err = run(arbc, "test", broken, "--no-verify")
+    expect(code == 1, f"exit {code}, expected 1 (a test fails)", out, err)
+    expect(f"FAIL  {broken}: take only when the arm is idle and not holding" in out,
+           "the test of the paper's take rule did not catch the broken spec", out, err)
+
+
+def case_junit_and_filter(arbc, tmp):
+    junit = os.path.join(tmp, "results.xml")
+    code, out, err = run(arbc, "test", SPEC, "--filter", "*take*", "--junit", junit)
+    expect(code == 0, f"exit {code}", out, err)
+    expect("put after take" in out and "speak at most" not in out, "filter ignored", out, err)
+    suite = ET.parse(junit).getroot().find("testsuite")
+    names = [c.get("name") for c in suite.findall("testcase")]
+    expect(suite.get("tests") == str(len(names)) and "put after take" in names,
+           f"junit lists {names}", out, err)
+    broken = changed_spec(tmp, "hold 1s", "hold 300ms")
+    run(arbc, "test", broken, "--junit", junit)
+    failures = ET.parse(junit).getroot().findall(".//failure")
+    expect(len(failures) == 1 and "not-selected" in failures[0].text, "no junit failure", out, err)
+    code, out, err = run(arbc, "test", SPEC, "--junit", os.path.join(tmp, "no", "such", "x.xml"))
+    expect(code == 2 and "cannot write" in err, f"exit {code} for an unwritable --junit", out, err)
+
+
+def case_unit_test_of_one_rule(arbc, tmp):
+    # take alone: a change of its body (not of the app around it) fails its unit test.
+    broken = changed_spec(tmp, "let obj = min_by(objects, o => o.dist);\n    accept obj.dist <= HAND",
+                          "let obj = max_by(objects, o => o.dist);\n    accept obj.dist <= HAND")
+    code, out, err = run(arbc, "test", broken, "--filter", "take picks*")
+    expect(code == 1, f"exit {code}", out, err)
+    expect("but nothing reached PickAndPlace.cmd at 0.1s" in out and
+           "0.1s  drop take (rejected)" in out, "unit test did not see the drop", out, err)
+
+
+def write_lines(path, lines):
+    with open(path, "w", encoding="utf-8") as f:
+        for line in lines:
+            f.write((line if isinstance(line, str) else json.dumps(line)) + "\n")
+
+
+def case_inputs_run_records_sinks(arbc, tmp):
+    inputs = os.path.join(tmp, "inputs.jsonl")
+    write_lines(inputs, [
+        {"t": 0, "port": "PickAndPlace.status", "value": ["e_arm_idle"]},
+        {"t": 0, "port": "PullObject.status", "value": ["e_pull_idle"]},
+        {"t": 0.1, "port": "ObjectDetector.objects",
+         "value": [{"pos": {"x": 0.3, "y": 0.1, "z": 0}, "dist": 0.3}]},
+    ])
+    trace = os.path.join(tmp, "trace.jsonl")
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--duration", "1s",
+                         "--trace", trace)
+    expect(code == 0, f"exit {code}", out, err)
+    expect("inputs: 3 messages from" in out, "inputs not counted", out, err)
+    expect('PickAndPlace.cmd (stand-in sink): received 1, first at 0.1 s, last at 0.1 s (take): '
+           '{"pos":{"x":0.3,"y":0.1,"z":0.0},"verb":"take"}' in out, "sink not summarised", out, err)
+    records = [json.loads(l) for l in open(trace, encoding="utf-8")]
+    expect(any(r["type"] == "publish" and r["port"] == "ObjectDetector.objects" for r in records),
+           "the trace has no publish line", out, err)
+
+
+def case_inputs_bad_line_is_bad_input(arbc, tmp):
+    inputs = os.path.join(tmp, "bad.jsonl")
+    write_lines(inputs, [
+        {"t": 0, "port": "PickAndPlace.status", "value": ["e_arm_idle"]},
+        {"t": 1, "port": "FaceDetector.face", "value": {"pos": [0, 0, 1], "certainty": "high"}},
+    ])
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
+    expect(code == 2, f"exit {code}", out, err)
+    expect(f"{inputs}:2: field 'value': field certainty: expected float, got string" in err,
+           "the line and field are not named", out, err)
+    write_lines(inputs, [{"t": 0, "port": "HeadControl.gaze", "value": [0, 0, 1]}])
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
+    expect(code == 2 and "is not an out-port of app table_clean" in err, "in-port accepted", out, err)
+    write_lines(inputs, ["{not json"])
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
+    expect(code == 2 and f"{inputs}:1: not JSON" in err, "bad JSON accepted", out, err)
+
+
+def case_trace_replay_and_diff(arbc, tmp):
+    # An object out of reach, idle arm and rake, a search, a face, a search within the hold.
+    inputs, first = os.path.join(tmp, "inputs.jsonl"), os.path.join(tmp, "first.jsonl")
+    lines = [{"t": 0, "port": "ObjectDetector.objects",
+              "value": [{"pos": [0.9, 0, 0], "dist": 0.9}]}]
+    for t in (0, 0.4, 0.8):
+        lines += [{"t": t, "port": "PickAndPlace.status", "value": ["e_arm_idle"]},
+                  {"t": t, "port": "PullObject.status", "value": ["e_pull_idle"]}]
+    lines += [{"t": 0.1, "port": "LookAround.gaze", "value": [1, 0, 0]},
+              {"t": 0.2, "port": "FaceDetector.face", "value": {"pos": [0, 0, 1], "certainty": 0.9}},
+              {"t": 0.7, "port": "LookAround.gaze", "value": [-1, 0, 0]}]
+    write_lines(inputs, sorted(lines, key=lambda l: l["t"]))
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--duration", "3s",
+                         "--trace", first)
+    expect(code == 0, f"exit {code}", out, err)
+    # Replaying the trace on the same spec decides the same.
+    code, out, err = run(arbc, "run", SPEC, "--inputs", first, "--duration", "3s",
+                         "--diff", first)
+    expect(code == 0, f"exit {code}", out, err)
+    expect("(a trace: its publications are replayed)" in out, "not read as a trace", out, err)
+    expect(f"diff: every decision is the same as in {first}" in out, "replay differs", out, err)
+    # A changed spec decides differently: the first difference, with both event states.
+    broken = changed_spec(tmp, "hold 1s", "hold 300ms")
+    code, out, err = run(arbc, "run", broken, "--inputs", first, "--duration", "3s",
+                         "--diff", first)
+    expect(code == 1, f"exit {code}, expected 1 (the runs differ)", out, err)
+    expect("diff: first difference: connection " in out, "no first difference", out, err)
+    expect(re.search(r"this run: .*; events at \S+: ", out) and
+           re.search(re.escape(first) + r": .*; events at \S+: ", out),
+           "the event states of both runs are not shown", out, err)
+
+
+def case_stub_run_reports_stand_ins(arbc, tmp):
+    code, out, err = run(arbc, "run", SPEC, "--stub", "--duration", "2s",
+                         "--stub-rate", "FaceDetector.face=0")
+    expect(code == 0, f"exit {code}", out, err)
+    expect("FaceDetector.face (stand-in source): published 0" in out, "rate 0 ignored", out, err)
+    # 10 Hz from t = 0 through t = 2 s inclusive (a run ends after the events due at its end).
+    expect("ObjectDetector.objects (stand-in source): published 21" in out, "not 10 Hz", out, err)
+    expect(re.search(r"PickAndPlace\.cmd \(stand-in sink\): received \d+", out), "no sink", out, err)
+    code, out, err = run(arbc, "run", SPEC, "--stub", "--stub-rate", "Nope.x=3", "--no-verify")
+    expect(code == 2 and "'Nope.x' is not an out-port" in err, "bad --stub-rate accepted", out, err)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    arbc, case = os.path.abspath(sys.argv[1]), sys.argv[2]
+    with tempfile.TemporaryDirectory() as tmp:
+        globals()["case_" + case](arbc, tmp)
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
