@@ -17,8 +17,8 @@ CompiledSpec finish(frontend::CheckResult checked, const std::string& file,
   std::string dir = script_dir;
   if (!checked.app_file.empty()) {  // a tests file: the app is in its own spec
     out.sources.add(checked.app_file, checked.app_source);
-    dir = std::filesystem::path(checked.app_file).parent_path().string();
-    if (dir.empty()) dir = ".";
+    std::filesystem::path parent = std::filesystem::path(checked.app_file).parent_path();
+    dir = parent.empty() ? std::filesystem::path(".") : parent;
   }
   bool checked_ok = checked.ok() && checked.spec;  // before the diagnostics move out
   out.diagnostics = std::move(checked.diagnostics);

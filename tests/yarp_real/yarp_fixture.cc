@@ -1,12 +1,7 @@
 #include "tests/yarp_real/yarp_fixture.h"
 
-#include <arpa/inet.h>
 #include <fcntl.h>
-#include <netinet/in.h>
-#include <signal.h>
 #include <spawn.h>
-#include <sys/file.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yarp/os/Time.h>
@@ -16,10 +11,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <thread>
 
 #include "import/yarp/app_xml.h"
+#include "tests/yarp_real/yarp_server.h"
 
 extern char** environ;
 
@@ -32,73 +27,6 @@ pid_t g_server = -1;
 pid_t g_receiver = -1;
 fs::path g_tmp;
 fs::path g_start_dir;
-
-bool can_bind(int port) {
-  int s = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  a.sin_port = htons(static_cast<uint16_t>(port));
-  bool ok = bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
-  close(s);
-  return ok;
-}
-
-// A name server port whose block of 100 is this process's alone. yarpserver gives the ports it
-// registers the numbers just above its own (PORT+2...), and a port that cannot bind its number
-// fails to open, so the block must be free and below the kernel's ephemeral range (32768 and
-// up); a lock file per block keeps parallel tests apart.
-int reserve_port_block() {
-  std::mt19937 rng(
-      static_cast<unsigned>(getpid()) ^
-      static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count()));
-  for (int attempt = 0; attempt < 400; ++attempt) {
-    int base = 10000 + 100 * static_cast<int>(rng() % 220);
-    std::string lock = "/tmp/arbc-yarp-ports-" + std::to_string(base) + ".lock";
-    int fd = open(lock.c_str(), O_CREAT | O_RDWR, 0666);
-    if (fd < 0) continue;
-    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      close(fd);
-      continue;
-    }
-    bool free = true;
-    for (int p = base; p < base + 50 && free; ++p) free = can_bind(p);
-    if (free) return base;  // the lock is held until the process exits
-    close(fd);
-  }
-  return -1;
-}
-
-// Starts yarpserver on 127.0.0.1:port, its output in the temporary folder.
-pid_t start_server(int port) {
-  std::string port_text = std::to_string(port);
-  std::string log = (g_tmp / "yarpserver.log").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  const char* argv[] = {ARBC_YARPSERVER, "--read",          "--ip", "127.0.0.1",
-                        "--socket",      port_text.c_str(), nullptr};
-  pid_t pid = -1;
-  int rc = posix_spawn(&pid, ARBC_YARPSERVER, &actions, nullptr, const_cast<char**>(argv), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0 ? pid : -1;
-}
-
-void stop(pid_t& pid) {
-  if (pid <= 0) return;
-  kill(pid, SIGTERM);
-  int status = 0;
-  pid_t done = 0;
-  for (int i = 0; i < 50 && (done = waitpid(pid, &status, WNOHANG)) == 0; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  if (done == 0) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-  }
-  pid = -1;
-}
 
 }  // namespace
 
@@ -117,7 +45,7 @@ void YarpTest::SetUp() {
   int port = reserve_port_block();
   ASSERT_GT(port, 0) << "no free block of ports between 10000 and 32000";
   std::ofstream(g_tmp / "conf" / "yarp.conf") << "127.0.0.1 " << port << " yarp\n";
-  g_server = start_server(port);
+  g_server = start_yarpserver(ARBC_YARPSERVER, port, (g_tmp / "yarpserver.log").string());
   ASSERT_GT(g_server, 0) << "cannot start " << ARBC_YARPSERVER;
   ::yarp::os::Network::init();
   bool up = false;
@@ -130,11 +58,11 @@ void YarpTest::SetUp() {
 
 void YarpTest::TearDown() {
   if (!owns_) return;
-  stop(g_receiver);
+  stop_process(g_receiver);
   for (auto& [name, port] : writers_) port->close();
   writers_.clear();
   ::yarp::os::Network::fini();
-  stop(g_server);
+  stop_process(g_server);
   std::error_code ec;
   fs::current_path(g_start_dir, ec);
   fs::remove_all(g_tmp, ec);
