@@ -109,6 +109,19 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   return std::nullopt;
 }
 
+// A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
+void print_internal_errors(const std::vector<verify::InputReport>& reports) {
+  for (const verify::InputReport& r : reports) {
+    for (const verify::PortResult& p : r.report.ports) {
+      for (const verify::Finding& f : p.findings) {
+        if (f.check == verify::kCheckInternal) {
+          std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int verify_command(std::span<char*> args) {
@@ -164,17 +177,7 @@ int verify_command(std::span<char*> args) {
     reports.push_back({input, std::move(*report)});
   }
 
-  // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
-  for (const verify::InputReport& r : reports) {
-    for (const verify::PortResult& p : r.report.ports) {
-      for (const verify::Finding& f : p.findings) {
-        if (f.check == verify::kCheckInternal) {
-          std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
-        }
-      }
-    }
-  }
-
+  print_internal_errors(reports);
   std::string out;
   if (a.format == "json") {
     out = verify::format_json(reports, a.stats);

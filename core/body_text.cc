@@ -403,8 +403,8 @@ std::string body_stmt_text(const BodyStmt& s) {
 std::optional<BodyStmt> parse_body_stmt(std::string_view text, std::string* err) {
   Reader r(text);
   BodyStmt s;
-  if (!r.stmt(s, 0) || !r.at_end()) {
-    if (err) *err = r.error().empty() ? "trailing text after the statement" : r.error();
+  if (!r.stmt(s, 0) || (!r.at_end() && !r.fail("trailing text after the statement"))) {
+    if (err) *err = r.error();
     return std::nullopt;
   }
   return s;
@@ -417,8 +417,8 @@ namespace arbc::model {
 std::optional<BodyExpr> parse_body_expr(std::string_view text, std::string* err) {
   Reader r(text);
   BodyExpr e;
-  if (!r.expr(e, 0) || !r.at_end()) {
-    if (err) *err = r.error().empty() ? "trailing text after the expression" : r.error();
+  if (!r.expr(e, 0) || (!r.at_end() && !r.fail("trailing text after the expression"))) {
+    if (err) *err = r.error();
     return std::nullopt;
   }
   return e;

@@ -1,4 +1,4 @@
-// Two rules of one source, asked about the same message (docs/checks.md#data): exclusive by
+// Two rules of one source, asked about the same message (docs/checks.md#message-data): exclusive by
 // data, or a concrete message both accept, replayed through the runtime's monitors.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Questions about message data (docs/checks.md#data): can these rules accept the same message
+// Questions about message data (docs/checks.md#message-data): can these rules accept the same message
 // (or independent messages), with what they emit satisfying given predicates? One Z3 query
 // over the encoded bodies (verify/body_encoding.h), in the theories of the data (linear and
 // nonlinear real and integer arithmetic, strings, bounded lists).

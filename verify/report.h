@@ -40,7 +40,7 @@ struct Note {
   model::SourceLocation loc;
 };
 
-// A concrete message that shows a data finding (docs/checks.md#data), in spec syntax, and
+// A concrete message that shows a data finding (docs/checks.md#message-data), in spec syntax, and
 // what the runtime's Lua monitors did with it when it was replayed.
 struct MessageExample {
   std::string source;  // "ObjectDetector.objects"

@@ -16,7 +16,7 @@ namespace arbc::verify {
 // Overlapping pairs of one port reported with a counterexample; the rest are counted.
 inline constexpr int kDefaultMaxPairsPerPort = 10;
 
-// What a monitor did with one message (docs/checks.md#data).
+// What a monitor did with one message (docs/checks.md#message-data).
 struct MonitorRun {
   bool accepted = false;
   std::string reason;  // why it was dropped, when not accepted

@@ -1,4 +1,4 @@
-// Sema of `resource NAME { M.p, ... } [when PRED];` (docs/language.md#resource): at least two
+// Sema of `resource NAME { M.p, ... } [when PRED];` (docs/language.md#resource-name--mp-nq---when-predicate): at least two
 // distinct arbitrated `in` ports of one type, a unique name, and a bool predicate over the
 // delivered value, bound to `emitted`.
 #include <set>

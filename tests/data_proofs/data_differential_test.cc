@@ -1,7 +1,7 @@
 // The data encoding (verify/body_encoding.h) against the runtime's Lua monitors: random rules,
 // compiled by arbc and run in a real Lua 5.4 sandbox, on random messages. For every message
 // the encoding must say exactly what the monitor does: accept or drop, and the value
-// delivered. Every builtin of the language appears (docs/checks.md#data).
+// delivered. Every builtin of the language appears (docs/checks.md#message-data).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -67,7 +67,7 @@ golden bad_input.json repo 2 --format json tests/verify/bad.spec
 golden bad_input.sarif repo 2 --format sarif tests/verify/bad.spec tests/verify/no_such_app.json \
   tests/verify/malformed.app.json
 golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spec
-# Message data (docs/checks.md#data): rules of one source split by their bodies, overlaps shown
+# Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
 # with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
 # by the two mutations with a concrete message.
 golden data_exclusive.txt repo 1 tests/verify/data_exclusive.spec
