@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "core/body_text.h"
+
 namespace arbc::model {
 
 using Json = nlohmann::ordered_json;
@@ -125,6 +127,24 @@ bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapE
   return true;
 }
 
+// `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded (nullopt).
+bool read_body(const Json& j, const std::string& path, std::optional<Body>* out,
+               std::string* err) {
+  if (!j.contains("body")) return true;
+  const Json* arr = array_member(j, path, "body", err);
+  if (!arr) return false;
+  Body body;
+  for (size_t i = 0; i < arr->size(); ++i) {
+    std::string p = path + ".body[" + std::to_string(i) + "]", error;
+    if (!(*arr)[i].is_string()) return fail(p + ": expected a string", err);
+    std::optional<BodyStmt> s = parse_body_stmt((*arr)[i].get<std::string>(), &error);
+    if (!s) return fail(p + ": " + error, err);
+    body.push_back(std::move(*s));
+  }
+  *out = std::move(body);
+  return true;
+}
+
 // A constraint is its text (grammar in core/constraint.h), the one representation.
 bool read_constraint(const Json& j, const std::string& path, const char* key, Constraint* out,
                      std::string* err) {
@@ -226,7 +246,7 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          string_list(j, p, "must_set", &c->must_set, err) &&
          string_list(j, p, "must_unset", &c->must_unset, err) &&
          opt_string(j, p, "activity_event", &c->activity_event, err) &&
-         opt_bool(j, p, "opaque", &c->opaque, err) &&
+         opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
          opt_number(j, p, "trig_interval", &c->trig_interval, err) &&
          opt_number(j, p, "throttle", &c->throttle, err) &&
          opt_string(j, p, "monitor", &c->monitor, err) &&
@@ -260,6 +280,19 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
+// A resource: its name, its ports and, optionally, the predicate saying which commands use it.
+bool read_resource(const Json& j, const std::string& p, Resource* res, std::string* err) {
+  if (!get_string(j, p, "name", &res->name, err) || !string_list(j, p, "ports", &res->ports, err))
+    return false;
+  if (j.contains("uses")) {
+    std::string text, error;
+    if (!get_string(j, p, "uses", &text, err)) return false;
+    res->uses = parse_body_expr(text, &error);
+    if (!res->uses) return fail(p + ".uses: " + error, err);
+  }
+  return read_location(j, p, &res->loc, err);
+}
+
 // The model in `root`, section by section; nullopt and *err at the first bad value.
 std::optional<App> read_app(const Json& root, std::string* err) {
   App app;
@@ -273,7 +306,8 @@ std::optional<App> read_app(const Json& root, std::string* err) {
                        read_arbitrated_port, err) &&
             read_array(root, r, "", "exclusive_groups", false, &app.exclusive_groups,
                        read_exclusive_group, err) &&
-            read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err);
+            read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
+            read_array(root, r, "", "resources", false, &app.resources, read_resource, err);
   if (!ok) return std::nullopt;
   return app;
 }

@@ -1,6 +1,7 @@
 // to_app_json: the core model as app.json text (docs/app-json.md), written in one pass with
 // JsonWriter. Reading it back is app_json.cc's job.
 #include "core/app_json.h"
+#include "core/body_text.h"
 #include "core/json_writer.h"
 
 namespace arbc::model {
@@ -77,6 +78,12 @@ void write_connection(JsonWriter& w, const Connection& c) {
   w.member("must_unset", c.must_unset);
   w.member("activity_event", c.activity_event);
   w.member("opaque", c.opaque);
+  if (c.body) {
+    w.key("body");
+    w.begin_array();
+    for (const BodyStmt& s : *c.body) w.value(body_stmt_text(s));
+    w.end_array();
+  }
   write_optional(w, "trig_interval", c.trig_interval);
   write_optional(w, "throttle", c.throttle);
   w.member("monitor", c.monitor);
@@ -174,6 +181,19 @@ std::string to_app_json(const App& app) {
     w.end_object();
   }
   w.end_array();
+  if (!app.resources.empty()) {  // absent when none: apps without resources keep their bytes
+    w.key("resources");
+    w.begin_array();
+    for (const Resource& r : app.resources) {
+      w.begin_object();
+      w.member("name", r.name);
+      w.member("ports", r.ports);
+      if (r.uses) w.member("uses", body_expr_text(*r.uses));
+      write_location(w, r.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
   w.end_object();
   return w.take() + "\n";
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/body.h"
 #include "core/constraint.h"
 #include "core/type.h"
 
@@ -90,6 +91,9 @@ struct Connection {
   // Also listed in `sets`: the connection owns its entries. Empty: none.
   std::string activity_event;
   bool opaque = false;                  // a `script` rule: its code is not analysed
+  // The generated monitor's body, for proofs over message data (core/body.h). nullopt: not
+  // recorded (a script, a feed, an app.json written before bodies were): opaque for data.
+  std::optional<Body> body;
   std::optional<double> trig_interval;  // seconds, from `every`
   std::optional<double> throttle;       // seconds, from `throttle`
   std::string monitor;                  // Lua file relative to the app directory; empty: none
@@ -129,6 +133,16 @@ struct Invariant {
   SourceLocation loc;
 };
 
+// `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
+// uses the resource, for one message or two (docs/checks.md#resource).
+struct Resource {
+  std::string name;
+  std::vector<std::string> ports;  // "Module.port", arbitrated, in spec order
+  // Over the delivered value (BodyExpr::Op::Message); nullopt: every command uses it.
+  std::optional<BodyExpr> uses;
+  SourceLocation loc;
+};
+
 struct App {
   int schema_version = kSchemaVersion;
   std::string name;
@@ -141,6 +155,7 @@ struct App {
   std::vector<ArbitratedPort> arbitrated_ports;
   std::vector<ExclusiveGroup> exclusive_groups;
   std::vector<Invariant> invariants;
+  std::vector<Resource> resources;
 
   const Module* find_module(std::string_view name) const;
   const Port* find_port(std::string_view qualified) const;  // "Module.port"

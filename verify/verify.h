@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/app_model.h"
+#include "core/value.h"
 #include "verify/report.h"
 
 namespace arbc::verify {
@@ -15,10 +16,30 @@ namespace arbc::verify {
 // Overlapping pairs of one port reported with a counterexample; the rest are counted.
 inline constexpr int kDefaultMaxPairsPerPort = 10;
 
+// What a monitor did with one message (docs/checks.md#message-data).
+struct MonitorRun {
+  bool accepted = false;
+  std::string reason;  // why it was dropped, when not accepted
+  Value delivered;     // when accepted
+};
+
+// Runs a connection's generated monitor on a message, as the runtime does; the CLI provides
+// one backed by the runtime's Lua monitors, so every message counterexample is replayed.
+class MonitorRunner {
+ public:
+  virtual ~MonitorRunner() = default;
+  virtual bool run(const model::Connection& c, const Value& message, MonitorRun* out,
+                   std::string* err) const = 0;
+};
+
 struct VerifyOptions {
   double timeout_seconds = 60;  // for the whole app; a query cut short answers unknown
   bool strict = false;          // warnings (dead, unused) become errors
   int max_pairs_per_port = kDefaultMaxPairsPerPort;
+  int list_bound = 4;  // lists in messages have at most this many elements (--list-bound)
+  // Replays message counterexamples; without one, a data finding cannot be confirmed and is
+  // reported as unknown (never as a verdict).
+  const MonitorRunner* runner = nullptr;
 };
 
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown

@@ -99,6 +99,9 @@ class Sema {
   void check_connect(ast::ConnectDecl& c);
   // An assertion names a rule of an arbitrated port; its property is a constraint.
   void check_assert(ast::AssertDecl& a);
+  // `resource` declarations (sema_resource.cc).
+  void check_resources();
+  TypePtr check_resource_ports(ast::ResourceDecl& r);
 
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.

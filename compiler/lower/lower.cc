@@ -8,6 +8,7 @@
 
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
+#include "compiler/lower/lower_body.h"
 #include "core/effective_guard.h"
 
 namespace arbc::lower {
@@ -81,6 +82,14 @@ class Lowerer {
     }
     for (const ast::InvariantDecl& inv : spec_.invariants)
       app.invariants.push_back({inv.constraint, inv.loc});
+    for (const ast::ResourceDecl& r : spec_.resources) {
+      model::Resource res;
+      res.name = r.name;
+      for (const ast::PortRef& p : r.ports) res.ports.push_back(p.qualified());
+      if (r.uses) res.uses = lower_expr(*r.uses);
+      res.loc = r.loc;
+      app.resources.push_back(std::move(res));
+    }
   }
 
  private:
@@ -144,7 +153,9 @@ class Lowerer {
       plan.script = read_script(*script);
       if (!plan.script) return false;
       c.opaque = true;
+      return true;
     }
+    c.body = lower_body(body);
     return true;
   }
 
