@@ -21,7 +21,7 @@ class ReplayHost : public MonitorHost {
   void set_event(std::string_view, std::optional<double>) override {}
   void unset_event(std::string_view) override {}
   bool has_event(std::string_view) override { return false; }
-  std::string set_constraint(std::string_view) override { return ""; }
+  bool set_constraint(std::string_view, std::string*) override { return true; }
   std::string get_constraint() override { return constraint_; }
   void set_trig_interval(double) override {}
   void print(const std::string&) override {}

@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,12 @@ void print_errors(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "arbc run: error: %s\n", e.c_str());
 }
 
+// The same for an error of one line per problem.
+void print_errors(const std::string& lines) {
+  std::istringstream in(lines);
+  for (std::string line; std::getline(in, line);) print_errors(std::vector<std::string>{line});
+}
+
 // Proves the app before it runs, as `arbc build` does, and sets *proof to what the output and
 // the report say about it (a spec was proved when it was built, and the build's summary said
 // so). Returns an exit code: kExitOk to run, else the proof's (1 refuted or unknown, 2 a
@@ -177,8 +184,8 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
 // Loads each --plugin library; false (the error printed) when one cannot be loaded.
 bool load_plugins(const std::vector<std::string>& plugins) {
   for (const std::string& lib : plugins) {
-    std::string error = load_plugin(lib);
-    if (!error.empty()) {
+    std::string error;
+    if (!load_plugin(lib, &error)) {
       print_errors({lib + ": " + error});
       return false;
     }
@@ -200,33 +207,34 @@ int run_command(std::span<char*> args) {
   TempDir temp;
   int prepared = prepare_app_dir(a.input, a.no_verify, &temp, &dir);
   if (prepared != kExitOk) return prepared;
-  AppDirLoad load = load_app_dir(dir);
-  if (!load.ok) {
-    print_errors(load.errors);
+  std::string load_error;
+  std::optional<model::App> loaded = load_app_dir(dir, &load_error);
+  if (!loaded) {
+    print_errors(load_error);
     return kExitBadInput;
   }
-  int placed = apply_transport(a.transport, load.app, &options);
+  const model::App& app = *loaded;
+  int placed = apply_transport(a.transport, app, &options);
   if (placed != kExitOk) return placed;
-  if (!stand_ins.prepare(load.app, &error)) {
+  if (!stand_ins.prepare(app, &error)) {
     print_errors({error});
     return kExitBadInput;
   }
-  std::vector<std::string> mismatches = check_modules(
-      load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
+  std::vector<std::string> mismatches =
+      check_modules(app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
   }
   std::string proof;
-  int proved =
-      prove_app_dir(load.app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
+  int proved = prove_app_dir(app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   std::unique_ptr<Runtime> runtime =
-      Runtime::create(load.app, dir, options, &error, stand_ins.registry());
+      Runtime::create(app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
     print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
     return kExitBadInput;
@@ -240,9 +248,9 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  RunEnd end{load.app,      *runtime,    options, records,
+  RunEnd end{app,           *runtime,    options, records,
              a.report_path, report_file, proof,   describe_transport(a.transport, options)};
-  if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(load.app); };
+  if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(app); };
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;
@@ -252,7 +260,7 @@ int run_command(std::span<char*> args) {
   if (!interrupt.run_returned()) {
     for (;;) pause();  // the watchdog is ending the process
   }
-  return stand_ins.diff(load.app, records, finish_run(end, interrupt.signal_name()));
+  return stand_ins.diff(app, records, finish_run(end, interrupt.signal_name()));
 }
 
 }  // namespace arbc::cli

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 #include "cli/commands.h"
@@ -75,13 +76,14 @@ int prepare_spec(const std::string& spec, bool no_verify, Scratch* scratch, std:
     return kExitRuntimeFailure;
   }
   *app_dir = (fs::path(pattern) / lowered.app.name).string();
-  AppDirLoad load = load_app_dir(*app_dir);
-  if (!load.ok || !write_test_harness(*app_dir, &error)) {
-    for (const std::string& e : load.errors) std::fprintf(stderr, "arbc test: %s\n", e.c_str());
-    if (!error.empty()) std::fprintf(stderr, "arbc test: %s\n", error.c_str());
+  std::optional<model::App> loaded = load_app_dir(*app_dir, &error);
+  if (!loaded || !write_test_harness(*app_dir, &error)) {
+    std::istringstream lines(error);
+    for (std::string line; std::getline(lines, line);)
+      std::fprintf(stderr, "arbc test: %s\n", line.c_str());
     return kExitRuntimeFailure;
   }
-  *app = std::move(load.app);
+  *app = std::move(*loaded);
   *tests = lower_tests(*lowered.spec);
   return kExitOk;
 }

@@ -356,13 +356,4 @@ std::optional<App> from_app_json(std::string_view text, std::string* err) {
   }
 }
 
-AppLoad from_app_json(std::string_view text) {
-  AppLoad result;
-  if (std::optional<App> app = from_app_json(text, &result.error)) {
-    result.app = std::move(*app);
-    result.ok = true;
-  }
-  return result;
-}
-
 }  // namespace arbc::model

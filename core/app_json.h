@@ -16,13 +16,4 @@ std::string to_app_json(const App& app);
 // the line and column of a JSON syntax error) and what is wrong.
 std::optional<App> from_app_json(std::string_view text, std::string* err);
 
-// The same as a result struct, kept only for runtime/app_loader.cc until runtime/ moves to the
-// form above (issue 14); new code uses that one.
-struct AppLoad {
-  bool ok = false;
-  App app;
-  std::string error;
-};
-AppLoad from_app_json(std::string_view text);
-
 }  // namespace arbc::model

@@ -140,17 +140,6 @@ TEST(AppJsonTest, EverySectionNamesThePathOfItsBadValue) {
   EXPECT_EQ(with("/invariants/0", Json::object()), "invariants[0]: missing \"formula\"");
 }
 
-// The result-struct form (kept for runtime/app_loader.cc) says the same.
-TEST(AppJsonTest, TheResultStructSaysTheSame) {
-  std::string text = to_app_json(small_app());
-  AppLoad loaded = from_app_json(text);
-  ASSERT_TRUE(loaded.ok) << loaded.error;
-  EXPECT_EQ(to_app_json(loaded.app), text);
-  AppLoad bad = from_app_json("[]");
-  EXPECT_FALSE(bad.ok);
-  EXPECT_EQ(bad.error, load_error("[]"));
-}
-
 TEST(AppJsonTest, ASyntaxErrorNamesItsLineAndColumn) {
   std::string text = to_app_json(small_app());
   size_t at = text.find("\"modules\"");

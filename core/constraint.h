@@ -41,7 +41,7 @@ struct Constraint {
 std::optional<Constraint> parse_constraint(std::string_view text, std::string* err);
 
 // The same with the error's byte offset as a number, for tools that point into the text (the
-// YARP importer's messages, the fuzzer) and for runtime/ until it moves to the form above.
+// YARP importer's messages, the fuzzer); tests use it for brevity.
 struct ConstraintParse {
   bool ok = false;
   Constraint constraint;

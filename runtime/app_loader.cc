@@ -12,37 +12,38 @@ namespace arbc {
 
 namespace fs = std::filesystem;
 
-AppDirLoad load_app_dir(const std::string& dir) {
-  AppDirLoad load;
-  load.dir = dir;
+std::optional<model::App> load_app_dir(const std::string& dir, std::string* err) {
   fs::path file = fs::path(dir) / "app.json";
   std::ifstream in(file, std::ios::binary);
   if (!fs::is_directory(dir)) {
-    load.errors.push_back(dir +
-                          ": not a directory; give the directory `arbc build` wrote "
-                          "(it holds app.json and monitors/)");
-    return load;
+    *err = dir +
+           ": not a directory; give the directory `arbc build` wrote (it holds app.json and "
+           "monitors/)";
+    return std::nullopt;
   }
   if (!in) {
-    load.errors.push_back(file.string() + ": cannot read; is " + dir +
-                          " an app directory written by `arbc build`?");
-    return load;
+    *err =
+        file.string() + ": cannot read; is " + dir + " an app directory written by `arbc build`?";
+    return std::nullopt;
   }
   std::ostringstream text;
   text << in.rdbuf();
-  model::AppLoad parsed = model::from_app_json(text.str());
-  if (!parsed.ok) {
+  std::string error;
+  std::optional<model::App> app = model::from_app_json(text.str(), &error);
+  if (!app) {
     // One rebuild hint: the model's own error may already carry one (a newer schema).
     std::string hint =
-        parsed.error.find("rebuild") == std::string::npos ? " (rebuild it with `arbc build`)" : "";
-    load.errors.push_back(file.string() + ": " + parsed.error + hint);
-    return load;
+        error.find("rebuild") == std::string::npos ? " (rebuild it with `arbc build`)" : "";
+    *err = file.string() + ": " + error + hint;
+    return std::nullopt;
   }
   // Every monitor exists and has the bytes `arbc build` wrote (the digests in app.json).
-  load.errors = model::check_monitor_files(parsed.app, dir);
-  load.app = std::move(parsed.app);
-  load.ok = load.errors.empty();
-  return load;
+  std::vector<std::string> problems = model::check_monitor_files(*app, dir);
+  if (!problems.empty()) {
+    *err = join(problems, "\n");
+    return std::nullopt;
+  }
+  return app;
 }
 
 std::vector<std::string> check_modules(const model::App& app, const std::string& app_file,

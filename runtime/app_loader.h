@@ -2,6 +2,7 @@
 // module registry before anything runs.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,16 +12,10 @@
 
 namespace arbc {
 
-struct AppDirLoad {
-  bool ok = false;
-  model::App app;
-  std::string dir;
-  std::vector<std::string> errors;  // each names the file and says what to do
-};
-
 // Reads DIR/app.json and checks that every monitor file it names exists and has the bytes
-// whose SHA-256 app.json records (core/monitor_digests.h).
-AppDirLoad load_app_dir(const std::string& dir);
+// whose SHA-256 app.json records (core/monitor_digests.h). On failure nullopt and *err: one
+// line per problem, each naming the file and saying what to do.
+std::optional<model::App> load_app_dir(const std::string& dir, std::string* err);
 
 // Checks that each module of the app that this process hosts is registered and declares the
 // app's ports with the same direction and type (same_type). Returns one message per problem;

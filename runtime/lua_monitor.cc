@@ -58,8 +58,8 @@ int api_set_constraint(lua_State* L) {
   const char* text = luaL_checkstring(L, 1);
   bool pushed = false;
   {
-    std::string error = host_of(L)->set_constraint(text);
-    if (error.empty()) return 0;
+    std::string error;
+    if (host_of(L)->set_constraint(text, &error)) return 0;
     pushed = push_string(L, "setConstraint: " + error);  // else a memory error was pushed
   }
   if (pushed) {  // prefix the script's file and line, as luaL_error does

@@ -35,9 +35,8 @@ class MonitorHost {
   virtual void unset_event(std::string_view name) = 0;
   virtual bool has_event(std::string_view name) = 0;
   // The constraint is the model's (app.json), installed by the runtime: this only checks that
-  // text is the same formula. Returns an error message (a syntax error, or another
-  // constraint), or "".
-  virtual std::string set_constraint(std::string_view text) = 0;
+  // text is the same formula. False and *err on a syntax error or another constraint.
+  virtual bool set_constraint(std::string_view text, std::string* err) = 0;
   virtual std::string get_constraint() = 0;
   virtual void set_trig_interval(double seconds) = 0;
   virtual void print(const std::string& line) = 0;

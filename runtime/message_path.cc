@@ -315,20 +315,21 @@ bool Runtime::Connection::has_event(std::string_view event) {
 // The constraint is app.json's (what the proof is about): the call only checks. The same
 // formula (after parsing) passes silently; another one is refused, and remembered so that
 // Runtime::create reports a call at load (top level or create) as bad input.
-std::string Runtime::Connection::set_constraint(std::string_view text) {
-  ConstraintParse parsed = parse_constraint(text);
-  if (!parsed.ok) {
-    return parsed.error + " at offset " + std::to_string(parsed.offset) + " in \"" +
-           std::string(text) + "\"";
+bool Runtime::Connection::set_constraint(std::string_view text, std::string* err) {
+  std::optional<Constraint> parsed = parse_constraint(text, err);
+  if (!parsed) {
+    *err += " in \"" + std::string(text) + "\"";
+    return false;
   }
-  std::string wanted = parsed.constraint.to_string();
-  if (wanted == constraint_text) return {};
+  std::string wanted = parsed->to_string();
+  if (wanted == constraint_text) return true;
   std::string why = "\"" + wanted + "\" would replace the constraint of connection '" +
                     model->name + "', \"" + constraint_text +
                     "\" (app.json's, which arbc verify proves and the runtime installs); remove "
                     "the call, or change the rule's `when` in the spec and rebuild";
   if (constraint_conflict.empty()) constraint_conflict = why;
-  return why;
+  *err = why;
+  return false;
 }
 
 void Runtime::Connection::set_trig_interval(double seconds) {

@@ -188,9 +188,8 @@ class Registry {
 };
 
 // Loads a plugin (a shared library whose static registrars call Registry::global()).
-// Returns an empty string on success, else what went wrong (dlopen's message, or that the
-// library registered nothing).
-std::string load_plugin(const std::string& path);
+// False and *err when it cannot: dlopen's message, or that the library registered nothing.
+bool load_plugin(const std::string& path, std::string* err);
 
 }  // namespace arbc
 

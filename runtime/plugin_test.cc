@@ -8,20 +8,22 @@ namespace arbc {
 namespace {
 
 TEST(PluginTest, LoadsAPluginAndRunsTheAppToSuccess) {
-  ASSERT_EQ(load_plugin(ARBC_TEST_PLUGIN), "");
+  std::string err;
+  ASSERT_TRUE(load_plugin(ARBC_TEST_PLUGIN, &err)) << err;
   EXPECT_NE(Registry::global().find_module("Ticker"), nullptr);
   EXPECT_NE(Registry::global().find_environment("pingpong"), nullptr);
   // Loading it twice registers nothing new: said clearly.
-  EXPECT_NE(load_plugin(ARBC_TEST_PLUGIN).find("registered no module"), std::string::npos);
+  EXPECT_FALSE(load_plugin(ARBC_TEST_PLUGIN, &err));
+  EXPECT_NE(err.find("registered no module"), std::string::npos) << err;
 
   std::string dir = std::string(ARBC_SOURCE_DIR) + "/runtime/testdata/pingpong";
-  AppDirLoad load = load_app_dir(dir);
-  ASSERT_TRUE(load.ok) << (load.errors.empty() ? "" : load.errors[0]);
-  EXPECT_TRUE(check_modules(load.app, "app.json").empty());
   std::string error;
+  std::optional<model::App> app = load_app_dir(dir, &error);
+  ASSERT_TRUE(app) << error;
+  EXPECT_TRUE(check_modules(*app, "app.json").empty());
   RunOptions o;
   o.duration = 60;
-  auto rt = Runtime::create(load.app, dir, o, &error);
+  auto rt = Runtime::create(*app, dir, o, &error);
   ASSERT_TRUE(rt) << error;
   rt->run();
   EXPECT_EQ(rt->scenario(), "normal");
@@ -32,8 +34,9 @@ TEST(PluginTest, LoadsAPluginAndRunsTheAppToSuccess) {
 }
 
 TEST(PluginTest, MissingLibraryIsAClearError) {
-  EXPECT_NE(load_plugin("/nonexistent/libnothing.so").find("cannot load plugin"),
-            std::string::npos);
+  std::string err;
+  EXPECT_FALSE(load_plugin("/nonexistent/libnothing.so", &err));
+  EXPECT_NE(err.find("cannot load plugin"), std::string::npos) << err;
 }
 
 }  // namespace

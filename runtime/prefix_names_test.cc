@@ -23,11 +23,12 @@ TEST(PrefixNamesTest, CompiledConstraintsAgreeWithTheTreeInEveryState) {
       "(e or e1) and not (e_ball or e10)",
   };
   for (const char* text : constraints) {
-    ConstraintParse p = parse_constraint(text);
-    ASSERT_TRUE(p.ok) << text << ": " << p.error;
+    std::string error;
+    std::optional<Constraint> parsed = parse_constraint(text, &error);
+    ASSERT_TRUE(parsed) << text << ": " << error;
     EventIndex index;
     for (const char* n : kNames) index.intern(n);
-    CompiledConstraint c = CompiledConstraint::compile(p.constraint, index);
+    CompiledConstraint c = CompiledConstraint::compile(*parsed, index);
     for (int state = 0; state < 32; ++state) {
       EventMask mask;
       std::set<std::string> present;
@@ -37,7 +38,7 @@ TEST(PrefixNamesTest, CompiledConstraintsAgreeWithTheTreeInEveryState) {
           present.insert(kNames[i]);
         }
       }
-      EXPECT_EQ(c.evaluate(mask), evaluate(p.constraint, present)) << text << " state " << state;
+      EXPECT_EQ(c.evaluate(mask), evaluate(*parsed, present)) << text << " state " << state;
     }
   }
 }

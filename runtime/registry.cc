@@ -51,7 +51,7 @@ std::vector<std::string> Registry::environment_names() const {
   return names;
 }
 
-std::string load_plugin(const std::string& path) {
+bool load_plugin(const std::string& path, std::string* err) {
   Registry& host = Registry::global();
   size_t before = host.module_names().size() + host.environment_names().size();
   // A bare file name would make dlopen search the library path; a plugin is a file.
@@ -59,7 +59,8 @@ std::string load_plugin(const std::string& path) {
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = dlerror();
-    return std::string("cannot load plugin: ") + (why ? why : path);
+    *err = std::string("cannot load plugin: ") + (why ? why : path);
+    return false;
   }
   // A plugin that links arbc_runtime statically has its own Registry::global() unless the
   // host exports its copy (then the dynamic linker binds the plugin to it). When they
@@ -78,11 +79,12 @@ std::string load_plugin(const std::string& path) {
   }
   size_t after = host.module_names().size() + host.environment_names().size();
   if (after == before) {
-    return "plugin " + path +
+    *err = "plugin " + path +
            " registered no module or environment (use ARBC_REGISTER_MODULE in its sources, "
            "or it was already loaded)";
+    return false;
   }
-  return {};
+  return true;
 }
 
 }  // namespace arbc

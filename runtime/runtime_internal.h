@@ -114,7 +114,7 @@ struct Runtime::Connection : MonitorHost {
   void set_event(std::string_view event, std::optional<double> lifetime) override;
   void unset_event(std::string_view event) override;
   bool has_event(std::string_view event) override;
-  std::string set_constraint(std::string_view text) override;
+  bool set_constraint(std::string_view text, std::string* err) override;
   std::string get_constraint() override { return constraint_text; }
   void set_trig_interval(double seconds) override;
   void print(const std::string& line) override;

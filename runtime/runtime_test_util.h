@@ -69,9 +69,10 @@ class TestApp {
     c.source = source;
     c.destination = destination;
     c.kind = kind;
-    ConstraintParse p = parse_constraint(constraint);
-    EXPECT_TRUE(p.ok) << p.error;
-    c.constraint = p.constraint;
+    std::string error;
+    std::optional<Constraint> parsed = parse_constraint(constraint, &error);
+    EXPECT_TRUE(parsed) << error;
+    if (parsed) c.constraint = *parsed;
     if (!script.empty()) {
       c.monitor = "monitors/" + name + ".lua";
       c.monitor_sha256 = sha256_hex(script);  // as `arbc build` records it

@@ -129,22 +129,23 @@ int main(int argc, char** argv) {
     return 2;
   }
   const uint64_t target = argc > 2 ? std::stoull(argv[2]) : 100'000'000ull;
-  AppDirLoad load = load_app_dir(argv[1]);
-  if (!load.ok) {
-    for (const std::string& e : load.errors) std::fprintf(stderr, "soak_bench: %s\n", e.c_str());
+  std::string load_error;
+  std::optional<model::App> app = load_app_dir(argv[1], &load_error);
+  if (!app) {
+    std::fprintf(stderr, "soak_bench: %s\n", load_error.c_str());
     return 2;
   }
   std::vector<std::string> words;
-  for (const model::Event& e : load.app.events) words.push_back(e.name);
+  for (const model::Event& e : app->events) words.push_back(e.name);
   if (words.empty()) words.push_back("x");
   Registry registry;
-  for (const model::Module& m : load.app.modules) {
+  for (const model::Module& m : app->modules) {
     registry.add_module(m.name, [&m, &words] { return std::make_unique<StandIn>(m, words); });
   }
   RunOptions options;
   options.duration = 1e12;
   std::string error;
-  auto rt = Runtime::create(load.app, load.dir, options, &error, registry);
+  auto rt = Runtime::create(*app, argv[1], options, &error, registry);
   if (!rt) {
     std::fprintf(stderr, "soak_bench: %s\n", error.c_str());
     return 2;

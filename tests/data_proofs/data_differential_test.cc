@@ -246,7 +246,7 @@ class NullHost : public MonitorHost {
   void set_event(std::string_view, std::optional<double>) override {}
   void unset_event(std::string_view) override {}
   bool has_event(std::string_view) override { return false; }
-  std::string set_constraint(std::string_view) override { return ""; }
+  bool set_constraint(std::string_view, std::string*) override { return true; }
   std::string get_constraint() override { return "true"; }
   void set_trig_interval(double) override {}
   void print(const std::string&) override {}

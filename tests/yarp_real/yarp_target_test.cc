@@ -75,9 +75,10 @@ class YarpTargetTest : public YarpTest {
         0)
         << slurp(dir_ / "build-yarp.log");
     fs::path app_dir = *fs::directory_iterator(dir_ / "embedded");
-    model::AppLoad load = model::from_app_json(slurp(app_dir / "app.json"));
-    ASSERT_TRUE(load.ok) << load.error;
-    app_ = load.app;
+    std::string error;
+    std::optional<model::App> app = model::from_app_json(slurp(app_dir / "app.json"), &error);
+    ASSERT_TRUE(app) << error;
+    app_ = *app;
     std::string modules = c.plugin.empty() ? " --stub" : " --plugin '" + c.plugin + "'";
     std::string run = arbc + " run '" + app_dir.string() + "'" + modules + " --seed 1 --duration " +
                       c.duration + " --trace '" + (dir_ / "trace.jsonl").string() + "'";

@@ -70,8 +70,9 @@ struct HarnessAccess {
     const char* text = luaL_checkstring(L, 1);
     bool same = false;
     {  // no C++ object may be alive when lua_error longjmps
-      ConstraintParse parsed = parse_constraint(text);
-      same = parsed.ok && parsed.constraint.to_string() == self(L)->constraint_;
+      std::string error;
+      std::optional<Constraint> parsed = parse_constraint(text, &error);
+      same = parsed && parsed->to_string() == self(L)->constraint_;
     }
     if (!same) return luaL_error(L, "setConstraint: not the model's constraint");
     return 0;
@@ -242,14 +243,16 @@ CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {
     if (a.reason.empty()) a.reason = "rejected";
     return a;
   }
-  ConstraintParse parsed = parse_constraint(constraint_.empty() ? "true" : constraint_);
-  if (!parsed.ok) {
+  std::string error;
+  std::optional<Constraint> parsed =
+      parse_constraint(constraint_.empty() ? "true" : constraint_, &error);
+  if (!parsed) {
     a.ok = false;
-    a.error = "bad constraint '" + constraint_ + "': " + parsed.error;
+    a.error = "bad constraint '" + constraint_ + "': " + error;
     return a;
   }
   std::vector<std::string> present = container_->present();
-  if (!evaluate(parsed.constraint, std::set<std::string>(present.begin(), present.end()))) {
+  if (!evaluate(*parsed, std::set<std::string>(present.begin(), present.end()))) {
     a.accepted = false;
     a.reason = "not-selected";
     return a;
