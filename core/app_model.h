@@ -108,7 +108,10 @@ struct Connection {
 // `assert PORT: rule -> property;`
 struct Assertion {
   std::string rule;
-  Constraint property;
+  Constraint property;  // over events; unused (true) when `emitted` is set
+  // Over the delivered value (BodyExpr::Op::Message): the assert is about data
+  // (docs/checks.md#assert-over-data).
+  std::optional<BodyExpr> emitted;
   SourceLocation loc;
 };
 

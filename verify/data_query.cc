@@ -78,25 +78,36 @@ const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   return *rules_.emplace(&c, e).first->second;
 }
 
-// An indicator for "what c delivers satisfies p"; the trackers of p's own one `accept` are
-// asserted, so only the indicator is assumed.
-z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::BodyExpr& p) {
-  auto key = std::make_pair(&c, &p);
+// An indicator for "what c delivers satisfies p" (with `negate`: does not); the trackers of
+// p's own one `accept` are asserted, so only the indicator is assumed.
+z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::BodyExpr& p,
+                                      bool negate) {
+  auto key = std::make_tuple(&c, &p, negate);
   auto it = predicates_.find(key);
   if (it != predicates_.end()) return it->second;
   const Encoded& e = encoded(c);
   z3::expr lit = ctx_.bool_const(
       ("uses!" + c.destination + "/" + c.name + "#" + std::to_string(predicates_.size())).c_str());
-  EncodedBody pe = encode_body(ctx_, predicate_body(p), *e.body.emitted,
-                               c.destination + "/" + c.name + ".emitted");
+  // Each predicate's own prefix: two predicates on one rule must not share fresh constants.
+  EncodedBody pe =
+      encode_body(ctx_, predicate_body(p), *e.body.emitted,
+                  c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()));
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
   if (pe.opaque.empty()) {
-    solver_.add(z3::implies(lit, pe.accepts));
+    solver_.add(z3::implies(lit, negate ? !pe.accepts : pe.accepts));
     for (const z3::expr& x : pe.side) solver_.add(x);
     for (const AcceptTracker& t : pe.trackers) solver_.add(t.literal);
   }
   return predicates_.emplace(key, lit).first->second;
+}
+
+std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
+                                               const model::BodyExpr& p) {
+  const Encoded& e = encoded(c);
+  if (!e.body.opaque.empty()) return e.body.opaque;
+  if (!e.body.emitted) return "it delivers no value";
+  return encode_body(ctx_, predicate_body(p), *e.body.emitted, "opaque?").opaque;
 }
 
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
@@ -135,7 +146,8 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
     }
     predicates.emplace_back();
     if (sides[i].emitted_holds && e.body.emitted) {
-      predicates.back() = predicate_literal(*sides[i].connection, *sides[i].emitted_holds);
+      predicates.back() =
+          predicate_literal(*sides[i].connection, *sides[i].emitted_holds, sides[i].negate);
       assumptions.push_back(*predicates.back());
     }
   }

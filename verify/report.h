@@ -91,8 +91,11 @@ struct ResourceResult {
   std::vector<std::string> ports;
   model::SourceLocation loc;
   Verdict verdict = Verdict::Proved;
-  int pairs = 0;                       // pairs of rules (into different ports) checked
-  std::vector<std::string> proved;     // per pair: why no command of one message / two uses it
+  int pairs = 0;  // pairs of rules (into different ports) checked
+  // Per proved pair, why: never selected in one event state ("exclusive by events"), or no
+  // message (one, or two) makes both deliver a command that uses it ("exclusive by data").
+  std::vector<std::string> exclusive_by_events;
+  std::vector<std::string> exclusive_by_data;
   std::vector<Finding> findings;
   std::string unknown_reason;
 };
@@ -103,6 +106,9 @@ struct VerifyReport {
   std::vector<PortResult> ports;
   std::vector<Finding> app_findings;  // findings not about one arbitrated port
   std::vector<ResourceResult> resources;
+  // What a verdict that used message data assumes (docs/checks.md#message-data); empty when
+  // no data question was asked.
+  std::vector<std::string> assumptions;
   Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;

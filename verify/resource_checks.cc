@@ -103,6 +103,22 @@ class ResourceChecker {
            b.connection->name + "' (into " + res_.ports[b.port] + ")";
   }
 
+  // What an unsat core of one message says: "passes the accept on line 34 of 'take' and makes
+  // 'pull' emit a command that satisfies the resource's `when`".
+  std::string core_text(const ResourceRule& a, const ResourceRule& b, const DataCore& core) const {
+    std::vector<std::string> parts;
+    for (size_t s = 0; s < 2; ++s) {
+      const std::string& name = (s == 0 ? a : b).connection->name;
+      if (!core.accept_lines[s].empty())
+        parts.push_back("passes " + core_lines_text(core.accept_lines[s], name));
+      if (core.predicate_used[s] && res_.uses)
+        parts.push_back("makes '" + name +
+                        "' emit a command that satisfies the resource's `when`");
+    }
+    if (parts.empty()) return "makes both deliver a command that uses it";
+    return join(parts, ", ", " and ");
+  }
+
   void check_pair(const ResourceRule& a, const ResourceRule& b);
   void refuted(const ResourceRule& a, const ResourceRule& b, bool same, const DataWitness& w,
                const std::vector<std::string>& state);
@@ -128,9 +144,10 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
     if (solver.last_answer() == Answer::Unknown)
       return unknown("whether " + pair_name(a, b) + " can be selected together",
                      solver.unknown_reason());
-    out_.proved.push_back(pair_name(a, b) + ": exclusive by events: `" +
-                          a.rule->effective_guard.to_string() + "` and `" +
-                          b.rule->effective_guard.to_string() + "` never hold together");
+    out_.exclusive_by_events.push_back(pair_name(a, b) + ": `" +
+                                       a.rule->effective_guard.to_string() + "` and `" +
+                                       b.rule->effective_guard.to_string() +
+                                       "` never hold together");
     return;
   }
   for (const ResourceRule* r : {&a, &b}) {
@@ -152,18 +169,10 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
   if (ans == Answer::Unknown)
     return unknown("whether " + pair_name(a, b) + " can both use it", data_.unknown_reason());
   if (ans == Answer::Sat) return refuted(a, b, same, w, *state);
-  std::string why = same ? "no " + a.connection->source + " message passes both " +
-                               core_lines_text(core.accept_lines[0], a.connection->name) + " and " +
-                               core_lines_text(core.accept_lines[1], b.connection->name)
+  std::string why = same ? "no " + a.connection->source + " message " + core_text(a, b, core)
                          : "one of them never delivers a command that uses it";
-  std::vector<std::string> by_when;
-  for (size_t s = 0; s < 2; ++s)
-    if (core.predicate_used[s]) by_when.push_back("'" + (s == 0 ? a : b).connection->name + "'");
-  if (!by_when.empty() && res_.uses)
-    why += " with what " + join(by_when, ", ", " and ") + " then emit" +
-           (by_when.size() == 1 ? "s" : "") + " satisfying the resource's `when`";
-  out_.proved.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") + ": " +
-                        why);
+  out_.exclusive_by_data.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") +
+                                   ": " + why);
 }
 
 bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool same,

@@ -76,6 +76,12 @@ golden resource_pull_mutant.txt repo 1 tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.json repo 1 --format json tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.sarif repo 1 --format sarif tests/verify/table_clean_pull_mutant.spec
 golden resource_take_mutant.txt repo 1 tests/verify/table_clean_take_reach_mutant.spec
+# The arm proved: one pair exclusive by data, one by events, each under its own label.
+golden resource_proved.json repo 0 --format json specs/table_clean.spec
+# Asserts over `emitted`: proved, refuted with a replayed message, not provable (opaque).
+golden data_assert.txt repo 1 tests/verify/data_assert.spec
+golden data_assert.json repo 1 --format json tests/verify/data_assert.spec
+golden data_assert.sarif repo 1 --format sarif tests/verify/data_assert.spec
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1
