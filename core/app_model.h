@@ -109,10 +109,10 @@ struct Connection {
 struct Assertion {
   std::string rule;
   Constraint property;  // over events; unused (true) when `emitted` is set
-  // Over the delivered value (BodyExpr::Op::Message): the assert is about data
-  // (docs/checks.md#assert-over-data).
-  std::optional<BodyExpr> emitted;
   SourceLocation loc;
+  // Over the delivered value (BodyExpr::Op::Message): the assert is about data
+  // (docs/checks.md#assert-over-data). Last, so `{rule, property, loc}` still initialises one.
+  std::optional<BodyExpr> emitted;
 };
 
 struct ArbitratedPort {

@@ -29,7 +29,10 @@ bool replay_violation(const model::Connection& c, const model::Assertion& a, con
   std::string err;
   runner->run(c, w.messages[0], &run, &err);
   std::optional<bool> holds = data.holds(*a.emitted, run.delivered, type);
-  if (holds && !*holds) return true;
+  if (holds && !*holds) {
+    ex.replay.push_back("the property is false on what it delivers");
+    return true;
+  }
   *why = "Z3 says '" + c.name + "' delivers a value for which the assert over `emitted` is false, " +
          "but its Lua monitor delivers " + spec_value_text(run.delivered) +
          (holds ? ", for which it holds" : ", on which it cannot be decided");
@@ -57,7 +60,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   std::string opaque = data.predicate_opaque_reason(c, *a.emitted);
   if (!opaque.empty()) {
     Finding f = assert_finding(scope, a);
-    f.message = what + " is not proved: '" + a.rule + "' is opaque for data (" + opaque + ")";
+    f.message = what + " is not proved: it is opaque for data (" + opaque + ")";
     f.notes.push_back({"arbc cannot show what it delivers; an unproved assert never passes", {}});
     out.finding = std::move(f);
     return out;

@@ -104,10 +104,12 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
 
 std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
                                                const model::BodyExpr& p) {
+  std::string rule = opaque_reason(c);  // first: a script rule has no body to encode
+  if (!rule.empty()) return rule;
   const Encoded& e = encoded(c);
-  if (!e.body.opaque.empty()) return e.body.opaque;
   if (!e.body.emitted) return "it delivers no value";
-  return encode_body(ctx_, predicate_body(p), *e.body.emitted, "opaque?").opaque;
+  std::string pred = encode_body(ctx_, predicate_body(p), *e.body.emitted, "opaque?").opaque;
+  return pred.empty() ? "" : "the property uses " + pred;
 }
 
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
