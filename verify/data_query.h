@@ -79,6 +79,7 @@ class DataQuery {
   const SymValue& message(const std::string& source);
   z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
   Answer check(const z3::expr_vector& assumptions);
+  bool arm_timeout();  // false when no time is left
 
   const model::App& app_;
   z3::context& ctx_;
@@ -91,6 +92,8 @@ class DataQuery {
       predicates_;
   std::string unknown_reason_;
   int queries_ = 0;
+  bool timeout_armed_ = false;
+  Clock::time_point timeout_armed_at_;
 };
 
 // A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`.
