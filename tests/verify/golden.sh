@@ -84,6 +84,7 @@ golden data_assert.json repo 1 --format json tests/verify/data_assert.spec
 golden data_assert.sarif repo 1 --format sarif tests/verify/data_assert.spec
 # A body and its Lua monitor that disagree (an arbc bug, simulated): `internal`, also on stderr.
 golden internal_resource.txt repo 1 tests/verify/internal_resource/app.json
+golden internal_assert.txt repo 1 tests/verify/internal_assert/app.json
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1
