@@ -128,8 +128,7 @@ bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapE
 }
 
 // `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded (nullopt).
-bool read_body(const Json& j, const std::string& path, std::optional<Body>* out,
-               std::string* err) {
+bool read_body(const Json& j, const std::string& path, std::optional<Body>* out, std::string* err) {
   if (!j.contains("body")) return true;
   const Json* arr = array_member(j, path, "body", err);
   if (!arr) return false;

@@ -33,7 +33,8 @@ bool replay_violation(const model::Connection& c, const model::Assertion& a, con
     ex.replay.push_back("the property is false on what it delivers");
     return true;
   }
-  *why = "Z3 says '" + c.name + "' delivers a value for which the assert over `emitted` is false, " +
+  *why = "Z3 says '" + c.name +
+         "' delivers a value for which the assert over `emitted` is false, " +
          "but its Lua monitor delivers " + spec_value_text(run.delivered) +
          (holds ? ", for which it holds" : ", on which it cannot be decided");
   return false;
@@ -42,8 +43,8 @@ bool replay_violation(const model::Connection& c, const model::Assertion& a, con
 }  // namespace
 
 DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
-                                    const model::Assertion& a, PortSolver& solver,
-                                    DataQuery& data, const MonitorRunner* runner) {
+                                    const model::Assertion& a, PortSolver& solver, DataQuery& data,
+                                    const MonitorRunner* runner) {
   DataAssertOutcome out;
   const ScopedRule& rule = scope.rules[static_cast<size_t>(rule_index)];
   const model::Connection& c = *rule.connection;
@@ -74,8 +75,8 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   }
   if (ans == Answer::Unsat) return out;
   Finding f = assert_finding(scope, a);
-  f.message = what + " can fail: '" + a.rule +
-              "' can deliver a value for which the property is false";
+  f.message =
+      what + " can fail: '" + a.rule + "' can deliver a value for which the property is false";
   f.counterexample = EventState{*present, {}};
   for (const std::string& e : scope.events)
     if (std::find(present->begin(), present->end(), e) == present->end())
@@ -99,8 +100,8 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
     std::string why;
     const model::Port* port = data.app().find_port(scope.port->port);
     if (!port || !replay_violation(c, a, *port->type, w, data, runner, ex, &why)) {
-      out.finding = internal_data_error(scope.port->port, a.loc,
-                                        port ? why : "the port's type is unknown");
+      out.finding =
+          internal_data_error(scope.port->port, a.loc, port ? why : "the port's type is unknown");
       return out;
     }
     f.notes.push_back({"replayed through the Lua monitors: " + join(ex.replay, "; "), {}});
@@ -108,9 +109,9 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
     f.notes.push_back({"not replayed (no monitor runner)", {}});
   }
   f.messages.push_back(std::move(ex));
-  f.notes.push_back({"add an `accept` to '" + a.rule +
-                         "' that rules such messages out, or correct what it emits",
-                     {}});
+  f.notes.push_back(
+      {"add an `accept` to '" + a.rule + "' that rules such messages out, or correct what it emits",
+       {}});
   out.finding = std::move(f);
   return out;
 }

@@ -22,7 +22,7 @@ struct DataAssertOutcome {
 
 // `rule` is the assert's rule, index `rule_index` in `solver`'s port scope.
 DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
-                                    const model::Assertion& a, PortSolver& solver,
-                                    DataQuery& data, const MonitorRunner* runner);
+                                    const model::Assertion& a, PortSolver& solver, DataQuery& data,
+                                    const MonitorRunner* runner);
 
 }  // namespace arbc::verify

@@ -1,5 +1,5 @@
-// Questions about message data (docs/checks.md#message-data): can these rules accept the same message
-// (or independent messages), with what they emit satisfying given predicates? One Z3 query
+// Questions about message data (docs/checks.md#message-data): can these rules accept the same
+// message (or independent messages), with what they emit satisfying given predicates? One Z3 query
 // over the encoded bodies (verify/body_encoding.h), in the theories of the data (linear and
 // nonlinear real and integer arithmetic, strings, bounded lists).
 #pragma once

@@ -43,8 +43,8 @@ struct Note {
 // A concrete message that shows a data finding (docs/checks.md#message-data), in spec syntax, and
 // what the runtime's Lua monitors did with it when it was replayed.
 struct MessageExample {
-  std::string source;  // "ObjectDetector.objects"
-  std::string value;   // `[{ dist: 0.3, pos: vec3(0, 0, 0) }]`
+  std::string source;               // "ObjectDetector.objects"
+  std::string value;                // `[{ dist: 0.3, pos: vec3(0, 0, 0) }]`
   std::vector<std::string> replay;  // one line per rule: "'take' accepts and delivers ..."
 };
 
@@ -58,8 +58,8 @@ struct Finding {
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
   std::vector<MessageExample> messages;  // data findings: the message(s) that show it
-  std::vector<Note> notes;  // why each side holds, what to do
-  bool strict = false;      // a warning (dead, unused) that --strict made an error
+  std::vector<Note> notes;               // why each side holds, what to do
+  bool strict = false;                   // a warning (dead, unused) that --strict made an error
 };
 
 // The outcome for one arbitrated port.

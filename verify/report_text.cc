@@ -143,7 +143,8 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
       out += resource_lines(res);
       for (const Finding& f : res.findings) out += render(to_diagnostic(f), sources);
     }
-    if (!r.assumptions.empty()) out += "  message data assumed: " + join(r.assumptions, "; ") + "\n";
+    if (!r.assumptions.empty())
+      out += "  message data assumed: " + join(r.assumptions, "; ") + "\n";
     errors += static_cast<size_t>(r.count(Severity::Error));
     warnings += static_cast<size_t>(r.count(Severity::Warning));
     refuted |= r.verdict == Verdict::Refuted;

@@ -47,7 +47,7 @@ PortScope joint_scope(const PortScope& a, const PortScope& b) {
 struct PortPair {
   PortScope scope;
   std::unique_ptr<PortSolver> solver;
-  int first_rules = 0;                       // rules of the first port (joint indices below)
+  int first_rules = 0;                        // rules of the first port (joint indices below)
   std::set<std::pair<int, int>> overlapping;  // pairs selected together in some state
   bool undecided = false;                     // the solver gave no answer: every pair may overlap
 };
@@ -126,18 +126,16 @@ class ResourceChecker {
       if (!core.accept_lines[s].empty())
         parts.push_back("passes " + core_lines_text(core.accept_lines[s], name));
       if (core.predicate_used[s] && res_.uses)
-        parts.push_back("makes '" + name +
-                        "' emit a command that satisfies the resource's `when`");
+        parts.push_back("makes '" + name + "' emit a command that satisfies the resource's `when`");
     }
     if (parts.empty()) return "makes both deliver a command that uses it";
     return join(parts, ", ", " and ");
   }
 
   void by_events(const ResourceRule& a, const ResourceRule& b) {
-    out_.exclusive_by_events.push_back(pair_name(a, b) + ": `" +
-                                       a.rule->effective_guard.to_string() + "` and `" +
-                                       b.rule->effective_guard.to_string() +
-                                       "` never hold together");
+    out_.exclusive_by_events.push_back(
+        pair_name(a, b) + ": `" + a.rule->effective_guard.to_string() + "` and `" +
+        b.rule->effective_guard.to_string() + "` never hold together");
   }
 
   PortPair& port_pair(const ResourceRule& a, const ResourceRule& b);
@@ -212,8 +210,7 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
     std::optional<std::vector<std::string>> state = pp.solver->minimal_state({ia, ib}, {});
     if (state) return refuted(a, b, same, w, *state);
     if (pp.solver->last_answer() == Answer::Unknown)
-      return unknown("an event state that selects " + pair_name(a, b),
-                     pp.solver->unknown_reason());
+      return unknown("an event state that selects " + pair_name(a, b), pp.solver->unknown_reason());
     // Only when the overlapping pairs were undecided: the pair is exclusive by events after all.
     by_events(a, b);
     return;

@@ -1,6 +1,7 @@
-// Sema of `resource NAME { M.p, ... } [when PRED];` (docs/language.md#resource-name--mp-nq---when-predicate): at least two
-// distinct arbitrated `in` ports of one type, a unique name, and a bool predicate over the
-// delivered value, bound to `emitted`.
+// Sema of `resource NAME { M.p, ... } [when PRED];`
+// (docs/language.md#resource-name--mp-nq---when-predicate): at least two distinct arbitrated `in`
+// ports of one type, a unique name, and a bool predicate over the delivered value, bound to
+// `emitted`.
 #include <set>
 
 #include "compiler/frontend/sema_context.h"
