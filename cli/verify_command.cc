@@ -111,14 +111,15 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
 
 // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
 void print_internal_errors(const std::vector<verify::InputReport>& reports) {
+  auto print = [](const std::vector<verify::Finding>& findings) {
+    for (const verify::Finding& f : findings)
+      if (f.check == verify::kCheckInternal)
+        std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
+  };
   for (const verify::InputReport& r : reports) {
-    for (const verify::PortResult& p : r.report.ports) {
-      for (const verify::Finding& f : p.findings) {
-        if (f.check == verify::kCheckInternal) {
-          std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
-        }
-      }
-    }
+    for (const verify::PortResult& p : r.report.ports) print(p.findings);
+    for (const verify::ResourceResult& res : r.report.resources) print(res.findings);
+    print(r.report.app_findings);
   }
 }
 

@@ -128,8 +128,7 @@ bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapE
 }
 
 // `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded (nullopt).
-bool read_body(const Json& j, const std::string& path, std::optional<Body>* out,
-               std::string* err) {
+bool read_body(const Json& j, const std::string& path, std::optional<Body>* out, std::string* err) {
   if (!j.contains("body")) return true;
   const Json* arr = array_member(j, path, "body", err);
   if (!arr) return false;
@@ -256,9 +255,18 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          read_location(j, p, &c->loc, err);
 }
 
+// An assertion: over events (`property`), or over data with `emitted` (core/body_text.h).
 bool read_assertion(const Json& j, const std::string& p, Assertion* a, std::string* err) {
-  return get_string(j, p, "rule", &a->rule, err) &&
-         read_constraint(j, p, "property", &a->property, err) && read_location(j, p, &a->loc, err);
+  if (!get_string(j, p, "rule", &a->rule, err) ||
+      !read_constraint(j, p, "property", &a->property, err))
+    return false;
+  if (j.contains("emitted")) {
+    std::string text, error;
+    if (!get_string(j, p, "emitted", &text, err)) return false;
+    a->emitted = parse_body_expr(text, &error);
+    if (!a->emitted) return fail(p + ".emitted: " + error, err);
+  }
+  return read_location(j, p, &a->loc, err);
 }
 
 bool read_arbitrated_port(const Json& j, const std::string& p, ArbitratedPort* a,

@@ -36,7 +36,7 @@ App small_app() {
   ArbitratedPort port;
   port.port = "H.gaze";
   port.rules = {"track"};
-  port.asserts.push_back({"track", parse_constraint("e_face").constraint, {"demo.spec", 9, 1}});
+  port.asserts.push_back({"track", parse_constraint("e_face").constraint, {"demo.spec", 9, 1}, {}});
   app.arbitrated_ports.push_back(port);
   app.exclusive_groups.push_back({{"e_face", "e_face_2"}, {}});
   app.invariants.push_back({parse_constraint("e_face or not e_face_2").constraint, {}});

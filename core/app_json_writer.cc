@@ -113,6 +113,7 @@ void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
     w.begin_object();
     w.member("rule", as.rule);
     write_constraint(w, "property", as.property);
+    if (as.emitted) w.member("emitted", body_expr_text(*as.emitted));
     write_location(w, as.loc);
     w.end_object();
   }

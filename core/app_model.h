@@ -90,7 +90,7 @@ struct Connection {
   // so it is not in must_set, but the effective guard includes it (core/effective_guard.h).
   // Also listed in `sets`: the connection owns its entries. Empty: none.
   std::string activity_event;
-  bool opaque = false;                  // a `script` rule: its code is not analysed
+  bool opaque = false;  // a `script` rule: its code is not analysed
   // The generated monitor's body, for proofs over message data (core/body.h). nullopt: not
   // recorded (a script, a feed, an app.json written before bodies were): opaque for data.
   std::optional<Body> body;
@@ -108,8 +108,11 @@ struct Connection {
 // `assert PORT: rule -> property;`
 struct Assertion {
   std::string rule;
-  Constraint property;
+  Constraint property;  // over events; unused (true) when `emitted` is set
   SourceLocation loc;
+  // Over the delivered value (BodyExpr::Op::Message): the assert is about data
+  // (docs/checks.md#assert-over-data). Last, so `{rule, property, loc}` still initialises one.
+  std::optional<BodyExpr> emitted;
 };
 
 struct ArbitratedPort {

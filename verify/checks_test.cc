@@ -169,7 +169,7 @@ TEST(Checks, UnfedIsNotReportedWhenAScriptRuleMaySetTheEvent) {
 
 TEST(Checks, UnfedWhenOnlyAnAssertReadsTheEvent) {
   model::App app = testing::table_clean_model();
-  arbitrated(app, "PullObject.cmd").asserts.push_back({"pull", parse("e_pull_idle"), {}});
+  arbitrated(app, "PullObject.cmd").asserts.push_back({"pull", parse("e_pull_idle"), {}, {}});
   VerifyReport report = run(app);  // findings() points into the report: keep it alive
   auto unfed = findings(report, "unfed");
   ASSERT_EQ(unfed.size(), 1u);
@@ -330,7 +330,7 @@ TEST(Checks, MalformedModelIsBadInput) {
   EXPECT_FALSE(verify_app(app, {}, &error));
   EXPECT_THAT(error, HasSubstr("names rule 'drop'"));
   app = testing::table_clean_model();
-  arbitrated(app, "PickAndPlace.cmd").asserts.push_back({"pull", parse("e_taken"), {}});
+  arbitrated(app, "PickAndPlace.cmd").asserts.push_back({"pull", parse("e_taken"), {}, {}});
   error.clear();
   EXPECT_FALSE(verify_app(app, {}, &error));
   EXPECT_THAT(error, HasSubstr("names rule 'pull'"));

@@ -66,8 +66,7 @@ DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const m
   Answer ans = data.ask({{&a, nullptr}, {&b, nullptr}}, &w, &core);
   if (ans == Answer::Unknown) {
     d.kind = DataPair::Kind::Unknown;
-    d.text = "whether '" + a.name + "' and '" + b.name + "' can accept the same message (" +
-             data.unknown_reason() + ")";
+    d.text = "whether '" + a.name + "' and '" + b.name + "' can accept the same message";
     return d;
   }
   if (ans == Answer::Unsat) {

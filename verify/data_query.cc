@@ -10,14 +10,6 @@ namespace arbc::verify {
 
 namespace {
 
-// Sets the solver's timeout to the time left; false when none is left.
-bool set_timeout(z3::solver& s, Clock::time_point deadline) {
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-  if (left.count() <= 0) return false;
-  s.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
-  return true;
-}
-
 // The predicate over a delivered value, as a one-statement body `accept P` on that value.
 model::Body predicate_body(const model::BodyExpr& p) {
   model::BodyStmt s;
@@ -78,30 +70,58 @@ const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   return *rules_.emplace(&c, e).first->second;
 }
 
-// An indicator for "what c delivers satisfies p"; the trackers of p's own one `accept` are
-// asserted, so only the indicator is assumed.
-z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::BodyExpr& p) {
-  auto key = std::make_pair(&c, &p);
+// An indicator for "what c delivers satisfies p" (with `negate`: does not); the trackers of
+// p's own one `accept` are asserted, so only the indicator is assumed.
+z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::BodyExpr& p,
+                                      bool negate) {
+  auto key = std::make_tuple(&c, &p, negate);
   auto it = predicates_.find(key);
   if (it != predicates_.end()) return it->second;
   const Encoded& e = encoded(c);
   z3::expr lit = ctx_.bool_const(
       ("uses!" + c.destination + "/" + c.name + "#" + std::to_string(predicates_.size())).c_str());
-  EncodedBody pe = encode_body(ctx_, predicate_body(p), *e.body.emitted,
-                               c.destination + "/" + c.name + ".emitted");
+  // Each predicate's own prefix: two predicates on one rule must not share fresh constants.
+  EncodedBody pe =
+      encode_body(ctx_, predicate_body(p), *e.body.emitted,
+                  c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()));
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
   if (pe.opaque.empty()) {
-    solver_.add(z3::implies(lit, pe.accepts));
+    solver_.add(z3::implies(lit, negate ? !pe.accepts : pe.accepts));
     for (const z3::expr& x : pe.side) solver_.add(x);
     for (const AcceptTracker& t : pe.trackers) solver_.add(t.literal);
   }
   return predicates_.emplace(key, lit).first->second;
 }
 
+std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
+                                               const model::BodyExpr& p) {
+  std::string rule = opaque_reason(c);  // first: a script rule has no body to encode
+  if (!rule.empty()) return rule;
+  const Encoded& e = encoded(c);
+  if (!e.body.emitted) return "it delivers no value";
+  std::string pred = encode_body(ctx_, predicate_body(p), *e.body.emitted, "opaque?").opaque;
+  return pred.empty() ? "" : "the property uses " + pred;
+}
+
+// Z3 reads and writes solver parameters under a global lock: setting the timeout before each of
+// thousands of small queries cost more than the queries (a resource over 100 rules). It is set
+// again only after kRearm, so a query overruns the deadline by at most that.
+bool DataQuery::arm_timeout() {
+  constexpr auto kRearm = std::chrono::milliseconds(50);
+  Clock::time_point now = Clock::now();
+  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - now);
+  if (left.count() <= 0) return false;
+  if (timeout_armed_ && now - timeout_armed_at_ < kRearm) return true;
+  solver_.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
+  timeout_armed_ = true;
+  timeout_armed_at_ = now;
+  return true;
+}
+
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
   ++queries_;
-  if (!set_timeout(solver_, deadline_)) {
+  if (!arm_timeout()) {
     unknown_reason_ = "timeout";
     return Answer::Unknown;
   }
@@ -135,7 +155,8 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
     }
     predicates.emplace_back();
     if (sides[i].emitted_holds && e.body.emitted) {
-      predicates.back() = predicate_literal(*sides[i].connection, *sides[i].emitted_holds);
+      predicates.back() =
+          predicate_literal(*sides[i].connection, *sides[i].emitted_holds, sides[i].negate);
       assumptions.push_back(*predicates.back());
     }
   }

@@ -1,5 +1,5 @@
-// Questions about message data (docs/checks.md#message-data): can these rules accept the same message
-// (or independent messages), with what they emit satisfying given predicates? One Z3 query
+// Questions about message data (docs/checks.md#message-data): can these rules accept the same
+// message (or independent messages), with what they emit satisfying given predicates? One Z3 query
 // over the encoded bodies (verify/body_encoding.h), in the theories of the data (linear and
 // nonlinear real and integer arithmetic, strings, bounded lists).
 #pragma once
@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/app_model.h"
@@ -28,6 +29,9 @@ inline constexpr int kDefaultListBound = 4;
 struct DataSide {
   const model::Connection* connection = nullptr;
   const model::BodyExpr* emitted_holds = nullptr;
+  // Ask instead that the predicate does NOT hold: false, or reading a value that does not
+  // exist (an assert over data fails then too).
+  bool negate = false;
 };
 
 struct DataWitness {
@@ -55,6 +59,9 @@ class DataQuery {
   // Why the connection's body is opaque for data ("" when it can be encoded).
   std::string opaque_reason(const model::Connection& c);
 
+  // Why `p` over what `c` delivers cannot be encoded ("" when it can, and c can).
+  std::string predicate_opaque_reason(const model::Connection& c, const model::BodyExpr& p);
+
   // Sat: a witness; Unsat: the core. Every side must be encodable (opaque_reason empty).
   Answer ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core);
 
@@ -63,14 +70,16 @@ class DataQuery {
   std::optional<bool> holds(const model::BodyExpr& predicate, const Value& value, const Type& t);
 
   std::string unknown_reason() const { return unknown_reason_; }
+  const model::App& app() const { return app_; }
   int queries() const { return queries_; }
 
  private:
   struct Encoded;  // a rule's encoding (data_query.cc)
   const Encoded& encoded(const model::Connection& c);
   const SymValue& message(const std::string& source);
-  z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p);
+  z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
   Answer check(const z3::expr_vector& assumptions);
+  bool arm_timeout();  // false when no time is left
 
   const model::App& app_;
   z3::context& ctx_;
@@ -79,9 +88,12 @@ class DataQuery {
   z3::solver solver_;
   std::map<std::string, SymValue> messages_;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
-  std::map<std::pair<const model::Connection*, const model::BodyExpr*>, z3::expr> predicates_;
+  std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>
+      predicates_;
   std::string unknown_reason_;
   int queries_ = 0;
+  bool timeout_armed_ = false;
+  Clock::time_point timeout_armed_at_;
 };
 
 // A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`.

@@ -98,7 +98,7 @@ model::App random_app(Generator& g) {
     if (group.size() >= 2) app.exclusive_groups.push_back({group, {}});
   }
   for (int i = 0, k = g.below(3); i < k; ++i) {
-    port.asserts.push_back({port.rules[static_cast<size_t>(g.below(m))], g.formula(n, 2), {}});
+    port.asserts.push_back({port.rules[static_cast<size_t>(g.below(m))], g.formula(n, 2), {}, {}});
   }
   app.arbitrated_ports.push_back(std::move(port));
   return app;

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/join.h"
+#include "verify/data_assert.h"
 #include "verify/data_pair.h"
 #include "verify/replay.h"
 
@@ -90,16 +91,16 @@ class PortChecker {
     return -1;
   }
 
-  void unknown(const std::string& what) {
+  void unknown(const std::string& what, const std::string& reason = "") {
     if (!result_.unknown_reason.empty()) return;  // one unknown finding per port is enough
-    result_.unknown_reason = solver_.unknown_reason();
+    result_.unknown_reason = reason.empty() ? solver_.unknown_reason() : reason;
     Finding f;
     f.check = kCheckUnknown;
     f.severity = Severity::Error;
     f.port = scope_.port->port;
     f.loc = scope_.port->loc;
     f.message = "could not decide " + what + " for " + scope_.port->port + " (" +
-                solver_.unknown_reason() + "); an unknown verdict never passes";
+                result_.unknown_reason + "); an unknown verdict never passes";
     f.notes.push_back({"raise --timeout, or split the port's rules", {}});
     result_.findings.push_back(std::move(f));
   }
@@ -223,7 +224,7 @@ class PortChecker {
           result_.exclusive_by_data.push_back(d.text);
           continue;
         case DataPair::Kind::Unknown:
-          unknown(d.text);
+          unknown(d.text, data_.unknown_reason());
           continue;
         case DataPair::Kind::Internal:
           result_.findings.push_back(internal_data_error(scope_.port->port, a.loc, d.text));
@@ -272,6 +273,12 @@ class PortChecker {
 
   void check_assert(const model::Assertion& a) {
     int r = rule_index(a.rule);
+    if (a.emitted) {  // over data (verify/data_assert.h)
+      DataAssertOutcome d = check_data_assert(scope_, r, a, solver_, data_, options_.runner);
+      if (!d.unknown.empty()) unknown(d.unknown, d.unknown_reason);
+      if (d.finding) result_.findings.push_back(std::move(*d.finding));
+      return;
+    }
     std::optional<std::vector<std::string>> present = solver_.minimal_state({r}, {}, &a.property);
     if (!present) {
       if (solver_.last_answer() == Answer::Unknown) unknown("the assert on '" + a.rule + "'");

@@ -43,8 +43,8 @@ struct Note {
 // A concrete message that shows a data finding (docs/checks.md#message-data), in spec syntax, and
 // what the runtime's Lua monitors did with it when it was replayed.
 struct MessageExample {
-  std::string source;  // "ObjectDetector.objects"
-  std::string value;   // `[{ dist: 0.3, pos: vec3(0, 0, 0) }]`
+  std::string source;               // "ObjectDetector.objects"
+  std::string value;                // `[{ dist: 0.3, pos: vec3(0, 0, 0) }]`
   std::vector<std::string> replay;  // one line per rule: "'take' accepts and delivers ..."
 };
 
@@ -58,8 +58,8 @@ struct Finding {
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
   std::vector<MessageExample> messages;  // data findings: the message(s) that show it
-  std::vector<Note> notes;  // why each side holds, what to do
-  bool strict = false;      // a warning (dead, unused) that --strict made an error
+  std::vector<Note> notes;               // why each side holds, what to do
+  bool strict = false;                   // a warning (dead, unused) that --strict made an error
 };
 
 // The outcome for one arbitrated port.
@@ -91,8 +91,11 @@ struct ResourceResult {
   std::vector<std::string> ports;
   model::SourceLocation loc;
   Verdict verdict = Verdict::Proved;
-  int pairs = 0;                       // pairs of rules (into different ports) checked
-  std::vector<std::string> proved;     // per pair: why no command of one message / two uses it
+  int pairs = 0;  // pairs of rules (into different ports) checked
+  // Per proved pair, why: never selected in one event state ("exclusive by events"), or no
+  // message (one, or two) makes both deliver a command that uses it ("exclusive by data").
+  std::vector<std::string> exclusive_by_events;
+  std::vector<std::string> exclusive_by_data;
   std::vector<Finding> findings;
   std::string unknown_reason;
 };
@@ -103,6 +106,9 @@ struct VerifyReport {
   std::vector<PortResult> ports;
   std::vector<Finding> app_findings;  // findings not about one arbitrated port
   std::vector<ResourceResult> resources;
+  // What a verdict that used message data assumes (docs/checks.md#message-data); empty when
+  // no data question was asked.
+  std::vector<std::string> assumptions;
   Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;

@@ -135,7 +135,8 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         rj["ports"] = res.ports;
         rj["location"] = location_json(res.loc);
         rj["pairs"] = res.pairs;
-        rj["exclusive_by_data"] = res.proved;
+        rj["exclusive_by_events"] = res.exclusive_by_events;
+        rj["exclusive_by_data"] = res.exclusive_by_data;
         rj["unknown_reason"] =
             res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
         rj["findings"] = Json::array();
@@ -143,6 +144,7 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         j["resources"].push_back(std::move(rj));
       }
     }
+    if (!r.assumptions.empty()) j["assumptions"] = r.assumptions;
     j["diagnostics"] = Json::array();
     j["errors"] = r.count(Severity::Error);
     j["warnings"] = r.count(Severity::Warning);

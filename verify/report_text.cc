@@ -87,7 +87,8 @@ std::string resource_lines(const ResourceResult& r) {
     line += ": " + plural(errors, "error");
   }
   line += "\n";
-  for (const std::string& p : r.proved) line += "    exclusive by data: " + p + "\n";
+  for (const std::string& p : r.exclusive_by_events) line += "    exclusive by events: " + p + "\n";
+  for (const std::string& p : r.exclusive_by_data) line += "    exclusive by data: " + p + "\n";
   return line;
 }
 
@@ -142,6 +143,8 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
       out += resource_lines(res);
       for (const Finding& f : res.findings) out += render(to_diagnostic(f), sources);
     }
+    if (!r.assumptions.empty())
+      out += "  message data assumed: " + join(r.assumptions, "; ") + "\n";
     errors += static_cast<size_t>(r.count(Severity::Error));
     warnings += static_cast<size_t>(r.count(Severity::Warning));
     refuted |= r.verdict == Verdict::Refuted;

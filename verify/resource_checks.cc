@@ -1,8 +1,10 @@
 #include "verify/resource_checks.h"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "core/join.h"
 #include "verify/data_pair.h"
@@ -17,26 +19,38 @@ struct ResourceRule {
   size_t port = 0;  // index into the resource's ports
   const PortScope* scope = nullptr;
   const ScopedRule* rule = nullptr;
+  int index = 0;  // in its port's scope
 };
 
-// The two rules' effective guards over one event state: the union of both ports' scopes and
-// domains (an event name is one fact for the resource, docs/checks.md#resource).
-PortScope joint_scope(const ResourceRule& a, const ResourceRule& b) {
+// Two ports' rules over one event state: the union of both scopes and domains (an event name is
+// one fact for the resource, docs/checks.md#resource). Rules: the first port's, then the second's.
+PortScope joint_scope(const PortScope& a, const PortScope& b) {
   PortScope j;
-  j.port = a.scope->port;
-  j.rules = {*a.rule, *b.rule};
-  j.events = a.scope->events;
-  j.events.insert(j.events.end(), b.scope->events.begin(), b.scope->events.end());
+  j.port = a.port;
+  j.rules = a.rules;
+  j.rules.insert(j.rules.end(), b.rules.begin(), b.rules.end());
+  j.events = a.events;
+  j.events.insert(j.events.end(), b.events.begin(), b.events.end());
   std::sort(j.events.begin(), j.events.end());
   j.events.erase(std::unique(j.events.begin(), j.events.end()), j.events.end());
-  j.domain = a.scope->domain;
-  for (const DomainConstraint& d : b.scope->domain) {
+  j.domain = a.domain;
+  for (const DomainConstraint& d : b.domain) {
     bool known = false;
     for (const DomainConstraint& e : j.domain) known |= e.text == d.text;
     if (!known) j.domain.push_back(d);
   }
   return j;
 }
+
+// The event side of every pair of rules of two ports, decided by one solver over their joint
+// scope: a few queries for all pairs, where one solver per pair of rules cost milliseconds each.
+struct PortPair {
+  PortScope scope;
+  std::unique_ptr<PortSolver> solver;
+  int first_rules = 0;                        // rules of the first port (joint indices below)
+  std::set<std::pair<int, int>> overlapping;  // pairs selected together in some state
+  bool undecided = false;                     // the solver gave no answer: every pair may overlap
+};
 
 class ResourceChecker {
  public:
@@ -68,14 +82,14 @@ class ResourceChecker {
                                                   : Verdict::Proved;
   }
 
- private:
   // The rules into the resource's ports.
   std::vector<ResourceRule> resource_rules() {
     std::vector<ResourceRule> out;
     for (size_t p = 0; p < res_.ports.size(); ++p) {
       for (const PortScope& s : scopes_) {
         if (s.port->port != res_.ports[p]) continue;
-        for (const ScopedRule& r : s.rules) out.push_back({r.connection, p, &s, &r});
+        for (const ScopedRule& r : s.rules)
+          out.push_back({r.connection, p, &s, &r, static_cast<int>(&r - s.rules.data())});
       }
     }
     return out;
@@ -103,6 +117,28 @@ class ResourceChecker {
            b.connection->name + "' (into " + res_.ports[b.port] + ")";
   }
 
+  // What an unsat core of one message says: "passes the accept on line 34 of 'take' and makes
+  // 'pull' emit a command that satisfies the resource's `when`".
+  std::string core_text(const ResourceRule& a, const ResourceRule& b, const DataCore& core) const {
+    std::vector<std::string> parts;
+    for (size_t s = 0; s < 2; ++s) {
+      const std::string& name = (s == 0 ? a : b).connection->name;
+      if (!core.accept_lines[s].empty())
+        parts.push_back("passes " + core_lines_text(core.accept_lines[s], name));
+      if (core.predicate_used[s] && res_.uses)
+        parts.push_back("makes '" + name + "' emit a command that satisfies the resource's `when`");
+    }
+    if (parts.empty()) return "makes both deliver a command that uses it";
+    return join(parts, ", ", " and ");
+  }
+
+  void by_events(const ResourceRule& a, const ResourceRule& b) {
+    out_.exclusive_by_events.push_back(
+        pair_name(a, b) + ": `" + a.rule->effective_guard.to_string() + "` and `" +
+        b.rule->effective_guard.to_string() + "` never hold together");
+  }
+
+  PortPair& port_pair(const ResourceRule& a, const ResourceRule& b);
   void check_pair(const ResourceRule& a, const ResourceRule& b);
   void refuted(const ResourceRule& a, const ResourceRule& b, bool same, const DataWitness& w,
                const std::vector<std::string>& state);
@@ -117,20 +153,38 @@ class ResourceChecker {
   DataQuery& data_;
   const model::Resource& res_;
   ResourceResult& out_;
+  std::map<std::pair<size_t, size_t>, PortPair> port_pairs_;  // by the two ports' indices
 };
+
+// The pair of `a`'s and `b`'s ports (a.port < b.port), its overlapping pairs found on first use.
+PortPair& ResourceChecker::port_pair(const ResourceRule& a, const ResourceRule& b) {
+  auto [it, fresh] = port_pairs_.try_emplace({a.port, b.port});
+  PortPair& pp = it->second;
+  if (!fresh) return pp;
+  pp.scope = joint_scope(*a.scope, *b.scope);
+  pp.first_rules = static_cast<int>(a.scope->rules.size());
+  pp.solver = std::make_unique<PortSolver>(pp.scope, ctx_, deadline_);
+  const int n = pp.first_rules;
+  std::vector<std::pair<int, int>> pairs;
+  // Pairs within one port are the port's own check, not the resource's.
+  Answer ans = pp.solver->overlapping_pairs(
+      [n](int i, int j) { return (i < n) == (j < n) ? Known::No : Known::Unknown; }, pairs);
+  pp.overlapping.insert(pairs.begin(), pairs.end());
+  if (ans == Answer::Unknown) {
+    pp.undecided = true;
+    unknown("which rules of " + res_.ports[a.port] + " and " + res_.ports[b.port] +
+                " can be selected together",
+            pp.solver->unknown_reason());
+  }
+  return pp;
+}
 
 void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
   ++out_.pairs;
-  PortScope joint = joint_scope(a, b);
-  PortSolver solver(joint, ctx_, deadline_);
-  std::optional<std::vector<std::string>> state = solver.minimal_state({0, 1}, {});
-  if (!state) {
-    if (solver.last_answer() == Answer::Unknown)
-      return unknown("whether " + pair_name(a, b) + " can be selected together",
-                     solver.unknown_reason());
-    out_.proved.push_back(pair_name(a, b) + ": exclusive by events: `" +
-                          a.rule->effective_guard.to_string() + "` and `" +
-                          b.rule->effective_guard.to_string() + "` never hold together");
+  PortPair& pp = port_pair(a, b);
+  const int ia = a.index, ib = pp.first_rules + b.index;
+  if (!pp.undecided && !pp.overlapping.count({ia, ib})) {
+    by_events(a, b);
     return;
   }
   for (const ResourceRule* r : {&a, &b}) {
@@ -151,19 +205,20 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
   Answer ans = data_.ask({{a.connection, uses}, {b.connection, uses}}, &w, &core);
   if (ans == Answer::Unknown)
     return unknown("whether " + pair_name(a, b) + " can both use it", data_.unknown_reason());
-  if (ans == Answer::Sat) return refuted(a, b, same, w, *state);
-  std::string why = same ? "no " + a.connection->source + " message passes both " +
-                               core_lines_text(core.accept_lines[0], a.connection->name) + " and " +
-                               core_lines_text(core.accept_lines[1], b.connection->name)
+  if (ans == Answer::Sat) {
+    // The state is needed only now: a minimal one costs a query per event it drops.
+    std::optional<std::vector<std::string>> state = pp.solver->minimal_state({ia, ib}, {});
+    if (state) return refuted(a, b, same, w, *state);
+    if (pp.solver->last_answer() == Answer::Unknown)
+      return unknown("an event state that selects " + pair_name(a, b), pp.solver->unknown_reason());
+    // Only when the overlapping pairs were undecided: the pair is exclusive by events after all.
+    by_events(a, b);
+    return;
+  }
+  std::string why = same ? "no " + a.connection->source + " message " + core_text(a, b, core)
                          : "one of them never delivers a command that uses it";
-  std::vector<std::string> by_when;
-  for (size_t s = 0; s < 2; ++s)
-    if (core.predicate_used[s]) by_when.push_back("'" + (s == 0 ? a : b).connection->name + "'");
-  if (!by_when.empty() && res_.uses)
-    why += " with what " + join(by_when, ", ", " and ") + " then emit" +
-           (by_when.size() == 1 ? "s" : "") + " satisfying the resource's `when`";
-  out_.proved.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") + ": " +
-                        why);
+  out_.exclusive_by_data.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") +
+                                   ": " + why);
 }
 
 bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool same,

@@ -1,7 +1,7 @@
 // `resource` checks (docs/checks.md#resource): for every pair of rules into two different
 // ports of a resource, no message (same source) or pair of messages (different sources) makes
-// both deliver a command that uses the resource. Event containers are per port, so the two
-// ports' event states are independent: each rule only has to be selectable (not dead).
+// both deliver a command that uses the resource, in any one event state (an event name is one
+// fact over the two ports' joint scope: docs/design.md#the-proof).
 #pragma once
 
 #include <z3++.h>

@@ -167,9 +167,9 @@ model::App table_clean_model() {
       feed("FaceDetector.face", "Speak.text", {"e_face_detected"}, at(28, 1, 5)));
 
   model::ArbitratedPort pick = arbitrated_port("PickAndPlace.cmd", {"take", "put"}, at(30, 11, 16));
-  pick.asserts = {{"take", parse("not e_taken"), at(67, 1, 6)},
-                  {"take", parse("e_pull_idle"), at(68, 1, 6)},
-                  {"put", parse("e_taken"), at(69, 1, 6)}};
+  pick.asserts = {{"take", parse("not e_taken"), at(67, 1, 6), {}},
+                  {"take", parse("e_pull_idle"), at(68, 1, 6), {}},
+                  {"put", parse("e_taken"), at(69, 1, 6), {}}};
   app.arbitrated_ports.push_back(pick);
   app.arbitrated_ports.push_back(arbitrated_port("PullObject.cmd", {"pull"}, at(42, 11, 14)));
   model::ArbitratedPort head =

@@ -37,8 +37,8 @@ struct VerifyOptions {
   bool strict = false;          // warnings (dead, unused) become errors
   int max_pairs_per_port = kDefaultMaxPairsPerPort;
   int list_bound = 4;  // lists in messages have at most this many elements (--list-bound)
-  // Replays message counterexamples; without one, a data finding cannot be confirmed and is
-  // reported as unknown (never as a verdict).
+  // Replays message counterexamples through the Lua monitors (the CLI always gives one); without
+  // one a data finding is reported with the note "not replayed (no monitor runner)".
   const MonitorRunner* runner = nullptr;
 };
 

@@ -283,6 +283,9 @@ struct AssertDecl {
   Loc loc;  // the `assert` keyword
   // sema:
   const Rule* rule_decl = nullptr;
+  // A property that reads `emitted` is over what the rule delivers (a bool over the port's
+  // value, docs/checks.md#assert-over-data); any other is a constraint over events.
+  bool over_data = false;
   Constraint constraint;
 };
 

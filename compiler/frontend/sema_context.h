@@ -102,6 +102,7 @@ class Sema {
   // `resource` declarations (sema_resource.cc).
   void check_resources();
   TypePtr check_resource_ports(ast::ResourceDecl& r);
+  void check_data_assert(ast::AssertDecl& a);
 
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.
@@ -194,5 +195,8 @@ class Sema {
   std::map<std::string, const ast::ArbitrateDecl*> arbitrated_;  // "Module.port" -> its block
   std::map<std::string, const ast::ConnectDecl*> fed_;  // ports a connect feeds -> the connect
 };
+
+// Whether `e` reads the name `name` (sema_resource.cc).
+bool mentions_name(const ast::Expr& e, const std::string& name);
 
 }  // namespace arbc::frontend

@@ -516,6 +516,11 @@ void Sema::check_assert(AssertDecl& a) {
       }
     }
   }
+  if (mentions_name(*a.property, "emitted")) {
+    a.over_data = true;
+    check_data_assert(a);  // sema_resource.cc
+    return;
+  }
   a.constraint = check_constraint(*a.property, "an assertion", false);
 }
 

@@ -1,6 +1,7 @@
-// Sema of `resource NAME { M.p, ... } [when PRED];` (docs/language.md#resource-name--mp-nq---when-predicate): at least two
-// distinct arbitrated `in` ports of one type, a unique name, and a bool predicate over the
-// delivered value, bound to `emitted`.
+// Sema of `resource NAME { M.p, ... } [when PRED];`
+// (docs/language.md#resource-name--mp-nq---when-predicate): at least two distinct arbitrated `in`
+// ports of one type, a unique name, and a bool predicate over the delivered value, bound to
+// `emitted`.
 #include <set>
 
 #include "compiler/frontend/sema_context.h"
@@ -50,6 +51,28 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
               (seen.size() == 1 ? "" : "s") + "; a resource is shared by at least two ports",
           "resource-port");
   return same ? type : nullptr;
+}
+
+// Whether `e` reads the name `name` (a lambda parameter of that name shadows it).
+bool mentions_name(const Expr& e, const std::string& name) {
+  if (e.kind == Expr::Kind::Name) return e.text == name;
+  if (e.kind == Expr::Kind::Lambda && e.text == name) return false;
+  for (const ExprPtr& a : e.args)
+    if (a && mentions_name(*a, name)) return true;
+  return false;
+}
+
+// An assert over data: a bool over `emitted`, the value its rule delivers to the port.
+void Sema::check_data_assert(AssertDecl& a) {
+  if (!a.port.port_decl) return;  // the port did not resolve: reported already
+  TypePtr type = a.port.port_decl->type.resolved;
+  if (!type) return;
+  Scope scope;
+  Binding emitted;
+  emitted.kind = NameKind::Message;
+  emitted.type = type;
+  scope.define("emitted", emitted);
+  check_condition(*a.property, scope, "an assertion over `emitted`", "predicate-type");
 }
 
 void Sema::check_resources() {

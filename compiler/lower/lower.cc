@@ -222,7 +222,7 @@ class Lowerer {
       connection(rules[k]).constraint = priority_constraint(rules, k, rules[k].rule->constraint);
     }
     for (const ast::AssertDecl& as : spec_.asserts)
-      if (as.port.qualified() == port) ap.asserts.push_back({as.rule, as.constraint, as.loc});
+      if (as.port.qualified() == port) ap.asserts.push_back(lower_assert(as));
 
     // The effects first: `otherwise` reads them through the other rules' effective guards.
     for (RuleWork& w : rules) {

@@ -183,4 +183,17 @@ std::optional<model::Body> lower_body(const ast::Block& body) {
   return out;
 }
 
+model::Assertion lower_assert(const ast::AssertDecl& a) {
+  model::Assertion out;
+  out.rule = a.rule;
+  out.loc = a.loc;
+  if (a.over_data) {
+    out.property = Constraint::constant(true);
+    out.emitted = lower_expr(*a.property);
+  } else {
+    out.property = a.constraint;
+  }
+  return out;
+}
+
 }  // namespace arbc::lower

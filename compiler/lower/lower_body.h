@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "compiler/frontend/ast.h"
+#include "core/app_model.h"
 #include "core/body.h"
 
 namespace arbc::lower {
@@ -15,5 +16,9 @@ std::optional<model::Body> lower_body(const ast::Block& body);
 
 // A checked expression (a resource's `when`: its message is the delivered value).
 model::BodyExpr lower_expr(const ast::Expr& e);
+
+// A checked assertion: over events (its constraint), or over data (its property over
+// `emitted`, the constraint then `true`).
+model::Assertion lower_assert(const ast::AssertDecl& a);
 
 }  // namespace arbc::lower

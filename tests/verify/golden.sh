@@ -76,6 +76,17 @@ golden resource_pull_mutant.txt repo 1 tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.json repo 1 --format json tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.sarif repo 1 --format sarif tests/verify/table_clean_pull_mutant.spec
 golden resource_take_mutant.txt repo 1 tests/verify/table_clean_take_reach_mutant.spec
+# The arm proved: one pair exclusive by data, one by events, each under its own label.
+golden resource_proved.json repo 0 --format json specs/table_clean.spec
+# Asserts over `emitted`: proved, refuted with a replayed message, not provable (opaque).
+golden data_assert.txt repo 1 tests/verify/data_assert.spec
+golden data_assert.json repo 1 --format json tests/verify/data_assert.spec
+golden data_assert.sarif repo 1 --format sarif tests/verify/data_assert.spec
+# An assert over data on a `script` rule: not proved, says why.
+golden data_assert_script.txt repo 1 tests/verify/data_assert_script.spec
+# A body and its Lua monitor that disagree (an arbc bug, simulated): `internal`, also on stderr.
+golden internal_resource.txt repo 1 tests/verify/internal_resource/app.json
+golden internal_assert.txt repo 1 tests/verify/internal_assert/app.json
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1
