@@ -91,6 +91,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "overlapping pairs per port reported with a counterexample; the rest are counted")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  cli.add_option("--temporal-bound", a.options.temporal_bound,
+                 "messages into a port that properties over time (`never two`) are explored to")
+      ->check(CLI::Range(2, 64))
+      ->capture_default_str();
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");

@@ -254,6 +254,21 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
+// `{"kind": "spacing", "port": .., "rule": .., "window": seconds}` (docs/app-json.md).
+bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
+  std::string kind;
+  if (!get_string(j, p, "kind", &kind, err)) return false;
+  if (kind != "spacing") return fail(p + ".kind: expected \"spacing\"", err);
+  std::optional<double> window;
+  if (!get_string(j, p, "port", &t->port, err) || !get_string(j, p, "rule", &t->rule, err) ||
+      !opt_number(j, p, "window", &window, err))
+    return false;
+  if (!window || !(*window > 0))
+    return fail(p + ".window: expected a positive number of seconds", err);
+  t->window = *window;
+  return read_location(j, p, &t->loc, err);
+}
+
 // The model in `root`, section by section; nullopt and *err at the first bad value.
 std::optional<App> read_app(const Json& root, std::string* err) {
   App app;
@@ -266,7 +281,8 @@ std::optional<App> read_app(const Json& root, std::string* err) {
                        read_arbitrated_port, err) &&
             read_array(root, r, "", "exclusive_groups", false, &app.exclusive_groups,
                        read_exclusive_group, err) &&
-            read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err);
+            read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
+            read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err);
   if (!ok) return std::nullopt;
   return app;
 }

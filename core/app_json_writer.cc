@@ -164,6 +164,22 @@ std::string to_app_json(const App& app) {
     w.end_object();
   }
   w.end_array();
+  // Written only when there are some: every app.json written before properties over time
+  // existed reads the same, and its bytes (and digests in goldens) do not change.
+  if (!app.temporal.empty()) {
+    w.key("temporal");
+    w.begin_array();
+    for (const TemporalProperty& t : app.temporal) {
+      w.begin_object();
+      w.member("kind", "spacing");
+      w.member("port", t.port);
+      w.member("rule", t.rule);
+      w.member("window", t.window);
+      write_location(w, t.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
   w.end_object();
   return w.take() + "\n";
 }

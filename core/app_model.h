@@ -121,6 +121,18 @@ struct Invariant {
   SourceLocation loc;
 };
 
+// A property over time (docs/design.md#properties-over-time). One shape so far:
+// Spacing, `never two RULE within W;`: `rule`, a rule into `port`, never delivers twice less
+// than `window` seconds apart.
+struct TemporalProperty {
+  enum class Kind { Spacing };
+  Kind kind = Kind::Spacing;
+  std::string port;  // "Module.port"
+  std::string rule;
+  double window = 0;  // seconds
+  SourceLocation loc;
+};
+
 struct App {
   int schema_version = kSchemaVersion;
   std::string name;
@@ -132,6 +144,7 @@ struct App {
   std::vector<ArbitratedPort> arbitrated_ports;
   std::vector<ExclusiveGroup> exclusive_groups;
   std::vector<Invariant> invariants;
+  std::vector<TemporalProperty> temporal;
 
   const Module* find_module(std::string_view name) const;
   const Port* find_port(std::string_view qualified) const;  // "Module.port"

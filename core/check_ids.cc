@@ -56,6 +56,8 @@ constexpr CheckId kIds[] = {
      "a statement where it cannot run (emit in `every`, nested `every`)"},
     {"status-source-type", kCheck, "an `events from` source port that is not list<string>"},
     {"syntax", kCheck, "the text does not follow the grammar"},
+    {"temporal-rule", kCheck,
+     "a property over time (`never two RULE within D`) names a rule used by several ports"},
     {"test-port", kCheck,
      "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},
     {"test-reason", kCheck, "`expect RULE drops \"reason\"` with an unknown drop reason"},

@@ -72,11 +72,37 @@ struct PortResult {
   int solver_queries = 0;
 };
 
+// One step of a timed counterexample (docs/design.md#properties-over-time): one message that
+// one connection into the port handled.
+struct TraceStep {
+  double time = 0;                      // seconds from the start of the run
+  std::string connection;               // the rule or feed that ran
+  std::string source;                   // "Module.port" that published the message
+  bool feed = false;                    // a generated feed: it sets events, never delivers
+  bool accepted = false;                // its `accept` accepted (message data is abstract)
+  std::vector<std::string> set, unset;  // entries it set / removed in the port's container
+  bool delivered = false;
+};
+
+// The outcome for one property over time, decided by bounded model checking.
+struct TemporalResult {
+  enum class Outcome { HoldsToBound, Violated, Unknown };
+  model::TemporalProperty property;
+  Outcome outcome = Outcome::Unknown;
+  // HoldsToBound: the largest number of messages into the port explored; Violated: the
+  // length of the (shortest) trace.
+  int bound = 0;
+  std::vector<TraceStep> trace;  // Violated only
+  std::string unknown_reason;
+  int solver_queries = 0;
+};
+
 struct VerifyReport {
   std::string app;
   std::string spec_file;
   std::vector<PortResult> ports;
   std::vector<Finding> app_findings;  // findings not about one arbitrated port
+  std::vector<TemporalResult> temporal;  // properties over time, in spec order
   Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;

@@ -3,6 +3,7 @@
 #include "verify/port_checks.h"
 #include "verify/port_scope.h"
 #include "verify/structural_checks.h"
+#include "verify/temporal/spacing.h"
 
 namespace arbc::verify {
 namespace {
@@ -68,6 +69,16 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   for (const PortResult& p : report.ports) {
     refuted |= p.verdict == Verdict::Refuted;
     unknown |= p.verdict == Verdict::Unknown;
+  }
+  // Properties over time: bounded, so "holds up to the bound" leaves the verdict as it is.
+  for (const model::TemporalProperty& p : app.temporal) {
+    std::optional<TemporalResult> t =
+        temporal::check_spacing(app, p, options.temporal_bound, ctx, deadline, err);
+    if (!t) return std::nullopt;
+    refuted |= t->outcome == TemporalResult::Outcome::Violated;
+    unknown |= t->outcome == TemporalResult::Outcome::Unknown;
+    report.solver_queries += t->solver_queries;
+    report.temporal.push_back(std::move(*t));
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);

@@ -19,6 +19,9 @@ struct VerifyOptions {
   double timeout_seconds = 60;  // for the whole app; a query cut short answers unknown
   bool strict = false;          // warnings (dead, unused) become errors
   int max_pairs_per_port = kDefaultMaxPairsPerPort;
+  // Messages into a port that properties over time are explored to
+  // (docs/design.md#properties-over-time).
+  int temporal_bound = 8;
 };
 
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown

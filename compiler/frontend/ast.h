@@ -286,6 +286,16 @@ struct AssertDecl {
   Constraint constraint;
 };
 
+// `never two RULE within D;`: RULE never delivers twice less than D apart, a property over
+// time (docs/language.md#properties-over-time), decided by verify/temporal/.
+struct NeverDecl {
+  std::string rule;
+  Loc rule_loc;
+  Duration window;
+  Loc loc;                          // the `never` keyword
+  const Rule* rule_decl = nullptr;  // sema
+};
+
 // What an event name refers to (sema builds one per declared event).
 struct EventSymbol {
   enum class Kind { Manual, Status, Derived };
@@ -374,6 +384,7 @@ struct Spec {
   std::vector<ArbitrateDecl> arbitrations;
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
+  std::vector<NeverDecl> nevers;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)
 

@@ -100,6 +100,10 @@ class Sema {
   // An assertion names a rule of an arbitrated port; its property is a constraint.
   void check_assert(ast::AssertDecl& a);
 
+  // ---- properties over time (sema_temporal.cc) ----
+  // `never two RULE within D;`: RULE names one rule of one arbitrated port, D is a duration.
+  void check_never(ast::NeverDecl& n);
+
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.
   void check_tests();

@@ -48,6 +48,8 @@ const char* describe_rule(size_t rule) {
       return "the `connect` declaration";
     case ArbcParser::RuleAssertDecl:
       return "the assertion";
+    case ArbcParser::RuleNeverDecl:
+      return "the `never` property";
     case ArbcParser::RuleStmt:
       return "the statement";
     case ArbcParser::RuleTestDecl:
@@ -80,7 +82,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
                                              "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert",    "test",   "tests"};
+                                             "arbitrate", "connect", "assert",    "test",   "tests", "never"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

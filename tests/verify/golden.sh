@@ -67,6 +67,9 @@ golden bad_input.json repo 2 --format json tests/verify/bad.spec
 golden bad_input.sarif repo 2 --format sarif tests/verify/bad.spec tests/verify/no_such_app.json \
   tests/verify/malformed.app.json
 golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spec
+# Properties over time: one holds up to the bound, one is violated with a timed trace.
+golden temporal.txt repo 1 tests/verify/temporal.spec
+golden temporal_bound.txt repo 0 --temporal-bound 2 tests/verify/temporal.spec
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1

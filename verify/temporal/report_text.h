@@ -1,0 +1,14 @@
+// Properties over time in `arbc verify`'s text report (docs/design.md#properties-over-time):
+// the verdict with its bound and assumptions, and a violation's timed trace in spec terms.
+#pragma once
+
+#include <string>
+
+#include "verify/report.h"
+
+namespace arbc::verify::temporal {
+
+// "  never two take within 1s (spec:70): ..." and, when violated, one line per step.
+std::string temporal_text(const TemporalResult& r);
+
+}  // namespace arbc::verify::temporal
