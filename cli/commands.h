@@ -18,6 +18,7 @@ int build_command(std::span<char*> args);
 int run_command(std::span<char*> args);
 int docs_command(std::span<char*> args);
 int import_command(std::span<char*> args);
+int lsp_command(std::span<char*> args);
 int test_command(std::span<char*> args);
 
 }  // namespace arbc::cli

@@ -21,6 +21,7 @@ constexpr const char* kUsage =
     "  test   SPEC... [options]      run the specs' `test` declarations in simulated time\n"
     "  docs   SPEC [-o DIR]          Markdown, Graphviz DOT and SVG, Mermaid\n"
     "  import yarp APP.xml -o SPEC   a yarpmanager application and its Lua monitors as a spec\n"
+    "  lsp                           a language server for editors, on stdin/stdout\n"
     "\n"
     "`arbc <command> --help` describes a command's options.\n"
     "exit codes: 0 fine, 1 refuted or unknown, 2 bad input, 3 run-time failure\n";
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
     if (command == "test") return test_command(args);
     if (command == "docs") return docs_command(args);
     if (command == "import") return import_command(args);
+    if (command == "lsp") return lsp_command(args);
   } catch (const std::exception& e) {
     // A bug, not a user error: say so plainly rather than dying on a signal.
     std::fprintf(stderr, "arbc: internal error: %s\n", e.what());

@@ -15,8 +15,29 @@ packages=(
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
-             chromium)                       # tests/report: the run report in headless Chromium
+             chromium                        # tests/report: the run report in headless Chromium
+             neovim tmux)                    # tests/lsp: Neovim's LSP client in a terminal
+  # tests/lsp: the VS Code grammar test runs on Node. A Node.js from elsewhere (with its own
+  # npm) is kept: Debian's npm package would conflict with it.
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
 fi
+
+# The npm packages of editors/vscode (vscode-textmate and vscode-oniguruma for the grammar
+# test, vsce to package the extension), exactly as package-lock.json pins them; again only
+# when the lock file changed. Without the registry the grammar test is skipped, not failed.
+npm_packages() {
+  local dir=$root/editors/vscode
+  [[ -f $dir/node_modules/.arbc-lock ]] && cmp -s "$dir/package-lock.json" "$dir/node_modules/.arbc-lock" &&
+    return 0
+  echo "install-deps: npm ci in editors/vscode"
+  if (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error); then
+    cp "$dir/package-lock.json" "$dir/node_modules/.arbc-lock"
+  else
+    echo "install-deps: npm ci failed; the VS Code grammar test will be skipped" >&2
+  fi
+}
+root=$(cd "$(dirname "$0")/.." && pwd)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -24,11 +45,14 @@ for p in "${packages[@]}"; do
 done
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt_prefix=()
+  [[ $(id -u) -ne 0 ]] && apt_prefix=(sudo)
+  "${apt_prefix[@]}" apt-get update -qq
+  "${apt_prefix[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-apt_prefix=()
-[[ $(id -u) -ne 0 ]] && apt_prefix=(sudo)
-"${apt_prefix[@]}" apt-get update -qq
-"${apt_prefix[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [[ "${1:-}" == "--test" ]]; then
+  npm_packages
+fi

@@ -108,35 +108,39 @@ void decision_section(const model::App& app, std::ostream& out) {
     out << "### " << p.port;
     if (p.by_priority) out << " (by priority)";
     if (p.complete) out << " (complete)";
-    out << "\n\n| rule | effective guard |\n|---|---|\n";
-    for (const RuleGuard& r : t.rules)
-      out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
-    out << "\n";
-    if (!t.tabulated) {
-      out << "With " << t.events.size() << " events (more than " << kMaxTableEvents
-          << "), the guards in disjunctive normal form:\n\n| rule | guard (DNF) |\n|---|---|\n";
-      for (const RuleGuard& r : t.rules)
-        out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
-      out << "\n";
-      continue;
-    }
-    out << "|";
-    for (const std::string& e : t.events) out << " " << cell(e) << " |";
-    out << " selects |\n|";
-    for (size_t i = 0; i <= t.events.size(); ++i) out << "---|";
-    out << "\n";
-    for (const DecisionRow& row : t.rows) {
-      out << "|";
-      for (bool present : row.present) out << (present ? " 1 |" : " 0 |");
-      std::string selected = join(row.selected);
-      if (row.selected.size() > 1) selected = "**" + selected + "** (conflict)";
-      out << " " << (selected.empty() ? "-" : selected) << " |\n";
-    }
+    out << "\n\n";
+    decision_table_markdown(t, out);
     out << "\n";
   }
 }
 
 }  // namespace
+
+void decision_table_markdown(const DecisionTable& t, std::ostream& out) {
+  out << "| rule | effective guard |\n|---|---|\n";
+  for (const RuleGuard& r : t.rules)
+    out << "| " << cell(r.rule) << " | " << code(r.guard) << " |\n";
+  out << "\n";
+  if (!t.tabulated) {
+    out << "With " << t.events.size() << " events (more than " << kMaxTableEvents
+        << "), the guards in disjunctive normal form:\n\n| rule | guard (DNF) |\n|---|---|\n";
+    for (const RuleGuard& r : t.rules)
+      out << "| " << cell(r.rule) << " | " << code(r.dnf) << " |\n";
+    return;
+  }
+  out << "|";
+  for (const std::string& e : t.events) out << " " << cell(e) << " |";
+  out << " selects |\n|";
+  for (size_t i = 0; i <= t.events.size(); ++i) out << "---|";
+  out << "\n";
+  for (const DecisionRow& row : t.rows) {
+    out << "|";
+    for (bool present : row.present) out << (present ? " 1 |" : " 0 |");
+    std::string selected = join(row.selected);
+    if (row.selected.size() > 1) selected = "**" + selected + "** (conflict)";
+    out << " " << (selected.empty() ? "-" : selected) << " |\n";
+  }
+}
 
 std::string render_index_markdown(const DocsInput& input) {
   const model::App& app = *input.app;

@@ -2,9 +2,11 @@
 // connections, events, a decision table per arbitrated port, and the verification verdicts.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
+#include "compiler/docs/decision_table.h"
 #include "core/app_model.h"
 
 namespace arbc::docs {
@@ -19,6 +21,11 @@ struct DocsInput {
 };
 
 std::string render_index_markdown(const DocsInput& input);
+
+// One port's decision table as Markdown: each rule's effective guard, then a row per event
+// state (or the guards in DNF when the port has more than kMaxTableEvents events). Shared by
+// index.md and the language server's hover.
+void decision_table_markdown(const DecisionTable& t, std::ostream& out);
 
 // A Markdown table cell: pipes escaped, newlines folded, so every row keeps its column count.
 std::string cell(std::string_view text);

@@ -1,0 +1,51 @@
+// `arbc lsp`: the language server on stdin/stdout (docs/cli.md#arbc-lsp, docs/editors.md).
+// Exit 0 after the client's shutdown and exit, 1 when the input ends without them, the client
+// stops reading or its process is gone (as the LSP specifies), 2 on bad options.
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "lsp/server.h"
+
+namespace arbc::cli {
+
+int lsp_command(std::span<char*> args) {
+  CLI::App app{
+      "Serve the Language Server Protocol on stdin/stdout for editors: diagnostics as you type,\n"
+      "the proof on save, hover, go to definition, references, outline, completion, quick fixes\n"
+      "and rename. Messages go to stdout; a log of what the server did goes to stderr."};
+  app.name("arbc lsp");
+  lsp::ServerOptions options;
+  options.version = ARBC_VERSION;
+  bool no_verify = false;
+  bool stdio = true;
+  app.add_flag("--stdio", stdio,
+               "talk over stdin/stdout (the default; accepted for clients "
+               "that pass it)");
+  app.add_flag("--no-verify", no_verify, "do not prove documents on open and save");
+  app.add_option("--timeout", options.verify_timeout_seconds,
+                 "seconds the proof of one document may take")
+      ->capture_default_str();
+  try {
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  options.verify = !no_verify;
+  // A client that goes away closes our stdout: writes then fail (the server sees it and
+  // exits 1) instead of killing the process with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  // A client whose process is gone: nothing is left to save, the workers may be mid-proof.
+  options.on_client_gone = [] {
+    std::cerr.flush();
+    std::_Exit(1);  // as the LSP asks of an exit without `shutdown`
+  };
+  std::ios::sync_with_stdio(false);
+  lsp::Server server(std::cin, std::cout, std::cerr, options);
+  return server.run();
+}
+
+}  // namespace arbc::cli

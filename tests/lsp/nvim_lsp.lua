@@ -1,0 +1,95 @@
+-- Neovim's own LSP client (0.7) attached to `arbc lsp`, driven as a person would: open a spec,
+-- break a name, wait for the diagnostic, hover, go to definition, apply the quick fix. Each
+-- check is written to $RESULT as JSON; nvim_test.py runs this inside tmux and reads it, then
+-- takes the screenshot once $READY exists. Env: ARBC, SPEC (a copy to edit), RESULT, READY.
+local arbc, spec, result_file, ready_file =
+  os.getenv('ARBC'), os.getenv('SPEC'), os.getenv('RESULT'), os.getenv('READY')
+local results = {}
+
+local function check(name, ok, detail)
+  table.insert(results, { name = name, ok = ok and true or false, detail = vim.inspect(detail) })
+end
+
+local function write(path, text)
+  local f = assert(io.open(path, 'w'))
+  f:write(text)
+  f:close()
+end
+
+-- The 0-based row and column of the first `needle` in the buffer.
+local function find(needle)
+  for row, line in ipairs(vim.api.nvim_buf_get_lines(0, 0, -1, false)) do
+    local col = line:find(needle, 1, true)
+    if col then return row - 1, col - 1 end
+  end
+  error('not in the buffer: ' .. needle)
+end
+
+local function request(method, params)
+  local answers = vim.lsp.buf_request_sync(0, method, params, 10000) or {}
+  for _, a in pairs(answers) do return a.result, a.err end
+end
+
+local function at(row, col)
+  return { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = row, character = col } }
+end
+
+local function break_name()
+  local row, col = find('e_arm_idle and e_pull_idle {')
+  vim.api.nvim_buf_set_text(0, row, col, row, col + #'e_arm_idle', { 'e_arm_idel' })
+  local seen = vim.wait(20000, function() return #vim.diagnostic.get(0) > 0 end, 20)
+  return seen, row, col
+end
+
+local function run()
+  vim.cmd('edit ' .. spec)
+  vim.bo.filetype = 'arbc'
+  local id = vim.lsp.start_client({ name = 'arbc', cmd = { arbc, 'lsp', '--no-verify' },
+                                    root_dir = vim.fn.fnamemodify(spec, ':h') })
+  vim.lsp.buf_attach_client(0, id)
+  local client = vim.lsp.get_client_by_id(id)
+  check('the server initializes', vim.wait(20000, function() return client.initialized end, 20))
+
+  local seen, row, col = break_name()
+  check('a diagnostic arrives for the broken name', seen)
+  local d = vim.diagnostic.get(0)[1] or {}
+  check('it is arbc check\'s diagnostic, on the name',
+        d.code == 'unknown-event' and d.message == "unknown event 'e_arm_idel'" and d.lnum == row
+          and d.col == col and d.end_col == col + #'e_arm_idel' and d.severity == vim.diagnostic.severity.ERROR, d)
+
+  local take_row, take_col = find('take: from')
+  local hover = request('textDocument/hover', at(take_row, take_col))
+  local text = hover and hover.contents and hover.contents.value or ''
+  check('hover on a rule shows its effective guard and decision table',
+        text:find('effective guard: `not e_taken and e_arm_idle and e_pull_idle`', 1, true)
+          and text:find('| 1 | 1 | 0 | take |', 1, true), text)
+
+  local use_row, use_col = find('not e_taken')
+  local def = request('textDocument/definition', at(use_row, use_col + 4))
+  local decl_row, decl_col = find('e_taken, e_arm_idle }')
+  check('definition of an event is its declaration',
+        def and def.range and def.range.start.line == decl_row and def.range.start.character == decl_col, def)
+
+  local actions = request('textDocument/codeAction', {
+    textDocument = { uri = vim.uri_from_bufnr(0) },
+    range = { start = { line = d.lnum, character = d.col }, ['end'] = { line = d.end_lnum, character = d.end_col } },
+    context = { diagnostics = {} } }) or {}
+  check('one quick fix is offered', #actions == 1 and actions[1].title == "Change to 'e_arm_idle'", actions)
+  if actions[1] then vim.lsp.util.apply_workspace_edit(actions[1].edit, 'utf-16') end
+  local line = vim.api.nvim_buf_get_lines(0, row, row + 1, false)[1]
+  check('the fix restores the name', line:find('when not e_taken and e_arm_idle and e_pull_idle {', 1, true), line)
+  check('and the diagnostic goes away', vim.wait(20000, function() return #vim.diagnostic.get(0) == 0 end, 20))
+
+  -- The screenshot: the name broken again, the cursor on the rule, its hover open.
+  break_name()
+  vim.api.nvim_win_set_cursor(0, { take_row + 1, take_col })
+  vim.cmd('normal! zt')
+  vim.lsp.buf.hover()
+  vim.wait(10000, function() return #vim.api.nvim_list_wins() > 1 end, 20)
+  vim.cmd('redraw!')
+end
+
+local ok, err = pcall(run)
+check('the script ran to the end', ok, err)
+write(result_file, vim.fn.json_encode(results))
+write(ready_file, 'ready')

@@ -1,0 +1,558 @@
+#!/usr/bin/env python3
+"""Protocol-level tests of `arbc lsp`: a real server process driven over stdio.
+
+usage: test_protocol.py ARBC [unittest args]   (run from the repository root)
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lsp_client import LspClient, apply_edits, file_uri, position_of  # noqa: E402
+
+ARBC = None
+ROOT = os.getcwd()
+SPEC = os.path.join(ROOT, "specs", "table_clean.spec")
+
+
+def read(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def check_json(text):
+    """`arbc check --format json` of text saved as a file next to the spec (same script dir)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(SPEC),
+                                     delete=False) as f:
+        f.write(text)
+    try:
+        proc = subprocess.run([ARBC, "check", "--format", "json", f.name], capture_output=True,
+                              text=True, timeout=60)
+        return json.loads(proc.stdout)["diagnostics"]
+    finally:
+        os.unlink(f.name)
+
+
+def check_json_at(text, path):
+    """`arbc check --format json` of text saved beside `path` (so that relative paths hold)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(path),
+                                     delete=False) as f:
+        f.write(text)
+    try:
+        proc = subprocess.run([ARBC, "check", "--format", "json", f.name], capture_output=True,
+                              text=True, timeout=60)
+        return json.loads(proc.stdout)["diagnostics"]
+    finally:
+        os.unlink(f.name)
+
+
+class Session(unittest.TestCase):
+    verify = False
+
+    def setUp(self):
+        command = [ARBC, "lsp"] + ([] if self.verify else ["--no-verify"])
+        self.c = LspClient(command)
+        self.init = self.c.initialize(ROOT)
+        self.text = read(SPEC)
+        self.uri = file_uri(SPEC)
+
+    def tearDown(self):
+        self.c.close()
+
+    def open_spec(self, text=None, uri=None):
+        uri = uri or self.uri
+        self.c.open(uri, text if text is not None else self.text)
+        return self.c.wait_diagnostics(uri, version=1)
+
+    def at(self, needle, occurrence=0, offset=0, text=None):
+        return {"textDocument": {"uri": self.uri},
+                "position": position_of(text or self.text, needle, occurrence, offset)}
+
+
+class Lifecycle(Session):
+    def test_capabilities_name_every_feature(self):
+        caps = self.init["capabilities"]
+        self.assertEqual(caps["textDocumentSync"]["change"], 2)  # incremental
+        for feature in ("hoverProvider", "definitionProvider", "referencesProvider",
+                        "documentSymbolProvider", "completionProvider", "codeActionProvider",
+                        "renameProvider"):
+            self.assertIn(feature, caps)
+        self.assertEqual(caps["completionProvider"]["triggerCharacters"], ["."])
+
+    def test_shutdown_then_exit_exits_0(self):
+        self.assertEqual(self.c.shutdown_and_exit(), 0)
+
+    def test_exit_without_shutdown_exits_1(self):
+        self.c.notify("exit", None)
+        self.assertEqual(self.c.proc.wait(timeout=30), 1)
+
+    def test_end_of_input_ends_the_server(self):
+        self.c.proc.stdin.close()
+        self.assertEqual(self.c.proc.wait(timeout=30), 1)
+
+    def test_requests_after_shutdown_are_refused(self):
+        self.c.request("shutdown", None)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", self.at("take"))
+        self.assertEqual(e.exception.args[0], -32600)
+
+
+class BeforeInitialize(unittest.TestCase):
+    def test_a_request_before_initialize_is_refused(self):
+        with LspClient([ARBC, "lsp", "--no-verify"]) as c:
+            with self.assertRaises(RuntimeError) as e:
+                c.request("textDocument/hover", {"textDocument": {"uri": "file:///x.spec"},
+                                                 "position": {"line": 0, "character": 0}})
+            self.assertEqual(e.exception.args[0], -32002)
+
+
+class Diagnostics(Session):
+    def test_a_clean_spec_has_no_diagnostics(self):
+        self.assertEqual(self.open_spec(), [])
+
+    def test_diagnostics_are_those_of_arbc_check(self):
+        self.open_spec()
+        start = position_of(self.text, "not e_taken and e_arm_idle", 0, len("not "))
+        end = dict(start, character=start["character"] + len("e_taken"))
+        self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_tken"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        broken = self.text.replace("not e_taken and e_arm_idle", "not e_tken and e_arm_idle", 1)
+        expected = check_json(broken)
+        self.assertEqual([(d["code"], d["message"]) for d in diags],
+                         [(d["id"], d["message"]) for d in expected])
+        d = diags[0]
+        self.assertEqual(d["code"], "unknown-event")
+        self.assertEqual(d["range"]["start"], start)
+        self.assertEqual(d["range"]["end"]["character"], start["character"] + len("e_tken"))
+        self.assertEqual(d["relatedInformation"][0]["message"], "did you mean 'e_taken'?")
+        self.assertEqual(d["source"], "arbc")
+
+    def test_a_syntax_error_and_its_repair(self):
+        self.open_spec()
+        end = position_of(self.text, "module Speak")
+        self.c.change(self.uri, 2, [{"range": {"start": end, "end": end}, "text": "modle X { }\n"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        self.assertTrue(diags and diags[0]["severity"] == 1, diags)
+        self.c.change(self.uri, 3, [{"text": self.text}])  # a full-text change
+        self.assertEqual(self.c.wait_diagnostics(self.uri, version=3), [])
+
+
+class Navigation(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def definition_line(self, needle, occurrence=0, offset=0):
+        loc = self.c.request("textDocument/definition", self.at(needle, occurrence, offset))
+        self.assertIsNotNone(loc, needle)
+        self.assertEqual(loc["uri"], self.uri)
+        return loc["range"]["start"]
+
+    def test_definitions(self):
+        cases = [  # (use, occurrence, offset into it) -> declaration
+            ("not e_taken", 0, 4, "e_taken, e_arm_idle }"),
+            ("HAND_REACHABLE;", 0, 0, "HAND_REACHABLE = 0.40"),
+            ("list<Object>", 0, 5, "Object = {"),
+            ("arbitrate PickAndPlace.cmd", 0, 10, "PickAndPlace    {"),
+            ("arbitrate PickAndPlace.cmd", 0, 23, "cmd: Cmd; out status"),
+            ("take -> not", 0, 0, "take: from"),
+            ("obj.dist <= HAND", 0, 0, "obj = min_by"),
+            ("SPEAK_PERIOD;", 0, 0, "SPEAK_PERIOD   = 5s"),
+        ]
+        for use, occurrence, offset, decl in cases:
+            with self.subTest(use=use):
+                self.assertEqual(self.definition_line(use, occurrence, offset),
+                                 position_of(self.text, decl))
+
+    def test_references_of_an_event(self):
+        refs = self.c.request("textDocument/references",
+                              dict(self.at("e_pull_idle }"), context={"includeDeclaration": True}))
+        lines = sorted(r["range"]["start"]["line"] for r in refs)
+        # The declaration, take, track and search's `when`s, one assert and the tests' `set`s;
+        # not the flags in the tests' status messages ("e_pull_idle": a string).
+        expected = sorted(i for i, l in enumerate(self.text.split("\n"))
+                          for _ in re.finditer(r'(?<!")\be_pull_idle\b(?!")', l.split("//")[0]))
+        self.assertGreaterEqual(len([l for l in expected if l > position_of(
+            self.text, "test ")["line"]]), 2)  # the tests' `set e_pull_idle;`
+        self.assertEqual(lines, expected)
+        for r in refs:
+            s, e = r["range"]["start"], r["range"]["end"]
+            self.assertEqual(self.text.split("\n")[s["line"]][s["character"]:e["character"]],
+                             "e_pull_idle")
+
+    def test_outline(self):
+        symbols = self.c.request("textDocument/documentSymbol", {"textDocument": {"uri": self.uri}})
+        names = [s["name"] for s in symbols]
+        for name in ("table_clean", "Object", "HAND_REACHABLE", "ObjectDetector", "e_taken",
+                     "arbitrate PickAndPlace.cmd", "arbitrate HeadControl.gaze"):
+            self.assertIn(name, names)
+        pick = symbols[names.index("arbitrate PickAndPlace.cmd")]
+        self.assertEqual([c["name"] for c in pick["children"]], ["take", "put"])
+        module = symbols[names.index("PickAndPlace")]
+        self.assertEqual([c["name"] for c in module["children"]], ["cmd", "status"])
+        self.assertIn('test "put after take"', names)
+        on_take = symbols[names.index('test "take picks the closest object within hand reach"')]
+        self.assertEqual(on_take["detail"], "on take")
+
+    def test_references_of_a_rule_reach_into_the_tests(self):
+        refs = self.c.request("textDocument/references",
+                              dict(self.at("take: from"), context={"includeDeclaration": False}))
+        lines = self.text.split("\n")
+        quoted = [lines[r["range"]["start"]["line"]].strip() for r in refs]
+        for start in ('expect take drops "not', 'test "take picks the c', "assert PickAndPlace.cmd"):
+            self.assertTrue(any(q.startswith(start) for q in quoted), (start, quoted))
+
+    def test_definition_from_a_test_step(self):
+        self.assertEqual(self.definition_line("BucketDetector.bucket <-", 0, len("BucketDetector.")),
+                         position_of(self.text, "bucket: vec3"))
+        self.assertEqual(self.definition_line("set e_pull_idle;", 0, len("set ")),
+                         position_of(self.text, "e_pull_idle }"))
+
+
+class TestsFile(Session):
+    """A tests file (`tests for "gaze.spec";`): checked against its app; names declared in the
+    app's spec lead there."""
+
+    def setUp(self):
+        super().setUp()
+        self.path = os.path.join(ROOT, "specs", "testing", "gaze.test.spec")
+        self.app = os.path.join(ROOT, "specs", "testing", "gaze.spec")
+        self.text, self.uri = read(self.path), file_uri(self.path)
+
+    def test_checked_against_its_app(self):
+        self.assertEqual(self.open_spec(), [])
+        loc = self.c.request("textDocument/definition",
+                             self.at("HeadControl.gaze receives", 0, len("HeadControl.")))
+        self.assertEqual(loc["uri"], file_uri(self.app))
+        self.assertEqual(loc["range"]["start"], position_of(read(self.app), "in gaze: vec3", 0, 3))
+        names = [s["name"] for s in self.c.request("textDocument/documentSymbol",
+                                                   {"textDocument": {"uri": self.uri}})]
+        self.assertTrue(names and all(n.startswith("test ") for n in names), names)
+
+    def test_an_error_is_at_its_place_in_the_tests_file(self):
+        broken = self.text.replace("HeadControl.gaze receives", "HeadControl.gaze_x receives", 1)
+        diags = self.open_spec(broken)
+        self.assertEqual([(d["code"], d["range"]["start"]) for d in diags], [(
+            check_json_at(broken, self.path)[0]["id"],
+            position_of(broken, "HeadControl.gaze_x", 0, 0))])
+
+
+class Hover(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def hover(self, needle, occurrence=0, offset=0):
+        h = self.c.request("textDocument/hover", self.at(needle, occurrence, offset))
+        self.assertIsNotNone(h, needle)
+        self.assertEqual(h["contents"]["kind"], "markdown")
+        return h["contents"]["value"]
+
+    def test_a_rule_shows_its_effective_guard_and_decision_table(self):
+        text = self.hover("take: from")
+        self.assertIn("**rule** `take` into `PickAndPlace.cmd`", text)
+        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle`", text)
+        self.assertIn("| e_arm_idle | e_pull_idle | e_taken | selects |", text)
+        self.assertIn("| 1 | 1 | 0 | take |", text)
+
+    def test_a_by_priority_rule_shows_its_activity_event(self):
+        self.assertIn("act_track", self.hover("track:  from"))
+
+    def test_an_event_shows_where_it_comes_from(self):
+        text = self.hover("not e_taken", 0, 4)
+        self.assertIn("status flag `\"e_taken\"` of `PickAndPlace.status`", text)
+        self.assertIn("lifetime 0.5 s", text)
+        self.assertIn("in the `when` of: `take`, `put`, `pull`", text)
+        self.assertIn("derived from `FaceDetector.face`", self.hover("e_face_detected ="))
+
+    def test_an_event_set_by_a_rule_names_it(self):
+        path = os.path.join(ROOT, "specs", "search_and_track.spec")
+        text, uri = read(path), file_uri(path)
+        self.c.open(uri, text)
+        self.assertEqual(self.c.wait_diagnostics(uri, version=1), [])
+        h = self.c.request("textDocument/hover", {
+            "textDocument": {"uri": uri},
+            "position": position_of(text, "not e_face_detected", 0, len("not "))})
+        value = h["contents"]["value"]
+        self.assertIn("set by monitor code", value)  # not fed by a stream
+        self.assertIn("set by: `track`", value)
+        self.assertIn("in the `when` of: `search`", value)
+
+    def test_types_of_names_and_fields(self):
+        self.assertIn("`obj`: `Object = {pos: vec3, dist: float}`", self.hover("obj.dist <= HAND"))
+        self.assertIn(": `float`", self.hover("obj.dist <= HAND", 0, 5))
+        self.assertIn("**const** `HAND_REACHABLE`: `float` = `0.40`", self.hover("HAND_REACHABLE;"))
+        self.assertIn("**in port** `PickAndPlace.cmd`: `Cmd = {verb: string, pos: vec3}`",
+                      self.hover("arbitrate PickAndPlace.cmd", 0, 23))
+
+    def test_nothing_under_a_comment(self):
+        self.assertIsNone(self.c.request("textDocument/hover", self.at("// never take")))
+
+
+class Editing(Session):
+    def setUp(self):
+        super().setUp()
+        self.open_spec()
+
+    def test_completion_after_a_dot(self):
+        # `obj.` inside take's body: the text does not parse, the last version that did helps.
+        where = position_of(self.text, "emit { verb: \"take\"")
+        self.c.change(self.uri, 2, [{"range": {"start": where, "end": where}, "text": "obj."}])
+        self.c.wait_diagnostics(self.uri, version=2)
+        p = dict(where, character=where["character"] + 4)
+        items = self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": p})["items"]
+        self.assertEqual(sorted(i["label"] for i in items), ["dist", "pos"])
+
+    def test_completion_of_ports_names_and_keywords(self):
+        p = position_of(self.text, "arbitrate PickAndPlace.cmd", 0, len("arbitrate PickAndPlace."))
+        items = self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": p})["items"]
+        self.assertEqual(sorted(i["label"] for i in items), ["cmd", "status"])
+        p = position_of(self.text, "accept obj.dist <= HAND", 0, len("accept "))
+        labels = {i["label"] for i in self.c.request(
+            "textDocument/completion", {"textDocument": {"uri": self.uri}, "position": p})["items"]}
+        for expected in ("arbitrate", "when", "e_taken", "HAND_REACHABLE", "Object", "obj"):
+            self.assertIn(expected, labels)
+
+    def test_a_did_you_mean_quick_fix(self):
+        start = position_of(self.text, "e_arm_idle and e_pull_idle {")
+        end = dict(start, character=start["character"] + len("e_arm_idle"))
+        self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_arm_idel"}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        actions = self.c.request("textDocument/codeAction", {
+            "textDocument": {"uri": self.uri}, "range": diags[0]["range"],
+            "context": {"diagnostics": diags}})
+        self.assertEqual(len(actions), 1)
+        self.assertEqual(actions[0]["title"], "Change to 'e_arm_idle'")
+        edits = actions[0]["edit"]["changes"][self.uri]
+        broken = self.text.replace("e_arm_idle and e_pull_idle {", "e_arm_idel and e_pull_idle {", 1)
+        self.assertEqual(apply_edits(broken, edits), self.text)
+
+    def test_rename_an_event_keeps_its_status_flag(self):
+        edit = self.c.request("textDocument/rename", dict(self.at("not e_taken", 0, 4),
+                                                          newName="e_holding"))
+        renamed = apply_edits(self.text, edit["changes"][self.uri])
+        self.assertIn('events from PickAndPlace.status { e_holding = "e_taken", e_arm_idle }',
+                      renamed)
+        self.assertNotIn("e_taken and", renamed)
+        self.assertEqual([d for d in check_json(renamed) if d["severity"] == "error"], [])
+
+    def test_rename_a_rule(self):
+        edit = self.c.request("textDocument/rename", dict(self.at("take: from"), newName="grab"))
+        renamed = apply_edits(self.text, edit["changes"][self.uri])
+        self.assertIn("grab: from", renamed)
+        self.assertIn("PickAndPlace.cmd: grab -> not e_taken", renamed)
+        self.assertEqual(check_json(renamed), [])
+
+    def test_rename_refuses_keywords_taken_names_and_modules(self):
+        for needle, name, why in [("take: from", "when", "not a name"),
+                                  ("take: from", "put", "already"),
+                                  ("module PickAndPlace", "Arm", "only events and rules")]:
+            with self.subTest(name=name):
+                with self.assertRaises(RuntimeError) as e:
+                    offset = len("module ") if needle.startswith("module") else 0
+                    self.c.request("textDocument/rename", dict(self.at(needle, 0, offset),
+                                                               newName=name))
+                self.assertIn(why, e.exception.args[1])
+
+
+class Verification(Session):
+    verify = True
+
+    def test_a_counterexample_lands_on_both_rules(self):
+        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle {",
+                                 "when e_arm_idle and e_pull_idle {", 1)
+        self.c.open(self.uri, text)
+        diags = self.c.wait_diagnostics(
+            self.uri, accept=lambda ds: any(d.get("code") == "exclusive" for d in ds), timeout=120)
+        exclusive = [d for d in diags if d.get("code") == "exclusive"]
+        lines = sorted(d["range"]["start"]["line"] for d in exclusive)
+        self.assertEqual(lines, sorted([position_of(text, "take: from")["line"],
+                                        position_of(text, "put: from")["line"]]))
+        for d in exclusive:
+            self.assertIn("rules 'take' and 'put' of PickAndPlace.cmd can both be selected",
+                          d["message"])
+            self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
+
+    def test_a_proved_spec_gets_no_findings_on_save(self):
+        self.assertEqual(self.open_spec(), [])
+        self.c.notify("textDocument/didSave", {"textDocument": {"uri": self.uri}})
+        # The proof publishes again; still nothing.
+        self.assertEqual(self.c.wait_diagnostics(self.uri, timeout=120), [])
+
+
+class Robustness(Session):
+    def test_garbage_gets_errors_and_the_server_goes_on(self):
+        self.c.send_raw(b"Content-Length: 5\r\n\r\n{nope")
+        self.c.send_raw(b"X-Nothing: 1\r\n\r\n")  # no Content-Length: skipped
+        self.c.send({"jsonrpc": "2.0", "id": 99, "method": "textDocument/nosuch", "params": {}})
+        self.assertEqual(self.c.response(99)["error"]["code"], -32601)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", {"textDocument": {"uri": 5}})
+        self.assertEqual(e.exception.args[0], -32602)
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/hover", {"textDocument": {"uri": "file:///not/open.spec"},
+                                                  "position": {"line": 0, "character": 0}})
+        self.assertEqual(e.exception.args[0], -32602)
+        self.c.notify("textDocument/didChange", {"textDocument": {"uri": 7}})
+        self.c.send_raw(b"Content-Length: 7\r\n\r\n[1,2,3]")  # a batch: not supported
+        self.assertEqual(self.c.response(None)["error"]["code"], -32700)
+        self.c.send({"jsonrpc": "2.0", "id": 98, "method": 12})
+        self.assertEqual(self.c.response(98)["error"]["code"], -32600)
+        not_utf8 = b'{"id": 1, "x": "\xff"}'
+        self.c.send_raw(b"Content-Length: %d\r\n\r\n" % len(not_utf8) + not_utf8)
+        self.assertEqual(self.c.response(None)["error"]["code"], -32700)
+        self.assertEqual(self.open_spec(), [])
+        # Requests on the open document with parameters of the wrong shape.
+        for method, params in [
+                ("textDocument/hover", {"textDocument": {"uri": self.uri}, "position": "x"}),
+                ("textDocument/hover", {"textDocument": {"uri": self.uri},
+                                        "position": {"line": 10**12, "character": -5}}),
+                ("textDocument/codeAction", {"textDocument": {"uri": self.uri}, "range": {}}),
+                ("textDocument/codeAction", {"textDocument": {"uri": self.uri}, "range": 3}),
+                ("textDocument/rename", {"textDocument": {"uri": self.uri},
+                                         "position": {"line": 0, "character": 0}}),
+                ("textDocument/references", {"textDocument": {"uri": self.uri},
+                                             "position": {"line": 3}, "context": 5})]:
+            with self.subTest(method=method, params=params):
+                try:
+                    self.c.request(method, params)
+                except RuntimeError as e:
+                    self.assertIn(e.args[0], (-32602, -32803))
+        self.assertIn("**rule**", self.c.request("textDocument/hover",
+                                                 self.at("take: from"))["contents"]["value"])
+        self.assertIsNone(self.c.proc.poll())
+
+    def test_a_huge_document_does_not_stop_the_others(self):
+        # 20000 lines (a table_clean is 100): checked, and the small spec opened after it
+        # still gets its diagnostics and hover.
+        huge = 'app huge "x";\nmodule M { in p: int; }\n' + "".join(
+            f"event e{i};\n" for i in range(20000)) + "event e0;\n"
+        big_uri = file_uri(os.path.join(ROOT, "specs", "huge.spec"))
+        self.c.open(big_uri, huge)
+        self.assertEqual(self.open_spec(), [])
+        self.assertIn("**rule**", self.c.request("textDocument/hover",
+                                                 self.at("take: from"))["contents"]["value"])
+        big = self.c.wait_diagnostics(big_uri, timeout=300)
+        self.assertEqual([(d["code"], d["range"]["start"]["line"]) for d in big],
+                         [("duplicate", 20002)])
+
+    def test_every_request_at_every_position_answers(self):
+        """Every position request at every other column of table_clean, and of a copy with a
+        syntax error (the index is then of the last text that parsed): an answer each time."""
+        broken = self.text.replace("module Speak", "modle Speak", 1)
+        for version, text in ((1, self.text), (2, broken)):
+            if version == 1:
+                self.open_spec()
+            else:
+                self.c.change(self.uri, 2, [{"text": broken}])
+                self.assertTrue(self.c.wait_diagnostics(self.uri, version=2))
+            answered = 0
+            for line, content in enumerate(text.split("\n")):
+                for character in range(0, len(content) + 2, 2):
+                    where = {"textDocument": {"uri": self.uri},
+                             "position": {"line": line, "character": character}}
+                    ids = [self.c.request_async(m, where) for m in (
+                        "textDocument/hover", "textDocument/definition",
+                        "textDocument/documentHighlight", "textDocument/completion",
+                        "textDocument/prepareRename")]
+                    ids.append(self.c.request_async("textDocument/references",
+                                                    dict(where, context={})))
+                    for rid in ids:
+                        self.assertNotIn("error", self.c.response(rid), (line, character))
+                        answered += 1
+            self.assertGreater(answered, 5000)
+
+    def test_rename_waits_for_text_that_parses(self):
+        self.open_spec()
+        self.c.change(self.uri, 2, [{"text": self.text + "modle X { }\n"}])
+        self.assertTrue(self.c.wait_diagnostics(self.uri, version=2))
+        at = self.at("take: from")  # the index of the last text that parsed still knows it
+        self.assertIsNotNone(self.c.request("textDocument/hover", at))
+        self.assertIsNone(self.c.request("textDocument/prepareRename", at))
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/rename", dict(at, newName="grab"))
+        self.assertIn("does not parse now", e.exception.args[1])
+
+    def test_a_document_over_the_limit_is_an_io_diagnostic(self):
+        huge = "// " + "x" * (64 << 20) + "\n"  # 64 MiB and a bit: arbc check's limit
+        big_uri = file_uri(os.path.join(ROOT, "specs", "too_big.spec"))
+        self.c.open(big_uri, huge)
+        diags = self.c.wait_diagnostics(big_uri, timeout=120)
+        self.assertEqual([d["code"] for d in diags], ["io"])
+        self.assertIn("larger than 64 MiB", diags[0]["message"])
+        self.assertEqual(self.open_spec(), [])
+
+    def test_deep_nesting_is_a_diagnostic(self):
+        text = self.text + "\nconst DEEP = " + "(" * 5000 + "1" + ")" * 5000 + ";\n"
+        diags = self.open_spec(text)
+        self.assertTrue(diags)
+
+    def test_the_parser_cache_is_reset_between_documents(self):
+        self.open_spec()
+        other = file_uri(os.path.join(ROOT, "specs", "face_filter.spec"))
+        self.open_spec(read(os.path.join(ROOT, "specs", "face_filter.spec")), uri=other)
+        status = self.c.request("arbc/status", None)
+        self.assertGreaterEqual(status["parserCacheResets"], 1)
+
+
+class ClientGone(unittest.TestCase):
+    """A client that disappears: the server exits 1 (no `shutdown`), never hangs or dies of a
+    signal, and says why on stderr."""
+
+    def start(self, process_id=None):
+        proc = subprocess.Popen([ARBC, "lsp", "--no-verify"], stdin=subprocess.PIPE,
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        body = json.dumps({"jsonrpc": "2.0", "id": 1, "method": "initialize",
+                           "params": {"processId": process_id, "capabilities": {}}}).encode()
+        proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        proc.stdin.flush()
+        header = proc.stdout.readline()
+        self.assertTrue(header.startswith(b"Content-Length:"), header)
+        return proc
+
+    def finish(self, proc, why):
+        try:
+            code = proc.wait(timeout=30)
+        finally:
+            if proc.poll() is None:
+                proc.kill()
+        err = proc.stderr.read().decode()
+        self.assertEqual(code, 1, err)
+        self.assertIn(why, err)
+
+    def test_input_ends_inside_a_message(self):
+        proc = self.start()
+        proc.stdin.write(b"Content-Length: 100\r\n\r\n{\"jsonrpc\"")
+        proc.stdin.close()
+        self.finish(proc, "the input ended inside a message body")
+
+    def test_the_client_stops_reading(self):
+        proc = self.start()
+        proc.stdout.close()
+        body = json.dumps({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}).encode()
+        for _ in range(3):  # the first answer may still fit in the pipe's buffer
+            try:
+                proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+                proc.stdin.flush()
+            except BrokenPipeError:
+                break
+        self.finish(proc, "the client stopped reading")
+        proc.stdin.close()
+
+    def test_the_client_process_is_gone(self):
+        client = subprocess.Popen(["sleep", "0.5"])
+        proc = self.start(process_id=client.pid)
+        client.wait()  # gone and reaped; the server's pipes stay open
+        self.finish(proc, "the client's process %d is gone" % client.pid)
+        proc.stdin.close()
+
+
+if __name__ == "__main__":
+    ARBC = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=2)
