@@ -101,9 +101,9 @@ struct VerifyReport {
   std::string app;
   std::string spec_file;
   std::vector<PortResult> ports;
-  std::vector<Finding> app_findings;  // findings not about one arbitrated port
+  std::vector<Finding> app_findings;     // findings not about one arbitrated port
   std::vector<TemporalResult> temporal;  // properties over time, in spec order
-  Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
+  Verdict verdict = Verdict::Proved;     // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;
 

@@ -94,6 +94,33 @@ Json port_json(const PortResult& p, bool stats) {
   return j;
 }
 
+// A property over time: its verdict with the bound, and a violation's timed trace.
+Json temporal_json(const TemporalResult& t) {
+  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown"};
+  Json j;
+  j["kind"] = "spacing";
+  j["port"] = t.property.port;
+  j["rule"] = t.property.rule;
+  j["window"] = t.property.window;
+  j["location"] = location_json(t.property.loc);
+  j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
+  j["bound"] = t.bound;
+  j["replayed"] = false;  // the runtime replay is not wired yet (docs/design.md)
+  j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
+  j["trace"] = Json::array();
+  for (const TraceStep& s : t.trace) {
+    j["trace"].push_back({{"t", s.time},
+                          {"source", s.source},
+                          {"connection", s.connection},
+                          {"feed", s.feed},
+                          {"accepted", s.accepted},
+                          {"delivered", s.delivered},
+                          {"set", s.set},
+                          {"unset", s.unset}});
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
@@ -117,6 +144,11 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     for (const PortResult& p : r.ports) j["ports"].push_back(port_json(p, stats));
     j["findings"] = Json::array();
     for (const Finding& f : r.app_findings) j["findings"].push_back(finding_json(f));
+    // Only when the app has properties over time, so other reports keep their bytes.
+    if (!r.temporal.empty()) {
+      j["temporal"] = Json::array();
+      for (const TemporalResult& t : r.temporal) j["temporal"].push_back(temporal_json(t));
+    }
     j["diagnostics"] = Json::array();
     j["errors"] = r.count(Severity::Error);
     j["warnings"] = r.count(Severity::Warning);

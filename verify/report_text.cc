@@ -1,8 +1,9 @@
+#include "verify/temporal/report_text.h"
+
 #include <cstdio>
 
 #include "core/join.h"
 #include "verify/report_format.h"
-#include "verify/temporal/report_text.h"
 
 namespace arbc::verify {
 namespace {

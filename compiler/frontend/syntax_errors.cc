@@ -80,9 +80,9 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
   return false;
 }
 
-const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
-                                             "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert",    "test",   "tests", "never"};
+const std::set<std::string> kDeclKeywords = {
+    "app",       "type",      "const",   "module", "event", "events", "exclusive",
+    "invariant", "arbitrate", "connect", "assert", "test",  "tests",  "never"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

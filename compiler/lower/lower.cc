@@ -84,7 +84,8 @@ class Lowerer {
     for (const ast::NeverDecl& n : spec_.nevers) {
       if (!n.rule_decl || !n.rule_decl->port) continue;  // sema reported it
       app.temporal.push_back({model::TemporalProperty::Kind::Spacing,
-                              n.rule_decl->port->port.qualified(), n.rule, n.window.seconds, n.loc});
+                              n.rule_decl->port->port.qualified(), n.rule, n.window.seconds,
+                              n.loc});
     }
   }
 

@@ -70,6 +70,7 @@ golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spe
 # Properties over time: one holds up to the bound, one is violated with a timed trace.
 golden temporal.txt repo 1 tests/verify/temporal.spec
 golden temporal_bound.txt repo 0 --temporal-bound 2 tests/verify/temporal.spec
+golden temporal.json repo 1 --format json tests/verify/temporal.spec
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1

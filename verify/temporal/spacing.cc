@@ -31,9 +31,10 @@ z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string
     z3::check_result r = solver.check();
     if (r == z3::unknown) {
       std::string why = solver.reason_unknown();
-      *reason = why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
-                    ? "timeout"
-                    : "resource limit (" + why + ")";
+      *reason =
+          why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
+              ? "timeout"
+              : "resource limit (" + why + ")";
     }
     return r;
   } catch (const z3::exception& e) {
@@ -55,9 +56,8 @@ z3::expr violation(const Unrolling& u, int r, int n, double window, z3::context&
 
 }  // namespace
 
-std::optional<TemporalResult> check_spacing(const model::App& app,
-                                            const model::TemporalProperty& p, int bound,
-                                            z3::context& ctx, Clock::time_point deadline,
+std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
+                                            int bound, z3::context& ctx, Clock::time_point deadline,
                                             std::string* err) {
   std::optional<PortShape> shape = port_shape(app, p.port, err);
   if (!shape) return std::nullopt;

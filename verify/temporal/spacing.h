@@ -20,9 +20,8 @@ inline constexpr int kDefaultBound = 8;
 
 // The verdict for `p` up to `bound` messages; unknown when the deadline passes. nullopt and
 // *err when `p` names a port or rule the model does not have (bad input, not a verdict).
-std::optional<TemporalResult> check_spacing(const model::App& app,
-                                            const model::TemporalProperty& p, int bound,
-                                            z3::context& ctx,
+std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
+                                            int bound, z3::context& ctx,
                                             std::chrono::steady_clock::time_point deadline,
                                             std::string* err);
 

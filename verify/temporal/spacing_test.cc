@@ -94,8 +94,8 @@ TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
 TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "pull",
-                            1.0, {}};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "pull", 1.0, {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_spacing(testing::table_clean_model(), p, 4, ctx, deadline, &error));
   EXPECT_NE(error.find("does not have"), std::string::npos) << error;

@@ -20,10 +20,10 @@ namespace arbc::verify::temporal {
 // One entry of the container: `event` as set by connection `owner`.
 struct Entry {
   std::string event;
-  int owner = 0;  // index into PortSteps::connections
-  bool activity = false;              // the owner's `by priority` activity event
-  std::optional<double> lifetime;     // fixed lifetime; none with !free_lifetime: no expiry
-  bool free_lifetime = false;         // `set e for D` in rule code: D is not in the model
+  int owner = 0;                   // index into PortSteps::connections
+  bool activity = false;           // the owner's `by priority` activity event
+  std::optional<double> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
+  bool free_lifetime = false;      // `set e for D` in rule code: D is not in the model
 };
 
 // What the unrolling needs of the port, read from the model once.
