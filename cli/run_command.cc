@@ -1,5 +1,7 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
 //                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
+//                    [--transport inproc|dds] [--host ..] [--mediate ..] [--deploy FILE]
+//                    [--domain N] [--time-scale K]  (these six: cli/run_transport.h)
 //                    [--inputs FILE] [--stub] [--stub-rate PORT=HZ]... [--diff TRACE]`
 // Runs a built application on the embedded runtime (docs/runtime.md), prints the
 // per-connection counters and the environment's verdict. Exit: 0 success, 2 bad input,
@@ -26,6 +28,7 @@
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
 #include "cli/run_stand_ins.h"
+#include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "runtime/app_loader.h"
@@ -129,7 +132,8 @@ struct RunArgs {
   bool no_verify = false;
   RunOptions options;
   std::string report_path;
-  RunStandIns stand_ins;  // --inputs, --stub, --stub-rate, --diff
+  TransportFlags transport;  // --transport, --host, --mediate, ... (cli/run_transport.h)
+  RunStandIns stand_ins;     // --inputs, --stub, --stub-rate, --diff
 };
 
 // Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -153,6 +157,7 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
+  add_transport_options(cli, &a.transport);
   a.stand_ins.add_options(cli);  // --inputs, --stub, --stub-rate, --diff
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
@@ -200,12 +205,14 @@ int run_command(std::span<char*> args) {
     print_errors(load.errors);
     return kExitBadInput;
   }
+  int placed = apply_transport(a.transport, load.app, &options);
+  if (placed != kExitOk) return placed;
   if (!stand_ins.prepare(load.app, &error)) {
     print_errors({error});
     return kExitBadInput;
   }
-  std::vector<std::string> mismatches =
-      check_modules(load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry());
+  std::vector<std::string> mismatches = check_modules(
+      load.app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
     return kExitBadInput;
@@ -233,7 +240,8 @@ int run_command(std::span<char*> args) {
     }
   }
 
-  RunEnd end{load.app, *runtime, options, records, a.report_path, report_file, proof};
+  RunEnd end{load.app,      *runtime,    options, records,
+             a.report_path, report_file, proof,   describe_transport(a.transport, options)};
   if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(load.app); };
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);

@@ -26,22 +26,24 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
   h.success = success;
   h.verdict = verdict;
   h.environment = environment;
-  std::vector<ConnectionStats> stats = end.runtime.stats();  // in the app's connection order
-  for (size_t i = 0; i < stats.size() && i < end.app.connections.size(); ++i) {
-    const model::Connection& c = end.app.connections[i];
+  for (const ConnectionStats& s : end.runtime.stats()) {  // the connections mediated here
+    const model::Connection& c = end.app.connections[s.model_index];
     input.connections.push_back(
-        {stats[i], c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
+        {s, c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
   }
   input.records = &end.records;
   return input;
 }
 
 void print_run_line(const RunEnd& end, const std::string& stop_reason) {
-  std::printf("app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", end.app.name.c_str(),
-              end.runtime.scenario().c_str(), static_cast<unsigned long long>(end.options.seed),
-              end.options.realtime ? "real" : "simulated", end.runtime.now(),
-              stop_reason.empty() ? "" : ", stopped: ", stop_reason.c_str());
+  std::printf(
+      "app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", end.app.name.c_str(),
+      end.runtime.scenario().c_str(), static_cast<unsigned long long>(end.options.seed),
+      end.options.realtime ? (end.options.time_scale != 1 ? "scaled real" : "real") : "simulated",
+      end.runtime.now(), stop_reason.empty() ? "" : ", stopped: ", stop_reason.c_str());
+  if (!end.placement.empty()) std::printf("transport: %s\n", end.placement.c_str());
   std::fputs(end.runtime.stats_table().c_str(), stdout);
+  std::fputs(end.runtime.transport_summary().c_str(), stdout);
 }
 
 // Writes the report, if one was asked for; false (after saying why) when it cannot be written.

@@ -21,6 +21,7 @@ struct RunEnd {
   const std::string& report_path;           // empty: no report
   report::ReportFile& report_file;
   const std::string& proof;  // "verified: ..." or "not verified (--no-verify)", for the report
+  std::string placement;     // "dds (domain 7, ...)" (cli/run_transport.h); "" in-process
   // Not empty: what the stand-ins received (cli/run_stand_ins.h), printed after the
   // environment's summary and shown with it in the report.
   std::function<std::string()> stand_ins = {};

@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_loader.h"
+#include "cli/monitor_runner.h"
 #include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
@@ -95,6 +96,11 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "messages into a port that properties over time (`never two`) are explored to")
       ->check(CLI::Range(2, 64))
       ->capture_default_str();
+  cli.add_option("--list-bound", a.options.list_bound,
+                 "lists in messages are assumed to have at most this many elements when "
+                 "proving properties of message data")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
@@ -105,6 +111,19 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   return std::nullopt;
+}
+
+// A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
+void print_internal_errors(const std::vector<verify::InputReport>& reports) {
+  for (const verify::InputReport& r : reports) {
+    for (const verify::PortResult& p : r.report.ports) {
+      for (const verify::Finding& f : p.findings) {
+        if (f.check == verify::kCheckInternal) {
+          std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -149,7 +168,10 @@ int verify_command(std::span<char*> args) {
       bad_input = true;
       continue;
     }
-    std::optional<verify::VerifyReport> report = verify::verify_app(*app, a.options, &error);
+    LuaMonitorRunner runner(input, *app);
+    verify::VerifyOptions options = a.options;
+    options.runner = &runner;
+    std::optional<verify::VerifyReport> report = verify::verify_app(*app, options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
       reports.push_back({input, {}, {file_error(input, error, "app-json")}});
@@ -159,17 +181,7 @@ int verify_command(std::span<char*> args) {
     reports.push_back({input, std::move(*report)});
   }
 
-  // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
-  for (const verify::InputReport& r : reports) {
-    for (const verify::PortResult& p : r.report.ports) {
-      for (const verify::Finding& f : p.findings) {
-        if (f.check == verify::kCheckInternal) {
-          std::fprintf(stderr, "arbc verify: %s\n", f.message.c_str());
-        }
-      }
-    }
-  }
-
+  print_internal_errors(reports);
   std::string out;
   if (a.format == "json") {
     out = verify::format_json(reports, a.stats);

@@ -4,6 +4,7 @@
 
 #include "cli/build_summary.h"
 #include "cli/commands.h"
+#include "cli/monitor_runner.h"
 #include "verify/report_format.h"
 #include "verify/verify.h"
 
@@ -21,6 +22,8 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   VerifyGate gate;
   verify::VerifyOptions options;
   options.strict = strict;
+  LuaMonitorRunner runner(input, app);  // message counterexamples are replayed, as in verify
+  options.runner = &runner;
   std::string error;
   std::optional<verify::VerifyReport> verified = verify::verify_app(app, options, &error);
   if (!verified) {

@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "core/body_text.h"
+
 namespace arbc::model {
 
 using Json = nlohmann::ordered_json;
@@ -125,6 +127,23 @@ bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapE
   return true;
 }
 
+// `"body": ["(accept 3 ...)", ...]` (core/body_text.h); absent: not recorded (nullopt).
+bool read_body(const Json& j, const std::string& path, std::optional<Body>* out, std::string* err) {
+  if (!j.contains("body")) return true;
+  const Json* arr = array_member(j, path, "body", err);
+  if (!arr) return false;
+  Body body;
+  for (size_t i = 0; i < arr->size(); ++i) {
+    std::string p = path + ".body[" + std::to_string(i) + "]", error;
+    if (!(*arr)[i].is_string()) return fail(p + ": expected a string", err);
+    std::optional<BodyStmt> s = parse_body_stmt((*arr)[i].get<std::string>(), &error);
+    if (!s) return fail(p + ": " + error, err);
+    body.push_back(std::move(*s));
+  }
+  *out = std::move(body);
+  return true;
+}
+
 // A constraint is its text (grammar in core/constraint.h), the one representation.
 bool read_constraint(const Json& j, const std::string& path, const char* key, Constraint* out,
                      std::string* err) {
@@ -174,6 +193,12 @@ bool read_header(const Json& root, const std::string& r, App* app, std::string* 
          opt_string(root, r, "spec_file", &app->spec_file, err);
 }
 
+// A named type of the spec (its name names the type on a DDS wire: dds/wire_types.h).
+bool read_named_type(const Json& j, const std::string& p, NamedType* t, std::string* err) {
+  return get_string(j, p, "name", &t->name, err) && read_type(j, p, &t->type, err) &&
+         read_location(j, p, &t->loc, err);
+}
+
 bool read_port(const Json& j, const std::string& p, Port* port, std::string* err) {
   std::string dir;
   if (!get_string(j, p, "name", &port->name, err) || !get_string(j, p, "direction", &dir, err))
@@ -220,7 +245,7 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          string_list(j, p, "must_set", &c->must_set, err) &&
          string_list(j, p, "must_unset", &c->must_unset, err) &&
          opt_string(j, p, "activity_event", &c->activity_event, err) &&
-         opt_bool(j, p, "opaque", &c->opaque, err) &&
+         opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
          opt_number(j, p, "trig_interval", &c->trig_interval, err) &&
          opt_number(j, p, "throttle", &c->throttle, err) &&
          opt_string(j, p, "monitor", &c->monitor, err) &&
@@ -269,11 +294,25 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   return read_location(j, p, &t->loc, err);
 }
 
+// A resource: its name, its ports and, optionally, the predicate saying which commands use it.
+bool read_resource(const Json& j, const std::string& p, Resource* res, std::string* err) {
+  if (!get_string(j, p, "name", &res->name, err) || !string_list(j, p, "ports", &res->ports, err))
+    return false;
+  if (j.contains("uses")) {
+    std::string text, error;
+    if (!get_string(j, p, "uses", &text, err)) return false;
+    res->uses = parse_body_expr(text, &error);
+    if (!res->uses) return fail(p + ".uses: " + error, err);
+  }
+  return read_location(j, p, &res->loc, err);
+}
+
 // The model in `root`, section by section; nullopt and *err at the first bad value.
 std::optional<App> read_app(const Json& root, std::string* err) {
   App app;
   const std::string r = "app.json";
   bool ok = read_header(root, r, &app, err) &&
+            read_array(root, r, "", "types", false, &app.types, read_named_type, err) &&
             read_array(root, r, "", "modules", true, &app.modules, read_module, err) &&
             read_array(root, r, "", "events", false, &app.events, read_event, err) &&
             read_array(root, r, "", "connections", true, &app.connections, read_connection, err) &&
@@ -282,6 +321,7 @@ std::optional<App> read_app(const Json& root, std::string* err) {
             read_array(root, r, "", "exclusive_groups", false, &app.exclusive_groups,
                        read_exclusive_group, err) &&
             read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
+            read_array(root, r, "", "resources", false, &app.resources, read_resource, err) &&
             read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err);
   if (!ok) return std::nullopt;
   return app;

@@ -1,6 +1,7 @@
 // to_app_json: the core model as app.json text (docs/app-json.md), written in one pass with
 // JsonWriter. Reading it back is app_json.cc's job.
 #include "core/app_json.h"
+#include "core/body_text.h"
 #include "core/json_writer.h"
 
 namespace arbc::model {
@@ -77,6 +78,12 @@ void write_connection(JsonWriter& w, const Connection& c) {
   w.member("must_unset", c.must_unset);
   w.member("activity_event", c.activity_event);
   w.member("opaque", c.opaque);
+  if (c.body) {
+    w.key("body");
+    w.begin_array();
+    for (const BodyStmt& s : *c.body) w.value(body_stmt_text(s));
+    w.end_array();
+  }
   write_optional(w, "trig_interval", c.trig_interval);
   write_optional(w, "throttle", c.throttle);
   w.member("monitor", c.monitor);
@@ -114,6 +121,43 @@ void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
   w.end_object();
 }
 
+// The `resources` section.
+void write_resources(JsonWriter& w, const std::vector<Resource>& resources) {
+  if (!resources.empty()) {  // absent when none: apps without resources keep their bytes
+    w.key("resources");
+    w.begin_array();
+    for (const Resource& r : resources) {
+      w.begin_object();
+      w.member("name", r.name);
+      w.member("ports", r.ports);
+      if (r.uses) w.member("uses", body_expr_text(*r.uses));
+      write_location(w, r.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
+}
+
+// The `temporal` section (properties over time).
+void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal) {
+  // Written only when there are some: every app.json written before properties over time
+  // existed reads the same, and its bytes (and digests in goldens) do not change.
+  if (!temporal.empty()) {
+    w.key("temporal");
+    w.begin_array();
+    for (const TemporalProperty& t : temporal) {
+      w.begin_object();
+      w.member("kind", "spacing");
+      w.member("port", t.port);
+      w.member("rule", t.rule);
+      w.member("window", t.window);
+      write_location(w, t.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
+}
+
 }  // namespace
 
 std::string to_app_json(const App& app) {
@@ -123,6 +167,16 @@ std::string to_app_json(const App& app) {
   w.member("name", app.name);
   w.member("description", app.description);
   w.member("spec_file", app.spec_file);
+  w.key("types");
+  w.begin_array();
+  for (const NamedType& t : app.types) {
+    w.begin_object();
+    w.member("name", t.name);
+    w.member("type", t.type ? t.type->to_string() : "");
+    write_location(w, t.loc);
+    w.end_object();
+  }
+  w.end_array();
   w.key("modules");
   w.begin_array();
   for (const Module& m : app.modules) write_module(w, m);
@@ -164,22 +218,8 @@ std::string to_app_json(const App& app) {
     w.end_object();
   }
   w.end_array();
-  // Written only when there are some: every app.json written before properties over time
-  // existed reads the same, and its bytes (and digests in goldens) do not change.
-  if (!app.temporal.empty()) {
-    w.key("temporal");
-    w.begin_array();
-    for (const TemporalProperty& t : app.temporal) {
-      w.begin_object();
-      w.member("kind", "spacing");
-      w.member("port", t.port);
-      w.member("rule", t.rule);
-      w.member("window", t.window);
-      write_location(w, t.loc);
-      w.end_object();
-    }
-    w.end_array();
-  }
+  write_resources(w, app.resources);
+  write_temporal(w, app.temporal);
   w.end_object();
   return w.take() + "\n";
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/body.h"
 #include "core/constraint.h"
 #include "core/type.h"
 
@@ -31,6 +32,14 @@ enum class Direction { In, Out };
 struct Port {
   std::string name;
   Direction direction = Direction::In;
+  TypePtr type;
+  SourceLocation loc;
+};
+
+// `type Name = T;`: a named type of the spec, for the transports that name types on the wire
+// (DDS, docs/distributed.md). Port and field types are structural (named types expanded).
+struct NamedType {
+  std::string name;
   TypePtr type;
   SourceLocation loc;
 };
@@ -81,7 +90,10 @@ struct Connection {
   // so it is not in must_set, but the effective guard includes it (core/effective_guard.h).
   // Also listed in `sets`: the connection owns its entries. Empty: none.
   std::string activity_event;
-  bool opaque = false;                  // a `script` rule: its code is not analysed
+  bool opaque = false;  // a `script` rule: its code is not analysed
+  // The generated monitor's body, for proofs over message data (core/body.h). nullopt: not
+  // recorded (a script, a feed, an app.json written before bodies were): opaque for data.
+  std::optional<Body> body;
   std::optional<double> trig_interval;  // seconds, from `every`
   std::optional<double> throttle;       // seconds, from `throttle`
   std::string monitor;                  // Lua file relative to the app directory; empty: none
@@ -133,11 +145,22 @@ struct TemporalProperty {
   SourceLocation loc;
 };
 
+// `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
+// uses the resource, for one message or two (docs/checks.md#resource).
+struct Resource {
+  std::string name;
+  std::vector<std::string> ports;  // "Module.port", arbitrated, in spec order
+  // Over the delivered value (BodyExpr::Op::Message); nullopt: every command uses it.
+  std::optional<BodyExpr> uses;
+  SourceLocation loc;
+};
+
 struct App {
   int schema_version = kSchemaVersion;
   std::string name;
   std::string description;
   std::string spec_file;
+  std::vector<NamedType> types;  // in declaration order
   std::vector<Module> modules;
   std::vector<Event> events;
   std::vector<Connection> connections;
@@ -145,6 +168,7 @@ struct App {
   std::vector<ExclusiveGroup> exclusive_groups;
   std::vector<Invariant> invariants;
   std::vector<TemporalProperty> temporal;
+  std::vector<Resource> resources;
 
   const Module* find_module(std::string_view name) const;
   const Port* find_port(std::string_view qualified) const;  // "Module.port"

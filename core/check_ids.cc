@@ -48,6 +48,12 @@ constexpr CheckId kIds[] = {
     {"predicate-type", kCheck, "a derived event's predicate is not bool"},
     {"priority", kCheck,
      "a declared event takes the name of a `by priority` activity event (act_<rule>)"},
+    {"resource", kVerify,
+     "two ports of a `resource` can each receive a command that uses it, from one message or "
+     "two"},
+    {"resource-port", kCheck,
+     "a `resource` lists a port that is not arbitrated, a port twice, or fewer than two ports"},
+    {"resource-type", kCheck, "the ports of a `resource` have different types"},
     {"script", kCheck, "a `script` file that cannot be read or does not compile as Lua"},
     {"script-alone", kCheck, "a body with `script` that contains other statements"},
     {"script-missing", kCheck, "a `script` file that does not exist beside the spec"},

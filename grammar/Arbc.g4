@@ -29,6 +29,7 @@ decl
   | arbitrateDecl
   | connectDecl
   | assertDecl
+  | resourceDecl
   | testDecl
   | testsForDecl
   ;
@@ -51,6 +52,8 @@ arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete=
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;
 assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
+// A resource shared by several ports: at most one of them receives a command that uses it.
+resourceDecl     : 'resource' ID '{' portRef (',' portRef)* ','? '}' ('when' expr)? ';' ;
 
 // `arbc test` (docs/testing.md): timed inputs and expectations, checked by the front end and
 // run on the embedded runtime in simulated time. Not part of the app: lowering ignores them.

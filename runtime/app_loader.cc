@@ -46,9 +46,10 @@ AppDirLoad load_app_dir(const std::string& dir) {
 }
 
 std::vector<std::string> check_modules(const model::App& app, const std::string& app_file,
-                                       const Registry& registry) {
+                                       const Registry& registry, const ModuleSet& hosted) {
   std::vector<std::string> errors;
   for (const model::Module& m : app.modules) {
+    if (!hosted.contains(m.name)) continue;  // runs in another process: not needed here
     const ModuleFactory* factory = registry.find_module(m.name);
     if (!factory) {
       std::string known = join(registry.module_names());

@@ -7,6 +7,7 @@
 
 #include "core/app_model.h"
 #include "runtime/module.h"
+#include "runtime/transport.h"
 
 namespace arbc {
 
@@ -21,9 +22,11 @@ struct AppDirLoad {
 // whose SHA-256 app.json records (core/monitor_digests.h).
 AppDirLoad load_app_dir(const std::string& dir);
 
-// Checks that each module of the app is registered and declares the app's ports with the
-// same direction and type (same_type). Returns one message per problem; empty when fine.
+// Checks that each module of the app that this process hosts is registered and declares the
+// app's ports with the same direction and type (same_type). Returns one message per problem;
+// empty when fine.
 std::vector<std::string> check_modules(const model::App& app, const std::string& app_file,
-                                       const Registry& registry = Registry::global());
+                                       const Registry& registry = Registry::global(),
+                                       const ModuleSet& hosted = ModuleSet::everything());
 
 }  // namespace arbc

@@ -41,7 +41,7 @@ void SimulatedExecutor::run(double until) {
 }
 
 double RealtimeExecutor::now() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return scale_ * std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 Executor::TaskId RealtimeExecutor::post(double at, std::function<void()> fn) {
@@ -73,7 +73,7 @@ void RealtimeExecutor::run(double until) {
   stopped_ = false;
   auto deadline_of = [&](double t) {
     return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                        std::chrono::duration<double>(t));
+                        std::chrono::duration<double>(t / scale_));
   };
   while (!stopped_ && !interrupted()) {
     double t = now();

@@ -73,9 +73,13 @@ class SimulatedExecutor : public Executor {
   bool stopped_ = false;
 };
 
+// Time is the wall time since construction, times `scale` (a distributed run's --time-scale:
+// every process of the run uses the same scale, so a simulated world can run faster than real
+// time across processes).
 class RealtimeExecutor : public Executor {
  public:
-  RealtimeExecutor() : start_(std::chrono::steady_clock::now()) {}
+  explicit RealtimeExecutor(double scale = 1)
+      : start_(std::chrono::steady_clock::now()), scale_(scale) {}
   double now() const override;
   TaskId post(double at, std::function<void()> fn) override;
   void cancel(TaskId id) override;
@@ -85,6 +89,7 @@ class RealtimeExecutor : public Executor {
 
  private:
   std::chrono::steady_clock::time_point start_;
+  double scale_ = 1;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   TaskQueue queue_;

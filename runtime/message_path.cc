@@ -51,11 +51,52 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     return;
   }
   if (trace_.enabled()) trace_.publish(now(), out.qualified, v);
-  for (Connection* c : out.connections) enqueue(*c, v);
+  transport_->publish(out.index, v);
 }
 
-void Runtime::enqueue(Connection& c, const Value& v) {
+// A message from `out` for the connections mediated here. One from a module hosted elsewhere
+// is this process's input: traced as a `publish` line here (a hosted one was, in publish_from).
+void Runtime::from_source(OutPort& out, const Value& v, uint64_t answered) {
+  if (!out.hosted && trace_.enabled()) trace_.publish(now(), out.qualified, v);
+  ++arrivals_;
+  for (Connection* c : out.connections) enqueue(*c, v, answered);
+}
+
+void Runtime::to_module(InPort& in, const Delivery& d) {
+  if (!in.slot) return;  // the transport routes only to hosted modules; defensive
+  if (!in.mediated) {
+    ++in.stats.arrived;
+    ++in.stats.delivered;
+  }
+  // The message was delivered; if the module throws handling it, that is the module's fault.
+  in.slot->guarded("on_delivery", [&] { in.module->on_delivery(d); });
+}
+
+// Counted where the message was going: on each connection from an output (as a publish of a
+// bad value is), or on a hosted module's input mediated by another process.
+void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
+                   const std::string& detail) {
+  if (input) {
+    InPort& in = *in_ports_[static_cast<size_t>(index)];
+    in.stats.arrived += count;
+    in.stats.dropped[static_cast<int>(reason)] += count;
+    trace_.publish_error(now(), in.qualified,
+                         std::string(drop_reason_name(reason)) + ": " + detail);
+    return;
+  }
+  OutPort& out = *out_ports_[static_cast<size_t>(index)];
+  for (Connection* c : out.connections) {
+    for (uint64_t k = 0; k < count; ++k) {
+      ++c->stats.arrived;
+      drop(*c, reason, detail);
+    }
+  }
+}
+
+void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   ++c.stats.arrived;
+  c.last_arrival = now();
+  if (!c.silence_reported.empty()) c.silence_reported.clear();
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
     return;
@@ -64,7 +105,7 @@ void Runtime::enqueue(Connection& c, const Value& v) {
     drop(c, DropReason::QueueFull);
     return;
   }
-  c.queue.push_back(v);
+  c.queue.push_back({v, answered, arrivals_});
   if (!c.drain_posted) {
     c.drain_posted = true;
     executor_->post(now(), [this, &c] { drain(c); });
@@ -75,7 +116,9 @@ void Runtime::enqueue(Connection& c, const Value& v) {
 void Runtime::drain(Connection& c) {
   c.drain_posted = false;
   if (c.queue.empty()) return;
-  Value msg = std::move(c.queue.front());
+  Value msg = std::move(c.queue.front().value);
+  c.incoming_answered = c.queue.front().answered;
+  c.message = c.queue.front().message;
   c.queue.pop_front();
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
@@ -90,42 +133,59 @@ void Runtime::drain(Connection& c) {
 
 // --- the path ----------------------------------------------------------------------------
 
+// Step 1 of the path: the monitor's accept (which also stages the message for update).
+// False when it dropped the message (counted with its reason).
+bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
+  if (!c.monitor || !(c.has_accept || c.has_update)) return true;
+  bool accepted = false;
+  std::string reason;
+  LuaCall call;
+  {
+    BusyScope busy(busy_, "monitor", c.name, "accept");
+    call = c.monitor->accept(msg, &accepted, &reason);
+  }
+  if (call.status == LuaCall::Status::NoValue) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NoValue, "accept");
+    return false;
+  }
+  if (!call.ok()) {
+    drop(c, DropReason::MonitorError, call.error);
+    monitor_failed(c, call, "accept");
+    return false;
+  }
+  c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
+  c.answered = std::max(c.answered, c.incoming_answered);  // answered_deliveries.cc
+  if (accepted) return true;
+  c.consecutive_errors = 0;
+  if (reason == drop_reason_name(DropReason::NoValue)) {
+    drop(c, DropReason::NoValue, "accept");
+  } else if (reason == drop_reason_name(DropReason::Throttled)) {
+    drop(c, DropReason::Throttled, "accept");
+  } else if (c.is_feed && reason.empty()) {
+    drop(c, DropReason::Feed);  // a feed's accept may itself say "never deliver"
+  } else {
+    drop(c, DropReason::Rejected, reason);
+  }
+  return false;
+}
+
 void Runtime::process(Connection& c, const Value& msg) {
   double t = now();
   // 1. accept (also stages the message for update).
-  if (c.monitor && (c.has_accept || c.has_update)) {
-    bool accepted = false;
-    std::string reason;
-    LuaCall call;
-    {
-      BusyScope busy(busy_, "monitor", c.name, "accept");
-      call = c.monitor->accept(msg, &accepted, &reason);
-    }
-    if (call.status == LuaCall::Status::NoValue) {
-      c.consecutive_errors = 0;
-      drop(c, DropReason::NoValue, "accept");
-      return;
-    }
-    if (!call.ok()) {
-      drop(c, DropReason::MonitorError, call.error);
-      monitor_failed(c, call, "accept");
-      return;
-    }
-    if (!accepted) {
-      c.consecutive_errors = 0;
-      if (reason == drop_reason_name(DropReason::NoValue)) {
-        drop(c, DropReason::NoValue, "accept");
-      } else if (reason == drop_reason_name(DropReason::Throttled)) {
-        drop(c, DropReason::Throttled, "accept");
-      } else if (c.is_feed && reason.empty()) {
-        drop(c, DropReason::Feed);  // a feed's accept may itself say "never deliver"
-      } else {
-        drop(c, DropReason::Rejected, reason);
-      }
-      return;
-    }
+  if (!accepted_by_monitor(c, msg)) return;
+  // 2. the constraint, on the container as accept left it; never on events not known yet.
+  std::string unknown;
+  if (!c.unknown.empty() && !knows_events_of(c, t, &unknown)) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NotSelected, unknown);
+    return;
   }
-  // 2. the constraint, on the container as accept left it.
+  if (!c.feedback.empty() && !answered_events_of(c, t, &unknown)) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NotSelected, unknown);
+    return;
+  }
   if (!c.constraint.evaluate(c.destination->container.present(t))) {
     c.consecutive_errors = 0;
     drop(c, c.is_feed ? DropReason::Feed : DropReason::NotSelected);
@@ -166,8 +226,8 @@ void Runtime::process(Connection& c, const Value& msg) {
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
   Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
-  // The message was delivered; if the module throws handling it, that is the module's fault.
-  c.destination->slot->guarded("on_delivery", [&] { c.destination->module->on_delivery(d); });
+  if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
+  transport_->deliver(c.destination->index, d);
 }
 
 void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {

@@ -40,6 +40,7 @@
 #include "runtime/lua_monitor.h"
 #include "runtime/module.h"
 #include "runtime/trace.h"
+#include "runtime/transport.h"
 
 namespace arbc {
 
@@ -48,6 +49,23 @@ struct RunOptions {
   uint64_t seed = 1;
   double duration = 60;  // seconds of (simulated or wall) time
   bool realtime = false;
+  double time_scale = 1;  // realtime: run time is time_scale times wall time
+  // Where each module runs (docs/design.md#transports): the modules this process hosts (their
+  // plugin instances run here; an environment is set up only when some module is hosted), and
+  // the modules it mediates (the connections into their input ports run here; none: the
+  // hosted modules). The in-process transport needs every module in both.
+  ModuleSet host;
+  std::optional<ModuleSet> mediate;
+  // Where messages between ports go; nullptr: make_inproc_transport().
+  std::shared_ptr<Transport> transport;
+  // After a (re)start this process knows no event: a rule whose constraint reads an event that
+  // a feed provides is not selected until that feed has delivered once since start, or the
+  // event's lifetime has passed (docs/design.md#unknown-events-after-a-start). On for
+  // distributed runs, where the modules do not start with the mediator.
+  bool unknown_until_fed = false;
+  // Report (once per silence) an event that lapses because its feed's source sent nothing for
+  // its lifetime: in a distributed run, the sign that a peer is gone.
+  bool report_silent_lapses = false;
   std::string trace_path;  // empty: no trace
   // Not null: every trace record is also appended here (for `arbc run --report`); the
   // vector must outlive the run.
@@ -64,10 +82,20 @@ struct RunOptions {
 // Counters of one connection, for the end-of-run table and tests.
 struct ConnectionStats {
   std::string name, source, destination;
+  size_t model_index = 0;  // the connection's position in the app's (app.json's) connections
   uint64_t arrived = 0, delivered = 0, errors = 0;
   uint64_t pending = 0;  // still queued when the run ended (arrived = delivered + drops + pending)
   std::array<uint64_t, kDropReasonCount> dropped{};
   bool quarantined = false;
+  uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
+};
+
+// Messages for an input of a module hosted here that another process mediates: what arrived
+// through the transport and what it lost before delivery (bad-type, queue-full).
+struct InputStats {
+  std::string port;                     // "Module.port"
+  uint64_t arrived = 0, delivered = 0;  // arrived = delivered + drops
+  std::array<uint64_t, kDropReasonCount> dropped{};
   uint64_t drops(DropReason r) const { return dropped[static_cast<int>(r)]; }
 };
 
@@ -108,6 +136,11 @@ class Runtime {
   const std::string& stop_reason() const { return stop_reason_; }
   bool stopped_early() const { return !stop_reason_.empty(); }
   std::vector<ConnectionStats> stats() const;
+  // Inputs of hosted modules mediated by another process (empty in a single-process run).
+  std::vector<InputStats> input_stats() const;
+  // The transport's name ("inproc", "dds") and its end-of-run lines.
+  std::string transport_name() const;
+  std::string transport_summary() const;
   // A table of the counters, one row per connection.
   std::string stats_table() const;
   // Where run-time problems are reported (default: stderr). Each distinct script error is
@@ -128,17 +161,52 @@ class Runtime {
   // shut down: writes `why` as a last log record and closes the trace.
   void abandon_trace(const std::string& why);
 
+  struct RemoteModule;
   struct InPort;
   struct OutPort;
   struct Connection;
   struct PluginGuard;
   class ModuleSlot;
   class EnvironmentSlot;
+  class TransportLink;
 
  private:
-  Runtime() = default;
+  Runtime();
+  // The steps of create(), in order; each false with *error on bad input.
+  bool create_environment(const Registry& registry, std::string* error);
+  bool create_modules(const Registry& registry, std::string* error);
+  bool create_module_slot(const model::Module& m, const ModuleFactory& factory, std::string* error);
+  void create_ports(const model::Module& m, ModuleSlot* slot);
+  bool create_connections(const std::string& app_dir, std::string* error);
+  bool create_connection(size_t i, const std::string& display_name, const std::string& app_dir,
+                         std::string* error);
+  bool open_trace(std::string* error);
+  bool open_transport(std::string* error);
+  // Routes a message published on `out` to each connection from it mediated here.
+  void from_source(OutPort& out, const Value& v, uint64_t answered);
+  // Hands a mediated delivery to the hosted module of input `in`.
+  void to_module(InPort& in, const Delivery& d);
+  void lost(bool input, int index, DropReason reason, uint64_t count, const std::string& detail);
+  std::string input_table() const;
+  std::string connection_table() const;
+  // The unknown-after-start rule: which feed-provided events each rule's constraint reads.
+  void collect_unknown_events();
+  // Removes what is known by now from c.unknown; false (with *why) while something is not.
+  bool knows_events_of(Connection& c, double t, std::string* why);
+  // The deliveries-not-yet-answered rule (answered_deliveries.cc): which events each rule reads
+  // from feeds of modules hosted elsewhere; whether all are answered at t (else *why); and the
+  // bookkeeping of a delivery into a module hosted elsewhere.
+  void collect_feedback_events();
+  bool answered_events_of(Connection& c, double t, std::string* why);
+  void delivered_to_remote(RemoteModule& m, double t, uint64_t message);
+  // An event entry lapsed in `in`'s container; reports it when its source went silent.
+  void lapsed(InPort& in, int event, int owner, double expiry);
+  // Looks at every mediated container each `period` s, so that lapses are seen (and reported)
+  // when they happen even when no message arrives any more.
+  void watch_lapses(double period);
   void report(const std::string& line);
-  void enqueue(Connection& c, const Value& v);
+  bool accepted_by_monitor(Connection& c, const Value& msg);
+  void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
   void process(Connection& c, const Value& msg);
   void drop(Connection& c, DropReason reason, std::string_view detail = {});
@@ -172,8 +240,18 @@ class Runtime {
   std::vector<std::unique_ptr<InPort>> in_ports_;
   std::vector<std::unique_ptr<OutPort>> out_ports_;
   std::vector<std::unique_ptr<Connection>> connections_;
+  std::map<std::string, InPort*, std::less<>> inputs_by_name_;
+  std::map<std::string, OutPort*, std::less<>> outputs_by_name_;
+  std::map<std::string, RemoteModule, std::less<>> remote_modules_;  // by name; stable addresses
+  uint64_t arrivals_ = 0;        // messages from sources so far (each from_source call)
+  uint64_t remote_sent_ = 0;     // deliveries into modules hosted elsewhere so far
+  double longest_lifetime_ = 0;  // of app.json's events: how long delivery times matter
+  ModuleSet host_, mediate_;
+  std::unique_ptr<TransportLink> link_;
+  std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
+  double start_time_ = 0;
   bool started_ = false, shut_down_ = false;
   BusyMarker busy_;
 };

@@ -9,21 +9,45 @@
 
 namespace arbc {
 
+// A generator seeded from the run's seed and a name (a module's, "environment"): deterministic
+// and independent per name.
+std::mt19937_64 seeded_generator(uint64_t seed, std::string_view who);
+
+// A module hosted in another process that connections mediated here deliver to: its recent
+// deliveries (docs/design.md#deliveries-not-yet-answered); older ones no longer matter.
+struct Runtime::RemoteModule {
+  std::string name;
+  struct Sent {
+    uint64_t number = 0;  // among all deliveries into modules hosted elsewhere (1, 2, ...)
+    double time = 0;
+    uint64_t message = 0;  // the arrival it answered (Runtime::arrivals_)
+  };
+  std::deque<Sent> recent;
+};
+
 // An input port of a module instance, with its event container.
 struct Runtime::InPort {
+  int index = 0;          // TransportPort::index
   std::string qualified;  // "Module.port"
   std::string port;
-  Module* module = nullptr;
+  Module* module = nullptr;  // null: the module is not hosted here
   ModuleSlot* slot = nullptr;
   TypePtr type;
+  bool mediated = false;           // the connections into it run here
+  RemoteModule* remote = nullptr;  // its module, when hosted elsewhere
   EventContainer container;
+  std::vector<Connection*> feeds;  // the feed connections into it
+  InputStats stats;                // what arrived mediated by another process
 };
 
 // An output port and the connections leaving it, in model order.
 struct Runtime::OutPort {
+  int index = 0;  // TransportPort::index
   std::string qualified;
   std::string port;
   TypePtr type;
+  bool hosted = false;
+  RemoteModule* remote = nullptr;  // its module, when hosted elsewhere
   std::vector<Connection*> connections;
   std::set<std::string> reported;  // publish errors already reported
 };
@@ -48,12 +72,37 @@ struct Runtime::Connection : MonitorHost {
   // Set when the monitor called setConstraint with another constraint: bad input at load.
   std::string constraint_conflict;
 
-  std::deque<Value> queue;
+  struct Queued {
+    Value value;
+    uint64_t answered = 0;  // TransportSink::from_source's
+    uint64_t message = 0;   // its arrival's number (Runtime::arrivals_)
+  };
+  std::deque<Queued> queue;
   bool drain_posted = false;
   std::optional<double> throttle;
   double last_delivery = -std::numeric_limits<double>::infinity();
   double trig_interval = 0;
   Executor::TaskId trig_task = 0;
+
+  // The unknown-after-start rule (RunOptions::unknown_until_fed): the feed-provided events the
+  // constraint reads that are not known yet, each with its feed and lifetime. Emptied as they
+  // become known; a feed is known once it processed a message since start (`fed`).
+  struct UnknownEvent {
+    std::string event;
+    const Connection* feed = nullptr;
+    std::optional<double> lifetime;
+  };
+  std::vector<UnknownEvent> unknown;
+  // The deliveries-not-yet-answered rule: the events the constraint reads that a feed from a
+  // module hosted elsewhere provides (that module may not have seen what was delivered to it).
+  std::vector<UnknownEvent> feedback;
+  // How many deliveries into modules hosted elsewhere the messages processed answer: the most
+  // of any message so far (a feed), and the message being processed.
+  uint64_t answered = 0, incoming_answered = 0;
+  uint64_t message = 0;  // the arrival number of the message being processed
+  bool fed = false;
+  double last_arrival = -std::numeric_limits<double>::infinity();
+  std::set<std::string> silence_reported;  // events reported lapsed since the last arrival
 
   int consecutive_errors = 0;
   bool quarantined = false;
@@ -69,6 +118,27 @@ struct Runtime::Connection : MonitorHost {
   std::string get_constraint() override { return constraint_text; }
   void set_trig_interval(double seconds) override;
   void print(const std::string& line) override;
+};
+
+// The runtime's side of the transport seam (runtime/transport.h).
+class Runtime::TransportLink : public TransportSink {
+ public:
+  explicit TransportLink(Runtime* runtime) : runtime_(runtime) {}
+  void from_source(int out, const Value& v, uint64_t answered) override {
+    runtime_->from_source(*runtime_->out_ports_[static_cast<size_t>(out)], v, answered);
+  }
+  void to_module(int in, const Delivery& d) override {
+    runtime_->to_module(*runtime_->in_ports_[static_cast<size_t>(in)], d);
+  }
+  void lost(bool input, int index, DropReason reason, uint64_t count,
+            const std::string& detail) override {
+    runtime_->lost(input, index, reason, count, detail);
+  }
+  void report(const std::string& line) override { runtime_->report(line); }
+  Executor& executor() override { return *runtime_->executor_; }
+
+ private:
+  Runtime* runtime_;
 };
 
 // Where plugin code (a module or the environment) runs: exceptions it throws stop there.

@@ -14,6 +14,20 @@ std::vector<ConnectionStats> Runtime::stats() const {
   return out;
 }
 
+std::vector<InputStats> Runtime::input_stats() const {
+  std::vector<InputStats> out;
+  for (const auto& in : in_ports_) {
+    if (in->slot && !in->mediated) out.push_back(in->stats);
+  }
+  return out;
+}
+
+std::string Runtime::transport_name() const { return transport_ ? transport_->name() : "inproc"; }
+
+std::string Runtime::transport_summary() const {
+  return transport_ ? transport_->summary() : std::string();
+}
+
 std::map<std::string, size_t> Runtime::monitor_memory() const {
   std::map<std::string, size_t> out;
   for (const auto& c : connections_) {
@@ -29,12 +43,52 @@ std::vector<PluginStats> Runtime::plugin_stats() const {
   return out;
 }
 
+namespace {
+
+const DropReason kColumns[] = {
+    DropReason::Rejected,    DropReason::NoValue,   DropReason::NotSelected,
+    DropReason::Throttled,   DropReason::Feed,      DropReason::MonitorError,
+    DropReason::Quarantined, DropReason::QueueFull, DropReason::BadType,
+};
+
+}  // namespace
+
+// One row per hosted input that another process mediates: what arrived through the transport
+// and what it lost on the way (only such losses can happen before the module).
+std::string Runtime::input_table() const {
+  std::vector<InputStats> inputs = input_stats();
+  if (inputs.empty()) return {};
+  std::string title = "input (mediated elsewhere)";
+  size_t width = title.size();
+  for (const InputStats& s : inputs) width = std::max(width, s.port.size());
+  char cell[160];
+  std::snprintf(cell, sizeof cell, "%-*s  arrived delivered queue-full bad-type\n",
+                static_cast<int>(width), title.c_str());
+  std::string out = cell;
+  for (const InputStats& s : inputs) {
+    std::snprintf(cell, sizeof cell, "%-*s %8llu %9llu %10llu %8llu\n", static_cast<int>(width),
+                  s.port.c_str(), static_cast<unsigned long long>(s.arrived),
+                  static_cast<unsigned long long>(s.delivered),
+                  static_cast<unsigned long long>(s.drops(DropReason::QueueFull)),
+                  static_cast<unsigned long long>(s.drops(DropReason::BadType)));
+    out += cell;
+  }
+  return out;
+}
+
 std::string Runtime::stats_table() const {
-  static const DropReason kColumns[] = {
-      DropReason::Rejected,    DropReason::NoValue,   DropReason::NotSelected,
-      DropReason::Throttled,   DropReason::Feed,      DropReason::MonitorError,
-      DropReason::Quarantined, DropReason::QueueFull, DropReason::BadType,
-  };
+  std::string out = connection_table();
+  out += input_table();
+  for (const PluginStats& p : plugin_stats()) {
+    if (p.errors == 0) continue;
+    out += p.name + ": " + std::to_string(p.errors) + " exception(s) caught, the run went on\n";
+  }
+  return out;
+}
+
+// One row per connection run here (none in a process that mediates nothing).
+std::string Runtime::connection_table() const {
+  if (connections_.empty()) return {};
   size_t width = 10;
   for (const auto& c : connections_) width = std::max(width, c->name.size());
   std::string out;
@@ -62,10 +116,6 @@ std::string Runtime::stats_table() const {
     std::snprintf(cell, sizeof cell, " %7zu %6llu%s\n", c->queue.size(),
                   static_cast<unsigned long long>(s.errors), s.quarantined ? "  QUARANTINED" : "");
     out += cell;
-  }
-  for (const PluginStats& p : plugin_stats()) {
-    if (p.errors == 0) continue;
-    out += p.name + ": " + std::to_string(p.errors) + " exception(s) caught, the run went on\n";
   }
   return out;
 }

@@ -12,11 +12,13 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyxml2-dev                            # arbc verify APP.xml: yarpmanager applications
   graphviz                                   # arbc docs: app.svg
+  libfastrtps-dev libfastcdr-dev fastddsgen  # arbc_dds: the distributed runtime (Fast-DDS 2.9)
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
              chromium                        # tests/report: the run report in headless Chromium
-             neovim tmux)                    # tests/lsp: Neovim's LSP client in a terminal
+             neovim tmux                     # tests/lsp: Neovim's LSP client in a terminal
+             iproute2)                       # tests/dds: two hosts as network namespaces (ip netns)
   # tests/lsp: the VS Code grammar test runs on Node. A Node.js from elsewhere (with its own
   # npm) is kept: Debian's npm package would conflict with it.
   command -v node >/dev/null || packages+=(nodejs)

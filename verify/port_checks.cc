@@ -1,8 +1,10 @@
 #include "verify/port_checks.h"
 
 #include <algorithm>
+#include <map>
 
 #include "core/join.h"
+#include "verify/data_pair.h"
 #include "verify/replay.h"
 
 namespace arbc::verify {
@@ -64,9 +66,10 @@ Finding internal_error(const PortScope& scope, const std::string& what, const Ev
 class PortChecker {
  public:
   PortChecker(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
-              Clock::time_point deadline, PortResult& result)
+              Clock::time_point deadline, DataQuery& data, PortResult& result)
       : scope_(scope),
         options_(options),
+        data_(data),
         solver_(scope, ctx, deadline),
         shortcut_(scope),
         result_(result) {}
@@ -76,7 +79,7 @@ class PortChecker {
     check_exclusive();
     if (scope_.port->complete) check_complete();
     for (const model::Assertion& a : scope_.port->asserts) check_assert(a);
-    result_.solver_queries = solver_.queries();
+    result_.solver_queries = solver_.queries() + data_queries_;
   }
 
  private:
@@ -150,6 +153,7 @@ class PortChecker {
         result_.findings.push_back(std::move(f));
       }
     }
+    std::map<std::pair<int, int>, DataPair> data = refine_by_data(pairs);
     result_.overlapping_pairs = static_cast<int>(pairs.size());
     int last = -1;  // index of the last reported pair's finding
     for (const auto& [i, j] : pairs) {
@@ -185,6 +189,10 @@ class PortChecker {
            "declare the `invariant` or `exclusive` group that rules this state out",
            {}});
       f.counterexample = std::move(state);
+      if (auto d = data.find({i, j}); d != data.end()) {
+        for (Note& n : d->second.notes) f.notes.push_back(std::move(n));
+        if (d->second.example) f.messages.push_back(std::move(*d->second.example));
+      }
       result_.findings.push_back(std::move(f));
       ++result_.reported_pairs;
       last = static_cast<int>(result_.findings.size()) - 1;
@@ -197,6 +205,37 @@ class PortChecker {
                std::to_string(options_.max_pairs_per_port) + " per port)",
            {}});
     }
+  }
+
+  // Drops from `pairs` those that no one message can select together (same source, both
+  // bodies encodable, no message accepted by both: "exclusive by data"), and returns what the
+  // data says about the others (a message both accept, or why data was not considered).
+  std::map<std::pair<int, int>, DataPair> refine_by_data(std::vector<std::pair<int, int>>& pairs) {
+    std::map<std::pair<int, int>, DataPair> out;
+    std::vector<std::pair<int, int>> kept;
+    for (const auto& [i, j] : pairs) {
+      const model::Connection& a = *scope_.rules[static_cast<size_t>(i)].connection;
+      const model::Connection& b = *scope_.rules[static_cast<size_t>(j)].connection;
+      DataPair d = same_message_pair(data_, options_.runner, a, b);
+      data_queries_ += d.queries;
+      switch (d.kind) {
+        case DataPair::Kind::Exclusive:
+          result_.exclusive_by_data.push_back(d.text);
+          continue;
+        case DataPair::Kind::Unknown:
+          unknown(d.text);
+          continue;
+        case DataPair::Kind::Internal:
+          result_.findings.push_back(internal_data_error(scope_.port->port, a.loc, d.text));
+          continue;
+        case DataPair::Kind::Overlap:
+        case DataPair::Kind::NotApplicable:
+          kept.emplace_back(i, j);
+          out.emplace(std::make_pair(i, j), std::move(d));
+      }
+    }
+    pairs = std::move(kept);
+    return out;
   }
 
   void check_complete() {
@@ -263,6 +302,8 @@ class PortChecker {
 
   const PortScope& scope_;
   const VerifyOptions& options_;
+  DataQuery& data_;
+  int data_queries_ = 0;
   PortSolver solver_;
   CubeShortcut shortcut_;
   PortResult& result_;
@@ -271,7 +312,7 @@ class PortChecker {
 }  // namespace
 
 void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
-                     Clock::time_point deadline, PortResult& result) {
+                     Clock::time_point deadline, DataQuery& data, PortResult& result) {
   result.port = scope.port->port;
   result.by_priority = scope.port->by_priority;
   result.complete = scope.port->complete;
@@ -286,7 +327,7 @@ void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::c
       ++result.exclusive_groups;
     }
   }
-  PortChecker(scope, options, ctx, deadline, result).run();
+  PortChecker(scope, options, ctx, deadline, data, result).run();
 }
 
 }  // namespace arbc::verify

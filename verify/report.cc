@@ -20,6 +20,8 @@ int VerifyReport::count(Severity s) const {
     for (const Finding& f : p.findings) n += f.severity == s;
   }
   for (const Finding& f : app_findings) n += f.severity == s;
+  for (const ResourceResult& r : resources)
+    for (const Finding& f : r.findings) n += f.severity == s;
   return n;
 }
 

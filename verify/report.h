@@ -27,6 +27,7 @@ inline constexpr const char* kCheckComplete = "complete";
 inline constexpr const char* kCheckAssert = "assert";
 inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no answer
 inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
+inline constexpr const char* kCheckResource = "resource";
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {
@@ -39,6 +40,14 @@ struct Note {
   model::SourceLocation loc;
 };
 
+// A concrete message that shows a data finding (docs/checks.md#message-data), in spec syntax, and
+// what the runtime's Lua monitors did with it when it was replayed.
+struct MessageExample {
+  std::string source;               // "ObjectDetector.objects"
+  std::string value;                // `[{ dist: 0.3, pos: vec3(0, 0, 0) }]`
+  std::vector<std::string> replay;  // one line per rule: "'take' accepts and delivers ..."
+};
+
 struct Finding {
   std::string check;  // one of the kCheck* ids
   Severity severity = Severity::Error;
@@ -48,8 +57,9 @@ struct Finding {
   std::string message;
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
-  std::vector<Note> notes;  // why each side holds, what to do
-  bool strict = false;      // a warning (dead, unused) that --strict made an error
+  std::vector<MessageExample> messages;  // data findings: the message(s) that show it
+  std::vector<Note> notes;               // why each side holds, what to do
+  bool strict = false;                   // a warning (dead, unused) that --strict made an error
 };
 
 // The outcome for one arbitrated port.
@@ -68,6 +78,9 @@ struct PortResult {
   int reported_pairs = 0;      // pairs reported with a counterexample (at most the cap)
   std::string unknown_reason;  // when verdict is Unknown: "timeout", "resource limit", ...
   std::vector<Finding> findings;
+  // Pairs that overlap in some event state but never accept the same message, each with why
+  // ("'take' and 'put': ...").
+  std::vector<std::string> exclusive_by_data;
   double seconds = 0;  // wall time, printed only with --stats
   int solver_queries = 0;
 };
@@ -97,11 +110,24 @@ struct TemporalResult {
   int solver_queries = 0;
 };
 
+// The outcome for one `resource` (docs/checks.md#resource).
+struct ResourceResult {
+  std::string name;
+  std::vector<std::string> ports;
+  model::SourceLocation loc;
+  Verdict verdict = Verdict::Proved;
+  int pairs = 0;                    // pairs of rules (into different ports) checked
+  std::vector<std::string> proved;  // per pair: why no command of one message / two uses it
+  std::vector<Finding> findings;
+  std::string unknown_reason;
+};
+
 struct VerifyReport {
   std::string app;
   std::string spec_file;
   std::vector<PortResult> ports;
-  std::vector<Finding> app_findings;     // findings not about one arbitrated port
+  std::vector<Finding> app_findings;  // findings not about one arbitrated port
+  std::vector<ResourceResult> resources;
   std::vector<TemporalResult> temporal;  // properties over time, in spec order
   Verdict verdict = Verdict::Proved;     // refuted if any error, else unknown if any unknown
   double seconds = 0;

@@ -2,6 +2,7 @@
 // one run. Without `stats` the output has no timings, so golden tests can pin it.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,12 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats);
 // SARIF 2.1.0: one result per finding, ruleId = check id, help at docs/checks.md#<id>; a bad
 // input's diagnostics are results too (ruleId = diagnostic id, level error).
 std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version);
+
+}  // namespace arbc::verify
+
+namespace arbc::verify {
+
+// The message counterexamples of a finding: [{source, value, replay}], for JSON and SARIF.
+nlohmann::ordered_json messages_json(const std::vector<MessageExample>& messages);
 
 }  // namespace arbc::verify

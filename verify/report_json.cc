@@ -32,6 +32,7 @@ Json finding_json(const Finding& f) {
   } else {
     j["counterexample"] = nullptr;
   }
+  if (!f.messages.empty()) j["messages"] = messages_json(f.messages);
   j["notes"] = Json::array();
   for (const Note& n : f.notes) {
     j["notes"].push_back({{"message", n.message}, {"location", location_json(n.loc)}});
@@ -88,6 +89,7 @@ Json port_json(const PortResult& p, bool stats) {
   j["overlapping_pairs"] = p.overlapping_pairs;
   j["reported_pairs"] = p.reported_pairs;
   j["unknown_reason"] = p.unknown_reason.empty() ? Json(nullptr) : Json(p.unknown_reason);
+  if (!p.exclusive_by_data.empty()) j["exclusive_by_data"] = p.exclusive_by_data;
   j["findings"] = Json::array();
   for (const Finding& f : p.findings) j["findings"].push_back(finding_json(f));
   if (stats) j["stats"] = {{"seconds", p.seconds}, {"solver_queries", p.solver_queries}};
@@ -123,6 +125,13 @@ Json temporal_json(const TemporalResult& t) {
 
 }  // namespace
 
+nlohmann::ordered_json messages_json(const std::vector<MessageExample>& messages) {
+  Json out = Json::array();
+  for (const MessageExample& m : messages)
+    out.push_back({{"source", m.source}, {"value", m.value}, {"replay", m.replay}});
+  return out;
+}
+
 std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
   Json root;
   root["schema"] = "arbc-verify/1";
@@ -144,6 +153,23 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     for (const PortResult& p : r.ports) j["ports"].push_back(port_json(p, stats));
     j["findings"] = Json::array();
     for (const Finding& f : r.app_findings) j["findings"].push_back(finding_json(f));
+    if (!r.resources.empty()) {
+      j["resources"] = Json::array();
+      for (const ResourceResult& res : r.resources) {
+        Json rj;
+        rj["name"] = res.name;
+        rj["verdict"] = verdict_name(res.verdict);
+        rj["ports"] = res.ports;
+        rj["location"] = location_json(res.loc);
+        rj["pairs"] = res.pairs;
+        rj["exclusive_by_data"] = res.proved;
+        rj["unknown_reason"] =
+            res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
+        rj["findings"] = Json::array();
+        for (const Finding& f : res.findings) rj["findings"].push_back(finding_json(f));
+        j["resources"].push_back(std::move(rj));
+      }
+    }
     // Only when the app has properties over time, so other reports keep their bytes.
     if (!r.temporal.empty()) {
       j["temporal"] = Json::array();

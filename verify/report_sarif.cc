@@ -36,6 +36,7 @@ constexpr CheckDoc kChecks[] = {
     {kCheckAssert, "A rule can deliver while its asserted property is false."},
     {kCheckUnknown, "The solver could not decide a check (timeout or resource limit)."},
     {kCheckInternal, "Z3 and the runtime's constraint evaluator disagree (a bug in arbc)."},
+    {kCheckResource, "Two ports of a resource can each receive a command that uses it."},
 };
 
 Json sarif_location(const model::SourceLocation& loc) {
@@ -122,6 +123,7 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
           {"counterexample",
            {{"present", f.counterexample->present}, {"absent", f.counterexample->absent}}}};
     }
+    if (!f.messages.empty()) r["properties"]["messages"] = messages_json(f.messages);
     results.push_back(std::move(r));
   };
   add_input_rules(inputs, rules);
@@ -131,6 +133,8 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
       for (const Finding& f : p.findings) add(f);
     }
     for (const Finding& f : in.report.app_findings) add(f);
+    for (const ResourceResult& r : in.report.resources)
+      for (const Finding& f : r.findings) add(f);
   }
   Json driver{{"name", "arbc"}, {"version", tool_version}, {"rules", rules}};
   Json root{{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},

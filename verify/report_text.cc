@@ -69,7 +69,28 @@ std::string port_line(const PortResult& p, bool stats) {
   line += "\n    over " + plural(p.events.size(), "event") + " (" + listed(p.events) +
           "); invariants used: " + listed(p.invariants);
   if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
-  return line + "\n";
+  line += "\n";
+  for (const std::string& d : p.exclusive_by_data) line += "    exclusive by data: " + d + "\n";
+  return line;
+}
+
+// "resource arm (PickAndPlace.cmd, PullObject.cmd): proved: ..." and why, per pair.
+std::string resource_lines(const ResourceResult& r) {
+  std::string line =
+      "  resource " + r.name + " (" + join(r.ports) + "): " + verdict_name(r.verdict);
+  if (r.verdict == Verdict::Proved) {
+    line += r.pairs == 0 ? ": no two rules into different ports"
+                         : ": " + plural(static_cast<size_t>(r.pairs), "pair") +
+                               " of rules never both use it";
+  } else {
+    if (r.verdict == Verdict::Unknown) line += " (" + r.unknown_reason + ")";
+    size_t errors = 0;
+    for (const Finding& f : r.findings) errors += f.severity == Severity::Error;
+    line += ": " + plural(errors, "error");
+  }
+  line += "\n";
+  for (const std::string& p : r.proved) line += "    exclusive by data: " + p + "\n";
+  return line;
 }
 
 // "[dead] rule 'pull' of PullObject.cmd": what a warning that --strict made an error is about.
@@ -119,6 +140,10 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
       rules += p.rules.size();
     }
     for (const Finding& f : r.app_findings) out += render(to_diagnostic(f), sources);
+    for (const ResourceResult& res : r.resources) {
+      out += resource_lines(res);
+      for (const Finding& f : res.findings) out += render(to_diagnostic(f), sources);
+    }
     for (const TemporalResult& t : r.temporal) {
       out += temporal::temporal_text(t);
       properties += 1;

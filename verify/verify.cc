@@ -2,6 +2,7 @@
 
 #include "verify/port_checks.h"
 #include "verify/port_scope.h"
+#include "verify/resource_checks.h"
 #include "verify/structural_checks.h"
 #include "verify/temporal/spacing.h"
 
@@ -42,10 +43,11 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   run_structural_checks(app, options.strict, structural);
 
   z3::context ctx;  // one per run: creating a context costs tens of milliseconds
+  DataQuery data(app, ctx, options.list_bound, deadline);
   for (const PortScope& scope : scopes) {
     PortResult result;
     Clock::time_point port_start = Clock::now();
-    run_port_checks(scope, options, ctx, deadline, result);
+    run_port_checks(scope, options, ctx, deadline, data, result);
     for (Finding& f : structural) {
       if (f.port == result.port) result.findings.push_back(std::move(f));
     }
@@ -63,6 +65,7 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   for (Finding& f : structural) {
     if (!f.check.empty() && f.port.empty()) report.app_findings.push_back(std::move(f));
   }
+  run_resource_checks(app, scopes, options, ctx, deadline, data, report);
 
   bool refuted = has_error(report.app_findings);
   bool unknown = false;
@@ -80,6 +83,11 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
     report.solver_queries += t->solver_queries;
     report.temporal.push_back(std::move(*t));
   }
+  for (const ResourceResult& r : report.resources) {
+    refuted |= r.verdict == Verdict::Refuted;
+    unknown |= r.verdict == Verdict::Unknown;
+  }
+  report.solver_queries += data.queries();
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);
   return report;

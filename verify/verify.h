@@ -8,12 +8,29 @@
 #include <string>
 
 #include "core/app_model.h"
+#include "core/value.h"
 #include "verify/report.h"
 
 namespace arbc::verify {
 
 // Overlapping pairs of one port reported with a counterexample; the rest are counted.
 inline constexpr int kDefaultMaxPairsPerPort = 10;
+
+// What a monitor did with one message (docs/checks.md#message-data).
+struct MonitorRun {
+  bool accepted = false;
+  std::string reason;  // why it was dropped, when not accepted
+  Value delivered;     // when accepted
+};
+
+// Runs a connection's generated monitor on a message, as the runtime does; the CLI provides
+// one backed by the runtime's Lua monitors, so every message counterexample is replayed.
+class MonitorRunner {
+ public:
+  virtual ~MonitorRunner() = default;
+  virtual bool run(const model::Connection& c, const Value& message, MonitorRun* out,
+                   std::string* err) const = 0;
+};
 
 struct VerifyOptions {
   double timeout_seconds = 60;  // for the whole app; a query cut short answers unknown
@@ -22,6 +39,10 @@ struct VerifyOptions {
   // Messages into a port that properties over time are explored to
   // (docs/design.md#properties-over-time).
   int temporal_bound = 8;
+  int list_bound = 4;  // lists in messages have at most this many elements (--list-bound)
+  // Replays message counterexamples; without one, a data finding cannot be confirmed and is
+  // reported as unknown (never as a verdict).
+  const MonitorRunner* runner = nullptr;
 };
 
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown

@@ -296,6 +296,15 @@ struct NeverDecl {
   const Rule* rule_decl = nullptr;  // sema
 };
 
+// `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
+// delivered value bound to `emitted`, says which commands use it (all, without `when`).
+struct ResourceDecl {
+  std::string name;
+  std::vector<PortRef> ports;
+  ExprPtr uses;  // null: every delivered command uses the resource
+  Loc loc;       // the name
+};
+
 // What an event name refers to (sema builds one per declared event).
 struct EventSymbol {
   enum class Kind { Manual, Status, Derived };
@@ -385,6 +394,7 @@ struct Spec {
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
   std::vector<NeverDecl> nevers;
+  std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)
 

@@ -470,6 +470,8 @@ class Builder {
       spec.asserts.push_back(assert_decl(c));
     } else if (auto* c = ctx->neverDecl()) {
       spec.nevers.push_back(never_decl(c));
+    } else if (auto* c = ctx->resourceDecl()) {
+      spec.resources.push_back(resource_decl(c));
     } else if (auto* c = ctx->testDecl()) {
       spec.tests.push_back(test_decl(c));
     } else if (auto* c = ctx->testsForDecl()) {
@@ -535,6 +537,16 @@ class Builder {
     for (antlr4::tree::TerminalNode* id : c->ID()) e.names.push_back({tx(id), loc(id)});
     e.lifetime = optional_duration(c->duration());
     return e;
+  }
+
+  // resourceDecl : 'resource' ID '{' portRef (',' portRef)* ','? '}' ('when' expr)? ';' ;
+  ResourceDecl resource_decl(ArbcParser::ResourceDeclContext* c) {
+    ResourceDecl r;
+    r.name = tx(c->ID());
+    r.loc = loc(c->ID());
+    for (ArbcParser::PortRefContext* p : c->portRef()) r.ports.push_back(port_ref(p));
+    if (c->expr()) r.uses = expr(c->expr(), 0);
+    return r;
   }
 
   // derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? ';' ;

@@ -99,6 +99,9 @@ class Sema {
   void check_connect(ast::ConnectDecl& c);
   // An assertion names a rule of an arbitrated port; its property is a constraint.
   void check_assert(ast::AssertDecl& a);
+  // `resource` declarations (sema_resource.cc).
+  void check_resources();
+  TypePtr check_resource_ports(ast::ResourceDecl& r);
 
   // ---- properties over time (sema_temporal.cc) ----
   // `never two RULE within D;`: RULE names one rule of one arbitrated port, D is a duration.

@@ -50,6 +50,8 @@ const char* describe_rule(size_t rule) {
       return "the assertion";
     case ArbcParser::RuleNeverDecl:
       return "the `never` property";
+    case ArbcParser::RuleResourceDecl:
+      return "the `resource` declaration";
     case ArbcParser::RuleStmt:
       return "the statement";
     case ArbcParser::RuleTestDecl:
@@ -81,8 +83,8 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 }
 
 const std::set<std::string> kDeclKeywords = {
-    "app",       "type",      "const",   "module", "event", "events", "exclusive",
-    "invariant", "arbitrate", "connect", "assert", "test",  "tests",  "never"};
+    "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
@@ -211,7 +213,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (decl_start || (x.kinds.size() == 1 && x.kinds.count(antlr4::Token::EOF))) {
       d.message =
           "expected a declaration (app, type, const, module, event, events, exclusive, "
-          "invariant, arbitrate, connect or assert), found " +
+          "invariant, arbitrate, connect, assert or resource), found " +
           found;
       suggest_keyword(offending,
                       std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);

@@ -8,6 +8,7 @@
 
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
+#include "compiler/lower/lower_body.h"
 #include "core/effective_guard.h"
 
 namespace arbc::lower {
@@ -87,10 +88,20 @@ class Lowerer {
                               n.rule_decl->port->port.qualified(), n.rule, n.window.seconds,
                               n.loc});
     }
+    for (const ast::ResourceDecl& r : spec_.resources) {
+      model::Resource res;
+      res.name = r.name;
+      for (const ast::PortRef& p : r.ports) res.ports.push_back(p.qualified());
+      if (r.uses) res.uses = lower_expr(*r.uses);
+      res.loc = r.loc;
+      app.resources.push_back(std::move(res));
+    }
   }
 
  private:
   void lower_modules() {
+    for (const ast::TypeDecl& t : spec_.types)
+      out_.app.types.push_back({t.name, t.type.resolved, t.loc});
     for (const ast::ModuleDecl& m : spec_.modules) {
       model::Module mm;
       mm.name = m.name;
@@ -148,7 +159,9 @@ class Lowerer {
       plan.script = read_script(*script);
       if (!plan.script) return false;
       c.opaque = true;
+      return true;
     }
+    c.body = lower_body(body);
     return true;
   }
 

@@ -10,8 +10,8 @@ escapes it by mistake.
 A snippet is a *fragment* of the base spec (default specs/table_clean.spec): it is spliced into
 the base, replacing every base declaration that declares one of the same names, and the result
 is checked. A declaration "declares" its kind and name: `app`, `type N`, `const N`, `module N`,
-each event of `event a, b` / `event e = ...` / `events from M.p { a, b }`, the destination
-port of `arbitrate M.p` or `connect X.q -> M.p`, and `test "NAME"`. An `assert M.p: ...` of the base goes with its
+each event of `event a, b` / `event e = ...` / `events from M.p { a, b }`, `resource N`, the
+destination port of `arbitrate M.p` or `connect X.q -> M.p`, and `test "NAME"`. An `assert M.p: ...` of the base goes with its
 port: it is dropped when the snippet replaces `M.p`; the base's tests are dropped unless the
 snippet is a test itself. The snippet takes the place of the first
 declaration it replaces (so line numbers stay near the base's), or goes at the end.
@@ -117,6 +117,8 @@ def declared_keys(decl):
         return {"app"}, None
     if kind in ("type", "const", "module"):
         return {f"{kind}:{words[1]}"}, None
+    if kind == "resource":
+        return {f"resource:{words[1]}"}, None
     if kind == "events":
         m = re.match(r"events\s+from\s+([\w.]+)\s*\{(.*?)\}", code, re.S)
         names = [part.split("=")[0].strip() for part in m.group(2).split(",") if part.strip()]

@@ -76,7 +76,10 @@ for line in doc.splitlines():
             elif re.fullmatch(r"[a-z0-9]+(_[a-z0-9]+)+(_\*)?", token) and "fuzz" not in token:
                 pattern = re.compile(token.replace("*", ".*") + "$")
                 golden = (root / "tests/check" / token).is_dir()  # a check_golden case
-                if not golden and not any(pattern.match(t) for t in ctests):
+                # or a name built in a loop (`dds_split_table_clean_${scenario}`)
+                looped = any(re.fullmatch(re.escape(t.split("${")[0]) + ".*", token)
+                             for t in ctests if "${" in t)
+                if not golden and not looped and not any(pattern.match(t) for t in ctests):
                     if token not in not_tests:
                         errors.append(f"no ctest {token}")
             elif "/" in token and re.fullmatch(r"[\w./-]+", token) and token not in not_files:

@@ -71,6 +71,15 @@ golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spe
 golden temporal.txt repo 1 tests/verify/temporal.spec
 golden temporal_bound.txt repo 0 --temporal-bound 2 tests/verify/temporal.spec
 golden temporal.json repo 1 --format json tests/verify/temporal.spec
+# Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
+# with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
+# by the two mutations with a concrete message.
+golden data_exclusive.txt repo 1 tests/verify/data_exclusive.spec
+golden data_exclusive.json repo 1 --format json tests/verify/data_exclusive.spec
+golden resource_pull_mutant.txt repo 1 tests/verify/table_clean_pull_mutant.spec
+golden resource_pull_mutant.json repo 1 --format json tests/verify/table_clean_pull_mutant.spec
+golden resource_pull_mutant.sarif repo 1 --format sarif tests/verify/table_clean_pull_mutant.spec
+golden resource_take_mutant.txt repo 1 tests/verify/table_clean_take_reach_mutant.spec
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1

@@ -1,0 +1,163 @@
+#include "cli/run_transport.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "cli/commands.h"
+#include "dds/dds_transport.h"
+
+namespace arbc::cli {
+
+namespace {
+
+void print_error(const std::string& line) {
+  std::fprintf(stderr, "arbc run: error: %s\n", line.c_str());
+}
+
+// "all", "none" or a comma-separated list of the app's modules.
+bool parse_module_set(const std::string& text, const char* flag, const model::App& app,
+                      ModuleSet* out) {
+  if (text == "all") {
+    *out = ModuleSet::everything();
+    return true;
+  }
+  *out = ModuleSet::none();
+  if (text == "none") return true;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t comma = text.find(',', start);
+    std::string name = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    if (!app.find_module(name)) {
+      std::string known;
+      for (const model::Module& m : app.modules) known += (known.empty() ? "" : ", ") + m.name;
+      print_error(std::string(flag) + " '" + text + "': '" + name + "' is not a module of app " +
+                  app.name + " (its modules: " + known + "; or write all, none)");
+      return false;
+    }
+    out->names.insert(name);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return true;
+}
+
+std::string describe_set(const ModuleSet& s) {
+  if (s.all) return "all";
+  if (s.names.empty()) return "none";
+  std::string out;
+  for (const std::string& n : s.names) out += (out.empty() ? "" : ",") + n;
+  return out;
+}
+
+// The domain: --domain, else the deployment's, else ROS 2's ROS_DOMAIN_ID, else 0.
+bool pick_domain(const TransportFlags& flags, const dds::Deployment& d, int* domain) {
+  if (flags.domain) {
+    *domain = *flags.domain;
+  } else if (d.domain) {
+    *domain = *d.domain;
+  } else if (const char* ros = std::getenv("ROS_DOMAIN_ID"); ros && *ros) {
+    *domain = std::atoi(ros);
+  } else {
+    *domain = 0;
+  }
+  if (*domain < 0 || *domain > 232) {
+    print_error("the DDS domain " + std::to_string(*domain) + " is not from 0 to 232");
+    return false;
+  }
+  return true;
+}
+
+bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* options) {
+  dds::DdsOptions dds;
+  std::string error;
+  if (!flags.deploy.empty()) {
+    if (!dds::read_deployment(flags.deploy, &dds.deployment, &error) ||
+        !dds::check_deployment(dds.deployment, app, &error)) {
+      print_error(error);
+      return false;
+    }
+  }
+  if (!pick_domain(flags, dds.deployment, &dds.domain)) return false;
+  dds.wait_peers = flags.wait_peers.value_or(0);
+  options->realtime = true;
+  options->unknown_until_fed = true;
+  options->report_silent_lapses = true;
+  options->time_scale = flags.time_scale.value_or(1);
+  options->transport = dds::make_dds_transport(app, std::move(dds));
+  return true;
+}
+
+}  // namespace
+
+void add_transport_options(CLI::App& cli, TransportFlags* flags) {
+  cli.add_option("--transport", flags->transport,
+                 "inproc (default: the whole app in this process) or dds (ports to other "
+                 "processes over DDS topics)")
+      ->check(CLI::IsMember({"inproc", "dds"}));
+  cli.add_option("--host", flags->host,
+                 "dds: the modules this process runs: M1,M2, all (default) or none");
+  cli.add_option("--mediate", flags->mediate,
+                 "dds: the modules whose incoming connections run here (default: the hosted)");
+  cli.add_option("--deploy", flags->deploy,
+                 "dds: a deployment file (domain, ros2, topics, types, qos; docs/distributed.md)");
+  cli.add_option("--domain", flags->domain,
+                 "dds: the DDS domain (default: the deployment's, else "
+                 "ROS_DOMAIN_ID, else 0)");
+  cli.add_option("--wait-peers", flags->wait_peers,
+                 "dds: wait up to S wall seconds for a peer on every connected topic before "
+                 "starting (default 0: start at once)");
+  cli.add_option("--time-scale", flags->time_scale,
+                 "wall-clock runs: time runs K times as fast as the wall clock (default 1)");
+}
+
+int apply_transport(const TransportFlags& flags, const model::App& app, RunOptions* options) {
+  bool dds = flags.transport == "dds";
+  if (!dds) {
+    const char* needs = !flags.host.empty()      ? "--host"
+                        : !flags.mediate.empty() ? "--mediate"
+                        : !flags.deploy.empty()  ? "--deploy"
+                        : flags.domain           ? "--domain"
+                        : flags.wait_peers       ? "--wait-peers"
+                                                 : nullptr;
+    if (needs) {
+      print_error(std::string(needs) +
+                  " needs --transport dds (the in-process transport runs "
+                  "every module here)");
+      return kExitBadInput;
+    }
+  }
+  if (flags.wait_peers && !(*flags.wait_peers >= 0 && *flags.wait_peers <= 3600)) {
+    print_error("--wait-peers must be a number of seconds from 0 to 3600");
+    return kExitBadInput;
+  }
+  if (flags.time_scale && !(*flags.time_scale > 0 && *flags.time_scale <= 1000)) {
+    print_error("--time-scale must be a number above 0 and at most 1000");
+    return kExitBadInput;
+  }
+  if (flags.time_scale && !dds && !options->realtime) {
+    print_error("--time-scale applies to runs on the wall clock (--transport dds or --realtime)");
+    return kExitBadInput;
+  }
+  if (!dds) {
+    options->time_scale = flags.time_scale.value_or(1);
+    return kExitOk;
+  }
+  if (!flags.host.empty() && !parse_module_set(flags.host, "--host", app, &options->host))
+    return kExitBadInput;
+  if (!flags.mediate.empty()) {
+    ModuleSet mediate;
+    if (!parse_module_set(flags.mediate, "--mediate", app, &mediate)) return kExitBadInput;
+    options->mediate = mediate;
+  }
+  return apply_dds(flags, app, options) ? kExitOk : kExitBadInput;
+}
+
+std::string describe_transport(const TransportFlags& flags, const RunOptions& options) {
+  if (flags.transport != "dds") return {};
+  char scale[32];
+  std::snprintf(scale, sizeof scale, "%g", options.time_scale);
+  return std::string("dds, time scale ") + scale + ", hosts " + describe_set(options.host) +
+         ", mediates " + describe_set(options.mediate ? *options.mediate : options.host);
+}
+
+}  // namespace arbc::cli

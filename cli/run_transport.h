@@ -1,0 +1,38 @@
+// `arbc run`'s transport options (docs/distributed.md):
+//   --transport inproc|dds  --host M1,M2|all|none  --mediate M1,M2|all|none  --deploy FILE
+//   --domain N  --time-scale K  --wait-peers S
+// `inproc` (the default) runs everything in this process on simulated time (or the wall clock
+// with --realtime). `dds` runs the hosted modules and the connections into the mediated ones
+// on the wall clock scaled by K, and exchanges the rest over DDS topics.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "core/app_model.h"
+#include "runtime/runtime.h"
+
+namespace arbc::cli {
+
+struct TransportFlags {
+  std::string transport = "inproc";
+  std::string host, mediate;  // empty: all, and the hosted modules
+  std::string deploy;
+  std::optional<int> domain;
+  std::optional<double> time_scale;
+  std::optional<double> wait_peers;
+};
+
+void add_transport_options(CLI::App& cli, TransportFlags* flags);
+
+// Checks the flags against the app and sets options' placement, clock and transport (a DDS
+// transport for `dds`). Returns an exit code (kExitOk, or kExitBadInput after printing what
+// is wrong).
+int apply_transport(const TransportFlags& flags, const model::App& app, RunOptions* options);
+
+// "dds (domain 7, time scale 10, hosts all, mediates none)" for the run's header line; "" for
+// an in-process run.
+std::string describe_transport(const TransportFlags& flags, const RunOptions& options);
+
+}  // namespace arbc::cli

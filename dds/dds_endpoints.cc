@@ -1,0 +1,234 @@
+// The DDS transport's readers and writers: QoS, samples <-> values, the buffer between DDS's
+// threads and the executor, and what they count.
+#include <fastrtps/types/DynamicDataFactory.h>
+
+#include "dds/dds_transport_internal.h"
+#include "dds/wire_values.h"
+#include "runtime/executor.h"
+
+namespace arbc::dds {
+
+namespace {
+
+// What `arbc` endpoints announce in their USER_DATA: the port's spec type, so that two arbc
+// processes that disagree on a type under one name find out at discovery.
+std::vector<eprosima::fastrtps::rtps::octet> user_data(const WireType& wire) {
+  std::string text = "arbc-type=" + wire.type->to_string();
+  return {text.begin(), text.end()};
+}
+
+// Reliable, volatile, keep-last `depth`: what ROS 2's default profile is, with a deeper history
+// (dds/deployment.h says why). Payloads grow as needed: types are unbounded.
+template <class Qos>
+void set_common_qos(Qos& qos, int depth, const WireType& wire) {
+  qos.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+  qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = depth;
+  qos.endpoint().history_memory_policy =
+      eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  qos.user_data().data_vec(user_data(wire));
+}
+
+WireSample* new_sample(const WireType& wire) {
+  auto* s = new WireSample;
+  s->data =
+      eprosima::fastrtps::types::DynamicDataFactory::get_instance()->create_data(wire.dynamic);
+  return s;
+}
+
+void delete_sample(WireSample* s) {
+  if (!s) return;
+  eprosima::fastrtps::types::DynamicDataFactory::get_instance()->delete_data(s->data);
+  delete s;
+}
+
+}  // namespace
+
+// --- DdsTransport: creating endpoints ------------------------------------------------------
+
+bool DdsTransport::add_reader(const Endpoint& e, std::string* error) {
+  fdds::Topic* t = topic_for(e.topic, e.wire, error);
+  if (!t) return false;
+  auto r = std::make_unique<TopicReader>(this, e.port, e.input, e.topic, e.wire);
+  fdds::DataReaderQos qos = subscriber_->get_default_datareader_qos();
+  set_common_qos(qos, depth(), *e.wire);
+  fdds::StatusMask mask = fdds::StatusMask::data_available()
+                          << fdds::StatusMask::sample_lost()
+                          << fdds::StatusMask::subscription_matched();
+  r->reader = subscriber_->create_datareader(t, qos, r.get(), mask);
+  if (!r->reader) {
+    *error = "DDS: cannot create a reader on topic " + e.topic;
+    return false;
+  }
+  readers_.push_back(std::move(r));
+  return true;
+}
+
+bool DdsTransport::add_writer(const Endpoint& e, std::string* error) {
+  fdds::Topic* t = topic_for(e.topic, e.wire, error);
+  if (!t) return false;
+  auto w = std::make_unique<TopicWriter>(this, e.port, e.input, e.topic, e.wire);
+  fdds::DataWriterQos qos = publisher_->get_default_datawriter_qos();
+  set_common_qos(qos, depth(), *e.wire);
+  w->writer =
+      publisher_->create_datawriter(t, qos, w.get(), fdds::StatusMask::publication_matched());
+  if (!w->writer) {
+    *error = "DDS: cannot create a writer on topic " + e.topic;
+    return false;
+  }
+  (e.input ? input_writer_ : output_writer_)[static_cast<size_t>(e.port.index)] = w.get();
+  writers_.push_back(std::move(w));
+  return true;
+}
+
+// --- TopicReader -----------------------------------------------------------------------------
+
+TopicReader::TopicReader(DdsTransport* transport, const TransportPort& port, bool input,
+                         std::string topic, std::shared_ptr<const WireType> wire)
+    : port(port),
+      input(input),
+      topic(std::move(topic)),
+      wire(std::move(wire)),
+      transport_(transport),
+      sample_(new_sample(*this->wire)) {}
+
+TopicReader::~TopicReader() { delete_sample(sample_); }
+
+void TopicReader::on_data_available(fdds::DataReader* r) {
+  std::lock_guard<std::mutex> take(take_mutex_);
+  fdds::SampleInfo info;
+  while (!transport_->closing() &&
+         r->take_next_sample(sample_, &info) == ReturnCode_t::RETCODE_OK) {
+    if (!info.valid_data) continue;  // a lifecycle notice, not a message
+    ++received;
+    Buffered b;
+    std::string why;
+    if (sample_->bad) {
+      why = "a sample on " + topic + " does not decode as " + wire->name;
+    } else if (!from_wire(*wire, sample_->data, &b.value, &why)) {
+      sample_->bad = true;
+    }
+    if (input) {
+      b.identity = info.sample_identity;
+    } else if (!sample_->bad) {
+      b.answered = transport_->answered(info);
+    }
+    buffer(std::move(b), sample_->bad, why);
+  }
+}
+
+void TopicReader::buffer(Buffered b, bool bad, const std::string& why) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (bad) {
+    ++undecodable;
+    ++bad_;
+    bad_why_ = why;
+  } else if (pending_.size() >= static_cast<size_t>(transport_->depth())) {
+    ++lost;
+    ++overflow_;
+  } else {
+    pending_.push_back(std::move(b));
+  }
+  if (!drain_posted_) {
+    drain_posted_ = true;
+    transport_->post([this] { drain(); });
+  }
+}
+
+// Samples the writer dropped before they reached this reader (its keep-last history
+// overflowed): the same loss as a full queue.
+void TopicReader::on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus& status) {
+  if (status.total_count_change <= 0) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  lost += static_cast<uint64_t>(status.total_count_change);
+  overflow_ += static_cast<uint64_t>(status.total_count_change);
+  if (!drain_posted_) {
+    drain_posted_ = true;
+    transport_->post([this] { drain(); });
+  }
+}
+
+void TopicReader::on_subscription_matched(fdds::DataReader*,
+                                          const fdds::SubscriptionMatchedStatus& status) {
+  publishers = status.current_count;
+  if (status.current_count_change > 0 && status.current_count == 1 && ever_matched_) {
+    transport_->report("DDS: topic " + topic + ": a publisher is back; traffic resumes");
+  }
+  if (status.current_count_change > 0) ever_matched_ = true;
+  if (status.current_count_change < 0 && status.current_count == 0) {
+    transport_->report("DDS: topic " + topic + " (" + port.qualified +
+                       ") has no publisher any more; " +
+                       (input ? "nothing reaches the module until one is back"
+                              : "the events it feeds lapse by their lifetimes"));
+  }
+}
+
+void TopicReader::drain() {
+  std::deque<Buffered> values;
+  uint64_t overflow = 0, bad = 0;
+  std::string why;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    values.swap(pending_);
+    std::swap(overflow, overflow_);
+    std::swap(bad, bad_);
+    why = bad_why_;
+    drain_posted_ = false;
+  }
+  TransportSink& sink = transport_->sink();
+  if (overflow) sink.lost(input, port.index, DropReason::QueueFull, overflow, "DDS: " + topic);
+  if (bad) sink.lost(input, port.index, DropReason::BadType, bad, why);
+  Executor& ex = sink.executor();
+  for (const Buffered& b : values) {
+    if (input) {
+      // Before the module sees it: what it publishes from now on answers this sample.
+      transport_->received(b.identity);
+      sink.to_module(port.index, Delivery{port.port, b.value, topic, topic, ex.now()});
+    } else {
+      sink.from_source(port.index, b.value, b.answered);
+    }
+  }
+}
+
+// --- TopicWriter -----------------------------------------------------------------------------
+
+TopicWriter::TopicWriter(DdsTransport* transport, const TransportPort& port, bool input,
+                         std::string topic, std::shared_ptr<const WireType> wire)
+    : port(port),
+      input(input),
+      topic(std::move(topic)),
+      wire(std::move(wire)),
+      transport_(transport),
+      sample_(new_sample(*this->wire)) {}
+
+TopicWriter::~TopicWriter() { delete_sample(sample_); }
+
+bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params) {
+  std::string error;
+  if (to_wire(*wire, v, sample_->data, &error) && writer->write(sample_, params)) {
+    ++written;
+    return true;
+  }
+  ++failed;
+  if (!reported_) {
+    reported_ = true;
+    transport_->sink().report("DDS: topic " + topic + ": a message could not be written" +
+                              (error.empty() ? "" : " (" + error + ")") +
+                              "; such failures are counted in the summary");
+  }
+  return false;
+}
+
+void TopicWriter::on_publication_matched(fdds::DataWriter*,
+                                         const fdds::PublicationMatchedStatus& status) {
+  subscribers = status.current_count;
+  if (status.current_count_change > 0) ever_matched_ = true;
+  if (input && status.current_count_change < 0 && status.current_count == 0) {
+    transport_->report("DDS: topic " + topic + " (" + port.qualified +
+                       ") has no subscriber any more: the process that hosts " + port.module +
+                       " is gone; what is delivered to it is lost until it is back");
+  }
+}
+
+}  // namespace arbc::dds

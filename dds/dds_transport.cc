@@ -1,0 +1,204 @@
+// The DDS transport's life cycle (participant, topics, endpoints; deletion) and routing.
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+
+#include "dds/dds_transport_internal.h"
+#include "runtime/executor.h"
+
+namespace arbc::dds {
+
+std::unique_ptr<Transport> make_dds_transport(const model::App& app, DdsOptions options) {
+  return std::make_unique<DdsTransport>(app, std::move(options));
+}
+
+DdsTransport::DdsTransport(const model::App& app, DdsOptions options)
+    : app_(app), options_(std::move(options)) {}
+
+DdsTransport::~DdsTransport() { close(); }
+
+// Routes each port whose other end may run elsewhere through a topic (dds/dds_transport.h).
+// Every topic and type is named before the participant exists, so that the discovery listener
+// (DDS threads) only ever reads complete maps.
+bool DdsTransport::open(const TransportPlan& plan, TransportSink* sink, std::string* error) {
+  sink_ = sink;
+  if (!check_deployment(options_.deployment, app_, error)) return false;
+  naming_ = std::make_unique<WireNaming>(app_, options_.deployment);
+  output_writer_.assign(plan.outputs.size(), nullptr);
+  input_writer_.assign(plan.inputs.size(), nullptr);
+  output_mediated_.assign(plan.outputs.size(), false);
+  input_hosted_.assign(plan.inputs.size(), false);
+  std::vector<Endpoint> endpoints;
+  for (const TransportPort& p : plan.outputs) {
+    output_mediated_[static_cast<size_t>(p.index)] = p.mediated;
+    if (p.hosted || p.mediated) endpoints.push_back({p, false, !p.hosted, {}, {}});
+  }
+  for (const TransportPort& p : plan.inputs) {
+    input_hosted_[static_cast<size_t>(p.index)] = p.hosted;
+    if (p.hosted != p.mediated) endpoints.push_back({p, true, p.hosted, {}, {}});
+  }
+  for (Endpoint& e : endpoints) {
+    if (!wire_of(e.port, &e.topic, &e.wire, error)) return false;
+  }
+  if (!create_participant(error)) return false;
+  for (const Endpoint& e : endpoints) {
+    if (!(e.reads ? add_reader(e, error) : add_writer(e, error))) return false;
+  }
+  return true;
+}
+
+// The participant takes its QoS from Fast-DDS's defaults (an XML profile named by
+// FASTRTPS_DEFAULT_PROFILES_FILE applies: docs/distributed.md), with a name and a short lease
+// so that a crashed peer is noticed in seconds rather than Fast-DDS's 20.
+bool DdsTransport::create_participant(std::string* error) {
+  fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
+  fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
+  qos.name("arbc " + app_.name);
+  auto& discovery = qos.wire_protocol().builtin.discovery_config;
+  double lease = std::max(0.5, options_.lease_seconds);
+  discovery.leaseDuration = eprosima::fastrtps::Duration_t(lease);
+  discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(lease / 3);
+  fdds::StatusMask mask = fdds::StatusMask::none();  // endpoint events go to their own listeners
+  participant_ = factory->create_participant(options_.domain, qos, &discovery_, mask);
+  if (!participant_) {
+    *error = "DDS: cannot create a participant in domain " + std::to_string(options_.domain) +
+             " (Fast-DDS said why above; check FASTRTPS_DEFAULT_PROFILES_FILE and the domain)";
+    return false;
+  }
+  publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  if (!publisher_ || !subscriber_) {
+    *error = "DDS: cannot create a publisher and a subscriber";
+    return false;
+  }
+  return true;
+}
+
+bool DdsTransport::wire_of(const TransportPort& port, std::string* topic,
+                           std::shared_ptr<const WireType>* wire, std::string* error) {
+  *topic = naming_->topic(port.qualified);
+  auto [it, fresh] = port_of_topic_.emplace(*topic, port.qualified);
+  if (!fresh) {
+    *error = "DDS: ports " + it->second + " and " + port.qualified + " would both be on topic " +
+             *topic + "; give one another topic in the deployment file's \"topics\"";
+    return false;
+  }
+  *wire = naming_->port_type(port.module, port.port, port.type, error);
+  if (!*wire) {
+    *error = "DDS: port " + port.qualified + ": " + *error;
+    return false;
+  }
+  type_of_topic_[*topic] = (*wire)->name;
+  return true;
+}
+
+fdds::Topic* DdsTransport::topic_for(const std::string& topic,
+                                     const std::shared_ptr<const WireType>& wire,
+                                     std::string* error) {
+  if (!types_.count(wire->name)) {
+    fdds::TypeSupport support(new WireTopicType(wire));
+    if (support.register_type(participant_) != ReturnCode_t::RETCODE_OK) {
+      *error = "DDS: cannot register type " + wire->name;
+      return nullptr;
+    }
+    types_.emplace(wire->name, support);
+  }
+  fdds::Topic* t = participant_->create_topic(topic, wire->name, fdds::TOPIC_QOS_DEFAULT);
+  if (!t) *error = "DDS: cannot create topic " + topic + " of type " + wire->name;
+  topics_[topic] = t;
+  return t;
+}
+
+void DdsTransport::publish(int out, const Value& v) {
+  if (output_mediated_[static_cast<size_t>(out)])
+    sink_->from_source(out, v, TransportSink::kAnswersAll);
+  if (TopicWriter* w = output_writer_[static_cast<size_t>(out)]) {
+    SampleIdentity none;  // "received nothing yet": this writer, sequence number 0
+    none.writer_guid(w->writer->guid()).sequence_number({});
+    eprosima::fastrtps::rtps::WriteParams params;
+    params.related_sample_identity(related(none));
+    w->write(v, params);
+  }
+}
+
+// Into a module hosted elsewhere: written, and pending until answered. A write that failed
+// is answered at once (nothing reached the module).
+void DdsTransport::deliver(int in, const Delivery& d) {
+  if (input_hosted_[static_cast<size_t>(in)]) {
+    sink_->to_module(in, d);
+    return;
+  }
+  TopicWriter* w = input_writer_[static_cast<size_t>(in)];
+  eprosima::fastrtps::rtps::WriteParams params;
+  WireTime time;
+  WireTime::now(time);
+  bool written = w && w->write(d.value, params);
+  std::lock_guard<std::mutex> lock(acks_mutex_);
+  ++sent_;
+  if (written) {
+    const SampleIdentity& id = params.sample_identity();
+    pending_.push_back({id.writer_guid(), id.sequence_number(), sent_, time});
+  }
+}
+
+// An arbc process handles its inputs in the order they reach it, which is the order they
+// were written here as long as samples on two topics do not overtake each other: a related
+// sample answers every delivery written up to it (docs/distributed.md#known-limits).
+uint64_t DdsTransport::answered(const fdds::SampleInfo& info) {
+  std::lock_guard<std::mutex> lock(acks_mutex_);
+  const SampleIdentity& related = info.related_sample_identity;
+  if (related == SampleIdentity::unknown()) {
+    std::erase_if(pending_, [&](const Pending& p) { return p.time <= info.source_timestamp; });
+  } else {
+    uint64_t upto = 0;
+    for (const Pending& p : pending_) {
+      if (p.writer == related.writer_guid() && p.seq <= related.sequence_number()) upto = p.ticket;
+    }
+    std::erase_if(pending_, [&](const Pending& p) { return p.ticket <= upto; });
+  }
+  return pending_.empty() ? sent_ : pending_.front().ticket - 1;
+}
+
+void DdsTransport::post(std::function<void()> fn) {
+  if (closing_ || !sink_) return;
+  Executor& ex = sink_->executor();
+  ex.post(ex.now(), [this, fn = std::move(fn)] {
+    if (!closing_) fn();
+  });
+}
+
+void DdsTransport::report(std::string line) {
+  post([this, line = std::move(line)] { sink_->report(line); });
+}
+
+// Deletes every DDS entity (remote peers see this process's endpoints go at once). Called at
+// shutdown; after it no DDS thread reaches the runtime.
+void DdsTransport::close() {
+  if (closed_) return;
+  closed_ = true;
+  closing_ = true;
+  if (!participant_) return;
+  for (auto& r : readers_) r->reader->set_listener(nullptr);
+  for (auto& w : writers_) w->writer->set_listener(nullptr);
+  participant_->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
+  participant_ = nullptr;
+}
+
+std::string DdsTransport::summary() const {
+  std::string out = "dds: domain " + std::to_string(options_.domain) + ", " +
+                    std::to_string(readers_.size()) + " topic(s) read, " +
+                    std::to_string(writers_.size()) + " written\n";
+  for (const auto& r : readers_) {
+    out += "  read  " + r->topic + " (" + r->wire->name + "): " + std::to_string(r->received) +
+           " received, " + std::to_string(r->lost) + " lost, " + std::to_string(r->undecodable) +
+           " undecodable\n";
+  }
+  for (const auto& w : writers_) {
+    out += "  wrote " + w->topic + " (" + w->wire->name + "): " + std::to_string(w->written) +
+           " written" + (w->failed ? ", " + std::to_string(w->failed) + " failed" : "") + "\n";
+  }
+  std::lock_guard<std::mutex> lock(mismatch_mutex_);
+  for (const std::string& m : mismatches_) out += "  " + m + "\n";
+  return out;
+}
+
+}  // namespace arbc::dds

@@ -1,0 +1,41 @@
+// The DDS transport (library arbc_dds; docs/distributed.md): ports whose other end runs in
+// another process travel on DDS topics through eProsima Fast-DDS 2.9.
+//
+//   - an output of a hosted module is published on its topic (for other mediators and any
+//     DDS program), and handed to the connections from it mediated here;
+//   - an output of a module hosted elsewhere that feeds connections mediated here is read from
+//     its topic;
+//   - what a connection mediated here delivers to a module hosted elsewhere is published on
+//     that module's input topic; a hosted module whose input another process mediates reads it.
+// QoS: reliable, volatile, keep-last with the deployment's depth (100 by default). A reader
+// hands samples to the executor through a buffer of that depth: overflow, and samples the
+// writer dropped before they arrived (DDS "sample lost"), count as `queue-full`; a sample that
+// does not decode counts as `bad-type`. A remote endpoint on one of this process's topics with
+// another type is reported (topic and both types) at discovery.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/app_model.h"
+#include "dds/deployment.h"
+#include "runtime/transport.h"
+
+namespace arbc::dds {
+
+struct DdsOptions {
+  Deployment deployment;  // topics, types, ros2, depth
+  int domain = 0;         // the DDS domain (--domain, else the deployment's, else 0)
+  // Wall seconds without a message from a peer participant before it counts as gone (its
+  // topics' publishers are then reported lost).
+  double lease_seconds = 3;
+  // Wall seconds Transport::start waits for a peer on every topic that has one in the app
+  // (`--wait-peers`); then the run starts anyway, naming the topics still alone. 0: no wait.
+  double wait_peers = 0;
+};
+
+// A transport for `app` (its named types name the wire types). Nothing is created on the
+// network before Transport::open.
+std::unique_ptr<Transport> make_dds_transport(const model::App& app, DdsOptions options);
+
+}  // namespace arbc::dds

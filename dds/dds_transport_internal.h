@@ -1,0 +1,211 @@
+// The pieces of the DDS transport, shared by dds_transport.cc (life cycle, routing),
+// dds_endpoints.cc (readers and writers) and dds_discovery.cc (what remote endpoints say).
+// Not part of the public API.
+#pragma once
+
+#include <atomic>
+#include <deque>
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/DataWriterListener.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "dds/dds_transport.h"
+#include "dds/topic_type.h"
+#include "dds/wire_types.h"
+
+namespace arbc::dds {
+
+namespace fdds = eprosima::fastdds::dds;
+using ReturnCode_t = eprosima::fastrtps::types::ReturnCode_t;
+using eprosima::fastrtps::rtps::SampleIdentity;
+using WireTime = eprosima::fastrtps::rtps::Time_t;
+
+class DdsTransport;
+
+// One topic this process reads: a source of connections mediated here (an output of a module
+// hosted elsewhere) or the input of a hosted module that another process mediates.
+class TopicReader : public fdds::DataReaderListener {
+ public:
+  TopicReader(DdsTransport* transport, const TransportPort& port, bool input, std::string topic,
+              std::shared_ptr<const WireType> wire);
+  ~TopicReader() override;
+
+  // DDS threads: take every sample into the buffer, then have the executor drain it.
+  void on_data_available(fdds::DataReader* reader) override;
+  void on_sample_lost(fdds::DataReader* reader, const fdds::SampleLostStatus& status) override;
+  void on_subscription_matched(fdds::DataReader* reader,
+                               const fdds::SubscriptionMatchedStatus& status) override;
+  // The executor thread: hands the buffered samples to the engine.
+  void drain();
+
+  const TransportPort port;
+  const bool input;
+  const std::string topic;
+  const std::shared_ptr<const WireType> wire;
+  fdds::DataReader* reader = nullptr;
+  std::atomic<uint64_t> received{0}, lost{0}, undecodable{0};
+  std::atomic<int> publishers{0};
+
+ private:
+  // A decoded sample, with what it answers (an output) or who wrote it (an input).
+  struct Buffered {
+    Value value;
+    uint64_t answered = 0;
+    SampleIdentity identity;
+  };
+  // Adds a decoded sample (or counts it lost); posts a drain when none is pending.
+  void buffer(Buffered b, bool bad, const std::string& why);
+  DdsTransport* transport_;
+  std::mutex take_mutex_;  // one taker at a time (DDS may call from several threads)
+  WireSample* sample_ = nullptr;
+  std::mutex mutex_;  // guards what follows
+  std::deque<Buffered> pending_;
+  uint64_t overflow_ = 0, bad_ = 0;
+  std::string bad_why_;
+  bool drain_posted_ = false;
+  bool ever_matched_ = false;
+};
+
+// One topic this process writes: an output of a hosted module, or the input of a module hosted
+// elsewhere that a connection mediated here delivers to. Written on the executor thread.
+class TopicWriter : public fdds::DataWriterListener {
+ public:
+  TopicWriter(DdsTransport* transport, const TransportPort& port, bool input, std::string topic,
+              std::shared_ptr<const WireType> wire);
+  ~TopicWriter() override;
+  // Writes v with `params` (in: the related sample; out: the sample's identity); false when
+  // it could not (counted, reported once).
+  bool write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params);
+  void on_publication_matched(fdds::DataWriter* writer,
+                              const fdds::PublicationMatchedStatus& status) override;
+
+  const TransportPort port;
+  const bool input;
+  const std::string topic;
+  const std::shared_ptr<const WireType> wire;
+  fdds::DataWriter* writer = nullptr;
+  std::atomic<uint64_t> written{0}, failed{0};
+  std::atomic<int> subscribers{0};
+
+ private:
+  DdsTransport* transport_;
+  WireSample* sample_ = nullptr;
+  bool reported_ = false;
+  bool ever_matched_ = false;
+};
+
+// Compares what remote endpoints announce with this process's topics.
+class DiscoveryListener : public fdds::DomainParticipantListener {
+ public:
+  explicit DiscoveryListener(DdsTransport* transport) : transport_(transport) {}
+  void on_publisher_discovery(fdds::DomainParticipant* participant,
+                              eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override;
+  void on_subscriber_discovery(fdds::DomainParticipant* participant,
+                               eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override;
+
+ private:
+  DdsTransport* transport_;
+};
+
+class DdsTransport : public Transport {
+ public:
+  DdsTransport(const model::App& app, DdsOptions options);
+  ~DdsTransport() override;
+  std::string name() const override { return "dds"; }
+  bool open(const TransportPlan& plan, TransportSink* sink, std::string* error) override;
+  void publish(int out, const Value& v) override;
+  void deliver(int in, const Delivery& d) override;
+  void start(const std::atomic<bool>* interrupt) override;
+  void close() override;
+  std::string summary() const override;
+
+  // For the endpoints and the discovery listener.
+  TransportSink& sink() { return *sink_; }
+  bool closing() const { return closing_; }
+  int depth() const { return options_.deployment.depth; }
+  // Runs fn on the executor thread (from any thread); nothing once the transport closes.
+  void post(std::function<void()> fn);
+  // Reports `line` (from any thread) on the executor thread.
+  void report(std::string line);
+  // Deliveries not yet answered (docs/design.md#deliveries-not-yet-answered). DDS threads: how
+  // many of this process's deliveries into modules hosted elsewhere a sample answers: those
+  // up to the one it names as related (an arbc process names the last input sample it
+  // received), else (a program without arbc) those written before its source timestamp.
+  uint64_t answered(const fdds::SampleInfo& info);
+  // Executor thread: a hosted module received the input sample `id`; the related sample every
+  // output names from now on (none yet: `none`, which answers nothing).
+  void received(const SampleIdentity& id) { last_received_ = id; }
+  SampleIdentity related(const SampleIdentity& none) const {
+    return last_received_ == SampleIdentity::unknown() ? none : last_received_;
+  }
+  // A remote endpoint on `topic` announced `type` (and, when it is arbc, its spec type in
+  // `user_data`): reported once when it is not this process's type.
+  void check_remote(const std::string& topic, const std::string& type, const std::string& user_data,
+                    const char* what);
+
+ private:
+  // A topic this process reads or writes, named before any DDS entity exists.
+  struct Endpoint {
+    TransportPort port;
+    bool input = false;  // port is an input (else an output)
+    bool reads = false;  // a reader (else a writer)
+    std::string topic;
+    std::shared_ptr<const WireType> wire;
+  };
+  bool create_participant(std::string* error);
+  fdds::Topic* topic_for(const std::string& topic, const std::shared_ptr<const WireType>& wire,
+                         std::string* error);
+  bool add_reader(const Endpoint& e, std::string* error);
+  bool add_writer(const Endpoint& e, std::string* error);
+  // The wire type and topic of a port, checking that no two ports share a topic.
+  // The topics read or written here whose peer is still missing (dds_discovery.cc).
+  std::vector<std::string> topics_without_peers() const;
+  bool wire_of(const TransportPort& port, std::string* topic, std::shared_ptr<const WireType>* wire,
+               std::string* error);
+
+  model::App app_;
+  DdsOptions options_;
+  TransportSink* sink_ = nullptr;
+  std::unique_ptr<WireNaming> naming_;
+  DiscoveryListener discovery_{this};
+  fdds::DomainParticipant* participant_ = nullptr;
+  fdds::Publisher* publisher_ = nullptr;
+  fdds::Subscriber* subscriber_ = nullptr;
+  std::map<std::string, fdds::TypeSupport> types_;  // registered, by DDS type name
+  std::map<std::string, fdds::Topic*> topics_;      // by topic name
+  std::map<std::string, std::string> type_of_topic_, port_of_topic_;
+  std::vector<std::unique_ptr<TopicReader>> readers_;
+  std::vector<std::unique_ptr<TopicWriter>> writers_;
+  std::vector<TopicWriter*> output_writer_, input_writer_;  // by port index (null: none)
+  std::vector<bool> output_mediated_, input_hosted_;
+  std::atomic<bool> closing_{false};
+  bool closed_ = false;
+  // Deliveries written into modules hosted elsewhere, by module, not yet answered.
+  struct Pending {
+    eprosima::fastrtps::rtps::GUID_t writer;
+    eprosima::fastrtps::rtps::SequenceNumber_t seq;
+    uint64_t ticket = 0;  // 1 for the first delivery into the module, ...
+    WireTime time;
+  };
+  std::mutex acks_mutex_;  // guards sent_ and pending_
+  uint64_t sent_ = 0;
+  std::deque<Pending> pending_;   // in the order written
+  SampleIdentity last_received_;  // the last input sample a hosted module received
+  mutable std::mutex mismatch_mutex_;
+  std::set<std::string> mismatches_;  // reported lines
+};
+
+}  // namespace arbc::dds

@@ -1,0 +1,62 @@
+#include "dds/topic_type.h"
+
+#include <fastrtps/types/DynamicDataFactory.h>
+
+namespace arbc::dds {
+
+namespace ft = eprosima::fastrtps::types;
+
+WireTopicType::WireTopicType(std::shared_ptr<const WireType> wire)
+    : wire_(std::move(wire)), codec_(wire_->dynamic) {
+  setName(wire_->name.c_str());
+  // Unbounded strings and sequences: no useful maximum. Payloads start at this size and grow
+  // (the endpoints use a reallocating memory policy).
+  m_typeSize = 512;
+  m_isGetKeyDefined = false;
+  // Matching is by type name, as ROS 2 does; no TypeObject is built for dynamic types.
+  auto_fill_type_object(false);
+  auto_fill_type_information(false);
+}
+
+bool WireTopicType::serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) {
+  try {
+    return codec_.serialize(static_cast<WireSample*>(data)->data, payload);
+  } catch (...) {  // Fast-DDS throws ReturnCode values and fastcdr exceptions
+    return false;
+  }
+}
+
+bool WireTopicType::deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload,
+                                void* data) {
+  auto* sample = static_cast<WireSample*>(data);
+  try {
+    // Fast-DDS appends a sequence's elements to those a reused sample holds: start empty.
+    sample->data->clear_all_values();
+    sample->bad = !codec_.deserialize(payload, sample->data);
+  } catch (...) {
+    sample->bad = true;
+  }
+  return true;
+}
+
+std::function<uint32_t()> WireTopicType::getSerializedSizeProvider(void* data) {
+  return codec_.getSerializedSizeProvider(static_cast<WireSample*>(data)->data);
+}
+
+void* WireTopicType::createData() {
+  auto* sample = new WireSample;
+  sample->data = ft::DynamicDataFactory::get_instance()->create_data(wire_->dynamic);
+  return sample;
+}
+
+void WireTopicType::deleteData(void* data) {
+  auto* sample = static_cast<WireSample*>(data);
+  ft::DynamicDataFactory::get_instance()->delete_data(sample->data);
+  delete sample;
+}
+
+bool WireTopicType::getKey(void*, eprosima::fastrtps::rtps::InstanceHandle_t*, bool) {
+  return false;  // keyless topics, as ROS 2 messages are
+}
+
+}  // namespace arbc::dds

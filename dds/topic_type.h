@@ -1,0 +1,42 @@
+// The type support Fast-DDS sees for one wire type: samples are WireSample objects holding
+// Fast-DDS dynamic data. Unlike Fast-DDS's own DynamicPubSubType it never fails a sample that
+// does not decode (Fast-DDS would drop it without a trace, or an exception would escape into
+// its threads): the sample arrives marked `bad`, so the transport counts it as a `bad-type` drop.
+#pragma once
+
+#include <fastdds/dds/topic/TopicDataType.hpp>
+#include <fastrtps/types/DynamicData.h>
+#include <fastrtps/types/DynamicPubSubType.h>
+
+#include <memory>
+#include <string>
+
+#include "dds/wire_types.h"
+
+namespace arbc::dds {
+
+struct WireSample {
+  eprosima::fastrtps::types::DynamicData* data = nullptr;  // owned (DynamicDataFactory)
+  bool bad = false;  // the last deserialize could not decode the bytes
+};
+
+class WireTopicType : public eprosima::fastdds::dds::TopicDataType {
+ public:
+  explicit WireTopicType(std::shared_ptr<const WireType> wire);
+  const WireType& wire() const { return *wire_; }
+
+  bool serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) override;
+  // Always true: a sample that does not decode is marked WireSample::bad instead.
+  bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override;
+  std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
+  void* createData() override;
+  void deleteData(void* data) override;
+  bool getKey(void* data, eprosima::fastrtps::rtps::InstanceHandle_t* handle,
+              bool force_md5 = false) override;
+
+ private:
+  std::shared_ptr<const WireType> wire_;
+  eprosima::fastrtps::types::DynamicPubSubType codec_;
+};
+
+}  // namespace arbc::dds

@@ -1,0 +1,59 @@
+// Deliveries not yet answered (docs/design.md#deliveries-not-yet-answered): when a connection
+// mediated here delivers into a module hosted in another process, what this process knows of
+// that module's state (the events its outputs feed) predates the delivery until the module
+// answers: a message from it published after it received the delivery. Until then a rule
+// whose constraint reads such an event is not selected (absence of an answer is not knowledge
+// that nothing changed), or until the event's lifetime has passed since the delivery (by then
+// every entry that predates it would have lapsed, had the module kept still). In one process a
+// module sees a delivery before any later message is processed, so the rule never applies
+// there. Like the unknown-after-start rule it only removes selections: the proof holds.
+#include "runtime/runtime_internal.h"
+
+namespace arbc {
+
+void Runtime::collect_feedback_events() {
+  for (auto& cp : connections_) {
+    Connection& c = *cp;
+    if (c.is_feed) continue;
+    std::set<std::string> read;
+    c.model->constraint.collect_events(read);
+    for (const std::string& e : read) {
+      for (Connection* feed : c.destination->feeds) {
+        if (!feed->source->remote) continue;  // hosted here: it answers at once
+        const std::vector<std::string>& sets = feed->model->sets;
+        if (std::find(sets.begin(), sets.end(), e) != sets.end())
+          c.feedback.push_back({e, feed, declared_lifetime(e)});
+      }
+    }
+  }
+}
+
+bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
+  for (const Connection::UnknownEvent& u : c.feedback) {
+    // Answered: the feed processed a message published after the delivery was received, or
+    // the message judged now was published after that (its process had it by then).
+    uint64_t answered = std::max(u.feed->answered, c.incoming_answered);
+    for (const RemoteModule::Sent& s : u.feed->source->remote->recent) {
+      if (s.number <= answered) continue;
+      // A delivery made for this very message does not hide what the message is judged on:
+      // in one process, too, every connection from a source judges a message on one state.
+      if (s.message == c.message) continue;
+      if (u.lifetime && t >= s.time + *u.lifetime) continue;
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "not answered: %s (%s has not spoken since the delivery at %.3f s)",
+                    u.event.c_str(), u.feed->model->source.c_str(), s.time);
+      *why = line;
+      return false;
+    }
+  }
+  return true;
+}
+
+void Runtime::delivered_to_remote(RemoteModule& m, double t, uint64_t message) {
+  m.recent.push_back({++remote_sent_, t, message});
+  // Older than every lifetime: by then the module's entries from before would have lapsed.
+  while (!m.recent.empty() && m.recent.front().time + longest_lifetime_ < t) m.recent.pop_front();
+}
+
+}  // namespace arbc

@@ -1,0 +1,64 @@
+// What a mediator does not know after it (re)starts
+// (docs/design.md#unknown-events-after-a-start): an event a feed provides is unknown until that
+// feed has delivered once since start, or until the event's lifetime has passed (by then any
+// entry set before the start would have lapsed too). A rule whose constraint reads an unknown
+// event is not selected: absence of knowledge is not absence of the event. This only removes
+// selections, so the proof (at most one selected connection per port) holds as before. Also:
+// reporting events that lapse because their source is silent.
+#include "runtime/runtime_internal.h"
+
+namespace arbc {
+
+void Runtime::collect_unknown_events() {
+  for (auto& cp : connections_) {
+    Connection& c = *cp;
+    if (c.is_feed) continue;
+    std::set<std::string> read;
+    c.model->constraint.collect_events(read);
+    for (const std::string& e : read) {
+      const model::Event* event = app_.find_event(e);
+      if (!event || event->source.empty()) continue;  // not provided by a feed
+      for (Connection* feed : c.destination->feeds) {
+        const std::vector<std::string>& sets = feed->model->sets;
+        if (std::find(sets.begin(), sets.end(), e) != sets.end())
+          c.unknown.push_back({e, feed, event->lifetime});
+      }
+    }
+  }
+}
+
+bool Runtime::knows_events_of(Connection& c, double t, std::string* why) {
+  std::erase_if(c.unknown, [&](const Connection::UnknownEvent& u) {
+    return u.feed->fed || (u.lifetime && t >= start_time_ + *u.lifetime);
+  });
+  if (c.unknown.empty()) return true;
+  const Connection::UnknownEvent& u = c.unknown.front();
+  *why = "unknown since start: " + u.event + " (nothing from " + u.feed->model->source + " yet)";
+  return false;
+}
+
+void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
+  Connection& c = *connections_[static_cast<size_t>(owner)];
+  const std::string& name = in.container.index().name(event);
+  trace_.event(expiry, in.qualified, "expire", name, c.name, expiry);
+  if (!options_.report_silent_lapses) return;
+  std::optional<double> lifetime = declared_lifetime(name);
+  double silent = expiry - c.last_arrival;
+  if (!lifetime || silent + 1e-9 < *lifetime) return;  // its source spoke; the entry just ended
+  if (!c.silence_reported.insert(name).second) return;
+  char line[256];
+  std::snprintf(line, sizeof line, "event %s at %s lapsed at %.3f s: nothing from %s for %.3g s",
+                name.c_str(), in.qualified.c_str(), expiry, c.model->source.c_str(), *lifetime);
+  report(line);
+}
+
+void Runtime::watch_lapses(double period) {
+  executor_->post(now() + period, [this, period] {
+    for (auto& in : in_ports_) {
+      if (in->mediated) in->container.present(now());
+    }
+    watch_lapses(period);
+  });
+}
+
+}  // namespace arbc

@@ -1,0 +1,110 @@
+// The unknown-after-start rule of distributed runs (RunOptions::unknown_until_fed) and the
+// report of events that lapse because their source went silent.
+#include <gtest/gtest.h>
+
+#include "runtime/runtime_test_util.h"
+
+namespace arbc {
+namespace {
+
+using testing::TestApp;
+
+// Src.f feeds event `e` (lifetime 0.5 s) into Sink.x; rule `r` (Src.x -> Sink.x) reads it.
+void feed_app(TestApp& t, const std::string& rule_constraint) {
+  t.module("Src", {"out x: int", "out f: bool"});
+  t.module("Sink", {"in x: int"});
+  t.app.events.push_back({"e", 0.5, "Src.f", {}});
+  t.connect("feed", "Src.f", "Sink.x", "false",
+            "PortMonitor.accept = function(on)\n"
+            "  if on then PortMonitor.setEvent('e') else PortMonitor.unsetEvent('e') end\n"
+            "  return false\n"
+            "end\n",
+            model::ConnectionKind::Feed)
+      .sets = {"e"};
+  t.connect("r", "Src.x", "Sink.x", rule_constraint);
+}
+
+std::vector<double> delivery_times(Runtime& rt) {
+  std::vector<double> out;
+  for (const auto& g : TestApp::sink(rt).got) out.push_back(g.time);
+  return out;
+}
+
+// `not e` looks true at start, but nothing is known about e: the rule waits for the feed.
+TEST(UnknownEventsTest, ARuleWaitsForItsFeedAfterStart) {
+  TestApp t;
+  feed_app(t, "not e");
+  RunOptions o;
+  o.unknown_until_fed = true;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));      // unknown: not selected
+  TestApp::publish_at(*rt, 0.2, "Src", "f", Value(false));  // the feed speaks: e is absent
+  TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));      // selected
+  rt->advance(1);
+  EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.3});
+  auto s = TestApp::stats_of(rt->stats(), "r");
+  EXPECT_EQ(s.drops(DropReason::NotSelected), 1u);
+}
+
+// With no message from the feed, e is known absent once its lifetime has passed since start.
+TEST(UnknownEventsTest, TheLifetimeEndsTheUnknown) {
+  TestApp t;
+  feed_app(t, "not e");
+  RunOptions o;
+  o.unknown_until_fed = true;
+  auto rt = t.start(o);
+  for (double at : {0.1, 0.4, 0.49, 0.5, 0.7}) TestApp::publish_at(*rt, at, "Src", "x", Value(1));
+  rt->advance(1);
+  EXPECT_EQ(delivery_times(*rt), (std::vector<double>{0.5, 0.7}));
+}
+
+// Without the option (a single-process run) nothing changes: `not e` holds at once.
+TEST(UnknownEventsTest, OffByDefault) {
+  TestApp t;
+  feed_app(t, "not e");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));
+  rt->advance(1);
+  EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.1});
+}
+
+// A rule that reads no fed event is not held back.
+TEST(UnknownEventsTest, RulesWithoutFedEventsAreUnaffected) {
+  TestApp t;
+  feed_app(t, "true");
+  RunOptions o;
+  o.unknown_until_fed = true;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));
+  rt->advance(1);
+  EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.1});
+}
+
+// The feed sets e at 1.0 and 1.2 and then goes silent: e lapses at 1.7 and that is reported
+// once, although no message arrives to look at the container; an explicit unset later (the
+// source speaks again) is not a lapse.
+TEST(UnknownEventsTest, ASilentSourcesLapseIsReportedOnce) {
+  TestApp t;
+  feed_app(t, "e");
+  RunOptions o;
+  o.report_silent_lapses = true;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 1.0, "Src", "f", Value(true));
+  TestApp::publish_at(*rt, 1.2, "Src", "f", Value(true));
+  TestApp::publish_at(*rt, 3.0, "Src", "f", Value(true));
+  TestApp::publish_at(*rt, 3.1, "Src", "f", Value(false));
+  rt->advance(2.5);
+  bool reported_by_then = false;
+  for (const std::string& r : t.reports) reported_by_then |= r.find("lapsed") != std::string::npos;
+  EXPECT_TRUE(reported_by_then) << "the lapse at 1.7 was not reported by 2.5";
+  rt->advance(5);
+  std::vector<std::string> lapses;
+  for (const std::string& r : t.reports) {
+    if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
+  }
+  ASSERT_EQ(lapses.size(), 1u) << ::testing::PrintToString(t.reports);
+  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.700 s: nothing from Src.f for 0.5 s");
+}
+
+}  // namespace
+}  // namespace arbc

@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""The paper's experiment split in two processes over DDS (docs/distributed.md).
+
+W hosts the eight table_clean modules and the simulated world and mediates nothing; M hosts
+nothing and mediates every module; both run `--transport dds --time-scale 10`. Each case
+starts M, then W, and checks what each prints.
+
+usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
+  CASE  a scenario (reachable, tool, human, mixed, perturbed): every seed ends with a clean
+        table and 0 conflicts, and M ends cleanly on SIGTERM;
+        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again;
+        kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT;
+        signals: W and M each ended mid-run by SIGINT, then by SIGTERM: each exits, prints
+        its counters, writes its trace and report and deletes its DDS entities.
+  SEEDS how many seeds (1..SEEDS) for a scenario (default 5).
+Every run gets a DDS domain of its own (a lock file under /tmp holds it), and the profile
+keeps DDS traffic on this machine, so parallel ctest runs do not see each other.
+"""
+import json
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+from dds_domain import Domain, environment
+
+SCALE = os.environ.get("ARBC_SPLIT_SCALE", "10")
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+class Split:
+    def __init__(self, arbc, plugin, spec, profile):
+        self.arbc, self.plugin, self.profile = arbc, plugin, profile
+        self.dir = tempfile.mkdtemp(prefix="arbc-dds-split-")
+        built = subprocess.run([arbc, "build", spec, "-o", self.dir], capture_output=True, text=True)
+        if built.returncode != 0:
+            fail("arbc build: " + built.stdout + built.stderr)
+        self.app = os.path.join(self.dir, "table_clean")
+        self.domain = Domain()
+        self.env = environment(profile)
+
+    def start(self, role, extra):
+        """Starts M or W; its trace and report go to self.files(role)."""
+        trace, report = self.files(role)
+        for f in (trace, report):
+            if os.path.exists(f):
+                os.remove(f)
+        common = ["--transport", "dds", "--time-scale", SCALE, "--domain", str(self.domain.id),
+                  "--wait-peers", "30", "--trace", trace, "--report", report]
+        if role == "M":
+            words = [self.arbc, "run", self.app, "--host", "none", "--mediate", "all",
+                     "--duration", "100000s"] + common + extra
+        else:
+            words = [self.arbc, "run", self.app, "--plugin", self.plugin, "--host", "all",
+                     "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
+        return subprocess.Popen(words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, env=self.env)
+
+    def files(self, role):
+        return os.path.join(self.dir, role + ".trace.jsonl"), os.path.join(self.dir, role + ".html")
+
+    def check_files(self, role, what, interrupted, *outputs):
+        """The trace of `role` is JSON lines and its report was written (as interrupted)."""
+        trace, report = self.files(role)
+        expect(os.path.exists(trace) and os.path.exists(report),
+               f"{what}: {role} wrote no trace or no report", *outputs)
+        lines = open(trace).read().splitlines()
+        expect(len(lines) > 1, f"{what}: {role}'s trace is empty", *outputs)
+        for line in lines:
+            json.loads(line)  # every line is a JSON record (raises on a torn line)
+        html = open(report).read()
+        expect("</html>" in html, f"{what}: {role}'s report is not complete", *outputs)
+        expect(("interrupted" in html) == interrupted,
+               f"{what}: {role}'s report {'does not say' if interrupted else 'says'} it was interrupted",
+               *outputs)
+
+
+def finish(proc, name, timeout):
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+        fail(f"{name} did not end within {timeout} s:\n{out}")
+    return proc.returncode, out
+
+
+def stop(proc, name, sig=signal.SIGTERM):
+    proc.send_signal(sig)
+    return finish(proc, name, 15)
+
+
+def expect(cond, message, *outputs):
+    if not cond:
+        fail(message + "".join("\n--- output ---\n" + o for o in outputs))
+
+
+def alive(proc, message):
+    """Fails with `message` and proc's output when proc has ended (its output is read only then)."""
+    if proc.poll() is not None:
+        fail(message + "\n--- output ---\n" + proc.communicate()[0])
+
+
+def check_w(rc, out, what):
+    expect(rc == 0, f"{what}: W exited {rc}", out)
+    expect("conflicts: 0\n" in out, f"{what}: W counted conflicts", out)
+    expect("stopped: table clean" in out, f"{what}: the table is not clean", out)
+
+
+def check_m_stopped(rc, out, what, signame="SIGTERM"):
+    expect(rc == 0, f"{what}: M exited {rc} after {signame}", out)
+    expect(f"interrupted ({signame})" in out, f"{what}: M did not say it was interrupted", out)
+    expect("result: success" in out, f"{what}: M did not end with its counters and result", out)
+    expect("dds: domain" in out, f"{what}: M printed no transport summary", out)
+
+
+def scenario(split, name, seeds):
+    for seed in range(1, seeds + 1):
+        what = f"{name} seed {seed}"
+        m = split.start("M", [])
+        w = split.start("W", ["--scenario", name, "--seed", str(seed)])
+        rc, out = finish(w, "W", 240)
+        mrc, mout = stop(m, "M")
+        check_w(rc, out, what)
+        check_m_stopped(mrc, mout, what)
+        expect(not re.search(r"connection \S+ quarantined:", mout), f"{what}: M quarantined a connection", mout)
+        split.check_files("W", what, False, out)
+        split.check_files("M", what, True, mout)
+        print(f"ok {what}: {out.splitlines()[0] if out else ''}")
+
+
+def kill_m(split):
+    m = split.start("M", [])
+    w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
+    time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
+    alive(w, "W ended before M was killed")
+    m.send_signal(signal.SIGKILL)
+    m.wait()
+    time.sleep(0.5)
+    m2 = split.start("M", [])
+    rc, out = finish(w, "W", 240)
+    mrc, mout = stop(m2, "M (restarted)")
+    check_w(rc, out, "kill-m")
+    check_m_stopped(mrc, mout, "kill-m")
+    expect("conflicts: 0" in out, "kill-m: conflicts after the restart", out)
+    split.check_files("M", "kill-m (restarted M)", True, mout)
+    print("ok kill-m: W survived M's SIGKILL; the restarted M finished the run\n" + out + mout)
+
+
+def kill_w(split):
+    m = split.start("M", [])
+    w = split.start("W", ["--scenario", "mixed", "--seed", "2"])
+    time.sleep(2.0)
+    alive(w, "W ended early")
+    w.send_signal(signal.SIGKILL)
+    w.wait()
+    # Past every lifetime of table_clean's events at time scale 10, and past DDS's lease of a
+    # participant that vanished without a word (3 wall seconds, DdsOptions::lease_seconds).
+    time.sleep(5.0)
+    alive(m, "M ended when W was killed")
+    mrc, mout = stop(m, "M", signal.SIGINT)
+    check_m_stopped(mrc, mout, "kill-w", "SIGINT")
+    expect(" lapsed at " in mout and "nothing from" in mout, "kill-w: M reported no lapse", mout)
+    expect("has no publisher any more" in mout, "kill-w: M did not notice W's topics go", mout)
+    split.check_files("M", "kill-w", True, mout)
+    print("ok kill-w: M kept running and reported the lapsed events\n" + mout)
+
+
+def signals(split):
+    """Each process ends cleanly on each signal: W by SIGINT and M by SIGTERM, then the reverse."""
+    for wsig, msig in ((signal.SIGINT, signal.SIGTERM), (signal.SIGTERM, signal.SIGINT)):
+        what = f"W {wsig.name}, M {msig.name}"
+        m = split.start("M", [])
+        w = split.start("W", ["--scenario", "mixed", "--seed", "1"])
+        time.sleep(2.0)  # mid-run
+        alive(w, f"{what}: W ended early")
+        wrc, wout = stop(w, "W", wsig)
+        # 3: the run ends before the table is clean, which the world reports as a failure.
+        expect(wrc == 3, f"{what}: W exited {wrc} (expected 3: the table is not clean yet)", wout)
+        expect(f"interrupted ({wsig.name})" in wout and "stopped: interrupted" in wout,
+               f"{what}: W did not say it was interrupted", wout)
+        expect("conflicts: 0" in wout, f"{what}: W counted conflicts", wout)
+        expect("dds: domain" in wout and "input (mediated elsewhere)" in wout,
+               f"{what}: W printed no counters or transport summary", wout)
+        split.check_files("W", what, True, wout)
+        mrc, mout = stop(m, "M", msig)
+        check_m_stopped(mrc, mout, what, msig.name)
+        split.check_files("M", what, True, mout)
+        print(f"ok {what}: both ended cleanly")
+
+
+def main():
+    if len(sys.argv) < 6:
+        print(__doc__)
+        sys.exit(2)
+    arbc, plugin, spec, profile, case = sys.argv[1:6]
+    seeds = int(sys.argv[6]) if len(sys.argv) > 6 else 5
+    split = Split(arbc, plugin, spec, profile)
+    if case == "kill-m":
+        kill_m(split)
+    elif case == "kill-w":
+        kill_w(split)
+    elif case == "signals":
+        signals(split)
+    else:
+        scenario(split, case, seeds)
+
+
+if __name__ == "__main__":
+    main()

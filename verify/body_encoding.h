@@ -1,0 +1,50 @@
+// A rule's body as a Z3 formula over one input message (docs/design.md#the-proof): whether
+// the generated monitor accepts the message, and the value it delivers.
+//
+// Exact for lists of at most the list bound, `int` arithmetic that does not overflow 64 bits
+// and finite floats read as reals (the assumptions the report prints). What cannot be
+// encoded exactly (string order and length, division or `%` by something other than a nonzero
+// constant, a list-valued `var`) makes the rule *opaque* for data: `opaque` says why, and no
+// data question is asked about the rule. Monitor state is abstracted soundly: a `var` holds an
+// unknown value of its type on each message (any value earlier messages could have left),
+// `now()` is an unknown time; `set`, `unset`, `throttle` and `every` do not change what is
+// accepted or emitted (their effect on events is the effective guard's business).
+#pragma once
+
+#include <z3++.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/body.h"
+#include "verify/sym_value.h"
+
+namespace arbc::verify {
+
+// An `accept` (or the condition of an `if`) with its tracking literal, for explanations.
+struct AcceptTracker {
+  z3::expr literal;
+  int line = 0;
+};
+
+struct EncodedBody {
+  std::string opaque;               // non-empty: why the body is opaque for data; the rest is unset
+  z3::expr accepts;                 // the monitor accepts: no `accept` fails and every value exists
+  std::optional<SymValue> emitted;  // what update() delivers when it accepts
+  std::vector<z3::expr> side;       // definitions of auxiliary constants (square roots)
+  // Each `accept E` is encoded as `literal implies E`: assume every literal to ask about the
+  // body; an unsat core of them names the accepts that matter.
+  std::vector<AcceptTracker> trackers;
+  std::vector<std::string> abstracted;                  // state read: "var x", "now()"
+  std::vector<std::pair<std::string, SymValue>> state;  // the abstracted values, by name
+
+  explicit EncodedBody(z3::context& ctx) : accepts(ctx.bool_val(false)) {}
+};
+
+// Encodes `body` on the message `msg`; fresh constants are named after `prefix` (unique per
+// rule and message).
+EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
+                        const std::string& prefix);
+
+}  // namespace arbc::verify

@@ -1,0 +1,230 @@
+#include "verify/data_query.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/json_text.h"
+#include "verify/body_encoding.h"
+
+namespace arbc::verify {
+
+namespace {
+
+// Sets the solver's timeout to the time left; false when none is left.
+bool set_timeout(z3::solver& s, Clock::time_point deadline) {
+  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+  if (left.count() <= 0) return false;
+  s.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
+  return true;
+}
+
+// The predicate over a delivered value, as a one-statement body `accept P` on that value.
+model::Body predicate_body(const model::BodyExpr& p) {
+  model::BodyStmt s;
+  s.kind = model::BodyStmt::Kind::Accept;
+  s.expr = p;
+  return {s};
+}
+
+std::string state_text(const z3::model& m, const std::pair<std::string, SymValue>& s) {
+  std::string name = s.first.rfind("var ", 0) == 0 ? s.first.substr(4) : s.first;
+  return name + " = " + spec_value_text(concrete(m, s.second));
+}
+
+}  // namespace
+
+struct DataQuery::Encoded {
+  EncodedBody body;
+  z3::expr accepts;  // indicator: assumed when the question is about this rule
+  explicit Encoded(EncodedBody b, z3::expr lit) : body(std::move(b)), accepts(std::move(lit)) {}
+};
+
+DataQuery::DataQuery(const model::App& app, z3::context& ctx, int list_bound,
+                     Clock::time_point deadline)
+    : app_(app), ctx_(ctx), list_bound_(list_bound), deadline_(deadline), solver_(ctx) {}
+
+std::string DataQuery::opaque_reason(const model::Connection& c) {
+  if (c.opaque) return "its monitor is a hand-written script";
+  if (!c.body) return "its body is not recorded in the model (rebuild with this arbc)";
+  const model::Port* p = app_.find_port(c.source);
+  if (!p || !p->type) return "its source port's type is unknown";
+  const Encoded& e = encoded(c);
+  if (!e.body.opaque.empty()) return "its body uses " + e.body.opaque;
+  return "";
+}
+
+const SymValue& DataQuery::message(const std::string& source) {
+  auto it = messages_.find(source);
+  if (it != messages_.end()) return it->second;
+  std::vector<z3::expr> domain;
+  const model::Port* p = app_.find_port(source);
+  SymValue m = fresh_value(ctx_, *p->type, source, list_bound_, domain);
+  for (const z3::expr& d : domain) solver_.add(d);  // list lengths within the bound
+  return messages_.emplace(source, std::move(m)).first->second;
+}
+
+// The connection's body over its source's message, encoded once: `lit implies accepts`, plus
+// the definitions of its auxiliary constants (true whatever is assumed).
+const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
+  auto it = rules_.find(&c);
+  if (it != rules_.end()) return *it->second;
+  EncodedBody b = encode_body(ctx_, *c.body, message(c.source), c.destination + "/" + c.name);
+  z3::expr lit = ctx_.bool_const(("accepts!" + c.destination + "/" + c.name).c_str());
+  if (b.opaque.empty()) {
+    solver_.add(z3::implies(lit, b.accepts));
+    for (const z3::expr& x : b.side) solver_.add(x);
+  }
+  auto e = std::make_shared<Encoded>(std::move(b), lit);
+  return *rules_.emplace(&c, e).first->second;
+}
+
+// An indicator for "what c delivers satisfies p"; the trackers of p's own one `accept` are
+// asserted, so only the indicator is assumed.
+z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::BodyExpr& p) {
+  auto key = std::make_pair(&c, &p);
+  auto it = predicates_.find(key);
+  if (it != predicates_.end()) return it->second;
+  const Encoded& e = encoded(c);
+  z3::expr lit = ctx_.bool_const(
+      ("uses!" + c.destination + "/" + c.name + "#" + std::to_string(predicates_.size())).c_str());
+  EncodedBody pe = encode_body(ctx_, predicate_body(p), *e.body.emitted,
+                               c.destination + "/" + c.name + ".emitted");
+  // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
+  // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
+  if (pe.opaque.empty()) {
+    solver_.add(z3::implies(lit, pe.accepts));
+    for (const z3::expr& x : pe.side) solver_.add(x);
+    for (const AcceptTracker& t : pe.trackers) solver_.add(t.literal);
+  }
+  return predicates_.emplace(key, lit).first->second;
+}
+
+Answer DataQuery::check(const z3::expr_vector& assumptions) {
+  ++queries_;
+  if (!set_timeout(solver_, deadline_)) {
+    unknown_reason_ = "timeout";
+    return Answer::Unknown;
+  }
+  z3::check_result r = z3::unknown;
+  try {
+    r = solver_.check(assumptions);
+  } catch (const z3::exception& e) {
+    unknown_reason_ = std::string("solver error: ") + e.msg();
+    return Answer::Unknown;
+  }
+  if (r == z3::sat) return Answer::Sat;
+  if (r == z3::unsat) return Answer::Unsat;
+  std::string why = solver_.reason_unknown();
+  unknown_reason_ =
+      why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
+          ? "timeout"
+          : "the solver gave up (" + why + ")";
+  return Answer::Unknown;
+}
+
+Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core) {
+  z3::expr_vector assumptions(ctx_);
+  std::map<unsigned, std::pair<size_t, int>> tracker_of;  // literal id -> (side, line)
+  std::vector<std::optional<z3::expr>> predicates;
+  for (size_t i = 0; i < sides.size(); ++i) {
+    const Encoded& e = encoded(*sides[i].connection);
+    assumptions.push_back(e.accepts);
+    for (const AcceptTracker& t : e.body.trackers) {
+      assumptions.push_back(t.literal);
+      tracker_of.emplace(t.literal.id(), std::make_pair(i, t.line));
+    }
+    predicates.emplace_back();
+    if (sides[i].emitted_holds && e.body.emitted) {
+      predicates.back() = predicate_literal(*sides[i].connection, *sides[i].emitted_holds);
+      assumptions.push_back(*predicates.back());
+    }
+  }
+  Answer a = check(assumptions);
+  if (a == Answer::Unsat && core) {
+    core->accept_lines.assign(sides.size(), {});
+    core->predicate_used.assign(sides.size(), false);
+    z3::expr_vector uc = solver_.unsat_core();
+    for (unsigned k = 0; k < uc.size(); ++k) {
+      auto it = tracker_of.find(uc[k].id());
+      if (it != tracker_of.end()) core->accept_lines[it->second.first].push_back(it->second.second);
+      for (size_t i = 0; i < predicates.size(); ++i)
+        if (predicates[i] && z3::eq(uc[k], *predicates[i])) core->predicate_used[i] = true;
+    }
+    for (auto& lines : core->accept_lines) std::sort(lines.begin(), lines.end());
+  }
+  if (a == Answer::Sat && witness) {
+    z3::model model = solver_.get_model();
+    for (const DataSide& s : sides) {
+      const std::string& src = s.connection->source;
+      if (std::find(witness->message_sources.begin(), witness->message_sources.end(), src) !=
+          witness->message_sources.end())
+        continue;
+      witness->messages.push_back(concrete(model, message(src)));
+      witness->message_sources.push_back(src);
+    }
+    for (const DataSide& s : sides) {
+      const Encoded& e = encoded(*s.connection);
+      witness->emitted.push_back(e.body.emitted ? concrete(model, *e.body.emitted) : Value());
+      std::vector<std::string> state;
+      for (const auto& st : e.body.state) state.push_back(state_text(model, st));
+      witness->assumed_state.push_back(std::move(state));
+    }
+  }
+  return a;
+}
+
+std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Value& value,
+                                     const Type& t) {
+  SymValue v = constant_value(ctx_, value, t, list_bound_);
+  EncodedBody e = encode_body(ctx_, predicate_body(predicate), v, "holds");
+  if (!e.opaque.empty()) return std::nullopt;
+  z3::solver s(ctx_);
+  for (const z3::expr& x : e.side) s.add(x);
+  for (const AcceptTracker& tr : e.trackers) s.add(tr.literal);
+  s.add(e.accepts);
+  z3::check_result r = s.check();
+  if (r == z3::unknown) return std::nullopt;
+  return r == z3::sat;
+}
+
+std::string spec_value_text(const Value& v) {
+  std::string out;
+  switch (v.kind()) {
+    case Value::Kind::None:
+      return "none";
+    case Value::Kind::Bool:
+      return v.as_bool() ? "true" : "false";
+    case Value::Kind::Int:
+      return std::to_string(v.as_int());
+    case Value::Kind::Float:
+      append_json_double(out, v.as_float());
+      if (out.size() > 2 && out.compare(out.size() - 2, 2, ".0") == 0) out.resize(out.size() - 2);
+      return out;
+    case Value::Kind::String:
+      append_json_string(out, v.as_string());
+      return out;
+    case Value::Kind::Vec3: {
+      const Eigen::Vector3d& p = v.as_vec3();
+      return "vec3(" + spec_value_text(Value(p.x())) + ", " + spec_value_text(Value(p.y())) + ", " +
+             spec_value_text(Value(p.z())) + ")";
+    }
+    case Value::Kind::List: {
+      out = "[";
+      for (size_t i = 0; i < v.as_list().size(); ++i)
+        out += (i ? ", " : "") + spec_value_text(v.as_list()[i]);
+      return out + "]";
+    }
+    case Value::Kind::Record: {
+      out = "{ ";
+      bool first = true;
+      for (const auto& [name, f] : v.as_record()) {
+        out += (first ? "" : ", ") + name + ": " + spec_value_text(f);
+        first = false;
+      }
+      return out + " }";
+    }
+  }
+  return out;
+}
+
+}  // namespace arbc::verify

@@ -1,0 +1,90 @@
+// Questions about message data (docs/checks.md#message-data): can these rules accept the same message
+// (or independent messages), with what they emit satisfying given predicates? One Z3 query
+// over the encoded bodies (verify/body_encoding.h), in the theories of the data (linear and
+// nonlinear real and integer arithmetic, strings, bounded lists).
+#pragma once
+
+#include <z3++.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "core/value.h"
+#include "verify/port_solver.h"
+#include "verify/sym_value.h"
+
+namespace arbc::verify {
+
+// Lists in messages have at most this many elements unless --list-bound says otherwise.
+inline constexpr int kDefaultListBound = 4;
+
+// One side of a data question: a rule that accepts its message and, if `emitted_holds` is
+// set, delivers a value for which that predicate (over the delivered value) holds. Sides with
+// the same source read the same message; sides with different sources, independent ones.
+struct DataSide {
+  const model::Connection* connection = nullptr;
+  const model::BodyExpr* emitted_holds = nullptr;
+};
+
+struct DataWitness {
+  std::vector<Value> messages;  // one per distinct source, in the order of the sides
+  std::vector<std::string> message_sources;
+  std::vector<Value> emitted;  // by side
+  // Abstracted monitor state the witness assumes ("var n = 3"), by side; empty when none.
+  std::vector<std::vector<std::string>> assumed_state;
+};
+
+// Why no message satisfies the question: per side, the `accept` lines in an unsat core, and
+// whether the side's emitted predicate is in it.
+struct DataCore {
+  std::vector<std::vector<int>> accept_lines;
+  std::vector<bool> predicate_used;
+};
+
+// One incremental solver for the whole app: each source's message is one set of constants,
+// each rule is encoded once with an indicator literal, and every question is a check under
+// assumptions, so a pair costs a solver call, not a new encoding.
+class DataQuery {
+ public:
+  DataQuery(const model::App& app, z3::context& ctx, int list_bound, Clock::time_point deadline);
+
+  // Why the connection's body is opaque for data ("" when it can be encoded).
+  std::string opaque_reason(const model::Connection& c);
+
+  // Sat: a witness; Unsat: the core. Every side must be encodable (opaque_reason empty).
+  Answer ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core);
+
+  // Whether `predicate` (over a delivered value) holds on the concrete `value` of type `t`;
+  // nullopt when it cannot be decided (opaque, solver trouble).
+  std::optional<bool> holds(const model::BodyExpr& predicate, const Value& value, const Type& t);
+
+  std::string unknown_reason() const { return unknown_reason_; }
+  int queries() const { return queries_; }
+
+ private:
+  struct Encoded;  // a rule's encoding (data_query.cc)
+  const Encoded& encoded(const model::Connection& c);
+  const SymValue& message(const std::string& source);
+  z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p);
+  Answer check(const z3::expr_vector& assumptions);
+
+  const model::App& app_;
+  z3::context& ctx_;
+  int list_bound_;
+  Clock::time_point deadline_;
+  z3::solver solver_;
+  std::map<std::string, SymValue> messages_;
+  std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
+  std::map<std::pair<const model::Connection*, const model::BodyExpr*>, z3::expr> predicates_;
+  std::string unknown_reason_;
+  int queries_ = 0;
+};
+
+// A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`.
+std::string spec_value_text(const Value& v);
+
+}  // namespace arbc::verify

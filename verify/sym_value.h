@@ -1,0 +1,64 @@
+// Symbolic values of spec types in Z3 (docs/design.md#the-proof): what the data encoding
+// (verify/body_encoding.h) computes for each expression of a body.
+//
+//   bool -> Bool, int -> Int, float -> Real, string -> String (sequences of characters),
+//   vec3 -> three Reals, record -> its fields (sorted by name, as app values are),
+//   list<T> -> a length (Int) and `capacity` element values: elements at or past the length
+//   are unused. A message list has capacity N (the list bound), so lists of at most N
+//   elements are covered exactly.
+#pragma once
+
+#include <z3++.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/type.h"
+#include "core/value.h"
+
+namespace arbc::verify {
+
+struct SymValue {
+  enum class Kind { Bool, Int, Real, String, Vec3, List, Record };
+  Kind kind = Kind::Bool;
+  z3::expr scalar;                 // Bool/Int/Real/String; List: the length
+  std::vector<SymValue> items;     // Vec3: x, y, z; List: elements; Record: fields
+  std::vector<std::string> names;  // Record: field names, sorted
+
+  explicit SymValue(z3::context& ctx) : scalar(ctx.bool_val(true)) {}
+  SymValue(Kind k, z3::expr s) : kind(k), scalar(std::move(s)) {}
+
+  bool numeric() const { return kind == Kind::Int || kind == Kind::Real; }
+  const SymValue* field(const std::string& name) const;
+};
+
+// Fresh constants for a value of type `t` named after `prefix` ("m1.objects"). List lengths
+// get 0 <= len <= bound, added to `domain`.
+SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix, int bound,
+                     std::vector<z3::expr>& domain);
+
+// The constant `v` of type `t` (lists get capacity `bound`, unused elements zero).
+SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bound);
+
+// A fresh value shaped like `v` (a `var`'s unknown state); lists keep v's capacity.
+SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& prefix);
+
+// The exact rational value of a finite double, as a Real numeral.
+z3::expr exact_real(z3::context& ctx, double d);
+
+// The number as a Real (Int converted).
+z3::expr as_real(const SymValue& v);
+
+// `if c then a else b`; nullopt when the shapes cannot be merged.
+std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymValue& b);
+
+// Structural equality as the generated Lua computes it (`arbc_equal`, numbers by value);
+// nullopt when the shapes differ.
+std::optional<z3::expr> sym_equal(const SymValue& a, const SymValue& b);
+
+// The concrete value of v in a model (list elements up to the length), as an app Value.
+Value concrete(const z3::model& m, const SymValue& v);
+
+}  // namespace arbc::verify
