@@ -10,6 +10,7 @@
 
 #include "core/app_model.h"
 #include "core/diagnostic.h"
+#include "core/test_case.h"
 
 namespace arbc::verify {
 
@@ -106,6 +107,13 @@ struct TemporalResult {
   // length of the (shortest) trace.
   int bound = 0;
   std::vector<TraceStep> trace;  // Violated only
+  // The trace as a test of the app that `arbc test` runs (verify/temporal/counterexample.h);
+  // nullopt when some step has no message to replay it with (`not_replayable` says why).
+  std::optional<model::TestCase> replay_test;
+  std::string not_replayable;
+  // The runtime ran replay_test in simulated time and showed the violation: only then is the
+  // outcome Violated (docs/design.md#properties-over-time).
+  bool replayed = false;
   std::string unknown_reason;
   int solver_queries = 0;
 };

@@ -2,6 +2,8 @@
 #include <nlohmann/json.hpp>
 
 #include "verify/report_format.h"
+#include "verify/temporal/counterexample.h"
+#include "verify/temporal/report_text.h"
 
 namespace arbc::verify {
 namespace {
@@ -107,7 +109,7 @@ Json temporal_json(const TemporalResult& t) {
   j["location"] = location_json(t.property.loc);
   j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
   j["bound"] = t.bound;
-  j["replayed"] = false;  // the runtime replay is not wired yet (docs/design.md)
+  j["replayed"] = t.replayed;
   j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
   j["trace"] = Json::array();
   for (const TraceStep& s : t.trace) {
@@ -120,6 +122,10 @@ Json temporal_json(const TemporalResult& t) {
                           {"set", s.set},
                           {"unset", s.unset}});
   }
+  // The counterexample as a tests file beside the spec (`arbc test` replays it).
+  j["test"] = t.replayed
+                  ? Json(temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property)))
+                  : Json(nullptr);
   return j;
 }
 

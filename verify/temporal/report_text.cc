@@ -4,6 +4,7 @@
 
 #include "core/join.h"
 #include "core/time_text.h"
+#include "verify/temporal/counterexample.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -32,7 +33,25 @@ std::string step_text(const TraceStep& s) {
   return line + "\n";
 }
 
+std::string indent(const std::string& text, const std::string& by) {
+  std::string out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) out += by + text.substr(start, end - start);
+    out += "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
 }  // namespace
+
+std::string spec_name(const model::TemporalProperty& p) {
+  size_t slash = p.loc.file.find_last_of('/');
+  return slash == std::string::npos ? p.loc.file : p.loc.file.substr(slash + 1);
+}
 
 std::string temporal_text(const TemporalResult& r) {
   const std::string port = r.property.port;
@@ -44,11 +63,15 @@ std::string temporal_text(const TemporalResult& r) {
       break;
     case TemporalResult::Outcome::Unknown:
       out += "unknown (" + r.unknown_reason + ") after " + messages + " into " + port + "\n";
+      for (const TraceStep& s : r.trace) out += step_text(s);
       break;
     case TemporalResult::Outcome::Violated:
-      out += "violated in the abstract model: a shortest trace of " + messages + " into " + port +
-             " (not replayed on the runtime):\n";
+      out += "violated: a shortest trace of " + messages + " into " + port + ":\n";
       for (const TraceStep& s : r.trace) out += step_text(s);
+      out +=
+          "    replayed on the runtime in simulated time, which shows the violation; as a tests\n"
+          "    file (--counterexamples DIR writes it):\n";
+      out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
       break;
   }
   return out + kAssumptions;

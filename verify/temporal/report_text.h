@@ -11,4 +11,7 @@ namespace arbc::verify::temporal {
 // "  never two take within 1s (spec:70): ..." and, when violated, one line per step.
 std::string temporal_text(const TemporalResult& r);
 
+// The file name of the spec the property is in, as a tests file beside it names it.
+std::string spec_name(const model::TemporalProperty& p);
+
 }  // namespace arbc::verify::temporal

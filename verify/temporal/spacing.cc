@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "verify/temporal/counterexample.h"
 #include "verify/temporal/unrolling.h"
 
 namespace arbc::verify::temporal {
@@ -57,8 +58,8 @@ z3::expr violation(const Unrolling& u, int r, int n, double window, z3::context&
 }  // namespace
 
 std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
-                                            int bound, z3::context& ctx, Clock::time_point deadline,
-                                            std::string* err) {
+                                            int bound, z3::context& ctx, DataQuery* data,
+                                            Clock::time_point deadline, std::string* err) {
   std::optional<PortShape> shape = port_shape(app, p.port, err);
   if (!shape) return std::nullopt;
   int r = rule_index(*shape, p.rule);
@@ -84,6 +85,11 @@ std::optional<TemporalResult> check_spacing(const model::App& app, const model::
     if (answer == z3::sat) {
       z3::model m = solver.get_model();
       for (int k = 0; k < n; ++k) result.trace.push_back(u.trace_step(m, k));
+      if (data) {
+        result.replay_test = counterexample_test(*shape, u, m, n, p, *data, &result.not_replayable);
+      } else {
+        result.not_replayable = "no message data to replay with";
+      }
       result.outcome = TemporalResult::Outcome::Violated;
       result.bound = n;
       return result;

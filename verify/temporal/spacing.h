@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/app_model.h"
+#include "verify/data_query.h"
 #include "verify/report.h"
 
 namespace arbc::verify::temporal {
@@ -18,10 +19,12 @@ namespace arbc::verify::temporal {
 // Messages into the property's port explored by default (`arbc verify --temporal-bound`).
 inline constexpr int kDefaultBound = 8;
 
-// The verdict for `p` up to `bound` messages; unknown when the deadline passes. nullopt and
-// *err when `p` names a port or rule the model does not have (bad input, not a verdict).
+// The verdict for `p` up to `bound` messages in the abstract model; unknown when the deadline
+// passes. A violation comes with its trace and, when `data` finds a message for every rule
+// step, the trace as a test to replay (TemporalResult::replay_test). nullopt and *err when `p`
+// names a port or rule the model does not have (bad input, not a verdict).
 std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
-                                            int bound, z3::context& ctx,
+                                            int bound, z3::context& ctx, DataQuery* data,
                                             std::chrono::steady_clock::time_point deadline,
                                             std::string* err);
 

@@ -18,7 +18,7 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
   std::string error;
   model::TemporalProperty p{model::TemporalProperty::Kind::Spacing, port, rule, window, {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  std::optional<TemporalResult> r = check_spacing(app, p, bound, ctx, deadline, &error);
+  std::optional<TemporalResult> r = check_spacing(app, p, bound, ctx, nullptr, deadline, &error);
   EXPECT_TRUE(r) << error;
   return r ? *r : TemporalResult{};
 }
@@ -97,7 +97,7 @@ TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
   model::TemporalProperty p{
       model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "pull", 1.0, {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  EXPECT_FALSE(check_spacing(testing::table_clean_model(), p, 4, ctx, deadline, &error));
+  EXPECT_FALSE(check_spacing(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));
   EXPECT_NE(error.find("does not have"), std::string::npos) << error;
 }
 

@@ -192,16 +192,45 @@ z3::expr Unrolling::guard(const Constraint& c, int k) const {
   return ctx_.bool_val(false);
 }
 
+namespace {
+
+// A real in `m` as a double (a trailing '?' marks a rounded decimal, which strtod ignores).
+double real_value(const z3::model& m, const z3::expr& e) {
+  std::string text = m.eval(e, true).get_decimal_string(9);
+  return std::strtod(text.c_str(), nullptr);
+}
+
+}  // namespace
+
+double Unrolling::time_value(const z3::model& m, int k) const { return real_value(m, t_[k]); }
+
+int Unrolling::connection(const z3::model& m, int k) const {
+  return m.eval(run_[k], true).get_numeral_int();
+}
+
+bool Unrolling::accepted(const z3::model& m, int k) const {
+  return m.eval(acc_[k], true).is_true();
+}
+
+Unrolling::EntryValue Unrolling::entry(const z3::model& m, int state, size_t q) const {
+  size_t s = static_cast<size_t>(state);
+  return {m.eval(has_[s][q], true).is_true(), m.eval(forever_[s][q], true).is_true(),
+          real_value(m, expiry_[s][q])};
+}
+
+bool Unrolling::changes(const z3::model& m, int k, size_t q) const {
+  return m.eval(set_[k][q], true).is_true() || m.eval(unset_[k][q], true).is_true();
+}
+
 TraceStep Unrolling::trace_step(const z3::model& m, int k) const {
   TraceStep step;
-  std::string time = m.eval(t_[k], true).get_decimal_string(9);
-  step.time = std::strtod(time.c_str(), nullptr);  // a trailing '?' marks a rounded decimal
-  int c = m.eval(run_[k], true).get_numeral_int();
+  step.time = time_value(m, k);
+  int c = connection(m, k);
   const model::Connection& conn = *shape_.connections[static_cast<size_t>(c)];
   step.connection = conn.name;
   step.source = conn.source;
   step.feed = conn.kind == model::ConnectionKind::Feed;
-  step.accepted = m.eval(acc_[k], true).is_true();
+  step.accepted = accepted(m, k);
   step.delivered = m.eval(del_[k][static_cast<size_t>(c)], true).is_true();
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     if (shape_.entries[q].owner != c) continue;

@@ -49,6 +49,19 @@ class Unrolling {
   // Step k's trace line in model `m`.
   TraceStep trace_step(const z3::model& m, int k) const;
 
+  // Values in model `m`: step k's time, the index of its connection, whether it accepted.
+  double time_value(const z3::model& m, int k) const;
+  int connection(const z3::model& m, int k) const;
+  bool accepted(const z3::model& m, int k) const;
+  // Entry q in state s (0: before step 1, k+1: after step k) in model `m`.
+  struct EntryValue {
+    bool has = false, forever = false;
+    double expiry = 0;
+  };
+  EntryValue entry(const z3::model& m, int state, size_t q) const;
+  // Whether step k set or removed entry q.
+  bool changes(const z3::model& m, int k, size_t q) const;
+
  private:
   z3::expr present(const std::string& event, int state, const z3::expr& at) const;
   z3::expr guard(const Constraint& c, int k) const;
