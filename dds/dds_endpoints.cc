@@ -95,58 +95,65 @@ TopicReader::TopicReader(DdsTransport* transport, const TransportPort& port, boo
 
 TopicReader::~TopicReader() { delete_sample(sample_); }
 
+// One sample at a time: a loaned batch `take` costs more here (docs/benchmarks.md, the DDS
+// section, says what was measured).
 void TopicReader::on_data_available(fdds::DataReader* r) {
   std::lock_guard<std::mutex> take(take_mutex_);
   fdds::SampleInfo info;
   while (!transport_->closing() &&
          r->take_next_sample(sample_, &info) == ReturnCode_t::RETCODE_OK) {
-    if (!info.valid_data) continue;  // a lifecycle notice, not a message
-    ++received;
-    Buffered b;
-    std::string why;
-    if (sample_->bad) {
-      why = "a sample on " + topic + " does not decode as " + wire->name;
-    } else if (!from_wire(*wire, sample_->data, &b.value, &why)) {
-      sample_->bad = true;
-    }
-    if (input) {
-      b.identity = info.sample_identity;
-    } else if (!sample_->bad) {
-      b.answered = transport_->answered(info);
-    }
-    buffer(std::move(b), sample_->bad, why);
+    if (info.valid_data) take_one(*sample_, info);  // else a lifecycle notice
   }
 }
 
-void TopicReader::buffer(Buffered b, bool bad, const std::string& why) {
-  std::lock_guard<std::mutex> lock(mutex_);
+void TopicReader::take_one(WireSample& sample, const fdds::SampleInfo& info) {
+  ++received;
+  Buffered b;
+  std::string why;
+  bool bad = sample.bad;
   if (bad) {
-    ++undecodable;
-    ++bad_;
-    bad_why_ = why;
-  } else if (pending_.size() >= static_cast<size_t>(transport_->depth())) {
-    ++lost;
-    ++overflow_;
-  } else {
-    pending_.push_back(std::move(b));
+    why = "a sample on " + topic + " does not decode as " + wire->name;
+  } else if (!from_wire(*wire, sample.data, &b.value, &why)) {
+    bad = true;
   }
-  if (!drain_posted_) {
-    drain_posted_ = true;
-    transport_->post([this] { drain(); });
+  if (input) {
+    b.identity = info.sample_identity;
+  } else if (!bad) {
+    b.answered = transport_->answered(info);
   }
+  buffer(std::move(b), bad, why);
+}
+
+void TopicReader::buffer(Buffered b, bool bad, const std::string& why) {
+  if (!bad && queued_.load() < transport_->depth()) {
+    ++queued_;
+    transport_->to_inbox(this, std::move(b));
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (bad) {
+      ++undecodable;
+      ++bad_;
+      bad_why_ = why;
+    } else {
+      ++lost;
+      ++overflow_;
+    }
+  }
+  transport_->to_inbox(this, std::nullopt);
 }
 
 // Samples the writer dropped before they reached this reader (its keep-last history
 // overflowed): the same loss as a full queue.
 void TopicReader::on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus& status) {
   if (status.total_count_change <= 0) return;
-  std::lock_guard<std::mutex> lock(mutex_);
-  lost += static_cast<uint64_t>(status.total_count_change);
-  overflow_ += static_cast<uint64_t>(status.total_count_change);
-  if (!drain_posted_) {
-    drain_posted_ = true;
-    transport_->post([this] { drain(); });
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    lost += static_cast<uint64_t>(status.total_count_change);
+    overflow_ += static_cast<uint64_t>(status.total_count_change);
   }
+  transport_->to_inbox(this, std::nullopt);
 }
 
 void TopicReader::on_subscription_matched(fdds::DataReader*,
@@ -164,30 +171,29 @@ void TopicReader::on_subscription_matched(fdds::DataReader*,
   }
 }
 
-void TopicReader::drain() {
-  std::deque<Buffered> values;
+void TopicReader::report_losses() {
   uint64_t overflow = 0, bad = 0;
   std::string why;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    values.swap(pending_);
     std::swap(overflow, overflow_);
     std::swap(bad, bad_);
     why = bad_why_;
-    drain_posted_ = false;
   }
   TransportSink& sink = transport_->sink();
   if (overflow) sink.lost(input, port.index, DropReason::QueueFull, overflow, "DDS: " + topic);
   if (bad) sink.lost(input, port.index, DropReason::BadType, bad, why);
-  Executor& ex = sink.executor();
-  for (const Buffered& b : values) {
-    if (input) {
-      // Before the module sees it: what it publishes from now on answers this sample.
-      transport_->received(b.identity);
-      sink.to_module(port.index, Delivery{port.port, b.value, topic, topic, ex.now()});
-    } else {
-      sink.from_source(port.index, b.value, b.answered);
-    }
+}
+
+void TopicReader::hand(const Buffered& b) {
+  --queued_;
+  TransportSink& sink = transport_->sink();
+  if (input) {
+    // Before the module sees it: what it publishes from now on answers this sample.
+    transport_->received(b.identity);
+    sink.to_module(port.index, Delivery{port.port, b.value, topic, topic, sink.executor().now()});
+  } else {
+    sink.from_source(port.index, b.value, b.answered);
   }
 }
 

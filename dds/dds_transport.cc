@@ -11,7 +11,11 @@ std::unique_ptr<Transport> make_dds_transport(const model::App& app, DdsOptions 
 }
 
 DdsTransport::DdsTransport(const model::App& app, DdsOptions options)
-    : app_(app), options_(std::move(options)) {}
+    : app_(app), options_(std::move(options)) {
+  for (const model::Event& e : app_.events) {
+    if (e.lifetime) longest_lifetime_ = std::max(longest_lifetime_, *e.lifetime);
+  }
+}
 
 DdsTransport::~DdsTransport() { close(); }
 
@@ -133,26 +137,35 @@ void DdsTransport::deliver(int in, const Delivery& d) {
   bool written = w && w->write(d.value, params);
   std::lock_guard<std::mutex> lock(acks_mutex_);
   ++sent_;
+  // The runtime forgets a delivery once every event's lifetime has passed since it
+  // (runtime/answered_deliveries.cc); so does this, or a module that never speaks would
+  // make the list grow for ever.
+  while (!pending_.empty() && pending_.front().at + longest_lifetime_ < d.time)
+    pending_.pop_front();
   if (written) {
     const SampleIdentity& id = params.sample_identity();
-    pending_.push_back({id.writer_guid(), id.sequence_number(), sent_, time});
+    pending_.push_back({id.writer_guid(), id.sequence_number(), sent_, time, d.time});
   }
 }
 
 // An arbc process handles its inputs in the order they reach it, which is the order they
 // were written here as long as samples on two topics do not overtake each other: a related
-// sample answers every delivery written up to it (docs/distributed.md#known-limits).
+// sample answers every delivery written up to it (docs/distributed.md#known-limits). The
+// reasoning is about the process that published the sample, whichever of its modules did:
+// the runtime also counts the message being judged as an answer.
 uint64_t DdsTransport::answered(const fdds::SampleInfo& info) {
   std::lock_guard<std::mutex> lock(acks_mutex_);
   const SampleIdentity& related = info.related_sample_identity;
   if (related == SampleIdentity::unknown()) {
-    std::erase_if(pending_, [&](const Pending& p) { return p.time <= info.source_timestamp; });
+    // Written in time order: those before the sample's source timestamp are a prefix.
+    while (!pending_.empty() && pending_.front().time <= info.source_timestamp)
+      pending_.pop_front();
   } else {
     uint64_t upto = 0;
     for (const Pending& p : pending_) {
       if (p.writer == related.writer_guid() && p.seq <= related.sequence_number()) upto = p.ticket;
     }
-    std::erase_if(pending_, [&](const Pending& p) { return p.ticket <= upto; });
+    while (!pending_.empty() && pending_.front().ticket <= upto) pending_.pop_front();
   }
   return pending_.empty() ? sent_ : pending_.front().ticket - 1;
 }
@@ -163,6 +176,22 @@ void DdsTransport::post(std::function<void()> fn) {
   ex.post(ex.now(), [this, fn = std::move(fn)] {
     if (!closing_) fn();
   });
+}
+
+void DdsTransport::to_inbox(TopicReader* reader, std::optional<TopicReader::Buffered> sample) {
+  if (inbox_.push({reader, std::move(sample)})) post([this] { drain_inbox(); });
+}
+
+void DdsTransport::drain_inbox() {
+  bool more = false;
+  Inbound in = inbox_.take(&more);
+  if (in.sample) {
+    in.reader->hand(*in.sample);
+  } else {
+    in.reader->report_losses();
+  }
+  // Posted after the runtime's tasks for this sample: they run before the next one.
+  if (more) post([this] { drain_inbox(); });
 }
 
 void DdsTransport::report(std::string line) {

@@ -18,11 +18,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "dds/dds_transport.h"
+#include "dds/inbox.h"
 #include "dds/topic_type.h"
 #include "dds/wire_types.h"
 
@@ -43,13 +45,22 @@ class TopicReader : public fdds::DataReaderListener {
               std::shared_ptr<const WireType> wire);
   ~TopicReader() override;
 
-  // DDS threads: take every sample into the buffer, then have the executor drain it.
+  // A decoded sample, with what it answers (an output) or who wrote it (an input).
+  struct Buffered {
+    Value value;
+    uint64_t answered = 0;
+    SampleIdentity identity;
+  };
+
+  // DDS threads: take every sample into the transport's inbox (dds/inbox.h).
   void on_data_available(fdds::DataReader* reader) override;
   void on_sample_lost(fdds::DataReader* reader, const fdds::SampleLostStatus& status) override;
   void on_subscription_matched(fdds::DataReader* reader,
                                const fdds::SubscriptionMatchedStatus& status) override;
-  // The executor thread: hands the buffered samples to the engine.
-  void drain();
+  // The executor thread: hands one sample from the inbox to the engine.
+  void hand(const Buffered& b);
+  // The executor thread: reports the samples counted lost or undecodable since the last call.
+  void report_losses();
 
   const TransportPort port;
   const bool input;
@@ -60,22 +71,18 @@ class TopicReader : public fdds::DataReaderListener {
   std::atomic<int> publishers{0};
 
  private:
-  // A decoded sample, with what it answers (an output) or who wrote it (an input).
-  struct Buffered {
-    Value value;
-    uint64_t answered = 0;
-    SampleIdentity identity;
-  };
-  // Adds a decoded sample (or counts it lost); posts a drain when none is pending.
+  // Queues a decoded sample (or counts it lost: undecodable, or `depth` of this topic's
+  // samples are in the inbox already).
   void buffer(Buffered b, bool bad, const std::string& why);
+  // Decodes one valid sample and buffers it.
+  void take_one(WireSample& sample, const fdds::SampleInfo& info);
   DdsTransport* transport_;
   std::mutex take_mutex_;  // one taker at a time (DDS may call from several threads)
   WireSample* sample_ = nullptr;
-  std::mutex mutex_;  // guards what follows
-  std::deque<Buffered> pending_;
+  std::atomic<int> queued_{0};  // this topic's samples in the inbox
+  std::mutex mutex_;            // guards what follows
   uint64_t overflow_ = 0, bad_ = 0;
   std::string bad_why_;
-  bool drain_posted_ = false;
   bool ever_matched_ = false;
 };
 
@@ -138,6 +145,9 @@ class DdsTransport : public Transport {
   int depth() const { return options_.deployment.depth; }
   // Runs fn on the executor thread (from any thread); nothing once the transport closes.
   void post(std::function<void()> fn);
+  // DDS threads: queues a sample of `reader` (no sample: its losses to report), in arrival
+  // order across topics (dds/inbox.h).
+  void to_inbox(TopicReader* reader, std::optional<TopicReader::Buffered> sample);
   // Reports `line` (from any thread) on the executor thread.
   void report(std::string line);
   // Deliveries not yet answered (docs/design.md#deliveries-not-yet-answered). DDS threads: how
@@ -188,21 +198,31 @@ class DdsTransport : public Transport {
   std::map<std::string, fdds::Topic*> topics_;      // by topic name
   std::map<std::string, std::string> type_of_topic_, port_of_topic_;
   std::vector<std::unique_ptr<TopicReader>> readers_;
+  // Executor thread: hands over the oldest sample of the inbox, posting itself again while
+  // more wait.
+  void drain_inbox();
+  struct Inbound {
+    TopicReader* reader;
+    std::optional<TopicReader::Buffered> sample;
+  };
+  Inbox<Inbound> inbox_;
   std::vector<std::unique_ptr<TopicWriter>> writers_;
   std::vector<TopicWriter*> output_writer_, input_writer_;  // by port index (null: none)
   std::vector<bool> output_mediated_, input_hosted_;
   std::atomic<bool> closing_{false};
   bool closed_ = false;
-  // Deliveries written into modules hosted elsewhere, by module, not yet answered.
+  // Deliveries written into modules hosted elsewhere, not yet answered.
   struct Pending {
     eprosima::fastrtps::rtps::GUID_t writer;
     eprosima::fastrtps::rtps::SequenceNumber_t seq;
-    uint64_t ticket = 0;  // 1 for the first delivery into the module, ...
-    WireTime time;
+    uint64_t ticket = 0;  // 1 for the first delivery into a module elsewhere, 2, ...
+    WireTime time;        // wall clock, as source timestamps are
+    double at = 0;        // run time, as the runtime counts lifetimes
   };
   std::mutex acks_mutex_;  // guards sent_ and pending_
   uint64_t sent_ = 0;
   std::deque<Pending> pending_;   // in the order written
+  double longest_lifetime_ = 0;   // of the app's events
   SampleIdentity last_received_;  // the last input sample a hosted module received
   mutable std::mutex mismatch_mutex_;
   std::set<std::string> mismatches_;  // reported lines
