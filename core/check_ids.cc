@@ -51,6 +51,9 @@ constexpr CheckId kIds[] = {
     {"resource", kVerify,
      "two ports of a `resource` can each receive a command that uses it, from one message or "
      "two"},
+    {"temporal", kVerify,
+     "a property over time (`never two RULE within D`) is violated by a timed trace the runtime "
+     "replays"},
     {"resource-port", kCheck,
      "a `resource` lists a port that is not arbitrated, a port twice, or fewer than two ports"},
     {"resource-type", kCheck, "the ports of a `resource` have different types"},

@@ -29,6 +29,7 @@ inline constexpr const char* kCheckAssert = "assert";
 inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no answer
 inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
 inline constexpr const char* kCheckResource = "resource";
+inline constexpr const char* kCheckTemporal = "temporal";  // a property over time is violated
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A violated property over time is written as a tests file (--counterexamples) that `arbc test`
 # replays on the runtime, and the replay passes: the counterexample is real
-# (docs/checks.md#properties-over-time). Usage: temporal_replay.sh ARBC SPEC RULE
+# (docs/checks.md#temporal). Usage: temporal_replay.sh ARBC SPEC RULE
 set -u
 arbc=$1 spec=$2 rule=$3
 dir=$(mktemp -d)
