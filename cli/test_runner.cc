@@ -129,34 +129,40 @@ bool write_test_harness(const std::string& app_dir, std::string* err) {
   return true;
 }
 
-TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
-                          const model::TestCase& test) {
-  auto started = std::chrono::steady_clock::now();
-  TestOutcome outcome;
-  outcome.name = test.name;
+bool run_test_trace(const model::App& app, const std::string& app_dir, const model::TestCase& test,
+                    TestTrace* out, std::string* err) {
   model::App run_app = test_app(app, test);
   add_harness(run_app);
   auto log = std::make_shared<StandInLog>();
   std::vector<std::string> stand_ins;
   Registry registry = registry_with_stand_ins(run_app, Registry(), log, &stand_ins);
-  std::vector<TraceRecord> records;
   RunOptions options;
-  options.trace_records = &records;
+  options.trace_records = &out->records;
+  std::unique_ptr<Runtime> rt = Runtime::create(run_app, app_dir, options, err, registry);
+  if (!rt) return false;
+  rt->set_reporter([out](const std::string& line) { out->reports.push_back(line); });
+  rt->start();
+  post_steps(*rt, test);
+  out->end = test_end(test);
+  rt->advance(out->end);
+  rt->shutdown();
+  out->received = log->received;
+  return true;
+}
+
+TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
+                          const model::TestCase& test) {
+  auto started = std::chrono::steady_clock::now();
+  TestOutcome outcome;
+  outcome.name = test.name;
+  TestTrace trace;
   std::string error;
-  std::unique_ptr<Runtime> rt = Runtime::create(run_app, app_dir, options, &error, registry);
-  if (!rt) {
+  if (!run_test_trace(app, app_dir, test, &trace, &error)) {
     outcome.detail = "  the app did not start: " + error + "\n";
     return outcome;
   }
-  std::vector<std::string> reports;
-  rt->set_reporter([&reports](const std::string& line) { reports.push_back(line); });
-  rt->start();
-  post_steps(*rt, test);
-  double end = test_end(test);
-  rt->advance(end);
-  rt->shutdown();
-  TestRun run{log->received, records, end};
-  outcome.detail = failures(test, run, reports);
+  TestRun run{trace.received, trace.records, trace.end};
+  outcome.detail = failures(test, run, trace.reports);
   outcome.passed = outcome.detail.empty();
   outcome.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

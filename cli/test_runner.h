@@ -10,6 +10,8 @@
 
 #include "core/app_model.h"
 #include "core/test_case.h"
+#include "runtime/stand_in.h"
+#include "runtime/trace_record.h"
 
 namespace arbc::cli {
 
@@ -24,6 +26,19 @@ struct TestOutcome {
 // The harness monitor (monitors/arbc_test_events.lua) that `set`/`unset` steps go through;
 // written once into `app_dir` before tests run there. False with *err when it cannot be.
 bool write_test_harness(const std::string& app_dir, std::string* err);
+
+// What one run of a test did: the trace, what the stand-ins received, the runtime's reports.
+struct TestTrace {
+  std::vector<TraceRecord> records;
+  std::vector<Received> received;
+  std::vector<std::string> reports;
+  double end = 0;  // the last instant the run reached
+};
+
+// Runs `test` as run_test_case does and keeps what happened; false and *err when the app did
+// not start.
+bool run_test_trace(const model::App& app, const std::string& app_dir, const model::TestCase& test,
+                    TestTrace* out, std::string* err);
 
 // Runs `test` on `app` (built into `app_dir`, with the harness written). A test `on RULE`
 // runs that rule's connection alone, between stand-ins of its two modules.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,10 +13,12 @@
 #include "cli/commands.h"
 #include "cli/model_loader.h"
 #include "cli/monitor_runner.h"
+#include "cli/test_replayer.h"
 #include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
 #include "verify/report_format.h"
+#include "verify/temporal/counterexample.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -70,6 +73,7 @@ struct VerifyArgs {
   verify::VerifyOptions options;
   bool stats = false;
   std::vector<std::string> yarp_paths;  // --yarp-path: where an APP.xml's monitors are
+  std::string counterexamples;          // --counterexamples: where replayed tests are written
 };
 
 // Parses `arbc verify`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -92,11 +96,18 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "overlapping pairs per port reported with a counterexample; the rest are counted")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  cli.add_option("--temporal-bound", a.options.temporal_bound,
+                 "messages into a port that properties over time (`never two`) are explored to")
+      ->check(CLI::Range(2, 64))
+      ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
                  "lists in messages are assumed to have at most this many elements when "
                  "proving properties of message data")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cli.add_option("--counterexamples", a.counterexamples,
+                 "a folder to write each violated property over time into, as a tests file "
+                 "that `arbc test` replays (APP.RULE.test.spec)");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
@@ -107,6 +118,29 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   return std::nullopt;
+}
+
+// Each replayed counterexample over time as DIR/APP.RULE.test.spec, whose `tests for` names the
+// spec relative to DIR. False (after saying why on stderr) when one cannot be written.
+bool write_counterexamples(const std::vector<verify::InputReport>& reports,
+                           const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  for (const verify::InputReport& r : reports) {
+    for (const verify::TemporalResult& t : r.report.temporal) {
+      if (!t.replayed) continue;
+      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file), fs::absolute(dir), ec);
+      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + ".test.spec");
+      std::ofstream out(path);
+      out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
+      if (!out) {
+        std::fprintf(stderr, "arbc verify: cannot write %s\n", path.string().c_str());
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
@@ -168,6 +202,8 @@ int verify_command(std::span<char*> args) {
     LuaMonitorRunner runner(input, *app);
     verify::VerifyOptions options = a.options;
     options.runner = &runner;
+    RuntimeTestReplayer replayer(input);
+    options.test_replayer = &replayer;
     std::optional<verify::VerifyReport> report = verify::verify_app(*app, options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
@@ -179,6 +215,8 @@ int verify_command(std::span<char*> args) {
   }
 
   print_internal_errors(reports);
+  if (!a.counterexamples.empty() && !write_counterexamples(reports, a.counterexamples))
+    return kExitRuntimeFailure;
   std::string out;
   if (a.format == "json") {
     out = verify::format_json(reports, a.stats);

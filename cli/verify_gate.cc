@@ -5,6 +5,7 @@
 #include "cli/build_summary.h"
 #include "cli/commands.h"
 #include "cli/monitor_runner.h"
+#include "cli/test_replayer.h"
 #include "verify/report_format.h"
 #include "verify/verify.h"
 
@@ -24,6 +25,8 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   options.strict = strict;
   LuaMonitorRunner runner(input, app);  // message counterexamples are replayed, as in verify
   options.runner = &runner;
+  RuntimeTestReplayer replayer(input);  // and counterexamples over time
+  options.test_replayer = &replayer;
   std::string error;
   std::optional<verify::VerifyReport> verified = verify::verify_app(app, options, &error);
   if (!verified) {

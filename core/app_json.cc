@@ -288,6 +288,21 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
+// `{"kind": "spacing", "port": .., "rule": .., "window": seconds}` (docs/app-json.md).
+bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
+  std::string kind;
+  if (!get_string(j, p, "kind", &kind, err)) return false;
+  if (kind != "spacing") return fail(p + ".kind: expected \"spacing\"", err);
+  std::optional<double> window;
+  if (!get_string(j, p, "port", &t->port, err) || !get_string(j, p, "rule", &t->rule, err) ||
+      !opt_number(j, p, "window", &window, err))
+    return false;
+  if (!window || !(*window > 0))
+    return fail(p + ".window: expected a positive number of seconds", err);
+  t->window = *window;
+  return read_location(j, p, &t->loc, err);
+}
+
 // A resource: its name, its ports and, optionally, the predicate saying which commands use it.
 bool read_resource(const Json& j, const std::string& p, Resource* res, std::string* err) {
   if (!get_string(j, p, "name", &res->name, err) || !string_list(j, p, "ports", &res->ports, err))
@@ -315,7 +330,8 @@ std::optional<App> read_app(const Json& root, std::string* err) {
             read_array(root, r, "", "exclusive_groups", false, &app.exclusive_groups,
                        read_exclusive_group, err) &&
             read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
-            read_array(root, r, "", "resources", false, &app.resources, read_resource, err);
+            read_array(root, r, "", "resources", false, &app.resources, read_resource, err) &&
+            read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err);
   if (!ok) return std::nullopt;
   return app;
 }

@@ -65,6 +65,26 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
   EXPECT_EQ(app->connections[0].monitor_sha256, std::string(64, 'a'));
 }
 
+// Properties over time (docs/design.md#properties-over-time) round-trip; an app without any
+// writes no `temporal` key, so app.json files written before them keep their bytes.
+TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
+  App app = small_app();
+  EXPECT_EQ(to_app_json(app).find("\"temporal\""), std::string::npos);
+  app.temporal.push_back(
+      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}});
+  std::string text = to_app_json(app);
+  std::string err;
+  std::optional<App> back = from_app_json(text, &err);
+  ASSERT_TRUE(back) << err;
+  ASSERT_EQ(back->temporal.size(), 1u);
+  EXPECT_EQ(back->temporal[0].rule, "track");
+  EXPECT_EQ(back->temporal[0].window, 1.5);
+  EXPECT_EQ(to_app_json(*back), text);
+  std::string bad = text;
+  bad.replace(bad.find("\"spacing\""), 9, "\"nearby\"");
+  EXPECT_NE(load_error(bad).find("temporal[0].kind: expected \"spacing\""), std::string::npos);
+}
+
 // One representation of a constraint: its text (schema version 2 dropped the tree).
 TEST(AppJsonTest, AConstraintIsItsTextOnly) {
   std::string text = to_app_json(small_app());

@@ -122,6 +122,43 @@ void write_arbitrated_port(JsonWriter& w, const ArbitratedPort& a) {
   w.end_object();
 }
 
+// The `resources` section.
+void write_resources(JsonWriter& w, const std::vector<Resource>& resources) {
+  if (!resources.empty()) {  // absent when none: apps without resources keep their bytes
+    w.key("resources");
+    w.begin_array();
+    for (const Resource& r : resources) {
+      w.begin_object();
+      w.member("name", r.name);
+      w.member("ports", r.ports);
+      if (r.uses) w.member("uses", body_expr_text(*r.uses));
+      write_location(w, r.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
+}
+
+// The `temporal` section (properties over time).
+void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal) {
+  // Written only when there are some: every app.json written before properties over time
+  // existed reads the same, and its bytes (and digests in goldens) do not change.
+  if (!temporal.empty()) {
+    w.key("temporal");
+    w.begin_array();
+    for (const TemporalProperty& t : temporal) {
+      w.begin_object();
+      w.member("kind", "spacing");
+      w.member("port", t.port);
+      w.member("rule", t.rule);
+      w.member("window", t.window);
+      write_location(w, t.loc);
+      w.end_object();
+    }
+    w.end_array();
+  }
+}
+
 }  // namespace
 
 std::string to_app_json(const App& app) {
@@ -182,19 +219,8 @@ std::string to_app_json(const App& app) {
     w.end_object();
   }
   w.end_array();
-  if (!app.resources.empty()) {  // absent when none: apps without resources keep their bytes
-    w.key("resources");
-    w.begin_array();
-    for (const Resource& r : app.resources) {
-      w.begin_object();
-      w.member("name", r.name);
-      w.member("ports", r.ports);
-      if (r.uses) w.member("uses", body_expr_text(*r.uses));
-      write_location(w, r.loc);
-      w.end_object();
-    }
-    w.end_array();
-  }
+  write_resources(w, app.resources);
+  write_temporal(w, app.temporal);
   w.end_object();
   return w.take() + "\n";
 }

@@ -136,6 +136,18 @@ struct Invariant {
   SourceLocation loc;
 };
 
+// A property over time (docs/design.md#properties-over-time). One shape so far:
+// Spacing, `never two RULE within W;`: `rule`, a rule into `port`, never delivers twice less
+// than `window` seconds apart.
+struct TemporalProperty {
+  enum class Kind { Spacing };
+  Kind kind = Kind::Spacing;
+  std::string port;  // "Module.port"
+  std::string rule;
+  double window = 0;  // seconds
+  SourceLocation loc;
+};
+
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
 // uses the resource, for one message or two (docs/checks.md#resource).
 struct Resource {
@@ -158,6 +170,7 @@ struct App {
   std::vector<ArbitratedPort> arbitrated_ports;
   std::vector<ExclusiveGroup> exclusive_groups;
   std::vector<Invariant> invariants;
+  std::vector<TemporalProperty> temporal;
   std::vector<Resource> resources;
 
   const Module* find_module(std::string_view name) const;

@@ -52,6 +52,9 @@ constexpr CheckId kIds[] = {
     {"resource", kVerify,
      "two ports of a `resource` can each receive a command that uses it, from one message or "
      "two"},
+    {"temporal", kVerify,
+     "a property over time (`never two RULE within D`) is violated by a timed trace the runtime "
+     "replays"},
     {"resource-port", kCheck,
      "a `resource` lists a port that is not arbitrated, a port twice, or fewer than two ports"},
     {"resource-type", kCheck, "the ports of a `resource` have different types"},
@@ -63,6 +66,8 @@ constexpr CheckId kIds[] = {
      "a statement where it cannot run (emit in `every`, nested `every`)"},
     {"status-source-type", kCheck, "an `events from` source port that is not list<string>"},
     {"syntax", kCheck, "the text does not follow the grammar"},
+    {"temporal-rule", kCheck,
+     "a property over time (`never two RULE within D`) names a rule used by several ports"},
     {"test-port", kCheck,
      "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},
     {"test-reason", kCheck, "`expect RULE drops \"reason\"` with an unknown drop reason"},

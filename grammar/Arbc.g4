@@ -25,6 +25,7 @@ decl
   | statusEventsDecl
   | exclusiveDecl
   | invariantDecl
+  | neverDecl
   | arbitrateDecl
   | connectDecl
   | assertDecl
@@ -45,6 +46,8 @@ statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* ',
 statusEntry      : ID ('=' STRING)? ;
 exclusiveDecl    : 'exclusive' '{' ID (',' ID)* ','? '}' ';' ;
 invariantDecl    : 'invariant' expr ';' ;
+// A property over time (docs/language.md#properties-over-time): `never two take within 1s;`.
+neverDecl        : 'never' 'two' ID 'within' duration ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;

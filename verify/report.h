@@ -10,6 +10,7 @@
 
 #include "core/app_model.h"
 #include "core/diagnostic.h"
+#include "core/test_case.h"
 
 namespace arbc::verify {
 
@@ -28,6 +29,7 @@ inline constexpr const char* kCheckAssert = "assert";
 inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no answer
 inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
 inline constexpr const char* kCheckResource = "resource";
+inline constexpr const char* kCheckTemporal = "temporal";  // a property over time is violated
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {
@@ -85,6 +87,38 @@ struct PortResult {
   int solver_queries = 0;
 };
 
+// One step of a timed counterexample (docs/design.md#properties-over-time): one message that
+// one connection into the port handled.
+struct TraceStep {
+  double time = 0;                      // seconds from the start of the run
+  std::string connection;               // the rule or feed that ran
+  std::string source;                   // "Module.port" that published the message
+  bool feed = false;                    // a generated feed: it sets events, never delivers
+  bool accepted = false;                // its `accept` accepted (message data is abstract)
+  std::vector<std::string> set, unset;  // entries it set / removed in the port's container
+  bool delivered = false;
+};
+
+// The outcome for one property over time, decided by bounded model checking.
+struct TemporalResult {
+  enum class Outcome { HoldsToBound, Violated, Unknown };
+  model::TemporalProperty property;
+  Outcome outcome = Outcome::Unknown;
+  // HoldsToBound: the largest number of messages into the port explored; Violated: the
+  // length of the (shortest) trace.
+  int bound = 0;
+  std::vector<TraceStep> trace;  // Violated only
+  // The trace as a test of the app that `arbc test` runs (verify/temporal/counterexample.h);
+  // nullopt when some step has no message to replay it with (`not_replayable` says why).
+  std::optional<model::TestCase> replay_test;
+  std::string not_replayable;
+  // The runtime ran replay_test in simulated time and showed the violation: only then is the
+  // outcome Violated (docs/design.md#properties-over-time).
+  bool replayed = false;
+  std::string unknown_reason;
+  int solver_queries = 0;
+};
+
 // The outcome for one `resource` (docs/checks.md#resource).
 struct ResourceResult {
   std::string name;
@@ -109,7 +143,8 @@ struct VerifyReport {
   // What a verdict that used message data assumes (docs/checks.md#message-data); empty when
   // no data question was asked.
   std::vector<std::string> assumptions;
-  Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
+  std::vector<TemporalResult> temporal;  // properties over time, in spec order
+  Verdict verdict = Verdict::Proved;     // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;
 

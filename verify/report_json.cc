@@ -2,6 +2,8 @@
 #include <nlohmann/json.hpp>
 
 #include "verify/report_format.h"
+#include "verify/temporal/counterexample.h"
+#include "verify/temporal/report_text.h"
 
 namespace arbc::verify {
 namespace {
@@ -96,6 +98,37 @@ Json port_json(const PortResult& p, bool stats) {
   return j;
 }
 
+// A property over time: its verdict with the bound, and a violation's timed trace.
+Json temporal_json(const TemporalResult& t) {
+  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown"};
+  Json j;
+  j["kind"] = "spacing";
+  j["port"] = t.property.port;
+  j["rule"] = t.property.rule;
+  j["window"] = t.property.window;
+  j["location"] = location_json(t.property.loc);
+  j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
+  j["bound"] = t.bound;
+  j["replayed"] = t.replayed;
+  j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
+  j["trace"] = Json::array();
+  for (const TraceStep& s : t.trace) {
+    j["trace"].push_back({{"t", s.time},
+                          {"source", s.source},
+                          {"connection", s.connection},
+                          {"feed", s.feed},
+                          {"accepted", s.accepted},
+                          {"delivered", s.delivered},
+                          {"set", s.set},
+                          {"unset", s.unset}});
+  }
+  // The counterexample as a tests file beside the spec (`arbc test` replays it).
+  j["test"] = t.replayed
+                  ? Json(temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property)))
+                  : Json(nullptr);
+  return j;
+}
+
 }  // namespace
 
 nlohmann::ordered_json messages_json(const std::vector<MessageExample>& messages) {
@@ -145,6 +178,11 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
       }
     }
     if (!r.assumptions.empty()) j["assumptions"] = r.assumptions;
+    // Only when the app has properties over time, so other reports keep their bytes.
+    if (!r.temporal.empty()) {
+      j["temporal"] = Json::array();
+      for (const TemporalResult& t : r.temporal) j["temporal"].push_back(temporal_json(t));
+    }
     j["diagnostics"] = Json::array();
     j["errors"] = r.count(Severity::Error);
     j["warnings"] = r.count(Severity::Warning);

@@ -1,9 +1,12 @@
 // SARIF 2.1.0 (docs/verify-json.md, "SARIF"): one result per finding, for code scanning.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "core/check_ids.h"
 #include "verify/report_format.h"
+#include "verify/temporal/counterexample.h"
+#include "verify/temporal/report_text.h"
 
 namespace arbc::verify {
 namespace {
@@ -37,6 +40,7 @@ constexpr CheckDoc kChecks[] = {
     {kCheckUnknown, "The solver could not decide a check (timeout or resource limit)."},
     {kCheckInternal, "Z3 and the runtime's constraint evaluator disagree (a bug in arbc)."},
     {kCheckResource, "Two ports of a resource can each receive a command that uses it."},
+    {kCheckTemporal, "A property over time is violated by a timed trace the runtime replays."},
 };
 
 Json sarif_location(const model::SourceLocation& loc) {
@@ -92,6 +96,25 @@ Json diagnostic_result(const Diagnostic& d) {
 
 }  // namespace
 
+// A violated (or undecided) property over time as a result; nullopt when it holds up to the
+// bound, which is no finding.
+std::optional<Json> temporal_result(const TemporalResult& t) {
+  if (t.outcome == TemporalResult::Outcome::HoldsToBound) return std::nullopt;
+  bool violated = t.outcome == TemporalResult::Outcome::Violated;
+  Json r;
+  r["ruleId"] = violated ? kCheckTemporal : kCheckUnknown;
+  r["level"] = "error";
+  std::string what = temporal::temporal_text(t);
+  r["message"] = {{"text", what.substr(what.find_first_not_of(' '))}};
+  r["locations"] = Json::array();
+  if (!t.property.loc.file.empty()) r["locations"].push_back(sarif_location(t.property.loc));
+  if (violated && t.replay_test) {  // Violated means replayed (verify/temporal/confirm.h)
+    r["properties"]["test"] =
+        temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property));
+  }
+  return r;
+}
+
 std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version) {
   Json rules = Json::array();
   for (const CheckDoc& c : kChecks) {
@@ -135,6 +158,8 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
     for (const Finding& f : in.report.app_findings) add(f);
     for (const ResourceResult& r : in.report.resources)
       for (const Finding& f : r.findings) add(f);
+    for (const TemporalResult& t : in.report.temporal)
+      if (std::optional<Json> r = temporal_result(t)) results.push_back(std::move(*r));
   }
   Json driver{{"name", "arbc"}, {"version", tool_version}, {"rules", rules}};
   Json root{{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},

@@ -1,3 +1,5 @@
+#include "verify/temporal/report_text.h"
+
 #include <cstdio>
 
 #include "core/join.h"
@@ -120,7 +122,7 @@ std::vector<std::string> strict_failures(const std::vector<InputReport>& inputs)
 
 std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats) {
   std::string out;
-  size_t ports = 0, rules = 0, errors = 0, warnings = 0;
+  size_t ports = 0, rules = 0, errors = 0, warnings = 0, properties = 0, violated = 0;
   bool refuted = false, unknown = false;
   size_t bad = 0;
   double seconds = 0;
@@ -145,6 +147,11 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
     }
     if (!r.assumptions.empty())
       out += "  message data assumed: " + join(r.assumptions, "; ") + "\n";
+    for (const TemporalResult& t : r.temporal) {
+      out += temporal::temporal_text(t);
+      properties += 1;
+      violated += t.outcome == TemporalResult::Outcome::Violated;
+    }
     errors += static_cast<size_t>(r.count(Severity::Error));
     warnings += static_cast<size_t>(r.count(Severity::Warning));
     refuted |= r.verdict == Verdict::Refuted;
@@ -154,6 +161,10 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
   const char* verdict = bad ? "error" : refuted ? "refuted" : unknown ? "unknown" : "proved";
   out += std::string(verdict) + ": " + plural(ports, "port") + ", " + plural(rules, "rule") + "; " +
          plural(errors, "error") + ", " + plural(warnings, "warning");
+  if (properties) {
+    out += "; " + std::to_string(properties) + (properties == 1 ? " property" : " properties") +
+           " over time: " + std::to_string(violated) + " violated, the others hold up to the bound";
+  }
   if (bad) out += "; " + plural(bad, "input") + " not verified (bad input, on stderr)";
   std::vector<std::string> strict = strict_failures(inputs);
   if (!strict.empty()) out += "; warnings made errors by --strict: " + join(strict);

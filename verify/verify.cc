@@ -4,6 +4,8 @@
 #include "verify/port_scope.h"
 #include "verify/resource_checks.h"
 #include "verify/structural_checks.h"
+#include "verify/temporal/confirm.h"
+#include "verify/temporal/spacing.h"
 
 namespace arbc::verify {
 namespace {
@@ -17,6 +19,22 @@ bool has_error(const std::vector<Finding>& findings) {
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Properties over time, each decided in the abstract model and a violation replayed on the
+// runtime (docs/design.md#properties-over-time). False and *err on a malformed model.
+bool check_temporal(const model::App& app, const VerifyOptions& options, z3::context& ctx,
+                    DataQuery& data, Clock::time_point deadline, VerifyReport& report,
+                    std::string* err) {
+  for (const model::TemporalProperty& p : app.temporal) {
+    std::optional<TemporalResult> t =
+        temporal::check_spacing(app, p, options.temporal_bound, ctx, &data, deadline, err);
+    if (!t) return false;
+    temporal::confirm_violation(options.test_replayer, *t, report.app_findings);
+    report.solver_queries += t->solver_queries;
+    report.temporal.push_back(std::move(*t));
+  }
+  return true;
 }
 
 }  // namespace
@@ -71,6 +89,13 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   for (const PortResult& p : report.ports) {
     refuted |= p.verdict == Verdict::Refuted;
     unknown |= p.verdict == Verdict::Unknown;
+  }
+  if (!check_temporal(app, options, ctx, data, deadline, report, err)) return std::nullopt;
+  refuted |= has_error(report.app_findings);
+  for (const TemporalResult& t : report.temporal) {
+    // Bounded: "holds up to the bound" leaves the verdict as it is.
+    refuted |= t.outcome == TemporalResult::Outcome::Violated;
+    unknown |= t.outcome == TemporalResult::Outcome::Unknown;
   }
   for (const ResourceResult& r : report.resources) {
     refuted |= r.verdict == Verdict::Refuted;

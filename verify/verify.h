@@ -6,8 +6,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
+#include "core/test_case.h"
 #include "core/value.h"
 #include "verify/report.h"
 
@@ -32,14 +34,32 @@ class MonitorRunner {
                    std::string* err) const = 0;
 };
 
+// Runs a test of the app on the runtime in simulated time, as `arbc test` does; the CLI
+// provides one, so every counterexample over time is replayed before it is reported
+// (docs/design.md#properties-over-time). Returns the times at which rule `rule` delivered;
+// nullopt and *err when the run could not be made.
+class TestReplayer {
+ public:
+  virtual ~TestReplayer() = default;
+  virtual std::optional<std::vector<double>> deliveries(const model::TestCase& test,
+                                                        const std::string& rule,
+                                                        std::string* err) const = 0;
+};
+
 struct VerifyOptions {
   double timeout_seconds = 60;  // for the whole app; a query cut short answers unknown
   bool strict = false;          // warnings (dead, unused) become errors
   int max_pairs_per_port = kDefaultMaxPairsPerPort;
+  // Messages into a port that properties over time are explored to
+  // (docs/design.md#properties-over-time).
+  int temporal_bound = 8;
   int list_bound = 4;  // lists in messages have at most this many elements (--list-bound)
   // Replays message counterexamples through the Lua monitors (the CLI always gives one); without
   // one a data finding is reported with the note "not replayed (no monitor runner)".
   const MonitorRunner* runner = nullptr;
+  // Replays counterexamples over time; without one, a violation found in the model cannot be
+  // confirmed and is reported as unknown.
+  const TestReplayer* test_replayer = nullptr;
 };
 
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown

@@ -289,6 +289,16 @@ struct AssertDecl {
   Constraint constraint;
 };
 
+// `never two RULE within D;`: RULE never delivers twice less than D apart, a property over
+// time (docs/language.md#properties-over-time), decided by verify/temporal/.
+struct NeverDecl {
+  std::string rule;
+  Loc rule_loc;
+  Duration window;
+  Loc loc;                          // the `never` keyword
+  const Rule* rule_decl = nullptr;  // sema
+};
+
 // `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
 // delivered value bound to `emitted`, says which commands use it (all, without `when`).
 struct ResourceDecl {
@@ -386,6 +396,7 @@ struct Spec {
   std::vector<ArbitrateDecl> arbitrations;
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
+  std::vector<NeverDecl> nevers;
   std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)

@@ -468,6 +468,8 @@ class Builder {
       spec.connects.push_back(connect_decl(c));
     } else if (auto* c = ctx->assertDecl()) {
       spec.asserts.push_back(assert_decl(c));
+    } else if (auto* c = ctx->neverDecl()) {
+      spec.nevers.push_back(never_decl(c));
     } else if (auto* c = ctx->resourceDecl()) {
       spec.resources.push_back(resource_decl(c));
     } else if (auto* c = ctx->testDecl()) {
@@ -624,6 +626,16 @@ class Builder {
     a.rule_loc = loc(c->ID());
     a.property = expr(c->expr(), 0);
     return a;
+  }
+
+  // neverDecl : 'never' 'two' ID 'within' duration ';' ;
+  NeverDecl never_decl(ArbcParser::NeverDeclContext* c) {
+    NeverDecl n;
+    n.loc = loc(c->getStart());
+    n.rule = tx(c->ID());
+    n.rule_loc = loc(c->ID());
+    n.window = duration(c->duration());
+    return n;
   }
 
   // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file

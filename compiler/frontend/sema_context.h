@@ -104,6 +104,10 @@ class Sema {
   TypePtr check_resource_ports(ast::ResourceDecl& r);
   void check_data_assert(ast::AssertDecl& a);
 
+  // ---- properties over time (sema_temporal.cc) ----
+  // `never two RULE within D;`: RULE names one rule of one arbitrated port, D is a duration.
+  void check_never(ast::NeverDecl& n);
+
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.
   void check_tests();

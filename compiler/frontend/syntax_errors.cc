@@ -48,6 +48,8 @@ const char* describe_rule(size_t rule) {
       return "the `connect` declaration";
     case ArbcParser::RuleAssertDecl:
       return "the assertion";
+    case ArbcParser::RuleNeverDecl:
+      return "the `never` property";
     case ArbcParser::RuleResourceDecl:
       return "the `resource` declaration";
     case ArbcParser::RuleStmt:
@@ -80,10 +82,9 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
   return false;
 }
 
-const std::set<std::string> kDeclKeywords = {"app",       "type",    "const",     "module",
-                                             "event",     "events",  "exclusive", "invariant",
-                                             "arbitrate", "connect", "assert",    "test",   "tests",
-                                             "resource"};
+const std::set<std::string> kDeclKeywords = {
+    "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

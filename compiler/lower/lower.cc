@@ -82,6 +82,12 @@ class Lowerer {
     }
     for (const ast::InvariantDecl& inv : spec_.invariants)
       app.invariants.push_back({inv.constraint, inv.loc});
+    for (const ast::NeverDecl& n : spec_.nevers) {
+      if (!n.rule_decl || !n.rule_decl->port) continue;  // sema reported it
+      app.temporal.push_back({model::TemporalProperty::Kind::Spacing,
+                              n.rule_decl->port->port.qualified(), n.rule, n.window.seconds,
+                              n.loc});
+    }
     for (const ast::ResourceDecl& r : spec_.resources) {
       model::Resource res;
       res.name = r.name;

@@ -15,7 +15,7 @@ constexpr const char* kSpecKeywords[] = {
     "from",     "lifetime", "for",   "exclusive", "invariant", "arbitrate", "by",    "priority",
     "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
     "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
-    "not",      "and",      "or",    "true",      "false",     "otherwise"};
+    "not",      "and",      "or",    "true",      "false",     "otherwise", "never", "two"};
 
 bool is_keyword(const std::string& s) {
   for (const char* k : kSpecKeywords) {

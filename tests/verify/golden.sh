@@ -67,6 +67,15 @@ golden bad_input.json repo 2 --format json tests/verify/bad.spec
 golden bad_input.sarif repo 2 --format sarif tests/verify/bad.spec tests/verify/no_such_app.json \
   tests/verify/malformed.app.json
 golden bad_input_mixed.txt repo 2 tests/verify/overlap.spec tests/verify/bad.spec
+# Properties over time: one holds up to the bound, one is violated with a timed trace.
+golden temporal.txt repo 1 tests/verify/temporal.spec
+golden temporal_bound.txt repo 0 --temporal-bound 2 tests/verify/temporal.spec
+golden temporal.json repo 1 --format json tests/verify/temporal.spec
+golden temporal.sarif repo 1 --format sarif tests/verify/temporal.spec
+# table_clean with its properties over time: ask's spacing holds up to the bound, take's is
+# refuted by a replayed trace; the mutant without ask's throttle is refuted for ask too.
+golden table_clean_temporal.txt repo 1 tests/verify/table_clean_temporal.spec
+golden table_clean_ask_mutant.txt repo 1 tests/verify/table_clean_ask_mutant.spec
 # Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
 # with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
 # by the two mutations with a concrete message.

@@ -1,0 +1,75 @@
+#include "cli/test_replayer.h"
+
+#include <stdlib.h>
+
+#include <filesystem>
+
+#include "cli/model_loader.h"
+#include "cli/test_runner.h"
+#include "compiler/codegen/target.h"
+#include "compiler/codegen/write_artifacts.h"
+#include "compiler/lower/compile_spec.h"
+#include "runtime/app_loader.h"
+
+namespace arbc::cli {
+
+namespace fs = std::filesystem;
+
+RuntimeTestReplayer::RuntimeTestReplayer(std::string input) : input_(std::move(input)) {}
+
+RuntimeTestReplayer::~RuntimeTestReplayer() {
+  std::error_code ignored;
+  if (!scratch_.empty()) fs::remove_all(scratch_, ignored);
+}
+
+bool RuntimeTestReplayer::prepare(std::string* err) const {
+  if (app_) return true;
+  std::string pattern = (fs::temp_directory_path() / "arbc-replay-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) {
+    *err = "cannot make a scratch directory";
+    return false;
+  }
+  scratch_ = pattern;
+  if (is_spec_path(input_)) {
+    lower::CompiledSpec compiled = lower::compile_spec(input_);
+    if (!compiled.ok || !compiled.lowered) {
+      *err = "the spec no longer compiles";
+      return false;
+    }
+    std::unique_ptr<codegen::Target> target = codegen::make_target(codegen::kDefaultTarget);
+    codegen::CodegenResult generated = target->generate(*compiled.lowered);
+    const std::string& name = compiled.lowered->app.name;
+    if (!generated.ok || !codegen::write_artifacts(scratch_, name, generated.files, err)) {
+      if (err->empty()) *err = "cannot generate the monitors";
+      return false;
+    }
+    app_dir_ = (fs::path(scratch_) / name).string();
+  } else {
+    std::error_code ec;
+    fs::path dir = fs::is_directory(input_, ec) ? fs::path(input_) : fs::path(input_).parent_path();
+    app_dir_ = (fs::path(scratch_) / "app").string();
+    fs::copy(dir.empty() ? fs::path(".") : dir, app_dir_, fs::copy_options::recursive, ec);
+    if (ec) {
+      *err = "cannot copy " + dir.string() + ": " + ec.message();
+      return false;
+    }
+  }
+  std::optional<model::App> app = load_app_dir(app_dir_, err);
+  if (!app || !write_test_harness(app_dir_, err)) return false;
+  app_ = std::move(*app);
+  return true;
+}
+
+std::optional<std::vector<double>> RuntimeTestReplayer::deliveries(const model::TestCase& test,
+                                                                   const std::string& rule,
+                                                                   std::string* err) const {
+  if (!prepare(err)) return std::nullopt;
+  TestTrace trace;
+  if (!run_test_trace(*app_, app_dir_, test, &trace, err)) return std::nullopt;
+  std::vector<double> times;
+  for (const TraceRecord& r : trace.records)
+    if (r.kind == TraceKind::Deliver && r.connection == rule) times.push_back(r.t);
+  return times;
+}
+
+}  // namespace arbc::cli

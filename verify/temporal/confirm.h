@@ -1,0 +1,22 @@
+// A violation the model checker found is reported only once the runtime shows it
+// (docs/design.md#properties-over-time): its test runs in simulated time and the property is
+// checked on the deliveries the runtime made.
+#pragma once
+
+#include <vector>
+
+#include "verify/report.h"
+#include "verify/verify.h"
+
+namespace arbc::verify::temporal {
+
+// Replays `r`'s test when r is Violated. Confirmed: r.replayed. No test or no replayer: r
+// becomes Unknown, saying why. A replay that does not show the violation: an `internal` error
+// in `findings` and r Unknown, never a verdict.
+void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
+                       std::vector<Finding>& findings);
+
+// Whether two of `times` (ascending) are less than `window` apart.
+bool spaced_less_than(const std::vector<double>& times, double window);
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,93 @@
+// A violation is reported only when the runtime shows it (docs/design.md#properties-over-time):
+// the decision on the replay's deliveries. The replay itself runs on the real runtime in the
+// CLI's goldens (tests/verify/golden/temporal.txt); here a replayer that answers fixed
+// delivery times checks what arbc makes of each answer.
+#include "verify/temporal/confirm.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Outcome = TemporalResult::Outcome;
+
+class FixedReplayer : public TestReplayer {
+ public:
+  explicit FixedReplayer(std::optional<std::vector<double>> times) : times_(std::move(times)) {}
+  std::optional<std::vector<double>> deliveries(const model::TestCase&, const std::string&,
+                                                std::string* err) const override {
+    if (!times_) *err = "the app did not start";
+    return times_;
+  }
+
+ private:
+  std::optional<std::vector<double>> times_;
+};
+
+TemporalResult violated() {
+  TemporalResult r;
+  r.property = {model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}};
+  r.outcome = Outcome::Violated;
+  r.replay_test = model::TestCase{};
+  return r;
+}
+
+TEST(Confirm, TwoDeliveriesCloserThanTheWindowConfirm) {
+  TemporalResult r = violated();
+  std::vector<Finding> findings;
+  FixedReplayer replayer(std::vector<double>{0, 0.999});
+  confirm_violation(&replayer, r, findings);
+  EXPECT_EQ(r.outcome, Outcome::Violated);
+  EXPECT_TRUE(r.replayed);
+  EXPECT_TRUE(findings.empty());
+}
+
+TEST(Confirm, AReplayWithoutTheViolationIsAnInternalErrorNotAVerdict) {
+  TemporalResult r = violated();
+  std::vector<Finding> findings;
+  FixedReplayer replayer(std::vector<double>{0, 1.0});  // exactly the window apart: kept
+  confirm_violation(&replayer, r, findings);
+  EXPECT_EQ(r.outcome, Outcome::Unknown);
+  EXPECT_FALSE(r.replayed);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].check, kCheckInternal);
+  EXPECT_NE(findings[0].message.find("delivered at 0s, 1s"), std::string::npos)
+      << findings[0].message;
+}
+
+TEST(Confirm, AReplayThatDoesNotRunIsAnInternalError) {
+  TemporalResult r = violated();
+  std::vector<Finding> findings;
+  FixedReplayer replayer(std::nullopt);
+  confirm_violation(&replayer, r, findings);
+  EXPECT_EQ(r.outcome, Outcome::Unknown);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_NE(findings[0].message.find("did not run"), std::string::npos);
+}
+
+TEST(Confirm, NoTestOrNoRuntimeIsUnknownSayingWhy) {
+  TemporalResult r = violated();
+  r.replay_test.reset();
+  r.not_replayable = "'take' is opaque for data (a script)";
+  std::vector<Finding> findings;
+  FixedReplayer replayer(std::vector<double>{0, 0});
+  confirm_violation(&replayer, r, findings);
+  EXPECT_EQ(r.outcome, Outcome::Unknown);
+  EXPECT_NE(r.unknown_reason.find("opaque for data"), std::string::npos);
+  TemporalResult s = violated();
+  confirm_violation(nullptr, s, findings);
+  EXPECT_EQ(s.outcome, Outcome::Unknown);
+  EXPECT_NE(s.unknown_reason.find("not replayed"), std::string::npos);
+  EXPECT_TRUE(findings.empty());
+}
+
+TEST(Confirm, HoldingPropertiesAreNotReplayed) {
+  TemporalResult r = violated();
+  r.outcome = Outcome::HoldsToBound;
+  std::vector<Finding> findings;
+  confirm_violation(nullptr, r, findings);
+  EXPECT_EQ(r.outcome, Outcome::HoldsToBound);
+}
+
+}  // namespace
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,205 @@
+#include "verify/temporal/counterexample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "core/join.h"
+#include "core/time_text.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+// Times to the microsecond, as a tests file writes them (core/time_text.h): the test arbc runs
+// is the one the file holds.
+double micro(double t) { return std::round(t * 1e6) / 1e6; }
+
+class Builder {
+ public:
+  Builder(const PortShape& shape, const Unrolling& u, const z3::model& m, DataQuery& data)
+      : shape_(shape), u_(u), m_(m), data_(data) {
+    for (const Entry& e : shape_.entries)
+      if (is_feed(e.owner)) harness_[e.event] = false;
+  }
+
+  // Appends step k; false (and why_not) when it cannot be replayed.
+  bool add(int k, const model::TemporalProperty& p) {
+    lapses_before(k);
+    const model::Connection& c = *shape_.connections[static_cast<size_t>(u_.connection(m_, k))];
+    if (c.kind == model::ConnectionKind::Feed) {
+      feed_step(k);
+      return true;
+    }
+    return rule_step(k, c, p);
+  }
+
+  model::TestCase test;
+  std::string why_not;
+
+ private:
+  bool is_feed(int owner) const {
+    return shape_.connections[static_cast<size_t>(owner)]->kind == model::ConnectionKind::Feed;
+  }
+
+  // Whether the feeds' entries make `event` present in state s at time t.
+  bool fed(const std::string& event, int s, double t) const {
+    for (size_t q = 0; q < shape_.entries.size(); ++q) {
+      const Entry& e = shape_.entries[q];
+      if (e.event != event || !is_feed(e.owner)) continue;
+      Unrolling::EntryValue v = u_.entry(m_, s, q);
+      if (v.has && (v.forever || t < v.expiry)) return true;
+    }
+    return false;
+  }
+
+  void event_step(model::TestStep::Kind kind, double t, const std::string& event) {
+    model::TestStep s;
+    s.kind = kind;
+    s.t = micro(t);
+    s.event = event;
+    test.steps.push_back(std::move(s));
+  }
+
+  // Feed entries that lapsed between step k-1 and step k: unset when the last one expired,
+  // in time order (the harness's `set` lasts until unset).
+  void lapses_before(int k) {
+    double t = u_.time_value(m_, k);
+    std::vector<std::pair<double, std::string>> lapsed;
+    for (auto& [event, present] : harness_) {
+      if (!present || fed(event, k, t)) continue;
+      double last = 0;
+      for (size_t q = 0; q < shape_.entries.size(); ++q) {
+        const Entry& e = shape_.entries[q];
+        Unrolling::EntryValue v = u_.entry(m_, k, q);
+        if (e.event == event && is_feed(e.owner) && v.has && !v.forever)
+          last = std::max(last, v.expiry);
+      }
+      lapsed.emplace_back(last, event);
+      present = false;
+    }
+    std::sort(lapsed.begin(), lapsed.end());
+    for (const auto& [at, event] : lapsed) event_step(model::TestStep::Kind::Unset, at, event);
+  }
+
+  // A feed's step: the events whose presence it changed, set or unset by the test.
+  void feed_step(int k) {
+    double t = u_.time_value(m_, k);
+    for (auto& [event, present] : harness_) {
+      bool now = fed(event, k + 1, t);
+      if (now == present) continue;
+      event_step(now ? model::TestStep::Kind::Set : model::TestStep::Kind::Unset, t, event);
+      present = now;
+    }
+  }
+
+  // A witness that `c` accepts, once per rule.
+  const DataWitness* witness(const model::Connection& c) {
+    auto found = witnesses_.find(&c);
+    if (found != witnesses_.end()) return &found->second;
+    std::string opaque = data_.opaque_reason(c);
+    if (!opaque.empty()) {
+      why_not = "'" + c.name + "' is opaque for data (" + opaque + ")";
+      return nullptr;
+    }
+    DataWitness w;
+    DataCore core;
+    Answer a = data_.ask({{&c, nullptr}}, &w, &core);
+    if (a != Answer::Sat) {
+      why_not = a == Answer::Unsat
+                    ? "'" + c.name + "' accepts no message"
+                    : "no message found for '" + c.name + "' (" + data_.unknown_reason() + ")";
+      return nullptr;
+    }
+    if (!w.assumed_state[0].empty()) {
+      why_not = "'" + c.name + "' accepts only with monitor state " + join(w.assumed_state[0]);
+      return nullptr;
+    }
+    return &witnesses_.emplace(&c, std::move(w)).first->second;
+  }
+
+  // A rule's step: a message it accepts; a rejected message that changes nothing is left out.
+  bool rule_step(int k, const model::Connection& c, const model::TemporalProperty& p) {
+    int owner = u_.connection(m_, k);
+    if (!u_.accepted(m_, k)) {
+      for (size_t q = 0; q < shape_.entries.size(); ++q) {
+        if (shape_.entries[q].owner == owner && u_.changes(m_, k, q)) {
+          why_not = "a message '" + c.name + "' rejects but that changes its events";
+          return false;
+        }
+      }
+      return true;
+    }
+    const DataWitness* w = witness(c);
+    if (!w) return false;
+    double t = micro(u_.time_value(m_, k));
+    model::TestStep s;
+    s.t = t;
+    s.port = c.source;
+    s.value = w->messages[0];
+    test.steps.push_back(std::move(s));
+    if (c.name == p.rule && u_.trace_step(m_, k).delivered) {
+      model::Expectation e;
+      e.port = c.destination;
+      e.value = w->emitted[0];
+      e.from = e.to = t;
+      e.text = c.destination + " receives " + spec_value_text(w->emitted[0]) + " at " +
+               time_text(t) + "s";
+      test.expectations.push_back(std::move(e));
+    }
+    return true;
+  }
+
+  const PortShape& shape_;
+  const Unrolling& u_;
+  const z3::model& m_;
+  DataQuery& data_;
+  std::map<std::string, bool> harness_;  // per event the feeds set: present in the test's entry
+  std::map<const model::Connection*, DataWitness> witnesses_;
+};
+
+}  // namespace
+
+std::optional<model::TestCase> counterexample_test(const PortShape& shape, const Unrolling& u,
+                                                   const z3::model& m, int steps,
+                                                   const model::TemporalProperty& p,
+                                                   DataQuery& data, std::string* why_not) {
+  Builder b(shape, u, m, data);
+  b.test.name = "counterexample: never two " + p.rule + " within " + time_text(p.window) + "s";
+  for (int k = 0; k < steps; ++k) {
+    if (!b.add(k, p)) {
+      *why_not = b.why_not;
+      return std::nullopt;
+    }
+  }
+  return std::move(b.test);
+}
+
+std::string test_file_text(const model::TestCase& test, const std::string& spec_path) {
+  std::string out =
+      "// A counterexample `arbc verify` found and replayed on the runtime; `arbc test "
+      "--no-verify\n"
+      "// FILE` runs it again (the app is refuted until it is fixed). Events the app's feeds set\n"
+      "// are given directly (`set`/`unset`).\n"
+      "tests for \"" +
+      spec_path + "\";\n\ntest \"" + test.name + "\" {\n";
+  for (const model::TestStep& s : test.steps) {
+    out += "  at " + time_text(s.t) + "s ";
+    switch (s.kind) {
+      case model::TestStep::Kind::Input:
+        out += s.port + " <- " + spec_value_text(s.value) + ";\n";
+        break;
+      case model::TestStep::Kind::Set:
+        out += "set " + s.event + ";\n";
+        break;
+      case model::TestStep::Kind::Unset:
+        out += "unset " + s.event + ";\n";
+        break;
+    }
+  }
+  for (const model::Expectation& e : test.expectations) out += "  expect " + e.text + ";\n";
+  return out + "}\n";
+}
+
+}  // namespace arbc::verify::temporal

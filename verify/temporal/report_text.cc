@@ -1,0 +1,80 @@
+#include "verify/temporal/report_text.h"
+
+#include <cstdio>
+
+#include "core/join.h"
+#include "core/time_text.h"
+#include "verify/temporal/counterexample.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+// What "holds up to the bound" assumes, printed with every verdict.
+constexpr const char* kAssumptions =
+    "    assuming: sources publish at any times; monitors accept or reject any message (data is\n"
+    "    not modelled); exclusive groups and invariants are not used\n";
+
+std::string property_text(const model::TemporalProperty& p) {
+  std::string where = p.loc.line ? " (" + p.loc.file + ":" + std::to_string(p.loc.line) + ")" : "";
+  return "never two " + p.rule + " within " + time_text(p.window) + "s" + where;
+}
+
+// "    at 0.25s  ObjectDetector.objects -> take: accepted, delivered; sets e_x"
+std::string step_text(const TraceStep& s) {
+  char time[32];
+  std::snprintf(time, sizeof time, "%-8s", (time_text(s.time) + "s").c_str());
+  std::string line = "    at " + std::string(time) + " " + s.source + " -> " + s.connection + ": ";
+  line += s.feed        ? "feed"
+          : s.delivered ? "accepted, delivered"
+          : s.accepted  ? "accepted, not delivered"
+                        : "rejected";
+  if (!s.set.empty()) line += "; sets " + join(s.set);
+  if (!s.unset.empty()) line += "; unsets " + join(s.unset);
+  return line + "\n";
+}
+
+std::string indent(const std::string& text, const std::string& by) {
+  std::string out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) out += by + text.substr(start, end - start);
+    out += "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string spec_name(const model::TemporalProperty& p) {
+  size_t slash = p.loc.file.find_last_of('/');
+  return slash == std::string::npos ? p.loc.file : p.loc.file.substr(slash + 1);
+}
+
+std::string temporal_text(const TemporalResult& r) {
+  const std::string port = r.property.port;
+  std::string out = "  " + property_text(r.property) + ": ";
+  std::string messages = std::to_string(r.bound) + " message" + (r.bound == 1 ? "" : "s");
+  switch (r.outcome) {
+    case TemporalResult::Outcome::HoldsToBound:
+      out += "holds up to " + messages + " into " + port + " (bounded; not proved)\n";
+      break;
+    case TemporalResult::Outcome::Unknown:
+      out += "unknown (" + r.unknown_reason + ") after " + messages + " into " + port + "\n";
+      for (const TraceStep& s : r.trace) out += step_text(s);
+      break;
+    case TemporalResult::Outcome::Violated:
+      out += "violated: a shortest trace of " + messages + " into " + port + ":\n";
+      for (const TraceStep& s : r.trace) out += step_text(s);
+      out +=
+          "    replayed on the runtime in simulated time, which shows the violation; as a tests\n"
+          "    file (--counterexamples DIR writes it):\n";
+      out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
+      break;
+  }
+  return out + kAssumptions;
+}
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,17 @@
+// Properties over time in `arbc verify`'s text report (docs/design.md#properties-over-time):
+// the verdict with its bound and assumptions, and a violation's timed trace in spec terms.
+#pragma once
+
+#include <string>
+
+#include "verify/report.h"
+
+namespace arbc::verify::temporal {
+
+// "  never two take within 1s (spec:70): ..." and, when violated, one line per step.
+std::string temporal_text(const TemporalResult& r);
+
+// The file name of the spec the property is in, as a tests file beside it names it.
+std::string spec_name(const model::TemporalProperty& p);
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,31 @@
+// The spacing property `never two RULE within W;` by bounded model checking
+// (docs/design.md#properties-over-time): is there a run in which RULE delivers twice less than
+// W apart, within `bound` messages into its port? Tries 2, 3, ... messages, so a violation found
+// is one of the fewest messages.
+#pragma once
+
+#include <z3++.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+
+#include "core/app_model.h"
+#include "verify/data_query.h"
+#include "verify/report.h"
+
+namespace arbc::verify::temporal {
+
+// Messages into the property's port explored by default (`arbc verify --temporal-bound`).
+inline constexpr int kDefaultBound = 8;
+
+// The verdict for `p` up to `bound` messages in the abstract model; unknown when the deadline
+// passes. A violation comes with its trace and, when `data` finds a message for every rule
+// step, the trace as a test to replay (TemporalResult::replay_test). nullopt and *err when `p`
+// names a port or rule the model does not have (bad input, not a verdict).
+std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
+                                            int bound, z3::context& ctx, DataQuery* data,
+                                            std::chrono::steady_clock::time_point deadline,
+                                            std::string* err);
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,105 @@
+// The spacing property by bounded model checking (docs/design.md#properties-over-time) on the
+// table_clean model: a rule without a throttle is refuted with a shortest timed trace, a
+// throttle at least the window holds at every bound, a shorter one does not.
+#include "verify/temporal/spacing.h"
+
+#include <gtest/gtest.h>
+
+#include "verify/test_models.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Outcome = TemporalResult::Outcome;
+
+TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
+                     double window, int bound = 6) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{model::TemporalProperty::Kind::Spacing, port, rule, window, {}};
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  std::optional<TemporalResult> r = check_spacing(app, p, bound, ctx, nullptr, deadline, &error);
+  EXPECT_TRUE(r) << error;
+  return r ? *r : TemporalResult{};
+}
+
+// The deliveries of `rule` in `trace`, by time.
+std::vector<double> deliveries(const std::vector<TraceStep>& trace, const std::string& rule) {
+  std::vector<double> out;
+  for (const TraceStep& s : trace)
+    if (s.delivered && s.connection == rule) out.push_back(s.time);
+  return out;
+}
+
+TEST(Spacing, TakeWithoutThrottleIsRefutedByTheShortestTrace) {
+  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "take", 1.0);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  // The two status feeds make the arm and the rake idle, then two objects arrive.
+  ASSERT_EQ(r.bound, 4);
+  ASSERT_EQ(r.trace.size(), 4u);
+  std::vector<double> takes = deliveries(r.trace, "take");
+  ASSERT_EQ(takes.size(), 2u);
+  EXPECT_LT(takes[1] - takes[0], 1.0);
+  EXPECT_TRUE(r.trace.back().delivered);
+  for (size_t k = 1; k < r.trace.size(); ++k) EXPECT_GE(r.trace[k].time, r.trace[k - 1].time);
+  int feeds_setting = 0;
+  for (const TraceStep& s : r.trace) feeds_setting += !s.set.empty() && !s.delivered;
+  EXPECT_EQ(feeds_setting, 2);
+}
+
+TEST(Spacing, ThrottleAtLeastTheWindowHoldsUpToTheBound) {
+  model::App app = testing::table_clean_model();
+  ASSERT_TRUE(testing::connection(app, "ask").throttle);
+  double period = *testing::connection(app, "ask").throttle;
+  TemporalResult r = check(app, "Speak.text", "ask", period);
+  EXPECT_EQ(r.outcome, Outcome::HoldsToBound);
+  EXPECT_EQ(r.bound, 6);
+  EXPECT_TRUE(r.trace.empty());
+}
+
+TEST(Spacing, AWindowLongerThanTheThrottleIsRefutedAtThePeriod) {
+  model::App app = testing::table_clean_model();
+  double period = *testing::connection(app, "ask").throttle;
+  TemporalResult r = check(app, "Speak.text", "ask", period + 0.5);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  std::vector<double> asks = deliveries(r.trace, "ask");
+  ASSERT_EQ(asks.size(), 2u);
+  EXPECT_GE(asks[1] - asks[0], period);  // the throttle still holds in the trace
+  EXPECT_LT(asks[1] - asks[0], period + 0.5);
+}
+
+TEST(Spacing, RemovingTheThrottleRefutesIt) {
+  model::App app = testing::table_clean_model();
+  double period = *testing::connection(app, "ask").throttle;
+  testing::connection(app, "ask").throttle.reset();
+  EXPECT_EQ(check(app, "Speak.text", "ask", period).outcome, Outcome::Violated);
+}
+
+TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
+  // track reading its own activity event: it can deliver again exactly when its 1 s hold
+  // lapses (absent at the expiry instant, docs/design.md#events-and-lifetimes), not before.
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "track").constraint = testing::parse("not act_track");
+  EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1.0).outcome, Outcome::HoldsToBound);
+  TemporalResult r = check(app, "HeadControl.gaze", "track", 1.25);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  std::vector<double> tracks = deliveries(r.trace, "track");
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_GE(tracks[1] - tracks[0], 1.0);
+  // Without the hold's effect (the rule reads nothing), two deliveries may share an instant.
+  testing::connection(app, "track").constraint = testing::parse("true");
+  EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1.0).outcome, Outcome::Violated);
+}
+
+TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "pull", 1.0, {}};
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  EXPECT_FALSE(check_spacing(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));
+  EXPECT_NE(error.find("does not have"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace arbc::verify::temporal

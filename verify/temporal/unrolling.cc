@@ -1,0 +1,243 @@
+#include "verify/temporal/unrolling.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+
+namespace arbc::verify::temporal {
+namespace {
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+// A double as an exact Z3 real (the decimal text of the double, as the runtime compares it).
+z3::expr real(z3::context& ctx, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return ctx.real_val(text);
+}
+
+// How long an entry the connection sets lives (docs/design.md#properties-over-time).
+Entry entry_of(const model::App& app, const model::Connection& c, const std::string& event,
+               int owner) {
+  Entry e;
+  e.event = event;
+  e.owner = owner;
+  const model::Event* declared = app.find_event(event);
+  std::optional<double> lifetime = declared ? declared->lifetime : std::nullopt;
+  if (event == c.activity_event) {
+    e.activity = true;
+    e.lifetime = lifetime;  // the rule's hold
+  } else if (c.kind == model::ConnectionKind::Feed) {
+    e.lifetime = lifetime;  // `events from ... lifetime D`, a derived event's `for D`
+  } else {
+    e.free_lifetime = true;  // `set e for D`: D is not in the model, so any lifetime
+  }
+  return e;
+}
+
+}  // namespace
+
+std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
+                                    std::string* err) {
+  if (!app.find_arbitrated(port)) {
+    *err = port + " is not an arbitrated port of app " + app.name;
+    return std::nullopt;
+  }
+  PortShape shape;
+  shape.port = port;
+  std::set<std::string> events;
+  for (const model::Connection* c : app.connections_into(port)) {
+    if (c->kind == model::ConnectionKind::Connect) continue;
+    int owner = static_cast<int>(shape.connections.size());
+    shape.connections.push_back(c);
+    c->constraint.collect_events(events);
+    for (const std::string& e : c->sets) {
+      shape.entries.push_back(entry_of(app, *c, e, owner));
+      events.insert(e);
+    }
+  }
+  shape.events.assign(events.begin(), events.end());
+  return shape;
+}
+
+Unrolling::Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver)
+    : shape_(shape), ctx_(ctx), solver_(solver) {
+  has_.emplace_back();
+  forever_.emplace_back();
+  expiry_.emplace_back();
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {  // the container starts empty
+    has_[0].push_back(ctx_.bool_val(false));
+    forever_[0].push_back(ctx_.bool_val(false));
+    expiry_[0].push_back(ctx_.real_val(0));
+  }
+  for (int k = 0; k < steps; ++k) add_step(k);
+}
+
+// Step k: its time, connection and accept outcome; the entries it changes; the deliveries.
+void Unrolling::add_step(int k) {
+  std::string s = "!" + std::to_string(k);
+  t_.push_back(ctx_.real_const(("t" + s).c_str()));
+  solver_.add(k == 0 ? t_[k] >= 0 : t_[k] >= t_[k - 1]);
+  run_.push_back(ctx_.int_const(("run" + s).c_str()));
+  solver_.add(run_[k] >= 0 && run_[k] < static_cast<int>(shape_.connections.size()));
+  acc_.push_back(ctx_.bool_const(("acc" + s).c_str()));
+  has_.emplace_back();
+  forever_.emplace_back();
+  expiry_.emplace_back();
+  set_.emplace_back();
+  unset_.emplace_back();
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    std::string e = "!" + std::to_string(q) + s;
+    has_[k + 1].push_back(ctx_.bool_const(("has" + e).c_str()));
+    forever_[k + 1].push_back(ctx_.bool_const(("forever" + e).c_str()));
+    expiry_[k + 1].push_back(ctx_.real_const(("expiry" + e).c_str()));
+    set_[k].push_back(ctx_.bool_const(("set" + e).c_str()));
+    unset_[k].push_back(ctx_.bool_const(("unset" + e).c_str()));
+  }
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    if (!shape_.entries[q].activity) add_entry_step(q, k);
+  }
+  del_.emplace_back();
+  for (size_t c = 0; c < shape_.connections.size(); ++c) {
+    const model::Connection& conn = *shape_.connections[c];
+    z3::expr d = ctx_.bool_const(("del!" + std::to_string(c) + s).c_str());
+    z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
+    if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
+    if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
+      for (int i = 0; i < k; ++i)
+        selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= real(ctx_, *conn.throttle));
+    }
+    solver_.add(d == selected);
+    del_[k].push_back(d);
+  }
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    if (shape_.entries[q].activity) add_activity_step(q, k);
+  }
+}
+
+// An entry the running connection's monitor may set or remove (must, on an accepting step).
+void Unrolling::add_entry_step(size_t q, int k) {
+  const Entry& e = shape_.entries[q];
+  const model::Connection& c = *shape_.connections[static_cast<size_t>(e.owner)];
+  z3::expr running = run_[k] == e.owner;
+  z3::expr set = set_[k][q], unset = unset_[k][q];
+  bool must_set = contains(c.must_set, e.event), must_unset = contains(c.must_unset, e.event);
+  solver_.add(z3::implies(set, running));
+  solver_.add(contains(c.unsets, e.event) ? z3::implies(unset, running) : !unset);
+  solver_.add(!(set && unset));
+  if (must_set && !must_unset) solver_.add(z3::implies(running && acc_[k], set));
+  if (must_unset && !must_set) solver_.add(z3::implies(running && acc_[k], unset));
+  const z3::expr &h0 = has_[k][q], &f0 = forever_[k][q], &x0 = expiry_[k][q];
+  const z3::expr &h1 = has_[k + 1][q], &f1 = forever_[k + 1][q], &x1 = expiry_[k + 1][q];
+  solver_.add(h1 == z3::ite(set, ctx_.bool_val(true), z3::ite(unset, ctx_.bool_val(false), h0)));
+  solver_.add(z3::implies(!set, f1 == f0 && x1 == x0));
+  if (e.free_lifetime) {
+    solver_.add(z3::implies(set, x1 > t_[k]));  // any lifetime, or none (f1 free)
+  } else if (e.lifetime) {
+    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + real(ctx_, *e.lifetime)));
+  } else {
+    solver_.add(z3::implies(set, f1 && x1 == t_[k]));
+  }
+}
+
+// A `by priority` activity entry: set for the hold each time its rule delivers, never removed.
+void Unrolling::add_activity_step(size_t q, int k) {
+  const Entry& e = shape_.entries[q];
+  z3::expr d = del_[k][static_cast<size_t>(e.owner)];
+  const z3::expr &h0 = has_[k][q], &f0 = forever_[k][q], &x0 = expiry_[k][q];
+  const z3::expr &h1 = has_[k + 1][q], &f1 = forever_[k + 1][q], &x1 = expiry_[k + 1][q];
+  solver_.add(set_[k][q] == d && !unset_[k][q]);
+  solver_.add(h1 == (d || h0));
+  solver_.add(z3::implies(!d, f1 == f0 && x1 == x0));
+  if (e.lifetime) {
+    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + real(ctx_, *e.lifetime)));
+  } else {
+    solver_.add(z3::implies(d, f1 && x1 == t_[k]));
+  }
+}
+
+// `event` is present at step k's decision: the entries as accept left them (activity entries
+// as before the step: they change only after the decision), at time t_k.
+z3::expr Unrolling::present(const std::string& event, int k, const z3::expr& at) const {
+  z3::expr any = ctx_.bool_val(false);
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    const Entry& e = shape_.entries[q];
+    if (e.event != event) continue;
+    size_t s = static_cast<size_t>(e.activity ? k : k + 1);
+    any = any || (has_[s][q] && (forever_[s][q] || at < expiry_[s][q]));
+  }
+  return any;
+}
+
+z3::expr Unrolling::guard(const Constraint& c, int k) const {
+  switch (c.op) {
+    case Constraint::Op::True:
+      return ctx_.bool_val(true);
+    case Constraint::Op::False:
+      return ctx_.bool_val(false);
+    case Constraint::Op::Event:
+      return present(c.event, k, t_[k]);
+    case Constraint::Op::Not:
+      return !guard(c.args[0], k);
+    case Constraint::Op::And:
+    case Constraint::Op::Or: {
+      z3::expr_vector args(ctx_);
+      for (const Constraint& a : c.args) args.push_back(guard(a, k));
+      return c.op == Constraint::Op::And ? z3::mk_and(args) : z3::mk_or(args);
+    }
+  }
+  return ctx_.bool_val(false);
+}
+
+namespace {
+
+// A real in `m` as a double (a trailing '?' marks a rounded decimal, which strtod ignores).
+double real_value(const z3::model& m, const z3::expr& e) {
+  std::string text = m.eval(e, true).get_decimal_string(9);
+  return std::strtod(text.c_str(), nullptr);
+}
+
+}  // namespace
+
+double Unrolling::time_value(const z3::model& m, int k) const { return real_value(m, t_[k]); }
+
+int Unrolling::connection(const z3::model& m, int k) const {
+  return m.eval(run_[k], true).get_numeral_int();
+}
+
+bool Unrolling::accepted(const z3::model& m, int k) const {
+  return m.eval(acc_[k], true).is_true();
+}
+
+Unrolling::EntryValue Unrolling::entry(const z3::model& m, int state, size_t q) const {
+  size_t s = static_cast<size_t>(state);
+  return {m.eval(has_[s][q], true).is_true(), m.eval(forever_[s][q], true).is_true(),
+          real_value(m, expiry_[s][q])};
+}
+
+bool Unrolling::changes(const z3::model& m, int k, size_t q) const {
+  return m.eval(set_[k][q], true).is_true() || m.eval(unset_[k][q], true).is_true();
+}
+
+TraceStep Unrolling::trace_step(const z3::model& m, int k) const {
+  TraceStep step;
+  step.time = time_value(m, k);
+  int c = connection(m, k);
+  const model::Connection& conn = *shape_.connections[static_cast<size_t>(c)];
+  step.connection = conn.name;
+  step.source = conn.source;
+  step.feed = conn.kind == model::ConnectionKind::Feed;
+  step.accepted = accepted(m, k);
+  step.delivered = m.eval(del_[k][static_cast<size_t>(c)], true).is_true();
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    if (shape_.entries[q].owner != c) continue;
+    if (m.eval(set_[k][q], true).is_true()) step.set.push_back(shape_.entries[q].event);
+    if (m.eval(unset_[k][q], true).is_true()) step.unset.push_back(shape_.entries[q].event);
+  }
+  return step;
+}
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,82 @@
+// N steps of one arbitrated port over real-valued time, as Z3 terms: the encoding of
+// docs/design.md#properties-over-time. Step k is one message that one connection into the port
+// (a rule or a feed) handles at time t_k; the container holds one entry per (event, owner) with
+// its expiry; message data is abstract, so which connection runs, whether its `accept` accepts,
+// and the events it may (not must) set or unset are free. Properties over time add their own
+// formula over `delivers` and `time` and ask the solver.
+#pragma once
+
+#include <z3++.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "verify/report.h"
+
+namespace arbc::verify::temporal {
+
+// One entry of the container: `event` as set by connection `owner`.
+struct Entry {
+  std::string event;
+  int owner = 0;                   // index into PortSteps::connections
+  bool activity = false;           // the owner's `by priority` activity event
+  std::optional<double> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
+  bool free_lifetime = false;      // `set e for D` in rule code: D is not in the model
+};
+
+// What the unrolling needs of the port, read from the model once.
+struct PortShape {
+  std::string port;
+  std::vector<const model::Connection*> connections;  // rules and feeds into the port
+  std::vector<Entry> entries;
+  std::vector<std::string> events;  // every event in the container or a constraint, sorted
+};
+
+// The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`.
+std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
+                                    std::string* err);
+
+class Unrolling {
+ public:
+  // Adds to `solver` the constraints of `steps` steps of the port from the empty container.
+  Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver);
+
+  // Connection `c` delivers at step k.
+  z3::expr delivers(int c, int k) const { return del_[k][c]; }
+  z3::expr time(int k) const { return t_[k]; }
+  // Step k's trace line in model `m`.
+  TraceStep trace_step(const z3::model& m, int k) const;
+
+  // Values in model `m`: step k's time, the index of its connection, whether it accepted.
+  double time_value(const z3::model& m, int k) const;
+  int connection(const z3::model& m, int k) const;
+  bool accepted(const z3::model& m, int k) const;
+  // Entry q in state s (0: before step 1, k+1: after step k) in model `m`.
+  struct EntryValue {
+    bool has = false, forever = false;
+    double expiry = 0;
+  };
+  EntryValue entry(const z3::model& m, int state, size_t q) const;
+  // Whether step k set or removed entry q.
+  bool changes(const z3::model& m, int k, size_t q) const;
+
+ private:
+  z3::expr present(const std::string& event, int state, const z3::expr& at) const;
+  z3::expr guard(const Constraint& c, int k) const;
+  void add_step(int k);
+  void add_entry_step(size_t q, int k);
+  void add_activity_step(size_t q, int k);
+
+  const PortShape& shape_;
+  z3::context& ctx_;
+  z3::solver& solver_;
+  std::vector<z3::expr> t_, run_, acc_;  // per step: time, connection index, accepted
+  // Per state s (0: before step 1, k+1: after step k), per entry q.
+  std::vector<std::vector<z3::expr>> has_, forever_, expiry_;
+  std::vector<std::vector<z3::expr>> set_, unset_;  // per step, per entry: the step's choice
+  std::vector<std::vector<z3::expr>> del_;          // per step, per connection
+};
+
+}  // namespace arbc::verify::temporal
