@@ -246,10 +246,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
 bool Runtime::open_trace(std::string* error) {
   trace_.record_to(options_.trace_records);
   if (options_.trace_path.empty()) return true;
-  std::string trace_error = trace_.open(options_.trace_path);
-  if (trace_error.empty()) return true;
-  *error = trace_error;
-  return false;
+  return trace_.open(options_.trace_path, error);
 }
 
 // Tells the transport where every port's module runs; in-process unless the options name one.

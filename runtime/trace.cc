@@ -9,11 +9,12 @@ namespace arbc {
 
 Trace::~Trace() { close(); }
 
-std::string Trace::open(const std::string& path) {
+bool Trace::open(const std::string& path, std::string* err) {
   close();
   file_ = std::fopen(path.c_str(), "w");
-  if (!file_) return "cannot write trace file " + path + ": " + std::strerror(errno);
-  return {};
+  if (file_) return true;
+  *err = "cannot write trace file " + path + ": " + std::strerror(errno);
+  return false;
 }
 
 void Trace::close() {

@@ -18,8 +18,8 @@ class Trace {
  public:
   Trace() = default;
   ~Trace();
-  // Opens path for writing; returns an error message or "".
-  std::string open(const std::string& path);
+  // Opens path for writing; false and *err when it cannot.
+  bool open(const std::string& path, std::string* err);
   // Also appends every record to *records (nullptr: stop); independent of the file.
   // The caller keeps *records alive while the trace is written.
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }

@@ -41,9 +41,10 @@ TEST(TraceTest, SameSeedGivesByteIdenticalTraces) {
   EXPECT_GT(a.size(), 1000u);
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
-  for (const char* kind : {"\"type\":\"publish\"", "\"type\":\"deliver\"", "\"reason\":\"feed\"", "\"reason\":\"rejected\"",
-                           "\"reason\":\"not-selected\"", "\"reason\":\"no-value\"",
-                           "\"op\":\"set\"", "\"op\":\"unset\"", "\"op\":\"expire\""}) {
+  for (const char* kind :
+       {"\"type\":\"publish\"", "\"type\":\"deliver\"", "\"reason\":\"feed\"",
+        "\"reason\":\"rejected\"", "\"reason\":\"not-selected\"", "\"reason\":\"no-value\"",
+        "\"op\":\"set\"", "\"op\":\"unset\"", "\"op\":\"expire\""}) {
     EXPECT_NE(a.find(kind), std::string::npos) << kind;
   }
 }
@@ -55,9 +56,9 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
   std::istringstream lines(text);
   std::string line;
   size_t i = 0;
-  static const char* kTypes[] = {"deliver",      "drop",         "event",   "error",
-                                 "quarantine",   "log",          "publish-error",
-                                 "plugin-error", "pending",      "publish"};
+  static const char* kTypes[] = {"deliver",    "drop",   "event",         "error",
+                                 "quarantine", "log",    "publish-error", "plugin-error",
+                                 "pending",    "publish"};
   while (std::getline(lines, line)) {
     ASSERT_LT(i, records.size()) << line;
     const TraceRecord& r = records[i++];
@@ -99,7 +100,8 @@ TEST(TraceTest, LineFormat) {
   RunOptions unused;
   Trace trace;
   std::string path = t.dir + "/t.jsonl";
-  ASSERT_EQ(trace.open(path), "");
+  std::string err;
+  ASSERT_TRUE(trace.open(path, &err)) << err;
   trace.publish(1.5, "ObjectDetector.objects", Value::list({Value::record({{"dist", 0.3}})}));
   trace.delivery(1.5, "take", "PickAndPlace.cmd", Value::record({{"verb", "take"}}));
   trace.drop(2, "put", DropReason::NotSelected, "");
