@@ -35,6 +35,12 @@ class Builder {
     for (const ast::ArbitrateDecl& a : spec_.arbitrations) arbitrate(a);
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
+    for (const ast::NeverDecl& n : spec_.nevers)
+      if (n.rule_decl) ix_.add_occurrence("rule:" + n.rule, name_loc(n.rule_loc, n.rule));
+    for (const ast::ResourceDecl& r : spec_.resources) {
+      for (const ast::PortRef& p : r.ports) port_ref(p);
+      expr(r.uses.get());
+    }
     for (const ast::InvariantDecl& i : spec_.invariants) expr(i.formula.get());
     for (const ast::TestDecl& t : spec_.tests) test(t);
   }
