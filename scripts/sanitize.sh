@@ -7,14 +7,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 
 ARBC_BUILD_DIR=$root/build-asan "$root/scripts/build.sh" -DARBC_SANITIZE=ON -DARBC_BENCH=OFF
-# The DDS split runs (label dds) replay the paper's experiment in two processes at ten times
-# real time and judge the robot's outcome: a sanitized build on two cores cannot keep that pace,
-# so of them only the runs that check what the processes do on signals and with a program
-# without arbc (not how fast) run here; the rest run in the normal build (scripts/test.sh).
+# The DDS tests (label dds) run in the normal build only (scripts/test.sh): under ASan every
+# Fast-DDS process aborts on a new/delete size mismatch inside Fast-DDS 2.9 itself (the
+# fastddsgen-built interop_pub, which has no arbc code, aborts the same way), and the split runs
+# at ten times real time could not keep pace sanitized on two cores anyway.
 (cd "$root/build-asan" &&
-  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 &&
-  ctest --output-on-failure -j"$jobs" -LE dds &&
-  ctest --output-on-failure -j"$jobs" -R 'dds_split_signals|dds_interop')
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --output-on-failure -j"$jobs" -LE dds)
 
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
 cmake -S "$root" -B "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_TSAN=ON -DARBC_BENCH=OFF \

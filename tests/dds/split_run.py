@@ -102,6 +102,22 @@ def expect(cond, message, *outputs):
         fail(message + "".join("\n--- output ---\n" + o for o in outputs))
 
 
+def handling(proc, sig, timeout=60):
+    """Waits until proc handles sig (its run has started: before, while it loads the app and
+    waits for peers, a signal ends the process as usual, and a slow start under a sanitizer or
+    on a loaded machine must not look like that). Linux: the SigCgt mask of /proc/PID/status."""
+    deadline = time.monotonic() + timeout
+    while proc.poll() is None and time.monotonic() < deadline:
+        try:
+            with open(f"/proc/{proc.pid}/status") as f:
+                mask = next(int(l.split()[1], 16) for l in f if l.startswith("SigCgt:"))
+            if mask >> (int(sig) - 1) & 1:
+                return
+        except (OSError, StopIteration):
+            pass
+        time.sleep(0.02)
+
+
 def alive(proc, message):
     """Fails with `message` and proc's output when proc has ended (its output is read only then)."""
     if proc.poll() is not None:
@@ -179,6 +195,8 @@ def signals(split):
         what = f"W {wsig.name}, M {msig.name}"
         m = split.start("M", [])
         w = split.start("W", ["--scenario", "mixed", "--seed", "1"])
+        handling(w, wsig)
+        handling(m, msig)
         time.sleep(2.0)  # mid-run
         alive(w, f"{what}: W ended early")
         wrc, wout = stop(w, "W", wsig)
