@@ -79,13 +79,15 @@ CompiledConstraint CompiledConstraint::compile(const Constraint& c, EventIndex& 
   if (cube && !cube->contradictory()) {
     out.required_ = std::move(cube->required);
     out.forbidden_ = std::move(cube->forbidden);
+    out.one_word_ = out.required_.size() <= 1;
     if (!out.required_.empty()) {
       out.required0_ = out.required_[0];
-      out.forbidden0_ = out.forbidden_[0];
+      out.care0_ = out.required_[0] | out.forbidden_[0];
     }
     return out;
   }
   out.is_cube_ = false;
+  out.one_word_ = false;
   // Post-order emission.
   struct Emitter {
     EventIndex& index;

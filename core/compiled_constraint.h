@@ -27,29 +27,41 @@ class EventIndex {
   std::unordered_map<std::string, int> ids_;
 };
 
-// A set of event ids.
+// A set of event ids. The first 64 ids (every port of the reference apps) live in a word
+// held inline, so a decision reads one word with no bounds check and no indirection; higher
+// ids spill into a vector.
 class EventMask {
  public:
   void set(int id) {
-    grow(id);
-    words_[id >> 6] |= uint64_t{1} << (id & 63);
+    if (id < 64) {
+      first_ |= uint64_t{1} << id;
+      return;
+    }
+    size_t w = static_cast<size_t>(id >> 6) - 1;
+    if (rest_.size() <= w) rest_.resize(w + 1, 0);
+    rest_[w] |= uint64_t{1} << (id & 63);
   }
   void reset(int id) {
-    if ((id >> 6) < static_cast<int>(words_.size())) words_[id >> 6] &= ~(uint64_t{1} << (id & 63));
+    if (id < 64) {
+      first_ &= ~(uint64_t{1} << id);
+    } else if (static_cast<size_t>(id >> 6) - 1 < rest_.size()) {
+      rest_[static_cast<size_t>(id >> 6) - 1] &= ~(uint64_t{1} << (id & 63));
+    }
   }
-  bool test(int id) const {
-    return (id >> 6) < static_cast<int>(words_.size()) && (words_[id >> 6] >> (id & 63)) & 1;
+  bool test(int id) const { return (word(id >> 6) >> (id & 63)) & 1; }
+  void clear() {
+    first_ = 0;
+    rest_.assign(rest_.size(), 0);
   }
-  void clear() { words_.assign(words_.size(), 0); }
-  uint64_t word(int i) const { return i < static_cast<int>(words_.size()) ? words_[i] : 0; }
-  int word_count() const { return static_cast<int>(words_.size()); }
+  uint64_t first_word() const { return first_; }
+  uint64_t word(int i) const {
+    if (i == 0) return first_;
+    return static_cast<size_t>(i) - 1 < rest_.size() ? rest_[static_cast<size_t>(i) - 1] : 0;
+  }
 
  private:
-  void grow(int id) {
-    size_t need = static_cast<size_t>(id >> 6) + 1;
-    if (words_.size() < need) words_.resize(need, 0);
-  }
-  std::vector<uint64_t> words_;
+  uint64_t first_ = 0;
+  std::vector<uint64_t> rest_;  // words 1.. (ids 64 and up)
 };
 
 // A conjunction of literals: the events whose bits are in `required` present and those in
@@ -71,12 +83,9 @@ class CompiledConstraint {
   static CompiledConstraint compile(const Constraint& c, EventIndex& index);
 
   bool evaluate(const EventMask& present) const {
+    // Up to 64 events (every port of the reference apps): one masked compare of one word.
+    if (one_word_) return (present.first_word() & care0_) == required0_;
     if (is_cube_) {
-      // Up to 64 events (every port of the reference apps): one word, no loop.
-      if (required_.size() <= 1) {
-        uint64_t w = present.word(0);
-        return (w & required0_) == required0_ && (w & forbidden0_) == 0;
-      }
       for (size_t i = 0; i < required_.size(); ++i) {
         uint64_t w = present.word(static_cast<int>(i));
         if ((w & required_[i]) != required_[i] || (w & forbidden_[i]) != 0) return false;
@@ -97,7 +106,10 @@ class CompiledConstraint {
 
   bool is_cube_ = true;  // a conjunction of literals: two mask comparisons per word
   std::vector<uint64_t> required_, forbidden_;
-  uint64_t required0_ = 0, forbidden0_ = 0;  // word 0 of the masks, for the one-word case
+  // A cube over ids below 64: present iff (word 0 & care0_) == required0_, where care0_ is
+  // required | forbidden (a non-contradictory cube has them disjoint).
+  bool one_word_ = true;
+  uint64_t required0_ = 0, care0_ = 0;
   std::vector<Instr> program_;
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 namespace arbc {
 namespace {
@@ -49,6 +50,42 @@ TEST(CompiledConstraintTest, EventsBeyondSixtyFourBits) {
   EXPECT_TRUE(c.evaluate(mask));
   mask.set(3);
   EXPECT_FALSE(c.evaluate(mask));
+}
+
+// The first word is held inline and the rest in a vector: set, reset, test and clear agree
+// with a plain set of ids across the boundary, and a one-word cube ignores higher words.
+TEST(CompiledConstraintTest, MaskWordsAgreeWithASetOfIds) {
+  EventMask mask;
+  std::set<int> ids;
+  std::mt19937 random(7);
+  for (int step = 0; step < 2000; ++step) {
+    int id = static_cast<int>(random() % 200);
+    if (step % 500 == 499) {
+      mask.clear();
+      ids.clear();
+    } else if (random() % 3 == 0) {
+      mask.reset(id);
+      ids.erase(id);
+    } else {
+      mask.set(id);
+      ids.insert(id);
+    }
+    for (int probe : {0, 1, 62, 63, 64, 65, 127, 128, 199, 250, id})
+      ASSERT_EQ(mask.test(probe), ids.count(probe) == 1) << "step " << step << " id " << probe;
+  }
+  EventIndex index;
+  for (int i = 0; i < 70; ++i) index.intern("e" + std::to_string(i));
+  CompiledConstraint low =
+      CompiledConstraint::compile(parse_constraint("e1 and not e2").constraint, index);
+  EventMask state;
+  state.set(1);
+  state.set(66);
+  EXPECT_TRUE(low.evaluate(state));
+  state.set(2);
+  EXPECT_FALSE(low.evaluate(state));
+  state.reset(2);
+  state.reset(1);
+  EXPECT_FALSE(low.evaluate(state));
 }
 
 TEST(CompiledConstraintTest, DeepProgramsUseTheHeapStack) {
