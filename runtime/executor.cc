@@ -5,24 +5,70 @@
 namespace arbc {
 
 TaskQueue::TaskId TaskQueue::push(double at, std::function<void()> fn) {
-  TaskId id = next_id_++;
-  tasks_.emplace(std::make_pair(at, id), std::move(fn));
-  time_of_.emplace(id, at);
+  uint32_t slot;
+  if (free_.empty()) {
+    slot = static_cast<uint32_t>(slots_.size());
+    slots_.emplace_back();
+  } else {
+    slot = free_.back();
+    free_.pop_back();
+  }
+  Slot& s = slots_[slot];
+  if (++s.generation == 0) s.generation = 1;  // id 0 means "no task" to callers
+  s.live = true;
+  s.fn = std::move(fn);
+  TaskId id = (TaskId{s.generation} << 32) | slot;
+  heap_.push_back({at, next_seq_++, id});
+  std::push_heap(heap_.begin(), heap_.end(), later);
   return id;
 }
 
+bool TaskQueue::stale(const Entry& e) const {
+  const Slot& s = slots_[static_cast<uint32_t>(e.id)];
+  return !s.live || s.generation != static_cast<uint32_t>(e.id >> 32);
+}
+
+void TaskQueue::release(uint32_t slot) {
+  slots_[slot].live = false;
+  slots_[slot].fn = nullptr;
+  free_.push_back(slot);
+}
+
+// Keeps the invariant that the top of the heap is a live task.
+void TaskQueue::drop_dead_top() {
+  while (!heap_.empty() && stale(heap_.front())) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    heap_.pop_back();
+    --dead_;
+  }
+}
+
 void TaskQueue::cancel(TaskId id) {
-  auto it = time_of_.find(id);
-  if (it == time_of_.end()) return;
-  tasks_.erase({it->second, id});
-  time_of_.erase(it);
+  auto slot = static_cast<uint32_t>(id);
+  if (slot >= slots_.size()) return;
+  const Slot& s = slots_[slot];
+  if (!s.live || s.generation != static_cast<uint32_t>(id >> 32)) return;  // ran or cancelled
+  release(slot);
+  ++dead_;
+  drop_dead_top();
+  // Cancelled entries deep in the heap wait until they surface; when they outnumber the live
+  // ones, sweep them so that a task re-posted and cancelled over and over keeps memory flat.
+  if (dead_ > 16 && dead_ * 2 > heap_.size()) {
+    heap_.erase(std::remove_if(heap_.begin(), heap_.end(),
+                               [this](const Entry& e) { return stale(e); }),
+                heap_.end());
+    std::make_heap(heap_.begin(), heap_.end(), later);
+    dead_ = 0;
+  }
 }
 
 std::function<void()> TaskQueue::pop() {
-  auto it = tasks_.begin();
-  std::function<void()> fn = std::move(it->second);
-  time_of_.erase(it->first.second);
-  tasks_.erase(it);
+  std::pop_heap(heap_.begin(), heap_.end(), later);
+  auto slot = static_cast<uint32_t>(heap_.back().id);
+  heap_.pop_back();
+  std::function<void()> fn = std::move(slots_[slot].fn);
+  release(slot);
+  drop_dead_top();
   return fn;
 }
 

@@ -16,6 +16,7 @@
 #include <mutex>
 #include <thread>
 #include <unordered_set>
+#include <vector>
 
 namespace arbc {
 
@@ -42,20 +43,46 @@ class Executor {
   const std::atomic<bool>* interrupt_ = nullptr;
 };
 
-// Tasks ordered by (time, sequence number): a priority queue kept as an ordered map.
+// Tasks ordered by (time, posting order): a binary heap over a vector, with each task's
+// function in a reused slot, so that posting and running a task allocate nothing once the
+// queue has grown to its working size (a map node per task cost two allocations and frees per
+// message on the message path). A task id names its slot and the slot's generation, so a stale
+// id (a task that ran or was cancelled) cancels nothing.
 class TaskQueue {
  public:
   using TaskId = Executor::TaskId;
   TaskId push(double at, std::function<void()> fn);
   void cancel(TaskId id);
-  bool empty() const { return tasks_.empty(); }
-  double next_time() const { return tasks_.begin()->first.first; }
+  bool empty() const { return heap_.empty(); }
+  double next_time() const { return heap_.front().at; }
   std::function<void()> pop();
+  // Tasks waiting (cancelled ones no longer count).
+  size_t size() const { return heap_.size() - dead_; }
+  // Heap entries, cancelled ones not yet discarded included: bounded by about twice size().
+  size_t entries() const { return heap_.size(); }
 
  private:
-  std::map<std::pair<double, TaskId>, std::function<void()>> tasks_;
-  std::map<TaskId, double> time_of_;
-  TaskId next_id_ = 1;
+  struct Entry {
+    double at;
+    uint64_t seq;  // posting order, the tie-break between equal times
+    TaskId id;
+  };
+  struct Slot {
+    uint32_t generation = 0;
+    bool live = false;
+    std::function<void()> fn;
+  };
+  static bool later(const Entry& a, const Entry& b) {
+    return a.at != b.at ? a.at > b.at : a.seq > b.seq;
+  }
+  bool stale(const Entry& e) const;
+  void release(uint32_t slot);
+  void drop_dead_top();
+  std::vector<Entry> heap_;
+  std::vector<Slot> slots_;
+  std::vector<uint32_t> free_;
+  uint64_t next_seq_ = 0;
+  size_t dead_ = 0;  // cancelled entries still in heap_
 };
 
 class SimulatedExecutor : public Executor {

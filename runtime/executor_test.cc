@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <map>
+#include <random>
 #include <vector>
 
 namespace arbc {
@@ -25,6 +27,68 @@ TEST(ExecutorTest, SimulatedRunsInTimeThenPostingOrder) {
   EXPECT_EQ(ex.now(), 3);
   ex.run(10);
   EXPECT_EQ(order.back(), 5);
+}
+
+// The heap with reused slots behaves as the ordered map it replaced: tasks come out in
+// (time, posting order), a cancelled task never runs, a stale id (a task that ran or was
+// cancelled, its slot since reused) cancels nothing, and cancelled entries do not pile up.
+TEST(ExecutorTest, TaskQueueAgreesWithAnOrderedMap) {
+  TaskQueue queue;
+  // (time, posting order) -> (task number, id)
+  std::map<std::pair<double, uint64_t>, std::pair<int, TaskQueue::TaskId>> model;
+  std::map<TaskQueue::TaskId, std::pair<double, uint64_t>> pending;
+  std::vector<TaskQueue::TaskId> old_ids;
+  std::mt19937 random(11);
+  uint64_t posted = 0;
+  int ran = -1;
+  for (int step = 0; step < 20000; ++step) {
+    unsigned what = random() % 10;
+    if (what < 5) {
+      double at = static_cast<double>(random() % 50);
+      int number = static_cast<int>(posted);
+      TaskQueue::TaskId id = queue.push(at, [&ran, number] { ran = number; });
+      ASSERT_NE(id, 0u);
+      model[{at, posted}] = {number, id};
+      pending[id] = {at, posted};
+      old_ids.push_back(id);
+      ++posted;
+    } else if (what < 7 && !old_ids.empty()) {
+      TaskQueue::TaskId id = old_ids[random() % old_ids.size()];  // pending, ran or cancelled
+      queue.cancel(id);
+      auto it = pending.find(id);
+      if (it != pending.end()) {
+        model.erase(it->second);
+        pending.erase(it);
+      }
+    } else if (!model.empty()) {
+      ASSERT_FALSE(queue.empty());
+      ASSERT_EQ(queue.next_time(), model.begin()->first.first);
+      queue.pop()();
+      ASSERT_EQ(ran, model.begin()->second.first) << "step " << step;
+      pending.erase(model.begin()->second.second);
+      model.erase(model.begin());
+    }
+    ASSERT_EQ(queue.empty(), model.empty());
+    ASSERT_EQ(queue.size(), model.size());
+    ASSERT_LE(queue.entries(), 2 * model.size() + 17) << "cancelled entries pile up";
+  }
+}
+
+// A timer re-posted and cancelled over and over (a trig interval being reset) keeps the queue
+// small.
+TEST(ExecutorTest, RepostedAndCancelledTasksKeepTheQueueSmall) {
+  SimulatedExecutor ex;
+  int ran = 0;
+  ex.post(1e9, [&] { ++ran; });
+  Executor::TaskId id = 0;
+  for (int i = 0; i < 100000; ++i) {
+    if (id) ex.cancel(id);
+    id = ex.post(1000 + i, [&] { ran += 100; });
+  }
+  ex.run(1e6);
+  EXPECT_EQ(ran, 100);  // only the last re-posted one
+  ex.run(2e9);
+  EXPECT_EQ(ran, 101);
 }
 
 TEST(ExecutorTest, SimulatedStop) {
