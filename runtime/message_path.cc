@@ -221,7 +221,7 @@ void Runtime::process(Connection& c, const Value& msg) {
   c.consecutive_errors = 0;
   c.last_delivery = t;
   ++c.stats.delivered;
-  trace_.delivery(t, c.name, c.destination->qualified, *delivered);
+  if (trace_.enabled()) trace_.delivery(t, c.name, c.destination->qualified, *delivered);
   // `by priority`: only a delivered message holds the lower rules off, for the event's
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);

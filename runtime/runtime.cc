@@ -61,8 +61,6 @@ Runtime::~Runtime() {
   if (transport_) transport_->close();  // no transport thread may reach this runtime any more
 }
 
-double Runtime::now() const { return executor_->now(); }
-
 Module* Runtime::module(std::string_view name) {
   for (auto& m : modules_) {
     if (m->name == name) return m->module.get();

@@ -128,7 +128,7 @@ class Runtime {
   // Injects a message as if module.port (an output port) had published it.
   void publish(std::string_view module, std::string_view port, Value v);
 
-  double now() const;
+  double now() const { return executor_->now(); }
   Executor& executor() { return *executor_; }
   Module* module(std::string_view name);
   Environment* environment() { return environment_.get(); }
