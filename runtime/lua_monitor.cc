@@ -113,6 +113,7 @@ int install(lua_State* L) {
   lua_pushlightuserdata(L, host);
   luaL_setfuncs(L, api, 1);
   lua_setglobal(L, "PortMonitor");
+  prepare_lua_values(L);
   return 0;
 }
 

@@ -44,21 +44,43 @@ std::string_view entry_key(lua_State* L) {
 // Everything below reads tables raw (lua_next, lua_rawgeti): a metamethod would run Lua code
 // that may raise, and Lua's longjmp would skip the destructors of the C++ values being built.
 // Nothing here raises, so read_value may be called while C++ objects are alive.
-std::optional<Value> read_vec3(lua_State* L, int index, std::string* why) {
-  if (!lua_checkstack(L, 4)) return too_deep(why);
+char vec3_keys_key;  // registry slot of {"x", "y", "z"} (prepare_lua_values)
+
+// xyz[k] = the number at key kNames[k] of the table at `index`, read raw; *named when any of
+// the three keys is there. With the key strings kept in the registry: three raw lookups, no
+// allocation. Without (a state prepare_lua_values never saw): a walk over every entry.
+void read_named_components(lua_State* L, int index, std::optional<double> xyz[3], bool* named) {
   static const char* kNames[3] = {"x", "y", "z"};
-  std::optional<double> xyz[3];
-  bool named = false;
+  if (lua_rawgetp(L, LUA_REGISTRYINDEX, &vec3_keys_key) == LUA_TTABLE) {
+    int keys = lua_gettop(L);
+    for (int k = 0; k < 3; ++k) {
+      lua_rawgeti(L, keys, k + 1);
+      if (lua_rawget(L, index) != LUA_TNIL) *named = true;  // a present key has a value
+      xyz[k] = read_number(L, -1);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return;
+  }
+  lua_pop(L, 1);
   lua_pushnil(L);
   while (lua_next(L, index) != 0) {
     std::string_view key = entry_key(L);
     for (int k = 0; k < 3; ++k) {
       if (key != kNames[k]) continue;
-      named = true;
+      *named = true;
       xyz[k] = read_number(L, -1);
     }
     lua_pop(L, 1);
   }
+}
+
+std::optional<Value> read_vec3(lua_State* L, int index, std::string* why) {
+  if (!lua_checkstack(L, 4)) return too_deep(why);
+  static const char* kNames[3] = {"x", "y", "z"};
+  std::optional<double> xyz[3];
+  bool named = false;
+  read_named_components(L, index, xyz, &named);
   for (int k = 0; k < 3 && !named; ++k) {
     lua_rawgeti(L, index, k + 1);
     xyz[k] = read_number(L, -1);
@@ -99,6 +121,16 @@ std::optional<Value> read_record(lua_State* L, int index, const Type& t, std::st
 }
 
 }  // namespace
+
+void prepare_lua_values(lua_State* L) {
+  lua_createtable(L, 3, 0);
+  const char* names[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    lua_pushstring(L, names[k]);
+    lua_rawseti(L, -2, k + 1);
+  }
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &vec3_keys_key);
+}
 
 void push_value(lua_State* L, const Value& v) {
   luaL_checkstack(L, 4, "message too deeply nested");

@@ -19,6 +19,11 @@ struct lua_State;
 
 namespace arbc {
 
+// Keeps in L's registry what makes read_value cheaper (the strings "x", "y", "z", so that a
+// vec3 is read with three raw lookups instead of a walk over the table); read_value gives the
+// same results without it. May raise a Lua error (memory): call it inside a protected call.
+void prepare_lua_values(lua_State* L);
+
 // Pushes v onto L's stack. May raise a Lua error (memory): call it inside a protected call.
 void push_value(lua_State* L, const Value& v);
 

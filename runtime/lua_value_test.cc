@@ -83,6 +83,52 @@ int read_protected(lua_State* L, const char* chunk, const Type& t, ReadCall* cal
   return rc;
 }
 
+// A vec3 is read by raw lookups of registry-held keys once prepare_lua_values ran, by a walk
+// over the table before: both give the same value or the same error, whatever the table holds.
+TEST(LuaValueTest, Vec3ReadsAgreeWithAndWithoutPreparedKeys) {
+  const char* tables[] = {
+      "{x = 1, y = 2, z = 3}",
+      "{4, 5, 6}",
+      "{x = 1, 2, 3}",  // named wins: y and z are missing
+      "{1, 2, 3, y = 7}",
+      "{x = 1, y = 'a', z = 3}",
+      "{x = 1, y = 2, z = 3, w = 4, 9}",
+      "{}",
+      "{1, 2}",
+      "{[1.0] = 1, [2] = 2, [3] = 3}",
+      "{x = 1.5, y = math.huge, z = -0.0}",
+      "setmetatable({}, {__index = function() error('no metamethods') end})",
+      "setmetatable({1, 2, 3}, {__index = function() error('no metamethods') end})",
+  };
+  State plain, prepared;
+  prepare_lua_values(prepared.L);
+  TypePtr vec3 = parse_type("vec3");
+  for (const char* table : tables) {
+    std::string text = std::string("return ") + table;
+    ASSERT_EQ(luaL_dostring(plain.L, text.c_str()), LUA_OK) << table;
+    ASSERT_EQ(luaL_dostring(prepared.L, text.c_str()), LUA_OK) << table;
+    std::string why_plain, why_prepared;
+    auto a = read_value(plain.L, -1, *vec3, &why_plain);
+    auto b = read_value(prepared.L, -1, *vec3, &why_prepared);
+    ASSERT_EQ(a.has_value(), b.has_value()) << table;
+    if (a) EXPECT_EQ(*a, *b) << table;
+    EXPECT_EQ(why_plain, why_prepared) << table;
+    lua_settop(plain.L, 0);
+    lua_settop(prepared.L, 0);
+  }
+  // Spot checks of what both say.
+  ASSERT_EQ(luaL_dostring(prepared.L, "return {x = 1, 2, 3}"), LUA_OK);
+  std::string why;
+  EXPECT_FALSE(read_value(prepared.L, -1, *vec3, &why));
+  EXPECT_EQ(why, "expected vec3 ({x=, y=, z=} or {x, y, z}), component y is not a number");
+  ASSERT_EQ(luaL_dostring(prepared.L, "return {1, 2, 3, y = 7}"), LUA_OK);
+  EXPECT_FALSE(read_value(prepared.L, -1, *vec3, &why));
+  ASSERT_EQ(luaL_dostring(prepared.L, "return {x = 1, y = 2, z = 3, w = 4, 9}"), LUA_OK);
+  auto v = read_value(prepared.L, -1, *vec3, &why);
+  ASSERT_TRUE(v) << why;
+  EXPECT_EQ(v->as_vec3(), Eigen::Vector3d(1, 2, 3));
+}
+
 TEST(LuaValueTest, ReadsTablesRawWithoutRunningMetamethods) {
   State s;
   TypePtr cmd = parse_type("{verb: string, pos: vec3, tags: list<string>}");
