@@ -64,21 +64,6 @@ int open_libraries(lua_State* L) {
 
 }  // namespace
 
-void* LuaSandbox::allocate(void* ud, void* ptr, size_t old_size, size_t new_size) {
-  auto* memory = static_cast<Memory*>(ud);
-  size_t old = ptr ? old_size : 0;
-  if (new_size == 0) {
-    memory->used -= old;
-    std::free(ptr);
-    return nullptr;
-  }
-  if (new_size > old && memory->used - old + new_size > memory->cap) return nullptr;
-  void* p = std::realloc(ptr, new_size);
-  if (!p) return nullptr;
-  memory->used = memory->used - old + new_size;
-  return p;
-}
-
 void LuaSandbox::budget_hook(lua_State* L, lua_Debug*) {
   LuaSandbox* self = sandbox_of(L);
   int every = lua_gethookcount(L);
@@ -182,9 +167,8 @@ int LuaSandbox::print(lua_State* L) {
 
 std::unique_ptr<LuaSandbox> LuaSandbox::create(const SandboxLimits& limits) {
   std::unique_ptr<LuaSandbox> box(new LuaSandbox(limits));
-  box->memory_.cap = limits.memory_bytes;
   box->hook_every_ = static_cast<int>(std::clamp<long long>(limits.instructions, 1, kHookEvery));
-  box->L_ = lua_newstate(&LuaSandbox::allocate, &box->memory_);
+  box->L_ = lua_newstate(&LuaAllocator::allocate, &box->memory_);
   if (!box->L_) return nullptr;
   *static_cast<LuaSandbox**>(lua_getextraspace(box->L_)) = box.get();
   lua_atpanic(box->L_, [](lua_State* L) -> int {

@@ -19,6 +19,8 @@
 #include <memory>
 #include <string>
 
+#include "runtime/lua_allocator.h"
+
 struct lua_State;
 struct lua_Debug;
 
@@ -55,7 +57,7 @@ class LuaSandbox {
   LuaSandbox& operator=(const LuaSandbox&) = delete;
 
   lua_State* state() const { return L_; }
-  size_t memory_used() const { return memory_.used; }
+  size_t memory_used() const { return memory_.used(); }
   const SandboxLimits& limits() const { return limits_; }
   // Where print() output goes (default: stderr).
   void set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
@@ -82,11 +84,6 @@ class LuaSandbox {
   static int stop(lua_State* L);
 
  private:
-  struct Memory {
-    size_t used = 0;
-    size_t cap = 0;
-  };
-  static void* allocate(void* ud, void* ptr, size_t old_size, size_t new_size);
   // The limits of the callback now running, reset by arm().
   struct CallLimits {
     long long instructions_left = 0;
@@ -104,9 +101,10 @@ class LuaSandbox {
   bool exhaust(lua_State* L, std::string why);
   LuaCall finish_call(int rc);
 
-  explicit LuaSandbox(const SandboxLimits& limits) : limits_(limits) {}
+  explicit LuaSandbox(const SandboxLimits& limits)
+      : limits_(limits), memory_(limits.memory_bytes) {}
   SandboxLimits limits_;
-  Memory memory_;
+  LuaAllocator memory_;
   lua_State* L_ = nullptr;
   int hook_every_ = kHookEvery;
   CallLimits call_;
