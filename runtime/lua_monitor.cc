@@ -8,7 +8,6 @@ namespace arbc {
 
 namespace {
 
-char staged_message_key;  // registry slot of the message between accept and update
 
 MonitorHost* host_of(lua_State* L) {
   return static_cast<MonitorHost*>(lua_touserdata(L, lua_upvalueindex(1)));
@@ -96,8 +95,15 @@ int api_novalue(lua_State* L) {
   return lua_error(L);
 }
 
+// What install() needs and returns.
+struct Install {
+  MonitorHost* host = nullptr;
+  int staged_ref = LUA_NOREF;  // out: the registry slot of the message between accept and update
+};
+
 int install(lua_State* L) {
-  void* host = lua_touserdata(L, 1);
+  auto* in = static_cast<Install*>(lua_touserdata(L, 1));
+  void* host = in->host;
   static const luaL_Reg api[] = {
       {"setEvent", api_set_event},
       {"unsetEvent", api_unset_event},
@@ -114,6 +120,12 @@ int install(lua_State* L) {
   luaL_setfuncs(L, api, 1);
   lua_setglobal(L, "PortMonitor");
   prepare_lua_values(L);
+  // An integer slot of the registry: a store and a load on the message path cost an array
+  // access, where a light-userdata key cost a hash lookup each.
+  lua_pushboolean(L, false);
+  in->staged_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  lua_pushnil(L);  // nothing staged yet, as before the first accept
+  lua_rawseti(L, LUA_REGISTRYINDEX, in->staged_ref);
   return 0;
 }
 
@@ -144,6 +156,7 @@ struct LuaMonitor::Call {
   std::string reason;
   Value output;
   std::string type_error;
+  int staged_ref = LUA_NOREF;
 };
 
 std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const std::string& file,
@@ -159,11 +172,13 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   m->file_ = file;
   // The sandbox's print, into the host's log.
   m->sandbox_->set_print([host](const std::string& line) { host->print(line); });
-  LuaCall installed = m->sandbox_->protected_call(install, host);
+  Install in{host};
+  LuaCall installed = m->sandbox_->protected_call(install, &in);
   if (!installed.ok()) {
     *error = file + ": " + installed.error;
     return nullptr;
   }
+  m->staged_ref_ = in.staged_ref;
   m->script_spans_ = script_spans(script);
   LuaCall ran = m->cited(m->sandbox_->run_chunk(script, file));
   if (!ran.ok()) {
@@ -219,7 +234,7 @@ int LuaMonitor::run_accept(lua_State* L) {
   auto* call = static_cast<Call*>(lua_touserdata(L, 1));
   push_value(L, *call->message);
   lua_pushvalue(L, -1);
-  lua_rawsetp(L, LUA_REGISTRYINDEX, &staged_message_key);
+  lua_rawseti(L, LUA_REGISTRYINDEX, call->staged_ref);
   if (!push_callback(L, "accept")) return 0;
   lua_pushvalue(L, -2);
   lua_call(L, 1, 2);
@@ -236,7 +251,7 @@ int LuaMonitor::run_accept(lua_State* L) {
 int LuaMonitor::run_update(lua_State* L) {
   auto* call = static_cast<Call*>(lua_touserdata(L, 1));
   bool has_update = push_callback(L, "update");
-  lua_rawgetp(L, LUA_REGISTRYINDEX, &staged_message_key);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, call->staged_ref);
   if (has_update) lua_call(L, 1, 1);
   std::string why;
   auto value = read_value(L, -1, *call->destination, &why);
@@ -277,6 +292,7 @@ LuaCall LuaMonitor::create(const MonitorOptions& options, bool* created) {
 LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason) {
   Call call;
   call.message = &msg;
+  call.staged_ref = staged_ref_;
   LuaCall r = cited(sandbox_->protected_call(run_accept, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   *accepted = r.ok() && call.result;
@@ -287,6 +303,7 @@ LuaCall LuaMonitor::accept(const Value& msg, bool* accepted, std::string* reason
 LuaCall LuaMonitor::update(const Type& destination, Value* out) {
   Call call;
   call.destination = &destination;
+  call.staged_ref = staged_ref_;
   LuaCall r = cited(sandbox_->protected_call(run_update, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   if (r.ok()) *out = std::move(call.output);

@@ -85,6 +85,7 @@ class LuaMonitor {
   MonitorHost* host_ = nullptr;
   std::string file_;
   std::vector<ScriptSpan> script_spans_;
+  int staged_ref_ = 0;  // registry index of the message staged by accept for update
 };
 
 }  // namespace arbc
