@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <random>
+#include <string>
+
 namespace arbc {
 namespace {
 
@@ -30,6 +34,68 @@ TEST(EventContainerTest, OwnersAreIndependent) {
   EXPECT_TRUE(box.has(e, 4.0));
   box.set(e, 1, 4.5);  // a refresh may shorten the lifetime
   EXPECT_FALSE(box.has(e, 4.6));
+}
+
+}  // namespace
+}  // namespace arbc
+
+namespace arbc {
+namespace {
+
+// The presence mask a decision reads agrees with the entries' own expiries, checked the slow
+// way, under random sets (with lifetimes or until unset), refreshes, unsets and time steps, for
+// events on both sides of the mask's inline first word (ids 0..99).
+TEST(EventContainerTest, PresenceMaskAgreesWithPerEntryExpiry) {
+  EventContainer box;
+  for (int i = 0; i < 100; ++i) box.index().intern("e" + std::to_string(i));
+  std::map<std::pair<int, int>, double> entries;  // (event, owner) -> expiry
+  int lapsed = 0, expected_lapsed = 0;
+  box.on_expiry([&](int, int, double) { ++lapsed; });
+  std::mt19937 random(3);
+  double t = 0;
+  for (int step = 0; step < 20000; ++step) {
+    int event = static_cast<int>(random() % 100), owner = static_cast<int>(random() % 3);
+    switch (random() % 4) {
+      case 0:
+      case 1: {
+        double expiry = random() % 5 == 0 ? kNever : t + 0.001 * static_cast<double>(random() % 50);
+        box.set(event, owner, expiry);
+        entries[{event, owner}] = expiry;
+        break;
+      }
+      case 2:
+        box.present(t);  // the runtime lapses first (unset_event), so the model may drop too
+        for (auto it = entries.begin(); it != entries.end();) {
+          if (t >= it->second) {
+            it = entries.erase(it);
+            ++expected_lapsed;
+          } else {
+            ++it;
+          }
+        }
+        EXPECT_EQ(box.unset(event, owner), entries.erase({event, owner}) == 1);
+        break;
+      case 3: t += 0.001 * static_cast<double>(random() % 10); break;
+    }
+    const EventMask& mask = box.present(t);
+    for (auto it = entries.begin(); it != entries.end();) {
+      if (t >= it->second) {
+        it = entries.erase(it);
+        ++expected_lapsed;
+      } else {
+        ++it;
+      }
+    }
+    for (int e = 0; e < 100; ++e) {
+      bool present = false;
+      for (int o = 0; o < 3; ++o) {
+        auto it = entries.find({e, o});
+        present |= it != entries.end() && t < it->second;
+      }
+      ASSERT_EQ(mask.test(e), present) << "step " << step << " event " << e << " t " << t;
+    }
+    ASSERT_EQ(lapsed, expected_lapsed) << "step " << step;
+  }
 }
 
 }  // namespace
