@@ -32,6 +32,9 @@ import time
 
 from dds_domain import Domain, environment
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from proc_signals import wait_until_caught  # noqa: E402
+
 SCALE = os.environ.get("ARBC_SPLIT_SCALE", "10")
 
 
@@ -106,22 +109,6 @@ def stop(proc, name, sig=signal.SIGTERM):
 def expect(cond, message, *outputs):
     if not cond:
         fail(message + "".join("\n--- output ---\n" + o for o in outputs))
-
-
-def handling(proc, sig, timeout=60):
-    """Waits until proc handles sig (its run has started: before, while it loads the app and
-    waits for peers, a signal ends the process as usual, and a slow start under a sanitizer or
-    on a loaded machine must not look like that). Linux: the SigCgt mask of /proc/PID/status."""
-    deadline = time.monotonic() + timeout
-    while proc.poll() is None and time.monotonic() < deadline:
-        try:
-            with open(f"/proc/{proc.pid}/status") as f:
-                mask = next(int(l.split()[1], 16) for l in f if l.startswith("SigCgt:"))
-            if mask >> (int(sig) - 1) & 1:
-                return
-        except (OSError, StopIteration):
-            pass
-        time.sleep(0.02)
 
 
 def alive(proc, message):
@@ -201,8 +188,8 @@ def signals(split):
         what = f"W {wsig.name}, M {msig.name}"
         m = split.start("M", [])
         w = split.start("W", ["--scenario", "mixed", "--seed", "1"])
-        handling(w, wsig)
-        handling(m, msig)
+        wait_until_caught(w, wsig)
+        wait_until_caught(m, msig)
         time.sleep(2.0)  # mid-run
         alive(w, f"{what}: W ended early")
         wrc, wout = stop(w, "W", wsig)
