@@ -75,7 +75,9 @@ TEST(EventContainerTest, PresenceMaskAgreesWithPerEntryExpiry) {
         }
         EXPECT_EQ(box.unset(event, owner), entries.erase({event, owner}) == 1);
         break;
-      case 3: t += 0.001 * static_cast<double>(random() % 10); break;
+      case 3:
+        t += 0.001 * static_cast<double>(random() % 10);
+        break;
     }
     const EventMask& mask = box.present(t);
     for (auto it = entries.begin(); it != entries.end();) {

@@ -54,9 +54,9 @@ void TaskQueue::cancel(TaskId id) {
   // Cancelled entries deep in the heap wait until they surface; when they outnumber the live
   // ones, sweep them so that a task re-posted and cancelled over and over keeps memory flat.
   if (dead_ > 16 && dead_ * 2 > heap_.size()) {
-    heap_.erase(std::remove_if(heap_.begin(), heap_.end(),
-                               [this](const Entry& e) { return stale(e); }),
-                heap_.end());
+    heap_.erase(
+        std::remove_if(heap_.begin(), heap_.end(), [this](const Entry& e) { return stale(e); }),
+        heap_.end());
     std::make_heap(heap_.begin(), heap_.end(), later);
     dead_ = 0;
   }

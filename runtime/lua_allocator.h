@@ -25,9 +25,9 @@ class LuaAllocator {
   size_t used() const { return used_; }  // bytes Lua holds
 
  private:
-  static constexpr size_t kGrain = 16;    // size classes: 16, 32, ... bytes
-  static constexpr size_t kClasses = 8;   // up to 128 bytes (tables, nodes, short strings)
-  static constexpr size_t kKeep = 64;     // kept blocks per class
+  static constexpr size_t kGrain = 16;   // size classes: 16, 32, ... bytes
+  static constexpr size_t kClasses = 8;  // up to 128 bytes (tables, nodes, short strings)
+  static constexpr size_t kKeep = 64;    // kept blocks per class
   static bool small(size_t n) { return n <= kGrain * kClasses; }
   static size_t class_of(size_t n) { return (n - 1) / kGrain; }
   void* obtain(size_t n);           // a block of at least n bytes

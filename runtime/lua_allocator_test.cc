@@ -92,8 +92,7 @@ TEST(LuaAllocatorTest, RunsALuaStateWithAFlatCount) {
     lua_gc(L, LUA_GCCOLLECT);
     EXPECT_LE(a.used(), before + 1024) << "round " << round;
   }
-  EXPECT_EQ(static_cast<size_t>(lua_gc(L, LUA_GCCOUNT)) * 1024 + lua_gc(L, LUA_GCCOUNTB),
-            a.used());
+  EXPECT_EQ(static_cast<size_t>(lua_gc(L, LUA_GCCOUNT)) * 1024 + lua_gc(L, LUA_GCCOUNTB), a.used());
   lua_close(L);
 }
 

@@ -8,7 +8,6 @@ namespace arbc {
 
 namespace {
 
-
 MonitorHost* host_of(lua_State* L) {
   return static_cast<MonitorHost*>(lua_touserdata(L, lua_upvalueindex(1)));
 }
