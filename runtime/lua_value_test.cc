@@ -111,7 +111,9 @@ TEST(LuaValueTest, Vec3ReadsAgreeWithAndWithoutPreparedKeys) {
     auto a = read_value(plain.L, -1, *vec3, &why_plain);
     auto b = read_value(prepared.L, -1, *vec3, &why_prepared);
     ASSERT_EQ(a.has_value(), b.has_value()) << table;
-    if (a) EXPECT_EQ(*a, *b) << table;
+    if (a) {
+      EXPECT_EQ(*a, *b) << table;
+    }
     EXPECT_EQ(why_plain, why_prepared) << table;
     lua_settop(plain.L, 0);
     lua_settop(prepared.L, 0);
