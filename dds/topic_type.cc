@@ -30,8 +30,7 @@ bool WireTopicType::deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* p
                                 void* data) {
   auto* sample = static_cast<WireSample*>(data);
   try {
-    // Fast-DDS appends a sequence's elements to those a reused sample holds: start empty.
-    sample->data->clear_all_values();
+    if (wire_->has_sequence) sample->data->clear_all_values();  // WireType says why
     sample->bad = !codec_.deserialize(payload, sample->data);
   } catch (...) {
     sample->bad = true;

@@ -70,6 +70,14 @@ bool is_scalar(Type::Kind k) {
          k == Type::Kind::String;
 }
 
+// Whether a list occurs anywhere in t (WireType::has_sequence says why it matters).
+bool contains_list(const Type& t) {
+  if (t.kind == Type::Kind::List) return true;
+  for (const auto& f : t.fields)
+    if (contains_list(*f.type)) return true;
+  return false;
+}
+
 }  // namespace
 
 WireNaming::WireNaming(const model::App& app, const Deployment& deployment)
@@ -140,6 +148,7 @@ std::shared_ptr<const WireType> WireNaming::port_type(const std::string& module,
                                                       std::string* error) {
   auto wire = std::make_shared<WireType>();
   wire->type = type;
+  wire->has_sequence = contains_list(*type);
   std::string anonymous = module + "_" + port;
   if (type->kind == Type::Kind::Record || type->kind == Type::Kind::Vec3) {
     wire->dynamic = build(*type, anonymous, error);
@@ -151,8 +160,8 @@ std::shared_ptr<const WireType> WireNaming::port_type(const std::string& module,
     std::string local = spec_name(*type);
     ft::DynamicType_ptr data = build(*type, (local.empty() ? anonymous : local) + "_data", error);
     if (!data) return nullptr;
-    wire->dynamic = build_struct(wire->name, "{data: " + type->to_string() + "}", {{"data", data}},
-                                 error);
+    wire->dynamic =
+        build_struct(wire->name, "{data: " + type->to_string() + "}", {{"data", data}}, error);
     if (!wire->dynamic) return nullptr;
   }
   wire->signature = structs_.at(wire->name).signature;
@@ -197,9 +206,8 @@ ft::DynamicType_ptr WireNaming::build_struct(
   auto it = structs_.find(name);
   if (it != structs_.end()) {
     if (it->second.signature == signature) return it->second.type;
-    *error = "two different types would both be " + name + " on the wire (" +
-             it->second.signature + ", and " + signature +
-             "); give them different names in the deployment's \"types\"";
+    *error = "two different types would both be " + name + " on the wire (" + it->second.signature +
+             ", and " + signature + "); give them different names in the deployment's \"types\"";
     return {};
   }
   ft::DynamicTypeBuilderFactory* f = ft::DynamicTypeBuilderFactory::get_instance();

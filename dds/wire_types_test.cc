@@ -117,7 +117,7 @@ TEST(WireTypesTest, StructuresFollowTheMapping) {
   w->dynamic->get_all_members(members);
   ASSERT_EQ(members.size(), 6u);
   const char* names[] = {"z", "a", "m", "s", "v", "l"};
-  ft::TypeKind kinds[] = {ft::TK_BOOLEAN, ft::TK_INT64,  ft::TK_FLOAT64,
+  ft::TypeKind kinds[] = {ft::TK_BOOLEAN, ft::TK_INT64,     ft::TK_FLOAT64,
                           ft::TK_STRING8, ft::TK_STRUCTURE, ft::TK_SEQUENCE};
   for (ft::MemberId i = 0; i < 6; ++i) {
     EXPECT_EQ(members.at(i)->get_name(), names[i]);
@@ -180,6 +180,17 @@ TEST(WireValuesTest, ValuesSurviveTheWire) {
     auto wire = port_type(n, c.type, "p" + std::to_string(&c - cases));
     EXPECT_EQ(round_trip(wire, c.value), c.value) << c.type;
   }
+}
+
+// Only a type with a list somewhere needs its reused samples cleared (WireType::has_sequence).
+TEST(WireValuesTest, ATypeHasASequenceWhenAListIsAnywhereInIt) {
+  model::App app = table_app();
+  Deployment d;
+  WireNaming n(app, d);
+  EXPECT_FALSE(port_type(n, "{seq: int, x: float, at: vec3}", "a")->has_sequence);
+  EXPECT_FALSE(port_type(n, "string", "b")->has_sequence);
+  EXPECT_TRUE(port_type(n, "list<int>", "c")->has_sequence);
+  EXPECT_TRUE(port_type(n, "{seq: int, inner: {names: list<string>}}", "d")->has_sequence);
 }
 
 // A sample that does not decode is marked bad, never a crash; a reused sample forgets the

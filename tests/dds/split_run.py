@@ -11,11 +11,16 @@ usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
         kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again;
         kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT;
         signals: W and M each ended mid-run by SIGINT, then by SIGTERM: each exits, prints
-        its counters, writes its trace and report and deletes its DDS entities.
+        its counters, writes its trace and report and deletes its DDS entities;
+        hosts: W and M on two "hosts", network namespaces joined by a veth pair, with DDS on
+        UDP only (hosts_profile.xml: no shared memory, discovery by multicast), a `mixed`
+        run per seed; skipped (exit 77) where namespaces cannot be made (needs root).
   SEEDS how many seeds (1..SEEDS) for a scenario (default 5).
 Every run gets a DDS domain of its own (a lock file under /tmp holds it), and the profile
-keeps DDS traffic on this machine, so parallel ctest runs do not see each other.
+keeps DDS traffic on this machine, so parallel ctest runs do not see each other (in the
+hosts case the namespaces keep it apart).
 """
+import atexit
 import json
 import os
 import re
@@ -26,6 +31,9 @@ import tempfile
 import time
 
 from dds_domain import Domain, environment
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from proc_signals import wait_until_caught  # noqa: E402
 
 SCALE = os.environ.get("ARBC_SPLIT_SCALE", "10")
 
@@ -45,6 +53,7 @@ class Split:
         self.app = os.path.join(self.dir, "table_clean")
         self.domain = Domain()
         self.env = environment(profile)
+        self.prefix = {"W": [], "M": []}  # `ip netns exec NS` in the hosts case
 
     def start(self, role, extra):
         """Starts M or W; its trace and report go to self.files(role)."""
@@ -60,7 +69,7 @@ class Split:
         else:
             words = [self.arbc, "run", self.app, "--plugin", self.plugin, "--host", "all",
                      "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
-        return subprocess.Popen(words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+        return subprocess.Popen(self.prefix[role] + words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 text=True, env=self.env)
 
     def files(self, role):
@@ -100,22 +109,6 @@ def stop(proc, name, sig=signal.SIGTERM):
 def expect(cond, message, *outputs):
     if not cond:
         fail(message + "".join("\n--- output ---\n" + o for o in outputs))
-
-
-def handling(proc, sig, timeout=60):
-    """Waits until proc handles sig (its run has started: before, while it loads the app and
-    waits for peers, a signal ends the process as usual, and a slow start under a sanitizer or
-    on a loaded machine must not look like that). Linux: the SigCgt mask of /proc/PID/status."""
-    deadline = time.monotonic() + timeout
-    while proc.poll() is None and time.monotonic() < deadline:
-        try:
-            with open(f"/proc/{proc.pid}/status") as f:
-                mask = next(int(l.split()[1], 16) for l in f if l.startswith("SigCgt:"))
-            if mask >> (int(sig) - 1) & 1:
-                return
-        except (OSError, StopIteration):
-            pass
-        time.sleep(0.02)
 
 
 def alive(proc, message):
@@ -195,8 +188,8 @@ def signals(split):
         what = f"W {wsig.name}, M {msig.name}"
         m = split.start("M", [])
         w = split.start("W", ["--scenario", "mixed", "--seed", "1"])
-        handling(w, wsig)
-        handling(m, msig)
+        wait_until_caught(w, wsig)
+        wait_until_caught(m, msig)
         time.sleep(2.0)  # mid-run
         alive(w, f"{what}: W ended early")
         wrc, wout = stop(w, "W", wsig)
@@ -214,6 +207,58 @@ def signals(split):
         print(f"ok {what}: both ended cleanly")
 
 
+class Hosts:
+    """Two network namespaces, W's and M's, joined by a veth pair (10.231.0.1 and .2/24), each
+    with a multicast route on its end so that DDS discovers the other side by itself."""
+
+    def __init__(self):
+        tag = str(os.getpid())
+        self.ns = {"W": "arbc-w-" + tag, "M": "arbc-m-" + tag}
+        self.dev = {"W": "aw" + tag, "M": "am" + tag}  # interface names: 15 characters at most
+        made = subprocess.run(["ip", "netns", "add", self.ns["W"]], capture_output=True, text=True)
+        if made.returncode != 0:
+            print("SKIP: cannot create a network namespace (root is needed): " + made.stderr.strip())
+            sys.exit(77)
+        atexit.register(self.remove)
+        self.ip("netns", "add", self.ns["M"])
+        self.ip("link", "add", self.dev["W"], "type", "veth", "peer", "name", self.dev["M"])
+        for role, address in (("W", "10.231.0.1/24"), ("M", "10.231.0.2/24")):
+            ns, dev = self.ns[role], self.dev[role]
+            self.ip("link", "set", dev, "netns", ns)
+            self.ip("-n", ns, "addr", "add", address, "dev", dev)
+            self.ip("-n", ns, "link", "set", "lo", "up")
+            self.ip("-n", ns, "link", "set", dev, "up")
+            self.ip("-n", ns, "route", "add", "224.0.0.0/4", "dev", dev)
+
+    def ip(self, *words):
+        done = subprocess.run(["ip"] + list(words), capture_output=True, text=True)
+        expect(done.returncode == 0, "ip " + " ".join(words) + ": " + done.stderr.strip())
+
+    def remove(self):
+        for ns in self.ns.values():  # the veth pair goes with its namespaces
+            subprocess.run(["ip", "netns", "del", ns], capture_output=True)
+
+    def packets(self, role):
+        """(received, sent) packets on role's end of the veth pair."""
+        shown = subprocess.run(["ip", "-n", self.ns[role], "-j", "-s", "link", "show", self.dev[role]],
+                               capture_output=True, text=True)
+        stats = json.loads(shown.stdout)[0]["stats64"]
+        return stats["rx"]["packets"], stats["tx"]["packets"]
+
+
+def hosts(split, hosts_profile, seeds):
+    """`mixed` with W and M on two hosts: nothing but the veth pair carries their DDS traffic
+    (no shared memory in the profile, and neither sees the other's loopback)."""
+    net = Hosts()
+    split.env = environment(hosts_profile)
+    split.prefix = {role: ["ip", "netns", "exec", ns] for role, ns in net.ns.items()}
+    scenario(split, "mixed", seeds)
+    received, sent = net.packets("W")
+    # A mixed run is hundreds of samples each way, besides discovery.
+    expect(received > 200 and sent > 200, f"hosts: W's veth carried {received} in, {sent} out")
+    print(f"ok hosts: W's end of the veth pair received {received} and sent {sent} packets")
+
+
 def main():
     if len(sys.argv) < 6:
         print(__doc__)
@@ -227,6 +272,8 @@ def main():
         kill_w(split)
     elif case == "signals":
         signals(split)
+    elif case == "hosts":
+        hosts(split, os.path.join(os.path.dirname(os.path.abspath(__file__)), "hosts_profile.xml"), seeds)
     else:
         scenario(split, case, seeds)
 

@@ -19,23 +19,14 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from proc_signals import wait_until_caught  # noqa: E402
+
 LIMIT = 1.0  # seconds from the signal to the end of the process
 
 
 def fail(what, out="", err=""):
     sys.exit(f"FAIL: {what}\n--- stdout\n{out}\n--- stderr\n{err}")
-
-
-def catches(pid, sig):
-    """Has process pid installed a handler for sig? (Linux: the SigCgt mask of /proc/PID/status.)"""
-    try:
-        with open(f"/proc/{pid}/status") as f:
-            for line in f:
-                if line.startswith("SigCgt:"):
-                    return bool(int(line.split()[1], 16) >> (int(sig) - 1) & 1)
-    except OSError:
-        pass
-    return False
 
 
 def interrupt(cmd, sig, after):
@@ -44,9 +35,7 @@ def interrupt(cmd, sig, after):
     usual, and a slow start, under a sanitizer or a loaded machine, must not look like that);
     returns (exit code, seconds to exit, out, err)."""
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    deadline = time.monotonic() + 60
-    while not catches(proc.pid, sig) and proc.poll() is None and time.monotonic() < deadline:
-        time.sleep(0.02)
+    wait_until_caught(proc, sig)
     time.sleep(after)
     if proc.poll() is not None:
         out, err = proc.communicate()
