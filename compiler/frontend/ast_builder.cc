@@ -202,8 +202,10 @@ class Builder {
       e->args.push_back(expr(c->expr(1), depth + 1));
       return e;
     }
-    if (auto* c = as<ArbcParser::NegExprContext>(ctx)) return unary("-", c->expr(), std::move(where), depth);
-    if (auto* c = as<ArbcParser::NotExprContext>(ctx)) return unary("not", c->expr(), std::move(where), depth);
+    if (auto* c = as<ArbcParser::NegExprContext>(ctx))
+      return unary("-", c->expr(), std::move(where), depth);
+    if (auto* c = as<ArbcParser::NotExprContext>(ctx))
+      return unary("not", c->expr(), std::move(where), depth);
     if (auto* c = as<ArbcParser::MulExprContext>(ctx))
       return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::AddExprContext>(ctx))
@@ -224,8 +226,7 @@ class Builder {
     return placeholder(std::move(where));
   }
 
-  ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, Loc where,
-                int depth) {
+  ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, Loc where, int depth) {
     auto e = make(Expr::Kind::Unary, std::move(where));
     e->op = op;
     e->args.push_back(expr(operand, depth + 1));
@@ -268,7 +269,8 @@ class Builder {
       e->boolean = as<ArbcParser::TrueLitContext>(ctx) != nullptr;
       return e;
     }
-    if (as<ArbcParser::OtherwiseLitContext>(ctx)) return make(Expr::Kind::Otherwise, std::move(where));
+    if (as<ArbcParser::OtherwiseLitContext>(ctx))
+      return make(Expr::Kind::Otherwise, std::move(where));
     if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
       auto e = make(Expr::Kind::Call, std::move(where));
       e->text = tx(c->ID());
