@@ -98,7 +98,7 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->capture_default_str();
   cli.add_option("--temporal-bound", a.options.temporal_bound,
                  "messages into a port that properties over time (`never two`) are explored to")
-      ->check(CLI::Range(2, 64))
+      ->check(CLI::Range(2, 1024))
       ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
                  "lists in messages are assumed to have at most this many elements when "

@@ -101,12 +101,15 @@ struct TraceStep {
 
 // The outcome for one property over time, decided by bounded model checking.
 struct TemporalResult {
-  enum class Outcome { HoldsToBound, Violated, Unknown };
+  // Proved: for every run, whatever its length (`proof` says by what argument); the search
+  // also found no violation up to `bound` messages.
+  enum class Outcome { HoldsToBound, Violated, Unknown, Proved };
   model::TemporalProperty property;
   Outcome outcome = Outcome::Unknown;
-  // HoldsToBound: the largest number of messages into the port explored; Violated: the
-  // length of the (shortest) trace.
+  // HoldsToBound and Proved: the largest number of messages into the port explored;
+  // Violated: the length of the (shortest) trace.
   int bound = 0;
+  std::string proof;             // Proved only: why, in spec terms
   std::vector<TraceStep> trace;  // Violated only
   // The trace as a test of the app that `arbc test` runs (verify/temporal/counterexample.h);
   // nullopt when some step has no message to replay it with (`not_replayable` says why).

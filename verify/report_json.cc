@@ -100,7 +100,7 @@ Json port_json(const PortResult& p, bool stats) {
 
 // A property over time: its verdict with the bound, and a violation's timed trace.
 Json temporal_json(const TemporalResult& t) {
-  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown"};
+  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown", "proved"};
   Json j;
   j["kind"] = "spacing";
   j["port"] = t.property.port;
@@ -109,6 +109,7 @@ Json temporal_json(const TemporalResult& t) {
   j["location"] = location_json(t.property.loc);
   j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
   j["bound"] = t.bound;
+  j["proof"] = t.proof.empty() ? Json(nullptr) : Json(t.proof);
   j["replayed"] = t.replayed;
   j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
   j["trace"] = Json::array();

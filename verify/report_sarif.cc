@@ -99,7 +99,9 @@ Json diagnostic_result(const Diagnostic& d) {
 // A violated (or undecided) property over time as a result; nullopt when it holds up to the
 // bound, which is no finding.
 std::optional<Json> temporal_result(const TemporalResult& t) {
-  if (t.outcome == TemporalResult::Outcome::HoldsToBound) return std::nullopt;
+  if (t.outcome == TemporalResult::Outcome::HoldsToBound ||
+      t.outcome == TemporalResult::Outcome::Proved)
+    return std::nullopt;
   bool violated = t.outcome == TemporalResult::Outcome::Violated;
   Json r;
   r["ruleId"] = violated ? kCheckTemporal : kCheckUnknown;

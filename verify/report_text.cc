@@ -122,7 +122,8 @@ std::vector<std::string> strict_failures(const std::vector<InputReport>& inputs)
 
 std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats) {
   std::string out;
-  size_t ports = 0, rules = 0, errors = 0, warnings = 0, properties = 0, violated = 0;
+  size_t ports = 0, rules = 0, errors = 0, warnings = 0, properties = 0;
+  size_t by_outcome[4] = {0, 0, 0, 0};  // TemporalResult::Outcome
   bool refuted = false, unknown = false;
   size_t bad = 0;
   double seconds = 0;
@@ -150,7 +151,7 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
     for (const TemporalResult& t : r.temporal) {
       out += temporal::temporal_text(t);
       properties += 1;
-      violated += t.outcome == TemporalResult::Outcome::Violated;
+      by_outcome[static_cast<int>(t.outcome)] += 1;
     }
     errors += static_cast<size_t>(r.count(Severity::Error));
     warnings += static_cast<size_t>(r.count(Severity::Warning));
@@ -163,7 +164,7 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
          plural(errors, "error") + ", " + plural(warnings, "warning");
   if (properties) {
     out += "; " + std::to_string(properties) + (properties == 1 ? " property" : " properties") +
-           " over time: " + std::to_string(violated) + " violated, the others hold up to the bound";
+           " over time: " + temporal::outcome_counts(by_outcome);
   }
   if (bad) out += "; " + plural(bad, "input") + " not verified (bad input, on stderr)";
   std::vector<std::string> strict = strict_failures(inputs);

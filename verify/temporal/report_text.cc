@@ -48,6 +48,22 @@ std::string indent(const std::string& text, const std::string& by) {
 
 }  // namespace
 
+std::string outcome_counts(const size_t counts[4]) {
+  using O = TemporalResult::Outcome;
+  const std::pair<O, const char*> order[] = {{O::Violated, " violated"},
+                                             {O::Unknown, " unknown"},
+                                             {O::HoldsToBound, " hold up to the bound"},
+                                             {O::Proved, " proved"}};
+  std::string out;
+  for (const auto& [outcome, words] : order) {
+    size_t n = counts[static_cast<int>(outcome)];
+    if (!n) continue;
+    std::string said = n == 1 && outcome == O::HoldsToBound ? " holds up to the bound" : words;
+    out += (out.empty() ? "" : ", ") + std::to_string(n) + said;
+  }
+  return out;
+}
+
 std::string spec_name(const model::TemporalProperty& p) {
   size_t slash = p.loc.file.find_last_of('/');
   return slash == std::string::npos ? p.loc.file : p.loc.file.substr(slash + 1);
@@ -60,6 +76,10 @@ std::string temporal_text(const TemporalResult& r) {
   switch (r.outcome) {
     case TemporalResult::Outcome::HoldsToBound:
       out += "holds up to " + messages + " into " + port + " (bounded; not proved)\n";
+      break;
+    case TemporalResult::Outcome::Proved:
+      out += "proved for runs of any length into " + port + ": " + r.proof +
+             " (no violation up to " + messages + " either)\n";
       break;
     case TemporalResult::Outcome::Unknown:
       out += "unknown (" + r.unknown_reason + ") after " + messages + " into " + port + "\n";

@@ -11,6 +11,10 @@ namespace arbc::verify::temporal {
 // "  never two take within 1s (spec:70): ..." and, when violated, one line per step.
 std::string temporal_text(const TemporalResult& r);
 
+// The summary's count of properties by outcome, zero counts left out: "1 violated, 1 proved",
+// "2 hold up to the bound". `counts` is indexed by TemporalResult::Outcome.
+std::string outcome_counts(const size_t counts[4]);
+
 // The file name of the spec the property is in, as a tests file beside it names it.
 std::string spec_name(const model::TemporalProperty& p);
 

@@ -43,6 +43,11 @@ class Unrolling {
   // Adds to `solver` the constraints of `steps` steps of the port from the empty container.
   Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver);
 
+  // Adds one more step (incremental BMC: the steps so far stay in the solver, and a property
+  // asks about the first steps() of them inside a push/pop).
+  void extend() { add_step(steps()); }
+  int steps() const { return static_cast<int>(t_.size()); }
+
   // Connection `c` delivers at step k.
   z3::expr delivers(int c, int k) const { return del_[k][c]; }
   z3::expr time(int k) const { return t_[k]; }
