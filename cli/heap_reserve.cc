@@ -16,21 +16,27 @@ constexpr size_t kThreshold = 256u << 10;  // smaller specs parse in millisecond
 constexpr size_t kBytesPerSpecByte = 128;  // measured peak heap / spec size, rounded up
 constexpr size_t kMaxReserve = 2048u << 20;
 constexpr size_t kHugePage = 2u << 20;
+// A Z3 4.8 context: two ast_managers (the second for pretty-printing), each with a 8.5 MB
+// table, plus what a small proof allocates; the larger blocks must come from the heap.
+constexpr size_t kSolverReserve = 24u << 20;
+constexpr size_t kSolverMmapThreshold = 16u << 20;
 
 bool reserved = false;
 
 }  // namespace
 
-void reserve_heap_for_spec(size_t spec_bytes) {
-  if (reserved || spec_bytes < kThreshold) return;
+void reserve_heap_for_spec(size_t spec_bytes, bool will_prove) {
+  if (reserved || (spec_bytes < kThreshold && !will_prove)) return;
   reserved = true;
   size_t want = spec_bytes * kBytesPerSpecByte;
   if (want / kBytesPerSpecByte != spec_bytes || want > kMaxReserve) want = kMaxReserve;
+  if (will_prove && want < kSolverReserve) want = kSolverReserve;
   // Keep freed memory in the heap, and serve this one block from the heap (brk), not mmap.
   mallopt(M_TRIM_THRESHOLD, static_cast<int>(kMaxReserve));
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMaxReserve));
   void* block = std::malloc(want);
-  mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // glibc's default for later allocations
+  // Later allocations: glibc's default threshold, or the solver's tables from the heap.
+  mallopt(M_MMAP_THRESHOLD, will_prove ? static_cast<int>(kSolverMmapThreshold) : 128 * 1024);
   if (!block) return;
   uintptr_t start = (reinterpret_cast<uintptr_t>(block) + kHugePage - 1) & ~(kHugePage - 1);
   uintptr_t end = (reinterpret_cast<uintptr_t>(block) + want) & ~(kHugePage - 1);

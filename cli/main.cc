@@ -44,7 +44,10 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   std::span<char*> args(argv + 1, static_cast<size_t>(argc - 1));
-  reserve_heap_for_spec(input_file_bytes(args));
+  // verify and build create a Z3 context (build unless --no-verify: reserving costs nothing
+  // until the pages are touched).
+  bool will_prove = command == "verify" || command == "build";
+  reserve_heap_for_spec(input_file_bytes(args), will_prove);
   try {
     if (command == "check") return check_command(args);
     if (command == "verify") return verify_command(args);

@@ -155,16 +155,18 @@ class Builder {
   }
 
   // ---- expressions --------------------------------------------------------------------------
-  ExprPtr make(Expr::Kind kind, const Loc& where) {
+  // Copies `where` into the node: each copy of a location allocates the file name, and a
+  // 10,000-rule spec has ~200,000 expression nodes (docs/benchmarks.md).
+  ExprPtr make(Expr::Kind kind, Loc where) {
     auto e = std::make_unique<Expr>();
     e->kind = kind;
-    e->loc = where;
+    e->loc = std::move(where);
     return e;
   }
 
   // A stand-in where an expression could not be built (nesting too deep).
-  ExprPtr placeholder(const Loc& where) {
-    auto e = make(Expr::Kind::Bool, where);
+  ExprPtr placeholder(Loc where) {
+    auto e = make(Expr::Kind::Bool, std::move(where));
     return e;
   }
 
@@ -183,55 +185,59 @@ class Builder {
   // expr : expr '.' ID | expr '[' expr ']' | '-' expr | expr op expr | 'not' expr
   //      | ID '=>' expr | primary ;
   ExprPtr expr(ArbcParser::ExprContext* ctx, int depth) {
+    // A primary has the same location as its expression: primary() computes it, once.
+    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx); c && depth <= kMaxNesting)
+      return primary(c->primary(), depth);
     Loc where = loc(ctx);
-    if (too_deep(depth, where)) return placeholder(where);
-    if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx)) return primary(c->primary(), depth);
+    if (too_deep(depth, where)) return placeholder(std::move(where));
     if (auto* c = as<ArbcParser::FieldExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Field, where);
+      auto e = make(Expr::Kind::Field, std::move(where));
       e->text = tx(c->ID());
       e->args.push_back(expr(c->expr(), depth + 1));
       return e;
     }
     if (auto* c = as<ArbcParser::IndexExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Index, where);
+      auto e = make(Expr::Kind::Index, std::move(where));
       e->args.push_back(expr(c->expr(0), depth + 1));
       e->args.push_back(expr(c->expr(1), depth + 1));
       return e;
     }
-    if (auto* c = as<ArbcParser::NegExprContext>(ctx)) return unary("-", c->expr(), where, depth);
-    if (auto* c = as<ArbcParser::NotExprContext>(ctx)) return unary("not", c->expr(), where, depth);
+    if (auto* c = as<ArbcParser::NegExprContext>(ctx))
+      return unary("-", c->expr(), std::move(where), depth);
+    if (auto* c = as<ArbcParser::NotExprContext>(ctx))
+      return unary("not", c->expr(), std::move(where), depth);
     if (auto* c = as<ArbcParser::MulExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::AddExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::CompareExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), where, depth);
+      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::AndExprContext>(ctx))
-      return binary("and", c->expr(0), c->expr(1), where, depth);
+      return binary("and", c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::OrExprContext>(ctx))
-      return binary("or", c->expr(0), c->expr(1), where, depth);
+      return binary("or", c->expr(0), c->expr(1), std::move(where), depth);
     if (auto* c = as<ArbcParser::LambdaExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Lambda, where);
+      auto e = make(Expr::Kind::Lambda, std::move(where));
       e->text = tx(c->ID());
       e->field_locs.push_back(loc(c->ID()));  // the parameter's location
       e->args.push_back(expr(c->expr(), depth + 1));
       return e;
     }
-    return placeholder(where);
+    return placeholder(std::move(where));
   }
 
-  ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, const Loc& where,
-                int depth) {
-    auto e = make(Expr::Kind::Unary, where);
+  ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, Loc where, int depth) {
+    auto e = make(Expr::Kind::Unary, std::move(where));
     e->op = op;
     e->args.push_back(expr(operand, depth + 1));
     return e;
   }
 
   ExprPtr binary(const std::string& op, ArbcParser::ExprContext* left,
-                 ArbcParser::ExprContext* right, const Loc& where, int depth) {
-    auto e = make(Expr::Kind::Binary, where);
+                 ArbcParser::ExprContext* right, Loc where, int depth) {
+    auto e = make(Expr::Kind::Binary, std::move(where));
     e->op = op;
+    e->args.reserve(2);
     e->args.push_back(expr(left, depth + 1));
     e->args.push_back(expr(right, depth + 1));
     return e;
@@ -242,37 +248,38 @@ class Builder {
   ExprPtr primary(ArbcParser::PrimaryContext* ctx, int depth) {
     Loc where = loc(ctx);
     if (auto* c = as<ArbcParser::NumberLitContext>(ctx)) {
-      auto e = make(Expr::Kind::Number, where);
+      auto e = make(Expr::Kind::Number, std::move(where));
       std::string text = tx(c->NUMBER());
       e->number = std::strtod(text.c_str(), nullptr);
       e->is_int = text.find_first_of(".eE") == std::string::npos;
       return e;
     }
     if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
-      auto e = make(Expr::Kind::Duration, where);
+      auto e = make(Expr::Kind::Duration, std::move(where));
       e->number = seconds_of_duration(tx(c->DURATION()));
       return e;
     }
     if (auto* c = as<ArbcParser::StringLitContext>(ctx)) {
-      auto e = make(Expr::Kind::String, where);
+      auto e = make(Expr::Kind::String, std::move(where));
       e->text = decode_string(c->STRING());
       return e;
     }
     if (as<ArbcParser::TrueLitContext>(ctx) || as<ArbcParser::FalseLitContext>(ctx)) {
-      auto e = make(Expr::Kind::Bool, where);
+      auto e = make(Expr::Kind::Bool, std::move(where));
       e->boolean = as<ArbcParser::TrueLitContext>(ctx) != nullptr;
       return e;
     }
-    if (as<ArbcParser::OtherwiseLitContext>(ctx)) return make(Expr::Kind::Otherwise, where);
+    if (as<ArbcParser::OtherwiseLitContext>(ctx))
+      return make(Expr::Kind::Otherwise, std::move(where));
     if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Call, where);
+      auto e = make(Expr::Kind::Call, std::move(where));
       e->text = tx(c->ID());
       e->field_locs.push_back(loc(c->ID()));  // the callee's location
       for (ArbcParser::ExprContext* arg : c->expr()) e->args.push_back(expr(arg, depth + 1));
       return e;
     }
     if (auto* c = as<ArbcParser::NameExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Name, where);
+      auto e = make(Expr::Kind::Name, std::move(where));
       e->text = tx(c->ID());
       return e;
     }
@@ -281,7 +288,7 @@ class Builder {
       return inner;
     }
     if (auto* c = as<ArbcParser::RecordLitContext>(ctx)) {
-      auto e = make(Expr::Kind::Record, where);
+      auto e = make(Expr::Kind::Record, std::move(where));
       for (ArbcParser::FieldInitContext* field : c->fieldInit()) {
         e->field_names.push_back(tx(field->ID()));
         e->field_locs.push_back(loc(field->ID()));
@@ -290,11 +297,11 @@ class Builder {
       return e;
     }
     if (auto* c = as<ArbcParser::ListLitContext>(ctx)) {
-      auto e = make(Expr::Kind::List, where);
+      auto e = make(Expr::Kind::List, std::move(where));
       for (ArbcParser::ExprContext* item : c->expr()) e->args.push_back(expr(item, depth + 1));
       return e;
     }
-    return placeholder(where);
+    return placeholder(std::move(where));
   }
 
   // duration : DURATION | NUMBER | ID ;
@@ -600,7 +607,9 @@ class Builder {
     a.port = port_ref(c->portRef());
     a.by_priority = c->byPriority != nullptr;
     a.complete = c->isComplete != nullptr;
-    for (ArbcParser::RuleDeclContext* r : c->ruleDecl()) a.rules.push_back(rule(r));
+    std::vector<ArbcParser::RuleDeclContext*> rules = c->ruleDecl();
+    a.rules.reserve(rules.size());  // a Rule is ~400 bytes: growing by doubling touches twice that
+    for (ArbcParser::RuleDeclContext* r : rules) a.rules.push_back(rule(r));
     return a;
   }
 

@@ -86,6 +86,17 @@ class Utf8InputStream : public antlr4::ANTLRInputStream {
   }
 };
 
+// A token stream whose buffer is reserved for `expected` tokens up front. Growing it by doubling
+// touches fresh memory at every step, and fresh memory costs a page fault (docs/benchmarks.md);
+// a reservation only touches what the lexer fills.
+class ReservedTokenStream : public antlr4::CommonTokenStream {
+ public:
+  ReservedTokenStream(antlr4::TokenSource* source, size_t expected)
+      : antlr4::CommonTokenStream(source) {
+    _tokens.reserve(expected);
+  }
+};
+
 Diagnostic file_error(const std::string& file, int line, int column, std::string message,
                       std::string id) {
   Diagnostic d;
@@ -117,9 +128,11 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   Utf8InputStream input(text);
   ArbcLexer lexer(&input);
   lexer.removeErrorListeners();  // ERROR_CHAR catches everything the lexer cannot match
-  antlr4::CommonTokenStream stream(&lexer);
+  // At most one token per byte, plus EOF; specs average one per four to five bytes.
+  ReservedTokenStream stream(&lexer, text.size() / 2 + 16);
   stream.fill();
   std::vector<antlr4::Token*> tokens;
+  tokens.reserve(stream.size());
   for (antlr4::Token* t : stream.getTokens())
     if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) tokens.push_back(t);
 
