@@ -77,12 +77,11 @@ int docs_command(std::span<char*> args) {
   size_t elements = docs::diagram_elements(*app);
   if (elements > docs::kMaxDiagramElements) {
     // Graphviz would run for minutes and nobody could read the result: tables only.
-    std::string why =
-        "The diagram is skipped for size: " + std::to_string(app->modules.size()) +
-        " modules, " + std::to_string(app->arbitrated_ports.size()) +
-        " arbitrated ports and " + std::to_string(app->connections.size()) +
-        " connections (" + std::to_string(elements) + " elements, more than " +
-        std::to_string(docs::kMaxDiagramElements) + ").";
+    std::string why = "The diagram is skipped for size: " + std::to_string(app->modules.size()) +
+                      " modules, " + std::to_string(app->arbitrated_ports.size()) +
+                      " arbitrated ports and " + std::to_string(app->connections.size()) +
+                      " connections (" + std::to_string(elements) + " elements, more than " +
+                      std::to_string(docs::kMaxDiagramElements) + ").";
     doc.diagram_svg.clear();
     doc.diagram_note = why + " The tables below describe the whole application.";
     // Drawings from an earlier, smaller run would contradict index.md.

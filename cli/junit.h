@@ -1,5 +1,5 @@
-// JUnit XML of an `arbc test` run, for CI (docs/testing.md#in-ci-and-pre-commit): one <testsuite> per spec,
-// one <testcase> per test, a <failure> with the expectation and what happened.
+// JUnit XML of an `arbc test` run, for CI (docs/testing.md#in-ci-and-pre-commit): one <testsuite>
+// per spec, one <testcase> per test, a <failure> with the expectation and what happened.
 #pragma once
 
 #include <string>

@@ -22,7 +22,7 @@ Diagnostic file_error(const std::string& file, std::string message, std::string 
 
 // What loading says besides the model.
 struct LoadNotes {
-  std::string rendered;          // a spec's rendered diagnostics (errors and warnings), for stderr
+  std::string rendered;  // a spec's rendered diagnostics (errors and warnings), for stderr
   std::vector<Diagnostic> errors;  // when loading fails: why, for the JSON and SARIF reports
 };
 

@@ -1,7 +1,7 @@
 // The verifier's MonitorRunner backed by the runtime's Lua monitors (verify/verify.h): every
 // message counterexample is replayed through the monitor that `arbc run` would load
-// (docs/checks.md#message-data). A built directory's monitors are read from disk (their digests were
-// checked); a spec's are generated in memory, only when a replay is needed.
+// (docs/checks.md#message-data). A built directory's monitors are read from disk (their digests
+// were checked); a spec's are generated in memory, only when a replay is needed.
 #pragma once
 
 #include <map>

@@ -94,8 +94,12 @@ CompiledConstraint CompiledConstraint::compile(const Constraint& c, EventIndex& 
     std::vector<Instr>& program;
     void emit(const Constraint& k) {
       switch (k.op) {
-        case Constraint::Op::True: program.push_back({OpCode::PushTrue, 0}); break;
-        case Constraint::Op::False: program.push_back({OpCode::PushFalse, 0}); break;
+        case Constraint::Op::True:
+          program.push_back({OpCode::PushTrue, 0});
+          break;
+        case Constraint::Op::False:
+          program.push_back({OpCode::PushFalse, 0});
+          break;
         case Constraint::Op::Event:
           program.push_back({OpCode::PushEvent, static_cast<uint32_t>(index.intern(k.event))});
           break;
@@ -134,10 +138,18 @@ bool CompiledConstraint::run_program(const EventMask& present) const {
   size_t top = 0;
   for (const Instr& in : program_) {
     switch (in.op) {
-      case OpCode::PushTrue: stack[top++] = true; break;
-      case OpCode::PushFalse: stack[top++] = false; break;
-      case OpCode::PushEvent: stack[top++] = present.test(static_cast<int>(in.arg)); break;
-      case OpCode::Not: stack[top - 1] = !stack[top - 1]; break;
+      case OpCode::PushTrue:
+        stack[top++] = true;
+        break;
+      case OpCode::PushFalse:
+        stack[top++] = false;
+        break;
+      case OpCode::PushEvent:
+        stack[top++] = present.test(static_cast<int>(in.arg));
+        break;
+      case OpCode::Not:
+        stack[top - 1] = !stack[top - 1];
+        break;
       case OpCode::And:
       case OpCode::Or: {
         bool is_and = in.op == OpCode::And;

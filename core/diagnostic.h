@@ -24,7 +24,7 @@ struct Diagnostic {
   Severity severity = Severity::Error;
   model::SourceLocation loc;
   std::string message;
-  std::string id;               // stable check id, e.g. "unknown-name", "exclusive"
+  std::string id;                 // stable check id, e.g. "unknown-name", "exclusive"
   std::vector<Diagnostic> notes;  // extra lines: "did you mean", "why each side holds"
 };
 

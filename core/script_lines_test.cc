@@ -18,17 +18,17 @@ TEST(ScriptLines, MarkersAreFoundWithTheLinesTheyAnnounce) {
   ASSERT_EQ(spans.size(), 1u);
   EXPECT_EQ(spans[0].file, "my (old) script.lua");
   // A line that only looks like a marker is not one.
-  EXPECT_TRUE(script_spans("-- ---- begin x (y lines; run-time errors in them cite that file)\n")
-                  .empty());
+  EXPECT_TRUE(
+      script_spans("-- ---- begin x (y lines; run-time errors in them cite that file)\n").empty());
 }
 
 TEST(ScriptLines, ErrorsInsideTheScriptCiteTheUsersFile) {
   std::vector<ScriptSpan> spans = {{10, 5, "specs/track.lua"}};
   const char* chunk = "monitors/HeadControl.gaze__track.lua";
-  EXPECT_EQ(cite_script_lines(
-                "monitors/HeadControl.gaze__track.lua:12: attempt to index a nil value", chunk,
-                spans),
-            "specs/track.lua:3: attempt to index a nil value");
+  EXPECT_EQ(
+      cite_script_lines("monitors/HeadControl.gaze__track.lua:12: attempt to index a nil value",
+                        chunk, spans),
+      "specs/track.lua:3: attempt to index a nil value");
   // Lines outside the script keep citing the monitor; every occurrence is rewritten.
   EXPECT_EQ(cite_script_lines("monitors/HeadControl.gaze__track.lua:40: bad argument "
                               "(called from monitors/HeadControl.gaze__track.lua:14:)",

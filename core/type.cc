@@ -27,12 +27,18 @@ TypePtr Type::record(std::vector<Field> fields) {
 
 std::string Type::to_string() const {
   switch (kind) {
-    case Kind::Bool: return "bool";
-    case Kind::Int: return "int";
-    case Kind::Float: return "float";
-    case Kind::String: return "string";
-    case Kind::Vec3: return "vec3";
-    case Kind::List: return "list<" + element->to_string() + ">";
+    case Kind::Bool:
+      return "bool";
+    case Kind::Int:
+      return "int";
+    case Kind::Float:
+      return "float";
+    case Kind::String:
+      return "string";
+    case Kind::Vec3:
+      return "vec3";
+    case Kind::List:
+      return "list<" + element->to_string() + ">";
     case Kind::Record: {
       std::string s = "{";
       for (size_t i = 0; i < fields.size(); ++i) {
@@ -102,11 +108,16 @@ class TypeParser {
       result = Type::record(std::move(fields));
     } else {
       std::string word = identifier();
-      if (word == "bool") result = Type::scalar(Type::Kind::Bool);
-      else if (word == "int") result = Type::scalar(Type::Kind::Int);
-      else if (word == "float") result = Type::scalar(Type::Kind::Float);
-      else if (word == "string") result = Type::scalar(Type::Kind::String);
-      else if (word == "vec3") result = Type::scalar(Type::Kind::Vec3);
+      if (word == "bool")
+        result = Type::scalar(Type::Kind::Bool);
+      else if (word == "int")
+        result = Type::scalar(Type::Kind::Int);
+      else if (word == "float")
+        result = Type::scalar(Type::Kind::Float);
+      else if (word == "string")
+        result = Type::scalar(Type::Kind::String);
+      else if (word == "vec3")
+        result = Type::scalar(Type::Kind::Vec3);
       else if (word == "list") {
         skip_space();
         if (!eat('<')) return fail("expected '<' after list");
@@ -126,8 +137,8 @@ class TypeParser {
   std::string identifier() {
     skip_space();
     size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) ||
-                                   text_[pos_] == '_'))
+    while (pos_ < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_'))
       ++pos_;
     return std::string(text_.substr(start, pos_ - start));
   }

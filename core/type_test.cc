@@ -26,11 +26,13 @@ TEST(TypeTest, RejectsMalformedText) {
   EXPECT_FALSE(parse_type("list<", &error));
   EXPECT_FALSE(parse_type("quaternion", &error));
   EXPECT_EQ(error, "unknown type 'quaternion'");
-  EXPECT_FALSE(parse_type([] {
-    std::string deep;
-    for (int i = 0; i < 1000; ++i) deep += "list<";
-    return deep;
-  }(), &error));
+  EXPECT_FALSE(parse_type(
+      [] {
+        std::string deep;
+        for (int i = 0; i < 1000; ++i) deep += "list<";
+        return deep;
+      }(),
+      &error));
   EXPECT_EQ(error, "type nested too deeply");
 }
 

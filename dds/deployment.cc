@@ -28,8 +28,8 @@ std::string line_column(std::string_view text, size_t at) {
 }
 
 // An object of strings: "topics" and "types".
-bool read_string_map(const Json& j, const std::string& where, std::map<std::string, std::string>* out,
-                     std::string* error) {
+bool read_string_map(const Json& j, const std::string& where,
+                     std::map<std::string, std::string>* out, std::string* error) {
   if (!j.is_object()) {
     *error = where + ": expected an object of strings, e.g. {\"Module.port\": \"/topic\"}";
     return false;
@@ -47,8 +47,8 @@ bool read_string_map(const Json& j, const std::string& where, std::map<std::stri
 bool read_integer(const Json& j, const std::string& where, int low, int high, int* out,
                   std::string* error) {
   if (!j.is_number_integer() || j.get<int64_t>() < low || j.get<int64_t>() > high) {
-    *error = where + ": expected an integer from " + std::to_string(low) + " to " +
-             std::to_string(high);
+    *error =
+        where + ": expected an integer from " + std::to_string(low) + " to " + std::to_string(high);
     return false;
   }
   *out = static_cast<int>(j.get<int64_t>());
@@ -71,8 +71,8 @@ bool read_qos(const Json& j, const std::string& where, Deployment* out, std::str
 }
 
 // One top-level key of the file.
-bool read_key(const std::string& key, const Json& value, const std::string& where,
-              Deployment* out, std::string* error) {
+bool read_key(const std::string& key, const Json& value, const std::string& where, Deployment* out,
+              std::string* error) {
   if (key == "domain") {
     int domain = 0;
     // DDS maps a domain to UDP ports; 232 is the largest the default port mapping allows.

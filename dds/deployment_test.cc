@@ -11,8 +11,8 @@ model::App two_port_app() {
   app.name = "demo";
   model::Module m;
   m.name = "Base";
-  m.ports.push_back({"cmd_vel", model::Direction::In, parse_type("{linear: vec3, angular: vec3}"),
-                     {}});
+  m.ports.push_back(
+      {"cmd_vel", model::Direction::In, parse_type("{linear: vec3, angular: vec3}"), {}});
   m.ports.push_back({"odom", model::Direction::Out, parse_type("vec3"), {}});
   app.modules.push_back(m);
   app.types.push_back({"Twist", parse_type("{linear: vec3, angular: vec3}"), {}});

@@ -4,10 +4,10 @@
 // its threads): the sample arrives marked `bad`, so the transport counts it as a `bad-type` drop.
 #pragma once
 
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastrtps/types/DynamicData.h>
 #include <fastrtps/types/DynamicPubSubType.h>
 
+#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <memory>
 #include <string>
 

@@ -18,8 +18,7 @@ bool fill_struct(ft::DynamicData* s, const Type& t, const Value& v) {
            ok(s->set_float64_value(p.z(), 2));
   }
   for (size_t i = 0; i < t.fields.size(); ++i) {
-    if (!put(s, static_cast<ft::MemberId>(i), *t.fields[i].type, v[t.fields[i].name]))
-      return false;
+    if (!put(s, static_cast<ft::MemberId>(i), *t.fields[i].type, v[t.fields[i].name])) return false;
   }
   return true;
 }
@@ -66,8 +65,8 @@ bool put(ft::DynamicData* parent, ft::MemberId id, const Type& t, const Value& v
   }
   ft::DynamicData* child = parent->loan_value(id);
   if (!child) return false;
-  bool done = t.kind == Type::Kind::List ? fill_sequence(child, *t.element, v)
-                                         : fill_struct(child, t, v);
+  bool done =
+      t.kind == Type::Kind::List ? fill_sequence(child, *t.element, v) : fill_struct(child, t, v);
   parent->return_loaned_value(child);
   return done;
 }

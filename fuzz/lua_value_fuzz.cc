@@ -4,10 +4,9 @@
 // Invariants checked (a violation aborts, so the fuzzer records it):
 //  - a mismatch is reported with a reason, never a crash or a Lua error escaping;
 //  - a value that was read converts back to Lua and reads again to an equal value.
-#include <lua.hpp>
-
 #include <cstdint>
 #include <cstdlib>
+#include <lua.hpp>
 #include <string>
 
 #include "runtime/lua_value.h"

@@ -16,6 +16,7 @@ packages=(
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
+             clang-format                    # tests/code_shape: code_format (scripts/format.sh)
              chromium                        # tests/report: the run report in headless Chromium
              neovim tmux                     # tests/lsp: Neovim's LSP client in a terminal
              iproute2)                       # tests/dds: two hosts as network namespaces (ip netns)

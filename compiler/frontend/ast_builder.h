@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
+#include "core/diagnostic.h"
 
 namespace arbc_grammar {
 class ArbcParser;

@@ -10,8 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/check_ids.h"
 #include "compiler/frontend/frontend.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 namespace {

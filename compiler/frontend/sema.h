@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
+#include "core/diagnostic.h"
 
 namespace arbc::frontend {
 

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/lower/lowered_app.h"
+#include "core/diagnostic.h"
 
 namespace arbc::lower {
 

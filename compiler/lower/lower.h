@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostic.h"
 #include "compiler/frontend/ast.h"
 #include "compiler/lower/lowered_app.h"
+#include "core/diagnostic.h"
 
 namespace arbc::lower {
 
