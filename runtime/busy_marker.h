@@ -13,15 +13,20 @@ namespace arbc {
 class BusyMarker {
  public:
   // kind: "monitor", "module" or "environment"; `name` must outlive the callback.
+  // A seqlock without fences (ThreadSanitizer does not model them): the serial goes odd before the
+  // fields change and even after; the fields are stored with release, so a reader that sees a
+  // new field also sees the odd serial when it checks again.
   void enter(const char* kind, const std::string* name, const char* callback) {
-    kind_.store(kind, std::memory_order_relaxed);
-    name_.store(name, std::memory_order_relaxed);
-    callback_.store(callback, std::memory_order_relaxed);
-    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+    begin_write();
+    kind_.store(kind, std::memory_order_release);
+    name_.store(name, std::memory_order_release);
+    callback_.store(callback, std::memory_order_release);
+    end_write();
   }
   void leave() {
-    kind_.store(nullptr, std::memory_order_relaxed);
-    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+    begin_write();
+    kind_.store(nullptr, std::memory_order_release);
+    end_write();
   }
 
   struct Snapshot {
@@ -33,10 +38,10 @@ class BusyMarker {
     Snapshot s;
     for (int attempt = 0; attempt < 100; ++attempt) {
       s.serial = serial_.load(std::memory_order_acquire);
-      const char* kind = kind_.load(std::memory_order_relaxed);
-      const std::string* name = name_.load(std::memory_order_relaxed);
-      const char* callback = callback_.load(std::memory_order_relaxed);
-      std::atomic_thread_fence(std::memory_order_acquire);
+      if (s.serial % 2 == 1) continue;  // the writer is between begin_write and end_write
+      const char* kind = kind_.load(std::memory_order_acquire);
+      const std::string* name = name_.load(std::memory_order_acquire);
+      const char* callback = callback_.load(std::memory_order_acquire);
       if (serial_.load(std::memory_order_relaxed) != s.serial) continue;
       s.kind = kind ? kind : "";
       s.name = kind && name ? *name : "";
@@ -47,6 +52,13 @@ class BusyMarker {
   }
 
  private:
+  void begin_write() {
+    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  }
+  void end_write() {
+    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
+  }
+
   std::atomic<uint64_t> serial_{0};
   std::atomic<const char*> kind_{nullptr};
   std::atomic<const std::string*> name_{nullptr};
