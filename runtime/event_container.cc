@@ -39,7 +39,7 @@ void EventContainer::expire(double now) {
   for (size_t event = 0; event < entries_.size(); ++event) {
     std::vector<Entry>& list = entries_[event];
     for (size_t i = 0; i < list.size();) {
-      if (now >= list[i].expiry) {
+      if (reached(now, list[i].expiry)) {
         Entry gone = list[i];
         list.erase(list.begin() + static_cast<long>(i));
         if (on_expiry_) on_expiry_(static_cast<int>(event), gone.owner, gone.expiry);

@@ -1,5 +1,6 @@
 // The event container of one input port (docs/design.md#events-and-lifetimes): entries (event,
-// owner connection, expiry). An event is present at time t iff some owner's entry has t < expiry.
+// owner connection, expiry). An event is present at time t iff some owner's entry has t < expiry
+// (instants within core/instant.h's kSameInstant of the expiry count as the expiry).
 //
 // Presence is kept as a bit mask so that a compiled constraint decides in nanoseconds; the
 // earliest expiry is kept too, so that checking for lapsed entries costs one comparison
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "core/compiled_constraint.h"
+#include "core/instant.h"
 
 namespace arbc {
 
@@ -34,7 +36,7 @@ class EventContainer {
 
   // The present events at time now (drops lapsed entries first). `now` must not go back.
   const EventMask& present(double now) {
-    if (now >= next_expiry_) expire(now);
+    if (reached(now, next_expiry_)) expire(now);
     return present_;
   }
   bool has(int event, double now) { return present(now).test(event); }

@@ -3,6 +3,7 @@
 // and quarantine; the PortMonitor calls of a connection.
 #include <cmath>
 
+#include "core/instant.h"
 #include "runtime/runtime_internal.h"
 
 namespace arbc {
@@ -193,7 +194,7 @@ void Runtime::process(Connection& c, const Value& msg) {
     return;
   }
   // 3. throttle: counts deliveries, so only selected messages are throttled.
-  if (c.throttle && t < c.last_delivery + *c.throttle) {
+  if (c.throttle && !reached(t, c.last_delivery + *c.throttle)) {
     c.consecutive_errors = 0;
     drop(c, DropReason::Throttled);
     return;

@@ -63,13 +63,17 @@ for id in "${ids[@]}"; do
   file=$($sites_py show "$id" | sed -n 's/^file: //p')
   cp -p "$scratch/src/$file" "$scratch/original"
   where=$($sites_py apply "$scratch/src" "$id")
+  rm -f "$scratch/logs/$id-test.log" "$scratch/logs/$id-test-dds.log"
   start=$(date +%s)
   if ! build "$scratch/logs/$id-build.log"; then
     verdict="does not build (fix the site)"; broken=$((broken + 1)); unbuildable+=("$id")
-  elif run_tests "$scratch/logs/$id-test.log" --stop-on-failure; then
+  # The DDS runs take minutes; most mutants fail a faster test first.
+  elif run_tests "$scratch/logs/$id-test.log" --stop-on-failure -LE dds &&
+      run_tests "$scratch/logs/$id-test-dds.log" --stop-on-failure -L dds; then
     verdict="SURVIVED"; survived=$((survived + 1)); survivors+=("$id")
   else
-    first=$(sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (.*)$/\1/p' "$scratch/logs/$id-test.log" | head -1)
+    first=$(cat "$scratch/logs/$id-test.log" "$scratch/logs/$id-test-dds.log" 2>/dev/null |
+      grep -v '(Skipped)$' | sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (.*)$/\1/p' | head -1)
     verdict="killed by ${first:-a failing test}"; killed=$((killed + 1))
   fi
   printf '%-36s %-45s %4ss  %s\n' "$id" "$verdict" "$(( $(date +%s) - start ))" "$where"

@@ -1,5 +1,6 @@
 #include "verify/temporal/confirm.h"
 
+#include "core/instant.h"
 #include "core/join.h"
 #include "core/time_text.h"
 
@@ -28,7 +29,7 @@ void unknown(TemporalResult& r, const std::string& why) {
 
 bool spaced_less_than(const std::vector<double>& times, double window) {
   for (size_t i = 1; i < times.size(); ++i)
-    if (times[i] - times[i - 1] < window) return true;
+    if (!reached(times[i] - times[i - 1], window)) return true;
   return false;
 }
 
