@@ -35,8 +35,10 @@ class Builder {
     for (const ast::ArbitrateDecl& a : spec_.arbitrations) arbitrate(a);
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
-    for (const ast::NeverDecl& n : spec_.nevers)
+    for (const ast::TemporalDecl& n : spec_.temporal) {
       if (n.rule_decl) ix_.add_occurrence("rule:" + n.rule, name_loc(n.rule_loc, n.rule));
+      if (n.other_decl) ix_.add_occurrence("rule:" + n.other, name_loc(n.other_loc, n.other));
+    }
     for (const ast::ResourceDecl& r : spec_.resources) {
       for (const ast::PortRef& p : r.ports) port_ref(p);
       expr(r.uses.get());
