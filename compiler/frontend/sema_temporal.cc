@@ -48,8 +48,9 @@ const Rule* Sema::temporal_rule(const std::string& name, const Loc& loc, Tempora
 void Sema::check_absence_event(TemporalDecl& n) {
   if (events_.count(n.event)) return;
   std::vector<std::string> candidates = event_names_;
-  const ArbitrateDecl* port = n.rule_decl ? n.rule_decl->port : nullptr;
-  if (port && port->by_priority) {
+  const ArbitrateDecl* port = n.rule_decl->port;
+  if (!port) return;  // the rule's port did not resolve: reported there
+  if (port->by_priority) {
     for (const Rule& r : port->rules) {
       if (!r.hold) continue;
       std::string act = activity_event_name(r.name);
@@ -58,11 +59,9 @@ void Sema::check_absence_event(TemporalDecl& n) {
     }
   }
   unknown(n.event_loc,
-          "unknown event '" + n.event + "'" +
-              (port ? " in " + port->port.qualified() +
-                          ": name a declared event or the activity event act_RULE of a rule "
-                          "with a `hold` there"
-                    : ""),
+          "unknown event '" + n.event + "' in " + port->port.qualified() +
+              ": name a declared event or the activity event act_RULE of a rule with a `hold` "
+              "there",
           "unknown-event", n.event, candidates);
 }
 
@@ -76,7 +75,7 @@ void Sema::check_precedence(TemporalDecl& n) {
           "`only " + n.rule + " after " + n.other +
               "` names one rule twice: name the rule that must deliver first",
           "temporal-pair");
-  } else if (n.rule_decl->port != n.other_decl->port) {
+  } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
     error(n.other_loc,
           "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" +
               n.other + "' into " + n.other_decl->port->port.qualified() +
@@ -85,13 +84,14 @@ void Sema::check_precedence(TemporalDecl& n) {
           "temporal-pair");
   }
   if (n.rule_decl == n.other_decl || n.rule_decl->port != n.other_decl->port)
-    n.rule_decl = n.other_decl = nullptr;  // reported: lowering leaves it out
+    n.rule_decl = n.other_decl = nullptr;  // reported (or a port reported): lowering skips it
 }
 
 void Sema::check_temporal(TemporalDecl& n) {
   if (n.kind == TemporalDecl::Kind::Spacing) check_duration(n.window, "the `within` window");
   n.rule_decl = temporal_rule(n.rule, n.rule_loc, n.kind);
-  if (n.kind == TemporalDecl::Kind::Absence) check_absence_event(n);
+  // The event is looked up in the rule's port: without the rule there is nothing to say.
+  if (n.kind == TemporalDecl::Kind::Absence && n.rule_decl) check_absence_event(n);
   if (n.kind == TemporalDecl::Kind::Precedence) check_precedence(n);
 }
 
