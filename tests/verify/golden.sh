@@ -80,6 +80,7 @@ golden table_clean_ask_mutant.txt repo 1 tests/verify/table_clean_ask_mutant.spe
 # table_clean's put without e_taken refuted by `only put after take`.
 golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec
 golden temporal_shapes.json repo 1 --format json tests/verify/temporal_shapes.spec
+golden temporal_shapes.sarif repo 1 --format sarif tests/verify/temporal_shapes.spec
 golden table_clean_put_mutant.txt repo 1 tests/verify/table_clean_put_mutant.spec
 # Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
 # with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
