@@ -4,7 +4,8 @@
 #include <cstdlib>
 
 #include "cli/commands.h"
-#include "dds/dds_transport.h"
+#include "cli/dds_plugin.h"
+#include "dds/deployment.h"
 
 namespace arbc::cli {
 
@@ -83,7 +84,11 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
   options->time_scale = flags.time_scale.value_or(1);
-  options->transport = dds::make_dds_transport(app, std::move(dds));
+  options->transport = load_dds_transport(app, std::move(dds), &error);
+  if (!options->transport) {
+    print_error(error);
+    return false;
+  }
   return true;
 }
 

@@ -3,8 +3,10 @@
 // that module's state (the events its outputs feed) predates the delivery until the module
 // answers: a message from it published after it received the delivery. Until then a rule
 // whose constraint reads such an event is not selected (absence of an answer is not knowledge
-// that nothing changed), or until the event's lifetime has passed since the delivery (by then
-// every entry that predates it would have lapsed, had the module kept still). In one process a
+// that nothing changed), or until the event's lifetime has passed since the delivery and since
+// the feed's last message (every message the feed took meanwhile was published before the
+// module had the delivery: stale news that sets entries again, for a lifetime from then; once
+// that has passed, no entry from before the delivery is left). In one process a
 // module sees a delivery before any later message is processed, so the rule never applies
 // there. Like the unknown-after-start rule it only removes selections: the proof holds.
 #include "runtime/runtime_internal.h"
@@ -21,8 +23,10 @@ void Runtime::collect_feedback_events() {
       for (Connection* feed : c.destination->feeds) {
         if (!feed->source->remote) continue;  // hosted here: it answers at once
         const std::vector<std::string>& sets = feed->model->sets;
-        if (std::find(sets.begin(), sets.end(), e) != sets.end())
-          c.feedback.push_back({e, feed, declared_lifetime(e)});
+        if (std::find(sets.begin(), sets.end(), e) == sets.end()) continue;
+        c.feedback.push_back({e, feed, declared_lifetime(e)});
+        std::vector<const Connection*>& known = feed->source->remote->feeds;
+        if (std::find(known.begin(), known.end(), feed) == known.end()) known.push_back(feed);
       }
     }
   }
@@ -38,7 +42,7 @@ bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
       // A delivery made for this very message does not hide what the message is judged on:
       // in one process, too, every connection from a source judges a message on one state.
       if (s.message == c.message) continue;
-      if (u.lifetime && t >= s.time + *u.lifetime) continue;
+      if (u.lifetime && t >= std::max(s.time, u.feed->last_fed_at) + *u.lifetime) continue;
       char line[256];
       std::snprintf(line, sizeof line,
                     "not answered: %s (%s has not spoken since the delivery at %.3f s)",
@@ -50,10 +54,21 @@ bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
   return true;
 }
 
+// Whether delivery `s` can no longer hide anything at `t`: every feed has answered it, or has
+// been silent for longer than any lifetime since it (see answered_events_of).
+static bool settled(const Runtime::RemoteModule::Sent& s, const Runtime::RemoteModule& m,
+                    double longest_lifetime, double t) {
+  for (const Runtime::Connection* feed : m.feeds) {
+    if (s.number > feed->answered && std::max(s.time, feed->last_fed_at) + longest_lifetime >= t)
+      return false;
+  }
+  return true;
+}
+
 void Runtime::delivered_to_remote(RemoteModule& m, double t, uint64_t message) {
   m.recent.push_back({++remote_sent_, t, message});
-  // Older than every lifetime: by then the module's entries from before would have lapsed.
-  while (!m.recent.empty() && m.recent.front().time + longest_lifetime_ < t) m.recent.pop_front();
+  while (!m.recent.empty() && settled(m.recent.front(), m, longest_lifetime_, t))
+    m.recent.pop_front();
 }
 
 }  // namespace arbc

@@ -156,6 +156,7 @@ bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
   }
   c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
   c.answered = std::max(c.answered, c.incoming_answered);  // answered_deliveries.cc
+  c.last_fed_at = now();
   if (accepted) return true;
   c.consecutive_errors = 0;
   if (reason == drop_reason_name(DropReason::NoValue)) {

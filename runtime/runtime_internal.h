@@ -23,6 +23,9 @@ struct Runtime::RemoteModule {
     uint64_t message = 0;  // the arrival it answered (Runtime::arrivals_)
   };
   std::deque<Sent> recent;
+  // The feeds from its outputs that rules read: a delivery matters while one of them may still
+  // show the module's state from before it.
+  std::vector<const Connection*> feeds;
 };
 
 // An input port of a module instance, with its event container.
@@ -99,6 +102,7 @@ struct Runtime::Connection : MonitorHost {
   // How many deliveries into modules hosted elsewhere the messages processed answer: the most
   // of any message so far (a feed), and the message being processed.
   uint64_t answered = 0, incoming_answered = 0;
+  double last_fed_at = -std::numeric_limits<double>::infinity();  // a feed's last accepted message
   uint64_t message = 0;  // the arrival number of the message being processed
   bool fed = false;
   double last_arrival = -std::numeric_limits<double>::infinity();

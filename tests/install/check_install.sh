@@ -24,6 +24,23 @@ grep -q "Printer got 2$" "$work/run.txt" || fail "the printer never got 2"
 grep -q "Printer got 10$" "$work/run.txt" || fail "the printer never got 10"
 if grep -q "Printer got [13579]$" "$work/run.txt"; then fail "an odd count was delivered"; fi
 echo "check_install.sh: a plugin built against the installed package ran"
+# `arbc run --transport dds` loads the DDS transport from <prefix>/lib/arbc (cli/dds_plugin.cc);
+# the commands that do not need DDS do not load Fast-DDS at all.
+"$arbc" run "$src/tests/install/plugin/hello.spec" --plugin "$work/plugin/libhello_modules.so" \
+  --transport dds --domain 201 --duration 1s > "$work/dds-run.txt" 2>&1 ||
+  { cat "$work/dds-run.txt"; fail "the installed arbc did not run over DDS"; }
+grep -q "Printer got 2$" "$work/dds-run.txt" || fail "over DDS, the printer never got 2"
+if ldd "$arbc" | grep -q fastrtps; then fail "arbc links Fast-DDS instead of loading it for dds"; fi
+# Without the plugin, --transport dds is refused (exit 2), saying where arbc looked.
+mkdir -p "$work/lonely/bin"
+cp "$arbc" "$work/lonely/bin/arbc"
+status=0
+"$work/lonely/bin/arbc" run "$src/tests/install/plugin/hello.spec" --transport dds \
+  --duration 1s > "$work/lonely.txt" 2>&1 || status=$?
+[ "$status" = 2 ] || { cat "$work/lonely.txt"; fail "without arbc_dds.so, exit $status, not 2"; }
+grep -q "arbc_dds.so is not installed (looked in $work/lonely/bin/arbc_dds.so" "$work/lonely.txt" ||
+  { cat "$work/lonely.txt"; fail "without arbc_dds.so, no error naming where arbc looked"; }
+echo "check_install.sh: the installed arbc loads the DDS transport only for --transport dds"
 # arbc::arbc_dds is a target of its own: a program that reads a deployment file with it.
 # (arbc always builds arbc_dds: dds/CMakeLists.txt requires Fast-DDS.)
 [ -e "$work/prefix/lib/cmake/arbc/arbcDdsTargets.cmake" ] || fail "no arbcDdsTargets.cmake installed"
