@@ -120,8 +120,8 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   return std::nullopt;
 }
 
-// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec, whose `tests for` names the
-// spec relative to DIR. False (after saying why on stderr) when one cannot be written.
+// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec, whose `tests for` names
+// the spec relative to DIR. False (after saying why on stderr) when one cannot be written.
 bool write_counterexamples(const std::vector<verify::InputReport>& reports,
                            const std::string& dir) {
   namespace fs = std::filesystem;
@@ -135,8 +135,7 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
       std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
                              ? ""
                              : std::string(".") + model::temporal_kind_name(t.property.kind);
-      fs::path path =
-          fs::path(dir) / (r.report.app + "." + t.property.rule + kind + ".test.spec");
+      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + kind + ".test.spec");
       std::ofstream out(path);
       out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
       if (!out) {

@@ -74,7 +74,8 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
       {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", ""});
   TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", ""};
   absence.event = "act_track";
-  TemporalProperty precedence{TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", ""};
+  TemporalProperty precedence{
+      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", ""};
   precedence.other = "track";
   app.temporal.push_back(absence);
   app.temporal.push_back(precedence);

@@ -13,7 +13,8 @@ using namespace ast;
 namespace {
 
 const char* shape_name(TemporalDecl::Kind k) {
-  return k == TemporalDecl::Kind::Precedence ? "an `only ... after` property" : "a `never` property";
+  return k == TemporalDecl::Kind::Precedence ? "an `only ... after` property"
+                                             : "a `never` property";
 }
 
 }  // namespace
@@ -77,8 +78,8 @@ void Sema::check_precedence(TemporalDecl& n) {
           "temporal-pair");
   } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
     error(n.other_loc,
-          "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" +
-              n.other + "' into " + n.other_decl->port->port.qualified() +
+          "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" + n.other +
+              "' into " + n.other_decl->port->port.qualified() +
               "; `only ... after` relates two rules of one port (the model checker follows one "
               "port's messages)",
           "temporal-pair");

@@ -86,7 +86,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never", "only"};
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

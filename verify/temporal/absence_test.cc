@@ -85,8 +85,7 @@ TEST(Absence, WhatOnlyTimeKeepsHoldsToTheBoundButIsNotProved) {
   // messages to refresh them than the bound gives).
   testing::connection(app, "track").constraint = testing::parse("true");
   testing::connection(app, "track").throttle = 1.0;
-  EXPECT_EQ(check(app, "HeadControl.gaze", "track", "act_track").outcome,
-            Outcome::HoldsToBound);
+  EXPECT_EQ(check(app, "HeadControl.gaze", "track", "act_track").outcome, Outcome::HoldsToBound);
   testing::connection(app, "track").throttle = 0.5;
   TemporalResult r = check(app, "HeadControl.gaze", "track", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
@@ -98,8 +97,8 @@ TEST(Absence, WhatOnlyTimeKeepsHoldsToTheBoundButIsNotProved) {
 TEST(Absence, UnknownRuleIsBadInputNotAVerdict) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0,
-                            {}, "", ""};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0, {}, "", ""};
   p.event = "e_taken";
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_absence(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));

@@ -35,8 +35,8 @@ z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string
 
 }  // namespace
 
-int property_rule(const PortShape& shape, const model::TemporalProperty& p,
-                  const std::string& rule, std::string* err) {
+int property_rule(const PortShape& shape, const model::TemporalProperty& p, const std::string& rule,
+                  std::string* err) {
   int r = rule_index(shape, rule);
   if (r < 0)
     *err = "the property at line " + std::to_string(p.loc.line) + " names rule '" + rule +

@@ -31,7 +31,7 @@ TemporalResult bounded_search(const PortShape& shape, const model::TemporalPrope
 
 // The index of `rule` in `shape`; -1 and *err ("the property at line 7 names rule 'x', which
 // P does not have": bad input, not a verdict) when the port has no such rule.
-int property_rule(const PortShape& shape, const model::TemporalProperty& p,
-                  const std::string& rule, std::string* err);
+int property_rule(const PortShape& shape, const model::TemporalProperty& p, const std::string& rule,
+                  std::string* err);
 
 }  // namespace arbc::verify::temporal

@@ -40,8 +40,7 @@ TEST(Judge, AbsenceIsViolatedByADeliveryWhileTheEventIsPresent) {
   EXPECT_FALSE(replay_violates(
       absence(), {deliver(0, "track"), set(0, "track", "act_track", 1), deliver(1, "search")},
       &seen));
-  EXPECT_NE(seen.find("'search' delivered at 1s, each time without act_track"),
-            std::string::npos)
+  EXPECT_NE(seen.find("'search' delivered at 1s, each time without act_track"), std::string::npos)
       << seen;
   // The activity event is set after its own delivery: track's record sees the state before.
   P own = absence();
@@ -54,25 +53,24 @@ TEST(Judge, AbsenceFollowsUnsetsAndLapsesPerOwner) {
   P p = absence();
   p.event = "e";
   // Unset by one owner leaves the other's entry.
-  EXPECT_TRUE(replay_violates(
-      p, {set(0, "a", "e", -1), set(0, "b", "e", -1), remove(0.1, "a", "e", -1),
-          deliver(0.2, "search")},
-      &seen));
-  EXPECT_FALSE(replay_violates(p, {set(0, "a", "e", -1), remove(0.1, "a", "e", -1),
-                                   deliver(0.2, "search")},
-                               &seen));
+  EXPECT_TRUE(replay_violates(p,
+                              {set(0, "a", "e", -1), set(0, "b", "e", -1),
+                               remove(0.1, "a", "e", -1), deliver(0.2, "search")},
+                              &seen));
+  EXPECT_FALSE(replay_violates(
+      p, {set(0, "a", "e", -1), remove(0.1, "a", "e", -1), deliver(0.2, "search")}, &seen));
   // A lapse recorded after a refresh does not remove the refreshed entry.
-  EXPECT_TRUE(replay_violates(p, {set(0, "a", "e", 1), set(0.9, "a", "e", 1.9),
-                                  remove(1, "a", "e", 1), deliver(1.5, "search")},
+  EXPECT_TRUE(replay_violates(p,
+                              {set(0, "a", "e", 1), set(0.9, "a", "e", 1.9), remove(1, "a", "e", 1),
+                               deliver(1.5, "search")},
                               &seen));
 }
 
 TEST(Judge, PrecedenceNeedsAFreshDeliveryOfTheOtherRuleBeforeEach) {
   std::string seen;
   EXPECT_TRUE(replay_violates(precedence(), {deliver(0, "put")}, &seen));
-  EXPECT_TRUE(
-      replay_violates(precedence(), {deliver(0, "take"), deliver(1, "put"), deliver(2, "put")},
-                      &seen));
+  EXPECT_TRUE(replay_violates(precedence(),
+                              {deliver(0, "take"), deliver(1, "put"), deliver(2, "put")}, &seen));
   EXPECT_FALSE(replay_violates(
       precedence(), {deliver(0, "take"), deliver(0, "put"), deliver(1, "take"), deliver(2, "put")},
       &seen));
@@ -85,8 +83,8 @@ TEST(Judge, SpacingLooksOnlyAtTheRulesDeliveries) {
   std::string seen;
   P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
   EXPECT_TRUE(replay_violates(p, {deliver(0, "take"), deliver(0.999, "take")}, &seen));
-  EXPECT_FALSE(replay_violates(p, {deliver(0, "take"), deliver(0.5, "put"), deliver(1, "take")},
-                               &seen));
+  EXPECT_FALSE(
+      replay_violates(p, {deliver(0, "take"), deliver(0.5, "put"), deliver(1, "take")}, &seen));
   EXPECT_NE(seen.find("'take' delivered at 0s, 1s"), std::string::npos) << seen;
 }
 

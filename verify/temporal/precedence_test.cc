@@ -23,8 +23,7 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
   model::TemporalProperty p{model::TemporalProperty::Kind::Precedence, port, rule, 0, {}, "", ""};
   p.other = other;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  std::optional<TemporalResult> r =
-      check_precedence(app, p, bound, ctx, nullptr, deadline, &error);
+  std::optional<TemporalResult> r = check_precedence(app, p, bound, ctx, nullptr, deadline, &error);
   EXPECT_TRUE(r) << error;
   return r ? *r : TemporalResult{};
 }
@@ -57,8 +56,8 @@ TEST(Precedence, PutWithoutETakenIsRefutedWithoutTheFeedReportingIt) {
 }
 
 // HeadControl.gaze edited so that track needs nothing, search needs track's hold (act_track
-// present) and is throttled to the hold: each search then needs a track less than 1 s before it, hence after
-// the previous search.
+// present) and is throttled to the hold: each search then needs a track less than 1 s before it,
+// hence after the previous search.
 model::App search_after_track(std::optional<double> throttle) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "track").constraint = testing::parse("true");
@@ -86,8 +85,8 @@ TEST(Precedence, TwoSearchesInsideOneHoldAreTheShortestViolation) {
 TEST(Precedence, EitherRuleMissingIsBadInput) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put",
-                            0, {}, "", ""};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", ""};
   p.other = "pull";  // a rule of PullObject.cmd
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(
