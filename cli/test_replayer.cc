@@ -60,16 +60,23 @@ bool RuntimeTestReplayer::prepare(std::string* err) const {
   return true;
 }
 
-std::optional<std::vector<double>> RuntimeTestReplayer::deliveries(const model::TestCase& test,
-                                                                   const std::string& rule,
-                                                                   std::string* err) const {
+std::optional<std::vector<verify::ReplayRecord>> RuntimeTestReplayer::replay(
+    const model::TestCase& test, const std::string& port, std::string* err) const {
   if (!prepare(err)) return std::nullopt;
   TestTrace trace;
   if (!run_test_trace(*app_, app_dir_, test, &trace, err)) return std::nullopt;
-  std::vector<double> times;
-  for (const TraceRecord& r : trace.records)
-    if (r.kind == TraceKind::Deliver && r.connection == rule) times.push_back(r.t);
-  return times;
+  std::vector<verify::ReplayRecord> out;
+  using K = verify::ReplayRecord::Kind;
+  for (const TraceRecord& r : trace.records) {
+    if (r.port != port) continue;
+    if (r.kind == TraceKind::Deliver) {
+      out.push_back({K::Deliver, r.t, r.connection, "", -1});
+    } else if (r.kind == TraceKind::Event) {
+      // "set", "unset" or "expire" (the entry lapsed at r.t, its expiry)
+      out.push_back({r.op == "set" ? K::Set : K::Remove, r.t, r.owner, r.event, r.expiry});
+    }
+  }
+  return out;
 }
 
 }  // namespace arbc::cli

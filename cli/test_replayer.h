@@ -22,9 +22,9 @@ class RuntimeTestReplayer : public verify::TestReplayer {
   RuntimeTestReplayer(const RuntimeTestReplayer&) = delete;
   RuntimeTestReplayer& operator=(const RuntimeTestReplayer&) = delete;
 
-  std::optional<std::vector<double>> deliveries(const model::TestCase& test,
-                                                const std::string& rule,
-                                                std::string* err) const override;
+  std::optional<std::vector<verify::ReplayRecord>> replay(const model::TestCase& test,
+                                                          const std::string& port,
+                                                          std::string* err) const override;
 
  private:
   bool prepare(std::string* err) const;  // the scratch app directory, once

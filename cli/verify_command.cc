@@ -97,7 +97,7 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cli.add_option("--temporal-bound", a.options.temporal_bound,
-                 "messages into a port that properties over time (`never two`) are explored to")
+                 "messages into a port that properties over time (`never`, `only`) are explored to")
       ->check(CLI::Range(2, 1024))
       ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
@@ -120,8 +120,8 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   return std::nullopt;
 }
 
-// Each replayed counterexample over time as DIR/APP.RULE.test.spec, whose `tests for` names the
-// spec relative to DIR. False (after saying why on stderr) when one cannot be written.
+// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec, whose `tests for` names
+// the spec relative to DIR. False (after saying why on stderr) when one cannot be written.
 bool write_counterexamples(const std::vector<verify::InputReport>& reports,
                            const std::string& dir) {
   namespace fs = std::filesystem;
@@ -131,7 +131,11 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
       fs::path spec = fs::proximate(fs::absolute(t.property.loc.file), fs::absolute(dir), ec);
-      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + ".test.spec");
+      // APP.RULE.test.spec for spacing; APP.RULE.absence/precedence.test.spec for the others.
+      std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
+                             ? ""
+                             : std::string(".") + model::temporal_kind_name(t.property.kind);
+      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + kind + ".test.spec");
       std::ofstream out(path);
       out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
       if (!out) {

@@ -288,18 +288,28 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
-// `{"kind": "spacing", "port": .., "rule": .., "window": seconds}` (docs/app-json.md).
+// `{"kind": "spacing", "port": .., "rule": .., "window": seconds}`, `{"kind": "absence", ..,
+// "event": ..}` or `{"kind": "precedence", .., "after": OTHER}` (docs/app-json.md).
 bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
   std::string kind;
   if (!get_string(j, p, "kind", &kind, err)) return false;
-  if (kind != "spacing") return fail(p + ".kind: expected \"spacing\"", err);
-  std::optional<double> window;
-  if (!get_string(j, p, "port", &t->port, err) || !get_string(j, p, "rule", &t->rule, err) ||
-      !opt_number(j, p, "window", &window, err))
+  using K = TemporalProperty::Kind;
+  bool known = false;
+  for (K k : {K::Spacing, K::Absence, K::Precedence}) {
+    if (kind == temporal_kind_name(k)) t->kind = k, known = true;
+  }
+  if (!known) return fail(p + ".kind: expected \"spacing\", \"absence\" or \"precedence\"", err);
+  if (!get_string(j, p, "port", &t->port, err) || !get_string(j, p, "rule", &t->rule, err))
     return false;
-  if (!window || !(*window > 0))
-    return fail(p + ".window: expected a positive number of seconds", err);
-  t->window = *window;
+  if (t->kind == K::Spacing) {
+    std::optional<double> window;
+    if (!opt_number(j, p, "window", &window, err)) return false;
+    if (!window || !(*window > 0))
+      return fail(p + ".window: expected a positive number of seconds", err);
+    t->window = *window;
+  }
+  if (t->kind == K::Absence && !get_string(j, p, "event", &t->event, err)) return false;
+  if (t->kind == K::Precedence && !get_string(j, p, "after", &t->other, err)) return false;
   return read_location(j, p, &t->loc, err);
 }
 

@@ -71,18 +71,34 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"temporal\""), std::string::npos);
   app.temporal.push_back(
-      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}});
+      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", ""});
+  TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", ""};
+  absence.event = "act_track";
+  TemporalProperty precedence{
+      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", ""};
+  precedence.other = "track";
+  app.temporal.push_back(absence);
+  app.temporal.push_back(precedence);
   std::string text = to_app_json(app);
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
   ASSERT_TRUE(back) << err;
-  ASSERT_EQ(back->temporal.size(), 1u);
+  ASSERT_EQ(back->temporal.size(), 3u);
   EXPECT_EQ(back->temporal[0].rule, "track");
   EXPECT_EQ(back->temporal[0].window, 1.5);
+  EXPECT_EQ(back->temporal[1].kind, TemporalProperty::Kind::Absence);
+  EXPECT_EQ(back->temporal[1].event, "act_track");
+  EXPECT_EQ(back->temporal[2].kind, TemporalProperty::Kind::Precedence);
+  EXPECT_EQ(back->temporal[2].other, "track");
+  EXPECT_NE(text.find("\"after\": \"track\""), std::string::npos) << text;
   EXPECT_EQ(to_app_json(*back), text);
   std::string bad = text;
   bad.replace(bad.find("\"spacing\""), 9, "\"nearby\"");
-  EXPECT_NE(load_error(bad).find("temporal[0].kind: expected \"spacing\""), std::string::npos);
+  EXPECT_NE(load_error(bad).find("temporal[0].kind: expected \"spacing\", \"absence\""),
+            std::string::npos);
+  bad = text;
+  bad.replace(bad.find("\"after\""), 7, "\"later\"");
+  EXPECT_NE(load_error(bad).find("temporal[2]"), std::string::npos);
 }
 
 // One representation of a constraint: its text (schema version 2 dropped the tree).

@@ -148,10 +148,12 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
     w.begin_array();
     for (const TemporalProperty& t : temporal) {
       w.begin_object();
-      w.member("kind", "spacing");
+      w.member("kind", temporal_kind_name(t.kind));
       w.member("port", t.port);
       w.member("rule", t.rule);
-      w.member("window", t.window);
+      if (t.kind == TemporalProperty::Kind::Spacing) w.member("window", t.window);
+      if (t.kind == TemporalProperty::Kind::Absence) w.member("event", t.event);
+      if (t.kind == TemporalProperty::Kind::Precedence) w.member("after", t.other);
       write_location(w, t.loc);
       w.end_object();
     }

@@ -2,6 +2,18 @@
 
 namespace arbc::model {
 
+const char* temporal_kind_name(TemporalProperty::Kind k) {
+  switch (k) {
+    case TemporalProperty::Kind::Spacing:
+      return "spacing";
+    case TemporalProperty::Kind::Absence:
+      return "absence";
+    case TemporalProperty::Kind::Precedence:
+      return "precedence";
+  }
+  return "spacing";
+}
+
 const Module* App::find_module(std::string_view name) const {
   for (const Module& m : modules)
     if (m.name == name) return &m;

@@ -136,17 +136,25 @@ struct Invariant {
   SourceLocation loc;
 };
 
-// A property over time (docs/design.md#properties-over-time). One shape so far:
-// Spacing, `never two RULE within W;`: `rule`, a rule into `port`, never delivers twice less
-// than `window` seconds apart.
+// A property over time (docs/design.md#properties-over-time) about `rule`, a rule into `port`:
+//   Spacing    `never two RULE within W;`  never delivers twice less than `window` seconds apart;
+//   Absence    `never RULE while EVENT;`   never delivers while `event` is present in the
+//                                          port's container at the decision;
+//   Precedence `only RULE after OTHER;`    each delivery follows a delivery of `other` (a rule
+//                                          into the same port) with no delivery of RULE between.
 struct TemporalProperty {
-  enum class Kind { Spacing };
+  enum class Kind { Spacing, Absence, Precedence };
   Kind kind = Kind::Spacing;
   std::string port;  // "Module.port"
   std::string rule;
-  double window = 0;  // seconds
+  double window = 0;  // seconds; Spacing
   SourceLocation loc;
+  std::string event;  // Absence
+  std::string other;  // Precedence
 };
+
+// "spacing", "absence", "precedence": the `kind` in app.json and verify's JSON.
+const char* temporal_kind_name(TemporalProperty::Kind k);
 
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
 // uses the resource, for one message or two (docs/checks.md#resource).

@@ -53,8 +53,8 @@ constexpr CheckId kIds[] = {
      "two ports of a `resource` can each receive a command that uses it, from one message or "
      "two"},
     {"temporal", kVerify,
-     "a property over time (`never two RULE within D`) is violated by a timed trace the runtime "
-     "replays"},
+     "a property over time (`never two RULE within D`, `never RULE while EVENT`, `only RULE after "
+     "OTHER`) is violated by a timed trace the runtime replays"},
     {"resource-port", kCheck,
      "a `resource` lists a port that is not arbitrated, a port twice, or fewer than two ports"},
     {"resource-type", kCheck, "the ports of a `resource` have different types"},
@@ -66,8 +66,9 @@ constexpr CheckId kIds[] = {
      "a statement where it cannot run (emit in `every`, nested `every`)"},
     {"status-source-type", kCheck, "an `events from` source port that is not list<string>"},
     {"syntax", kCheck, "the text does not follow the grammar"},
-    {"temporal-rule", kCheck,
-     "a property over time (`never two RULE within D`) names a rule used by several ports"},
+    {"temporal-pair", kCheck,
+     "`only RULE after OTHER` names one rule twice, or rules of two different ports"},
+    {"temporal-rule", kCheck, "a property over time names a rule used by several ports"},
     {"test-port", kCheck,
      "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},
     {"test-reason", kCheck, "`expect RULE drops \"reason\"` with an unknown drop reason"},
@@ -86,7 +87,8 @@ constexpr CheckId kIds[] = {
     {"unknown-module", kCheck, "a module name that is not declared"},
     {"unknown-name", kCheck, "a name in an expression that is not declared"},
     {"unknown-port", kCheck, "a port that the module does not have"},
-    {"unknown-rule", kCheck, "an `assert` names a rule the port does not have"},
+    {"unknown-rule", kCheck,
+     "an `assert` or a property over time names a rule that does not exist"},
     {"unknown-type", kCheck, "a type name that is not declared"},
     {"unterminated-comment", kCheck, "a `/*` comment without its `*/`"},
     {"unterminated-string", kCheck, "a string literal without its closing quote"},

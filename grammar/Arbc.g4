@@ -26,6 +26,7 @@ decl
   | exclusiveDecl
   | invariantDecl
   | neverDecl
+  | onlyAfterDecl
   | arbitrateDecl
   | connectDecl
   | assertDecl
@@ -46,8 +47,11 @@ statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* ',
 statusEntry      : ID ('=' STRING)? ;
 exclusiveDecl    : 'exclusive' '{' ID (',' ID)* ','? '}' ';' ;
 invariantDecl    : 'invariant' expr ';' ;
-// A property over time (docs/language.md#properties-over-time): `never two take within 1s;`.
-neverDecl        : 'never' 'two' ID 'within' duration ';' ;
+// Properties over time (docs/language.md#properties-over-time): spacing
+// `never two take within 1s;`, absence `never search while act_track;`, precedence
+// `only put after take;`.
+neverDecl        : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
+onlyAfterDecl    : 'only' ID 'after' ID ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;

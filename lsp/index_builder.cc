@@ -35,8 +35,12 @@ class Builder {
     for (const ast::ArbitrateDecl& a : spec_.arbitrations) arbitrate(a);
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
-    for (const ast::NeverDecl& n : spec_.nevers)
+    for (const ast::TemporalDecl& n : spec_.temporal) {
       if (n.rule_decl) ix_.add_occurrence("rule:" + n.rule, name_loc(n.rule_loc, n.rule));
+      if (n.other_decl) ix_.add_occurrence("rule:" + n.other, name_loc(n.other_loc, n.other));
+      if (n.rule_decl && !n.event.empty())
+        ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
+    }
     for (const ast::ResourceDecl& r : spec_.resources) {
       for (const ast::PortRef& p : r.ports) port_ref(p);
       expr(r.uses.get());

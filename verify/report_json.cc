@@ -102,10 +102,20 @@ Json port_json(const PortResult& p, bool stats) {
 Json temporal_json(const TemporalResult& t) {
   static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown", "proved"};
   Json j;
-  j["kind"] = "spacing";
+  j["kind"] = model::temporal_kind_name(t.property.kind);
   j["port"] = t.property.port;
   j["rule"] = t.property.rule;
-  j["window"] = t.property.window;
+  switch (t.property.kind) {
+    case model::TemporalProperty::Kind::Spacing:
+      j["window"] = t.property.window;
+      break;
+    case model::TemporalProperty::Kind::Absence:
+      j["event"] = t.property.event;
+      break;
+    case model::TemporalProperty::Kind::Precedence:
+      j["after"] = t.property.other;
+      break;
+  }
   j["location"] = location_json(t.property.loc);
   j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
   j["bound"] = t.bound;

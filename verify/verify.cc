@@ -5,7 +5,7 @@
 #include "verify/resource_checks.h"
 #include "verify/structural_checks.h"
 #include "verify/temporal/confirm.h"
-#include "verify/temporal/spacing.h"
+#include "verify/temporal/property.h"
 
 namespace arbc::verify {
 namespace {
@@ -28,7 +28,7 @@ bool check_temporal(const model::App& app, const VerifyOptions& options, z3::con
                     std::string* err) {
   for (const model::TemporalProperty& p : app.temporal) {
     std::optional<TemporalResult> t =
-        temporal::check_spacing(app, p, options.temporal_bound, ctx, &data, deadline, err);
+        temporal::check_property(app, p, options.temporal_bound, ctx, &data, deadline, err);
     if (!t) return false;
     temporal::confirm_violation(options.test_replayer, *t, report.app_findings);
     report.solver_queries += t->solver_queries;

@@ -34,16 +34,27 @@ class MonitorRunner {
                    std::string* err) const = 0;
 };
 
+// What the runtime did at one arbitrated port during a replay, in the order it happened: a
+// delivery, or an entry of the port's container set or removed (unset, or lapsed).
+struct ReplayRecord {
+  enum class Kind { Deliver, Set, Remove };
+  Kind kind = Kind::Deliver;
+  double t = 0;
+  std::string connection;  // Deliver: the rule; Set, Remove: the entry's owner
+  std::string event;       // Set, Remove
+  double expiry = -1;      // Set: the entry's expiry; -1: none (until removed)
+};
+
 // Runs a test of the app on the runtime in simulated time, as `arbc test` does; the CLI
 // provides one, so every counterexample over time is replayed before it is reported
-// (docs/design.md#properties-over-time). Returns the times at which rule `rule` delivered;
-// nullopt and *err when the run could not be made.
+// (docs/design.md#properties-over-time). Returns what happened at port `port`; nullopt and
+// *err when the run could not be made.
 class TestReplayer {
  public:
   virtual ~TestReplayer() = default;
-  virtual std::optional<std::vector<double>> deliveries(const model::TestCase& test,
-                                                        const std::string& rule,
-                                                        std::string* err) const = 0;
+  virtual std::optional<std::vector<ReplayRecord>> replay(const model::TestCase& test,
+                                                          const std::string& port,
+                                                          std::string* err) const = 0;
 };
 
 struct VerifyOptions {

@@ -289,14 +289,25 @@ struct AssertDecl {
   Constraint constraint;
 };
 
-// `never two RULE within D;`: RULE never delivers twice less than D apart, a property over
-// time (docs/language.md#properties-over-time), decided by verify/temporal/.
-struct NeverDecl {
+// A property over time (docs/language.md#properties-over-time), decided by verify/temporal/:
+//   Spacing    `never two RULE within D;`   RULE never delivers twice less than D apart;
+//   Absence    `never RULE while EVENT;`    RULE delivers nothing while EVENT is present;
+//   Precedence `only RULE after OTHER;`     each delivery of RULE follows one of OTHER with no
+//                                           delivery of RULE in between.
+struct TemporalDecl {
+  enum class Kind { Spacing, Absence, Precedence };
+  Kind kind = Kind::Spacing;
   std::string rule;
   Loc rule_loc;
-  Duration window;
-  Loc loc;                          // the `never` keyword
-  const Rule* rule_decl = nullptr;  // sema
+  Duration window;    // Spacing
+  std::string event;  // Absence
+  Loc event_loc;
+  std::string other;  // Precedence
+  Loc other_loc;
+  Loc loc;  // the `never` or `only` keyword
+  // sema:
+  const Rule* rule_decl = nullptr;
+  const Rule* other_decl = nullptr;  // Precedence
 };
 
 // `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
@@ -396,7 +407,7 @@ struct Spec {
   std::vector<ArbitrateDecl> arbitrations;
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
-  std::vector<NeverDecl> nevers;
+  std::vector<TemporalDecl> temporal;
   std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)

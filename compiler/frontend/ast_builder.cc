@@ -476,7 +476,9 @@ class Builder {
     } else if (auto* c = ctx->assertDecl()) {
       spec.asserts.push_back(assert_decl(c));
     } else if (auto* c = ctx->neverDecl()) {
-      spec.nevers.push_back(never_decl(c));
+      spec.temporal.push_back(never_decl(c));
+    } else if (auto* c = ctx->onlyAfterDecl()) {
+      spec.temporal.push_back(only_after_decl(c));
     } else if (auto* c = ctx->resourceDecl()) {
       spec.resources.push_back(resource_decl(c));
     } else if (auto* c = ctx->testDecl()) {
@@ -637,13 +639,32 @@ class Builder {
     return a;
   }
 
-  // neverDecl : 'never' 'two' ID 'within' duration ';' ;
-  NeverDecl never_decl(ArbcParser::NeverDeclContext* c) {
-    NeverDecl n;
+  // neverDecl : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
+  TemporalDecl never_decl(ArbcParser::NeverDeclContext* c) {
+    TemporalDecl n;
     n.loc = loc(c->getStart());
-    n.rule = tx(c->ID());
-    n.rule_loc = loc(c->ID());
-    n.window = duration(c->duration());
+    n.rule = tx(c->ID(0));
+    n.rule_loc = loc(c->ID(0));
+    if (c->duration()) {
+      n.kind = TemporalDecl::Kind::Spacing;
+      n.window = duration(c->duration());
+    } else {
+      n.kind = TemporalDecl::Kind::Absence;
+      n.event = tx(c->ID(1));
+      n.event_loc = loc(c->ID(1));
+    }
+    return n;
+  }
+
+  // onlyAfterDecl : 'only' ID 'after' ID ';' ;
+  TemporalDecl only_after_decl(ArbcParser::OnlyAfterDeclContext* c) {
+    TemporalDecl n;
+    n.kind = TemporalDecl::Kind::Precedence;
+    n.loc = loc(c->getStart());
+    n.rule = tx(c->ID(0));
+    n.rule_loc = loc(c->ID(0));
+    n.other = tx(c->ID(1));
+    n.other_loc = loc(c->ID(1));
     return n;
   }
 

@@ -105,8 +105,12 @@ class Sema {
   void check_data_assert(ast::AssertDecl& a);
 
   // ---- properties over time (sema_temporal.cc) ----
-  // `never two RULE within D;`: RULE names one rule of one arbitrated port, D is a duration.
-  void check_never(ast::NeverDecl& n);
+  // A property over time: its rules, window, event (by kind, docs/language.md).
+  void check_temporal(ast::TemporalDecl& n);
+  const ast::Rule* temporal_rule(const std::string& name, const ast::Loc& loc,
+                                 ast::TemporalDecl::Kind k);
+  void check_absence_event(ast::TemporalDecl& n);
+  void check_precedence(ast::TemporalDecl& n);
 
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.

@@ -182,7 +182,7 @@ void Sema::run() {
   for (ArbitrateDecl& a : spec_.arbitrations) check_arbitration(a);
   for (ConnectDecl& c : spec_.connects) check_connect(c);
   for (AssertDecl& a : spec_.asserts) check_assert(a);
-  for (NeverDecl& n : spec_.nevers) check_never(n);
+  for (TemporalDecl& n : spec_.temporal) check_temporal(n);
   check_resources();
   check_tests();  // sema_test.cc
 }

@@ -1,5 +1,6 @@
-// Semantic checks of properties over time (docs/language.md#properties-over-time): the rule a
-// property names exists and is unambiguous, and its window is a positive duration.
+// Semantic checks of properties over time (docs/language.md#properties-over-time): the rules a
+// property names exist and are unambiguous, a window is a positive duration, an absence's event
+// is an event of the rule's port, and a precedence relates two rules of one port.
 #include <string>
 #include <vector>
 
@@ -9,29 +10,90 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-void Sema::check_never(NeverDecl& n) {
-  check_duration(n.window, "the `within` window");
+namespace {
+
+const char* shape_name(TemporalDecl::Kind k) {
+  return k == TemporalDecl::Kind::Precedence ? "an `only ... after` property"
+                                             : "a `never` property";
+}
+
+}  // namespace
+
+// The one rule named `name`; null (reported) when no rule or rules of several ports have it.
+const Rule* Sema::temporal_rule(const std::string& name, const Loc& loc, TemporalDecl::Kind k) {
   std::vector<const Rule*> found;
   std::vector<std::string> all;
   for (const ArbitrateDecl& a : spec_.arbitrations) {
     for (const Rule& r : a.rules) {
       all.push_back(r.name);
-      if (r.name == n.rule) found.push_back(&r);
+      if (r.name == name) found.push_back(&r);
     }
   }
   if (found.empty()) {
-    unknown(n.rule_loc, "no rule is named '" + n.rule + "'", "unknown-rule", n.rule, all);
-    return;
+    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    return nullptr;
   }
   if (found.size() > 1) {
     // Rule names are per port; a property over time must say which rule it is about.
-    error(n.rule_loc,
-          "rule name '" + n.rule + "' is used by " + std::to_string(found.size()) +
-              " ports; a `never` property can name only a rule whose name is unique: rename one",
+    error(loc,
+          "rule name '" + name + "' is used by " + std::to_string(found.size()) + " ports; " +
+              shape_name(k) + " can name only a rule whose name is unique: rename one",
           "temporal-rule");
-    return;
+    return nullptr;
   }
-  n.rule_decl = found.front();
+  return found.front();
+}
+
+// `never RULE while EVENT;`: EVENT is a declared event or the activity event `act_<R>` of a
+// `by priority` rule R of RULE's port (a rule with a hold), the events of that port's container.
+void Sema::check_absence_event(TemporalDecl& n) {
+  if (events_.count(n.event)) return;
+  std::vector<std::string> candidates = event_names_;
+  const ArbitrateDecl* port = n.rule_decl->port;
+  if (!port) return;  // the rule's port did not resolve: reported there
+  if (port->by_priority) {
+    for (const Rule& r : port->rules) {
+      if (!r.hold) continue;
+      std::string act = activity_event_name(r.name);
+      if (act == n.event) return;
+      candidates.push_back(act);
+    }
+  }
+  unknown(n.event_loc,
+          "unknown event '" + n.event + "' in " + port->port.qualified() +
+              ": name a declared event or the activity event act_RULE of a rule with a `hold` "
+              "there",
+          "unknown-event", n.event, candidates);
+}
+
+// `only RULE after OTHER;`: two different rules of one port, because the model checker
+// unrolls one port's run (docs/design.md#properties-over-time).
+void Sema::check_precedence(TemporalDecl& n) {
+  n.other_decl = temporal_rule(n.other, n.other_loc, n.kind);
+  if (!n.rule_decl || !n.other_decl) return;
+  if (n.rule_decl == n.other_decl) {
+    error(n.other_loc,
+          "`only " + n.rule + " after " + n.other +
+              "` names one rule twice: name the rule that must deliver first",
+          "temporal-pair");
+  } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
+    error(n.other_loc,
+          "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" + n.other +
+              "' into " + n.other_decl->port->port.qualified() +
+              "; `only ... after` relates two rules of one port (the model checker follows one "
+              "port's messages)",
+          "temporal-pair");
+  }
+  if (n.rule_decl == n.other_decl || n.rule_decl->port != n.other_decl->port)
+    n.rule_decl = n.other_decl = nullptr;  // reported (or a port reported): lowering skips it
+}
+
+void Sema::check_temporal(TemporalDecl& n) {
+  if (n.kind == TemporalDecl::Kind::Spacing) check_duration(n.window, "the `within` window");
+  n.rule_decl = temporal_rule(n.rule, n.rule_loc, n.kind);
+  // The event is looked up in the rule's port: without the rule there is nothing to say.
+  if (n.kind == TemporalDecl::Kind::Absence && n.rule_decl) check_absence_event(n);
+  if (n.kind == TemporalDecl::Kind::Precedence) check_precedence(n);
 }
 
 }  // namespace arbc::frontend

@@ -50,6 +50,8 @@ const char* describe_rule(size_t rule) {
       return "the assertion";
     case ArbcParser::RuleNeverDecl:
       return "the `never` property";
+    case ArbcParser::RuleOnlyAfterDecl:
+      return "the `only ... after` property";
     case ArbcParser::RuleResourceDecl:
       return "the `resource` declaration";
     case ArbcParser::RuleStmt:
@@ -84,7 +86,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never"};
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 
@@ -239,6 +241,14 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       d.message = "expected an expression in " + describe_context(ctx) + ", found " + found;
     } else if (x.kinds.count(ArbcParser::DURATION)) {
       d.message = "expected a duration such as 500ms, 1s or 2min, found " + found;
+    } else if (ctx->getRuleIndex() == ArbcParser::RuleNeverDecl && x.has("while") &&
+               offending->getText() == "within") {
+      // `never RULE within D`: the parser took it for an absence; the user forgot `two`.
+      d.message = "expected 'while' in the `never` property, found 'within'";
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "a spacing property reads `never two RULE within D;`";
+      d.notes.push_back(std::move(note));
     } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && x.has("}") &&
                x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;

@@ -40,7 +40,7 @@ std::optional<std::pair<ast::Loc, std::string>> first_non_test(const ast::Spec& 
   if (!s.arbitrations.empty()) found.push_back({s.arbitrations[0].loc, "an `arbitrate` block"});
   if (!s.connects.empty()) found.push_back({s.connects[0].loc, "a `connect`"});
   if (!s.asserts.empty()) found.push_back({s.asserts[0].loc, "an assertion"});
-  if (!s.nevers.empty()) found.push_back({s.nevers[0].loc, "a `never` property"});
+  if (!s.temporal.empty()) found.push_back({s.temporal[0].loc, "a property over time"});
   if (found.empty()) return std::nullopt;
   return *std::min_element(found.begin(), found.end(), [](const auto& a, const auto& b) {
     return std::tie(a.first.line, a.first.column) < std::tie(b.first.line, b.first.column);

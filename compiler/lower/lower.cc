@@ -82,11 +82,17 @@ class Lowerer {
     }
     for (const ast::InvariantDecl& inv : spec_.invariants)
       app.invariants.push_back({inv.constraint, inv.loc});
-    for (const ast::NeverDecl& n : spec_.nevers) {
+    for (const ast::TemporalDecl& n : spec_.temporal) {
       if (!n.rule_decl || !n.rule_decl->port) continue;  // sema reported it
-      app.temporal.push_back({model::TemporalProperty::Kind::Spacing,
-                              n.rule_decl->port->port.qualified(), n.rule, n.window.seconds,
-                              n.loc});
+      model::TemporalProperty t;
+      t.kind = static_cast<model::TemporalProperty::Kind>(n.kind);  // the same three, in order
+      t.port = n.rule_decl->port->port.qualified();
+      t.rule = n.rule;
+      t.window = n.window.seconds;
+      t.event = n.event;
+      t.other = n.other;
+      t.loc = n.loc;
+      app.temporal.push_back(std::move(t));
     }
     for (const ast::ResourceDecl& r : spec_.resources) {
       model::Resource res;
@@ -302,6 +308,12 @@ class Lowerer {
     std::set<std::string> read;
     for (const RuleWork& w : rules) connection(w).constraint.collect_events(read);
     for (const model::Assertion& as : ap.asserts) as.property.collect_events(read);
+    // `never RULE while EVENT` reads EVENT in RULE's port, so its feed is generated as for a
+    // constraint (docs/design.md#feeds).
+    for (const ast::TemporalDecl& t : spec_.temporal)
+      if (t.kind == ast::TemporalDecl::Kind::Absence && t.rule_decl && t.rule_decl->port &&
+          t.rule_decl->port->port.qualified() == ap.port)
+        read.insert(t.event);
     return read;
   }
 

@@ -84,6 +84,38 @@ TEST(LowerTest, FeedsCarryOnlyTheEventsTheirPortReads) {
   EXPECT_EQ(find_connection(app, "PullObject.cmd", "feed_PullObject_status"), nullptr);
 }
 
+// `never RULE while EVENT` reads EVENT in RULE's port, so a stream event gets its feed there
+// even when no rule of the port reads it; each property keeps its kind and names.
+TEST(LowerTest, AnAbsenceReadsItsEventInTheRulesPort) {
+  CompiledSpec c = compile_ok(spec(R"(
+events from Rake.status { holding = "holding" } lifetime 500ms;
+arbitrate Head.gaze by priority {
+  track:  from Eye.face hold 1s;
+  search: from Looker.gaze;
+}
+never search while holding;
+never search while act_track;
+only search after track;
+never two track within 1s;
+)"));
+  ASSERT_TRUE(c.ok);
+  const model::App& app = c.lowered->app;
+  const model::Connection* feed = find_connection(app, "Head.gaze", "feed_Rake_status");
+  ASSERT_NE(feed, nullptr);
+  EXPECT_EQ(feed->sets, (V{"holding"}));
+  using K = model::TemporalProperty::Kind;
+  ASSERT_EQ(app.temporal.size(), 4u);
+  EXPECT_EQ(app.temporal[0].kind, K::Absence);
+  EXPECT_EQ(app.temporal[0].event, "holding");
+  EXPECT_EQ(app.temporal[1].event, "act_track");
+  EXPECT_EQ(app.temporal[2].kind, K::Precedence);
+  EXPECT_EQ(app.temporal[2].rule, "search");
+  EXPECT_EQ(app.temporal[2].other, "track");
+  EXPECT_EQ(app.temporal[2].port, "Head.gaze");
+  EXPECT_EQ(app.temporal[3].kind, K::Spacing);
+  EXPECT_EQ(app.temporal[3].window, 1.0);
+}
+
 TEST(LowerTest, DerivedEventsWithForAreNeverUnsetWithoutForThey) {
   CompiledSpec c = compile_ok(read_file(ARBC_SOURCE_DIR "/specs/table_clean.spec"));
   ASSERT_TRUE(c.ok);

@@ -15,7 +15,8 @@ constexpr const char* kSpecKeywords[] = {
     "from",     "lifetime", "for",   "exclusive", "invariant", "arbitrate", "by",    "priority",
     "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
     "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
-    "not",      "and",      "or",    "true",      "false",     "otherwise", "never", "two"};
+    "not",      "and",      "or",    "true",      "false",     "otherwise", "never", "two",
+    "within",   "while",    "only",  "after"};
 
 bool is_keyword(const std::string& s) {
   for (const char* k : kSpecKeywords) {

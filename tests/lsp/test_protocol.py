@@ -350,13 +350,16 @@ class Editing(Session):
         self.assertEqual(check_json(renamed), [])
 
     def test_rename_a_rule_reaches_properties_over_time(self):
-        text = self.text + "\nnever two take within 1s;\n"
+        text = self.text + ("\nnever two take within 1s;\nonly put after take;\n"
+                            "never take while e_taken;\n")
         uri = file_uri(os.path.join(os.path.dirname(SPEC), "never_rename.spec"))
         self.open_spec(text, uri)
         where = {"textDocument": {"uri": uri}, "position": position_of(text, "take: from", 0, 0)}
         edit = self.c.request("textDocument/rename", dict(where, newName="grab"))
         renamed = apply_edits(text, edit["changes"][uri])
         self.assertIn("never two grab within 1s;", renamed)
+        self.assertIn("only put after grab;", renamed)
+        self.assertIn("never grab while e_taken;", renamed)
         self.assertEqual([d for d in check_json(renamed) if d["severity"] == "error"], [])
 
     def test_rename_refuses_keywords_taken_names_and_modules(self):

@@ -72,10 +72,16 @@ golden temporal.txt repo 1 tests/verify/temporal.spec
 golden temporal_bound.txt repo 0 --temporal-bound 2 tests/verify/temporal.spec
 golden temporal.json repo 1 --format json tests/verify/temporal.spec
 golden temporal.sarif repo 1 --format sarif tests/verify/temporal.spec
-# table_clean with its properties over time: ask's spacing holds up to the bound, take's is
-# refuted by a replayed trace; the mutant without ask's throttle is refuted for ask too.
+# table_clean with its properties over time: ask's spacing and two absences proved, take's
+# spacing refuted by a replayed trace; the mutant without ask's throttle is refuted for ask too.
 golden table_clean_temporal.txt repo 1 tests/verify/table_clean_temporal.spec
 golden table_clean_ask_mutant.txt repo 1 tests/verify/table_clean_ask_mutant.spec
+# Absence and precedence: proved at every decision, bounded, violated with replayed traces;
+# table_clean's put without e_taken refuted by `only put after take`.
+golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec
+golden temporal_shapes.json repo 1 --format json tests/verify/temporal_shapes.spec
+golden temporal_shapes.sarif repo 1 --format sarif tests/verify/temporal_shapes.spec
+golden table_clean_put_mutant.txt repo 1 tests/verify/table_clean_put_mutant.spec
 # Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
 # with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
 # by the two mutations with a concrete message.

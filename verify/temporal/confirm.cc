@@ -1,8 +1,7 @@
 #include "verify/temporal/confirm.h"
 
-#include "core/instant.h"
-#include "core/join.h"
-#include "core/time_text.h"
+#include "verify/temporal/judge.h"
+#include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -13,10 +12,10 @@ Finding internal_replay_error(const TemporalResult& r, const std::string& what) 
   f.severity = Severity::Error;
   f.port = r.property.port;
   f.rules = {r.property.rule};
+  if (!r.property.other.empty()) f.rules.push_back(r.property.other);
   f.loc = r.property.loc;
-  f.message = "internal error: the model checker and the runtime disagree on `never two " +
-              r.property.rule + " within " + time_text(r.property.window) + "s`: " + what +
-              "; please report this bug";
+  f.message = "internal error: the model checker and the runtime disagree on `" +
+              property_words(r.property) + "`: " + what + "; please report this bug";
   return f;
 }
 
@@ -26,12 +25,6 @@ void unknown(TemporalResult& r, const std::string& why) {
 }
 
 }  // namespace
-
-bool spaced_less_than(const std::vector<double>& times, double window) {
-  for (size_t i = 1; i < times.size(); ++i)
-    if (!reached(times[i] - times[i - 1], window)) return true;
-  return false;
-}
 
 void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
                        std::vector<Finding>& findings) {
@@ -46,19 +39,16 @@ void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
     return;
   }
   std::string err;
-  std::optional<std::vector<double>> times =
-      replayer->deliveries(*r.replay_test, r.property.rule, &err);
-  if (!times) {
+  std::optional<std::vector<ReplayRecord>> records =
+      replayer->replay(*r.replay_test, r.property.port, &err);
+  if (!records) {
     findings.push_back(internal_replay_error(r, "the replay did not run (" + err + ")"));
     unknown(r, "internal error in the replay");
     return;
   }
-  if (!spaced_less_than(*times, r.property.window)) {
-    std::vector<std::string> at;
-    for (double t : *times) at.push_back(time_text(t) + "s");
-    findings.push_back(
-        internal_replay_error(r, "replayed, '" + r.property.rule + "' delivered at " +
-                                     (at.empty() ? std::string("no time") : join(at))));
+  std::string seen;
+  if (!replay_violates(r.property, *records, &seen)) {
+    findings.push_back(internal_replay_error(r, "replayed, " + seen));
     unknown(r, "internal error in the replay");
     return;
   }

@@ -1,6 +1,6 @@
 // A violation the model checker found is reported only once the runtime shows it
 // (docs/design.md#properties-over-time): its test runs in simulated time and the property is
-// checked on the deliveries the runtime made.
+// checked on what the runtime did at the port (verify/temporal/judge.h).
 #pragma once
 
 #include <vector>
@@ -15,8 +15,5 @@ namespace arbc::verify::temporal {
 // in `findings` and r Unknown, never a verdict.
 void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
                        std::vector<Finding>& findings);
-
-// Whether two of `times` (ascending) are less than `window` apart.
-bool spaced_less_than(const std::vector<double>& times, double window);
 
 }  // namespace arbc::verify::temporal

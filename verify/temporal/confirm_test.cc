@@ -11,13 +11,19 @@ namespace {
 
 using Outcome = TemporalResult::Outcome;
 
+// Answers deliveries of 'take' at fixed times (nullopt: the run could not be made).
 class FixedReplayer : public TestReplayer {
  public:
   explicit FixedReplayer(std::optional<std::vector<double>> times) : times_(std::move(times)) {}
-  std::optional<std::vector<double>> deliveries(const model::TestCase&, const std::string&,
-                                                std::string* err) const override {
-    if (!times_) *err = "the app did not start";
-    return times_;
+  std::optional<std::vector<ReplayRecord>> replay(const model::TestCase&, const std::string&,
+                                                  std::string* err) const override {
+    if (!times_) {
+      *err = "the app did not start";
+      return std::nullopt;
+    }
+    std::vector<ReplayRecord> out;
+    for (double t : *times_) out.push_back({ReplayRecord::Kind::Deliver, t, "take", "", -1});
+    return out;
   }
 
  private:
@@ -26,7 +32,8 @@ class FixedReplayer : public TestReplayer {
 
 TemporalResult violated() {
   TemporalResult r;
-  r.property = {model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}};
+  r.property = {
+      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
   r.outcome = Outcome::Violated;
   r.replay_test = model::TestCase{};
   return r;

@@ -8,6 +8,7 @@
 
 #include "core/join.h"
 #include "core/time_text.h"
+#include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -139,7 +140,10 @@ class Builder {
     s.port = c.source;
     s.value = w->messages[0];
     test.steps.push_back(std::move(s));
-    if (c.name == p.rule && u_.trace_step(m_, k).delivered) {
+    // The deliveries the property is about (for a precedence, both rules') as expectations.
+    bool named = c.name == p.rule ||
+                 (p.kind == model::TemporalProperty::Kind::Precedence && c.name == p.other);
+    if (named && u_.trace_step(m_, k).delivered) {
       model::Expectation e;
       e.port = c.destination;
       e.value = w->emitted[0];
@@ -166,7 +170,7 @@ std::optional<model::TestCase> counterexample_test(const PortShape& shape, const
                                                    const model::TemporalProperty& p,
                                                    DataQuery& data, std::string* why_not) {
   Builder b(shape, u, m, data);
-  b.test.name = "counterexample: never two " + p.rule + " within " + time_text(p.window) + "s";
+  b.test.name = "counterexample: " + property_words(p);
   for (int k = 0; k < steps; ++k) {
     if (!b.add(k, p)) {
       *why_not = b.why_not;

@@ -5,6 +5,7 @@
 #include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/counterexample.h"
+#include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -16,7 +17,7 @@ constexpr const char* kAssumptions =
 
 std::string property_text(const model::TemporalProperty& p) {
   std::string where = p.loc.line ? " (" + p.loc.file + ":" + std::to_string(p.loc.line) + ")" : "";
-  return "never two " + p.rule + " within " + time_text(p.window) + "s" + where;
+  return property_words(p) + where;
 }
 
 // "    at 0.25s  ObjectDetector.objects -> take: accepted, delivered; sets e_x"

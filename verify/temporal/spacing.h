@@ -13,11 +13,9 @@
 #include "core/app_model.h"
 #include "verify/data_query.h"
 #include "verify/report.h"
+#include "verify/temporal/bmc.h"
 
 namespace arbc::verify::temporal {
-
-// Messages into the property's port explored by default (`arbc verify --temporal-bound`).
-inline constexpr int kDefaultBound = 8;
 
 // The verdict for `p` up to `bound` messages in the abstract model; unknown when the deadline
 // passes. A violation comes with its trace and, when `data` finds a message for every rule

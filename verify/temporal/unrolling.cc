@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <set>
 
+#include "verify/temporal/constraint_expr.h"
+
 namespace arbc::verify::temporal {
 namespace {
 
@@ -173,23 +175,21 @@ z3::expr Unrolling::present(const std::string& event, int k, const z3::expr& at)
 }
 
 z3::expr Unrolling::guard(const Constraint& c, int k) const {
-  switch (c.op) {
-    case Constraint::Op::True:
-      return ctx_.bool_val(true);
-    case Constraint::Op::False:
-      return ctx_.bool_val(false);
-    case Constraint::Op::Event:
-      return present(c.event, k, t_[k]);
-    case Constraint::Op::Not:
-      return !guard(c.args[0], k);
-    case Constraint::Op::And:
-    case Constraint::Op::Or: {
-      z3::expr_vector args(ctx_);
-      for (const Constraint& a : c.args) args.push_back(guard(a, k));
-      return c.op == Constraint::Op::And ? z3::mk_and(args) : z3::mk_or(args);
-    }
+  return constraint_expr(c, ctx_, [&](const std::string& e) { return present(e, k, t_[k]); });
+}
+
+int rule_index(const PortShape& shape, const std::string& rule) {
+  for (size_t i = 0; i < shape.connections.size(); ++i) {
+    const model::Connection& c = *shape.connections[i];
+    if (c.kind == model::ConnectionKind::Rule && c.name == rule) return static_cast<int>(i);
   }
-  return ctx_.bool_val(false);
+  return -1;
+}
+
+bool sets_into(const PortShape& shape, const std::string& event) {
+  for (const Entry& e : shape.entries)
+    if (e.event == event) return true;
+  return false;
 }
 
 namespace {

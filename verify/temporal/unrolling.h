@@ -38,6 +38,11 @@ struct PortShape {
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err);
 
+// The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
+int rule_index(const PortShape& shape, const std::string& rule);
+// Whether some connection into the port can set `event` (else it is never present there).
+bool sets_into(const PortShape& shape, const std::string& event);
+
 class Unrolling {
  public:
   // Adds to `solver` the constraints of `steps` steps of the port from the empty container.
@@ -51,6 +56,10 @@ class Unrolling {
   // Connection `c` delivers at step k.
   z3::expr delivers(int c, int k) const { return del_[k][c]; }
   z3::expr time(int k) const { return t_[k]; }
+  // `event` is present at step k's decision (the state its connection's constraint reads).
+  z3::expr present_at_decision(const std::string& event, int k) const {
+    return present(event, k, t_[k]);
+  }
   // Step k's trace line in model `m`.
   TraceStep trace_step(const z3::model& m, int k) const;
 

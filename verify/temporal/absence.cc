@@ -1,0 +1,54 @@
+#include "verify/temporal/absence.h"
+
+#include "verify/temporal/bmc.h"
+#include "verify/temporal/constraint_expr.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+// Why `event` is never present while rule `c` delivers, in every run; empty when no reason
+// that needs no bound is known. A delivery needs the rule's constraint true on the decision
+// state, and the property reads `event` on that same state: if the constraint and `event` are
+// jointly unsatisfiable as a formula over free events (or nothing can set `event` into the
+// port), no decision of any run delivers with `event` present.
+std::string decision_proof(const PortShape& shape, const model::Connection& c,
+                           const std::string& event, z3::context& ctx) {
+  // A `script` rule's Lua is not analysed: it might set any event, so "nothing sets it" needs
+  // every connection into the port to be known.
+  bool all_known = true;
+  for (const model::Connection* into : shape.connections) all_known &= !into->opaque;
+  if (all_known && !sets_into(shape, event))
+    return "no connection into " + shape.port + " sets " + event +
+           ", so it is never present in its container";
+  auto free_event = [&](const std::string& e) { return ctx.bool_const(("ev!" + e).c_str()); };
+  z3::solver s(ctx);
+  s.set("timeout", 10000u);
+  s.add(constraint_expr(c.constraint, ctx, free_event) && free_event(event));
+  if (s.check() != z3::unsat) return "";
+  return "'" + c.name + "' is selected only when its constraint `" + c.constraint.to_string() +
+         "` holds, which is false whenever " + event + " is present";
+}
+
+}  // namespace
+
+std::optional<TemporalResult> check_absence(const model::App& app, const model::TemporalProperty& p,
+                                            int bound, z3::context& ctx, DataQuery* data,
+                                            std::chrono::steady_clock::time_point deadline,
+                                            std::string* err) {
+  std::optional<PortShape> shape = port_shape(app, p.port, err);
+  if (!shape) return std::nullopt;
+  int r = property_rule(*shape, p, p.rule, err);
+  if (r < 0) return std::nullopt;
+  auto violation = [&](const Unrolling& u, int n) {
+    return u.delivers(r, n - 1) && u.present_at_decision(p.event, n - 1);
+  };
+  TemporalResult result = bounded_search(*shape, p, 1, bound, violation, ctx, data, deadline);
+  if (result.outcome != TemporalResult::Outcome::HoldsToBound) return result;
+  // As for spacing, the search runs first: a violation despite the argument would be a bug
+  // that the replay exposes.
+  result.proof = decision_proof(*shape, *shape->connections[static_cast<size_t>(r)], p.event, ctx);
+  if (!result.proof.empty()) result.outcome = TemporalResult::Outcome::Proved;
+  return result;
+}
+
+}  // namespace arbc::verify::temporal

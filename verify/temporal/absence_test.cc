@@ -1,0 +1,109 @@
+// The absence property `never RULE while EVENT;` (docs/design.md#properties-over-time) on the
+// table_clean model: proved at a single decision where the rule's constraint excludes the
+// event (a `by priority` hold, a `not e` in the guard) or nothing sets the event into the port;
+// refuted with a shortest timed trace where it is not; bounded where only time keeps it.
+#include "verify/temporal/absence.h"
+
+#include <gtest/gtest.h>
+
+#include "verify/test_models.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Outcome = TemporalResult::Outcome;
+
+TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
+                     const std::string& event, int bound = 6) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{model::TemporalProperty::Kind::Absence, port, rule, 0, {}, "", ""};
+  p.event = event;
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  std::optional<TemporalResult> r = check_absence(app, p, bound, ctx, nullptr, deadline, &error);
+  EXPECT_TRUE(r) << error;
+  return r ? *r : TemporalResult{};
+}
+
+TEST(Absence, APriorityHoldIsProvedAtEveryDecision) {
+  TemporalResult r = check(testing::table_clean_model(), "HeadControl.gaze", "search", "act_track");
+  EXPECT_EQ(r.outcome, Outcome::Proved);
+  EXPECT_NE(r.proof.find("false whenever act_track is present"), std::string::npos) << r.proof;
+  EXPECT_EQ(r.bound, 6);  // the search ran to the bound as well
+}
+
+TEST(Absence, WithoutTheHoldsTermSearchDeliversInsideTracksHold) {
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "search").constraint =
+      testing::parse("e_unreachable and e_arm_idle and e_pull_idle");
+  TemporalResult r = check(app, "HeadControl.gaze", "search", "act_track");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  // Three feeds make both rules' events present, track delivers, search delivers.
+  ASSERT_EQ(r.bound, 5);
+  ASSERT_EQ(r.trace.size(), 5u);
+  double track_at = -1;
+  for (const TraceStep& s : r.trace)
+    if (s.delivered && s.connection == "track") track_at = s.time;
+  ASSERT_GE(track_at, 0);
+  EXPECT_EQ(r.trace.back().connection, "search");
+  EXPECT_TRUE(r.trace.back().delivered);
+  EXPECT_LT(r.trace.back().time, track_at + 1.0);  // inside the 1 s hold
+}
+
+TEST(Absence, AGuardThatNeedsTheEventIsRefutedInTwoMessages) {
+  // put needs e_taken: the status feed sets it (with e_arm_idle), and put delivers.
+  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "put", "e_taken");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 2u);
+  EXPECT_TRUE(r.trace[0].feed);
+  EXPECT_EQ(r.trace[1].connection, "put");
+  // take's `not e_taken` excludes it at every decision.
+  EXPECT_EQ(check(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_taken").outcome,
+            Outcome::Proved);
+}
+
+TEST(Absence, AnEventNothingSetsIntoThePortIsNeverPresent) {
+  TemporalResult r =
+      check(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_face_detected");
+  EXPECT_EQ(r.outcome, Outcome::Proved);
+  EXPECT_NE(r.proof.find("no connection into PickAndPlace.cmd sets e_face_detected"),
+            std::string::npos)
+      << r.proof;
+  // A `script` rule into the port might set it: no proof then, only the bound.
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "put").opaque = true;
+  EXPECT_EQ(check(app, "PickAndPlace.cmd", "take", "e_face_detected").outcome,
+            Outcome::HoldsToBound);
+}
+
+TEST(Absence, WhatOnlyTimeKeepsHoldsToTheBoundButIsNotProved) {
+  // track inside its own hold: its constraint does not exclude act_track (present at its
+  // decision when it delivered less than 1 s ago), so no single decision proves it; a throttle
+  // of 1 s keeps every run clean, a shorter one does not.
+  model::App app = testing::table_clean_model();
+  // Without its events (the status feeds' flags lapse after 0.5 s, which would need more
+  // messages to refresh them than the bound gives).
+  testing::connection(app, "track").constraint = testing::parse("true");
+  testing::connection(app, "track").throttle = 1.0;
+  EXPECT_EQ(check(app, "HeadControl.gaze", "track", "act_track").outcome, Outcome::HoldsToBound);
+  testing::connection(app, "track").throttle = 0.5;
+  TemporalResult r = check(app, "HeadControl.gaze", "track", "act_track");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 2u);  // track, then track again 0.5 s later, inside the hold
+  EXPECT_GE(r.trace[1].time - r.trace[0].time, 0.5);
+  EXPECT_LT(r.trace[1].time - r.trace[0].time, 1.0);
+}
+
+TEST(Absence, UnknownRuleIsBadInputNotAVerdict) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0, {}, "", ""};
+  p.event = "e_taken";
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  EXPECT_FALSE(check_absence(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));
+  EXPECT_NE(error.find("does not have"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,86 @@
+#include "verify/temporal/bmc.h"
+
+#include <algorithm>
+
+#include "verify/temporal/counterexample.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Runs `solver` with the time left; z3::unknown (with *reason) when none is left or it gave up.
+z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string* reason) {
+  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+  if (left.count() <= 0) {
+    *reason = "timeout";
+    return z3::unknown;
+  }
+  try {
+    solver.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
+    z3::check_result r = solver.check();
+    if (r == z3::unknown) {
+      std::string why = solver.reason_unknown();
+      *reason =
+          why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
+              ? "timeout"
+              : "resource limit (" + why + ")";
+    }
+    return r;
+  } catch (const z3::exception& e) {
+    *reason = std::string("solver error: ") + e.msg();
+    return z3::unknown;
+  }
+}
+
+}  // namespace
+
+int property_rule(const PortShape& shape, const model::TemporalProperty& p, const std::string& rule,
+                  std::string* err) {
+  int r = rule_index(shape, rule);
+  if (r < 0)
+    *err = "the property at line " + std::to_string(p.loc.line) + " names rule '" + rule +
+           "', which " + p.port + " does not have";
+  return r;
+}
+
+TemporalResult bounded_search(const PortShape& shape, const model::TemporalProperty& p, int first,
+                              int bound, const ViolationAt& violation, z3::context& ctx,
+                              DataQuery* data, Clock::time_point deadline) {
+  TemporalResult result;
+  result.property = p;
+  // One solver for all n: step n is added for good, the violation at n inside a push/pop, so
+  // Z3 keeps what it learnt about the first steps (a fresh solver per n redid it every time).
+  z3::solver solver(ctx);
+  Unrolling u(shape, std::max(0, first - 1), ctx, solver);
+  for (int n = first; n <= bound; ++n) {
+    u.extend();
+    solver.push();
+    solver.add(violation(u, n));
+    ++result.solver_queries;
+    z3::check_result answer = run(solver, deadline, &result.unknown_reason);
+    if (answer == z3::unknown) {
+      result.outcome = TemporalResult::Outcome::Unknown;
+      result.bound = n - 1;
+      return result;
+    }
+    if (answer == z3::sat) {
+      z3::model m = solver.get_model();
+      for (int k = 0; k < n; ++k) result.trace.push_back(u.trace_step(m, k));
+      if (data) {
+        result.replay_test = counterexample_test(shape, u, m, n, p, *data, &result.not_replayable);
+      } else {
+        result.not_replayable = "no message data to replay with";
+      }
+      result.outcome = TemporalResult::Outcome::Violated;
+      result.bound = n;
+      return result;
+    }
+    solver.pop();
+  }
+  result.outcome = TemporalResult::Outcome::HoldsToBound;
+  result.bound = bound;
+  return result;
+}
+
+}  // namespace arbc::verify::temporal

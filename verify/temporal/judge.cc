@@ -1,0 +1,115 @@
+#include "verify/temporal/judge.h"
+
+#include <map>
+#include <utility>
+
+#include "core/instant.h"
+#include "core/join.h"
+#include "core/time_text.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Kind = ReplayRecord::Kind;
+
+std::string at_times(const std::vector<double>& times) {
+  std::vector<std::string> at;
+  for (double t : times) at.push_back(time_text(t) + "s");
+  return at.empty() ? std::string("no time") : join(at);
+}
+
+bool spacing(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+             std::string* seen) {
+  std::vector<double> times;
+  for (const ReplayRecord& r : records)
+    if (r.kind == Kind::Deliver && r.connection == p.rule) times.push_back(r.t);
+  if (spaced_less_than(times, p.window)) return true;
+  *seen = "'" + p.rule + "' delivered at " + at_times(times);
+  return false;
+}
+
+// The container's entries for one event, (owner -> expiry, -1: none), as the records leave
+// them; the event is present at t when an entry has no expiry or t has not reached the expiry
+// (core/instant.h; docs/design.md#events-and-lifetimes).
+class Presence {
+ public:
+  void apply(const ReplayRecord& r) {
+    if (r.kind == Kind::Set) {
+      entries_[r.connection] = r.expiry;
+    } else if (r.kind == Kind::Remove) {
+      auto it = entries_.find(r.connection);
+      // A lapse (it has its expiry) removes only the entry that lapsed, not a later refresh.
+      if (it != entries_.end() && (r.expiry < 0 || it->second <= r.expiry)) entries_.erase(it);
+    }
+  }
+  bool present(double t) const {
+    for (const auto& [owner, expiry] : entries_)
+      if (expiry < 0 || !reached(t, expiry)) return true;
+    return false;
+  }
+
+ private:
+  std::map<std::string, double> entries_;
+};
+
+// A delivery is recorded after its connection's accept ran and before a `by priority` rule's
+// activity event is set, so the entries seen at the record are the decision state.
+bool absence(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+             std::string* seen) {
+  Presence event;
+  std::vector<double> times;
+  for (const ReplayRecord& r : records) {
+    if (r.kind != Kind::Deliver) {
+      if (r.event == p.event) event.apply(r);
+      continue;
+    }
+    if (r.connection != p.rule) continue;
+    if (event.present(r.t)) return true;
+    times.push_back(r.t);
+  }
+  *seen = "'" + p.rule + "' delivered at " + at_times(times) + ", each time without " + p.event;
+  return false;
+}
+
+bool precedence(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+                std::string* seen) {
+  bool armed = false;
+  std::vector<std::string> order;
+  for (const ReplayRecord& r : records) {
+    if (r.kind != Kind::Deliver) continue;
+    if (r.connection == p.other) {
+      armed = true;
+    } else if (r.connection == p.rule) {
+      if (!armed) return true;
+      armed = false;
+    } else {
+      continue;
+    }
+    order.push_back(r.connection + " at " + time_text(r.t) + "s");
+  }
+  *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order));
+  return false;
+}
+
+}  // namespace
+
+bool spaced_less_than(const std::vector<double>& times, double window) {
+  for (size_t i = 1; i < times.size(); ++i)
+    if (!reached(times[i] - times[i - 1], window)) return true;
+  return false;
+}
+
+bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+                     std::string* seen) {
+  switch (p.kind) {
+    case model::TemporalProperty::Kind::Spacing:
+      return spacing(p, records, seen);
+    case model::TemporalProperty::Kind::Absence:
+      return absence(p, records, seen);
+    case model::TemporalProperty::Kind::Precedence:
+      return precedence(p, records, seen);
+  }
+  return false;
+}
+
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,92 @@
+// The runtime's word on a replayed counterexample (verify/temporal/judge.h): each shape judged
+// on a port's records as the runtime writes them, including the boundaries (an entry absent at
+// its expiry instant, a lapse that must not remove a later refresh).
+#include "verify/temporal/judge.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc::verify::temporal {
+namespace {
+
+using K = ReplayRecord::Kind;
+using P = model::TemporalProperty;
+
+ReplayRecord deliver(double t, const std::string& rule) { return {K::Deliver, t, rule, "", -1}; }
+ReplayRecord set(double t, const std::string& owner, const std::string& e, double expiry) {
+  return {K::Set, t, owner, e, expiry};
+}
+ReplayRecord remove(double t, const std::string& owner, const std::string& e, double expiry) {
+  return {K::Remove, t, owner, e, expiry};
+}
+
+P absence() {
+  P p{P::Kind::Absence, "HeadControl.gaze", "search", 0, {}, "", ""};
+  p.event = "act_track";
+  return p;
+}
+
+P precedence() {
+  P p{P::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", ""};
+  p.other = "take";
+  return p;
+}
+
+TEST(Judge, AbsenceIsViolatedByADeliveryWhileTheEventIsPresent) {
+  std::string seen;
+  EXPECT_TRUE(replay_violates(
+      absence(), {deliver(0, "track"), set(0, "track", "act_track", 1), deliver(0.5, "search")},
+      &seen));
+  // At the expiry instant the event is absent (docs/design.md#events-and-lifetimes).
+  EXPECT_FALSE(replay_violates(
+      absence(), {deliver(0, "track"), set(0, "track", "act_track", 1), deliver(1, "search")},
+      &seen));
+  EXPECT_NE(seen.find("'search' delivered at 1s, each time without act_track"), std::string::npos)
+      << seen;
+  // The activity event is set after its own delivery: track's record sees the state before.
+  P own = absence();
+  own.rule = "track";
+  EXPECT_FALSE(replay_violates(own, {deliver(0, "track"), set(0, "track", "act_track", 1)}, &seen));
+}
+
+TEST(Judge, AbsenceFollowsUnsetsAndLapsesPerOwner) {
+  std::string seen;
+  P p = absence();
+  p.event = "e";
+  // Unset by one owner leaves the other's entry.
+  EXPECT_TRUE(replay_violates(p,
+                              {set(0, "a", "e", -1), set(0, "b", "e", -1),
+                               remove(0.1, "a", "e", -1), deliver(0.2, "search")},
+                              &seen));
+  EXPECT_FALSE(replay_violates(
+      p, {set(0, "a", "e", -1), remove(0.1, "a", "e", -1), deliver(0.2, "search")}, &seen));
+  // A lapse recorded after a refresh does not remove the refreshed entry.
+  EXPECT_TRUE(replay_violates(p,
+                              {set(0, "a", "e", 1), set(0.9, "a", "e", 1.9), remove(1, "a", "e", 1),
+                               deliver(1.5, "search")},
+                              &seen));
+}
+
+TEST(Judge, PrecedenceNeedsAFreshDeliveryOfTheOtherRuleBeforeEach) {
+  std::string seen;
+  EXPECT_TRUE(replay_violates(precedence(), {deliver(0, "put")}, &seen));
+  EXPECT_TRUE(replay_violates(precedence(),
+                              {deliver(0, "take"), deliver(1, "put"), deliver(2, "put")}, &seen));
+  EXPECT_FALSE(replay_violates(
+      precedence(), {deliver(0, "take"), deliver(0, "put"), deliver(1, "take"), deliver(2, "put")},
+      &seen));
+  EXPECT_NE(seen.find("take at 0s, put at 0s, take at 1s, put at 2s"), std::string::npos) << seen;
+  // Other rules of the port do not count.
+  EXPECT_TRUE(replay_violates(precedence(), {deliver(0, "pull"), deliver(1, "put")}, &seen));
+}
+
+TEST(Judge, SpacingLooksOnlyAtTheRulesDeliveries) {
+  std::string seen;
+  P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
+  EXPECT_TRUE(replay_violates(p, {deliver(0, "take"), deliver(0.999, "take")}, &seen));
+  EXPECT_FALSE(
+      replay_violates(p, {deliver(0, "take"), deliver(0.5, "put"), deliver(1, "take")}, &seen));
+  EXPECT_NE(seen.find("'take' delivered at 0s, 1s"), std::string::npos) << seen;
+}
+
+}  // namespace
+}  // namespace arbc::verify::temporal

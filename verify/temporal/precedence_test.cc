@@ -1,0 +1,100 @@
+// The precedence property `only RULE after OTHER;` (docs/design.md#properties-over-time) on
+// the table_clean model: `only put after take` is refuted because the arm's status feed may
+// report e_taken at any time (the abstract environment), with or without put's `e_taken`
+// guard; a port where only time links the two rules holds to the bound, and loses it when the
+// throttle that keeps it goes.
+#include "verify/temporal/precedence.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "verify/test_models.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+using Outcome = TemporalResult::Outcome;
+
+TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
+                     const std::string& other, int bound = 6) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{model::TemporalProperty::Kind::Precedence, port, rule, 0, {}, "", ""};
+  p.other = other;
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  std::optional<TemporalResult> r = check_precedence(app, p, bound, ctx, nullptr, deadline, &error);
+  EXPECT_TRUE(r) << error;
+  return r ? *r : TemporalResult{};
+}
+
+int deliveries(const std::vector<TraceStep>& trace, const std::string& rule) {
+  int n = 0;
+  for (const TraceStep& s : trace) n += s.delivered && s.connection == rule;
+  return n;
+}
+
+TEST(Precedence, TheStatusFeedMayReportTakenBeforeAnyTake) {
+  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "put", "take");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 2u);
+  EXPECT_TRUE(r.trace[0].feed);
+  EXPECT_NE(std::find(r.trace[0].set.begin(), r.trace[0].set.end(), "e_taken"),
+            r.trace[0].set.end());
+  EXPECT_EQ(r.trace[1].connection, "put");
+  EXPECT_EQ(deliveries(r.trace, "take"), 0);
+}
+
+TEST(Precedence, PutWithoutETakenIsRefutedWithoutTheFeedReportingIt) {
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "put").constraint = testing::parse("e_arm_idle");
+  TemporalResult r = check(app, "PickAndPlace.cmd", "put", "take");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 2u);
+  EXPECT_EQ(r.trace[1].connection, "put");
+  EXPECT_EQ(deliveries(r.trace, "take"), 0);
+}
+
+// HeadControl.gaze edited so that track needs nothing, search needs track's hold (act_track
+// present) and is throttled to the hold: each search then needs a track less than 1 s before it,
+// hence after the previous search.
+model::App search_after_track(std::optional<double> throttle) {
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "track").constraint = testing::parse("true");
+  testing::connection(app, "search").constraint = testing::parse("act_track");
+  testing::connection(app, "search").throttle = throttle;
+  return app;
+}
+
+TEST(Precedence, HoldsToTheBoundWhereTimeLinksTheRules) {
+  TemporalResult r = check(search_after_track(1.0), "HeadControl.gaze", "search", "track");
+  EXPECT_EQ(r.outcome, Outcome::HoldsToBound);  // never "proved": no unbounded argument
+  EXPECT_EQ(r.bound, 6);
+  EXPECT_TRUE(r.proof.empty());
+}
+
+TEST(Precedence, TwoSearchesInsideOneHoldAreTheShortestViolation) {
+  TemporalResult r = check(search_after_track(std::nullopt), "HeadControl.gaze", "search", "track");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 3u);  // track, search, search
+  EXPECT_EQ(deliveries(r.trace, "track"), 1);
+  EXPECT_EQ(deliveries(r.trace, "search"), 2);
+  EXPECT_EQ(r.trace[0].connection, "track");
+}
+
+TEST(Precedence, EitherRuleMissingIsBadInput) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", ""};
+  p.other = "pull";  // a rule of PullObject.cmd
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  EXPECT_FALSE(
+      check_precedence(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));
+  EXPECT_NE(error.find("names rule 'pull', which PickAndPlace.cmd does not have"),
+            std::string::npos)
+      << error;
+}
+
+}  // namespace
+}  // namespace arbc::verify::temporal

@@ -1,0 +1,39 @@
+#include "verify/temporal/property.h"
+
+#include "core/time_text.h"
+#include "verify/temporal/absence.h"
+#include "verify/temporal/precedence.h"
+#include "verify/temporal/spacing.h"
+
+namespace arbc::verify::temporal {
+
+std::optional<TemporalResult> check_property(const model::App& app,
+                                             const model::TemporalProperty& p, int bound,
+                                             z3::context& ctx, DataQuery* data,
+                                             std::chrono::steady_clock::time_point deadline,
+                                             std::string* err) {
+  switch (p.kind) {
+    case model::TemporalProperty::Kind::Spacing:
+      return check_spacing(app, p, bound, ctx, data, deadline, err);
+    case model::TemporalProperty::Kind::Absence:
+      return check_absence(app, p, bound, ctx, data, deadline, err);
+    case model::TemporalProperty::Kind::Precedence:
+      return check_precedence(app, p, bound, ctx, data, deadline, err);
+  }
+  *err = "unknown kind of property over time";
+  return std::nullopt;
+}
+
+std::string property_words(const model::TemporalProperty& p) {
+  switch (p.kind) {
+    case model::TemporalProperty::Kind::Spacing:
+      return "never two " + p.rule + " within " + time_text(p.window) + "s";
+    case model::TemporalProperty::Kind::Absence:
+      return "never " + p.rule + " while " + p.event;
+    case model::TemporalProperty::Kind::Precedence:
+      return "only " + p.rule + " after " + p.other;
+  }
+  return p.rule;
+}
+
+}  // namespace arbc::verify::temporal
