@@ -2,9 +2,10 @@
 """The checker of properties over time against the runtime (docs/checks.md#temporal).
 
 Random small apps (one arbitrated port, one to three rules with random guards over two fed
-events, holds, throttles and accepts, with and without `by priority`), each with a spacing
-property `never two RULE within W;`, verified with `arbc verify --format json`; then random
-input timings for each app, run on the runtime in simulated time (`arbc run --inputs`,
+events, holds, throttles and accepts, with and without `by priority`), each with one property
+over time of a random shape (spacing `never two RULE within W;`, absence `never RULE while
+EVENT;`, precedence `only RULE after OTHER;`), verified with `arbc verify --format json`; then
+random input timings for each app, run on the runtime in simulated time (`arbc run --inputs`,
 `--trace`). Whenever a run violates the property within a number of messages into the port
 that the bound covers, the checker must not have said "proved" or "holds up to the bound".
 
@@ -40,7 +41,7 @@ def rule_body(rng, name, source, holds):
 
 
 def random_app(rng, index):
-    """The spec text, the sources of its messages and the property's rule and window."""
+    """The spec text, the sources of its messages and the property (shape, rule, argument)."""
     n_rules = rng.randint(1, 3)
     by_priority = n_rules > 1 and rng.random() < 0.5
     lifetime = rng.choice([0.2, 0.5, 1.0])
@@ -55,10 +56,20 @@ def random_app(rng, index):
     lines += [rule_body(rng, f"r{k}", s, by_priority and k < n_rules)
               for k, s in enumerate(sources, 1)]
     lines.append("}")
-    rule = f"r{rng.randint(1, n_rules)}"
-    window = rng.choice([0.1, 0.25, 0.5, 1.0, 2.0])
-    lines.append(f"never two {rule} within {window}s;")
-    return "\n".join(lines) + "\n", sources, rule, window
+    k = rng.randint(1, n_rules)
+    rule = f"r{k}"
+    shape = rng.choice(["spacing", "spacing", "absence"] + (["precedence"] if n_rules > 1 else []))
+    if shape == "spacing":
+        prop = ("spacing", rule, rng.choice([0.1, 0.25, 0.5, 1.0, 2.0]))
+        lines.append(f"never two {rule} within {prop[2]}s;")
+    elif shape == "absence":
+        events = ["e1", "e2"] + ([f"act_r{j}" for j in range(1, n_rules)] if by_priority else [])
+        prop = ("absence", rule, rng.choice(events))
+        lines.append(f"never {rule} while {prop[2]};")
+    else:
+        prop = ("precedence", rule, f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}")
+        lines.append(f"only {rule} after {prop[2]};")
+    return "\n".join(lines) + "\n", sources, prop
 
 
 def random_inputs(rng, sources, rule_source):
@@ -92,9 +103,42 @@ def verdict(arbc, spec):
     return temporal["outcome"], temporal["bound"]
 
 
-def violation(arbc, app_dir, inputs, rule, window, work):
-    """The number of messages into the port up to the second delivery of the first pair of
-    `rule`'s deliveries less than `window` apart; None when the run has no such pair."""
+def first_violation(steps, prop):
+    """The time of the delivery at which the trace first violates `prop`; None if it does not."""
+    kind, rule, arg = prop
+    last = None           # spacing: rule's last delivery
+    entries = {}          # absence: the event's entries in the port, owner -> expiry (-1: none)
+    armed = False         # precedence: OTHER delivered since rule's last delivery
+    for s in steps:
+        if s.get("type") == "event" and s.get("port") == "Dst.y" and s.get("event") == arg:
+            if s["op"] == "set":
+                entries[s["owner"]] = s.get("expiry", -1)
+            else:
+                entries.pop(s["owner"], None)
+        if s.get("type") != "deliver":
+            continue
+        t, who = s["t"], s["connection"]
+        if kind == "precedence" and who == arg:
+            armed = True
+        if who != rule:
+            continue
+        if kind == "spacing":
+            if last is not None and t - last < arg - 1e-9:
+                return t
+            last = t
+        elif kind == "absence":
+            if any(e < 0 or t + 1e-9 < e for e in entries.values()):
+                return t
+        else:
+            if not armed:
+                return t
+            armed = False
+    return None
+
+
+def violation(arbc, app_dir, inputs, prop, work):
+    """The number of messages into the port up to the delivery at which the run violates
+    `prop`; None when it does not."""
     inputs_file = os.path.join(work, "inputs.jsonl")
     trace_file = os.path.join(work, "trace.jsonl")
     with open(inputs_file, "w") as f:
@@ -107,11 +151,8 @@ def violation(arbc, app_dir, inputs, rule, window, work):
         raise RuntimeError(f"arbc run exited {r.returncode}: {r.stderr}")
     with open(trace_file) as f:
         steps = [json.loads(line) for line in f]
-    times = [s["t"] for s in steps if s.get("type") == "deliver" and s.get("connection") == rule]
-    for a, b in zip(times, times[1:]):
-        if b - a < window - 1e-9:
-            return sum(1 for m in inputs if m["t"] <= b + 1e-9)
-    return None
+    at = first_violation(steps, prop)
+    return None if at is None else sum(1 for m in inputs if m["t"] <= at + 1e-9)
 
 
 def main():
@@ -121,16 +162,19 @@ def main():
     work = tempfile.mkdtemp(prefix="arbc-temporal-diff.")
     counts = {"runs": 0, "violating runs": 0, "apps": 0}
     outcomes = {}
+    shapes = {}  # (shape, outcome) -> apps
     contradictions = []
     index = 0
     while counts["runs"] < cases:
         index += 1
-        spec_text, sources, rule, window = random_app(rng, index)
+        spec_text, sources, prop = random_app(rng, index)
+        rule = prop[1]
         spec = os.path.join(work, f"diff{index}.spec")
         with open(spec, "w") as f:
             f.write(spec_text)
         outcome, bound = verdict(arbc, spec)
         outcomes[outcome] = outcomes.get(outcome, 0) + 1
+        shapes[prop[0], outcome] = shapes.get((prop[0], outcome), 0) + 1
         counts["apps"] += 1
         # Built without the proof (which refuses a violated property): the same artifacts.
         app_dir = os.path.join(work, f"build{index}")
@@ -141,8 +185,7 @@ def main():
         for _ in range(RUNS_PER_APP):
             inputs = random_inputs(rng, sources, "S" + rule[1:])
             counts["runs"] += 1
-            steps = violation(arbc, os.path.join(app_dir, f"diff{index}"), inputs, rule, window,
-                              work)
+            steps = violation(arbc, os.path.join(app_dir, f"diff{index}"), inputs, prop, work)
             if steps is None:
                 continue
             counts["violating runs"] += 1
@@ -151,11 +194,12 @@ def main():
                 kept = os.path.join(work, f"contradiction{len(contradictions) + 1}.jsonl")
                 with open(kept, "w") as f:
                     f.writelines(json.dumps(m) + "\n" for m in inputs)
-                contradictions.append(f"{spec}: {outcome} (bound {bound}), but {rule} delivered "
-                                      f"twice within {window} s after {steps} messages "
-                                      f"({kept})")
-    print(f"{counts['apps']} apps, {counts['runs']} runs; verdicts {outcomes}; runs that "
-          f"violate their property: {counts['violating runs']}")
+                contradictions.append(f"{spec}: {outcome} (bound {bound}), but the run violates "
+                                      f"{prop[0]} after {steps} messages ({kept})")
+    print(f"{counts['apps']} apps, {counts['runs']} runs; runs that violate their property: "
+          f"{counts['violating runs']}; verdicts:")
+    for (shape, outcome), n in sorted(shapes.items()):
+        print(f"  {shape:<11} {outcome:<18} {n}")
     for c in contradictions:
         print("CONTRADICTION:", c)
     if contradictions or "--keep" in sys.argv:
