@@ -190,6 +190,20 @@ TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
   EXPECT_EQ(s.drops(DropReason::NotSelected), 2u);
 }
 
+// In doubles 0.2 + 0.1 > 0.3; the proof's reals say a 0.1 s throttle after a delivery at
+// 0.2 s has ended at 0.3 s, and so must the runtime (core/instant.h).
+TEST(MessagePathTest, AThrottlePeriodEndsAtItsEndDespiteRounding) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("rule", "Src.x", "Sink.x", "true").throttle = 0.1;
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 0.2, "Src", "x", Value(1));
+  TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));
+  rt->advance(1);
+  EXPECT_EQ(TestApp::sink(*rt).got.size(), 2u);
+}
+
 TEST(MessagePathTest, NoValueIsADropNotAnError) {
   TestApp t;
   t.module("Src", {"out x: list<int>"});
