@@ -373,6 +373,8 @@ bool parse_json(std::string_view text, Json* root, std::string* err) {
     size_t colon = what.find(": ", what.find("parse error"));
     std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
     *err = "not valid JSON at " + position_of(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + detail;
+  } catch (const Json::out_of_range& e) {  // a number beyond a double's range, such as 1e999
+    *err = std::string("not valid JSON: ") + e.what() + " (beyond the range of a double)";
   }
   return false;
 }

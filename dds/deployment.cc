@@ -108,6 +108,9 @@ bool parse_deployment(std::string_view text, const std::string& path, Deployment
     *error = path + ":" + line_column(text, e.byte == 0 ? 0 : e.byte - 1) + ": not valid JSON (" +
              (cut == std::string::npos ? what : what.substr(cut)) + ")";
     return false;
+  } catch (const Json::out_of_range& e) {  // a number beyond a double's range, such as 1e999
+    *error = path + ": not valid JSON (" + e.what() + ": beyond the range of a double)";
+    return false;
   }
   if (!root.is_object()) {
     *error = path + ": expected a JSON object with the keys domain, ros2, topics, types, qos";
