@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "verify/temporal/constraint_expr.h"
+
 namespace arbc::verify {
 
 PortSolver::PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_point deadline)
@@ -32,26 +34,11 @@ PortSolver::PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_poi
 }
 
 z3::expr PortSolver::encode(const Constraint& c) {
-  switch (c.op) {
-    case Constraint::Op::True:
-      return ctx_.bool_val(true);
-    case Constraint::Op::False:
-      return ctx_.bool_val(false);
-    case Constraint::Op::Event: {
-      auto it = std::lower_bound(scope_.events.begin(), scope_.events.end(), c.event);
-      // Every event of the scope's formulas is in scope_.events (port_scope.cc collects them).
-      return event_vars_[static_cast<size_t>(it - scope_.events.begin())];
-    }
-    case Constraint::Op::Not:
-      return !encode(c.args[0]);
-    case Constraint::Op::And:
-    case Constraint::Op::Or: {
-      z3::expr_vector args(ctx_);
-      for (const Constraint& a : c.args) args.push_back(encode(a));
-      return c.op == Constraint::Op::And ? z3::mk_and(args) : z3::mk_or(args);
-    }
-  }
-  return ctx_.bool_val(false);
+  return temporal::constraint_expr(c, ctx_, [this](const std::string& event) {
+    auto it = std::lower_bound(scope_.events.begin(), scope_.events.end(), event);
+    // Every event of the scope's formulas is in scope_.events (port_scope.cc collects them).
+    return event_vars_[static_cast<size_t>(it - scope_.events.begin())];
+  });
 }
 
 Answer PortSolver::run(const z3::expr_vector& assumptions) {
