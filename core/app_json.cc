@@ -313,6 +313,16 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   return read_location(j, p, &t->loc, err);
 }
 
+// `{"event": .., "port": .., "after": RULE, "until": RULE}`, `until` optional
+// (docs/app-json.md#assumptions).
+bool read_assumption(const Json& j, const std::string& p, Assumption* a, std::string* err) {
+  if (!get_string(j, p, "event", &a->event, err) || !get_string(j, p, "port", &a->port, err) ||
+      !get_string(j, p, "after", &a->after, err))
+    return false;
+  if (!opt_string(j, p, "until", &a->until, err)) return false;
+  return read_location(j, p, &a->loc, err);
+}
+
 // A resource: its name, its ports and, optionally, the predicate saying which commands use it.
 bool read_resource(const Json& j, const std::string& p, Resource* res, std::string* err) {
   if (!get_string(j, p, "name", &res->name, err) || !string_list(j, p, "ports", &res->ports, err))
@@ -341,7 +351,8 @@ std::optional<App> read_app(const Json& root, std::string* err) {
                        read_exclusive_group, err) &&
             read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
             read_array(root, r, "", "resources", false, &app.resources, read_resource, err) &&
-            read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err);
+            read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err) &&
+            read_array(root, r, "", "assumptions", false, &app.assumptions, read_assumption, err);
   if (!ok) return std::nullopt;
   return app;
 }

@@ -101,6 +101,29 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   EXPECT_NE(load_error(bad).find("temporal[2]"), std::string::npos);
 }
 
+// Environment assumptions (docs/app-json.md#assumptions) round-trip, `until` optional; none
+// writes no `assumptions` key.
+TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
+  App app = small_app();
+  EXPECT_EQ(to_app_json(app).find("\"assumptions\""), std::string::npos);
+  app.assumptions.push_back({"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}});
+  app.assumptions.push_back({"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}});
+  std::string text = to_app_json(app);
+  std::string err;
+  std::optional<App> back = from_app_json(text, &err);
+  ASSERT_TRUE(back) << err;
+  ASSERT_EQ(back->assumptions.size(), 2u);
+  EXPECT_EQ(back->assumptions[0].event, "e_face");
+  EXPECT_EQ(back->assumptions[0].after, "track");
+  EXPECT_EQ(back->assumptions[0].until, "search");
+  EXPECT_EQ(back->assumptions[1].until, "");
+  EXPECT_EQ(back->assumptions[1].loc.line, 13);
+  EXPECT_EQ(to_app_json(*back), text);
+  std::string bad = text;
+  bad.replace(bad.find("\"after\""), 7, "\"later\"");
+  EXPECT_NE(load_error(bad).find("assumptions[0]"), std::string::npos);
+}
+
 // One representation of a constraint: its text (schema version 2 dropped the tree).
 TEST(AppJsonTest, AConstraintIsItsTextOnly) {
   std::string text = to_app_json(small_app());

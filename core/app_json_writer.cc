@@ -161,6 +161,23 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
   }
 }
 
+// The `assumptions` section (environment assumptions), written only when there are some.
+void write_assumptions(JsonWriter& w, const std::vector<Assumption>& assumptions) {
+  if (assumptions.empty()) return;
+  w.key("assumptions");
+  w.begin_array();
+  for (const Assumption& a : assumptions) {
+    w.begin_object();
+    w.member("event", a.event);
+    w.member("port", a.port);
+    w.member("after", a.after);
+    if (!a.until.empty()) w.member("until", a.until);
+    write_location(w, a.loc);
+    w.end_object();
+  }
+  w.end_array();
+}
+
 }  // namespace
 
 std::string to_app_json(const App& app) {
@@ -223,6 +240,7 @@ std::string to_app_json(const App& app) {
   w.end_array();
   write_resources(w, app.resources);
   write_temporal(w, app.temporal);
+  write_assumptions(w, app.assumptions);
   w.end_object();
   return w.take() + "\n";
 }

@@ -156,6 +156,18 @@ struct TemporalProperty {
 // "spacing", "absence", "precedence": the `kind` in app.json and verify's JSON.
 const char* temporal_kind_name(TemporalProperty::Kind k);
 
+// An environment assumption `assume EVENT only after AFTER [until UNTIL];`
+// (docs/language.md#environment-assumptions): at every decision of a message into `port`, the
+// port's container holds EVENT (an event only feeds set) only if rule `after` has delivered and,
+// when `until` is not empty, rule `until` has not delivered since. Both rules go into `port`.
+struct Assumption {
+  std::string event;
+  std::string port;  // "Module.port"
+  std::string after;
+  std::string until;  // empty: EVENT may stay once `after` has delivered
+  SourceLocation loc;
+};
+
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
 // uses the resource, for one message or two (docs/checks.md#resource).
 struct Resource {
@@ -179,6 +191,7 @@ struct App {
   std::vector<ExclusiveGroup> exclusive_groups;
   std::vector<Invariant> invariants;
   std::vector<TemporalProperty> temporal;
+  std::vector<Assumption> assumptions;
   std::vector<Resource> resources;
 
   const Module* find_module(std::string_view name) const;

@@ -27,6 +27,7 @@ decl
   | invariantDecl
   | neverDecl
   | onlyAfterDecl
+  | assumeDecl
   | arbitrateDecl
   | connectDecl
   | assertDecl
@@ -52,6 +53,10 @@ invariantDecl    : 'invariant' expr ';' ;
 // `only put after take;`.
 neverDecl        : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
 onlyAfterDecl    : 'only' ID 'after' ID ';' ;
+// An environment assumption (docs/language.md#environment-assumptions): the feeds make EVENT
+// present only after a delivery of the first rule and, with `until`, absent after a delivery of
+// the second until the first delivers again: `assume e_taken only after take until put;`.
+assumeDecl       : 'assume' ID 'only' 'after' ID ('until' ID)? ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;

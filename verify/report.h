@@ -110,6 +110,9 @@ struct TemporalResult {
   // Violated: the length of the (shortest) trace.
   int bound = 0;
   std::string proof;             // Proved only: why, in spec terms
+  int induction_k = 0;           // Proved by k-induction (verify/temporal/induction.h): its k
+  // The environment assumptions the verdict is under (those about the port), printed with it.
+  std::vector<model::Assumption> assumptions;
   std::vector<TraceStep> trace;  // Violated only
   // The trace as a test of the app that `arbc test` runs (verify/temporal/counterexample.h);
   // nullopt when some step has no message to replay it with (`not_replayable` says why).

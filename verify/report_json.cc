@@ -120,6 +120,15 @@ Json temporal_json(const TemporalResult& t) {
   j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
   j["bound"] = t.bound;
   j["proof"] = t.proof.empty() ? Json(nullptr) : Json(t.proof);
+  j["induction_k"] = t.induction_k ? Json(t.induction_k) : Json(nullptr);
+  // The environment assumptions the verdict is under (docs/language.md#environment-assumptions).
+  j["assumptions"] = Json::array();
+  for (const model::Assumption& a : t.assumptions) {
+    j["assumptions"].push_back({{"event", a.event},
+                                {"after", a.after},
+                                {"until", a.until.empty() ? Json(nullptr) : Json(a.until)},
+                                {"location", location_json(a.loc)}});
+  }
   j["replayed"] = t.replayed;
   j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
   j["trace"] = Json::array();

@@ -310,6 +310,23 @@ struct TemporalDecl {
   const Rule* other_decl = nullptr;  // Precedence
 };
 
+// An environment assumption (docs/language.md#environment-assumptions),
+// `assume EVENT only after AFTER [until UNTIL];`: at every decision of a message into the port
+// both rules go into, EVENT (set only by feeds) is present only if AFTER has delivered and,
+// with `until`, UNTIL has not delivered since.
+struct AssumeDecl {
+  std::string event;
+  Loc event_loc;
+  std::string after;
+  Loc after_loc;
+  std::string until;  // empty: no `until`
+  Loc until_loc;
+  Loc loc;  // the `assume` keyword
+  // sema:
+  const Rule* after_decl = nullptr;  // null: reported, lowering skips it
+  const Rule* until_decl = nullptr;
+};
+
 // `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
 // delivered value bound to `emitted`, says which commands use it (all, without `when`).
 struct ResourceDecl {
@@ -408,6 +425,7 @@ struct Spec {
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
   std::vector<TemporalDecl> temporal;
+  std::vector<AssumeDecl> assumptions;
   std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)

@@ -479,6 +479,8 @@ class Builder {
       spec.temporal.push_back(never_decl(c));
     } else if (auto* c = ctx->onlyAfterDecl()) {
       spec.temporal.push_back(only_after_decl(c));
+    } else if (auto* c = ctx->assumeDecl()) {
+      spec.assumptions.push_back(assume_decl(c));
     } else if (auto* c = ctx->resourceDecl()) {
       spec.resources.push_back(resource_decl(c));
     } else if (auto* c = ctx->testDecl()) {
@@ -666,6 +668,21 @@ class Builder {
     n.other = tx(c->ID(1));
     n.other_loc = loc(c->ID(1));
     return n;
+  }
+
+  // assumeDecl : 'assume' ID 'only' 'after' ID ('until' ID)? ';' ;
+  AssumeDecl assume_decl(ArbcParser::AssumeDeclContext* c) {
+    AssumeDecl a;
+    a.loc = loc(c->getStart());
+    a.event = tx(c->ID(0));
+    a.event_loc = loc(c->ID(0));
+    a.after = tx(c->ID(1));
+    a.after_loc = loc(c->ID(1));
+    if (c->ID().size() > 2) {
+      a.until = tx(c->ID(2));
+      a.until_loc = loc(c->ID(2));
+    }
+    return a;
   }
 
   // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file

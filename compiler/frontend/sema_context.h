@@ -112,6 +112,11 @@ class Sema {
   void check_absence_event(ast::TemporalDecl& n);
   void check_precedence(ast::TemporalDecl& n);
 
+  // ---- environment assumptions (sema_assume.cc) ----
+  // `assume EVENT only after RULE [until RULE];`: a feed-owned event, two rules of one port.
+  void check_assume(ast::AssumeDecl& a);
+  const ast::Rule* assume_rule(const std::string& name, const ast::Loc& loc);
+
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.
   void check_tests();

@@ -52,6 +52,8 @@ const char* describe_rule(size_t rule) {
       return "the `never` property";
     case ArbcParser::RuleOnlyAfterDecl:
       return "the `only ... after` property";
+    case ArbcParser::RuleAssumeDecl:
+      return "the `assume` declaration";
     case ArbcParser::RuleResourceDecl:
       return "the `resource` declaration";
     case ArbcParser::RuleStmt:
@@ -86,7 +88,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only"};
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only", "assume"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

@@ -41,6 +41,7 @@ std::optional<std::pair<ast::Loc, std::string>> first_non_test(const ast::Spec& 
   if (!s.connects.empty()) found.push_back({s.connects[0].loc, "a `connect`"});
   if (!s.asserts.empty()) found.push_back({s.asserts[0].loc, "an assertion"});
   if (!s.temporal.empty()) found.push_back({s.temporal[0].loc, "a property over time"});
+  if (!s.assumptions.empty()) found.push_back({s.assumptions[0].loc, "an environment assumption"});
   if (found.empty()) return std::nullopt;
   return *std::min_element(found.begin(), found.end(), [](const auto& a, const auto& b) {
     return std::tie(a.first.line, a.first.column) < std::tie(b.first.line, b.first.column);

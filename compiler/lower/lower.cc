@@ -94,6 +94,11 @@ class Lowerer {
       t.loc = n.loc;
       app.temporal.push_back(std::move(t));
     }
+    for (const ast::AssumeDecl& a : spec_.assumptions) {
+      if (!a.after_decl) continue;  // sema reported it
+      app.assumptions.push_back(
+          {a.event, a.after_decl->port->port.qualified(), a.after, a.until, a.loc});
+    }
     for (const ast::ResourceDecl& r : spec_.resources) {
       model::Resource res;
       res.name = r.name;

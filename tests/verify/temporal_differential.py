@@ -8,6 +8,11 @@ EVENT;`, precedence `only RULE after OTHER;`), verified with `arbc verify --form
 random input timings for each app, run on the runtime in simulated time (`arbc run --inputs`,
 `--trace`). Whenever a run violates the property within a number of messages into the port
 that the bound covers, the checker must not have said "proved" or "holds up to the bound".
+Some apps (two rules or more) carry an environment assumption `assume e1 only after RULE
+[until OTHER];`; their runs are made to keep it (a status message that reports e1 where the
+assumption forbids it stops reporting it, and the run is repeated), since the checker speaks
+only of such environments. The test fails unless it sees violations, "holds up to the bound",
+proofs by k-induction and verdicts under assumptions.
 
 usage: temporal_differential.py ARBC CASES [SEED] [--keep]   (CASES: runs in all; exit 0 when
 none contradicts the checker, 1 otherwise; the work directory is kept when a case contradicts
@@ -69,7 +74,15 @@ def random_app(rng, index):
     else:
         prop = ("precedence", rule, f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}")
         lines.append(f"only {rule} after {prop[2]};")
-    return "\n".join(lines) + "\n", sources, prop
+    assumption = None
+    if n_rules > 1 and rng.random() < 0.4:
+        # `assume e1 only after rA [until rB];`: the checker explores only such environments,
+        # and the runs are made to keep it (keep_assumption).
+        after, until = rng.sample([f"r{j}" for j in range(1, n_rules + 1)], 2)
+        until = until if rng.random() < 0.7 else None
+        assumption = ("e1", after, until)
+        lines.append(f"assume e1 only after {after}" + (f" until {until}" if until else "") + ";")
+    return "\n".join(lines) + "\n", sources, prop, assumption
 
 
 def random_inputs(rng, sources, rule_source):
@@ -91,8 +104,55 @@ def random_inputs(rng, sources, rule_source):
     return out
 
 
+def decisions(steps):
+    """Per decision into Dst.y (a rule's delivery or drop, a feed's message), in order: its
+    time, its connection and the entries of e1 in the port as they are at the decision."""
+    entries = {}
+    for s in steps:
+        if s.get("type") == "event" and s.get("port") == "Dst.y" and s.get("event") == "e1":
+            if s["op"] == "set":
+                entries[s["owner"]] = s.get("expiry", -1)
+            else:
+                entries.pop(s["owner"], None)
+        elif s.get("type") in ("deliver", "drop") and (
+                s["connection"].startswith("r") or s["connection"].startswith("feed_")):
+            present = any(e < 0 or s["t"] + 1e-9 < e for e in entries.values())
+            yield s["t"], s["connection"], s["type"] == "deliver", present
+
+
+def broken_at(steps, assumption):
+    """The time of the first decision at which the run breaks the assumption; None if none."""
+    _, after, until = assumption
+    armed = False
+    for t, who, delivered, present in decisions(steps):
+        if present and not armed:
+            return t
+        if delivered and who == after:
+            armed = True
+        if delivered and who == until:
+            armed = False
+    return None
+
+
+def keep_assumption(arbc, app_dir, inputs, assumption, work):
+    """The inputs changed until the run keeps the assumption: the status message that last
+    reported e1 before the decision that broke it no longer does (at most len(inputs) times);
+    the trace of the run that keeps it."""
+    for _ in range(len(inputs) + 1):
+        steps = run_trace(arbc, app_dir, inputs, work)
+        at = broken_at(steps, assumption)
+        if at is None:
+            return steps
+        reported = [m for m in inputs if m["port"] == "Status.s" and "e1" in m["value"]
+                    and m["t"] <= at + 1e-9]
+        if not reported:
+            raise RuntimeError(f"{app_dir}: e1 present at {at} with no status reporting it")
+        reported[-1]["value"].remove("e1")
+    raise RuntimeError(f"{app_dir}: could not make the run keep {assumption}")
+
+
 def verdict(arbc, spec):
-    """The property's outcome and bound from `arbc verify`."""
+    """The property's outcome, bound and k-induction's k from `arbc verify`."""
     r = subprocess.run([arbc, "verify", spec, "--format", "json", "--temporal-bound", str(BOUND)],
                        capture_output=True, text=True, timeout=120)
     if r.returncode not in (0, 1):
@@ -100,7 +160,7 @@ def verdict(arbc, spec):
     temporal = json.loads(r.stdout)["inputs"][0]["temporal"][0]
     if temporal["outcome"] == "unknown":
         print(f"{spec}: unknown: {temporal['unknown_reason']}")
-    return temporal["outcome"], temporal["bound"]
+    return temporal["outcome"], temporal["bound"], temporal.get("induction_k")
 
 
 def first_violation(steps, prop):
@@ -136,9 +196,8 @@ def first_violation(steps, prop):
     return None
 
 
-def violation(arbc, app_dir, inputs, prop, work):
-    """The number of messages into the port up to the delivery at which the run violates
-    `prop`; None when it does not."""
+def run_trace(arbc, app_dir, inputs, work):
+    """The trace of the run of `inputs` on the runtime in simulated time."""
     inputs_file = os.path.join(work, "inputs.jsonl")
     trace_file = os.path.join(work, "trace.jsonl")
     with open(inputs_file, "w") as f:
@@ -150,7 +209,12 @@ def violation(arbc, app_dir, inputs, prop, work):
     if r.returncode != 0:
         raise RuntimeError(f"arbc run exited {r.returncode}: {r.stderr}")
     with open(trace_file) as f:
-        steps = [json.loads(line) for line in f]
+        return [json.loads(line) for line in f]
+
+
+def violation(steps, inputs, prop):
+    """The number of messages into the port up to the delivery at which the run violates
+    `prop`; None when it does not."""
     at = first_violation(steps, prop)
     return None if at is None else sum(1 for m in inputs if m["t"] <= at + 1e-9)
 
@@ -160,21 +224,23 @@ def main():
     arbc, cases = args[0], int(args[1])
     rng = random.Random(int(args[2]) if len(args) > 2 else 19)
     work = tempfile.mkdtemp(prefix="arbc-temporal-diff.")
-    counts = {"runs": 0, "violating runs": 0, "apps": 0}
+    counts = {"runs": 0, "violating runs": 0, "apps": 0, "runs under an assumption": 0}
     outcomes = {}
     shapes = {}  # (shape, outcome) -> apps
     contradictions = []
     index = 0
     while counts["runs"] < cases:
         index += 1
-        spec_text, sources, prop = random_app(rng, index)
+        spec_text, sources, prop, assumption = random_app(rng, index)
         rule = prop[1]
         spec = os.path.join(work, f"diff{index}.spec")
         with open(spec, "w") as f:
             f.write(spec_text)
-        outcome, bound = verdict(arbc, spec)
-        outcomes[outcome] = outcomes.get(outcome, 0) + 1
-        shapes[prop[0], outcome] = shapes.get((prop[0], outcome), 0) + 1
+        outcome, bound, induction_k = verdict(arbc, spec)
+        said = outcome + (f" (k-induction)" if induction_k else "")
+        key = (prop[0] + (" assuming" if assumption else ""), said)
+        outcomes[said] = outcomes.get(said, 0) + 1
+        shapes[key] = shapes.get(key, 0) + 1
         counts["apps"] += 1
         # Built without the proof (which refuses a violated property): the same artifacts.
         app_dir = os.path.join(work, f"build{index}")
@@ -185,7 +251,13 @@ def main():
         for _ in range(RUNS_PER_APP):
             inputs = random_inputs(rng, sources, "S" + rule[1:])
             counts["runs"] += 1
-            steps = violation(arbc, os.path.join(app_dir, f"diff{index}"), inputs, prop, work)
+            built = os.path.join(app_dir, f"diff{index}")
+            if assumption:
+                trace = keep_assumption(arbc, built, inputs, assumption, work)
+                counts["runs under an assumption"] += 1
+            else:
+                trace = run_trace(arbc, built, inputs, work)
+            steps = violation(trace, inputs, prop)
             if steps is None:
                 continue
             counts["violating runs"] += 1
@@ -196,10 +268,11 @@ def main():
                     f.writelines(json.dumps(m) + "\n" for m in inputs)
                 contradictions.append(f"{spec}: {outcome} (bound {bound}), but the run violates "
                                       f"{prop[0]} after {steps} messages ({kept})")
-    print(f"{counts['apps']} apps, {counts['runs']} runs; runs that violate their property: "
+    print(f"{counts['apps']} apps, {counts['runs']} runs ({counts['runs under an assumption']} "
+          f"under an assumption); runs that violate their property: "
           f"{counts['violating runs']}; verdicts:")
     for (shape, outcome), n in sorted(shapes.items()):
-        print(f"  {shape:<11} {outcome:<18} {n}")
+        print(f"  {shape:<20} {outcome:<30} {n}")
     for c in contradictions:
         print("CONTRADICTION:", c)
     if contradictions or "--keep" in sys.argv:
@@ -208,8 +281,13 @@ def main():
         return 1
     # The test must be able to fail: it only means something if runs do violate properties
     # and the checker says "proved" or "holds" of some apps as well as "violated" of others.
-    said_holds = outcomes.get("proved", 0) + outcomes.get("holds-up-to-bound", 0)
-    if counts["violating runs"] < cases // 10 or not said_holds or not outcomes.get("violated"):
+    # And it must see each kind of "holds": up to the bound, proved by k-induction, and verdicts
+    # under assumptions.
+    said_holds = sum(n for o, n in outcomes.items() if o not in ("violated", "unknown"))
+    kinds_seen = (outcomes.get("holds-up-to-bound") and outcomes.get("proved (k-induction)")
+                  and any(shape.endswith("assuming") for shape, _ in shapes))
+    if (counts["violating runs"] < cases // 10 or not outcomes.get("violated") or not kinds_seen
+            or not said_holds):
         print("too few violating runs or verdicts of one kind only: the generator no longer "
               "exercises the checker")
         return 1

@@ -2,6 +2,7 @@
 
 #include "verify/temporal/bmc.h"
 #include "verify/temporal/constraint_expr.h"
+#include "verify/temporal/induction.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -48,6 +49,7 @@ std::optional<TemporalResult> check_absence(const model::App& app, const model::
   // that the replay exposes.
   result.proof = decision_proof(*shape, *shape->connections[static_cast<size_t>(r)], p.event, ctx);
   if (!result.proof.empty()) result.outcome = TemporalResult::Outcome::Proved;
+  try_induction(result, *shape, violation, ctx, deadline);
   return result;
 }
 

@@ -76,16 +76,20 @@ TEST(Absence, AnEventNothingSetsIntoThePortIsNeverPresent) {
             Outcome::HoldsToBound);
 }
 
-TEST(Absence, WhatOnlyTimeKeepsHoldsToTheBoundButIsNotProved) {
+TEST(Absence, WhatOnlyTimeKeepsIsProvedByKInductionNotAtOneDecision) {
   // track inside its own hold: its constraint does not exclude act_track (present at its
   // decision when it delivered less than 1 s ago), so no single decision proves it; a throttle
-  // of 1 s keeps every run clean, a shorter one does not.
+  // of 1 s keeps every run clean, and k-induction proves it (from any state the hold ends one
+  // hold after the last delivery, which the throttle outlasts); a shorter one does not.
   model::App app = testing::table_clean_model();
   // Without its events (the status feeds' flags lapse after 0.5 s, which would need more
   // messages to refresh them than the bound gives).
   testing::connection(app, "track").constraint = testing::parse("true");
   testing::connection(app, "track").throttle = 1.0;
-  EXPECT_EQ(check(app, "HeadControl.gaze", "track", "act_track").outcome, Outcome::HoldsToBound);
+  TemporalResult proved = check(app, "HeadControl.gaze", "track", "act_track");
+  EXPECT_EQ(proved.outcome, Outcome::Proved);
+  EXPECT_EQ(proved.induction_k, 1);
+  EXPECT_NE(proved.proof.find("k-induction with k = 1"), std::string::npos) << proved.proof;
   testing::connection(app, "track").throttle = 0.5;
   TemporalResult r = check(app, "HeadControl.gaze", "track", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);

@@ -49,6 +49,7 @@ TemporalResult bounded_search(const PortShape& shape, const model::TemporalPrope
                               DataQuery* data, Clock::time_point deadline) {
   TemporalResult result;
   result.property = p;
+  for (const PortShape::Assumed& a : shape.assumptions) result.assumptions.push_back(a.assumption);
   // One solver for all n: step n is added for good, the violation at n inside a push/pop, so
   // Z3 keeps what it learnt about the first steps (a fresh solver per n redid it every time).
   z3::solver solver(ctx);

@@ -1,5 +1,6 @@
 #include "verify/temporal/confirm.h"
 
+#include "verify/temporal/assumption.h"
 #include "verify/temporal/judge.h"
 #include "verify/temporal/property.h"
 
@@ -45,6 +46,15 @@ void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
     findings.push_back(internal_replay_error(r, "the replay did not run (" + err + ")"));
     unknown(r, "internal error in the replay");
     return;
+  }
+  for (const model::Assumption& a : r.assumptions) {
+    std::string broken;
+    if (!replay_respects(a, *records, &broken)) {
+      findings.push_back(internal_replay_error(
+          r, "the replay breaks the assumption `" + assumption_words(a) + "`: " + broken));
+      unknown(r, "internal error in the replay");
+      return;
+    }
   }
   std::string seen;
   if (!replay_violates(r.property, *records, &seen)) {

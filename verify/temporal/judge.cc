@@ -93,6 +93,30 @@ bool precedence(const model::TemporalProperty& p, const std::vector<ReplayRecord
 
 }  // namespace
 
+// The assumed event's presence at each delivery into the port (a decision the records show)
+// against the assumption's monitor: the replay stands in for the feeds, so it must keep what
+// the spec assumes of them, or its violation would be one the environment never produces.
+bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>& records,
+                     std::string* broken) {
+  Presence event;
+  bool armed = false;
+  for (const ReplayRecord& r : records) {
+    if (r.kind != Kind::Deliver) {
+      if (r.event == a.event) event.apply(r);
+      continue;
+    }
+    if (!armed && event.present(r.t)) {
+      *broken = a.event + " was present when '" + r.connection + "' delivered at " +
+                time_text(r.t) + "s, before " + a.after + " delivered" +
+                (a.until.empty() ? "" : " (or after " + a.until + " did)");
+      return false;
+    }
+    if (r.connection == a.after) armed = true;
+    if (!a.until.empty() && r.connection == a.until) armed = false;
+  }
+  return true;
+}
+
 bool spaced_less_than(const std::vector<double>& times, double window) {
   for (size_t i = 1; i < times.size(); ++i)
     if (!reached(times[i] - times[i - 1], window)) return true;

@@ -16,6 +16,11 @@ namespace arbc::verify::temporal {
 bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
                      std::string* seen);
 
+// True when the replay kept the environment assumption `a` at each delivery into the port;
+// otherwise false and *broken says where it did not.
+bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>& records,
+                     std::string* broken);
+
 // Whether two of `times` (ascending) are less than `window` apart.
 bool spaced_less_than(const std::vector<double>& times, double window);
 

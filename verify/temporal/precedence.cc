@@ -1,17 +1,17 @@
 #include "verify/temporal/precedence.h"
 
 #include "verify/temporal/bmc.h"
+#include "verify/temporal/induction.h"
 
 namespace arbc::verify::temporal {
 namespace {
 
 // The last of `n` steps is a delivery of rule a while a is not "armed": armed after a step
 // that b delivered, disarmed by a delivery of a (one connection runs per step, so never both).
-// Built as one nested term, which Z3 shares, so it grows linearly with n.
-z3::expr violation(const Unrolling& u, int a, int b, int n, z3::context& ctx) {
-  z3::expr armed = ctx.bool_val(false);
-  for (int i = 0; i < n - 1; ++i) armed = u.delivers(b, i) || (armed && !u.delivers(a, i));
-  return u.delivers(a, n - 1) && !armed;
+// The monitor is the unrolling's (Unrolling::armed_before), so an assumption that follows the
+// same two rules shares its state in k-induction's step case.
+z3::expr violation(const Unrolling& u, int a, int b, int n) {
+  return u.delivers(a, n - 1) && !u.armed_before(b, a, n - 1);
 }
 
 }  // namespace
@@ -27,9 +27,10 @@ std::optional<TemporalResult> check_precedence(const model::App& app,
   if (a < 0) return std::nullopt;
   int b = property_rule(*shape, p, p.other, err);
   if (b < 0) return std::nullopt;
-  return bounded_search(
-      *shape, p, 1, bound, [&](const Unrolling& u, int n) { return violation(u, a, b, n, ctx); },
-      ctx, data, deadline);
+  ViolationAt at = [&](const Unrolling& u, int n) { return violation(u, a, b, n); };
+  TemporalResult result = bounded_search(*shape, p, 1, bound, at, ctx, data, deadline);
+  try_induction(result, *shape, at, ctx, deadline);
+  return result;
 }
 
 }  // namespace arbc::verify::temporal

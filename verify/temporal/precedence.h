@@ -1,7 +1,7 @@
 // The precedence property `only RULE after OTHER;` (docs/design.md#properties-over-time): is
 // there a run in which RULE delivers without a delivery of OTHER since its previous delivery
 // (or since the start, for its first)? Bounded model checking over 1, 2, ... messages into the
-// port both rules go into; no unbounded argument (the verdict is at best "holds up to N").
+// port both rules go into, then k-induction for an unbounded proof (verify/temporal/induction.h).
 #pragma once
 
 #include <z3++.h>

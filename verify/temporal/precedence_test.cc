@@ -1,8 +1,9 @@
 // The precedence property `only RULE after OTHER;` (docs/design.md#properties-over-time) on
 // the table_clean model: `only put after take` is refuted because the arm's status feed may
 // report e_taken at any time (the abstract environment), with or without put's `e_taken`
-// guard; a port where only time links the two rules holds to the bound, and loses it when the
-// throttle that keeps it goes.
+// guard, and proved by k-induction under the assumption that the arm reports it only after a
+// take until a put; a port where only time links the two rules holds to the bound, and loses it
+// when the throttle that keeps it goes.
 #include "verify/temporal/precedence.h"
 
 #include <gtest/gtest.h>
@@ -68,7 +69,11 @@ model::App search_after_track(std::optional<double> throttle) {
 
 TEST(Precedence, HoldsToTheBoundWhereTimeLinksTheRules) {
   TemporalResult r = check(search_after_track(1.0), "HeadControl.gaze", "search", "track");
-  EXPECT_EQ(r.outcome, Outcome::HoldsToBound);  // never "proved": no unbounded argument
+  // Not proved: k-induction's any state does not link the monitor to the hold's timing (a
+  // state "search delivered after the last track, inside its hold" is not reachable with the
+  // throttle, but the step case cannot see that), so the verdict stays bounded.
+  EXPECT_EQ(r.outcome, Outcome::HoldsToBound);
+  EXPECT_EQ(r.induction_k, 0);
   EXPECT_EQ(r.bound, 6);
   EXPECT_TRUE(r.proof.empty());
 }
@@ -80,6 +85,50 @@ TEST(Precedence, TwoSearchesInsideOneHoldAreTheShortestViolation) {
   EXPECT_EQ(deliveries(r.trace, "track"), 1);
   EXPECT_EQ(deliveries(r.trace, "search"), 2);
   EXPECT_EQ(r.trace[0].connection, "track");
+}
+
+model::App with_assumption(const std::string& until) {
+  model::App app = testing::table_clean_model();
+  app.assumptions.push_back({"e_taken", "PickAndPlace.cmd", "take", until, {}});
+  return app;
+}
+
+TEST(Precedence, AnAssumptionAboutTheFeedMakesItProvedByKInduction) {
+  // put needs e_taken, which the arm reports only after a take and withdraws after a put.
+  TemporalResult r = check(with_assumption("put"), "PickAndPlace.cmd", "put", "take");
+  ASSERT_EQ(r.outcome, Outcome::Proved);
+  EXPECT_EQ(r.induction_k, 1);
+  ASSERT_EQ(r.assumptions.size(), 1u);  // printed with the verdict
+  EXPECT_EQ(r.assumptions[0].event, "e_taken");
+  EXPECT_EQ(r.bound, 6);  // the search went to the bound first
+}
+
+TEST(Precedence, WithoutUntilTheArmMayKeepReportingTakenAfterAPut) {
+  // `assume e_taken only after take;`: after one take the flag may stay, so two puts follow one
+  // take; the trace keeps the assumption (no e_taken before the take delivers).
+  TemporalResult r = check(with_assumption(""), "PickAndPlace.cmd", "put", "take");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  EXPECT_EQ(deliveries(r.trace, "take"), 1);
+  EXPECT_EQ(deliveries(r.trace, "put"), 2);
+  bool taken = false;
+  for (const TraceStep& s : r.trace) {
+    bool sets = std::find(s.set.begin(), s.set.end(), "e_taken") != s.set.end();
+    EXPECT_TRUE(!sets || taken) << "e_taken set before any take at " << s.time;
+    taken |= s.delivered && s.connection == "take";
+  }
+}
+
+TEST(Precedence, AnAssumptionNamingARuleThePortLacksIsBadInput) {
+  z3::context ctx;
+  std::string error;
+  model::App app = with_assumption("pull");  // pull goes into PullObject.cmd
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", "take"};
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  EXPECT_FALSE(check_precedence(app, p, 4, ctx, nullptr, deadline, &error));
+  EXPECT_NE(error.find("names rule 'pull', which PickAndPlace.cmd does not have"),
+            std::string::npos)
+      << error;
 }
 
 TEST(Precedence, EitherRuleMissingIsBadInput) {

@@ -4,6 +4,7 @@
 
 #include "core/join.h"
 #include "core/time_text.h"
+#include "verify/temporal/assumption.h"
 #include "verify/temporal/counterexample.h"
 #include "verify/temporal/property.h"
 
@@ -14,6 +15,16 @@ namespace {
 constexpr const char* kAssumptions =
     "    assuming: sources publish at any times; monitors accept or reject any message (data is\n"
     "    not modelled); exclusive groups and invariants are not used\n";
+
+// The spec's environment assumptions the verdict is under, one line each (none: nothing).
+std::string environment_text(const TemporalResult& r) {
+  std::string out;
+  for (const model::Assumption& a : r.assumptions) {
+    std::string where = a.loc.line ? " (line " + std::to_string(a.loc.line) + ")" : "";
+    out += "    assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
+  }
+  return out;
+}
 
 std::string property_text(const model::TemporalProperty& p) {
   std::string where = p.loc.line ? " (" + p.loc.file + ":" + std::to_string(p.loc.line) + ")" : "";
@@ -95,7 +106,7 @@ std::string temporal_text(const TemporalResult& r) {
       out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
       break;
   }
-  return out + kAssumptions;
+  return out + kAssumptions + environment_text(r);
 }
 
 }  // namespace arbc::verify::temporal

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "core/time_text.h"
+#include "verify/temporal/bmc.h"
+#include "verify/temporal/induction.h"
 #include "verify/temporal/unrolling.h"
 
 namespace arbc::verify::temporal {
@@ -27,6 +29,10 @@ z3::expr violation(const Unrolling& u, int r, int n, double window, z3::context&
   z3::expr_vector earlier(ctx);
   for (int i = 0; i < n - 1; ++i)
     earlier.push_back(u.delivers(r, i) && u.time(n - 1) - u.time(i) < w);
+  // The rule's last delivery before the first step (k-induction's any state; none from the start).
+  if (u.from_any_state())
+    earlier.push_back(u.delivered_before_start(r) &&
+                      u.time(n - 1) - u.last_delivery_before_start(r) < w);
   return u.delivers(r, n - 1) && z3::mk_or(earlier);
 }
 
@@ -40,15 +46,14 @@ std::optional<TemporalResult> check_spacing(const model::App& app, const model::
   if (!shape) return std::nullopt;
   int r = property_rule(*shape, p, p.rule, err);
   if (r < 0) return std::nullopt;
-  TemporalResult result = bounded_search(
-      *shape, p, 2, bound,
-      [&](const Unrolling& u, int n) { return violation(u, r, n, p.window, ctx); }, ctx, data,
-      deadline);
+  ViolationAt at = [&](const Unrolling& u, int n) { return violation(u, r, n, p.window, ctx); };
+  TemporalResult result = bounded_search(*shape, p, 2, bound, at, ctx, data, deadline);
   if (result.outcome != TemporalResult::Outcome::HoldsToBound) return result;
   // The search is kept even where the throttle decides: a violation it found would mean that
   // the model of the throttle and the argument disagree, and the replay would judge it.
   result.proof = throttle_proof(*shape->connections[static_cast<size_t>(r)], p.window);
   if (!result.proof.empty()) result.outcome = TemporalResult::Outcome::Proved;
+  try_induction(result, *shape, at, ctx, deadline);
   return result;
 }
 

@@ -62,20 +62,31 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
     }
   }
   shape.events.assign(events.begin(), events.end());
+  if (!add_port_assumptions(app, shape, err)) return std::nullopt;
   return shape;
 }
 
-Unrolling::Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver)
-    : shape_(shape), ctx_(ctx), solver_(solver) {
+Unrolling::Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver,
+                     Start start)
+    : shape_(shape), ctx_(ctx), solver_(solver), start_(start) {
+  start_state();
+  for (int k = 0; k < steps; ++k) add_step(k);
+}
+
+// State 0: the empty container, or (k-induction's step case) any state.
+void Unrolling::start_state() {
   has_.emplace_back();
   forever_.emplace_back();
   expiry_.emplace_back();
-  for (size_t q = 0; q < shape_.entries.size(); ++q) {  // the container starts empty
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    if (start_ == Start::AnyState) {
+      add_any_start_entry(q);
+      continue;
+    }
     has_[0].push_back(ctx_.bool_val(false));
     forever_[0].push_back(ctx_.bool_val(false));
     expiry_[0].push_back(ctx_.real_val(0));
   }
-  for (int k = 0; k < steps; ++k) add_step(k);
 }
 
 // Step k: its time, connection and accept outcome; the entries it changes; the deliveries.
@@ -83,6 +94,7 @@ void Unrolling::add_step(int k) {
   std::string s = "!" + std::to_string(k);
   t_.push_back(ctx_.real_const(("t" + s).c_str()));
   solver_.add(k == 0 ? t_[k] >= 0 : t_[k] >= t_[k - 1]);
+  if (k == 0 && start_ == Start::AnyState) constrain_any_start();
   run_.push_back(ctx_.int_const(("run" + s).c_str()));
   solver_.add(run_[k] >= 0 && run_[k] < static_cast<int>(shape_.connections.size()));
   acc_.push_back(ctx_.bool_const(("acc" + s).c_str()));
@@ -109,8 +121,12 @@ void Unrolling::add_step(int k) {
     z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
     if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
     if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
+      z3::expr period = real(ctx_, *conn.throttle);
       for (int i = 0; i < k; ++i)
-        selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= real(ctx_, *conn.throttle));
+        selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= period);
+      if (start_ == Start::AnyState)
+        selected = selected && z3::implies(delivered_before_start(static_cast<int>(c)),
+                                           t_[k] - last_delivery_before_start(static_cast<int>(c)) >= period);
     }
     solver_.add(d == selected);
     del_[k].push_back(d);
@@ -118,6 +134,7 @@ void Unrolling::add_step(int k) {
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     if (shape_.entries[q].activity) add_activity_step(q, k);
   }
+  add_assumptions(k);
 }
 
 // An entry the running connection's monitor may set or remove (must, on an accepting step).

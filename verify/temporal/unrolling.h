@@ -8,6 +8,7 @@
 
 #include <z3++.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,11 +33,22 @@ struct PortShape {
   std::vector<const model::Connection*> connections;  // rules and feeds into the port
   std::vector<Entry> entries;
   std::vector<std::string> events;  // every event in the container or a constraint, sorted
+  // The environment assumptions about this port (verify/temporal/assumption.h), each with the
+  // indices of its rules among `connections` (until: -1 when it has none).
+  struct Assumed {
+    model::Assumption assumption;
+    int after = -1, until = -1;
+  };
+  std::vector<Assumed> assumptions;
 };
 
 // The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`.
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err);
+
+// Adds to `shape` the app's assumptions about its port; false and *err when one names a rule
+// the port does not have (an app.json written by hand: bad input). verify/temporal/assumption.cc
+bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* err);
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
@@ -45,13 +57,19 @@ bool sets_into(const PortShape& shape, const std::string& event);
 
 class Unrolling {
  public:
+  // Where the steps start: the empty container at time 0 (bounded model checking), or any
+  // state at all (the step case of k-induction, verify/temporal/induction.h): free entries,
+  // free times of each rule's last delivery, free monitor states.
+  enum class Start { Empty, AnyState };
   // Adds to `solver` the constraints of `steps` steps of the port from the empty container.
-  Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver);
+  Unrolling(const PortShape& shape, int steps, z3::context& ctx, z3::solver& solver,
+            Start start = Start::Empty);
 
   // Adds one more step (incremental BMC: the steps so far stay in the solver, and a property
   // asks about the first steps() of them inside a push/pop).
   void extend() { add_step(steps()); }
   int steps() const { return static_cast<int>(t_.size()); }
+  bool from_any_state() const { return start_ == Start::AnyState; }
 
   // Connection `c` delivers at step k.
   z3::expr delivers(int c, int k) const { return del_[k][c]; }
@@ -60,6 +78,13 @@ class Unrolling {
   z3::expr present_at_decision(const std::string& event, int k) const {
     return present(event, k, t_[k]);
   }
+  // Whether the monitor "armed by a delivery of `on`, disarmed by one of `off`" (-1: never
+  // disarmed) is armed before step k: false at an empty start, a free Boolean (one per pair,
+  // shared by every formula that asks) at any state.
+  z3::expr armed_before(int on, int off, int k) const;
+  // Whether rule c delivered before step 1, and when (free at any state; false at an empty start).
+  z3::expr delivered_before_start(int c) const;
+  z3::expr last_delivery_before_start(int c) const;
   // Step k's trace line in model `m`.
   TraceStep trace_step(const z3::model& m, int k) const;
 
@@ -82,15 +107,22 @@ class Unrolling {
   void add_step(int k);
   void add_entry_step(size_t q, int k);
   void add_activity_step(size_t q, int k);
+  void start_state();                // the state before step 1 (unrolling.cc)
+  void add_any_start_entry(size_t q);  // one entry of any state (induction.cc)
+  void constrain_any_start();          // what any state says of times before t_1 (induction.cc)
+  void add_assumptions(int k);       // the environment at step k (assumption.cc)
 
   const PortShape& shape_;
   z3::context& ctx_;
   z3::solver& solver_;
+  Start start_;
   std::vector<z3::expr> t_, run_, acc_;  // per step: time, connection index, accepted
   // Per state s (0: before step 1, k+1: after step k), per entry q.
   std::vector<std::vector<z3::expr>> has_, forever_, expiry_;
   std::vector<std::vector<z3::expr>> set_, unset_;  // per step, per entry: the step's choice
   std::vector<std::vector<z3::expr>> del_;          // per step, per connection
+  // armed_before's terms per (on, off), per step (k: before step k), built as steps are asked.
+  mutable std::map<std::pair<int, int>, std::vector<z3::expr>> armed_;
 };
 
 }  // namespace arbc::verify::temporal

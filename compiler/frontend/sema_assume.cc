@@ -1,0 +1,79 @@
+// Semantic checks of environment assumptions (docs/language.md#environment-assumptions):
+// `assume EVENT only after RULE [until RULE2];` constrains what the feeds report, so EVENT must
+// be one that only feeds set (a status flag or a derived event), and the two rules must be
+// different rules of one port, the port whose runs the model checker unrolls.
+#include <string>
+#include <vector>
+
+#include "compiler/frontend/sema_context.h"
+
+namespace arbc::frontend {
+
+using namespace ast;
+
+// The one rule named `name`; null (reported) when no rule or rules of several ports have it.
+const Rule* Sema::assume_rule(const std::string& name, const Loc& loc) {
+  std::vector<const Rule*> found;
+  std::vector<std::string> all;
+  for (const ArbitrateDecl& a : spec_.arbitrations) {
+    for (const Rule& r : a.rules) {
+      all.push_back(r.name);
+      if (r.name == name) found.push_back(&r);
+    }
+  }
+  if (found.empty()) {
+    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    return nullptr;
+  }
+  if (found.size() > 1) {
+    error(loc,
+          "rule name '" + name + "' is used by " + std::to_string(found.size()) +
+              " ports; an assumption can name only a rule whose name is unique: rename one",
+          "temporal-rule");
+    return nullptr;
+  }
+  return found.front();
+}
+
+void Sema::check_assume(AssumeDecl& a) {
+  auto ev = events_.find(a.event);
+  if (ev == events_.end()) {
+    unknown(a.event_loc, "unknown event '" + a.event + "'", "unknown-event", a.event, event_names_);
+  } else if (spec_.event_symbols[ev->second].kind == EventSymbol::Kind::Manual) {
+    // An event that monitor code sets belongs to the app: assuming when it is present would
+    // assume the app's own behaviour, which is what the checker has to decide.
+    error(a.event_loc,
+          "'" + a.event +
+              "' is set by monitor code (`event " + a.event +
+              ";`), not reported by the environment; an assumption is about an event that a "
+              "feed sets: a status flag (`events from M.p { ... }`) or a derived event",
+          "assume-event");
+  }
+  a.after_decl = assume_rule(a.after, a.after_loc);
+  if (!a.until.empty()) a.until_decl = assume_rule(a.until, a.until_loc);
+  if (!a.after_decl || (!a.until.empty() && !a.until_decl) || ev == events_.end()) {
+    a.after_decl = nullptr;  // reported: lowering skips it
+    return;
+  }
+  bool bad = false;
+  if (a.until_decl == a.after_decl) {
+    error(a.until_loc,
+          "`assume " + a.event + " only after " + a.after + " until " + a.until +
+              "` names one rule twice: name the rule after which " + a.event + " is withdrawn",
+          "assume-pair");
+    bad = true;
+  } else if (a.until_decl && a.after_decl->port != a.until_decl->port) {
+    error(a.until_loc,
+          "'" + a.after + "' goes into " + a.after_decl->port->port.qualified() + " but '" +
+              a.until + "' into " + a.until_decl->port->port.qualified() +
+              "; an assumption relates two rules of one port (the model checker follows one "
+              "port's messages)",
+          "assume-pair");
+    bad = true;
+  }
+  if (bad || spec_.event_symbols[ev->second].kind == EventSymbol::Kind::Manual ||
+      !a.after_decl->port)
+    a.after_decl = nullptr;
+}
+
+}  // namespace arbc::frontend
