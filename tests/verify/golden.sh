@@ -82,6 +82,9 @@ golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec
 golden temporal_shapes.json repo 1 --format json tests/verify/temporal_shapes.spec
 golden temporal_shapes.sarif repo 1 --format sarif tests/verify/temporal_shapes.spec
 golden table_clean_put_mutant.txt repo 1 tests/verify/table_clean_put_mutant.spec
+# Under an environment assumption: JSON lists it with the verdict, SARIF prints it in the message.
+golden table_clean_put_mutant.json repo 1 --format json tests/verify/table_clean_put_mutant.spec
+golden table_clean_put_mutant.sarif repo 1 --format sarif tests/verify/table_clean_put_mutant.spec
 # Message data (docs/checks.md#message-data): rules of one source split by their bodies, overlaps shown
 # with a message replayed through the Lua monitors; the arm as a resource of two ports, refuted
 # by the two mutations with a concrete message.
