@@ -109,8 +109,8 @@ struct TemporalResult {
   // HoldsToBound and Proved: the largest number of messages into the port explored;
   // Violated: the length of the (shortest) trace.
   int bound = 0;
-  std::string proof;             // Proved only: why, in spec terms
-  int induction_k = 0;           // Proved by k-induction (verify/temporal/induction.h): its k
+  std::string proof;    // Proved only: why, in spec terms
+  int induction_k = 0;  // Proved by k-induction (verify/temporal/induction.h): its k
   // The environment assumptions the verdict is under (those about the port), printed with it.
   std::vector<model::Assumption> assumptions;
   std::vector<TraceStep> trace;  // Violated only

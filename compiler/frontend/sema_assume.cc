@@ -43,8 +43,7 @@ void Sema::check_assume(AssumeDecl& a) {
     // An event that monitor code sets belongs to the app: assuming when it is present would
     // assume the app's own behaviour, which is what the checker has to decide.
     error(a.event_loc,
-          "'" + a.event +
-              "' is set by monitor code (`event " + a.event +
+          "'" + a.event + "' is set by monitor code (`event " + a.event +
               ";`), not reported by the environment; an assumption is about an event that a "
               "feed sets: a status flag (`events from M.p { ... }`) or a derived event",
           "assume-event");

@@ -5,7 +5,8 @@
 namespace arbc::verify::temporal {
 
 std::string assumption_words(const model::Assumption& a) {
-  return "assume " + a.event + " only after " + a.after + (a.until.empty() ? "" : " until " + a.until);
+  return "assume " + a.event + " only after " + a.after +
+         (a.until.empty() ? "" : " until " + a.until);
 }
 
 std::vector<model::Assumption> assumptions_about(const model::App& app, const std::string& port) {

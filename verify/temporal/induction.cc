@@ -51,8 +51,8 @@ void Unrolling::add_any_start_entry(size_t q) {
   if (e.activity) {
     solver_.add(has == delivered_before_start(e.owner));
     if (e.lifetime) {
-      solver_.add(!forever && expiry == last_delivery_before_start(e.owner) +
-                                            real(ctx_, *e.lifetime));
+      solver_.add(!forever &&
+                  expiry == last_delivery_before_start(e.owner) + real(ctx_, *e.lifetime));
     } else {
       solver_.add(forever);
     }
@@ -100,8 +100,7 @@ void try_induction(TemporalResult& result, const PortShape& shape, const Violati
     if (answer == z3::unknown) return;  // no proof: the bounded verdict stands
     if (answer == z3::unsat) {
       std::string first = k == 1 ? "no message" : "no " + std::to_string(k) + " messages";
-      std::string held =
-          k == 1 ? "" : " that keep it for the first " + std::to_string(k - 1) + ",";
+      std::string held = k == 1 ? "" : " that keep it for the first " + std::to_string(k - 1) + ",";
       result.outcome = TemporalResult::Outcome::Proved;
       result.induction_k = k;
       result.proof = "k-induction with k = " + std::to_string(k) + ": from any state, " + first +

@@ -92,23 +92,25 @@ TEST(Judge, AReplayMustKeepTheAssumptionAtEachDelivery) {
   model::Assumption a{"e_taken", "PickAndPlace.cmd", "take", "put", {}};
   std::string broken;
   // Reported after the take, withdrawn before the next put: kept.
-  EXPECT_TRUE(replay_respects(a,
-                              {deliver(0, "take"), set(0.1, "h", "e_taken", -1), deliver(0.2, "put"),
-                               remove(0.3, "h", "e_taken", -1), deliver(0.4, "put")},
-                              &broken));
+  EXPECT_TRUE(
+      replay_respects(a,
+                      {deliver(0, "take"), set(0.1, "h", "e_taken", -1), deliver(0.2, "put"),
+                       remove(0.3, "h", "e_taken", -1), deliver(0.4, "put")},
+                      &broken));
   // Reported before any take.
   EXPECT_FALSE(replay_respects(a, {set(0, "h", "e_taken", -1), deliver(0.1, "put")}, &broken));
   EXPECT_NE(broken.find("e_taken was present when 'put' delivered at 0.1s"), std::string::npos)
       << broken;
   // Still reported at a delivery after the put.
   EXPECT_FALSE(replay_respects(
-      a, {deliver(0, "take"), set(0.1, "h", "e_taken", -1), deliver(0.2, "put"), deliver(0.3, "put")},
+      a,
+      {deliver(0, "take"), set(0.1, "h", "e_taken", -1), deliver(0.2, "put"), deliver(0.3, "put")},
       &broken));
   // A lapsed entry is no longer present.
-  EXPECT_TRUE(replay_respects(a,
-                              {deliver(0, "take"), set(0.1, "h", "e_taken", 0.5), deliver(0.2, "put"),
-                               deliver(0.5, "put")},
-                              &broken));
+  EXPECT_TRUE(replay_respects(
+      a,
+      {deliver(0, "take"), set(0.1, "h", "e_taken", 0.5), deliver(0.2, "put"), deliver(0.5, "put")},
+      &broken));
 }
 
 }  // namespace

@@ -125,8 +125,9 @@ void Unrolling::add_step(int k) {
       for (int i = 0; i < k; ++i)
         selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= period);
       if (start_ == Start::AnyState)
-        selected = selected && z3::implies(delivered_before_start(static_cast<int>(c)),
-                                           t_[k] - last_delivery_before_start(static_cast<int>(c)) >= period);
+        selected = selected &&
+                   z3::implies(delivered_before_start(static_cast<int>(c)),
+                               t_[k] - last_delivery_before_start(static_cast<int>(c)) >= period);
     }
     solver_.add(d == selected);
     del_[k].push_back(d);

@@ -107,10 +107,10 @@ class Unrolling {
   void add_step(int k);
   void add_entry_step(size_t q, int k);
   void add_activity_step(size_t q, int k);
-  void start_state();                // the state before step 1 (unrolling.cc)
+  void start_state();                  // the state before step 1 (unrolling.cc)
   void add_any_start_entry(size_t q);  // one entry of any state (induction.cc)
   void constrain_any_start();          // what any state says of times before t_1 (induction.cc)
-  void add_assumptions(int k);       // the environment at step k (assumption.cc)
+  void add_assumptions(int k);         // the environment at step k (assumption.cc)
 
   const PortShape& shape_;
   z3::context& ctx_;
