@@ -130,7 +130,7 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
   for (const verify::InputReport& r : reports) {
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
-      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file), fs::absolute(dir), ec);
+      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
       // APP.RULE.test.spec for spacing; APP.RULE.absence/precedence.test.spec for the others.
       std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
                              ? ""
