@@ -131,11 +131,17 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
       fs::path spec = fs::proximate(fs::absolute(t.property.loc.file), fs::absolute(dir), ec);
-      // APP.RULE.test.spec for spacing; APP.RULE.absence/precedence.test.spec for the others.
+      // APP.RULE.test.spec for spacing; APP.RULE.KIND.test.spec for the others (a stability,
+      // which names no rule: APP.M_p.stability.test.spec).
       std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
                              ? ""
                              : std::string(".") + model::temporal_kind_name(t.property.kind);
-      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + kind + ".test.spec");
+      std::string who = t.property.rule;
+      if (who.empty()) {
+        who = t.property.port;
+        for (char& c : who) c = c == '.' ? '_' : c;
+      }
+      fs::path path = fs::path(dir) / (r.report.app + "." + who + kind + ".test.spec");
       std::ofstream out(path);
       out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
       if (!out) {

@@ -71,11 +71,11 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"temporal\""), std::string::npos);
   app.temporal.push_back(
-      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", ""});
-  TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", ""};
+      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", "", false, {}});
+  TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", "", false, {}};
   absence.event = "act_track";
   TemporalProperty precedence{
-      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", ""};
+      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", "", false, {}};
   precedence.other = "track";
   app.temporal.push_back(absence);
   app.temporal.push_back(precedence);

@@ -27,6 +27,9 @@ decl
   | invariantDecl
   | neverDecl
   | onlyAfterDecl
+  | responseDecl
+  | stableDecl
+  | givenDecl
   | arbitrateDecl
   | connectDecl
   | assertDecl
@@ -52,6 +55,14 @@ invariantDecl    : 'invariant' expr ';' ;
 // `only put after take;`.
 neverDecl        : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
 onlyAfterDecl    : 'only' ID 'after' ID ';' ;
+// Response `after track stops, search within 1.2s while e_unreachable;` (RULE delivers within D
+// of each delivery of the trigger, or of its last one with `stops`, while the condition holds).
+responseDecl     : 'after' ID stops='stops'? ',' ID 'within' duration ('while' expr)? ';' ;
+// Stability `stable HeadControl.gaze for 500ms;`: the port's deliverer changes at most once per D.
+stableDecl       : 'stable' portRef 'for' duration ';' ;
+// An environment rate: `given LookAround.gaze every 200ms;` (the source publishes at least
+// every D from the start), which response properties rely on.
+givenDecl        : 'given' portRef 'every' duration ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;

@@ -294,12 +294,22 @@ struct AssertDecl {
 //   Absence    `never RULE while EVENT;`    RULE delivers nothing while EVENT is present;
 //   Precedence `only RULE after OTHER;`     each delivery of RULE follows one of OTHER with no
 //                                           delivery of RULE in between.
+//   Response   `after OTHER [stops], RULE within D [while C];`  RULE delivers within D of each
+//                                           delivery of OTHER (its last one, with `stops`) whenever
+//                                           C holds at RULE's decisions in that window.
+//   Stability  `stable M.p for D;`          the rule delivering into M.p changes at most once
+//                                           in any D (two switches are at least D apart).
 struct TemporalDecl {
-  enum class Kind { Spacing, Absence, Precedence };
+  enum class Kind { Spacing, Absence, Precedence, Response, Stability };
   Kind kind = Kind::Spacing;
   std::string rule;
   Loc rule_loc;
-  Duration window;    // Spacing
+  Duration window;    // Spacing, Response
+  bool stops = false;        // Response: the trigger is OTHER's last delivery
+  ExprPtr condition;         // Response: `while C`; null: none
+  Constraint condition_sema;  // sema: C as a constraint (true without `while`)
+  PortRef port;               // Stability (its rule is empty)
+  const ArbitrateDecl* port_decl = nullptr;  // sema: Stability's arbitrated port
   std::string event;  // Absence
   Loc event_loc;
   std::string other;  // Precedence
@@ -308,6 +318,14 @@ struct TemporalDecl {
   // sema:
   const Rule* rule_decl = nullptr;
   const Rule* other_decl = nullptr;  // Precedence
+};
+
+// `given M.p every D;`: source M.p publishes at least every D from the start
+// (docs/language.md#properties-over-time).
+struct RateDecl {
+  PortRef port;
+  Duration period;
+  Loc loc;  // the `given` keyword
 };
 
 // `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
@@ -408,6 +426,7 @@ struct Spec {
   std::vector<ConnectDecl> connects;
   std::vector<AssertDecl> asserts;
   std::vector<TemporalDecl> temporal;
+  std::vector<RateDecl> rates;
   std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)

@@ -183,6 +183,7 @@ void Sema::run() {
   for (ConnectDecl& c : spec_.connects) check_connect(c);
   for (AssertDecl& a : spec_.asserts) check_assert(a);
   for (TemporalDecl& n : spec_.temporal) check_temporal(n);
+  check_rates();  // sema_rates.cc
   check_resources();
   check_tests();  // sema_test.cc
 }

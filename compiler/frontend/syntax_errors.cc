@@ -86,7 +86,8 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only"};
+    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only",
+    "given",     "stable"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

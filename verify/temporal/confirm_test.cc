@@ -33,7 +33,7 @@ class FixedReplayer : public TestReplayer {
 TemporalResult violated() {
   TemporalResult r;
   r.property = {
-      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
+      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", "", false, {}};
   r.outcome = Outcome::Violated;
   r.replay_test = model::TestCase{};
   return r;
