@@ -36,9 +36,10 @@ std::vector<std::pair<size_t, size_t>> split_declarations(
       if (text == "{" || text == "(" || text == "[") ++depth;
       if ((text == "}" || text == ")" || text == "]") && depth > 0) --depth;
     }
-    // `after` also sits inside `only R after O;`: it starts a response only after a `;`.
+    // `after` also sits inside `only R after O;`: it starts a response only after a `;` or `}`.
     bool starts = kDeclStarts.count(text) ||
-                  (text == "after" && i > 0 && tokens[i - 1]->getText() == ";");
+                  (text == "after" && i > 0 &&
+                   (tokens[i - 1]->getText() == ";" || tokens[i - 1]->getText() == "}"));
     if (depth == 0 && i > start && starts && tokens[i]->getType() != ArbcLexer::STRING) {
       ranges.emplace_back(start, i);
       start = i;

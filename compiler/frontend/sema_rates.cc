@@ -34,6 +34,7 @@ void Sema::check_rates() {
   for (RateDecl& r : spec_.rates) {
     check_duration(r.period, "the `every` period");
     if (!resolve_port(r.port, "source", "a rate (`given`)")) continue;
+    if (r.port.port_decl->direction != model::Direction::Out) continue;  // reported
     std::string port = r.port.qualified();
     auto [first, inserted] = seen.emplace(port, r.loc.line);
     if (!inserted) {

@@ -54,6 +54,12 @@ const char* describe_rule(size_t rule) {
       return "the `only ... after` property";
     case ArbcParser::RuleResourceDecl:
       return "the `resource` declaration";
+    case ArbcParser::RuleResponseDecl:
+      return "the `after ... within` property";
+    case ArbcParser::RuleStableDecl:
+      return "the `stable` property";
+    case ArbcParser::RuleGivenDecl:
+      return "the rate (`given`)";
     case ArbcParser::RuleStmt:
       return "the statement";
     case ArbcParser::RuleTestDecl:

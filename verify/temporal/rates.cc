@@ -1,17 +1,12 @@
 #include "verify/temporal/rates.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "core/time_text.h"
 
 namespace arbc::verify::temporal {
 namespace {
-
-z3::expr real(z3::context& ctx, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return ctx.real_val(text);
-}
 
 // An expression that cannot make the monitor fail: the message, its fields, literals, locals
 // bound to such expressions, records and lists of them.
@@ -40,9 +35,10 @@ bool cannot_fail(const model::BodyExpr& e) {
 
 Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : ctx_(ctx) {
   for (size_t c = 0; c < shape.connections.size(); ++c) {
+    if (accepts_every_message(*shape.connections[c])) always_accept_.push_back(static_cast<int>(c));
     const model::SourceRate* r = app.find_rate(shape.connections[c]->source);
     if (!r) continue;
-    rated_.push_back({static_cast<int>(c), real(ctx_, r->period)});
+    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period)});
     bool listed = false;
     for (const model::SourceRate& u : used_) listed |= u.port == r->port;
     if (!listed) used_.push_back(*r);
@@ -65,6 +61,22 @@ z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon) const 
       all.push_back(z3::implies(u.runs(r.connection, k), recent(u, r.connection, r.period, k, u.time(k))));
     all.push_back(recent(u, r.connection, r.period, n, horizon));
   }
+  return z3::mk_and(all);
+}
+
+z3::expr seconds(z3::context& ctx, double v) {
+  char text[64];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return ctx.real_val(text);
+}
+
+z3::expr Rates::accepting(const Unrolling& u, int n) const {
+  z3::expr_vector all(ctx_);
+  for (int c : always_accept_)
+    for (int k = 0; k < n; ++k) all.push_back(z3::implies(u.runs(c, k), u.accepts(k)));
   return z3::mk_and(all);
 }
 

@@ -25,6 +25,10 @@ class Rates {
   // rated connection is silent for more than its period, from time 0 on.
   z3::expr up_to(const Unrolling& u, int n, const z3::expr& horizon) const;
 
+  // Over the first `n` steps: a rule whose monitor accepts every message (accepts_every_message)
+  // accepts on each of its steps, so a rated source's messages cannot all be rejected.
+  z3::expr accepting(const Unrolling& u, int n) const;
+
   // The rates a verdict on this port relies on, in spec order (for the report).
   const std::vector<model::SourceRate>& used() const { return used_; }
   bool empty() const { return rated_.empty(); }
@@ -42,12 +46,17 @@ class Rates {
   z3::context& ctx_;
   std::vector<Rated> rated_;
   std::vector<model::SourceRate> used_;
+  std::vector<int> always_accept_;  // connections whose monitor accepts every message
 };
 
 // Whether rule `c`'s monitor accepts every message: no `accept`, no `script`, and no expression
 // that can fail at run time (an index, a call, arithmetic), so the runtime never drops its
 // message as rejected or for a monitor error. Such a rule's steps accept in the unrolling.
 bool accepts_every_message(const model::Connection& c);
+
+// `v` seconds as an exact Z3 real: the shortest decimal that reads back as the same double
+// (0.2, not 0.20000000000000001, which five rate periods would stretch past a 1 s hold).
+z3::expr seconds(z3::context& ctx, double v);
 
 // "given LookAround.gaze every 200ms (spec:3)", for the reports.
 std::string rate_words(const model::SourceRate& r);

@@ -16,15 +16,17 @@ constexpr const char* kAssumptions =
     "    assuming: sources publish at any times; monitors accept or reject any message (data is\n"
     "    not modelled); exclusive groups and invariants are not used\n";
 
+std::string wrap(const std::string& text, const std::string& by, size_t width = 96);
+
 // The assumptions line; the rates the verdict relies on replace "at any times" for their sources.
 std::string assumptions(const TemporalResult& r) {
   if (r.rates.empty()) return kAssumptions;
-  std::string out = "    assuming: ";
-  for (const model::SourceRate& rate : r.rates) out += rate_words(rate) + "; ";
-  return out +
-         "other sources publish at any times; monitors accept or reject any message (data is\n"
-         "    not modelled; a rule with no `accept` accepts every message); exclusive groups and\n"
-         "    invariants are not used\n";
+  std::string out = "assuming:";
+  for (const model::SourceRate& rate : r.rates) out += " " + rate_words(rate) + ";";
+  return wrap(out + " other sources publish at any times; monitors accept or reject any message "
+                    "(data is not modelled; a rule with no `accept` accepts every message); "
+                    "exclusive groups and invariants are not used",
+              "    ");
 }
 
 std::string property_text(const model::TemporalProperty& p) {
@@ -60,7 +62,7 @@ std::string indent(const std::string& text, const std::string& by) {
 }
 
 // `text` as lines of at most about `width` characters, each starting with `by`.
-std::string wrap(const std::string& text, const std::string& by, size_t width = 96) {
+std::string wrap(const std::string& text, const std::string& by, size_t width) {
   std::string out, line;
   size_t start = 0;
   while (start < text.size()) {

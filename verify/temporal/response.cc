@@ -1,7 +1,5 @@
 #include "verify/temporal/response.h"
 
-#include <cstdio>
-
 #include "core/time_text.h"
 
 #include "verify/temporal/bmc.h"
@@ -11,17 +9,10 @@
 namespace arbc::verify::temporal {
 namespace {
 
-z3::expr real(z3::context& ctx, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return ctx.real_val(text);
-}
-
 struct Pieces {
   int rule, trigger;
   const model::TemporalProperty& p;
   const Rates& rates;
-  std::vector<int> always_accept;  // connections whose monitor accepts every message
 };
 
 // The trigger at step i and none of what discharges it in steps i+1..n-1: a delivery of the
@@ -47,13 +38,12 @@ z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx)
   z3::expr horizon = ctx.real_const(("horizon!" + std::to_string(n)).c_str());
   z3::expr_vector some(ctx);
   for (int i = 0; i < n; ++i)
-    some.push_back(horizon == u.time(i) + real(ctx, w.p.window) && unanswered_from(u, w, i, n, ctx));
+    some.push_back(horizon == u.time(i) + seconds(ctx, w.p.window) && unanswered_from(u, w, i, n, ctx));
   z3::expr_vector all(ctx);
   all.push_back(z3::mk_or(some));
   all.push_back(u.time(n - 1) <= horizon);
   all.push_back(w.rates.up_to(u, n, horizon));
-  for (int c : w.always_accept)
-    for (int k = 0; k < n; ++k) all.push_back(z3::implies(u.runs(c, k), u.accepts(k)));
+  all.push_back(w.rates.accepting(u, n));
   return z3::mk_and(all);
 }
 
@@ -95,9 +85,7 @@ std::optional<TemporalResult> check_response(const model::App& app,
   int o = property_rule(*shape, p, p.other, err);
   if (o < 0) return std::nullopt;
   Rates rates(app, *shape, ctx);
-  Pieces w{r, o, p, rates, {}};
-  for (size_t c = 0; c < shape->connections.size(); ++c)
-    if (accepts_every_message(*shape->connections[c])) w.always_accept.push_back(static_cast<int>(c));
+  Pieces w{r, o, p, rates};
   TemporalResult result = bounded_search(
       *shape, p, 1, bound, [&](const Unrolling& u, int n) { return violation(u, w, n, ctx); }, ctx,
       data, deadline);

@@ -1,6 +1,5 @@
 #include "verify/temporal/stability.h"
 
-#include <cstdio>
 #include <vector>
 
 #include "verify/temporal/bmc.h"
@@ -33,13 +32,12 @@ std::vector<z3::expr> switches(const Unrolling& u, const std::vector<int>& rules
 // rates up to that step.
 z3::expr violation(const Unrolling& u, const std::vector<int>& rules, const Rates& rates, int n,
                    double window, z3::context& ctx) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", window);
-  z3::expr w = ctx.real_val(text);
+  z3::expr w = seconds(ctx, window);
   std::vector<z3::expr> sw = switches(u, rules, n, ctx);
   z3::expr_vector earlier(ctx);
   for (int j = 0; j < n - 1; ++j) earlier.push_back(sw[j] && u.time(n - 1) - u.time(j) < w);
-  return sw[n - 1] && z3::mk_or(earlier) && rates.up_to(u, n, u.time(n - 1));
+  return sw[n - 1] && z3::mk_or(earlier) && rates.up_to(u, n, u.time(n - 1)) &&
+         rates.accepting(u, n);
 }
 
 }  // namespace
