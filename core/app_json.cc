@@ -303,7 +303,8 @@ bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* 
   if (!get_string(j, p, "port", &r->port, err)) return false;
   std::optional<double> every;
   if (!opt_number(j, p, "every", &every, err)) return false;
-  if (!every || !(*every > 0)) return fail(p + ".every: expected a positive number of seconds", err);
+  if (!every || !(*every > 0))
+    return fail(p + ".every: expected a positive number of seconds", err);
   r->period = *every;
   return read_location(j, p, &r->loc, err);
 }
@@ -319,10 +320,9 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
     if (kind == temporal_kind_name(k)) t->kind = k, known = true;
   }
   if (!known)
-    return fail(
-        p + ".kind: expected \"spacing\", \"absence\", \"precedence\", \"response\" or "
-            "\"stability\"",
-        err);
+    return fail(p + ".kind: expected \"spacing\", \"absence\", \"precedence\", \"response\" or "
+                    "\"stability\"",
+                err);
   if (!get_string(j, p, "port", &t->port, err)) return false;
   if (t->kind != K::Stability && !get_string(j, p, "rule", &t->rule, err)) return false;
   if (t->kind == K::Spacing || t->kind == K::Response || t->kind == K::Stability) {

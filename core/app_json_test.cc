@@ -70,9 +70,17 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
 TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"temporal\""), std::string::npos);
-  app.temporal.push_back(
-      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", "", false, {}});
-  TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", "", false, {}};
+  app.temporal.push_back({TemporalProperty::Kind::Spacing,
+                          "H.gaze",
+                          "track",
+                          1.5,
+                          {"demo.spec", 11, 1},
+                          "",
+                          "",
+                          false,
+                          {}});
+  TemporalProperty absence{
+      TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", "", false, {}};
   absence.event = "act_track";
   TemporalProperty precedence{
       TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", "", false, {}};

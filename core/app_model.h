@@ -168,7 +168,8 @@ struct SourceRate {
   SourceLocation loc;
 };
 
-// "spacing", "absence", "precedence", "response", "stability": the `kind` in app.json and verify's JSON.
+// "spacing", "absence", "precedence", "response", "stability": the `kind` in app.json and verify's
+// JSON.
 const char* temporal_kind_name(TemporalProperty::Kind k);
 
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that

@@ -136,7 +136,8 @@ Json temporal_json(const TemporalResult& t) {
     // The environment rates the verdict relies on (`given M.p every D`).
     j["rates"] = Json::array();
     for (const model::SourceRate& r : t.rates)
-      j["rates"].push_back({{"port", r.port}, {"every", r.period}, {"location", location_json(r.loc)}});
+      j["rates"].push_back(
+          {{"port", r.port}, {"every", r.period}, {"location", location_json(r.loc)}});
     j["explanation"] = t.explanation.empty() ? Json(nullptr) : Json(t.explanation);
   }
   j["trace"] = Json::array();

@@ -304,13 +304,13 @@ struct TemporalDecl {
   Kind kind = Kind::Spacing;
   std::string rule;
   Loc rule_loc;
-  Duration window;    // Spacing, Response
-  bool stops = false;        // Response: the trigger is OTHER's last delivery
-  ExprPtr condition;         // Response: `while C`; null: none
-  Constraint condition_sema;  // sema: C as a constraint (true without `while`)
-  PortRef port;               // Stability (its rule is empty)
+  Duration window;                           // Spacing, Response
+  bool stops = false;                        // Response: the trigger is OTHER's last delivery
+  ExprPtr condition;                         // Response: `while C`; null: none
+  Constraint condition_sema;                 // sema: C as a constraint (true without `while`)
+  PortRef port;                              // Stability (its rule is empty)
   const ArbitrateDecl* port_decl = nullptr;  // sema: Stability's arbitrated port
-  std::string event;  // Absence
+  std::string event;                         // Absence
   Loc event_loc;
   std::string other;  // Precedence
   Loc other_loc;

@@ -19,8 +19,9 @@ using arbc_grammar::ArbcParser;
 namespace {
 
 const std::set<std::string> kDeclStarts = {
-    "app",       "type",    "const",  "module", "event",    "events", "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "resource", "never",  "only",  "given", "stable"};
+    "app",       "type",      "const",     "module",  "event",  "events",
+    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
+    "resource",  "never",     "only",      "given",   "stable"};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket
 // depth 0 starts a new one. Text before the first keyword is a range of its own.

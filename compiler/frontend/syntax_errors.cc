@@ -91,9 +91,9 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 }
 
 const std::set<std::string> kDeclKeywords = {
-    "app",       "type",    "const",  "module", "event", "events",   "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "tests", "resource", "never",     "only",
-    "given",     "stable"};
+    "app",       "type",      "const",     "module",  "event",  "events",
+    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
+    "tests",     "resource",  "never",     "only",    "given",  "stable"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

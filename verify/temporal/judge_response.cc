@@ -70,8 +70,8 @@ bool response_violated(const model::TemporalProperty& p, const std::vector<Repla
     if (r.connection == p.other && unanswered(p, records, i, decisions)) return true;
     order.push_back(r.connection + " at " + time_text(r.t) + "s");
   }
-  *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order)) +
-          ", each " + p.other + " answered in time or with the condition false";
+  *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order)) + ", each " +
+          p.other + " answered in time or with the condition false";
   return false;
 }
 

@@ -23,9 +23,10 @@ std::string assumptions(const TemporalResult& r) {
   if (r.rates.empty()) return kAssumptions;
   std::string out = "assuming:";
   for (const model::SourceRate& rate : r.rates) out += " " + rate_words(rate) + ";";
-  return wrap(out + " other sources publish at any times; monitors accept or reject any message "
-                    "(data is not modelled; a rule with no `accept` accepts every message); "
-                    "exclusive groups and invariants are not used",
+  return wrap(out +
+                  " other sources publish at any times; monitors accept or reject any message "
+                  "(data is not modelled; a rule with no `accept` accepts every message); "
+                  "exclusive groups and invariants are not used",
               "    ");
 }
 

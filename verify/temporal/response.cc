@@ -1,7 +1,6 @@
 #include "verify/temporal/response.h"
 
 #include "core/time_text.h"
-
 #include "verify/temporal/bmc.h"
 #include "verify/temporal/constraint_expr.h"
 #include "verify/temporal/rates.h"
@@ -23,9 +22,8 @@ z3::expr unanswered_from(const Unrolling& u, const Pieces& w, int i, int n, z3::
   for (int j = i + 1; j < n; ++j) {
     all.push_back(!u.delivers(w.rule, j));
     if (w.p.stops) all.push_back(!u.delivers(w.trigger, j));
-    z3::expr c = constraint_expr(w.p.condition, ctx, [&](const std::string& e) {
-      return u.present_at_decision(e, j);
-    });
+    z3::expr c = constraint_expr(w.p.condition, ctx,
+                                 [&](const std::string& e) { return u.present_at_decision(e, j); });
     all.push_back(z3::implies(u.runs(w.rule, j), c));
   }
   return z3::mk_and(all);
@@ -38,7 +36,8 @@ z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx)
   z3::expr horizon = ctx.real_const(("horizon!" + std::to_string(n)).c_str());
   z3::expr_vector some(ctx);
   for (int i = 0; i < n; ++i)
-    some.push_back(horizon == u.time(i) + seconds(ctx, w.p.window) && unanswered_from(u, w, i, n, ctx));
+    some.push_back(horizon == u.time(i) + seconds(ctx, w.p.window) &&
+                   unanswered_from(u, w, i, n, ctx));
   z3::expr_vector all(ctx);
   all.push_back(z3::mk_or(some));
   all.push_back(u.time(n - 1) <= horizon);

@@ -38,9 +38,9 @@ TemporalResult check(const model::App& app, const P& p, int bound) {
   z3::context ctx;
   std::string error;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  std::optional<TemporalResult> r = p.kind == P::Kind::Response
-                                        ? check_response(app, p, bound, ctx, nullptr, deadline, &error)
-                                        : check_stability(app, p, bound, ctx, nullptr, deadline, &error);
+  std::optional<TemporalResult> r =
+      p.kind == P::Kind::Response ? check_response(app, p, bound, ctx, nullptr, deadline, &error)
+                                  : check_stability(app, p, bound, ctx, nullptr, deadline, &error);
   EXPECT_TRUE(r) << error;
   return r ? *r : TemporalResult{};
 }
@@ -174,7 +174,8 @@ TEST(JudgeResponse, AnUnansweredTriggerViolatesAndADeliveryAtTheWindowsEndAnswer
   // Too late, but a later track (stops) starts a new window that is unanswered too.
   EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), deliver(1.5, "search")}, &seen, &test,
                               "LookAround.gaze"));
-  EXPECT_FALSE(replay_violates(p, {deliver(0, "track"), deliver(0.5, "track"), deliver(1.4, "search")},
+  EXPECT_FALSE(replay_violates(p,
+                               {deliver(0, "track"), deliver(0.5, "track"), deliver(1.4, "search")},
                                &seen, &test, "LookAround.gaze"));
   EXPECT_NE(seen.find("track at 0s"), std::string::npos) << seen;
 }
