@@ -96,8 +96,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "overlapping pairs per port reported with a counterexample; the rest are counted")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  cli.add_option("--temporal-bound", a.options.temporal_bound,
-                 "messages into a port that properties over time (`never`, `only`) are explored to")
+  cli.add_option(
+         "--temporal-bound", a.options.temporal_bound,
+         "messages into a port that properties over time (`never`, `only`, `after`, `stable`) are "
+         "explored to")
       ->check(CLI::Range(2, 1024))
       ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
