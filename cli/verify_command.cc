@@ -132,7 +132,7 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
   for (const verify::InputReport& r : reports) {
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
-      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file), fs::absolute(dir), ec);
+      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
       // APP.RULE.test.spec for spacing; APP.RULE.KIND.test.spec for the others (a stability,
       // which names no rule: APP.M_p.stability.test.spec).
       std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing

@@ -113,9 +113,11 @@ bool read_location(const Json& j, const std::string& path, SourceLocation* loc, 
     *out = l[key].get<int>();
     return true;
   };
-  return opt_string(l, p, "file", &loc->file, err) && num("line", &loc->line) &&
-         num("column", &loc->column) && num("end_line", &loc->end_line) &&
-         num("end_column", &loc->end_column);
+  std::string file;
+  if (!opt_string(l, p, "file", &file, err)) return false;
+  loc->file = file;
+  return num("line", &loc->line) && num("column", &loc->column) &&
+         num("end_line", &loc->end_line) && num("end_column", &loc->end_column);
 }
 
 bool read_source_map_entry(const Json& pair, const std::string& path, SourceMapEntry* out,

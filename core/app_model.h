@@ -11,6 +11,7 @@
 
 #include "core/body.h"
 #include "core/constraint.h"
+#include "core/file_name.h"
 #include "core/type.h"
 
 namespace arbc::model {
@@ -20,7 +21,7 @@ inline constexpr int kSchemaVersion = 2;
 // A place in the spec, for diagnostics and the source map. Lines and columns count from 1;
 // 0 means unknown (e.g. a model loaded from a hand-written app.json).
 struct SourceLocation {
-  std::string file;
+  FileName file;  // shared, not copied (core/file_name.h)
   int line = 0;
   int column = 0;
   int end_line = 0;

@@ -125,7 +125,7 @@ void quote_line(std::string_view text, const model::SourceLocation& loc, std::st
 void render_into(const Diagnostic& d, SourceCache* sources, std::string& out) {
   const model::SourceLocation& loc = d.loc;
   if (!loc.file.empty()) {
-    out += printable(loc.file);
+    out += printable(loc.file.str());
     if (loc.line > 0) out += ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
     out += ": ";
   }

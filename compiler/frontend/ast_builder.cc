@@ -22,6 +22,19 @@ T* as(Node* node) {
   return node && typeid(*node) == typeid(T) ? static_cast<T*>(node) : nullptr;
 }
 
+// Child `i` of an `expr` alternative, where the grammar puts a sub-expression (`T` =
+// ExprContext) or a token (`T` = TerminalNode): 0 and 2 of `expr op expr`, 1 of `'not' expr`.
+// The generated accessors (`c->expr(1)`, `c->ID()`) find a child by a dynamic_cast of every
+// child in turn, which was 10 % of `arbc check` on a 10,000-rule spec (docs/benchmarks.md).
+// The positions are fixed by the grammar, and the builder only sees trees that parsed.
+template <typename T>
+T* child(antlr4::ParserRuleContext* ctx, size_t i) {
+  return static_cast<T*>(ctx->children[i]);
+}
+ArbcParser::ExprContext* operand(antlr4::ParserRuleContext* ctx, size_t i) {
+  return child<ArbcParser::ExprContext>(ctx, i);
+}
+
 class Builder {
  public:
   Builder(const std::string& file, std::string_view source, std::vector<Diagnostic>& out)
@@ -187,40 +200,41 @@ class Builder {
   ExprPtr expr(ArbcParser::ExprContext* ctx, int depth) {
     // A primary has the same location as its expression: primary() computes it, once.
     if (auto* c = as<ArbcParser::PrimaryExprContext>(ctx); c && depth <= kMaxNesting)
-      return primary(c->primary(), depth);
+      return primary(child<ArbcParser::PrimaryContext>(c, 0), depth);
     Loc where = loc(ctx);
     if (too_deep(depth, where)) return placeholder(std::move(where));
     if (auto* c = as<ArbcParser::FieldExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Field, std::move(where));
-      e->text = tx(c->ID());
-      e->args.push_back(expr(c->expr(), depth + 1));
+      auto e = make(Expr::Kind::Field, std::move(where));  // expr '.' ID
+      e->text = tx(child<antlr4::tree::TerminalNode>(c, 2));
+      e->args.push_back(expr(operand(c, 0), depth + 1));
       return e;
     }
     if (auto* c = as<ArbcParser::IndexExprContext>(ctx)) {
       auto e = make(Expr::Kind::Index, std::move(where));
-      e->args.push_back(expr(c->expr(0), depth + 1));
-      e->args.push_back(expr(c->expr(1), depth + 1));
+      e->args.push_back(expr(operand(c, 0), depth + 1));  // expr '[' expr ']'
+      e->args.push_back(expr(operand(c, 2), depth + 1));
       return e;
     }
     if (auto* c = as<ArbcParser::NegExprContext>(ctx))
-      return unary("-", c->expr(), std::move(where), depth);
+      return unary("-", operand(c, 1), std::move(where), depth);
     if (auto* c = as<ArbcParser::NotExprContext>(ctx))
-      return unary("not", c->expr(), std::move(where), depth);
+      return unary("not", operand(c, 1), std::move(where), depth);
     if (auto* c = as<ArbcParser::MulExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
+      return binary(tx(c->op), operand(c, 0), operand(c, 2), std::move(where), depth);
     if (auto* c = as<ArbcParser::AddExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
+      return binary(tx(c->op), operand(c, 0), operand(c, 2), std::move(where), depth);
     if (auto* c = as<ArbcParser::CompareExprContext>(ctx))
-      return binary(tx(c->op), c->expr(0), c->expr(1), std::move(where), depth);
+      return binary(tx(c->op), operand(c, 0), operand(c, 2), std::move(where), depth);
     if (auto* c = as<ArbcParser::AndExprContext>(ctx))
-      return binary("and", c->expr(0), c->expr(1), std::move(where), depth);
+      return binary("and", operand(c, 0), operand(c, 2), std::move(where), depth);
     if (auto* c = as<ArbcParser::OrExprContext>(ctx))
-      return binary("or", c->expr(0), c->expr(1), std::move(where), depth);
+      return binary("or", operand(c, 0), operand(c, 2), std::move(where), depth);
     if (auto* c = as<ArbcParser::LambdaExprContext>(ctx)) {
-      auto e = make(Expr::Kind::Lambda, std::move(where));
-      e->text = tx(c->ID());
-      e->field_locs.push_back(loc(c->ID()));  // the parameter's location
-      e->args.push_back(expr(c->expr(), depth + 1));
+      auto e = make(Expr::Kind::Lambda, std::move(where));  // ID '=>' expr
+      auto* parameter = child<antlr4::tree::TerminalNode>(c, 0);
+      e->text = tx(parameter);
+      e->field_locs.push_back(loc(parameter));  // the parameter's location
+      e->args.push_back(expr(operand(c, 2), depth + 1));
       return e;
     }
     return placeholder(std::move(where));
@@ -249,19 +263,19 @@ class Builder {
     Loc where = loc(ctx);
     if (auto* c = as<ArbcParser::NumberLitContext>(ctx)) {
       auto e = make(Expr::Kind::Number, std::move(where));
-      std::string text = tx(c->NUMBER());
+      std::string text = tx(child<antlr4::tree::TerminalNode>(c, 0));
       e->number = std::strtod(text.c_str(), nullptr);
       e->is_int = text.find_first_of(".eE") == std::string::npos;
       return e;
     }
     if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
       auto e = make(Expr::Kind::Duration, std::move(where));
-      e->number = seconds_of_duration(tx(c->DURATION()));
+      e->number = seconds_of_duration(tx(child<antlr4::tree::TerminalNode>(c, 0)));
       return e;
     }
     if (auto* c = as<ArbcParser::StringLitContext>(ctx)) {
       auto e = make(Expr::Kind::String, std::move(where));
-      e->text = decode_string(c->STRING());
+      e->text = decode_string(child<antlr4::tree::TerminalNode>(c, 0));
       return e;
     }
     if (as<ArbcParser::TrueLitContext>(ctx) || as<ArbcParser::FalseLitContext>(ctx)) {
@@ -273,19 +287,19 @@ class Builder {
       return make(Expr::Kind::Otherwise, std::move(where));
     if (auto* c = as<ArbcParser::CallExprContext>(ctx)) {
       auto e = make(Expr::Kind::Call, std::move(where));
-      e->text = tx(c->ID());
-      e->field_locs.push_back(loc(c->ID()));  // the callee's location
+      auto* callee = child<antlr4::tree::TerminalNode>(c, 0);
+      e->text = tx(callee);
+      e->field_locs.push_back(loc(callee));  // the callee's location
       for (ArbcParser::ExprContext* arg : c->expr()) e->args.push_back(expr(arg, depth + 1));
       return e;
     }
     if (auto* c = as<ArbcParser::NameExprContext>(ctx)) {
       auto e = make(Expr::Kind::Name, std::move(where));
-      e->text = tx(c->ID());
+      e->text = tx(child<antlr4::tree::TerminalNode>(c, 0));
       return e;
     }
     if (auto* c = as<ArbcParser::ParenExprContext>(ctx)) {
-      ExprPtr inner = expr(c->expr(), depth + 1);
-      return inner;
+      return expr(operand(c, 1), depth + 1);  // '(' expr ')'
     }
     if (auto* c = as<ArbcParser::RecordLitContext>(ctx)) {
       auto e = make(Expr::Kind::Record, std::move(where));
@@ -823,7 +837,7 @@ class Builder {
     return r;
   }
 
-  const std::string& file_;
+  model::FileName file_;  // interned once: every location copies it
   TokenText text_;
   std::vector<Diagnostic>& out_;
   bool reported_depth_ = false;

@@ -7,7 +7,7 @@ namespace arbc::frontend {
 
 using arbc_grammar::ArbcLexer;
 
-model::SourceLocation token_location(const antlr4::Token* token, const std::string& file) {
+model::SourceLocation token_location(const antlr4::Token* token, const model::FileName& file) {
   model::SourceLocation loc;
   loc.file = file;
   loc.line = static_cast<int>(token->getLine());

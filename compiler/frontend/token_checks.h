@@ -33,6 +33,6 @@ bool check_nesting(const std::vector<antlr4::Token*>& tokens,
                    std::vector<Diagnostic>& out);
 
 // The location of one token.
-model::SourceLocation token_location(const antlr4::Token* token, const std::string& file);
+model::SourceLocation token_location(const antlr4::Token* token, const model::FileName& file);
 
 }  // namespace arbc::frontend

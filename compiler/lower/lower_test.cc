@@ -351,7 +351,7 @@ arbitrate Head.gaze { mine: from Looker.gaze when a { script "nowhere.lua"; } }
   // Sema rejects it (frontend/lua_syntax.h) before lowering reads the script for its text.
   EXPECT_EQ(broken.lowered, nullptr);
   EXPECT_EQ(broken.diagnostics.back().id, "script");
-  EXPECT_NE(broken.diagnostics.back().loc.file.find("broken.lua"), std::string::npos);
+  EXPECT_NE(broken.diagnostics.back().loc.file.str().find("broken.lua"), std::string::npos);
   EXPECT_EQ(broken.diagnostics.back().loc.line, 2);
   EXPECT_NE(broken.diagnostics.back().message.find("does not compile as Lua 5.4"),
             std::string::npos)

@@ -98,7 +98,7 @@ std::string events_text(const YarpImport& im) {
   }
   for (const model::ExclusiveGroup& g : im.app.exclusive_groups) {
     s += "exclusive { " + g.events[0] + ", " + g.events[1] + " };  // " +
-         std::filesystem::path(g.loc.file).filename().string() +
+         std::filesystem::path(g.loc.file.str()).filename().string() +
          " sets one only with the other unset\n";
   }
   return s;

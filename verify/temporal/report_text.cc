@@ -99,8 +99,9 @@ std::string outcome_counts(const size_t counts[4]) {
 }
 
 std::string spec_name(const model::TemporalProperty& p) {
-  size_t slash = p.loc.file.find_last_of('/');
-  return slash == std::string::npos ? p.loc.file : p.loc.file.substr(slash + 1);
+  const std::string& file = p.loc.file;
+  size_t slash = file.find_last_of('/');
+  return slash == std::string::npos ? file : file.substr(slash + 1);
 }
 
 std::string temporal_text(const TemporalResult& r) {
