@@ -96,8 +96,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "overlapping pairs per port reported with a counterexample; the rest are counted")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  cli.add_option("--temporal-bound", a.options.temporal_bound,
-                 "messages into a port that properties over time (`never`, `only`) are explored to")
+  cli.add_option(
+         "--temporal-bound", a.options.temporal_bound,
+         "messages into a port that properties over time (`never`, `only`, `after`, `stable`) are "
+         "explored to")
       ->check(CLI::Range(2, 1024))
       ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
@@ -131,11 +133,17 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
       fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
-      // APP.RULE.test.spec for spacing; APP.RULE.absence/precedence.test.spec for the others.
+      // APP.RULE.test.spec for spacing; APP.RULE.KIND.test.spec for the others (a stability,
+      // which names no rule: APP.M_p.stability.test.spec).
       std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
                              ? ""
                              : std::string(".") + model::temporal_kind_name(t.property.kind);
-      fs::path path = fs::path(dir) / (r.report.app + "." + t.property.rule + kind + ".test.spec");
+      std::string who = t.property.rule;
+      if (who.empty()) {
+        who = t.property.port;
+        for (char& c : who) c = c == '.' ? '_' : c;
+      }
+      fs::path path = fs::path(dir) / (r.report.app + "." + who + kind + ".test.spec");
       std::ofstream out(path);
       out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
       if (!out) {

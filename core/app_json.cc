@@ -290,6 +290,27 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
+// A response's trigger, `stops` and `while` (its window is read as a spacing's).
+bool read_response(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
+  if (!get_string(j, p, "after", &t->other, err)) return false;
+  if (j.contains("stops")) {
+    if (!j["stops"].is_boolean()) return fail(p + ".stops: expected true or false", err);
+    t->stops = j["stops"].get<bool>();
+  }
+  return !j.contains("while") || read_constraint(j, p, "while", &t->condition, err);
+}
+
+// `{"port": "M.p", "every": seconds}`: a source's rate.
+bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* err) {
+  if (!get_string(j, p, "port", &r->port, err)) return false;
+  std::optional<double> every;
+  if (!opt_number(j, p, "every", &every, err)) return false;
+  if (!every || !(*every > 0))
+    return fail(p + ".every: expected a positive number of seconds", err);
+  r->period = *every;
+  return read_location(j, p, &r->loc, err);
+}
+
 // `{"kind": "spacing", "port": .., "rule": .., "window": seconds}`, `{"kind": "absence", ..,
 // "event": ..}` or `{"kind": "precedence", .., "after": OTHER}` (docs/app-json.md).
 bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
@@ -297,13 +318,16 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   if (!get_string(j, p, "kind", &kind, err)) return false;
   using K = TemporalProperty::Kind;
   bool known = false;
-  for (K k : {K::Spacing, K::Absence, K::Precedence}) {
+  for (K k : {K::Spacing, K::Absence, K::Precedence, K::Response, K::Stability}) {
     if (kind == temporal_kind_name(k)) t->kind = k, known = true;
   }
-  if (!known) return fail(p + ".kind: expected \"spacing\", \"absence\" or \"precedence\"", err);
-  if (!get_string(j, p, "port", &t->port, err) || !get_string(j, p, "rule", &t->rule, err))
-    return false;
-  if (t->kind == K::Spacing) {
+  if (!known)
+    return fail(p + ".kind: expected \"spacing\", \"absence\", \"precedence\", \"response\" or "
+                    "\"stability\"",
+                err);
+  if (!get_string(j, p, "port", &t->port, err)) return false;
+  if (t->kind != K::Stability && !get_string(j, p, "rule", &t->rule, err)) return false;
+  if (t->kind == K::Spacing || t->kind == K::Response || t->kind == K::Stability) {
     std::optional<double> window;
     if (!opt_number(j, p, "window", &window, err)) return false;
     if (!window || !(*window > 0))
@@ -312,6 +336,7 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   }
   if (t->kind == K::Absence && !get_string(j, p, "event", &t->event, err)) return false;
   if (t->kind == K::Precedence && !get_string(j, p, "after", &t->other, err)) return false;
+  if (t->kind == K::Response && !read_response(j, p, t, err)) return false;
   return read_location(j, p, &t->loc, err);
 }
 
@@ -355,6 +380,7 @@ std::optional<App> read_app(const Json& root, std::string* err) {
             read_array(root, r, "", "resources", false, &app.resources, read_resource, err) &&
             read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err) &&
             read_array(root, r, "", "assumptions", false, &app.assumptions, read_assumption, err);
+            read_array(root, r, "", "rates", false, &app.rates, read_rate, err);
   if (!ok) return std::nullopt;
   return app;
 }

@@ -70,12 +70,20 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
 TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"temporal\""), std::string::npos);
-  app.temporal.push_back(
-      {TemporalProperty::Kind::Spacing, "H.gaze", "track", 1.5, {"demo.spec", 11, 1}, "", ""});
-  TemporalProperty absence{TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", ""};
+  app.temporal.push_back({TemporalProperty::Kind::Spacing,
+                          "H.gaze",
+                          "track",
+                          1.5,
+                          {"demo.spec", 11, 1},
+                          "",
+                          "",
+                          false,
+                          {}});
+  TemporalProperty absence{
+      TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", "", false, {}};
   absence.event = "act_track";
   TemporalProperty precedence{
-      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", ""};
+      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", "", false, {}};
   precedence.other = "track";
   app.temporal.push_back(absence);
   app.temporal.push_back(precedence);
@@ -108,6 +116,18 @@ TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
   EXPECT_EQ(to_app_json(app).find("\"assumptions\""), std::string::npos);
   app.assumptions.push_back({"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}});
   app.assumptions.push_back({"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}});
+// Response, stability and rates (`given M.p every D`) round-trip; no rates, no `rates` key; a
+// rate that is not a positive number of seconds is bad input naming where.
+TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
+  App app = small_app();
+  EXPECT_EQ(to_app_json(app).find("\"rates\""), std::string::npos);
+  TemporalProperty response{
+      TemporalProperty::Kind::Response, "H.gaze", "search", 1.2, {}, "", "track", true, {}};
+  response.condition = parse_constraint("e_idle and not e_busy").constraint;
+  TemporalProperty stability{
+      TemporalProperty::Kind::Stability, "H.gaze", "", 0.5, {}, "", "", false, {}};
+  app.temporal = {response, stability};
+  app.rates.push_back({"L.gaze", 0.2, {"demo.spec", 4, 1}});
   std::string text = to_app_json(app);
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
@@ -122,6 +142,27 @@ TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
   std::string bad = text;
   bad.replace(bad.find("\"after\""), 7, "\"later\"");
   EXPECT_NE(load_error(bad).find("assumptions[0]"), std::string::npos);
+  ASSERT_EQ(back->temporal.size(), 2u);
+  EXPECT_EQ(back->temporal[0].kind, TemporalProperty::Kind::Response);
+  EXPECT_EQ(back->temporal[0].other, "track");
+  EXPECT_TRUE(back->temporal[0].stops);
+  EXPECT_EQ(back->temporal[0].window, 1.2);
+  EXPECT_EQ(back->temporal[0].condition.to_string(), "e_idle and not e_busy");
+  EXPECT_EQ(back->temporal[1].kind, TemporalProperty::Kind::Stability);
+  EXPECT_EQ(back->temporal[1].window, 0.5);
+  EXPECT_TRUE(back->temporal[1].rule.empty());
+  ASSERT_EQ(back->rates.size(), 1u);
+  EXPECT_EQ(back->rates[0].port, "L.gaze");
+  EXPECT_EQ(back->rates[0].period, 0.2);
+  EXPECT_EQ(back->rates[0].loc.line, 4);
+  ASSERT_NE(back->find_rate("L.gaze"), nullptr);
+  EXPECT_EQ(back->find_rate("H.gaze"), nullptr);
+  EXPECT_EQ(to_app_json(*back), text);
+  std::string bad = text;
+  bad.replace(bad.find("\"every\": 0.2"), 12, "\"every\": -1");
+  EXPECT_NE(load_error(bad).find("rates[0].every: expected a positive number of seconds"),
+            std::string::npos)
+      << load_error(bad);
 }
 
 // One representation of a constraint: its text (schema version 2 dropped the tree).

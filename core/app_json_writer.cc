@@ -139,6 +139,21 @@ void write_resources(JsonWriter& w, const std::vector<Resource>& resources) {
   }
 }
 
+// The `rates` section (`given M.p every D;`), written only when there are some.
+void write_rates(JsonWriter& w, const std::vector<SourceRate>& rates) {
+  if (rates.empty()) return;
+  w.key("rates");
+  w.begin_array();
+  for (const SourceRate& r : rates) {
+    w.begin_object();
+    w.member("port", r.port);
+    w.member("every", r.period);
+    write_location(w, r.loc);
+    w.end_object();
+  }
+  w.end_array();
+}
+
 // The `temporal` section (properties over time).
 void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal) {
   // Written only when there are some: every app.json written before properties over time
@@ -150,10 +165,17 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
       w.begin_object();
       w.member("kind", temporal_kind_name(t.kind));
       w.member("port", t.port);
-      w.member("rule", t.rule);
-      if (t.kind == TemporalProperty::Kind::Spacing) w.member("window", t.window);
+      if (t.kind != TemporalProperty::Kind::Stability) w.member("rule", t.rule);
+      if (t.kind == TemporalProperty::Kind::Spacing || t.kind == TemporalProperty::Kind::Stability)
+        w.member("window", t.window);
       if (t.kind == TemporalProperty::Kind::Absence) w.member("event", t.event);
       if (t.kind == TemporalProperty::Kind::Precedence) w.member("after", t.other);
+      if (t.kind == TemporalProperty::Kind::Response) {
+        w.member("after", t.other);
+        w.member("stops", t.stops);
+        w.member("window", t.window);
+        write_constraint(w, "while", t.condition);
+      }
       write_location(w, t.loc);
       w.end_object();
     }
@@ -241,6 +263,7 @@ std::string to_app_json(const App& app) {
   write_resources(w, app.resources);
   write_temporal(w, app.temporal);
   write_assumptions(w, app.assumptions);
+  write_rates(w, app.rates);
   w.end_object();
   return w.take() + "\n";
 }

@@ -10,6 +10,10 @@ const char* temporal_kind_name(TemporalProperty::Kind k) {
       return "absence";
     case TemporalProperty::Kind::Precedence:
       return "precedence";
+    case TemporalProperty::Kind::Response:
+      return "response";
+    case TemporalProperty::Kind::Stability:
+      return "stability";
   }
   return "spacing";
 }
@@ -48,6 +52,16 @@ std::vector<const Connection*> App::connections_into(std::string_view port) cons
   for (const Connection& c : connections)
     if (c.destination == port) out.push_back(&c);
   return out;
+}
+
+}  // namespace arbc::model
+
+namespace arbc::model {
+
+const SourceRate* App::find_rate(std::string_view port) const {
+  for (const SourceRate& r : rates)
+    if (r.port == port) return &r;
+  return nullptr;
 }
 
 }  // namespace arbc::model

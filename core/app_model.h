@@ -143,18 +143,34 @@ struct Invariant {
 //                                          port's container at the decision;
 //   Precedence `only RULE after OTHER;`    each delivery follows a delivery of `other` (a rule
 //                                          into the same port) with no delivery of RULE between.
+//   Response   `after OTHER [stops], RULE within D [while C];`  RULE delivers within D of
+//                                          each delivery of OTHER (of its last one: `stops`)
+//                                          unless C is false at one of RULE's decisions then.
+//   Stability  `stable M.p for D;`         the rule delivering into `port` changes at most once
+//                                          in any D (`rule` is empty).
 struct TemporalProperty {
-  enum class Kind { Spacing, Absence, Precedence };
+  enum class Kind { Spacing, Absence, Precedence, Response, Stability };
   Kind kind = Kind::Spacing;
   std::string port;  // "Module.port"
   std::string rule;
-  double window = 0;  // seconds; Spacing
+  double window = 0;  // seconds; Spacing, Response, Stability
   SourceLocation loc;
-  std::string event;  // Absence
-  std::string other;  // Precedence
+  std::string event;     // Absence
+  std::string other;     // Precedence, Response (the trigger)
+  bool stops = false;    // Response: the trigger is OTHER's last delivery
+  Constraint condition;  // Response: `while C` (true without one)
 };
 
-// "spacing", "absence", "precedence": the `kind` in app.json and verify's JSON.
+// `given M.p every D;`: the environment publishes on source M.p at least every `period`
+// seconds from the start; response properties rely on it (docs/design.md#properties-over-time).
+struct SourceRate {
+  std::string port;  // "Module.port", an out port
+  double period = 0;
+  SourceLocation loc;
+};
+
+// "spacing", "absence", "precedence", "response", "stability": the `kind` in app.json and verify's
+// JSON.
 const char* temporal_kind_name(TemporalProperty::Kind k);
 
 // An environment assumption `assume EVENT only after AFTER [until UNTIL];`
@@ -193,11 +209,14 @@ struct App {
   std::vector<Invariant> invariants;
   std::vector<TemporalProperty> temporal;
   std::vector<Assumption> assumptions;
+  std::vector<SourceRate> rates;  // at most one per source port
   std::vector<Resource> resources;
 
   const Module* find_module(std::string_view name) const;
   const Port* find_port(std::string_view qualified) const;  // "Module.port"
   const Event* find_event(std::string_view name) const;
+  // The rate given for source `port`; null when none is.
+  const SourceRate* find_rate(std::string_view port) const;
   const ArbitratedPort* find_arbitrated(std::string_view port) const;
   // All connections whose destination is `port`, in model order.
   std::vector<const Connection*> connections_into(std::string_view port) const;

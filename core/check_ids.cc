@@ -58,7 +58,9 @@ constexpr CheckId kIds[] = {
      "two"},
     {"temporal", kVerify,
      "a property over time (`never two RULE within D`, `never RULE while EVENT`, `only RULE after "
-     "OTHER`) is violated by a timed trace the runtime replays"},
+     "OTHER`, `after OTHER, RULE within D`) is violated by a timed trace the runtime replays"},
+    {"rate-source", kCheck,
+     "a rate (`given M.p every D`) for a source that no rule, stream event or connect reads"},
     {"resource-port", kCheck,
      "a `resource` lists a port that is not arbitrated, a port twice, or fewer than two ports"},
     {"resource-type", kCheck, "the ports of a `resource` have different types"},
@@ -71,7 +73,8 @@ constexpr CheckId kIds[] = {
     {"status-source-type", kCheck, "an `events from` source port that is not list<string>"},
     {"syntax", kCheck, "the text does not follow the grammar"},
     {"temporal-pair", kCheck,
-     "`only RULE after OTHER` names one rule twice, or rules of two different ports"},
+     "`only RULE after OTHER` or `after OTHER, RULE within D` names one rule twice, or rules of "
+     "two different ports"},
     {"temporal-rule", kCheck, "a property over time names a rule used by several ports"},
     {"test-port", kCheck,
      "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},

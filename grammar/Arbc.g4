@@ -28,6 +28,9 @@ decl
   | neverDecl
   | onlyAfterDecl
   | assumeDecl
+  | responseDecl
+  | stableDecl
+  | givenDecl
   | arbitrateDecl
   | connectDecl
   | assertDecl
@@ -57,6 +60,14 @@ onlyAfterDecl    : 'only' ID 'after' ID ';' ;
 // present only after a delivery of the first rule and, with `until`, absent after a delivery of
 // the second until the first delivers again: `assume e_taken only after take until put;`.
 assumeDecl       : 'assume' ID 'only' 'after' ID ('until' ID)? ';' ;
+// Response `after track stops, search within 1.2s while e_unreachable;` (RULE delivers within D
+// of each delivery of the trigger, or of its last one with `stops`, while the condition holds).
+responseDecl     : 'after' ID stops='stops'? ',' ID 'within' duration ('while' expr)? ';' ;
+// Stability `stable HeadControl.gaze for 500ms;`: the port's deliverer changes at most once per D.
+stableDecl       : 'stable' portRef 'for' duration ';' ;
+// An environment rate: `given LookAround.gaze every 200ms;` (the source publishes at least
+// every D from the start), which response properties rely on.
+givenDecl        : 'given' portRef 'every' duration ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
 ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;

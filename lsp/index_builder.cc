@@ -40,7 +40,10 @@ class Builder {
       if (n.other_decl) ix_.add_occurrence("rule:" + n.other, name_loc(n.other_loc, n.other));
       if (n.rule_decl && !n.event.empty())
         ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
+      expr(n.condition.get());  // a response's `while`
+      if (n.kind == ast::TemporalDecl::Kind::Stability) port_ref(n.port);
     }
+    for (const ast::RateDecl& r : spec_.rates) port_ref(r.port);
     for (const ast::ResourceDecl& r : spec_.resources) {
       for (const ast::PortRef& p : r.ports) port_ref(p);
       expr(r.uses.get());

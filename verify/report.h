@@ -123,6 +123,12 @@ struct TemporalResult {
   bool replayed = false;
   std::string unknown_reason;
   int solver_queries = 0;
+  // The environment rates (`given M.p every D`) the verdict relies on: those of the sources of
+  // the port's connections, which the search assumed (verify/temporal/rates.h).
+  std::vector<model::SourceRate> rates;
+  // A violated response: when its window closed unanswered, and why silence counts
+  // ("no rate is given for ..."); empty otherwise.
+  std::string explanation;
 };
 
 // The outcome for one `resource` (docs/checks.md#resource).

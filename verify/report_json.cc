@@ -115,6 +115,15 @@ Json temporal_json(const TemporalResult& t) {
     case model::TemporalProperty::Kind::Precedence:
       j["after"] = t.property.other;
       break;
+    case model::TemporalProperty::Kind::Response:
+      j["after"] = t.property.other;
+      j["stops"] = t.property.stops;
+      j["window"] = t.property.window;
+      j["while"] = t.property.condition.to_string();
+      break;
+    case model::TemporalProperty::Kind::Stability:
+      j["window"] = t.property.window;
+      break;
   }
   j["location"] = location_json(t.property.loc);
   j["outcome"] = kOutcome[static_cast<int>(t.outcome)];
@@ -131,6 +140,15 @@ Json temporal_json(const TemporalResult& t) {
   }
   j["replayed"] = t.replayed;
   j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
+  if (t.property.kind == model::TemporalProperty::Kind::Response ||
+      t.property.kind == model::TemporalProperty::Kind::Stability || !t.rates.empty()) {
+    // The environment rates the verdict relies on (`given M.p every D`).
+    j["rates"] = Json::array();
+    for (const model::SourceRate& r : t.rates)
+      j["rates"].push_back(
+          {{"port", r.port}, {"every", r.period}, {"location", location_json(r.loc)}});
+    j["explanation"] = t.explanation.empty() ? Json(nullptr) : Json(t.explanation);
+  }
   j["trace"] = Json::array();
   for (const TraceStep& s : t.trace) {
     j["trace"].push_back({{"t", s.time},

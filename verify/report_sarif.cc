@@ -6,6 +6,7 @@
 #include "core/check_ids.h"
 #include "verify/report_format.h"
 #include "verify/temporal/counterexample.h"
+#include "verify/temporal/rates.h"
 #include "verify/temporal/report_text.h"
 
 namespace arbc::verify {
@@ -110,6 +111,12 @@ std::optional<Json> temporal_result(const TemporalResult& t) {
   r["message"] = {{"text", what.substr(what.find_first_not_of(' '))}};
   r["locations"] = Json::array();
   if (!t.property.loc.file.empty()) r["locations"].push_back(sarif_location(t.property.loc));
+  // The rates (`given M.p every D`) the verdict relies on, where the spec states them.
+  for (const model::SourceRate& rate : t.rates) {
+    Json related = sarif_location(rate.loc);
+    related["message"] = {{"text", temporal::rate_words(rate)}};
+    r["relatedLocations"].push_back(std::move(related));
+  }
   if (violated && t.replay_test) {  // Violated means replayed (verify/temporal/confirm.h)
     r["properties"]["test"] =
         temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property));

@@ -294,13 +294,23 @@ struct AssertDecl {
 //   Absence    `never RULE while EVENT;`    RULE delivers nothing while EVENT is present;
 //   Precedence `only RULE after OTHER;`     each delivery of RULE follows one of OTHER with no
 //                                           delivery of RULE in between.
+//   Response   `after OTHER [stops], RULE within D [while C];`  RULE delivers within D of each
+//                                           delivery of OTHER (its last one, with `stops`) whenever
+//                                           C holds at RULE's decisions in that window.
+//   Stability  `stable M.p for D;`          the rule delivering into M.p changes at most once
+//                                           in any D (two switches are at least D apart).
 struct TemporalDecl {
-  enum class Kind { Spacing, Absence, Precedence };
+  enum class Kind { Spacing, Absence, Precedence, Response, Stability };
   Kind kind = Kind::Spacing;
   std::string rule;
   Loc rule_loc;
-  Duration window;    // Spacing
-  std::string event;  // Absence
+  Duration window;                           // Spacing, Response
+  bool stops = false;                        // Response: the trigger is OTHER's last delivery
+  ExprPtr condition;                         // Response: `while C`; null: none
+  Constraint condition_sema;                 // sema: C as a constraint (true without `while`)
+  PortRef port;                              // Stability (its rule is empty)
+  const ArbitrateDecl* port_decl = nullptr;  // sema: Stability's arbitrated port
+  std::string event;                         // Absence
   Loc event_loc;
   std::string other;  // Precedence
   Loc other_loc;
@@ -325,6 +335,12 @@ struct AssumeDecl {
   // sema:
   const Rule* after_decl = nullptr;  // null: reported, lowering skips it
   const Rule* until_decl = nullptr;
+// `given M.p every D;`: source M.p publishes at least every D from the start
+// (docs/language.md#properties-over-time).
+struct RateDecl {
+  PortRef port;
+  Duration period;
+  Loc loc;  // the `given` keyword
 };
 
 // `resource NAME { M.p, N.q } [when PRED];`: the ports share a resource; PRED, over the
@@ -426,6 +442,7 @@ struct Spec {
   std::vector<AssertDecl> asserts;
   std::vector<TemporalDecl> temporal;
   std::vector<AssumeDecl> assumptions;
+  std::vector<RateDecl> rates;
   std::vector<ResourceDecl> resources;
   std::vector<TestDecl> tests;
   std::optional<TestsFor> tests_for;  // a tests file (frontend.cc merges it into its app)

@@ -495,6 +495,17 @@ class Builder {
       spec.temporal.push_back(only_after_decl(c));
     } else if (auto* c = ctx->assumeDecl()) {
       spec.assumptions.push_back(assume_decl(c));
+    } else if (auto* c = ctx->responseDecl()) {
+      spec.temporal.push_back(response_decl(c));
+    } else if (auto* c = ctx->stableDecl()) {
+      TemporalDecl n;
+      n.kind = TemporalDecl::Kind::Stability;
+      n.loc = loc(c->getStart());
+      n.port = port_ref(c->portRef());
+      n.window = duration(c->duration());
+      spec.temporal.push_back(std::move(n));
+    } else if (auto* c = ctx->givenDecl()) {
+      spec.rates.push_back({port_ref(c->portRef()), duration(c->duration()), loc(c->getStart())});
     } else if (auto* c = ctx->resourceDecl()) {
       spec.resources.push_back(resource_decl(c));
     } else if (auto* c = ctx->testDecl()) {
@@ -697,6 +708,19 @@ class Builder {
       a.until_loc = loc(c->ID(2));
     }
     return a;
+  // responseDecl : 'after' ID 'stops'? ',' ID 'within' duration ('while' expr)? ';' ;
+  TemporalDecl response_decl(ArbcParser::ResponseDeclContext* c) {
+    TemporalDecl n;
+    n.kind = TemporalDecl::Kind::Response;
+    n.loc = loc(c->getStart());
+    n.other = tx(c->ID(0));
+    n.other_loc = loc(c->ID(0));
+    n.stops = c->stops != nullptr;
+    n.rule = tx(c->ID(1));
+    n.rule_loc = loc(c->ID(1));
+    n.window = duration(c->duration());
+    if (c->expr()) n.condition = expr(c->expr(), 0);
+    return n;
   }
 
   // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file

@@ -19,8 +19,9 @@ using arbc_grammar::ArbcParser;
 namespace {
 
 const std::set<std::string> kDeclStarts = {
-    "app",       "type",    "const",  "module", "event",    "events", "exclusive", "invariant",
-    "arbitrate", "connect", "assert", "test",   "resource", "never",  "only",      "assume"};
+    "app",       "type",      "const",     "module",  "event",  "events",
+    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
+    "resource",  "never",     "only",      "assume",  "given",  "stable"};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket
 // depth 0 starts a new one. Text before the first keyword is a range of its own.
@@ -36,8 +37,11 @@ std::vector<std::pair<size_t, size_t>> split_declarations(
       if (text == "{" || text == "(" || text == "[") ++depth;
       if ((text == "}" || text == ")" || text == "]") && depth > 0) --depth;
     }
-    if (depth == 0 && i > start && kDeclStarts.count(text) &&
-        tokens[i]->getType() != ArbcLexer::STRING) {
+    // `after` also sits inside `only R after O;`: it starts a response only after a `;` or `}`.
+    bool starts = kDeclStarts.count(text) ||
+                  (text == "after" && i > 0 &&
+                   (tokens[i - 1]->getText() == ";" || tokens[i - 1]->getText() == "}"));
+    if (depth == 0 && i > start && starts && tokens[i]->getType() != ArbcLexer::STRING) {
       ranges.emplace_back(start, i);
       start = i;
     }

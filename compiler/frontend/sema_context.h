@@ -111,6 +111,12 @@ class Sema {
                                  ast::TemporalDecl::Kind k);
   void check_absence_event(ast::TemporalDecl& n);
   void check_precedence(ast::TemporalDecl& n);
+  // `after OTHER [stops], RULE within D [while C];`: the pair, the window, the condition.
+  void check_response(ast::TemporalDecl& n);
+  // `stable M.p for D;`: an arbitrated port and a positive period.
+  void check_stability(ast::TemporalDecl& n);
+  // `given M.p every D;` (sema_rates.cc).
+  void check_rates();
 
   // ---- environment assumptions (sema_assume.cc) ----
   // `assume EVENT only after RULE [until RULE];`: a feed-owned event, two rules of one port.

@@ -184,6 +184,7 @@ void Sema::run() {
   for (AssertDecl& a : spec_.asserts) check_assert(a);
   for (TemporalDecl& n : spec_.temporal) check_temporal(n);
   for (AssumeDecl& a : spec_.assumptions) check_assume(a);
+  check_rates();  // sema_rates.cc
   check_resources();
   check_tests();  // sema_test.cc
 }

@@ -13,6 +13,7 @@ using namespace ast;
 namespace {
 
 const char* shape_name(TemporalDecl::Kind k) {
+  if (k == TemporalDecl::Kind::Response) return "an `after ... within` property";
   return k == TemporalDecl::Kind::Precedence ? "an `only ... after` property"
                                              : "a `never` property";
 }
@@ -66,34 +67,60 @@ void Sema::check_absence_event(TemporalDecl& n) {
           "unknown-event", n.event, candidates);
 }
 
-// `only RULE after OTHER;`: two different rules of one port, because the model checker
-// unrolls one port's run (docs/design.md#properties-over-time).
+// `only RULE after OTHER;` (and a response's trigger and rule): two different rules of one
+// port, because the model checker unrolls one port's run (docs/design.md#properties-over-time).
 void Sema::check_precedence(TemporalDecl& n) {
   n.other_decl = temporal_rule(n.other, n.other_loc, n.kind);
   if (!n.rule_decl || !n.other_decl) return;
+  bool response = n.kind == TemporalDecl::Kind::Response;
   if (n.rule_decl == n.other_decl) {
     error(n.other_loc,
-          "`only " + n.rule + " after " + n.other +
-              "` names one rule twice: name the rule that must deliver first",
+          response ? "`after " + n.other + ", " + n.rule +
+                         " within ...` names one rule twice: name the rule that must respond"
+                   : "`only " + n.rule + " after " + n.other +
+                         "` names one rule twice: name the rule that must deliver first",
           "temporal-pair");
   } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
     error(n.other_loc,
           "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" + n.other +
-              "' into " + n.other_decl->port->port.qualified() +
-              "; `only ... after` relates two rules of one port (the model checker follows one "
-              "port's messages)",
+              "' into " + n.other_decl->port->port.qualified() + "; " +
+              (response ? "`after ..., ... within`" : "`only ... after`") +
+              " relates two rules of one port (the model checker follows one port's messages)",
           "temporal-pair");
   }
   if (n.rule_decl == n.other_decl || n.rule_decl->port != n.other_decl->port)
     n.rule_decl = n.other_decl = nullptr;  // reported (or a port reported): lowering skips it
 }
 
+// The response's `while C` is a constraint over events, read in RULE's port as a `when` there.
+void Sema::check_response(TemporalDecl& n) {
+  check_precedence(n);
+  if (n.condition) n.condition_sema = check_constraint(*n.condition, "a response's `while`", false);
+}
+
+// `stable M.p for D;`: M.p is an arbitrated port (its deliveries are what switches).
+void Sema::check_stability(TemporalDecl& n) {
+  check_duration(n.window, "the `for` period");
+  if (!resolve_port(n.port, "destination", "a `stable` property")) return;
+  for (const ArbitrateDecl& a : spec_.arbitrations)
+    if (a.port.qualified() == n.port.qualified()) n.port_decl = &a;
+  if (!n.port_decl)
+    error(n.port.loc,
+          n.port.qualified() +
+              " has no `arbitrate` block: `stable` is about the rules that deliver into an "
+              "arbitrated port",
+          "not-arbitrated");
+}
+
 void Sema::check_temporal(TemporalDecl& n) {
-  if (n.kind == TemporalDecl::Kind::Spacing) check_duration(n.window, "the `within` window");
+  if (n.kind == TemporalDecl::Kind::Stability) return check_stability(n);
+  if (n.kind == TemporalDecl::Kind::Spacing || n.kind == TemporalDecl::Kind::Response)
+    check_duration(n.window, "the `within` window");
   n.rule_decl = temporal_rule(n.rule, n.rule_loc, n.kind);
   // The event is looked up in the rule's port: without the rule there is nothing to say.
   if (n.kind == TemporalDecl::Kind::Absence && n.rule_decl) check_absence_event(n);
   if (n.kind == TemporalDecl::Kind::Precedence) check_precedence(n);
+  if (n.kind == TemporalDecl::Kind::Response) check_response(n);
 }
 
 }  // namespace arbc::frontend

@@ -56,6 +56,12 @@ const char* describe_rule(size_t rule) {
       return "the `assume` declaration";
     case ArbcParser::RuleResourceDecl:
       return "the `resource` declaration";
+    case ArbcParser::RuleResponseDecl:
+      return "the `after ... within` property";
+    case ArbcParser::RuleStableDecl:
+      return "the `stable` property";
+    case ArbcParser::RuleGivenDecl:
+      return "the rate (`given`)";
     case ArbcParser::RuleStmt:
       return "the statement";
     case ArbcParser::RuleTestDecl:
@@ -89,7 +95,7 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",      "const",     "module",  "event",  "events",
     "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
-    "tests",     "resource",  "never",     "only",    "assume"};
+    "tests",     "resource",  "never",     "only",    "assume", "given",  "stable"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

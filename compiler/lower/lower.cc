@@ -83,14 +83,17 @@ class Lowerer {
     for (const ast::InvariantDecl& inv : spec_.invariants)
       app.invariants.push_back({inv.constraint, inv.loc});
     for (const ast::TemporalDecl& n : spec_.temporal) {
-      if (!n.rule_decl || !n.rule_decl->port) continue;  // sema reported it
+      const ast::ArbitrateDecl* port = n.rule_decl ? n.rule_decl->port : n.port_decl;
+      if (!port) continue;  // sema reported it
       model::TemporalProperty t;
-      t.kind = static_cast<model::TemporalProperty::Kind>(n.kind);  // the same three, in order
-      t.port = n.rule_decl->port->port.qualified();
+      t.kind = static_cast<model::TemporalProperty::Kind>(n.kind);  // the same five, in order
+      t.port = port->port.qualified();
       t.rule = n.rule;
       t.window = n.window.seconds;
       t.event = n.event;
       t.other = n.other;
+      t.stops = n.stops;
+      t.condition = n.condition_sema;
       t.loc = n.loc;
       app.temporal.push_back(std::move(t));
     }
@@ -99,6 +102,8 @@ class Lowerer {
       app.assumptions.push_back(
           {a.event, a.after_decl->port->port.qualified(), a.after, a.until, a.loc});
     }
+    for (const ast::RateDecl& r : spec_.rates)
+      if (r.port.port_decl) app.rates.push_back({r.port.qualified(), r.period.seconds, r.loc});
     for (const ast::ResourceDecl& r : spec_.resources) {
       model::Resource res;
       res.name = r.name;
@@ -316,9 +321,11 @@ class Lowerer {
     // `never RULE while EVENT` reads EVENT in RULE's port, so its feed is generated as for a
     // constraint (docs/design.md#feeds).
     for (const ast::TemporalDecl& t : spec_.temporal)
-      if (t.kind == ast::TemporalDecl::Kind::Absence && t.rule_decl && t.rule_decl->port &&
-          t.rule_decl->port->port.qualified() == ap.port)
-        read.insert(t.event);
+      if (t.rule_decl && t.rule_decl->port && t.rule_decl->port->port.qualified() == ap.port) {
+        if (t.kind == ast::TemporalDecl::Kind::Absence) read.insert(t.event);
+        // A response's `while` reads its events in the same port.
+        if (t.kind == ast::TemporalDecl::Kind::Response) t.condition_sema.collect_events(read);
+      }
     return read;
   }
 

@@ -16,7 +16,8 @@ constexpr const char* kSpecKeywords[] = {
     "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
     "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
     "not",      "and",      "or",    "true",      "false",     "otherwise", "never", "two",
-    "within",   "while",    "only",  "after",     "assume",    "until"};
+    "within",   "while",    "only",  "after",     "assume",    "until",     "stops",
+    "given",    "stable"};
 
 bool is_keyword(const std::string& s) {
   for (const char* k : kSpecKeywords) {

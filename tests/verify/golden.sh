@@ -76,6 +76,15 @@ golden temporal.sarif repo 1 --format sarif tests/verify/temporal.spec
 # spacing refuted by a replayed trace; the mutant without ask's throttle is refuted for ask too.
 golden table_clean_temporal.txt repo 1 tests/verify/table_clean_temporal.spec
 golden table_clean_ask_mutant.txt repo 1 tests/verify/table_clean_ask_mutant.spec
+# Its response (search resumes after faces stop) to a bound that covers the mutant's shortest
+# violation (11 messages), and the mutant with a window shorter than the hold plus the period.
+golden table_clean_temporal_bound14.txt repo 1 --temporal-bound 14 tests/verify/table_clean_temporal.spec
+golden table_clean_response_mutant.txt repo 1 --temporal-bound 14 tests/verify/table_clean_response_mutant.spec
+# Response and stability with rates: holds up to the bound, violated under the rate, violated
+# by silence without one; every format.
+golden temporal_response.txt repo 1 tests/verify/temporal_response.spec
+golden temporal_response.json repo 1 --format json tests/verify/temporal_response.spec
+golden temporal_response.sarif repo 1 --format sarif tests/verify/temporal_response.spec
 # Absence and precedence: proved at every decision, bounded, violated with replayed traces;
 # table_clean's put without e_taken refuted by `only put after take`.
 golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec

@@ -4,10 +4,13 @@
 Random small apps (one arbitrated port, one to three rules with random guards over two fed
 events, holds, throttles and accepts, with and without `by priority`), each with one property
 over time of a random shape (spacing `never two RULE within W;`, absence `never RULE while
-EVENT;`, precedence `only RULE after OTHER;`), verified with `arbc verify --format json`; then
-random input timings for each app, run on the runtime in simulated time (`arbc run --inputs`,
-`--trace`). Whenever a run violates the property within a number of messages into the port
-that the bound covers, the checker must not have said "proved" or "holds up to the bound".
+EVENT;`, precedence `only RULE after OTHER;`, response `after OTHER [stops], RULE within W
+[while C];` with a rate `given S.x every P;` for RULE's source, or none), verified with
+`arbc verify --format json`; then random input timings for each app, run on the runtime in
+simulated time (`arbc run --inputs`, `--trace`). The timings respect the stated rate (the
+source publishes by P and at most P after its previous message, up to the end of the run).
+Whenever a run violates the property within a number of messages into the port that the bound
+covers, the checker must not have said "proved" or "holds up to the bound".
 Some apps (two rules or more) carry an environment assumption `assume e1 only after RULE
 [until OTHER];`; their runs are made to keep it (a status message that reports e1 where the
 assumption forbids it stops reporting it, and the run is repeated), since the checker speaks
@@ -63,7 +66,15 @@ def random_app(rng, index):
     lines.append("}")
     k = rng.randint(1, n_rules)
     rule = f"r{k}"
-    shape = rng.choice(["spacing", "spacing", "absence"] + (["precedence"] if n_rules > 1 else []))
+    shape = rng.choice(["spacing", "spacing", "absence", "stability"] +
+                       (["precedence", "response", "response"] if n_rules > 1 else []))
+    if shape == "stability":
+        window = rng.choice([0.1, 0.3, 0.6, 1.0])
+        lines.append(f"stable Dst.y for {window}s;")
+        return "\n".join(lines) + "\n", sources, ("stability", rule, window), None
+    if shape == "response":
+        prop = response_prop(rng, lines, n_rules, k)
+        return "\n".join(lines) + "\n", sources, prop, None
     if shape == "spacing":
         prop = ("spacing", rule, rng.choice([0.1, 0.25, 0.5, 1.0, 2.0]))
         lines.append(f"never two {rule} within {prop[2]}s;")
@@ -85,14 +96,59 @@ def random_app(rng, index):
     return "\n".join(lines) + "\n", sources, prop, assumption
 
 
-def random_inputs(rng, sources, rule_source):
+def response_prop(rng, lines, n_rules, k):
+    """Appends `[given S_k.x every P;] after rO [stops], rk within W [while C];` to `lines`; the
+    property as (shape, rule, (other, stops, window, condition, period or None))."""
+    other = f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}"
+    stops = rng.random() < 0.6
+    window = rng.choice([0.3, 0.6, 1.0, 1.5])
+    condition = rng.choice(["", "", "e1", "not e2", "e1 and e2"])
+    period = rng.choice([None, 0.2, 0.4, 0.7])
+    if period is not None:
+        lines.append(f"given S{k}.x every {period}s;")
+    lines.append(f"after {other}{' stops' if stops else ''}, r{k} within {window}s"
+                 + (f" while {condition}" if condition else "") + ";")
+    return ("response", f"r{k}", (other, stops, window, condition, period))
+
+
+def rated_times(rng, period, end_ms, taken):
+    """Times (ms) of a source publishing at least every `period` from 0 to `end_ms`, avoiding
+    the times in `taken` (so that the order into the port is the order of time)."""
+    out, last = [], 0
+    p = int(period * 1000)
+    while last + p <= end_ms or not out:
+        t = rng.randint(last + 1, last + p)
+        while t in taken and t > last + 1:
+            t -= 1
+        if t in taken:
+            break
+        out.append(t)
+        taken.add(t)
+        last = t
+    return out
+
+
+def random_inputs(rng, sources, rule_source, period=None):
+    """As random_other_inputs; with a `period`, the rule's source also publishes at that rate
+    up to the end of the run (the last message plus the longest window)."""
+    if period is None:
+        return random_other_inputs(rng, sources, rule_source)
+    others = random_other_inputs(rng, [s for s in sources if s != rule_source], None)
+    taken = {int(round(m["t"] * 1000)) for m in others}
+    end = max(taken) + 1500 if taken else 1500
+    rated = [{"t": ms / 1000, "port": f"{rule_source}.x", "value": rng.randint(0, 5)}
+             for ms in rated_times(rng, period, end, taken)]
+    return sorted(others + rated, key=lambda m: m["t"])
+
+
+def random_other_inputs(rng, sources, rule_source):
     """Messages at distinct random times (so the order into the port is the order of time),
     half of them from the property's rule's source."""
     n = rng.randint(2, BOUND + 2)
     times = sorted(rng.sample(range(1, 1500), n))
     out = []
     for ms in times:
-        if rng.random() < 0.5:
+        if rule_source and rng.random() < 0.5:
             port = f"{rule_source}.x"
         else:
             port = rng.choice(["Status.s"] + [f"{s}.x" for s in sources])
@@ -169,6 +225,7 @@ def first_violation(steps, prop):
     last = None           # spacing: rule's last delivery
     entries = {}          # absence: the event's entries in the port, owner -> expiry (-1: none)
     armed = False         # precedence: OTHER delivered since rule's last delivery
+    last_who = last_switch = None  # stability: the last rule to deliver, the last switch
     for s in steps:
         if s.get("type") == "event" and s.get("port") == "Dst.y" and s.get("event") == arg:
             if s["op"] == "set":
@@ -178,6 +235,13 @@ def first_violation(steps, prop):
         if s.get("type") != "deliver":
             continue
         t, who = s["t"], s["connection"]
+        if kind == "stability":  # two switches of the delivering rule less than arg apart
+            if last_who is not None and who != last_who:
+                if last_switch is not None and t - last_switch < arg - 1e-9:
+                    return t
+                last_switch = t
+            last_who = who
+            continue
         if kind == "precedence" and who == arg:
             armed = True
         if who != rule:
@@ -193,6 +257,55 @@ def first_violation(steps, prop):
             if not armed:
                 return t
             armed = False
+    return None
+
+
+def holds(condition, present):
+    """A `while` condition ("", "e1", "not e2", "e1 and e2") over the present events."""
+    if not condition:
+        return True
+    return all((e[4:] not in present) if e.startswith("not ") else (e in present)
+               for e in condition.split(" and "))
+
+
+def response_violation(steps, prop, inputs):
+    """The end of the first window of `prop` (a response) that the run leaves unanswered while
+    the rate still holds; None if there is none."""
+    _, rule, (other, stops, window, condition, period) = prop
+    source = "S" + rule[1:] + ".x"
+    decision_times = [m["t"] for m in inputs if m["port"] == source]
+    # The observed run: while the rate holds (to its last message plus the period), or, with no
+    # rate, to the end of the run.
+    end = (decision_times[-1] + period) if period is not None and decision_times else inputs[-1]["t"] + 1
+    history = []  # (t, event, owner, expiry or None for an unset)
+    delivers = []
+    for s in steps:
+        if s.get("type") == "event" and s.get("port") == "Dst.y":
+            history.append((s["t"], s["event"], s["owner"],
+                            s.get("expiry", -1) if s["op"] == "set" else None))
+        elif s.get("type") == "deliver":
+            delivers.append((s["t"], s["connection"]))
+
+    def present_at(d):
+        entries = {}
+        for t, event, owner, expiry in history:
+            if t > d + 1e-9:
+                break
+            if expiry is None:
+                entries.pop((event, owner), None)
+            else:
+                entries[event, owner] = expiry
+        return {ev for (ev, _), x in entries.items() if x < 0 or d + 1e-9 < x}
+
+    for t, who in delivers:
+        if who != other or t + window > end + 1e-9:
+            continue
+        answered = any(t < u <= t + window + 1e-9 and (w == rule or (stops and w == other))
+                       for u, w in delivers)
+        lapsed = any(t < d <= t + window + 1e-9 and not holds(condition, present_at(d))
+                     for d in decision_times)
+        if not answered and not lapsed:
+            return t + window
     return None
 
 
@@ -215,7 +328,8 @@ def run_trace(arbc, app_dir, inputs, work):
 def violation(steps, inputs, prop):
     """The number of messages into the port up to the delivery at which the run violates
     `prop`; None when it does not."""
-    at = first_violation(steps, prop)
+    at = response_violation(steps, prop, inputs) if prop[0] == "response" else \
+        first_violation(steps, prop)
     return None if at is None else sum(1 for m in inputs if m["t"] <= at + 1e-9)
 
 
@@ -249,7 +363,8 @@ def main():
         if b.returncode != 0:
             raise RuntimeError(f"arbc build {spec} exited {b.returncode}: {b.stderr}")
         for _ in range(RUNS_PER_APP):
-            inputs = random_inputs(rng, sources, "S" + rule[1:])
+            period = prop[2][4] if prop[0] == "response" else None
+            inputs = random_inputs(rng, sources, "S" + rule[1:], period)
             counts["runs"] += 1
             built = os.path.join(app_dir, f"diff{index}")
             if assumption:

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # A violated property over time is written as a tests file (--counterexamples) that `arbc test`
 # replays on the runtime, and the replay passes: the counterexample is real
-# (docs/checks.md#temporal). Usage: temporal_replay.sh ARBC SPEC RULE
+# (docs/checks.md#temporal). Usage: temporal_replay.sh ARBC SPEC RULE [VERIFY OPTIONS...]
 set -u
 arbc=$1 spec=$2 rule=$3
+shift 3
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-"$arbc" verify --counterexamples "$dir" "$spec" >"$dir/out.txt"
+"$arbc" verify --counterexamples "$dir" "$@" "$spec" >"$dir/out.txt"
 code=$?
 [ "$code" -eq 1 ] || { echo "FAIL: arbc verify exited $code, expected 1 (violated)"; exit 1; }
 file=$(ls "$dir"/*."$rule".test.spec 2>/dev/null | head -1)

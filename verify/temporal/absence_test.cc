@@ -17,7 +17,8 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
                      const std::string& event, int bound = 6) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Absence, port, rule, 0, {}, "", ""};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Absence, port, rule, 0, {}, "", "", false, {}};
   p.event = event;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   std::optional<TemporalResult> r = check_absence(app, p, bound, ctx, nullptr, deadline, &error);
@@ -102,7 +103,7 @@ TEST(Absence, UnknownRuleIsBadInputNotAVerdict) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
-      model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0, {}, "", ""};
+      model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0, {}, "", "", false, {}};
   p.event = "e_taken";
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_absence(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));

@@ -12,7 +12,7 @@ Finding internal_replay_error(const TemporalResult& r, const std::string& what) 
   f.check = kCheckInternal;
   f.severity = Severity::Error;
   f.port = r.property.port;
-  f.rules = {r.property.rule};
+  if (!r.property.rule.empty()) f.rules = {r.property.rule};  // a stability names none
   if (!r.property.other.empty()) f.rules.push_back(r.property.other);
   f.loc = r.property.loc;
   f.message = "internal error: the model checker and the runtime disagree on `" +
@@ -57,7 +57,10 @@ void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
     }
   }
   std::string seen;
-  if (!replay_violates(r.property, *records, &seen)) {
+  std::string rule_source;  // where the rule's messages come from, for a response's judge
+  for (const TraceStep& s : r.trace)
+    if (s.connection == r.property.rule) rule_source = s.source;
+  if (!replay_violates(r.property, *records, &seen, &*r.replay_test, rule_source)) {
     findings.push_back(internal_replay_error(r, "replayed, " + seen));
     unknown(r, "internal error in the replay");
     return;

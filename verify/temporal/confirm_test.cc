@@ -32,8 +32,15 @@ class FixedReplayer : public TestReplayer {
 
 TemporalResult violated() {
   TemporalResult r;
-  r.property = {
-      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
+  r.property = {model::TemporalProperty::Kind::Spacing,
+                "PickAndPlace.cmd",
+                "take",
+                1.0,
+                {},
+                "",
+                "",
+                false,
+                {}};
   r.outcome = Outcome::Violated;
   r.replay_test = model::TestCase{};
   return r;

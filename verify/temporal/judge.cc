@@ -6,6 +6,8 @@
 #include "core/instant.h"
 #include "core/join.h"
 #include "core/time_text.h"
+#include "verify/temporal/judge_response.h"
+#include "verify/temporal/presence.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -27,30 +29,6 @@ bool spacing(const model::TemporalProperty& p, const std::vector<ReplayRecord>& 
   *seen = "'" + p.rule + "' delivered at " + at_times(times);
   return false;
 }
-
-// The container's entries for one event, (owner -> expiry, -1: none), as the records leave
-// them; the event is present at t when an entry has no expiry or t has not reached the expiry
-// (core/instant.h; docs/design.md#events-and-lifetimes).
-class Presence {
- public:
-  void apply(const ReplayRecord& r) {
-    if (r.kind == Kind::Set) {
-      entries_[r.connection] = r.expiry;
-    } else if (r.kind == Kind::Remove) {
-      auto it = entries_.find(r.connection);
-      // A lapse (it has its expiry) removes only the entry that lapsed, not a later refresh.
-      if (it != entries_.end() && (r.expiry < 0 || it->second <= r.expiry)) entries_.erase(it);
-    }
-  }
-  bool present(double t) const {
-    for (const auto& [owner, expiry] : entries_)
-      if (expiry < 0 || !reached(t, expiry)) return true;
-    return false;
-  }
-
- private:
-  std::map<std::string, double> entries_;
-};
 
 // A delivery is recorded after its connection's accept ran and before a `by priority` rule's
 // activity event is set, so the entries seen at the record are the decision state.
@@ -91,6 +69,23 @@ bool precedence(const model::TemporalProperty& p, const std::vector<ReplayRecord
   return false;
 }
 
+// Two switches of the delivering rule less than the window apart.
+bool stability(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+               std::string* seen) {
+  std::string last;
+  std::vector<double> switches;
+  std::vector<std::string> order;
+  for (const ReplayRecord& r : records) {
+    if (r.kind != Kind::Deliver) continue;
+    order.push_back(r.connection + " at " + time_text(r.t) + "s");
+    if (!last.empty() && r.connection != last) switches.push_back(r.t);
+    last = r.connection;
+  }
+  if (spaced_less_than(switches, p.window)) return true;
+  *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order));
+  return false;
+}
+
 }  // namespace
 
 // The assumed event's presence at each delivery into the port (a decision the records show)
@@ -124,7 +119,8 @@ bool spaced_less_than(const std::vector<double>& times, double window) {
 }
 
 bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                     std::string* seen) {
+                     std::string* seen, const model::TestCase* test,
+                     const std::string& rule_source) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
       return spacing(p, records, seen);
@@ -132,6 +128,10 @@ bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayR
       return absence(p, records, seen);
     case model::TemporalProperty::Kind::Precedence:
       return precedence(p, records, seen);
+    case model::TemporalProperty::Kind::Response:
+      return response_violated(p, records, test, rule_source, seen);
+    case model::TemporalProperty::Kind::Stability:
+      return stability(p, records, seen);
   }
   return false;
 }

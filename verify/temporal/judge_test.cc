@@ -20,13 +20,13 @@ ReplayRecord remove(double t, const std::string& owner, const std::string& e, do
 }
 
 P absence() {
-  P p{P::Kind::Absence, "HeadControl.gaze", "search", 0, {}, "", ""};
+  P p{P::Kind::Absence, "HeadControl.gaze", "search", 0, {}, "", "", false, {}};
   p.event = "act_track";
   return p;
 }
 
 P precedence() {
-  P p{P::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", ""};
+  P p{P::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", "", false, {}};
   p.other = "take";
   return p;
 }
@@ -81,7 +81,7 @@ TEST(Judge, PrecedenceNeedsAFreshDeliveryOfTheOtherRuleBeforeEach) {
 
 TEST(Judge, SpacingLooksOnlyAtTheRulesDeliveries) {
   std::string seen;
-  P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", ""};
+  P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", "", false, {}};
   EXPECT_TRUE(replay_violates(p, {deliver(0, "take"), deliver(0.999, "take")}, &seen));
   EXPECT_FALSE(
       replay_violates(p, {deliver(0, "take"), deliver(0.5, "put"), deliver(1, "take")}, &seen));

@@ -21,7 +21,8 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
                      const std::string& other, int bound = 6) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Precedence, port, rule, 0, {}, "", ""};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Precedence, port, rule, 0, {}, "", "", false, {}};
   p.other = other;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   std::optional<TemporalResult> r = check_precedence(app, p, bound, ctx, nullptr, deadline, &error);
@@ -134,8 +135,15 @@ TEST(Precedence, AnAssumptionNamingARuleThePortLacksIsBadInput) {
 TEST(Precedence, EitherRuleMissingIsBadInput) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{
-      model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", ""};
+  model::TemporalProperty p{model::TemporalProperty::Kind::Precedence,
+                            "PickAndPlace.cmd",
+                            "put",
+                            0,
+                            {},
+                            "",
+                            "",
+                            false,
+                            {}};
   p.other = "pull";  // a rule of PullObject.cmd
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(

@@ -3,7 +3,9 @@
 #include "core/time_text.h"
 #include "verify/temporal/absence.h"
 #include "verify/temporal/precedence.h"
+#include "verify/temporal/response.h"
 #include "verify/temporal/spacing.h"
+#include "verify/temporal/stability.h"
 
 namespace arbc::verify::temporal {
 
@@ -19,6 +21,10 @@ std::optional<TemporalResult> check_property(const model::App& app,
       return check_absence(app, p, bound, ctx, data, deadline, err);
     case model::TemporalProperty::Kind::Precedence:
       return check_precedence(app, p, bound, ctx, data, deadline, err);
+    case model::TemporalProperty::Kind::Response:
+      return check_response(app, p, bound, ctx, data, deadline, err);
+    case model::TemporalProperty::Kind::Stability:
+      return check_stability(app, p, bound, ctx, data, deadline, err);
   }
   *err = "unknown kind of property over time";
   return std::nullopt;
@@ -32,6 +38,14 @@ std::string property_words(const model::TemporalProperty& p) {
       return "never " + p.rule + " while " + p.event;
     case model::TemporalProperty::Kind::Precedence:
       return "only " + p.rule + " after " + p.other;
+    case model::TemporalProperty::Kind::Response: {
+      std::string words = "after " + p.other + (p.stops ? " stops, " : ", ") + p.rule + " within " +
+                          time_text(p.window) + "s";
+      if (p.condition.op != Constraint::Op::True) words += " while " + p.condition.to_string();
+      return words;
+    }
+    case model::TemporalProperty::Kind::Stability:
+      return "stable " + p.port + " for " + time_text(p.window) + "s";
   }
   return p.rule;
 }

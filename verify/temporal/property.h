@@ -14,7 +14,7 @@
 
 namespace arbc::verify::temporal {
 
-// check_spacing, check_absence or check_precedence, by p.kind.
+// check_spacing, check_absence, check_precedence or check_response, by p.kind.
 std::optional<TemporalResult> check_property(const model::App& app,
                                              const model::TemporalProperty& p, int bound,
                                              z3::context& ctx, DataQuery* data,

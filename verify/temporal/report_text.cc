@@ -7,6 +7,7 @@
 #include "verify/temporal/assumption.h"
 #include "verify/temporal/counterexample.h"
 #include "verify/temporal/property.h"
+#include "verify/temporal/rates.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -24,6 +25,18 @@ std::string environment_text(const TemporalResult& r) {
     out += "    assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
   }
   return out;
+std::string wrap(const std::string& text, const std::string& by, size_t width = 96);
+
+// The assumptions line; the rates the verdict relies on replace "at any times" for their sources.
+std::string assumptions(const TemporalResult& r) {
+  if (r.rates.empty()) return kAssumptions;
+  std::string out = "assuming:";
+  for (const model::SourceRate& rate : r.rates) out += " " + rate_words(rate) + ";";
+  return wrap(out +
+                  " other sources publish at any times; monitors accept or reject any message "
+                  "(data is not modelled; a rule with no `accept` accepts every message); "
+                  "exclusive groups and invariants are not used",
+              "    ");
 }
 
 std::string property_text(const model::TemporalProperty& p) {
@@ -56,6 +69,24 @@ std::string indent(const std::string& text, const std::string& by) {
     start = end + 1;
   }
   return out;
+}
+
+// `text` as lines of at most about `width` characters, each starting with `by`.
+std::string wrap(const std::string& text, const std::string& by, size_t width) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    std::string word = text.substr(start, end - start);
+    if (!line.empty() && by.size() + line.size() + 1 + word.size() > width) {
+      out += by + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return line.empty() ? out : out + by + line + "\n";
 }
 
 }  // namespace
@@ -101,13 +132,14 @@ std::string temporal_text(const TemporalResult& r) {
     case TemporalResult::Outcome::Violated:
       out += "violated: a shortest trace of " + messages + " into " + port + ":\n";
       for (const TraceStep& s : r.trace) out += step_text(s);
+      if (!r.explanation.empty()) out += wrap(r.explanation, "    ");
       out +=
           "    replayed on the runtime in simulated time, which shows the violation; as a tests\n"
           "    file (--counterexamples DIR writes it):\n";
       out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
       break;
   }
-  return out + kAssumptions + environment_text(r);
+  return out + assumptions(r) + environment_text(r);
 }
 
 }  // namespace arbc::verify::temporal

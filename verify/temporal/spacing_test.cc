@@ -16,7 +16,8 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
                      double window, int bound = 6) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{model::TemporalProperty::Kind::Spacing, port, rule, window, {}, "", ""};
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Spacing, port, rule, window, {}, "", "", false, {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   std::optional<TemporalResult> r = check_spacing(app, p, bound, ctx, nullptr, deadline, &error);
   EXPECT_TRUE(r) << error;
@@ -100,8 +101,15 @@ TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
 TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{
-      model::TemporalProperty::Kind::Spacing, "PickAndPlace.cmd", "pull", 1.0, {}, "", ""};
+  model::TemporalProperty p{model::TemporalProperty::Kind::Spacing,
+                            "PickAndPlace.cmd",
+                            "pull",
+                            1.0,
+                            {},
+                            "",
+                            "",
+                            false,
+                            {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_spacing(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));
   EXPECT_NE(error.find("does not have"), std::string::npos) << error;

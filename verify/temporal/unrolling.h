@@ -74,6 +74,9 @@ class Unrolling {
   // Connection `c` delivers at step k.
   z3::expr delivers(int c, int k) const { return del_[k][c]; }
   z3::expr time(int k) const { return t_[k]; }
+  // Connection `c` runs step k; step k's `accept` accepted (verify/temporal/rates.h reads them).
+  z3::expr runs(int c, int k) const { return run_[k] == c; }
+  z3::expr accepts(int k) const { return acc_[k]; }
   // `event` is present at step k's decision (the state its connection's constraint reads).
   z3::expr present_at_decision(const std::string& event, int k) const {
     return present(event, k, t_[k]);

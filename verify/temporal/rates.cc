@@ -1,0 +1,100 @@
+#include "verify/temporal/rates.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/time_text.h"
+
+namespace arbc::verify::temporal {
+namespace {
+
+// An expression that cannot make the monitor fail: the message, its fields, literals, locals
+// bound to such expressions, records and lists of them.
+bool cannot_fail(const model::BodyExpr& e) {
+  using Op = model::BodyExpr::Op;
+  switch (e.op) {
+    case Op::Message:
+    case Op::Int:
+    case Op::Float:
+    case Op::String:
+    case Op::Bool:
+    case Op::Local:
+      return true;
+    case Op::Field:
+    case Op::Record:
+    case Op::List:
+      for (const model::BodyExpr& a : e.args)
+        if (!cannot_fail(a)) return false;
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : ctx_(ctx) {
+  for (size_t c = 0; c < shape.connections.size(); ++c) {
+    if (accepts_every_message(*shape.connections[c])) always_accept_.push_back(static_cast<int>(c));
+    const model::SourceRate* r = app.find_rate(shape.connections[c]->source);
+    if (!r) continue;
+    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period)});
+    bool listed = false;
+    for (const model::SourceRate& u : used_) listed |= u.port == r->port;
+    if (!listed) used_.push_back(*r);
+  }
+}
+
+z3::expr Rates::recent(const Unrolling& u, int c, const z3::expr& period, int n,
+                       const z3::expr& at) const {
+  z3::expr_vector any(ctx_);
+  any.push_back(at <= period);  // the first message is due by one period after the start
+  for (int j = 0; j < n; ++j)
+    any.push_back(u.runs(c, j) && u.time(j) <= at && at - u.time(j) <= period);
+  return z3::mk_or(any);
+}
+
+z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon) const {
+  z3::expr_vector all(ctx_);
+  for (const Rated& r : rated_) {
+    // At each of its own steps (the gap before it) and at the horizon (the gap after the last).
+    for (int k = 0; k < n; ++k)
+      all.push_back(
+          z3::implies(u.runs(r.connection, k), recent(u, r.connection, r.period, k, u.time(k))));
+    all.push_back(recent(u, r.connection, r.period, n, horizon));
+  }
+  return z3::mk_and(all);
+}
+
+z3::expr seconds(z3::context& ctx, double v) {
+  char text[64];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return ctx.real_val(text);
+}
+
+z3::expr Rates::accepting(const Unrolling& u, int n) const {
+  z3::expr_vector all(ctx_);
+  for (int c : always_accept_)
+    for (int k = 0; k < n; ++k) all.push_back(z3::implies(u.runs(c, k), u.accepts(k)));
+  return z3::mk_and(all);
+}
+
+bool accepts_every_message(const model::Connection& c) {
+  if (c.kind != model::ConnectionKind::Rule || c.opaque || !c.body) return false;
+  for (const model::BodyStmt& s : *c.body) {
+    bool safe = (s.kind == model::BodyStmt::Kind::Emit || s.kind == model::BodyStmt::Kind::Let) &&
+                cannot_fail(s.expr);
+    if (!safe) return false;
+  }
+  return true;
+}
+
+std::string rate_words(const model::SourceRate& r) {
+  std::string where = r.loc.line ? " (" + r.loc.file + ":" + std::to_string(r.loc.line) + ")" : "";
+  return "given " + r.port + " every " + time_text(r.period) + "s" + where;
+}
+
+}  // namespace arbc::verify::temporal
