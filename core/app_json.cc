@@ -379,7 +379,7 @@ std::optional<App> read_app(const Json& root, std::string* err) {
             read_array(root, r, "", "invariants", false, &app.invariants, read_invariant, err) &&
             read_array(root, r, "", "resources", false, &app.resources, read_resource, err) &&
             read_array(root, r, "", "temporal", false, &app.temporal, read_temporal, err) &&
-            read_array(root, r, "", "assumptions", false, &app.assumptions, read_assumption, err);
+            read_array(root, r, "", "assumptions", false, &app.assumptions, read_assumption, err) &&
             read_array(root, r, "", "rates", false, &app.rates, read_rate, err);
   if (!ok) return std::nullopt;
   return app;

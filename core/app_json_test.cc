@@ -116,6 +116,22 @@ TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
   EXPECT_EQ(to_app_json(app).find("\"assumptions\""), std::string::npos);
   app.assumptions.push_back({"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}});
   app.assumptions.push_back({"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}});
+  std::string text = to_app_json(app);
+  std::string err;
+  std::optional<App> back = from_app_json(text, &err);
+  ASSERT_TRUE(back) << err;
+  ASSERT_EQ(back->assumptions.size(), 2u);
+  EXPECT_EQ(back->assumptions[0].event, "e_face");
+  EXPECT_EQ(back->assumptions[0].after, "track");
+  EXPECT_EQ(back->assumptions[0].until, "search");
+  EXPECT_EQ(back->assumptions[1].until, "");
+  EXPECT_EQ(back->assumptions[1].loc.line, 13);
+  EXPECT_EQ(to_app_json(*back), text);
+  std::string bad = text;
+  bad.replace(bad.find("\"after\""), 7, "\"later\"");
+  EXPECT_NE(load_error(bad).find("assumptions[0]"), std::string::npos);
+}
+
 // Response, stability and rates (`given M.p every D`) round-trip; no rates, no `rates` key; a
 // rate that is not a positive number of seconds is bad input naming where.
 TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
@@ -132,16 +148,6 @@ TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
   ASSERT_TRUE(back) << err;
-  ASSERT_EQ(back->assumptions.size(), 2u);
-  EXPECT_EQ(back->assumptions[0].event, "e_face");
-  EXPECT_EQ(back->assumptions[0].after, "track");
-  EXPECT_EQ(back->assumptions[0].until, "search");
-  EXPECT_EQ(back->assumptions[1].until, "");
-  EXPECT_EQ(back->assumptions[1].loc.line, 13);
-  EXPECT_EQ(to_app_json(*back), text);
-  std::string bad = text;
-  bad.replace(bad.find("\"after\""), 7, "\"later\"");
-  EXPECT_NE(load_error(bad).find("assumptions[0]"), std::string::npos);
   ASSERT_EQ(back->temporal.size(), 2u);
   EXPECT_EQ(back->temporal[0].kind, TemporalProperty::Kind::Response);
   EXPECT_EQ(back->temporal[0].other, "track");

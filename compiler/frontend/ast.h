@@ -335,6 +335,8 @@ struct AssumeDecl {
   // sema:
   const Rule* after_decl = nullptr;  // null: reported, lowering skips it
   const Rule* until_decl = nullptr;
+};
+
 // `given M.p every D;`: source M.p publishes at least every D from the start
 // (docs/language.md#properties-over-time).
 struct RateDecl {

@@ -708,6 +708,8 @@ class Builder {
       a.until_loc = loc(c->ID(2));
     }
     return a;
+  }
+
   // responseDecl : 'after' ID 'stops'? ',' ID 'within' duration ('while' expr)? ';' ;
   TemporalDecl response_decl(ArbcParser::ResponseDeclContext* c) {
     TemporalDecl n;

@@ -25,6 +25,8 @@ std::string environment_text(const TemporalResult& r) {
     out += "    assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
   }
   return out;
+}
+
 std::string wrap(const std::string& text, const std::string& by, size_t width = 96);
 
 // The assumptions line; the rates the verdict relies on replace "at any times" for their sources.
