@@ -1,6 +1,6 @@
-// Semantic checks of environment rates, `given M.p every D;` (docs/language.md#properties-over-
-// time): the port is an `out` port the app reads, the period a positive duration, one rate per
-// source.
+// Semantic checks of environment rates, `given M.p every D;`
+// (docs/language.md#properties-over-time): the port is an `out` port the app reads, the period a
+// positive duration, one rate per source.
 #include <map>
 #include <string>
 

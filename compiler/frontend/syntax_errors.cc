@@ -93,9 +93,9 @@ bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
 }
 
 const std::set<std::string> kDeclKeywords = {
-    "app",       "type",      "const",     "module",  "event",  "events",
-    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
-    "tests",     "resource",  "never",     "only",    "assume", "given",  "stable"};
+    "app",       "type",      "const",   "module", "event", "events", "exclusive",
+    "invariant", "arbitrate", "connect", "assert", "test",  "tests",  "resource",
+    "never",     "only",      "assume",  "given",  "stable"};
 const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
                                           "<=", ">", ">=", "==", "!=", "and", "or"};
 

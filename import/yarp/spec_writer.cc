@@ -11,13 +11,13 @@ namespace arbc::yarp {
 namespace {
 
 constexpr const char* kSpecKeywords[] = {
-    "app",      "type",     "const", "module",    "in",        "out",       "event", "events",
-    "from",     "lifetime", "for",   "exclusive", "invariant", "arbitrate", "by",    "priority",
-    "complete", "when",     "hold",  "connect",   "assert",    "let",       "var",   "accept",
-    "set",      "unset",    "if",    "else",      "emit",      "throttle",  "every", "script",
-    "not",      "and",      "or",    "true",      "false",     "otherwise", "never", "two",
-    "within",   "while",    "only",  "after",     "assume",    "until",     "stops",
-    "given",    "stable"};
+    "app",    "type",     "const",     "module", "in",        "out",       "event",
+    "events", "from",     "lifetime",  "for",    "exclusive", "invariant", "arbitrate",
+    "by",     "priority", "complete",  "when",   "hold",      "connect",   "assert",
+    "let",    "var",      "accept",    "set",    "unset",     "if",        "else",
+    "emit",   "throttle", "every",     "script", "not",       "and",       "or",
+    "true",   "false",    "otherwise", "never",  "two",       "within",    "while",
+    "only",   "after",    "assume",    "until",  "stops",     "given",     "stable"};
 
 bool is_keyword(const std::string& s) {
   for (const char* k : kSpecKeywords) {
