@@ -123,8 +123,15 @@ TEST(Precedence, AnAssumptionNamingARuleThePortLacksIsBadInput) {
   z3::context ctx;
   std::string error;
   model::App app = with_assumption("pull");  // pull goes into PullObject.cmd
-  model::TemporalProperty p{
-      model::TemporalProperty::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", "take", false, {}};
+  model::TemporalProperty p{model::TemporalProperty::Kind::Precedence,
+                            "PickAndPlace.cmd",
+                            "put",
+                            0,
+                            {},
+                            "",
+                            "take",
+                            false,
+                            {}};
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_precedence(app, p, 4, ctx, nullptr, deadline, &error));
   EXPECT_NE(error.find("names rule 'pull', which PickAndPlace.cmd does not have"),
