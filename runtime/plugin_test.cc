@@ -3,6 +3,7 @@
 
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc {
 namespace {
@@ -16,7 +17,7 @@ TEST(PluginTest, LoadsAPluginAndRunsTheAppToSuccess) {
   EXPECT_FALSE(load_plugin(ARBC_TEST_PLUGIN, &err));
   EXPECT_NE(err.find("registered no module"), std::string::npos) << err;
 
-  std::string dir = std::string(ARBC_SOURCE_DIR) + "/runtime/testdata/pingpong";
+  std::string dir = arbc::testing::source_dir() + "/runtime/testdata/pingpong";
   std::string error;
   std::optional<model::App> app = load_app_dir(dir, &error);
   ASSERT_TRUE(app) << error;

@@ -11,6 +11,7 @@
 
 #include "core/sha256.h"
 #include "runtime/runtime.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::testing {
 
@@ -34,7 +35,7 @@ class TestApp {
  public:
   TestApp() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = std::string(ARBC_BINARY_DIR) + "/runtime_test_scratch/" + info->test_suite_name() + "." +
+    dir = arbc::testing::binary_dir() + "/runtime_test_scratch/" + info->test_suite_name() + "." +
           info->name();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir + "/monitors");

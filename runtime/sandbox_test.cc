@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "runtime/runtime_test_util.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc {
 namespace {
@@ -59,7 +60,7 @@ void expect_errors_in_accept(const std::string& body, const std::string& message
 }
 
 TEST(SandboxTest, NoOsIoRequireOrLoad) {
-  std::string marker = std::string(ARBC_BINARY_DIR) + "/sandbox_escaped";
+  std::string marker = arbc::testing::binary_dir() + "/sandbox_escaped";
   std::filesystem::remove(marker);
   expect_errors_in_accept("os.execute('touch " + marker + "')", "global 'os'");
   expect_errors_in_accept("io.open('" + marker + "', 'w')", "global 'io'");

@@ -13,6 +13,7 @@
 
 #include "core/app_json.h"
 #include "core/check_ids.h"
+#include "tests/support/tree_paths.h"
 #include "verify/test_models.h"
 #include "verify/verify.h"
 
@@ -23,7 +24,7 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 
 std::string fixture_path(const std::string& name) {
-  return std::string(ARBC_SOURCE_DIR) + "/tests/verify/" + name;
+  return arbc::testing::source_dir() + "/tests/verify/" + name;
 }
 
 std::string read(const std::string& path) {
@@ -171,7 +172,7 @@ TEST(SarifFormat, UnknownIsAnErrorResult) {
 
 // Every check id printed in diagnostics and SARIF helpUris has its section in docs/checks.md.
 TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
-  std::string docs = read(std::string(ARBC_SOURCE_DIR) + "/docs/checks.md");
+  std::string docs = read(arbc::testing::source_dir() + "/docs/checks.md");
   for (const char* id : {kCheckExclusive, kCheckDead, kCheckUnfed, kCheckUnused, kCheckOwnership,
                          kCheckComplete, kCheckAssert, kCheckUnknown, kCheckInternal}) {
     EXPECT_THAT(docs, HasSubstr(std::string("\n## ") + id + "\n")) << id;

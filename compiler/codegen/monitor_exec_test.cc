@@ -13,6 +13,7 @@
 #include "compiler/codegen/testing/lua_monitor_harness.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::codegen {
 namespace {
@@ -80,7 +81,7 @@ const char* kObjectsFarAndNear =
 
 class TableCleanTest : public ::testing::Test {
  protected:
-  TableCleanTest() : app_(read_file(ARBC_SOURCE_DIR "/specs/table_clean.spec")) {}
+  TableCleanTest() : app_(read_file(arbc::testing::source_dir() + "/specs/table_clean.spec")) {}
   App app_;
 };
 

@@ -12,6 +12,7 @@
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "runtime/lua_monitor.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::codegen {
 namespace {
@@ -91,7 +92,7 @@ Value object(double x, double dist) {
 }
 
 TEST_F(RuntimeExecTest, EveryTableCleanMonitorLoadsInTheRuntimeSandbox) {
-  std::ifstream in(ARBC_SOURCE_DIR "/specs/table_clean.spec");
+  std::ifstream in(arbc::testing::source_dir() + "/specs/table_clean.spec");
   build(std::string(std::istreambuf_iterator<char>(in), {}));
   ASSERT_FALSE(HasFatalFailure());
   for (const model::Connection& c : compiled_.lowered->app.connections) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/tree_paths.h"
+
 namespace arbc::frontend {
 namespace {
 
@@ -18,7 +20,7 @@ std::string ids(const CheckResult& r) {
 }
 
 TEST(Frontend, TableCleanChecksAndIsAnnotated) {
-  CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/table_clean.spec");
+  CheckResult r = check_file(arbc::testing::source_dir() + "/specs/table_clean.spec");
   ASSERT_TRUE(r.ok()) << render_diagnostics(r.diagnostics, nullptr);
   const ast::Spec& spec = *r.spec;
   ASSERT_TRUE(spec.app);
@@ -132,10 +134,10 @@ TEST(Frontend, SyntaxErrorsAreOnePerDeclarationAndInWords) {
 
 TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
   for (const char* name : {"search_and_track", "face_filter"}) {
-    CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/" + name + ".spec");
+    CheckResult r = check_file(arbc::testing::source_dir() + "/specs/" + name + ".spec");
     EXPECT_TRUE(r.ok()) << name << "\n" << render_diagnostics(r.diagnostics, nullptr);
   }
-  CheckResult r = check_file(std::string(ARBC_SOURCE_DIR) + "/specs/search_and_track.spec");
+  CheckResult r = check_file(arbc::testing::source_dir() + "/specs/search_and_track.spec");
   const ast::Rule& track = r.spec->arbitrations[0].rules[0];
   EXPECT_EQ(track.constraint.to_string(), "true");
   ASSERT_EQ(track.body[0]->kind, Stmt::Kind::Set);

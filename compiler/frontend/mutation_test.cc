@@ -12,13 +12,14 @@
 
 #include "compiler/frontend/frontend.h"
 #include "core/check_ids.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::frontend {
 namespace {
 
 std::vector<std::string> seed_specs() {
   std::vector<std::string> seeds;
-  std::string root = ARBC_SOURCE_DIR;
+  std::string root = arbc::testing::source_dir();
   for (const std::string& dir : {root + "/specs", root + "/tests/check"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
       if (entry.path().extension() != ".spec" || !entry.is_regular_file()) continue;

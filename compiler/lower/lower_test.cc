@@ -8,6 +8,7 @@
 
 #include "compiler/lower/lower_test_util.h"
 #include "core/effective_guard.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::lower {
 namespace {
@@ -36,7 +37,7 @@ std::string spec(const std::string& body) { return std::string("app t;\n") + kMo
 // ---- the paper's application ---------------------------------------------------------------
 
 TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakFeed) {
-  CompiledSpec c = compile_ok(read_file(ARBC_SOURCE_DIR "/specs/table_clean.spec"));
+  CompiledSpec c = compile_ok(read_file(arbc::testing::source_dir() + "/specs/table_clean.spec"));
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
   EXPECT_EQ(app.name, "table_clean");
@@ -66,7 +67,7 @@ TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakFeed) {
 // ---- event feeds ----------------------------------------------------------------------------
 
 TEST(LowerTest, FeedsCarryOnlyTheEventsTheirPortReads) {
-  CompiledSpec c = compile_ok(read_file(ARBC_SOURCE_DIR "/specs/table_clean.spec"));
+  CompiledSpec c = compile_ok(read_file(arbc::testing::source_dir() + "/specs/table_clean.spec"));
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
   // PickAndPlace.status into PullObject.cmd (C6) carries both flags ...
@@ -117,7 +118,7 @@ never two track within 1s;
 }
 
 TEST(LowerTest, DerivedEventsWithForAreNeverUnsetWithoutForThey) {
-  CompiledSpec c = compile_ok(read_file(ARBC_SOURCE_DIR "/specs/table_clean.spec"));
+  CompiledSpec c = compile_ok(read_file(arbc::testing::source_dir() + "/specs/table_clean.spec"));
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
   const model::Connection* unreachable =

@@ -12,13 +12,14 @@
 #include "import/yarp/script_runner.h"
 #include "import/yarp/yarp_evaluator.h"
 #include "import/yarp/yarp_import.h"
+#include "tests/support/tree_paths.h"
 
 namespace arbc::yarp {
 namespace {
 
 std::vector<std::string> seed_scripts() {
   std::vector<std::string> out;
-  for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(ARBC_SOURCE_DIR) +
+  for (const auto& e : std::filesystem::recursive_directory_iterator(arbc::testing::source_dir() +
                                                                      "/tests/yarp_verify")) {
     if (e.path().extension() != ".lua") continue;
     std::ifstream in(e.path());

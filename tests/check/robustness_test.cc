@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/tree_paths.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -37,7 +39,7 @@ class CheckRobustness : public ::testing::Test {
   // Runs `arbc check ARGS`, with a time limit so a hang fails instead of blocking the suite.
   Outcome check(const std::string& args) {
     fs::path out = dir_ / "output.txt";
-    std::string command = "timeout 60 " + std::string(ARBC_BINARY_DIR) + "/cli/arbc check " + args +
+    std::string command = "timeout 60 " + arbc::testing::binary_dir() + "/cli/arbc check " + args +
                           " > " + out.string() + " 2>&1";
     int status = std::system(command.c_str());
     Outcome r;
@@ -163,7 +165,7 @@ TEST_F(CheckRobustness, DirectoryMissingAndUnreadable) {
 }
 
 TEST_F(CheckRobustness, SeveralFilesReportEachAndFailIfAnyFails) {
-  std::string good = std::string(ARBC_SOURCE_DIR) + "/specs/table_clean.spec";
+  std::string good = arbc::testing::source_dir() + "/specs/table_clean.spec";
   std::string bad = write("bad.spec", "app t;\nmodule A { out x: flot; }\n");
   Outcome r = check(good + " " + bad);
   EXPECT_EQ(r.exit_code, 2);

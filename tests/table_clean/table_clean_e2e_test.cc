@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/tree_paths.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -53,7 +55,7 @@ fs::path scratch() {
 }
 
 const std::string kArbc = ARBC_EXE;
-const std::string kSpecs = std::string(ARBC_SOURCE_DIR) + "/specs/";
+const std::string kSpecs = arbc::testing::source_dir() + "/specs/";
 
 // Builds `spec` into scratch()/out_name; returns the app directory.
 std::string build(const std::string& spec, const std::string& out_name, bool verify = true) {

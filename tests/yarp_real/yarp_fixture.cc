@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "import/yarp/app_xml.h"
+#include "tests/support/tree_paths.h"
 #include "tests/yarp_real/yarp_server.h"
 
 extern char** environ;
@@ -69,7 +70,7 @@ void YarpTest::TearDown() {
 }
 
 std::string YarpTest::source_dir(const std::string& relative) {
-  return (fs::path(ARBC_SOURCE_DIR) / relative).string();
+  return (fs::path(arbc::testing::source_dir()) / relative).string();
 }
 
 void YarpTest::use_folder(const std::string& folder) { fs::current_path(folder); }
