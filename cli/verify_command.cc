@@ -133,11 +133,12 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
     for (const verify::TemporalResult& t : r.report.temporal) {
       if (!t.replayed) continue;
       fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
-      // APP.RULE.test.spec for spacing; APP.RULE.KIND.test.spec for the others (a stability,
-      // which names no rule: APP.M_p.stability.test.spec).
-      std::string kind = t.property.kind == model::TemporalProperty::Kind::Spacing
-                             ? ""
-                             : std::string(".") + model::temporal_kind_name(t.property.kind);
+      // APP.RULE.test.spec for spacing (APP.RULE.after_OTHER.test.spec after another rule);
+      // APP.RULE.KIND.test.spec for the others (a stability, which names no rule:
+      // APP.M_p.stability.test.spec).
+      std::string kind = std::string(".") + model::temporal_kind_name(t.property.kind);
+      if (t.property.kind == model::TemporalProperty::Kind::Spacing)
+        kind = t.property.other.empty() ? "" : ".after_" + t.property.other;
       std::string who = t.property.rule;
       if (who.empty()) {
         who = t.property.port;

@@ -311,8 +311,9 @@ bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* 
   return read_location(j, p, &r->loc, err);
 }
 
-// `{"kind": "spacing", "port": .., "rule": .., "window": seconds}`, `{"kind": "absence", ..,
-// "event": ..}` or `{"kind": "precedence", .., "after": OTHER}` (docs/app-json.md).
+// `{"kind": "spacing", "port": .., "rule": .., "window": seconds, "after": OTHER}` ("after"
+// optional), `{"kind": "absence", .., "event": ..}` or `{"kind": "precedence", .., "after":
+// OTHER}` (docs/app-json.md).
 bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
   std::string kind;
   if (!get_string(j, p, "kind", &kind, err)) return false;
@@ -334,19 +335,26 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
       return fail(p + ".window: expected a positive number of seconds", err);
     t->window = *window;
   }
+  if (t->kind == K::Spacing && !opt_string(j, p, "after", &t->other, err)) return false;
   if (t->kind == K::Absence && !get_string(j, p, "event", &t->event, err)) return false;
   if (t->kind == K::Precedence && !get_string(j, p, "after", &t->other, err)) return false;
   if (t->kind == K::Response && !read_response(j, p, t, err)) return false;
   return read_location(j, p, &t->loc, err);
 }
 
-// `{"event": .., "port": .., "after": RULE, "until": RULE}`, `until` optional
+// `{"event": .., "port": .., "after": RULE, "until": RULE}`, `until` optional, or the timed
+// form `{"event": .., "port": .., "after": RULE, "absent_for": seconds}`
 // (docs/app-json.md#assumptions).
 bool read_assumption(const Json& j, const std::string& p, Assumption* a, std::string* err) {
   if (!get_string(j, p, "event", &a->event, err) || !get_string(j, p, "port", &a->port, err) ||
       !get_string(j, p, "after", &a->after, err))
     return false;
   if (!opt_string(j, p, "until", &a->until, err)) return false;
+  if (!opt_number(j, p, "absent_for", &a->absent_for, err)) return false;
+  if (a->absent_for && !(*a->absent_for > 0))
+    return fail(p + ".absent_for: expected a positive number of seconds", err);
+  if (a->absent_for && !a->until.empty())
+    return fail(p + ": an assumption has \"until\" or \"absent_for\", not both", err);
   return read_location(j, p, &a->loc, err);
 }
 

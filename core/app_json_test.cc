@@ -114,22 +114,37 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
 TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"assumptions\""), std::string::npos);
-  app.assumptions.push_back({"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}});
-  app.assumptions.push_back({"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}});
+  app.assumptions.push_back(
+      {"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}, std::nullopt});
+  app.assumptions.push_back(
+      {"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}, std::nullopt});
+  app.assumptions.push_back({"e_idle", "H.gaze", "track", "", {"demo.spec", 14, 1}, 1.5});
   std::string text = to_app_json(app);
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
   ASSERT_TRUE(back) << err;
-  ASSERT_EQ(back->assumptions.size(), 2u);
+  ASSERT_EQ(back->assumptions.size(), 3u);
   EXPECT_EQ(back->assumptions[0].event, "e_face");
   EXPECT_EQ(back->assumptions[0].after, "track");
   EXPECT_EQ(back->assumptions[0].until, "search");
+  EXPECT_FALSE(back->assumptions[0].absent_for);
   EXPECT_EQ(back->assumptions[1].until, "");
   EXPECT_EQ(back->assumptions[1].loc.line, 13);
+  EXPECT_EQ(back->assumptions[2].absent_for, 1.5);
   EXPECT_EQ(to_app_json(*back), text);
   std::string bad = text;
   bad.replace(bad.find("\"after\""), 7, "\"later\"");
   EXPECT_NE(load_error(bad).find("assumptions[0]"), std::string::npos);
+  // The timed form: a positive period, and no `until` beside it.
+  const std::string timed = "\"absent_for\": 1.5";
+  std::string zero = text;
+  zero.replace(zero.find(timed), timed.size(), "\"absent_for\": 0");
+  EXPECT_NE(load_error(zero).find("assumptions[2].absent_for: expected a positive number"),
+            std::string::npos)
+      << load_error(zero);
+  std::string both = text;
+  both.replace(both.find(timed), timed.size(), timed + ", \"until\": \"x\"");
+  EXPECT_NE(load_error(both).find("not both"), std::string::npos) << load_error(both);
 }
 
 // Response, stability and rates (`given M.p every D`) round-trip; no rates, no `rates` key; a

@@ -168,6 +168,8 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
       if (t.kind != TemporalProperty::Kind::Stability) w.member("rule", t.rule);
       if (t.kind == TemporalProperty::Kind::Spacing || t.kind == TemporalProperty::Kind::Stability)
         w.member("window", t.window);
+      // Written only when there is one: a spacing of one rule reads as it did before `after`.
+      if (t.kind == TemporalProperty::Kind::Spacing && !t.other.empty()) w.member("after", t.other);
       if (t.kind == TemporalProperty::Kind::Absence) w.member("event", t.event);
       if (t.kind == TemporalProperty::Kind::Precedence) w.member("after", t.other);
       if (t.kind == TemporalProperty::Kind::Response) {
@@ -194,6 +196,7 @@ void write_assumptions(JsonWriter& w, const std::vector<Assumption>& assumptions
     w.member("port", a.port);
     w.member("after", a.after);
     if (!a.until.empty()) w.member("until", a.until);
+    if (a.absent_for) w.member("absent_for", *a.absent_for);
     write_location(w, a.loc);
     w.end_object();
   }

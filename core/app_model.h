@@ -139,6 +139,8 @@ struct Invariant {
 
 // A property over time (docs/design.md#properties-over-time) about `rule`, a rule into `port`:
 //   Spacing    `never two RULE within W;`  never delivers twice less than `window` seconds apart;
+//              `never RULE within W after OTHER;`  with `other` (a rule into the same port):
+//                                          never delivers less than `window` after OTHER did;
 //   Absence    `never RULE while EVENT;`   never delivers while `event` is present in the
 //                                          port's container at the decision;
 //   Precedence `only RULE after OTHER;`    each delivery follows a delivery of `other` (a rule
@@ -156,7 +158,7 @@ struct TemporalProperty {
   double window = 0;  // seconds; Spacing, Response, Stability
   SourceLocation loc;
   std::string event;     // Absence
-  std::string other;     // Precedence, Response (the trigger)
+  std::string other;     // Precedence, Response (the trigger), Spacing (empty: RULE itself)
   bool stops = false;    // Response: the trigger is OTHER's last delivery
   Constraint condition;  // Response: `while C` (true without one)
 };
@@ -173,16 +175,21 @@ struct SourceRate {
 // JSON.
 const char* temporal_kind_name(TemporalProperty::Kind k);
 
-// An environment assumption `assume EVENT only after AFTER [until UNTIL];`
-// (docs/language.md#environment-assumptions): at every decision of a message into `port`, the
-// port's container holds EVENT (an event only feeds set) only if rule `after` has delivered and,
-// when `until` is not empty, rule `until` has not delivered since. Both rules go into `port`.
+// An environment assumption (docs/language.md#environment-assumptions) about EVENT, an event
+// only feeds set, at every decision of a message into `port`:
+//   `assume EVENT only after AFTER [until UNTIL];`  the port's container holds EVENT only if
+//       rule `after` has delivered and, when `until` is not empty, rule `until` has not
+//       delivered since. Both rules go into `port`.
+//   `assume not EVENT for D after AFTER;`  (`absent_for` = D) the container does not hold
+//       EVENT less than D after a delivery of rule `after`: the environment answers a
+//       delivery (an arm busy with a `take`) before the next message, for D.
 struct Assumption {
   std::string event;
   std::string port;  // "Module.port"
   std::string after;
   std::string until;  // empty: EVENT may stay once `after` has delivered
   SourceLocation loc;
+  std::optional<double> absent_for;  // seconds; the timed form (then `until` is empty)
 };
 
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that

@@ -52,14 +52,18 @@ statusEntry      : ID ('=' STRING)? ;
 exclusiveDecl    : 'exclusive' '{' ID (',' ID)* ','? '}' ';' ;
 invariantDecl    : 'invariant' expr ';' ;
 // Properties over time (docs/language.md#properties-over-time): spacing
-// `never two take within 1s;`, absence `never search while act_track;`, precedence
-// `only put after take;`.
-neverDecl        : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
+// `never two take within 1s;` and `never search within 1s after track;`, absence
+// `never search while act_track;`, precedence `only put after take;`.
+neverDecl        : 'never' ('two' ID 'within' duration | ID ('within' duration 'after' ID | 'while' ID))
+                   ';' ;
 onlyAfterDecl    : 'only' ID 'after' ID ';' ;
 // An environment assumption (docs/language.md#environment-assumptions): the feeds make EVENT
 // present only after a delivery of the first rule and, with `until`, absent after a delivery of
-// the second until the first delivers again: `assume e_taken only after take until put;`.
-assumeDecl       : 'assume' ID 'only' 'after' ID ('until' ID)? ';' ;
+// the second until the first delivers again: `assume e_taken only after take until put;`; or
+// they keep EVENT absent for D after each delivery of the rule:
+// `assume not e_arm_idle for 1s after take;`.
+assumeDecl       : 'assume' (ID 'only' 'after' ID ('until' ID)? | 'not' ID 'for' duration 'after' ID)
+                   ';' ;
 // Response `after track stops, search within 1.2s while e_unreachable;` (RULE delivers within D
 // of each delivery of the trigger, or of its last one with `stops`, while the condition holds).
 responseDecl     : 'after' ID stops='stops'? ',' ID 'within' duration ('while' expr)? ';' ;

@@ -108,6 +108,7 @@ Json temporal_json(const TemporalResult& t) {
   switch (t.property.kind) {
     case model::TemporalProperty::Kind::Spacing:
       j["window"] = t.property.window;
+      if (!t.property.other.empty()) j["after"] = t.property.other;
       break;
     case model::TemporalProperty::Kind::Absence:
       j["event"] = t.property.event;
@@ -136,6 +137,7 @@ Json temporal_json(const TemporalResult& t) {
     j["assumptions"].push_back({{"event", a.event},
                                 {"after", a.after},
                                 {"until", a.until.empty() ? Json(nullptr) : Json(a.until)},
+                                {"absent_for", a.absent_for ? Json(*a.absent_for) : Json(nullptr)},
                                 {"location", location_json(a.loc)}});
   }
   j["replayed"] = t.replayed;

@@ -291,6 +291,7 @@ struct AssertDecl {
 
 // A property over time (docs/language.md#properties-over-time), decided by verify/temporal/:
 //   Spacing    `never two RULE within D;`   RULE never delivers twice less than D apart;
+//              `never RULE within D after OTHER;`  nor less than D after a delivery of OTHER;
 //   Absence    `never RULE while EVENT;`    RULE delivers nothing while EVENT is present;
 //   Precedence `only RULE after OTHER;`     each delivery of RULE follows one of OTHER with no
 //                                           delivery of RULE in between.
@@ -312,12 +313,12 @@ struct TemporalDecl {
   const ArbitrateDecl* port_decl = nullptr;  // sema: Stability's arbitrated port
   std::string event;                         // Absence
   Loc event_loc;
-  std::string other;  // Precedence
+  std::string other;  // Precedence, Response, Spacing with `after` (empty without)
   Loc other_loc;
   Loc loc;  // the `never` or `only` keyword
   // sema:
   const Rule* rule_decl = nullptr;
-  const Rule* other_decl = nullptr;  // Precedence
+  const Rule* other_decl = nullptr;  // Precedence, Response, Spacing with `after`
 };
 
 // An environment assumption (docs/language.md#environment-assumptions),
@@ -331,6 +332,8 @@ struct AssumeDecl {
   Loc after_loc;
   std::string until;  // empty: no `until`
   Loc until_loc;
+  // `assume not EVENT for D after RULE;` (the timed form): D; its expr is null for the other.
+  Duration absent_for;
   Loc loc;  // the `assume` keyword
   // sema:
   const Rule* after_decl = nullptr;  // null: reported, lowering skips it

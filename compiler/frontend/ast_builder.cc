@@ -666,7 +666,8 @@ class Builder {
     return a;
   }
 
-  // neverDecl : 'never' ('two' ID 'within' duration | ID 'while' ID) ';' ;
+  // neverDecl : 'never' ('two' ID 'within' duration
+  //                       | ID ('within' duration 'after' ID | 'while' ID)) ';' ;
   TemporalDecl never_decl(ArbcParser::NeverDeclContext* c) {
     TemporalDecl n;
     n.loc = loc(c->getStart());
@@ -675,6 +676,10 @@ class Builder {
     if (c->duration()) {
       n.kind = TemporalDecl::Kind::Spacing;
       n.window = duration(c->duration());
+      if (c->ID().size() > 1) {  // `never RULE within D after OTHER;`
+        n.other = tx(c->ID(1));
+        n.other_loc = loc(c->ID(1));
+      }
     } else {
       n.kind = TemporalDecl::Kind::Absence;
       n.event = tx(c->ID(1));
@@ -695,7 +700,8 @@ class Builder {
     return n;
   }
 
-  // assumeDecl : 'assume' ID 'only' 'after' ID ('until' ID)? ';' ;
+  // assumeDecl : 'assume' (ID 'only' 'after' ID ('until' ID)?
+  //                        | 'not' ID 'for' duration 'after' ID) ';' ;
   AssumeDecl assume_decl(ArbcParser::AssumeDeclContext* c) {
     AssumeDecl a;
     a.loc = loc(c->getStart());
@@ -703,6 +709,7 @@ class Builder {
     a.event_loc = loc(c->ID(0));
     a.after = tx(c->ID(1));
     a.after_loc = loc(c->ID(1));
+    if (c->duration()) a.absent_for = duration(c->duration());
     if (c->ID().size() > 2) {
       a.until = tx(c->ID(2));
       a.until_loc = loc(c->ID(2));

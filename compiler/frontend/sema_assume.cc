@@ -1,7 +1,8 @@
 // Semantic checks of environment assumptions (docs/language.md#environment-assumptions):
-// `assume EVENT only after RULE [until RULE2];` constrains what the feeds report, so EVENT must
-// be one that only feeds set (a status flag or a derived event), and the two rules must be
-// different rules of one port, the port whose runs the model checker unrolls.
+// `assume EVENT only after RULE [until RULE2];` and `assume not EVENT for D after RULE;`
+// constrain what the feeds report, so EVENT must be one that only feeds set (a status flag or a
+// derived event), the two rules must be different rules of one port, the port whose runs the
+// model checker unrolls, and D a positive duration.
 #include <string>
 #include <vector>
 
@@ -10,30 +11,6 @@
 namespace arbc::frontend {
 
 using namespace ast;
-
-// The one rule named `name`; null (reported) when no rule or rules of several ports have it.
-const Rule* Sema::assume_rule(const std::string& name, const Loc& loc) {
-  std::vector<const Rule*> found;
-  std::vector<std::string> all;
-  for (const ArbitrateDecl& a : spec_.arbitrations) {
-    for (const Rule& r : a.rules) {
-      all.push_back(r.name);
-      if (r.name == name) found.push_back(&r);
-    }
-  }
-  if (found.empty()) {
-    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
-    return nullptr;
-  }
-  if (found.size() > 1) {
-    error(loc,
-          "rule name '" + name + "' is used by " + std::to_string(found.size()) +
-              " ports; an assumption can name only a rule whose name is unique: rename one",
-          "temporal-rule");
-    return nullptr;
-  }
-  return found.front();
-}
 
 void Sema::check_assume(AssumeDecl& a) {
   auto ev = events_.find(a.event);
@@ -48,8 +25,9 @@ void Sema::check_assume(AssumeDecl& a) {
               "feed sets: a status flag (`events from M.p { ... }`) or a derived event",
           "assume-event");
   }
-  a.after_decl = assume_rule(a.after, a.after_loc);
-  if (!a.until.empty()) a.until_decl = assume_rule(a.until, a.until_loc);
+  if (a.absent_for.expr) check_duration(a.absent_for, "the `for` period");
+  a.after_decl = unique_rule(a.after, a.after_loc, "an assumption");
+  if (!a.until.empty()) a.until_decl = unique_rule(a.until, a.until_loc, "an assumption");
   if (!a.after_decl || (!a.until.empty() && !a.until_decl) || ev == events_.end()) {
     a.after_decl = nullptr;  // reported: lowering skips it
     return;

@@ -107,8 +107,10 @@ class Sema {
   // ---- properties over time (sema_temporal.cc) ----
   // A property over time: its rules, window, event (by kind, docs/language.md).
   void check_temporal(ast::TemporalDecl& n);
-  const ast::Rule* temporal_rule(const std::string& name, const ast::Loc& loc,
-                                 ast::TemporalDecl::Kind k);
+  // The one rule named `name`; null (reported) when no rule, or rules of several ports, have
+  // it. `what` names the declaration in the message ("an assumption").
+  const ast::Rule* unique_rule(const std::string& name, const ast::Loc& loc,
+                               const std::string& what);
   void check_absence_event(ast::TemporalDecl& n);
   void check_precedence(ast::TemporalDecl& n);
   // `after OTHER [stops], RULE within D [while C];`: the pair, the window, the condition.
@@ -119,9 +121,9 @@ class Sema {
   void check_rates();
 
   // ---- environment assumptions (sema_assume.cc) ----
-  // `assume EVENT only after RULE [until RULE];`: a feed-owned event, two rules of one port.
+  // `assume EVENT only after RULE [until RULE];`: a feed-owned event, two rules of one port;
+  // `assume not EVENT for D after RULE;`: a feed-owned event, a positive D.
   void check_assume(ast::AssumeDecl& a);
-  const ast::Rule* assume_rule(const std::string& name, const ast::Loc& loc);
 
   // ---- tests (sema_test.cc) ----
   // Every `test`: unique names, steps and expectations against the app.

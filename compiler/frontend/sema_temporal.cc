@@ -1,6 +1,7 @@
 // Semantic checks of properties over time (docs/language.md#properties-over-time): the rules a
 // property names exist and are unambiguous, a window is a positive duration, an absence's event
-// is an event of the rule's port, and a precedence relates two rules of one port.
+// is an event of the rule's port, and a precedence, a response and a spacing after another rule
+// relate two rules of one port.
 #include <string>
 #include <vector>
 
@@ -18,10 +19,30 @@ const char* shape_name(TemporalDecl::Kind k) {
                                              : "a `never` property";
 }
 
+// What to do when a property over two rules names one rule twice.
+std::string same_rule_fix(const TemporalDecl& n) {
+  switch (n.kind) {
+    case TemporalDecl::Kind::Response:
+      return "`after " + n.other + ", " + n.rule +
+             " within ...` names one rule twice: name the rule that must respond";
+    case TemporalDecl::Kind::Spacing:
+      return "`never " + n.rule + " within ... after " + n.other +
+             "` names one rule twice: a rule spaced from itself reads `never two " + n.rule +
+             " within ...;`";
+    default:
+      return "`only " + n.rule + " after " + n.other +
+             "` names one rule twice: name the rule that must deliver first";
+  }
+}
+
+const char* pair_shape(TemporalDecl::Kind k) {
+  if (k == TemporalDecl::Kind::Response) return "`after ..., ... within`";
+  return k == TemporalDecl::Kind::Spacing ? "`never ... within ... after`" : "`only ... after`";
+}
+
 }  // namespace
 
-// The one rule named `name`; null (reported) when no rule or rules of several ports have it.
-const Rule* Sema::temporal_rule(const std::string& name, const Loc& loc, TemporalDecl::Kind k) {
+const Rule* Sema::unique_rule(const std::string& name, const Loc& loc, const std::string& what) {
   std::vector<const Rule*> found;
   std::vector<std::string> all;
   for (const ArbitrateDecl& a : spec_.arbitrations) {
@@ -38,7 +59,7 @@ const Rule* Sema::temporal_rule(const std::string& name, const Loc& loc, Tempora
     // Rule names are per port; a property over time must say which rule it is about.
     error(loc,
           "rule name '" + name + "' is used by " + std::to_string(found.size()) + " ports; " +
-              shape_name(k) + " can name only a rule whose name is unique: rename one",
+              what + " can name only a rule whose name is unique: rename one",
           "temporal-rule");
     return nullptr;
   }
@@ -67,24 +88,18 @@ void Sema::check_absence_event(TemporalDecl& n) {
           "unknown-event", n.event, candidates);
 }
 
-// `only RULE after OTHER;` (and a response's trigger and rule): two different rules of one
-// port, because the model checker unrolls one port's run (docs/design.md#properties-over-time).
+// `only RULE after OTHER;` (and a response's trigger and rule, and a spacing after another
+// rule): two different rules of one port, because the model checker unrolls one port's run
+// (docs/design.md#properties-over-time).
 void Sema::check_precedence(TemporalDecl& n) {
-  n.other_decl = temporal_rule(n.other, n.other_loc, n.kind);
+  n.other_decl = unique_rule(n.other, n.other_loc, shape_name(n.kind));
   if (!n.rule_decl || !n.other_decl) return;
-  bool response = n.kind == TemporalDecl::Kind::Response;
   if (n.rule_decl == n.other_decl) {
-    error(n.other_loc,
-          response ? "`after " + n.other + ", " + n.rule +
-                         " within ...` names one rule twice: name the rule that must respond"
-                   : "`only " + n.rule + " after " + n.other +
-                         "` names one rule twice: name the rule that must deliver first",
-          "temporal-pair");
+    error(n.other_loc, same_rule_fix(n), "temporal-pair");
   } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
     error(n.other_loc,
           "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" + n.other +
-              "' into " + n.other_decl->port->port.qualified() + "; " +
-              (response ? "`after ..., ... within`" : "`only ... after`") +
+              "' into " + n.other_decl->port->port.qualified() + "; " + pair_shape(n.kind) +
               " relates two rules of one port (the model checker follows one port's messages)",
           "temporal-pair");
   }
@@ -116,10 +131,12 @@ void Sema::check_temporal(TemporalDecl& n) {
   if (n.kind == TemporalDecl::Kind::Stability) return check_stability(n);
   if (n.kind == TemporalDecl::Kind::Spacing || n.kind == TemporalDecl::Kind::Response)
     check_duration(n.window, "the `within` window");
-  n.rule_decl = temporal_rule(n.rule, n.rule_loc, n.kind);
+  n.rule_decl = unique_rule(n.rule, n.rule_loc, shape_name(n.kind));
   // The event is looked up in the rule's port: without the rule there is nothing to say.
   if (n.kind == TemporalDecl::Kind::Absence && n.rule_decl) check_absence_event(n);
-  if (n.kind == TemporalDecl::Kind::Precedence) check_precedence(n);
+  bool pair = n.kind == TemporalDecl::Kind::Precedence ||
+              (n.kind == TemporalDecl::Kind::Spacing && !n.other.empty());
+  if (pair) check_precedence(n);
   if (n.kind == TemporalDecl::Kind::Response) check_response(n);
 }
 

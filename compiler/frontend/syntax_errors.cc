@@ -250,13 +250,15 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       d.message = "expected an expression in " + describe_context(ctx) + ", found " + found;
     } else if (x.kinds.count(ArbcParser::DURATION)) {
       d.message = "expected a duration such as 500ms, 1s or 2min, found " + found;
-    } else if (ctx->getRuleIndex() == ArbcParser::RuleNeverDecl && x.has("while") &&
-               offending->getText() == "within") {
-      // `never RULE within D`: the parser took it for an absence; the user forgot `two`.
-      d.message = "expected 'while' in the `never` property, found 'within'";
+    } else if (ctx->getRuleIndex() == ArbcParser::RuleNeverDecl && x.has("after") &&
+               offending->getText() == ";") {
+      // `never RULE within D;`: the user forgot `two`, or the rule the window starts after.
+      d.message = "expected 'after' in the `never` property, found ';'";
       Diagnostic note;
       note.severity = Severity::Note;
-      note.message = "a spacing property reads `never two RULE within D;`";
+      note.message =
+          "a spacing property reads `never two RULE within D;` (RULE never delivers twice less "
+          "than D apart) or `never RULE within D after OTHER;` (nor less than D after OTHER)";
       d.notes.push_back(std::move(note));
     } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && x.has("}") &&
                x.kinds.count(ArbcParser::ID)) {

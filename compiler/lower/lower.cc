@@ -99,8 +99,10 @@ class Lowerer {
     }
     for (const ast::AssumeDecl& a : spec_.assumptions) {
       if (!a.after_decl) continue;  // sema reported it
+      std::optional<double> absent_for;
+      if (a.absent_for.expr) absent_for = a.absent_for.seconds;
       app.assumptions.push_back(
-          {a.event, a.after_decl->port->port.qualified(), a.after, a.until, a.loc});
+          {a.event, a.after_decl->port->port.qualified(), a.after, a.until, a.loc, absent_for});
     }
     for (const ast::RateDecl& r : spec_.rates)
       if (r.port.port_decl) app.rates.push_back({r.port.qualified(), r.period.seconds, r.loc});

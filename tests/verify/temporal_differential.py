@@ -3,8 +3,8 @@
 
 Random small apps (one arbitrated port, one to three rules with random guards over two fed
 events, holds, throttles and accepts, with and without `by priority`), each with one property
-over time of a random shape (spacing `never two RULE within W;`, absence `never RULE while
-EVENT;`, precedence `only RULE after OTHER;`, response `after OTHER [stops], RULE within W
+over time of a random shape (spacing `never two RULE within W;` or `never RULE within W after
+OTHER;`, absence `never RULE while EVENT;`, precedence `only RULE after OTHER;`, response `after OTHER [stops], RULE within W
 [while C];` with a rate `given S.x every P;` for RULE's source, or none), verified with
 `arbc verify --format json`; then random input timings for each app, run on the runtime in
 simulated time (`arbc run --inputs`, `--trace`). The timings respect the stated rate (the
@@ -12,7 +12,7 @@ source publishes by P and at most P after its previous message, up to the end of
 Whenever a run violates the property within a number of messages into the port that the bound
 covers, the checker must not have said "proved" or "holds up to the bound".
 Some apps (two rules or more) carry an environment assumption `assume e1 only after RULE
-[until OTHER];`; their runs are made to keep it (a status message that reports e1 where the
+[until OTHER];` or `assume not e1 for W after RULE;`; their runs are made to keep it (a status message that reports e1 where the
 assumption forbids it stops reporting it, and the run is repeated), since the checker speaks
 only of such environments. The test fails unless it sees violations, "holds up to the bound"
 and verdicts under assumptions (proofs by k-induction are checked when they occur).
@@ -67,7 +67,8 @@ def random_app(rng, index):
     k = rng.randint(1, n_rules)
     rule = f"r{k}"
     shape = rng.choice(["spacing", "spacing", "absence", "stability"] +
-                       (["precedence", "response", "response"] if n_rules > 1 else []))
+                       (["precedence", "response", "response", "spacing_after"]
+                        if n_rules > 1 else []))
     if shape == "stability":
         window = rng.choice([0.1, 0.3, 0.6, 1.0])
         lines.append(f"stable Dst.y for {window}s;")
@@ -78,6 +79,10 @@ def random_app(rng, index):
     if shape == "spacing":
         prop = ("spacing", rule, rng.choice([0.1, 0.25, 0.5, 1.0, 2.0]))
         lines.append(f"never two {rule} within {prop[2]}s;")
+    elif shape == "spacing_after":
+        other = f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}"
+        prop = ("spacing_after", rule, (other, rng.choice([0.1, 0.25, 0.5, 1.0])))
+        lines.append(f"never {rule} within {prop[2][1]}s after {other};")
     elif shape == "absence":
         events = ["e1", "e2"] + ([f"act_r{j}" for j in range(1, n_rules)] if by_priority else [])
         prop = ("absence", rule, rng.choice(events))
@@ -87,12 +92,17 @@ def random_app(rng, index):
         lines.append(f"only {rule} after {prop[2]};")
     assumption = None
     if n_rules > 1 and rng.random() < 0.4:
-        # `assume e1 only after rA [until rB];`: the checker explores only such environments,
-        # and the runs are made to keep it (keep_assumption).
+        # `assume e1 only after rA [until rB];` or `assume not e1 for W after rA;`: the checker
+        # explores only such environments, and the runs are made to keep it (keep_assumption).
         after, until = rng.sample([f"r{j}" for j in range(1, n_rules + 1)], 2)
-        until = until if rng.random() < 0.7 else None
-        assumption = ("e1", after, until)
-        lines.append(f"assume e1 only after {after}" + (f" until {until}" if until else "") + ";")
+        if rng.random() < 0.5:
+            absent_for = rng.choice([0.2, 0.5, 1.0])
+            assumption = ("e1", after, None, absent_for)
+            lines.append(f"assume not e1 for {absent_for}s after {after};")
+        else:
+            until = until if rng.random() < 0.7 else None
+            assumption = ("e1", after, until, None)
+            lines.append(f"assume e1 only after {after}" + (f" until {until}" if until else "") + ";")
     return "\n".join(lines) + "\n", sources, prop, assumption
 
 
@@ -178,13 +188,18 @@ def decisions(steps):
 
 def broken_at(steps, assumption):
     """The time of the first decision at which the run breaks the assumption; None if none."""
-    _, after, until = assumption
+    _, after, until, absent_for = assumption
     armed = False
+    last_after = None
     for t, who, delivered, present in decisions(steps):
-        if present and not armed:
+        if absent_for is None and present and not armed:
+            return t
+        if (absent_for is not None and present and last_after is not None
+                and t - last_after < absent_for - 1e-9):
             return t
         if delivered and who == after:
             armed = True
+            last_after = t
         if delivered and who == until:
             armed = False
     return None
@@ -222,7 +237,7 @@ def verdict(arbc, spec):
 def first_violation(steps, prop):
     """The time of the delivery at which the trace first violates `prop`; None if it does not."""
     kind, rule, arg = prop
-    last = None           # spacing: rule's last delivery
+    last = None           # spacing: rule's last delivery (after OTHER: OTHER's)
     entries = {}          # absence: the event's entries in the port, owner -> expiry (-1: none)
     armed = False         # precedence: OTHER delivered since rule's last delivery
     last_who = last_switch = None  # stability: the last rule to deliver, the last switch
@@ -241,6 +256,13 @@ def first_violation(steps, prop):
                     return t
                 last_switch = t
             last_who = who
+            continue
+        if kind == "spacing_after":  # rule less than the window after OTHER's last delivery
+            other, window = arg
+            if who == other:
+                last = t
+            elif who == rule and last is not None and t - last < window - 1e-9:
+                return t
             continue
         if kind == "precedence" and who == arg:
             armed = True

@@ -1,10 +1,13 @@
 #include "verify/temporal/assumption.h"
 
+#include "core/time_text.h"
 #include "verify/temporal/unrolling.h"
 
 namespace arbc::verify::temporal {
 
 std::string assumption_words(const model::Assumption& a) {
+  if (a.absent_for)
+    return "assume not " + a.event + " for " + time_text(*a.absent_for) + "s after " + a.after;
   return "assume " + a.event + " only after " + a.after +
          (a.until.empty() ? "" : " until " + a.until);
 }
@@ -48,13 +51,25 @@ z3::expr Unrolling::armed_before(int on, int off, int k) const {
   return terms[static_cast<size_t>(k)];
 }
 
-// At step k's decision the assumed event is present only while its monitor is armed. The
-// event's entries belong to feeds (the front end refuses an assumption about an event that
-// monitor code sets), so this constrains the environment, not the app.
+// At step k's decision the assumed event is present only while its monitor is armed, or, for
+// the timed form, not less than D after a delivery of its rule (the rule's last delivery
+// before the first step included, from any state). The event's entries belong to feeds (the
+// front end refuses an assumption about an event that monitor code sets), so this constrains
+// the environment, not the app.
 void Unrolling::add_assumptions(int k) {
-  for (const PortShape::Assumed& a : shape_.assumptions)
-    solver_.add(z3::implies(!armed_before(a.after, a.until, k),
-                            !present_at_decision(a.assumption.event, k)));
+  for (const PortShape::Assumed& a : shape_.assumptions) {
+    z3::expr absent = !present_at_decision(a.assumption.event, k);
+    if (!a.assumption.absent_for) {
+      solver_.add(z3::implies(!armed_before(a.after, a.until, k), absent));
+      continue;
+    }
+    z3::expr d = exact_real(ctx_, *a.assumption.absent_for);
+    for (int i = 0; i < k; ++i)
+      solver_.add(z3::implies(del_[i][static_cast<size_t>(a.after)] && t_[k] - t_[i] < d, absent));
+    solver_.add(z3::implies(
+        delivered_before_start(a.after) && t_[k] - last_delivery_before_start(a.after) < d,
+        absent));
+  }
 }
 
 }  // namespace arbc::verify::temporal

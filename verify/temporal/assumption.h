@@ -2,8 +2,10 @@
 // docs/language.md#environment-assumptions): `assume EVENT only after AFTER [until UNTIL];`
 // restricts what the feeds report. At every decision of a message into the port, EVENT is present
 // in the port's container only while the monitor "armed by a delivery of AFTER, disarmed by one of
-// UNTIL" is armed; the unrolling adds this at each step (Unrolling::add_assumptions), so every
-// verdict about the port is under it, and every report prints it.
+// UNTIL" is armed; `assume not EVENT for D after AFTER;` keeps it absent at every decision less
+// than D after a delivery of AFTER. The unrolling adds this at each step
+// (Unrolling::add_assumptions), so every verdict about the port is under it, and every report
+// prints it.
 #pragma once
 
 #include <string>

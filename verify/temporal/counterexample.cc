@@ -140,11 +140,10 @@ class Builder {
     s.port = c.source;
     s.value = w->messages[0];
     test.steps.push_back(std::move(s));
-    // The deliveries the property is about (for a precedence, both rules') as expectations.
+    // The deliveries the property is about (for a property over two rules, both rules') as
+    // expectations.
     bool named = c.name == p.rule || p.kind == model::TemporalProperty::Kind::Stability ||
-                 ((p.kind == model::TemporalProperty::Kind::Precedence ||
-                   p.kind == model::TemporalProperty::Kind::Response) &&
-                  c.name == p.other);
+                 (!p.other.empty() && c.name == p.other);
     if (named && u_.trace_step(m_, k).delivered) {
       model::Expectation e;
       e.port = c.destination;

@@ -1,17 +1,10 @@
 #include "verify/temporal/induction.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 
 namespace arbc::verify::temporal {
 namespace {
-
-z3::expr real(z3::context& ctx, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return ctx.real_val(text);
-}
 
 // Z3's answer with the time left; unknown when none is left, the solver gives up or throws.
 z3::check_result check(z3::solver& solver, std::chrono::steady_clock::time_point deadline) {
@@ -52,7 +45,7 @@ void Unrolling::add_any_start_entry(size_t q) {
     solver_.add(has == delivered_before_start(e.owner));
     if (e.lifetime) {
       solver_.add(!forever &&
-                  expiry == last_delivery_before_start(e.owner) + real(ctx_, *e.lifetime));
+                  expiry == last_delivery_before_start(e.owner) + exact_real(ctx_, *e.lifetime));
     } else {
       solver_.add(forever);
     }
@@ -74,7 +67,7 @@ void Unrolling::constrain_any_start() {
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     const Entry& e = shape_.entries[q];
     if (e.activity || e.free_lifetime || !e.lifetime) continue;
-    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + exact_real(ctx_, *e.lifetime)));
   }
 }
 

@@ -1,6 +1,7 @@
 #include "verify/temporal/judge.h"
 
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "core/instant.h"
@@ -27,6 +28,26 @@ bool spacing(const model::TemporalProperty& p, const std::vector<ReplayRecord>& 
     if (r.kind == Kind::Deliver && r.connection == p.rule) times.push_back(r.t);
   if (spaced_less_than(times, p.window)) return true;
   *seen = "'" + p.rule + "' delivered at " + at_times(times);
+  return false;
+}
+
+// `never RULE within W after OTHER;`: a delivery of RULE less than W after OTHER's last one.
+bool spacing_after(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
+                   std::string* seen) {
+  std::optional<double> last_other;
+  std::vector<double> times, other_times;
+  for (const ReplayRecord& r : records) {
+    if (r.kind != Kind::Deliver) continue;
+    if (r.connection == p.other) {
+      last_other = r.t;
+      other_times.push_back(r.t);
+    } else if (r.connection == p.rule) {
+      if (last_other && !reached(r.t - *last_other, p.window)) return true;
+      times.push_back(r.t);
+    }
+  }
+  *seen = "'" + p.rule + "' delivered at " + at_times(times) + ", '" + p.other + "' at " +
+          at_times(other_times);
   return false;
 }
 
@@ -95,9 +116,20 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
                      std::string* broken) {
   Presence event;
   bool armed = false;
+  std::optional<double> last_after;  // the timed form: the last delivery of a.after
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) {
       if (r.event == a.event) event.apply(r);
+      continue;
+    }
+    if (a.absent_for) {
+      if (last_after && !reached(r.t - *last_after, *a.absent_for) && event.present(r.t)) {
+        *broken = a.event + " was present when '" + r.connection + "' delivered at " +
+                  time_text(r.t) + "s, less than " + time_text(*a.absent_for) + "s after " +
+                  a.after + " delivered at " + time_text(*last_after) + "s";
+        return false;
+      }
+      if (r.connection == a.after) last_after = r.t;
       continue;
     }
     if (!armed && event.present(r.t)) {
@@ -123,7 +155,7 @@ bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayR
                      const std::string& rule_source) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
-      return spacing(p, records, seen);
+      return p.other.empty() ? spacing(p, records, seen) : spacing_after(p, records, seen);
     case model::TemporalProperty::Kind::Absence:
       return absence(p, records, seen);
     case model::TemporalProperty::Kind::Precedence:

@@ -89,7 +89,7 @@ TEST(Judge, SpacingLooksOnlyAtTheRulesDeliveries) {
 }
 
 TEST(Judge, AReplayMustKeepTheAssumptionAtEachDelivery) {
-  model::Assumption a{"e_taken", "PickAndPlace.cmd", "take", "put", {}};
+  model::Assumption a{"e_taken", "PickAndPlace.cmd", "take", "put", {}, std::nullopt};
   std::string broken;
   // Reported after the take, withdrawn before the next put: kept.
   EXPECT_TRUE(
@@ -111,6 +111,42 @@ TEST(Judge, AReplayMustKeepTheAssumptionAtEachDelivery) {
       a,
       {deliver(0, "take"), set(0.1, "h", "e_taken", 0.5), deliver(0.2, "put"), deliver(0.5, "put")},
       &broken));
+}
+
+TEST(Judge, ASpacingAfterAnotherRuleMeasuresFromItsLastDelivery) {
+  P p{P::Kind::Spacing, "HeadControl.gaze", "search", 1.0, {}, "", "track", false, {}};
+  std::string seen;
+  EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), deliver(0.6, "search")}, &seen));
+  // At the window's end, and before any track, search may deliver; two searches are no matter.
+  EXPECT_FALSE(replay_violates(
+      p,
+      {deliver(0, "search"), deliver(0.1, "search"), deliver(0.2, "track"), deliver(1.2, "search")},
+      &seen));
+  EXPECT_NE(seen.find("'search' delivered at 0s, 0.1s, 1.2s, 'track' at 0.2s"), std::string::npos)
+      << seen;
+  // A later track restarts the window.
+  EXPECT_TRUE(replay_violates(
+      p, {deliver(0, "track"), deliver(0.9, "track"), deliver(1.5, "search")}, &seen));
+}
+
+TEST(Judge, AReplayMustKeepTheTimedAssumptionForItsWindow) {
+  model::Assumption a{"e_arm_idle", "PickAndPlace.cmd", "take", "", {}, 1.0};
+  std::string broken;
+  // Withdrawn at the take, reported again a second later: kept.
+  EXPECT_TRUE(replay_respects(
+      a,
+      {set(0, "h", "e_arm_idle", -1), deliver(0, "take"), remove(0, "h", "e_arm_idle", -1),
+       deliver(0.5, "put"), set(1, "h", "e_arm_idle", -1), deliver(1, "take")},
+      &broken));
+  // Still present half a second after the take.
+  EXPECT_FALSE(replay_respects(
+      a, {set(0, "h", "e_arm_idle", -1), deliver(0, "take"), deliver(0.5, "take")}, &broken));
+  EXPECT_NE(broken.find("e_arm_idle was present when 'take' delivered at 0.5s, less than 1s "
+                        "after take delivered at 0s"),
+            std::string::npos)
+      << broken;
+  // Present before any take: the timed form says nothing there.
+  EXPECT_TRUE(replay_respects(a, {set(0, "h", "e_arm_idle", -1), deliver(0.5, "put")}, &broken));
 }
 
 }  // namespace

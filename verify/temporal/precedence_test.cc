@@ -90,7 +90,7 @@ TEST(Precedence, TwoSearchesInsideOneHoldAreTheShortestViolation) {
 
 model::App with_assumption(const std::string& until) {
   model::App app = testing::table_clean_model();
-  app.assumptions.push_back({"e_taken", "PickAndPlace.cmd", "take", until, {}});
+  app.assumptions.push_back({"e_taken", "PickAndPlace.cmd", "take", until, {}, std::nullopt});
   return app;
 }
 

@@ -33,6 +33,8 @@ std::optional<TemporalResult> check_property(const model::App& app,
 std::string property_words(const model::TemporalProperty& p) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
+      if (!p.other.empty())
+        return "never " + p.rule + " within " + time_text(p.window) + "s after " + p.other;
       return "never two " + p.rule + " within " + time_text(p.window) + "s";
     case model::TemporalProperty::Kind::Absence:
       return "never " + p.rule + " while " + p.event;

@@ -1,7 +1,5 @@
 #include "verify/temporal/spacing.h"
 
-#include <cstdio>
-
 #include "core/time_text.h"
 #include "verify/temporal/bmc.h"
 #include "verify/temporal/induction.h"
@@ -21,18 +19,18 @@ std::string throttle_proof(const model::Connection& c, double window) {
          " after the last one";
 }
 
-// The last of `n` steps is a delivery of rule r less than `window` after an earlier one.
-z3::expr violation(const Unrolling& u, int r, int n, double window, z3::context& ctx) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", window);
-  z3::expr w = ctx.real_val(text);
+// The last of `n` steps is a delivery of rule r less than `window` after an earlier delivery
+// of rule `first` (r itself for `never two r within W`).
+z3::expr violation(const Unrolling& u, int first, int r, int n, double window, z3::context& ctx) {
+  z3::expr w = exact_real(ctx, window);
   z3::expr_vector earlier(ctx);
   for (int i = 0; i < n - 1; ++i)
-    earlier.push_back(u.delivers(r, i) && u.time(n - 1) - u.time(i) < w);
-  // The rule's last delivery before the first step (k-induction's any state; none from the start).
+    earlier.push_back(u.delivers(first, i) && u.time(n - 1) - u.time(i) < w);
+  // The first rule's last delivery before the first step (k-induction's any state; none from
+  // the start).
   if (u.from_any_state())
-    earlier.push_back(u.delivered_before_start(r) &&
-                      u.time(n - 1) - u.last_delivery_before_start(r) < w);
+    earlier.push_back(u.delivered_before_start(first) &&
+                      u.time(n - 1) - u.last_delivery_before_start(first) < w);
   return u.delivers(r, n - 1) && z3::mk_or(earlier);
 }
 
@@ -46,12 +44,18 @@ std::optional<TemporalResult> check_spacing(const model::App& app, const model::
   if (!shape) return std::nullopt;
   int r = property_rule(*shape, p, p.rule, err);
   if (r < 0) return std::nullopt;
-  ViolationAt at = [&](const Unrolling& u, int n) { return violation(u, r, n, p.window, ctx); };
+  int first = p.other.empty() ? r : property_rule(*shape, p, p.other, err);
+  if (first < 0) return std::nullopt;
+  ViolationAt at = [&](const Unrolling& u, int n) {
+    return violation(u, first, r, n, p.window, ctx);
+  };
   TemporalResult result = bounded_search(*shape, p, 2, bound, at, ctx, data, deadline);
   if (result.outcome != TemporalResult::Outcome::HoldsToBound) return result;
   // The search is kept even where the throttle decides: a violation it found would mean that
-  // the model of the throttle and the argument disagree, and the replay would judge it.
-  result.proof = throttle_proof(*shape->connections[static_cast<size_t>(r)], p.window);
+  // the model of the throttle and the argument disagree, and the replay would judge it. A
+  // throttle spaces a rule from itself only.
+  if (first == r)
+    result.proof = throttle_proof(*shape->connections[static_cast<size_t>(r)], p.window);
   if (!result.proof.empty()) result.outcome = TemporalResult::Outcome::Proved;
   try_induction(result, *shape, at, ctx, deadline);
   return result;

@@ -1,7 +1,8 @@
 // The spacing property `never two RULE within W;` by bounded model checking
 // (docs/design.md#properties-over-time): is there a run in which RULE delivers twice less than
 // W apart, within `bound` messages into its port? Tries 2, 3, ... messages, so a violation found
-// is one of the fewest messages.
+// is one of the fewest messages. `never RULE within W after OTHER;` (p.other) asks the same of
+// a delivery of RULE less than W after one of OTHER.
 #pragma once
 
 #include <z3++.h>

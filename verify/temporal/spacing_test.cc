@@ -1,6 +1,7 @@
 // The spacing property by bounded model checking (docs/design.md#properties-over-time) on the
 // table_clean model: a rule without a throttle is refuted with a shortest timed trace, a
-// throttle at least the window proves it for runs of any length, a shorter one does not.
+// throttle at least the window proves it for runs of any length, a shorter one does not; a
+// rule after another is kept out by a hold as long as the window, not by a shorter one.
 #include "verify/temporal/spacing.h"
 
 #include <gtest/gtest.h>
@@ -96,6 +97,60 @@ TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
   // Without the hold's effect (the rule reads nothing), two deliveries may share an instant.
   testing::connection(app, "track").constraint = testing::parse("true");
   EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1.0).outcome, Outcome::Violated);
+}
+
+TemporalResult check_after(const model::App& app, const std::string& rule, const std::string& other,
+                           double window) {
+  z3::context ctx;
+  std::string error;
+  model::TemporalProperty p{model::TemporalProperty::Kind::Spacing,
+                            "HeadControl.gaze",
+                            rule,
+                            window,
+                            {},
+                            "",
+                            other,
+                            false,
+                            {}};
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  // Eight messages, as `arbc verify` explores by default: a search a hold after track needs
+  // the three feeds, track, the two status feeds again (their flags lapse in 0.5 s) and search.
+  std::optional<TemporalResult> r = check_spacing(app, p, 8, ctx, nullptr, deadline, &error);
+  EXPECT_TRUE(r) << error;
+  return r ? *r : TemporalResult{};
+}
+
+TEST(Spacing, AfterAnotherRuleTheHoldKeepsTheLowerRuleOutForItsLength) {
+  // `never search within W after track;`: track's 1 s hold keeps search out for 1 s.
+  model::App app = testing::table_clean_model();
+  EXPECT_NE(check_after(app, "search", "track", 1.0).outcome, Outcome::Violated);
+  TemporalResult r = check_after(app, "search", "track", 1.25);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  std::vector<double> tracks = deliveries(r.trace, "track");
+  std::vector<double> searches = deliveries(r.trace, "search");
+  ASSERT_EQ(tracks.size(), 1u);
+  ASSERT_EQ(searches.size(), 1u);
+  EXPECT_GE(searches[0] - tracks[0], 1.0);
+  EXPECT_LT(searches[0] - tracks[0], 1.25);
+  EXPECT_TRUE(r.trace.back().delivered);
+  EXPECT_EQ(r.trace.back().connection, "search");
+}
+
+TEST(Spacing, AfterAnotherRuleAShorterHoldIsRefuted) {
+  model::App app = testing::table_clean_model();
+  for (model::Event& e : app.events)
+    if (e.name == "act_track") e.lifetime = 0.5;
+  TemporalResult r = check_after(app, "search", "track", 1.0);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  std::vector<double> tracks = deliveries(r.trace, "track");
+  std::vector<double> searches = deliveries(r.trace, "search");
+  ASSERT_EQ(searches.size(), 1u);
+  ASSERT_FALSE(tracks.empty());
+  EXPECT_GE(searches[0] - tracks.back(), 0.5);
+  EXPECT_LT(searches[0] - tracks.back(), 1.0);
+  // The other way round nothing keeps them apart: track, first by priority, may follow search
+  // at once.
+  EXPECT_EQ(check_after(app, "track", "search", 1.0).outcome, Outcome::Violated);
 }
 
 TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {

@@ -14,13 +14,6 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-// A double as an exact Z3 real (the decimal text of the double, as the runtime compares it).
-z3::expr real(z3::context& ctx, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return ctx.real_val(text);
-}
-
 // How long an entry the connection sets lives (docs/design.md#properties-over-time).
 Entry entry_of(const model::App& app, const model::Connection& c, const std::string& event,
                int owner) {
@@ -41,6 +34,12 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 }
 
 }  // namespace
+
+z3::expr exact_real(z3::context& ctx, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return ctx.real_val(text);
+}
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err) {
@@ -121,7 +120,7 @@ void Unrolling::add_step(int k) {
     z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
     if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
     if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
-      z3::expr period = real(ctx_, *conn.throttle);
+      z3::expr period = exact_real(ctx_, *conn.throttle);
       for (int i = 0; i < k; ++i)
         selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= period);
       if (start_ == Start::AnyState)
@@ -157,7 +156,7 @@ void Unrolling::add_entry_step(size_t q, int k) {
   if (e.free_lifetime) {
     solver_.add(z3::implies(set, x1 > t_[k]));  // any lifetime, or none (f1 free)
   } else if (e.lifetime) {
-    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + exact_real(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(set, f1 && x1 == t_[k]));
   }
@@ -173,7 +172,7 @@ void Unrolling::add_activity_step(size_t q, int k) {
   solver_.add(h1 == (d || h0));
   solver_.add(z3::implies(!d, f1 == f0 && x1 == x0));
   if (e.lifetime) {
-    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + exact_real(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(d, f1 && x1 == t_[k]));
   }

@@ -52,6 +52,9 @@ bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* 
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
+// A double as a Z3 real: the decimal text of the double to 17 digits, as the runtime compares it.
+z3::expr exact_real(z3::context& ctx, double v);
+
 // Whether some connection into the port can set `event` (else it is never present there).
 bool sets_into(const PortShape& shape, const std::string& event);
 
