@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <vector>
 
 #include "cli/test_expect.h"
 #include "runtime/runtime.h"
@@ -84,20 +86,42 @@ double test_end(const model::TestCase& test) {
   return end;
 }
 
+void publish_step(Runtime& rt, const model::TestStep& s) {
+  if (s.kind == model::TestStep::Kind::Input) {
+    size_t dot = s.port.find('.');
+    rt.publish(s.port.substr(0, dot), s.port.substr(dot + 1), s.value);
+    return;
+  }
+  Value step = Value::record(
+      {{"op", s.kind == model::TestStep::Kind::Set ? "set" : "unset"}, {"event", s.event}});
+  rt.publish(kHarnessModule, "events", step);
+}
+
+using StepOrder = std::shared_ptr<const std::vector<const model::TestStep*>>;
+
+// Publishes step i, then posts the next step of the same instant behind the deliveries step i
+// caused. The runtime drains each connection one message per task, so connections interleave
+// fairly; steps published all at once would then be processed by connection, not as written
+// (two `unset`s and a message at one instant: the message between the two). Chained, the
+// steps of an instant are processed in the order written (docs/testing.md#how-tests-run),
+// which a replayed counterexample needs.
+void publish_from(Runtime& rt, const StepOrder& steps, size_t i) {
+  const std::vector<const model::TestStep*>& order = *steps;
+  publish_step(rt, *order[i]);
+  if (i + 1 < order.size() && order[i + 1]->t == order[i]->t)
+    rt.executor().post(order[i]->t, [&rt, steps, i] { publish_from(rt, steps, i + 1); });
+}
+
 // Publishes each step at its time, in the order written (same-instant steps keep it).
 void post_steps(Runtime& rt, const model::TestCase& test) {
-  for (const model::TestStep& s : test.steps) {
-    rt.executor().post(s.t, [&rt, &s] {
-      if (s.kind == model::TestStep::Kind::Input) {
-        size_t dot = s.port.find('.');
-        rt.publish(s.port.substr(0, dot), s.port.substr(dot + 1), s.value);
-        return;
-      }
-      Value step = Value::record(
-          {{"op", s.kind == model::TestStep::Kind::Set ? "set" : "unset"}, {"event", s.event}});
-      rt.publish(kHarnessModule, "events", step);
-    });
-  }
+  auto order = std::make_shared<std::vector<const model::TestStep*>>();
+  for (const model::TestStep& s : test.steps) order->push_back(&s);
+  std::stable_sort(order->begin(), order->end(),
+                   [](const model::TestStep* a, const model::TestStep* b) { return a->t < b->t; });
+  StepOrder steps = order;
+  for (size_t i = 0; i < steps->size(); ++i)
+    if (i == 0 || (*steps)[i - 1]->t != (*steps)[i]->t)
+      rt.executor().post((*steps)[i]->t, [&rt, steps, i] { publish_from(rt, steps, i); });
 }
 
 // Each failed expectation with what happened and the trace around it.

@@ -41,7 +41,10 @@ echo "scratch copy: $scratch (logs in $scratch/logs)"
 # checkout's own builds (CCACHE_BASEDIR makes the paths relative, as scripts/build.sh does).
 mkdir -p "$scratch/src"
 find "$scratch/src" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
-tar -C "$root" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$scratch/src" -xf -
+# Extracted with the time of the copy (-m), not the files' own: a build directory kept from an
+# earlier run has objects newer than a source edited before that run's copy, and make would
+# keep them (ccache makes the rebuild of unchanged files cheap).
+tar -C "$root" --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$scratch/src" -xmf -
 export CCACHE_BASEDIR=$scratch/src CCACHE_NOHASHDIR=1
 
 build() {  # build LOG [TARGET]: 0 when the tree (or only TARGET) builds

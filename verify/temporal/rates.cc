@@ -45,23 +45,24 @@ Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : 
   }
 }
 
-z3::expr Rates::recent(const Unrolling& u, int c, const z3::expr& period, int n,
-                       const z3::expr& at) const {
+z3::expr Rates::recent(const Unrolling& u, int c, const z3::expr& period, int n, const z3::expr& at,
+                       bool strictly) const {
+  auto within = [&](const z3::expr& gap) { return strictly ? gap < period : gap <= period; };
   z3::expr_vector any(ctx_);
-  any.push_back(at <= period);  // the first message is due by one period after the start
+  any.push_back(within(at));  // the first message is due by one period after the start
   for (int j = 0; j < n; ++j)
-    any.push_back(u.runs(c, j) && u.time(j) <= at && at - u.time(j) <= period);
+    any.push_back(u.runs(c, j) && u.time(j) <= at && within(at - u.time(j)));
   return z3::mk_or(any);
 }
 
-z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon) const {
+z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon, Horizon end) const {
   z3::expr_vector all(ctx_);
   for (const Rated& r : rated_) {
     // At each of its own steps (the gap before it) and at the horizon (the gap after the last).
     for (int k = 0; k < n; ++k)
-      all.push_back(
-          z3::implies(u.runs(r.connection, k), recent(u, r.connection, r.period, k, u.time(k))));
-    all.push_back(recent(u, r.connection, r.period, n, horizon));
+      all.push_back(z3::implies(u.runs(r.connection, k),
+                                recent(u, r.connection, r.period, k, u.time(k), false)));
+    all.push_back(recent(u, r.connection, r.period, n, horizon, end == Horizon::Included));
   }
   return z3::mk_and(all);
 }

@@ -21,9 +21,14 @@ class Rates {
   // The rates of the sources of `shape`'s connections (none: every formula is true).
   Rates(const model::App& app, const PortShape& shape, z3::context& ctx);
 
+  // Whether a message at the horizon itself belongs to the observed run. Included (a response's
+  // window (t, t + D] ends there): a message due exactly at the horizon would be a step, so the
+  // gap after the last step must be shorter than the period. After (a stability's last switch):
+  // a message at that instant comes after the violation and changes nothing.
+  enum class Horizon { Included, After };
   // Over the first `n` steps of `u`, observed until `horizon` (>= the last step's time): no
   // rated connection is silent for more than its period, from time 0 on.
-  z3::expr up_to(const Unrolling& u, int n, const z3::expr& horizon) const;
+  z3::expr up_to(const Unrolling& u, int n, const z3::expr& horizon, Horizon end) const;
 
   // Over the first `n` steps: a rule whose monitor accepts every message (accepts_every_message)
   // accepts on each of its steps, so a rated source's messages cannot all be rejected.
@@ -34,10 +39,10 @@ class Rates {
   bool empty() const { return rated_.empty(); }
 
  private:
-  // Connection c has a message at most `period` before `at` (or `at` is within the first
-  // period), among the steps j < n.
-  z3::expr recent(const Unrolling& u, int c, const z3::expr& period, int n,
-                  const z3::expr& at) const;
+  // Connection c has a message at most `period` before `at` (less than `period`, `strictly`),
+  // or `at` is within the first period, among the steps j < n.
+  z3::expr recent(const Unrolling& u, int c, const z3::expr& period, int n, const z3::expr& at,
+                  bool strictly) const;
 
   struct Rated {
     int connection;

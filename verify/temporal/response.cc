@@ -41,7 +41,7 @@ z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx)
   z3::expr_vector all(ctx);
   all.push_back(z3::mk_or(some));
   all.push_back(u.time(n - 1) <= horizon);
-  all.push_back(w.rates.up_to(u, n, horizon));
+  all.push_back(w.rates.up_to(u, n, horizon, Rates::Horizon::Included));
   all.push_back(w.rates.accepting(u, n));
   return z3::mk_and(all);
 }

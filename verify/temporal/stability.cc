@@ -36,8 +36,8 @@ z3::expr violation(const Unrolling& u, const std::vector<int>& rules, const Rate
   std::vector<z3::expr> sw = switches(u, rules, n, ctx);
   z3::expr_vector earlier(ctx);
   for (int j = 0; j < n - 1; ++j) earlier.push_back(sw[j] && u.time(n - 1) - u.time(j) < w);
-  return sw[n - 1] && z3::mk_or(earlier) && rates.up_to(u, n, u.time(n - 1)) &&
-         rates.accepting(u, n);
+  return sw[n - 1] && z3::mk_or(earlier) &&
+         rates.up_to(u, n, u.time(n - 1), Rates::Horizon::After) && rates.accepting(u, n);
 }
 
 }  // namespace
