@@ -1,10 +1,12 @@
 #include "import/yarp/script_locator.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace arbc::yarp {
 namespace {
@@ -14,7 +16,11 @@ namespace fs = std::filesystem;
 class ScriptLocator : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::path(::testing::TempDir()) / "arbc_locator";
+    // One folder per test and process: ctest runs this program's tests in parallel.
+    root_ = fs::path(::testing::TempDir()) /
+            ("arbc_locator_" +
+             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+             std::to_string(getpid()));
     fs::remove_all(root_);
     unsetenv("YARP_DATA_HOME");
     unsetenv("YARP_DATA_DIRS");

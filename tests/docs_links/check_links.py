@@ -78,7 +78,9 @@ def tracked_files(root):
     except (OSError, subprocess.CalledProcessError):
         files = []
         for folder, dirs, names in os.walk(root):
-            dirs[:] = [d for d in dirs if not d.startswith((".", "build"))]
+            # Not ours (a copy without .git, as scripts/mutate.sh makes): hidden folders, build
+            # trees, and the editor extension's npm packages.
+            dirs[:] = [d for d in dirs if not d.startswith((".", "build")) and d != "node_modules"]
             files += [os.path.relpath(os.path.join(folder, n), root) for n in names]
         return sorted(files)
 

@@ -15,7 +15,9 @@ Some apps (two rules or more) carry an environment assumption `assume e1 only af
 [until OTHER];` or `assume not e1 for W after RULE;`; their runs are made to keep it (a status message that reports e1 where the
 assumption forbids it stops reporting it, and the run is repeated), since the checker speaks
 only of such environments. The test fails unless it sees violations, "holds up to the bound"
-and verdicts under assumptions (proofs by k-induction are checked when they occur).
+and verdicts under assumptions (proofs by k-induction are checked when they occur). A
+counterexample whose replay disagrees with the checker (an internal error, never a verdict)
+fails the test too.
 
 usage: temporal_differential.py ARBC CASES [SEED] [--keep]   (CASES: runs in all; exit 0 when
 none contradicts the checker, 1 otherwise; the work directory is kept when a case contradicts
@@ -231,6 +233,8 @@ def verdict(arbc, spec):
     temporal = json.loads(r.stdout)["inputs"][0]["temporal"][0]
     if temporal["outcome"] == "unknown":
         print(f"{spec}: unknown: {temporal['unknown_reason']}")
+        if "internal error" in (temporal["unknown_reason"] or ""):
+            return "unknown (replay disagrees)", temporal["bound"], None
     return temporal["outcome"], temporal["bound"], temporal.get("induction_k")
 
 
@@ -373,6 +377,11 @@ def main():
         with open(spec, "w") as f:
             f.write(spec_text)
         outcome, bound, induction_k = verdict(arbc, spec)
+        if outcome == "unknown (replay disagrees)":
+            # The checker's own replay found that the model and the runtime disagree on this
+            # app (reported as an internal error, never as a verdict): a bug all the same.
+            contradictions.append(f"{spec}: the replay of the checker's counterexample "
+                                  "disagrees with it (internal error)")
         said = outcome + (f" (k-induction)" if induction_k else "")
         key = (prop[0] + (" assuming" if assumption else ""), said)
         outcomes[said] = outcomes.get(said, 0) + 1

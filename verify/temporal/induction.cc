@@ -45,7 +45,7 @@ void Unrolling::add_any_start_entry(size_t q) {
     solver_.add(has == delivered_before_start(e.owner));
     if (e.lifetime) {
       solver_.add(!forever &&
-                  expiry == last_delivery_before_start(e.owner) + exact_real(ctx_, *e.lifetime));
+                  expiry == last_delivery_before_start(e.owner) + seconds(ctx_, *e.lifetime));
     } else {
       solver_.add(forever);
     }
@@ -67,7 +67,7 @@ void Unrolling::constrain_any_start() {
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     const Entry& e = shape_.entries[q];
     if (e.activity || e.free_lifetime || !e.lifetime) continue;
-    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + exact_real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + seconds(ctx_, *e.lifetime)));
   }
 }
 

@@ -1,8 +1,5 @@
 #include "verify/temporal/rates.h"
 
-#include <cstdio>
-#include <cstdlib>
-
 #include "core/time_text.h"
 
 namespace arbc::verify::temporal {
@@ -65,15 +62,6 @@ z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon, Horizo
     all.push_back(recent(u, r.connection, r.period, n, horizon, end == Horizon::Included));
   }
   return z3::mk_and(all);
-}
-
-z3::expr seconds(z3::context& ctx, double v) {
-  char text[64];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v) break;
-  }
-  return ctx.real_val(text);
 }
 
 z3::expr Rates::accepting(const Unrolling& u, int n) const {

@@ -59,10 +59,6 @@ class Rates {
 // message as rejected or for a monitor error. Such a rule's steps accept in the unrolling.
 bool accepts_every_message(const model::Connection& c);
 
-// `v` seconds as an exact Z3 real: the shortest decimal that reads back as the same double
-// (0.2, not 0.20000000000000001, which five rate periods would stretch past a 1 s hold).
-z3::expr seconds(z3::context& ctx, double v);
-
 // "given LookAround.gaze every 200ms (spec:3)", for the reports.
 std::string rate_words(const model::SourceRate& r);
 

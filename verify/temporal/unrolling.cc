@@ -35,9 +35,12 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 
 }  // namespace
 
-z3::expr exact_real(z3::context& ctx, double v) {
+z3::expr seconds(z3::context& ctx, double v) {
   char text[64];
-  std::snprintf(text, sizeof text, "%.17g", v);
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
   return ctx.real_val(text);
 }
 
@@ -120,7 +123,7 @@ void Unrolling::add_step(int k) {
     z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
     if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
     if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
-      z3::expr period = exact_real(ctx_, *conn.throttle);
+      z3::expr period = seconds(ctx_, *conn.throttle);
       for (int i = 0; i < k; ++i)
         selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= period);
       if (start_ == Start::AnyState)
@@ -156,7 +159,7 @@ void Unrolling::add_entry_step(size_t q, int k) {
   if (e.free_lifetime) {
     solver_.add(z3::implies(set, x1 > t_[k]));  // any lifetime, or none (f1 free)
   } else if (e.lifetime) {
-    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + exact_real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + seconds(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(set, f1 && x1 == t_[k]));
   }
@@ -172,7 +175,7 @@ void Unrolling::add_activity_step(size_t q, int k) {
   solver_.add(h1 == (d || h0));
   solver_.add(z3::implies(!d, f1 == f0 && x1 == x0));
   if (e.lifetime) {
-    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + exact_real(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + seconds(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(d, f1 && x1 == t_[k]));
   }

@@ -52,8 +52,13 @@ bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* 
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
-// A double as a Z3 real: the decimal text of the double to 17 digits, as the runtime compares it.
-z3::expr exact_real(z3::context& ctx, double v);
+// `v` seconds (a lifetime, hold, throttle, window or rate period) as an exact Z3 real: the
+// shortest decimal that reads back as the same double, the duration the spec wrote (0.2, not
+// 0.20000000000000001). Every duration of the model goes through here, so that a hold of 0.2 s
+// set at 0 lapses exactly when a message at 0.2 s decides, as in the runtime, which takes
+// times that close as one instant (core/instant.h); five rate periods of 0.20000000000000001
+// would also stretch past a 1 s hold.
+z3::expr seconds(z3::context& ctx, double v);
 
 // Whether some connection into the port can set `event` (else it is never present there).
 bool sets_into(const PortShape& shape, const std::string& event);
