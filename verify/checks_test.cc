@@ -323,6 +323,23 @@ TEST(Checks, NoTimeLeftIsUnknownAndNeverPasses) {
   EXPECT_EQ(report.ports[0].unknown_reason, "timeout");
 }
 
+// The exclusivity query itself unanswered: a port whose two guards overlap (no cube shortcut)
+// with no time left says so, never passes silently.
+TEST(Checks, AnUndecidedExclusivityIsReportedForItsPort) {
+  model::App app = testing::table_clean_model();
+  testing::connection(app, "take").constraint = parse("e_arm_idle");
+  testing::connection(app, "put").constraint = parse("e_arm_idle");
+  VerifyOptions options;
+  options.timeout_seconds = 0;
+  VerifyReport report = run(app, options);
+  EXPECT_EQ(report.verdict, Verdict::Unknown);
+  bool said = false;
+  for (const Finding* f : findings(report, "unknown"))
+    said |= f->port == "PickAndPlace.cmd" &&
+            f->message.find("whether two rules can be selected together") != std::string::npos;
+  EXPECT_TRUE(said) << "no unknown finding for the exclusivity of PickAndPlace.cmd";
+}
+
 TEST(Checks, MalformedModelIsBadInput) {
   model::App app = testing::table_clean_model();
   arbitrated(app, "PickAndPlace.cmd").rules.push_back("drop");
