@@ -87,3 +87,21 @@ test("test declarations: keywords, the rule, the arrow and the window", async ()
   assert.strictEqual(scope("receives"), "keyword.control.test.arbc");
   assert.strictEqual(scope("nothing"), "keyword.control.test.arbc");
 });
+
+test("properties over time and environment assumptions", async () => {
+  const grammar = await loadGrammar();
+  const { tokens } = tokenize(grammar,
+    "assume not e_arm_idle for 1s after take;\nassume e_taken only after take until put;\n" +
+    "never search within 1s after track;\nnever two ask within 5s;\n");
+  const scope = (text, n = 0) =>
+    tokens.filter((t) => t.text === text)[n].scopes.slice(1).join(" ");
+  assert.strictEqual(scope("assume"), "keyword.declaration.arbc");
+  assert.strictEqual(scope("not"), "keyword.operator.logical.arbc");
+  assert.strictEqual(scope("for"), "keyword.other.arbc");
+  assert.strictEqual(scope("1s"), "constant.numeric.duration.arbc");
+  assert.strictEqual(scope("only"), "keyword.declaration.arbc");
+  assert.strictEqual(scope("until"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("never"), "keyword.declaration.arbc");
+  assert.strictEqual(scope("within"), "keyword.control.test.arbc");
+  assert.strictEqual(scope("two"), "keyword.control.test.arbc");
+});
