@@ -1,6 +1,8 @@
 #include "verify/temporal/bmc.h"
 
 #include <algorithm>
+#include <chrono>
+#include <string>
 
 #include "verify/temporal/counterexample.h"
 
@@ -31,6 +33,34 @@ z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string
     *reason = std::string("solver error: ") + e.msg();
     return z3::unknown;
   }
+}
+
+// Whether every step of `n` in model `m` falls on a whole microsecond.
+bool on_microsecond_grid(const Unrolling& u, const z3::model& m, int n, z3::context& ctx) {
+  for (int k = 0; k < n; ++k) {
+    z3::expr us = m.eval(u.time(k) * ctx.real_val(1000000), true);
+    if (!us.is_numeral() || us.denominator().get_numeral_int64() != 1) return false;
+  }
+  return true;
+}
+
+// A model of the violation whose steps all fall on whole microseconds, when there is one. A
+// tests file writes times to the microsecond (core/time_text.h), so a trace off that grid (a
+// step a third of a second in, a hair inside a window's edge) may not replay; the solver is
+// asked once more, with the grid and at most 2 s, and the off-grid model stays otherwise.
+z3::model prefer_microseconds(z3::solver& solver, const Unrolling& u, int n, z3::model m,
+                              z3::context& ctx, Clock::time_point deadline) {
+  if (on_microsecond_grid(u, m, n, ctx)) return m;
+  solver.push();
+  for (int k = 0; k < n; ++k) {
+    z3::expr us = ctx.int_const(("us!" + std::to_string(k)).c_str());
+    solver.add(u.time(k) * ctx.real_val(1000000) == z3::to_real(us));
+  }
+  std::string why;
+  if (run(solver, std::min(deadline, Clock::now() + std::chrono::seconds(2)), &why) == z3::sat)
+    m = solver.get_model();
+  solver.pop();
+  return m;
 }
 
 }  // namespace
@@ -66,7 +96,7 @@ TemporalResult bounded_search(const PortShape& shape, const model::TemporalPrope
       return result;
     }
     if (answer == z3::sat) {
-      z3::model m = solver.get_model();
+      z3::model m = prefer_microseconds(solver, u, n, solver.get_model(), ctx, deadline);
       for (int k = 0; k < n; ++k) result.trace.push_back(u.trace_step(m, k));
       if (data) {
         result.replay_test = counterexample_test(shape, u, m, n, p, *data, &result.not_replayable);
