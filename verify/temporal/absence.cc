@@ -36,10 +36,10 @@ std::optional<TemporalResult> check_absence(const model::App& app, const model::
                                             int bound, z3::context& ctx, DataQuery* data,
                                             std::chrono::steady_clock::time_point deadline,
                                             std::string* err) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
-  if (!shape) return std::nullopt;
-  int r = property_rule(*shape, p, p.rule, err);
-  if (r < 0) return std::nullopt;
+  std::optional<PropertyShape> ps = property_shape(app, p, err);
+  if (!ps) return std::nullopt;
+  const PortShape* shape = &ps->shape;
+  int r = ps->rule;
   auto violation = [&](const Unrolling& u, int n) {
     return u.delivers(r, n - 1) && u.present_at_decision(p.event, n - 1);
   };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <utility>
 
 #include "verify/temporal/counterexample.h"
 
@@ -65,13 +66,21 @@ z3::model prefer_microseconds(z3::solver& solver, const Unrolling& u, int n, z3:
 
 }  // namespace
 
-int property_rule(const PortShape& shape, const model::TemporalProperty& p, const std::string& rule,
-                  std::string* err) {
-  int r = rule_index(shape, rule);
-  if (r < 0)
-    *err = "the property at line " + std::to_string(p.loc.line) + " names rule '" + rule +
-           "', which " + p.port + " does not have";
-  return r;
+std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
+                                            std::string* err) {
+  std::optional<PortShape> shape = port_shape(app, p.port, err);
+  if (!shape) return std::nullopt;
+  PropertyShape ps{std::move(*shape)};
+  for (auto [name, index] : {std::pair{&p.rule, &ps.rule}, std::pair{&p.other, &ps.other}}) {
+    if (name->empty()) continue;
+    *index = rule_index(ps.shape, *name);
+    if (*index < 0) {
+      *err = "the property at line " + std::to_string(p.loc.line) + " names rule '" + *name +
+             "', which " + p.port + " does not have";
+      return std::nullopt;
+    }
+  }
+  return ps;
 }
 
 TemporalResult bounded_search(const PortShape& shape, const model::TemporalProperty& p, int first,

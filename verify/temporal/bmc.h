@@ -8,6 +8,8 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "core/app_model.h"
 #include "verify/data_query.h"
@@ -29,9 +31,16 @@ TemporalResult bounded_search(const PortShape& shape, const model::TemporalPrope
                               int bound, const ViolationAt& violation, z3::context& ctx,
                               DataQuery* data, std::chrono::steady_clock::time_point deadline);
 
-// The index of `rule` in `shape`; -1 and *err ("the property at line 7 names rule 'x', which
-// P does not have": bad input, not a verdict) when the port has no such rule.
-int property_rule(const PortShape& shape, const model::TemporalProperty& p, const std::string& rule,
-                  std::string* err);
+// The shape of the property's port and the indices of the rules it names: `rule` (-1 for a
+// stability, which names none) and `other` (-1 when it names none). nullopt and *err when the
+// port is not arbitrated or has no such rule ("the property at line 7 names rule 'x', which P
+// does not have": bad input, not a verdict).
+struct PropertyShape {
+  PortShape shape;
+  int rule = -1;
+  int other = -1;
+};
+std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
+                                            std::string* err);
 
 }  // namespace arbc::verify::temporal

@@ -21,12 +21,10 @@ std::optional<TemporalResult> check_precedence(const model::App& app,
                                                z3::context& ctx, DataQuery* data,
                                                std::chrono::steady_clock::time_point deadline,
                                                std::string* err) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
-  if (!shape) return std::nullopt;
-  int a = property_rule(*shape, p, p.rule, err);
-  if (a < 0) return std::nullopt;
-  int b = property_rule(*shape, p, p.other, err);
-  if (b < 0) return std::nullopt;
+  std::optional<PropertyShape> ps = property_shape(app, p, err);
+  if (!ps) return std::nullopt;
+  const PortShape* shape = &ps->shape;
+  int a = ps->rule, b = ps->other;
   ViolationAt at = [&](const Unrolling& u, int n) { return violation(u, a, b, n); };
   TemporalResult result = bounded_search(*shape, p, 1, bound, at, ctx, data, deadline);
   try_induction(result, *shape, at, ctx, deadline);

@@ -77,12 +77,10 @@ std::optional<TemporalResult> check_response(const model::App& app,
                                              z3::context& ctx, DataQuery* data,
                                              std::chrono::steady_clock::time_point deadline,
                                              std::string* err) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
-  if (!shape) return std::nullopt;
-  int r = property_rule(*shape, p, p.rule, err);
-  if (r < 0) return std::nullopt;
-  int o = property_rule(*shape, p, p.other, err);
-  if (o < 0) return std::nullopt;
+  std::optional<PropertyShape> ps = property_shape(app, p, err);
+  if (!ps) return std::nullopt;
+  const PortShape* shape = &ps->shape;
+  int r = ps->rule, o = ps->other;
   Rates rates(app, *shape, ctx);
   Pieces w{r, o, p, rates};
   TemporalResult result = bounded_search(

@@ -40,12 +40,11 @@ std::optional<TemporalResult> check_spacing(const model::App& app, const model::
                                             int bound, z3::context& ctx, DataQuery* data,
                                             std::chrono::steady_clock::time_point deadline,
                                             std::string* err) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
-  if (!shape) return std::nullopt;
-  int r = property_rule(*shape, p, p.rule, err);
-  if (r < 0) return std::nullopt;
-  int first = p.other.empty() ? r : property_rule(*shape, p, p.other, err);
-  if (first < 0) return std::nullopt;
+  std::optional<PropertyShape> ps = property_shape(app, p, err);
+  if (!ps) return std::nullopt;
+  const PortShape* shape = &ps->shape;
+  int r = ps->rule;
+  int first = ps->other < 0 ? r : ps->other;  // `never two r within W` spaces r from itself
   ViolationAt at = [&](const Unrolling& u, int n) {
     return violation(u, first, r, n, p.window, ctx);
   };

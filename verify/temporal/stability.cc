@@ -47,8 +47,9 @@ std::optional<TemporalResult> check_stability(const model::App& app,
                                               z3::context& ctx, DataQuery* data,
                                               std::chrono::steady_clock::time_point deadline,
                                               std::string* err) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
-  if (!shape) return std::nullopt;
+  std::optional<PropertyShape> ps = property_shape(app, p, err);
+  if (!ps) return std::nullopt;
+  const PortShape* shape = &ps->shape;
   std::vector<int> rules;
   for (size_t c = 0; c < shape->connections.size(); ++c)
     if (shape->connections[c]->kind == model::ConnectionKind::Rule)
