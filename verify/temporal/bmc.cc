@@ -40,7 +40,8 @@ z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string
 bool on_microsecond_grid(const Unrolling& u, const z3::model& m, int n, z3::context& ctx) {
   for (int k = 0; k < n; ++k) {
     z3::expr us = m.eval(u.time(k) * ctx.real_val(1000000), true);
-    if (!us.is_numeral() || us.denominator().get_numeral_int64() != 1) return false;
+    // Compared as text: a denominator beyond 64 bits would make get_numeral_int64 throw.
+    if (!us.is_numeral() || us.denominator().to_string() != "1") return false;
   }
   return true;
 }
