@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <set>
 
 #include "cli/model_loader.h"
 #include "cli/test_runner.h"
@@ -67,7 +68,15 @@ std::optional<std::vector<verify::ReplayRecord>> RuntimeTestReplayer::replay(
   if (!run_test_trace(*app_, app_dir_, test, &trace, err)) return std::nullopt;
   std::vector<verify::ReplayRecord> out;
   using K = verify::ReplayRecord::Kind;
+  // A drop's record names its connection only: the port's rules are these.
+  std::set<std::string> rules;
+  for (const model::Connection* c : app_->connections_into(port))
+    if (c->kind == model::ConnectionKind::Rule) rules.insert(c->name);
   for (const TraceRecord& r : trace.records) {
+    if (r.kind == TraceKind::Drop && rules.count(r.connection)) {
+      out.push_back({K::Drop, r.t, r.connection, "", -1});
+      continue;
+    }
     if (r.port != port) continue;
     if (r.kind == TraceKind::Deliver) {
       out.push_back({K::Deliver, r.t, r.connection, "", -1});

@@ -290,12 +290,20 @@ bool read_invariant(const Json& j, const std::string& p, Invariant* inv, std::st
          read_location(j, p, &inv->loc, err);
 }
 
-// A response's trigger, `stops` and `while` (its window is read as a spacing's).
+// A response's trigger (`after`: a rule, or `event`), `stops` and `while` (its window is read
+// as a spacing's; its `rule` is optional: without one, any rule of the port answers).
 bool read_response(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
-  if (!get_string(j, p, "after", &t->other, err)) return false;
+  if (!opt_string(j, p, "rule", &t->rule, err)) return false;
+  if (j.contains("event") == j.contains("after"))
+    return fail(p + ": expected one trigger, \"after\" (a rule) or \"event\"", err);
+  if (j.contains("event") ? !get_string(j, p, "event", &t->event, err)
+                          : !get_string(j, p, "after", &t->other, err))
+    return false;
   if (j.contains("stops")) {
     if (!j["stops"].is_boolean()) return fail(p + ".stops: expected true or false", err);
     t->stops = j["stops"].get<bool>();
+    if (t->stops && !t->event.empty())
+      return fail(p + ".stops: `stops` needs a trigger rule (\"after\"), not an event", err);
   }
   return !j.contains("while") || read_constraint(j, p, "while", &t->condition, err);
 }
@@ -312,8 +320,8 @@ bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* 
 }
 
 // `{"kind": "spacing", "port": .., "rule": .., "window": seconds, "after": OTHER}` ("after"
-// optional), `{"kind": "absence", .., "event": ..}` or `{"kind": "precedence", .., "after":
-// OTHER}` (docs/app-json.md).
+// optional), `{"kind": "absence", .., "event": ..}`, `{"kind": "precedence", .., "after":
+// OTHER}`, a response or a stability (docs/app-json.md).
 bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std::string* err) {
   std::string kind;
   if (!get_string(j, p, "kind", &kind, err)) return false;
@@ -327,7 +335,8 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
                     "\"stability\"",
                 err);
   if (!get_string(j, p, "port", &t->port, err)) return false;
-  if (t->kind != K::Stability && !get_string(j, p, "rule", &t->rule, err)) return false;
+  if (t->kind != K::Stability && t->kind != K::Response && !get_string(j, p, "rule", &t->rule, err))
+    return false;
   if (t->kind == K::Spacing || t->kind == K::Response || t->kind == K::Stability) {
     std::optional<double> window;
     if (!opt_number(j, p, "window", &window, err)) return false;

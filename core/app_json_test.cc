@@ -186,6 +186,35 @@ TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
       << load_error(bad);
 }
 
+// A response triggered by an event and answered by any rule of its port round-trips; one
+// trigger, never both or none, and `stops` only with a trigger rule.
+TEST(AppJsonTest, AResponseToAnEventAnsweredByThePortRoundTrips) {
+  App app = small_app();
+  TemporalProperty response{
+      TemporalProperty::Kind::Response, "H.gaze", "", 0.1, {}, "e_lost", "", false, {}};
+  app.temporal = {response};
+  std::string text = to_app_json(app);
+  std::string err;
+  std::optional<App> back = from_app_json(text, &err);
+  ASSERT_TRUE(back) << err;
+  ASSERT_EQ(back->temporal.size(), 1u);
+  EXPECT_EQ(back->temporal[0].event, "e_lost");
+  EXPECT_TRUE(back->temporal[0].other.empty());
+  EXPECT_TRUE(back->temporal[0].rule.empty());
+  EXPECT_EQ(to_app_json(*back), text);
+  std::string both = text;
+  const std::string trigger = R"("event": "e_lost")";
+  both.replace(both.find(trigger), trigger.size(), trigger + R"(, "after": "x")");
+  EXPECT_NE(load_error(both).find("expected one trigger"), std::string::npos) << load_error(both);
+  std::string none = text;
+  none.replace(none.find(trigger), trigger.size(), R"("x": 1)");
+  EXPECT_NE(load_error(none).find("expected one trigger"), std::string::npos) << load_error(none);
+  std::string stops = text;
+  stops.replace(stops.find(R"("stops": false)"), 14, R"("stops": true)");
+  EXPECT_NE(load_error(stops).find("`stops` needs a trigger rule"), std::string::npos)
+      << load_error(stops);
+}
+
 // One representation of a constraint: its text (schema version 2 dropped the tree).
 TEST(AppJsonTest, AConstraintIsItsTextOnly) {
   std::string text = to_app_json(small_app());

@@ -165,7 +165,7 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
       w.begin_object();
       w.member("kind", temporal_kind_name(t.kind));
       w.member("port", t.port);
-      if (t.kind != TemporalProperty::Kind::Stability) w.member("rule", t.rule);
+      if (!t.rule.empty()) w.member("rule", t.rule);
       if (t.kind == TemporalProperty::Kind::Spacing || t.kind == TemporalProperty::Kind::Stability)
         w.member("window", t.window);
       // Written only when there is one: a spacing of one rule reads as it did before `after`.
@@ -173,7 +173,8 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
       if (t.kind == TemporalProperty::Kind::Absence) w.member("event", t.event);
       if (t.kind == TemporalProperty::Kind::Precedence) w.member("after", t.other);
       if (t.kind == TemporalProperty::Kind::Response) {
-        w.member("after", t.other);
+        if (t.event.empty()) w.member("after", t.other);
+        if (!t.event.empty()) w.member("event", t.event);
         w.member("stops", t.stops);
         w.member("window", t.window);
         write_constraint(w, "while", t.condition);

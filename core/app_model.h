@@ -153,11 +153,11 @@ struct Invariant {
 struct TemporalProperty {
   enum class Kind { Spacing, Absence, Precedence, Response, Stability };
   Kind kind = Kind::Spacing;
-  std::string port;  // "Module.port"
-  std::string rule;
+  std::string port;   // "Module.port"
+  std::string rule;   // empty: Stability; a Response answered by any rule of the port
   double window = 0;  // seconds; Spacing, Response, Stability
   SourceLocation loc;
-  std::string event;     // Absence
+  std::string event;     // Absence; Response: the trigger is EVENT becoming present (other empty)
   std::string other;     // Precedence, Response (the trigger), Spacing (empty: RULE itself)
   bool stops = false;    // Response: the trigger is OTHER's last delivery
   Constraint condition;  // Response: `while C` (true without one)

@@ -66,7 +66,10 @@ assumeDecl       : 'assume' (ID 'only' 'after' ID ('until' ID)? | 'not' ID 'for'
                    ';' ;
 // Response `after track stops, search within 1.2s while e_unreachable;` (RULE delivers within D
 // of each delivery of the trigger, or of its last one with `stops`, while the condition holds).
-responseDecl     : 'after' ID stops='stops'? ',' ID 'within' duration ('while' expr)? ';' ;
+// The trigger may be an event (its becoming present in the port's container) and the answer a
+// port (any of its rules delivers): `after e_link_lost, Base.cmd within 200ms;`.
+responseDecl     : 'after' ID stops='stops'? ',' (ID | served=portRef) 'within' duration
+                   ('while' expr)? ';' ;
 // Stability `stable HeadControl.gaze for 500ms;`: the port's deliverer changes at most once per D.
 stableDecl       : 'stable' portRef 'for' duration ';' ;
 // An environment rate: `given LookAround.gaze every 200ms;` (the source publishes at least

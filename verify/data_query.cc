@@ -33,7 +33,7 @@ struct DataQuery::Encoded {
 
 DataQuery::DataQuery(const model::App& app, z3::context& ctx, int list_bound,
                      Clock::time_point deadline)
-    : app_(app), ctx_(ctx), list_bound_(list_bound), deadline_(deadline), solver_(ctx) {}
+    : app_(app), ctx_(ctx), list_bound_(list_bound), solver_(ctx), timeout_(deadline) {}
 
 std::string DataQuery::opaque_reason(const model::Connection& c) {
   if (c.opaque) return "its monitor is a hand-written script";
@@ -104,24 +104,9 @@ std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
   return pred.empty() ? "" : "the property uses " + pred;
 }
 
-// Z3 reads and writes solver parameters under a global lock: setting the timeout before each of
-// thousands of small queries cost more than the queries (a resource over 100 rules). It is set
-// again only after kRearm, so a query overruns the deadline by at most that.
-bool DataQuery::arm_timeout() {
-  constexpr auto kRearm = std::chrono::milliseconds(50);
-  Clock::time_point now = Clock::now();
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - now);
-  if (left.count() <= 0) return false;
-  if (timeout_armed_ && now - timeout_armed_at_ < kRearm) return true;
-  solver_.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
-  timeout_armed_ = true;
-  timeout_armed_at_ = now;
-  return true;
-}
-
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
   ++queries_;
-  if (!arm_timeout()) {
+  if (!timeout_.arm(solver_)) {
     unknown_reason_ = "timeout";
     return Answer::Unknown;
   }

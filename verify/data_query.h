@@ -16,6 +16,7 @@
 #include "core/app_model.h"
 #include "core/value.h"
 #include "verify/port_solver.h"
+#include "verify/solver_timeout.h"
 #include "verify/sym_value.h"
 
 namespace arbc::verify {
@@ -79,12 +80,10 @@ class DataQuery {
   const SymValue& message(const std::string& source);
   z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
   Answer check(const z3::expr_vector& assumptions);
-  bool arm_timeout();  // false when no time is left
 
   const model::App& app_;
   z3::context& ctx_;
   int list_bound_;
-  Clock::time_point deadline_;
   z3::solver solver_;
   std::map<std::string, SymValue> messages_;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
@@ -92,8 +91,7 @@ class DataQuery {
       predicates_;
   std::string unknown_reason_;
   int queries_ = 0;
-  bool timeout_armed_ = false;
-  Clock::time_point timeout_armed_at_;
+  SolverTimeout timeout_;
 };
 
 // A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`.

@@ -8,9 +8,9 @@ namespace arbc::verify {
 
 PortSolver::PortSolver(const PortScope& scope, z3::context& ctx, Clock::time_point deadline)
     : scope_(scope),
-      deadline_(deadline),
       ctx_(ctx),
       solver_(ctx_, "QF_FD"),
+      timeout_(deadline),
       all_events_(ctx_),
       holds_(ctx_) {
   for (const std::string& e : scope_.events) {
@@ -43,13 +43,11 @@ z3::expr PortSolver::encode(const Constraint& c) {
 
 Answer PortSolver::run(const z3::expr_vector& assumptions) {
   ++queries_;
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now());
-  if (left.count() <= 0) {
+  if (!timeout_.arm(solver_)) {
     unknown_reason_ = "timeout";
     return last_ = Answer::Unknown;
   }
   try {
-    solver_.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
     switch (solver_.check(assumptions)) {
       case z3::sat:
         return last_ = Answer::Sat;

@@ -16,6 +16,7 @@
 
 #include "verify/cube_shortcut.h"
 #include "verify/port_scope.h"
+#include "verify/solver_timeout.h"
 
 namespace arbc::verify {
 
@@ -56,9 +57,9 @@ class PortSolver {
   std::vector<std::string> present_events(const z3::model& m);
 
   const PortScope& scope_;
-  Clock::time_point deadline_;
   z3::context& ctx_;
   z3::solver solver_;
+  SolverTimeout timeout_;
   std::vector<z3::expr> event_vars_;  // parallel to scope_.events
   z3::expr_vector all_events_;
   z3::expr_vector holds_;  // h_i, parallel to scope_.rules

@@ -104,7 +104,7 @@ Json temporal_json(const TemporalResult& t) {
   Json j;
   j["kind"] = model::temporal_kind_name(t.property.kind);
   j["port"] = t.property.port;
-  j["rule"] = t.property.rule;
+  j["rule"] = t.property.rule;  // "" for a stability and a response answered by a port
   switch (t.property.kind) {
     case model::TemporalProperty::Kind::Spacing:
       j["window"] = t.property.window;
@@ -117,7 +117,8 @@ Json temporal_json(const TemporalResult& t) {
       j["after"] = t.property.other;
       break;
     case model::TemporalProperty::Kind::Response:
-      j["after"] = t.property.other;
+      if (t.property.event.empty()) j["after"] = t.property.other;
+      if (!t.property.event.empty()) j["event"] = t.property.event;
       j["stops"] = t.property.stops;
       j["window"] = t.property.window;
       j["while"] = t.property.condition.to_string();

@@ -35,12 +35,13 @@ class MonitorRunner {
 };
 
 // What the runtime did at one arbitrated port during a replay, in the order it happened: a
-// delivery, or an entry of the port's container set or removed (unset, or lapsed).
+// delivery, a message a rule handled without delivering it (rejected, throttled, not
+// selected), or an entry of the port's container set or removed (unset, or lapsed).
 struct ReplayRecord {
-  enum class Kind { Deliver, Set, Remove };
+  enum class Kind { Deliver, Drop, Set, Remove };
   Kind kind = Kind::Deliver;
   double t = 0;
-  std::string connection;  // Deliver: the rule; Set, Remove: the entry's owner
+  std::string connection;  // Deliver, Drop: the rule; Set, Remove: the entry's owner
   std::string event;       // Set, Remove
   double expiry = -1;      // Set: the entry's expiry; -1: none (until removed)
 };

@@ -297,7 +297,9 @@ struct AssertDecl {
 //                                           delivery of RULE in between.
 //   Response   `after OTHER [stops], RULE within D [while C];`  RULE delivers within D of each
 //                                           delivery of OTHER (its last one, with `stops`) whenever
-//                                           C holds at RULE's decisions in that window.
+//                                           C holds at RULE's decisions in that window. OTHER may
+//                                           be an event (each time it becomes present in the
+//                                           port) and RULE a port `M.p` (any of its rules).
 //   Stability  `stable M.p for D;`          the rule delivering into M.p changes at most once
 //                                           in any D (two switches are at least D apart).
 struct TemporalDecl {
@@ -309,9 +311,10 @@ struct TemporalDecl {
   bool stops = false;                        // Response: the trigger is OTHER's last delivery
   ExprPtr condition;                         // Response: `while C`; null: none
   Constraint condition_sema;                 // sema: C as a constraint (true without `while`)
-  PortRef port;                              // Stability (its rule is empty)
-  const ArbitrateDecl* port_decl = nullptr;  // sema: Stability's arbitrated port
-  std::string event;                         // Absence
+  PortRef port;                              // Stability, a Response answered by a port
+                                             // (their rule is empty)
+  const ArbitrateDecl* port_decl = nullptr;  // sema: that arbitrated port
+  std::string event;  // Absence; Response: the trigger, when OTHER names an event (sema moves it)
   Loc event_loc;
   std::string other;  // Precedence, Response, Spacing with `after` (empty without)
   Loc other_loc;

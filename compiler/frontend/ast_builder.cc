@@ -717,7 +717,8 @@ class Builder {
     return a;
   }
 
-  // responseDecl : 'after' ID 'stops'? ',' ID 'within' duration ('while' expr)? ';' ;
+  // responseDecl : 'after' ID 'stops'? ',' (ID | portRef) 'within' duration ('while' expr)? ';' ;
+  // The trigger is a rule or an event: sema tells which (TemporalDecl::other).
   TemporalDecl response_decl(ArbcParser::ResponseDeclContext* c) {
     TemporalDecl n;
     n.kind = TemporalDecl::Kind::Response;
@@ -725,8 +726,12 @@ class Builder {
     n.other = tx(c->ID(0));
     n.other_loc = loc(c->ID(0));
     n.stops = c->stops != nullptr;
-    n.rule = tx(c->ID(1));
-    n.rule_loc = loc(c->ID(1));
+    if (c->served) {
+      n.port = port_ref(c->served);
+    } else {
+      n.rule = tx(c->ID(1));
+      n.rule_loc = loc(c->ID(1));
+    }
     n.window = duration(c->duration());
     if (c->expr()) n.condition = expr(c->expr(), 0);
     return n;

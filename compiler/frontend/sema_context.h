@@ -113,8 +113,17 @@ class Sema {
                                const std::string& what);
   void check_absence_event(ast::TemporalDecl& n);
   void check_precedence(ast::TemporalDecl& n);
-  // `after OTHER [stops], RULE within D [while C];`: the pair, the window, the condition.
+  // The activity events `act_R` of `port`'s rules with a hold (none unless `by priority`).
+  std::vector<std::string> activity_events(const ast::ArbitrateDecl& port) const;
+  // The arbitrated port `ref` names; null (reported) when it is not one. `use` names the
+  // declaration in the message ("a `stable` property").
+  const ast::ArbitrateDecl* arbitrated_port(ast::PortRef& ref, const std::string& use);
+  // `after OTHER [stops], RULE|M.p within D [while C];`: the answer, the trigger (a rule or an
+  // event of the answer's port), the window, the condition (sema_response.cc).
   void check_response(ast::TemporalDecl& n);
+  bool names_port_event(const ast::ArbitrateDecl& port, const std::string& name) const;
+  void check_response_event(ast::TemporalDecl& n, const ast::ArbitrateDecl& port);
+  void check_response_rule(ast::TemporalDecl& n, const ast::ArbitrateDecl& port);
   // `stable M.p for D;`: an arbitrated port and a positive period.
   void check_stability(ast::TemporalDecl& n);
   // `given M.p every D;` (sema_rates.cc).

@@ -66,21 +66,25 @@ const Rule* Sema::unique_rule(const std::string& name, const Loc& loc, const std
   return found.front();
 }
 
+std::vector<std::string> Sema::activity_events(const ArbitrateDecl& port) const {
+  std::vector<std::string> out;
+  if (!port.by_priority) return out;
+  for (const Rule& r : port.rules)
+    if (r.hold) out.push_back(activity_event_name(r.name));
+  return out;
+}
+
 // `never RULE while EVENT;`: EVENT is a declared event or the activity event `act_<R>` of a
 // `by priority` rule R of RULE's port (a rule with a hold), the events of that port's container.
 void Sema::check_absence_event(TemporalDecl& n) {
   if (events_.count(n.event)) return;
-  std::vector<std::string> candidates = event_names_;
   const ArbitrateDecl* port = n.rule_decl->port;
   if (!port) return;  // the rule's port did not resolve: reported there
-  if (port->by_priority) {
-    for (const Rule& r : port->rules) {
-      if (!r.hold) continue;
-      std::string act = activity_event_name(r.name);
-      if (act == n.event) return;
-      candidates.push_back(act);
-    }
-  }
+  std::vector<std::string> activity = activity_events(*port);
+  for (const std::string& act : activity)
+    if (act == n.event) return;
+  std::vector<std::string> candidates = event_names_;
+  candidates.insert(candidates.end(), activity.begin(), activity.end());
   unknown(n.event_loc,
           "unknown event '" + n.event + "' in " + port->port.qualified() +
               ": name a declared event or the activity event act_RULE of a rule with a `hold` "
@@ -107,37 +111,33 @@ void Sema::check_precedence(TemporalDecl& n) {
     n.rule_decl = n.other_decl = nullptr;  // reported (or a port reported): lowering skips it
 }
 
-// The response's `while C` is a constraint over events, read in RULE's port as a `when` there.
-void Sema::check_response(TemporalDecl& n) {
-  check_precedence(n);
-  if (n.condition) n.condition_sema = check_constraint(*n.condition, "a response's `while`", false);
+const ArbitrateDecl* Sema::arbitrated_port(PortRef& ref, const std::string& use) {
+  if (!resolve_port(ref, "destination", use)) return nullptr;
+  for (const ArbitrateDecl& a : spec_.arbitrations)
+    if (a.port.qualified() == ref.qualified()) return &a;
+  error(ref.loc,
+        ref.qualified() + " has no `arbitrate` block: " + use +
+            " is about the rules that deliver into an arbitrated port",
+        "not-arbitrated");
+  return nullptr;
 }
 
 // `stable M.p for D;`: M.p is an arbitrated port (its deliveries are what switches).
 void Sema::check_stability(TemporalDecl& n) {
   check_duration(n.window, "the `for` period");
-  if (!resolve_port(n.port, "destination", "a `stable` property")) return;
-  for (const ArbitrateDecl& a : spec_.arbitrations)
-    if (a.port.qualified() == n.port.qualified()) n.port_decl = &a;
-  if (!n.port_decl)
-    error(n.port.loc,
-          n.port.qualified() +
-              " has no `arbitrate` block: `stable` is about the rules that deliver into an "
-              "arbitrated port",
-          "not-arbitrated");
+  n.port_decl = arbitrated_port(n.port, "a `stable` property");
 }
 
 void Sema::check_temporal(TemporalDecl& n) {
   if (n.kind == TemporalDecl::Kind::Stability) return check_stability(n);
-  if (n.kind == TemporalDecl::Kind::Spacing || n.kind == TemporalDecl::Kind::Response)
-    check_duration(n.window, "the `within` window");
+  if (n.kind == TemporalDecl::Kind::Response) return check_response(n);
+  if (n.kind == TemporalDecl::Kind::Spacing) check_duration(n.window, "the `within` window");
   n.rule_decl = unique_rule(n.rule, n.rule_loc, shape_name(n.kind));
   // The event is looked up in the rule's port: without the rule there is nothing to say.
   if (n.kind == TemporalDecl::Kind::Absence && n.rule_decl) check_absence_event(n);
   bool pair = n.kind == TemporalDecl::Kind::Precedence ||
               (n.kind == TemporalDecl::Kind::Spacing && !n.other.empty());
   if (pair) check_precedence(n);
-  if (n.kind == TemporalDecl::Kind::Response) check_response(n);
 }
 
 }  // namespace arbc::frontend

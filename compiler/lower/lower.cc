@@ -322,12 +322,16 @@ class Lowerer {
     for (const model::Assertion& as : ap.asserts) as.property.collect_events(read);
     // `never RULE while EVENT` reads EVENT in RULE's port, so its feed is generated as for a
     // constraint (docs/design.md#feeds).
-    for (const ast::TemporalDecl& t : spec_.temporal)
-      if (t.rule_decl && t.rule_decl->port && t.rule_decl->port->port.qualified() == ap.port) {
-        if (t.kind == ast::TemporalDecl::Kind::Absence) read.insert(t.event);
-        // A response's `while` reads its events in the same port.
-        if (t.kind == ast::TemporalDecl::Kind::Response) t.condition_sema.collect_events(read);
+    for (const ast::TemporalDecl& t : spec_.temporal) {
+      const ast::ArbitrateDecl* port = t.rule_decl ? t.rule_decl->port : t.port_decl;
+      if (!port || port->port.qualified() != ap.port) continue;
+      if (t.kind == ast::TemporalDecl::Kind::Absence) read.insert(t.event);
+      // A response's `while` and its trigger event are read in the same port.
+      if (t.kind == ast::TemporalDecl::Kind::Response) {
+        t.condition_sema.collect_events(read);
+        if (!t.event.empty()) read.insert(t.event);
       }
+    }
     return read;
   }
 

@@ -90,6 +90,9 @@ golden table_clean_response_mutant.txt repo 1 --temporal-bound 14 tests/verify/t
 golden temporal_response.txt repo 1 tests/verify/temporal_response.spec
 golden temporal_response.json repo 1 --format json tests/verify/temporal_response.spec
 golden temporal_response.sarif repo 1 --format sarif tests/verify/temporal_response.spec
+# A response to an event becoming present (a lost link), answered by a rule or by the port.
+golden temporal_failsafe.txt repo 1 tests/verify/temporal_failsafe.spec
+golden temporal_failsafe.json repo 1 --format json tests/verify/temporal_failsafe.spec
 # Absence and precedence: proved at every decision, bounded, violated with replayed traces;
 # table_clean's put without e_taken refuted by `only put after take`.
 golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec

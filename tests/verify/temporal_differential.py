@@ -4,8 +4,9 @@
 Random small apps (one arbitrated port, one to three rules with random guards over two fed
 events, holds, throttles and accepts, with and without `by priority`), each with one property
 over time of a random shape (spacing `never two RULE within W;` or `never RULE within W after
-OTHER;`, absence `never RULE while EVENT;`, precedence `only RULE after OTHER;`, response `after OTHER [stops], RULE within W
-[while C];` with a rate `given S.x every P;` for RULE's source, or none), verified with
+OTHER;`, absence `never RULE while EVENT;`, precedence `only RULE after OTHER;`, response `after
+OTHER [stops], RULE within W [while C];`, its trigger a rule or an event becoming present and its
+answer a rule or the port, with a rate `given S.x every P;` for RULE's source, or none), verified with
 `arbc verify --format json`; then random input timings for each app, run on the runtime in
 simulated time (`arbc run --inputs`, `--trace`). The timings respect the stated rate (the
 source publishes by P and at most P after its previous message, up to the end of the run).
@@ -68,9 +69,8 @@ def random_app(rng, index):
     lines.append("}")
     k = rng.randint(1, n_rules)
     rule = f"r{k}"
-    shape = rng.choice(["spacing", "spacing", "absence", "stability"] +
-                       (["precedence", "response", "response", "spacing_after"]
-                        if n_rules > 1 else []))
+    shape = rng.choice(["spacing", "spacing", "absence", "stability", "response"] +
+                       (["precedence", "response", "spacing_after"] if n_rules > 1 else []))
     if shape == "stability":
         window = rng.choice([0.1, 0.3, 0.6, 1.0])
         lines.append(f"stable Dst.y for {window}s;")
@@ -109,18 +109,23 @@ def random_app(rng, index):
 
 
 def response_prop(rng, lines, n_rules, k):
-    """Appends `[given S_k.x every P;] after rO [stops], rk within W [while C];` to `lines`; the
-    property as (shape, rule, (other, stops, window, condition, period or None))."""
-    other = f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}"
-    stops = rng.random() < 0.6
+    """Appends `[given S_k.x every P;] after T [stops], A within W [while C];` to `lines`, T a
+    rule rO or an event (its becoming present), A the rule rk or the port Dst.y (any rule); the
+    property as (shape, rule or "Dst.y", (trigger, stops, window, condition, period or None))."""
+    if n_rules > 1 and rng.random() < 0.6:
+        trigger = f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}"
+        stops = rng.random() < 0.6
+    else:
+        trigger, stops = rng.choice(["e1", "e2"]), False
+    answer = f"r{k}" if rng.random() < 0.6 else "Dst.y"
     window = rng.choice([0.3, 0.6, 1.0, 1.5])
     condition = rng.choice(["", "", "e1", "not e2", "e1 and e2"])
     period = rng.choice([None, 0.2, 0.4, 0.7])
     if period is not None:
         lines.append(f"given S{k}.x every {period}s;")
-    lines.append(f"after {other}{' stops' if stops else ''}, r{k} within {window}s"
+    lines.append(f"after {trigger}{' stops' if stops else ''}, {answer} within {window}s"
                  + (f" while {condition}" if condition else "") + ";")
-    return ("response", f"r{k}", (other, stops, window, condition, period))
+    return ("response", answer, (trigger, stops, window, condition, period, f"S{k}"))
 
 
 def rated_times(rng, period, end_ms, taken):
@@ -297,12 +302,15 @@ def holds(condition, present):
 def response_violation(steps, prop, inputs):
     """The end of the first window of `prop` (a response) that the run leaves unanswered while
     the rate still holds; None if there is none."""
-    _, rule, (other, stops, window, condition, period) = prop
-    source = "S" + rule[1:] + ".x"
-    decision_times = [m["t"] for m in inputs if m["port"] == source]
+    _, rule, (other, stops, window, condition, period, rated) = prop
+    port = rule == "Dst.y"  # any rule answers
+    # The answering rules decide on their sources' messages.
+    decision_times = [m["t"] for m in inputs
+                      if m["port"] != "Status.s" and (port or m["port"] == "S" + rule[1:] + ".x")]
+    rated_times = [m["t"] for m in inputs if m["port"] == rated + ".x"]
     # The observed run: while the rate holds (to its last message plus the period), or, with no
     # rate, to the end of the run.
-    end = (decision_times[-1] + period) if period is not None and decision_times else inputs[-1]["t"] + 1
+    end = (rated_times[-1] + period) if period is not None and rated_times else inputs[-1]["t"] + 1
     history = []  # (t, event, owner, expiry or None for an unset)
     delivers = []
     for s in steps:
@@ -323,10 +331,26 @@ def response_violation(steps, prop, inputs):
                 entries[event, owner] = expiry
         return {ev for (ev, _), x in entries.items() if x < 0 or d + 1e-9 < x}
 
-    for t, who in delivers:
-        if who != other or t + window > end + 1e-9:
+    def onsets(event):
+        """The times `event` becomes present in the port: absent before a record, present after."""
+        out, entries = [], {}
+        for t, ev, owner, expiry in history:
+            if ev != event:
+                continue
+            before = any(x < 0 or t + 1e-9 < x for x in entries.values())
+            if expiry is None:
+                entries.pop(owner, None)
+            else:
+                entries[owner] = expiry
+            if not before and any(x < 0 or t + 1e-9 < x for x in entries.values()):
+                out.append(t)
+        return out
+
+    triggers = onsets(other) if other.startswith("e") else [t for t, w in delivers if w == other]
+    for t in triggers:
+        if t + window > end + 1e-9:
             continue
-        answered = any(t < u <= t + window + 1e-9 and (w == rule or (stops and w == other))
+        answered = any(t < u <= t + window + 1e-9 and (w == rule or port or (stops and w == other))
                        for u, w in delivers)
         lapsed = any(t < d <= t + window + 1e-9 and not holds(condition, present_at(d))
                      for d in decision_times)
@@ -383,7 +407,11 @@ def main():
             contradictions.append(f"{spec}: the replay of the checker's counterexample "
                                   "disagrees with it (internal error)")
         said = outcome + (f" (k-induction)" if induction_k else "")
-        key = (prop[0] + (" assuming" if assumption else ""), said)
+        label = prop[0]
+        if prop[0] == "response":  # which trigger and which answer
+            label += (" to event" if prop[2][0].startswith("e") else "") + \
+                (" by port" if prop[1] == "Dst.y" else "")
+        key = (label + (" assuming" if assumption else ""), said)
         outcomes[said] = outcomes.get(said, 0) + 1
         shapes[key] = shapes.get(key, 0) + 1
         counts["apps"] += 1
@@ -395,7 +423,8 @@ def main():
             raise RuntimeError(f"arbc build {spec} exited {b.returncode}: {b.stderr}")
         for _ in range(RUNS_PER_APP):
             period = prop[2][4] if prop[0] == "response" else None
-            inputs = random_inputs(rng, sources, "S" + rule[1:], period)
+            rated = prop[2][5] if prop[0] == "response" else "S" + rule[1:]
+            inputs = random_inputs(rng, sources, rated, period)
             counts["runs"] += 1
             built = os.path.join(app_dir, f"diff{index}")
             if assumption:

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "verify/solver_timeout.h"
 #include "verify/temporal/counterexample.h"
 
 namespace arbc::verify::temporal {
@@ -13,14 +14,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Runs `solver` with the time left; z3::unknown (with *reason) when none is left or it gave up.
-z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string* reason) {
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-  if (left.count() <= 0) {
+z3::check_result run(z3::solver& solver, SolverTimeout& timeout, std::string* reason) {
+  if (!timeout.arm(solver)) {
     *reason = "timeout";
     return z3::unknown;
   }
   try {
-    solver.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
     z3::check_result r = solver.check();
     if (r == z3::unknown) {
       std::string why = solver.reason_unknown();
@@ -36,32 +35,38 @@ z3::check_result run(z3::solver& solver, Clock::time_point deadline, std::string
   }
 }
 
-// Whether every step of `n` in model `m` falls on a whole microsecond.
-bool on_microsecond_grid(const Unrolling& u, const z3::model& m, int n, z3::context& ctx) {
+// Whether every step of `n` in model `m` falls on a multiple of 1/`per_second` seconds.
+bool on_grid(const Unrolling& u, const z3::model& m, int n, int per_second, z3::context& ctx) {
   for (int k = 0; k < n; ++k) {
-    z3::expr us = m.eval(u.time(k) * ctx.real_val(1000000), true);
+    z3::expr ticks = m.eval(u.time(k) * ctx.real_val(per_second), true);
     // Compared as text: a denominator beyond 64 bits would make get_numeral_int64 throw.
-    if (!us.is_numeral() || us.denominator().to_string() != "1") return false;
+    if (!ticks.is_numeral() || ticks.denominator().to_string() != "1") return false;
   }
   return true;
 }
 
-// A model of the violation whose steps all fall on whole microseconds, when there is one. A
-// tests file writes times to the microsecond (core/time_text.h), so a trace off that grid (a
-// step a third of a second in, a hair inside a window's edge) may not replay; the solver is
-// asked once more, with the grid and at most 2 s, and the off-grid model stays otherwise.
-z3::model prefer_microseconds(z3::solver& solver, const Unrolling& u, int n, z3::model m,
-                              z3::context& ctx, Clock::time_point deadline) {
-  if (on_microsecond_grid(u, m, n, ctx)) return m;
-  solver.push();
-  for (int k = 0; k < n; ++k) {
-    z3::expr us = ctx.int_const(("us!" + std::to_string(k)).c_str());
-    solver.add(u.time(k) * ctx.real_val(1000000) == z3::to_real(us));
+// A model of the violation whose steps fall on a readable grid, when there is one: multiples
+// of 50 ms, else of 1 ms, else of 1 us. A tests file writes times to the microsecond
+// (core/time_text.h), so a trace off that grid (a step a third of a second in, a hair inside a
+// window's edge) may not replay, and a trace at 0.000001 s replays but reads badly. The solver
+// is asked again per grid, with at most 2 s in all; the first model stays when none answers.
+z3::model prefer_readable_times(z3::solver& solver, const Unrolling& u, int n, z3::model m,
+                                z3::context& ctx, Clock::time_point deadline) {
+  SolverTimeout at_most(std::min(deadline, Clock::now() + std::chrono::seconds(2)));
+  for (int per_second : {20, 1000, 1000000}) {
+    if (on_grid(u, m, n, per_second, ctx)) return m;
+    solver.push();
+    for (int k = 0; k < n; ++k) {
+      z3::expr ticks =
+          ctx.int_const(("ticks!" + std::to_string(per_second) + "!" + std::to_string(k)).c_str());
+      solver.add(u.time(k) * ctx.real_val(per_second) == z3::to_real(ticks));
+    }
+    std::string why;
+    bool found = run(solver, at_most, &why) == z3::sat;
+    if (found) m = solver.get_model();
+    solver.pop();
+    if (found) return m;
   }
-  std::string why;
-  if (run(solver, std::min(deadline, Clock::now() + std::chrono::seconds(2)), &why) == z3::sat)
-    m = solver.get_model();
-  solver.pop();
   return m;
 }
 
@@ -86,28 +91,30 @@ std::optional<PropertyShape> property_shape(const model::App& app, const model::
 
 TemporalResult bounded_search(const PortShape& shape, const model::TemporalProperty& p, int first,
                               int bound, const ViolationAt& violation, z3::context& ctx,
-                              DataQuery* data, Clock::time_point deadline) {
+                              DataQuery* data, Clock::time_point deadline, const Witness& witness) {
   TemporalResult result;
   result.property = p;
   for (const PortShape::Assumed& a : shape.assumptions) result.assumptions.push_back(a.assumption);
   // One solver for all n: step n is added for good, the violation at n inside a push/pop, so
   // Z3 keeps what it learnt about the first steps (a fresh solver per n redid it every time).
   z3::solver solver(ctx);
+  SolverTimeout timeout(deadline);
   Unrolling u(shape, std::max(0, first - 1), ctx, solver);
   for (int n = first; n <= bound; ++n) {
     u.extend();
     solver.push();
     solver.add(violation(u, n));
     ++result.solver_queries;
-    z3::check_result answer = run(solver, deadline, &result.unknown_reason);
+    z3::check_result answer = run(solver, timeout, &result.unknown_reason);
     if (answer == z3::unknown) {
       result.outcome = TemporalResult::Outcome::Unknown;
       result.bound = n - 1;
       return result;
     }
     if (answer == z3::sat) {
-      z3::model m = prefer_microseconds(solver, u, n, solver.get_model(), ctx, deadline);
+      z3::model m = prefer_readable_times(solver, u, n, solver.get_model(), ctx, deadline);
       for (int k = 0; k < n; ++k) result.trace.push_back(u.trace_step(m, k));
+      if (witness) witness(m, n);
       if (data) {
         result.replay_test = counterexample_test(shape, u, m, n, p, *data, &result.not_replayable);
       } else {

@@ -24,12 +24,17 @@ inline constexpr int kDefaultBound = 8;
 // The property violated at the last of the first `n` steps of `u`.
 using ViolationAt = std::function<z3::expr(const Unrolling& u, int n)>;
 
+// Reads what a property needs from the model of a violation over `n` steps (the step that
+// triggered it, for the explanation).
+using Witness = std::function<void(const z3::model& m, int n)>;
+
 // Violated (with the trace and, when `data` finds a message for every rule step, the test that
 // replays it), HoldsToBound, or Unknown when the deadline passes or the solver gives up.
 // `first` is the fewest messages a violation can take (2 for spacing).
 TemporalResult bounded_search(const PortShape& shape, const model::TemporalProperty& p, int first,
                               int bound, const ViolationAt& violation, z3::context& ctx,
-                              DataQuery* data, std::chrono::steady_clock::time_point deadline);
+                              DataQuery* data, std::chrono::steady_clock::time_point deadline,
+                              const Witness& witness = {});
 
 // The shape of the property's port and the indices of the rules it names: `rule` (-1 for a
 // stability, which names none) and `other` (-1 when it names none). nullopt and *err when the

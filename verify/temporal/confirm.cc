@@ -57,10 +57,7 @@ void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
     }
   }
   std::string seen;
-  std::string rule_source;  // where the rule's messages come from, for a response's judge
-  for (const TraceStep& s : r.trace)
-    if (s.connection == r.property.rule) rule_source = s.source;
-  if (!replay_violates(r.property, *records, &seen, &*r.replay_test, rule_source)) {
+  if (!replay_violates(r.property, *records, &seen)) {
     findings.push_back(internal_replay_error(r, "replayed, " + seen));
     unknown(r, "internal error in the replay");
     return;

@@ -3,16 +3,15 @@
 #include <algorithm>
 #include <string>
 
+#include "verify/solver_timeout.h"
+
 namespace arbc::verify::temporal {
 namespace {
 
 // Z3's answer with the time left; unknown when none is left, the solver gives up or throws.
-z3::check_result check(z3::solver& solver, std::chrono::steady_clock::time_point deadline) {
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-      deadline - std::chrono::steady_clock::now());
-  if (left.count() <= 0) return z3::unknown;
+z3::check_result check(z3::solver& solver, SolverTimeout& timeout) {
+  if (!timeout.arm(solver)) return z3::unknown;
   try {
-    solver.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
     return solver.check();
   } catch (const z3::exception&) {
     return z3::unknown;
@@ -79,6 +78,7 @@ void try_induction(TemporalResult& result, const PortShape& shape, const Violati
   for (const model::Connection* c : shape.connections)
     if (c->opaque) return;
   z3::solver solver(ctx);
+  SolverTimeout timeout(deadline);
   Unrolling u(shape, 0, ctx, solver, Unrolling::Start::AnyState);
   // k <= bound: the base case (no violation from the start within k messages) is the bounded
   // search's, which went to `bound`.
@@ -88,7 +88,7 @@ void try_induction(TemporalResult& result, const PortShape& shape, const Violati
     solver.push();
     solver.add(violation(u, k));
     ++result.solver_queries;
-    z3::check_result answer = check(solver, deadline);
+    z3::check_result answer = check(solver, timeout);
     solver.pop();
     if (answer == z3::unknown) return;  // no proof: the bounded verdict stands
     if (answer == z3::unsat) {

@@ -151,8 +151,7 @@ bool spaced_less_than(const std::vector<double>& times, double window) {
 }
 
 bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                     std::string* seen, const model::TestCase* test,
-                     const std::string& rule_source) {
+                     std::string* seen) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
       return p.other.empty() ? spacing(p, records, seen) : spacing_after(p, records, seen);
@@ -161,7 +160,7 @@ bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayR
     case model::TemporalProperty::Kind::Precedence:
       return precedence(p, records, seen);
     case model::TemporalProperty::Kind::Response:
-      return response_violated(p, records, test, rule_source, seen);
+      return response_violated(p, records, seen);
     case model::TemporalProperty::Kind::Stability:
       return stability(p, records, seen);
   }

@@ -12,12 +12,9 @@
 namespace arbc::verify::temporal {
 
 // True when `records` (of p's port) violate `p`; otherwise false and *seen says what the
-// runtime did instead ("'take' delivered at 0s, 1s"), for the internal error. A response also
-// reads the replayed `test`: its messages on `rule_source` are the times the rule decided
-// (verify/temporal/judge_response.h).
+// runtime did instead ("'take' delivered at 0s, 1s"), for the internal error.
 bool replay_violates(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                     std::string* seen, const model::TestCase* test = nullptr,
-                     const std::string& rule_source = "");
+                     std::string* seen);
 
 // True when the replay kept the environment assumption `a` at each delivery into the port;
 // otherwise false and *broken says where it did not.

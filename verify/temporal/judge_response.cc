@@ -20,36 +20,29 @@ bool condition_at(const model::TemporalProperty& p, const std::vector<ReplayReco
   p.condition.collect_events(events);
   std::map<std::string, Presence> state;
   for (size_t i = 0; i < upto; ++i)
-    if (records[i].kind != Kind::Deliver && events.count(records[i].event))
-      state[records[i].event].apply(records[i]);
+    if (events.count(records[i].event)) state[records[i].event].apply(records[i]);
   std::set<std::string> present;
   for (const std::string& e : events)
     if (state[e].present(t)) present.insert(e);
   return evaluate(p.condition, present);
 }
 
-// The index of the first record after time t (records at t come before a decision at t only
-// when they precede it; the messages of the test at t are decided after the records at t).
-size_t records_until(const std::vector<ReplayRecord>& records, double t) {
-  size_t i = 0;
-  while (i < records.size() && records[i].t <= t) ++i;
-  return i;
-}
-
-// The trigger delivered at records[i] is left unanswered until its window closes.
+// The trigger at records[i] (a delivery, or the event's onset) is left unanswered until its
+// window closes: no delivery of the rule (of any rule, when the port answers) after it, nor
+// (with `stops`) of the trigger, and the condition held whenever an answering rule decided.
+// The records are in the order the runtime did them, as the model's steps are.
 bool unanswered(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                size_t i, const std::vector<double>& decisions) {
-  double t = records[i].t, end = t + p.window;
+                size_t i) {
+  double end = records[i].t + p.window;
   for (size_t j = i + 1; j < records.size(); ++j) {
     const ReplayRecord& r = records[j];
     if (!reached(end, r.t)) break;  // past the window (a delivery at its end is in time)
-    if (r.kind != Kind::Deliver) continue;
-    if (r.connection == p.rule) return false;
-    if (p.stops && r.connection == p.other) return false;
-  }
-  for (double d : decisions) {
-    if (d < t || !reached(end, d)) continue;
-    if (!condition_at(p, records, records_until(records, d), d)) return false;
+    if (r.kind != Kind::Deliver && r.kind != Kind::Drop) continue;
+    if (p.stops && r.kind == Kind::Deliver && r.connection == p.other) return false;
+    if (r.connection != p.rule && !p.rule.empty()) continue;
+    if (r.kind == Kind::Deliver) return false;
+    // A decision with the state the records before it leave.
+    if (!condition_at(p, records, j, r.t)) return false;
   }
   return true;
 }
@@ -57,21 +50,31 @@ bool unanswered(const model::TemporalProperty& p, const std::vector<ReplayRecord
 }  // namespace
 
 bool response_violated(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                       const model::TestCase* test, const std::string& rule_source,
                        std::string* seen) {
-  std::vector<double> decisions;
-  if (test)
-    for (const model::TestStep& s : test->steps)
-      if (s.kind == model::TestStep::Kind::Input && s.port == rule_source) decisions.push_back(s.t);
   std::vector<std::string> order;
+  Presence event;  // an event trigger: its entries in the port, record by record
   for (size_t i = 0; i < records.size(); ++i) {
     const ReplayRecord& r = records[i];
-    if (r.kind != Kind::Deliver || (r.connection != p.rule && r.connection != p.other)) continue;
-    if (r.connection == p.other && unanswered(p, records, i, decisions)) return true;
-    order.push_back(r.connection + " at " + time_text(r.t) + "s");
+    if (r.kind == Kind::Drop) continue;
+    if (r.kind != Kind::Deliver) {
+      if (p.event.empty() || r.event != p.event) continue;
+      bool before = event.present(r.t);
+      event.apply(r);
+      if (before || !event.present(r.t)) continue;
+      if (unanswered(p, records, i)) return true;
+      order.push_back(p.event + " present at " + time_text(r.t) + "s");
+      continue;
+    }
+    // A delivery of the trigger opens a window that only a later delivery answers (with the
+    // port answering, the trigger rule is one of the port's rules too).
+    if (r.connection == p.other && unanswered(p, records, i)) return true;
+    if (r.connection == p.other || r.connection == p.rule || p.rule.empty())
+      order.push_back(r.connection + " at " + time_text(r.t) + "s");
   }
-  *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order)) + ", each " +
-          p.other + " answered in time or with the condition false";
+  std::string trigger = p.event.empty() ? p.other : p.event;
+  *seen = "the deliveries and triggers were " +
+          (order.empty() ? std::string("none") : join(order)) + ", each " + trigger +
+          " answered in time or with the condition false";
   return false;
 }
 

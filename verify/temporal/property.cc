@@ -41,8 +41,9 @@ std::string property_words(const model::TemporalProperty& p) {
     case model::TemporalProperty::Kind::Precedence:
       return "only " + p.rule + " after " + p.other;
     case model::TemporalProperty::Kind::Response: {
-      std::string words = "after " + p.other + (p.stops ? " stops, " : ", ") + p.rule + " within " +
-                          time_text(p.window) + "s";
+      std::string words = "after " + (p.event.empty() ? p.other : p.event) +
+                          (p.stops ? " stops, " : ", ") + (p.rule.empty() ? p.port : p.rule) +
+                          " within " + time_text(p.window) + "s";
       if (p.condition.op != Constraint::Op::True) words += " while " + p.condition.to_string();
       return words;
     }

@@ -1,5 +1,8 @@
 #include "verify/temporal/response.h"
 
+#include <algorithm>
+
+#include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/bmc.h"
 #include "verify/temporal/constraint_expr.h"
@@ -8,23 +11,35 @@
 namespace arbc::verify::temporal {
 namespace {
 
+// The step whose trigger a violation over n steps leaves unanswered (for the explanation).
+z3::expr trigger_step(z3::context& ctx, int n) {
+  return ctx.int_const(("trigger!" + std::to_string(n)).c_str());
+}
+
 struct Pieces {
-  int rule, trigger;
+  int rule, trigger;  // rule -1: any rule of the port answers; trigger -1: p.event's onset
   const model::TemporalProperty& p;
   const Rates& rates;
+  std::vector<int> answers;  // the connections whose delivery answers: the rule, or every rule
 };
 
-// The trigger at step i and none of what discharges it in steps i+1..n-1: a delivery of the
-// rule, or (with `stops`) another of the trigger; the condition at each of the rule's steps.
+z3::expr triggered(const Unrolling& u, const Pieces& w, int i) {
+  return w.trigger >= 0 ? u.delivers(w.trigger, i) : u.becomes_present(w.p.event, i);
+}
+
+// The trigger at step i and none of what discharges it in steps i+1..n-1: a delivery that
+// answers, or (with `stops`) another of the trigger; the condition at each answering rule's step.
 z3::expr unanswered_from(const Unrolling& u, const Pieces& w, int i, int n, z3::context& ctx) {
   z3::expr_vector all(ctx);
-  all.push_back(u.delivers(w.trigger, i));
+  all.push_back(triggered(u, w, i));
   for (int j = i + 1; j < n; ++j) {
-    all.push_back(!u.delivers(w.rule, j));
-    if (w.p.stops) all.push_back(!u.delivers(w.trigger, j));
     z3::expr c = constraint_expr(w.p.condition, ctx,
                                  [&](const std::string& e) { return u.present_at_decision(e, j); });
-    all.push_back(z3::implies(u.runs(w.rule, j), c));
+    for (int a : w.answers) {
+      all.push_back(!u.delivers(a, j));
+      all.push_back(z3::implies(u.runs(a, j), c));
+    }
+    if (w.p.stops) all.push_back(!u.delivers(w.trigger, j));
   }
   return z3::mk_and(all);
 }
@@ -36,7 +51,7 @@ z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx)
   z3::expr horizon = ctx.real_const(("horizon!" + std::to_string(n)).c_str());
   z3::expr_vector some(ctx);
   for (int i = 0; i < n; ++i)
-    some.push_back(horizon == u.time(i) + seconds(ctx, w.p.window) &&
+    some.push_back(trigger_step(ctx, n) == i && horizon == u.time(i) + seconds(ctx, w.p.window) &&
                    unanswered_from(u, w, i, n, ctx));
   z3::expr_vector all(ctx);
   all.push_back(z3::mk_or(some));
@@ -46,27 +61,22 @@ z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx)
   return z3::mk_and(all);
 }
 
-// For a violated trace: the trigger left unanswered, when its window closed, and whether
-// the rule's source had a rate (without one, the source may simply fall silent).
-std::string explain(const TemporalResult& r, const model::TemporalProperty& p,
-                    const model::Connection& rule, bool rated) {
-  const std::vector<TraceStep>& trace = r.trace;
+// For a violated trace: the trigger (step i) left unanswered, when its window closed, and the
+// answering rules' sources without a rate (without one, a source may simply fall silent).
+std::string explain(const TemporalResult& r, const model::TemporalProperty& p, size_t i,
+                    const std::vector<std::string>& unrated) {
+  std::string answer = p.rule.empty() ? "any rule of " + p.port : "'" + p.rule + "'";
   std::string out;
-  for (size_t i = 0; i < trace.size() && out.empty(); ++i) {
-    if (trace[i].connection != p.other || !trace[i].delivered) continue;
-    bool answered = false;
-    for (size_t j = i + 1; j < trace.size(); ++j)
-      answered |= trace[j].delivered &&
-                  (trace[j].connection == p.rule || (p.stops && trace[j].connection == p.other));
-    if (answered) continue;
-    out = "'" + p.other + "' delivered at " + time_text(trace[i].time) + "s and time reached " +
-          time_text(trace[i].time + p.window) + "s with no delivery of '" + p.rule + "'";
-  }
-  if (!rated)
-    out += "; no rate is given for " + rule.source + ", the source of '" + p.rule +
-           "', so it may fall silent, and silence violates a response: if it publishes "
+  if (i < r.trace.size())
+    out = (p.event.empty() ? "'" + p.other + "' delivered" : p.event + " became present") + " at " +
+          time_text(r.trace[i].time) + "s and time reached " +
+          time_text(r.trace[i].time + p.window) + "s with no delivery of " + answer;
+  if (!unrated.empty())
+    out += "; no rate is given for " + join(unrated) + ", the source" +
+           (unrated.size() > 1 ? "s" : "") + " of " + answer +
+           ", so it may fall silent, and silence violates a response: if it publishes "
            "periodically, say so with `given " +
-           rule.source + " every D;`";
+           unrated.front() + " every D;`";
   return out;
 }
 
@@ -80,17 +90,41 @@ std::optional<TemporalResult> check_response(const model::App& app,
   std::optional<PropertyShape> ps = property_shape(app, p, err);
   if (!ps) return std::nullopt;
   const PortShape* shape = &ps->shape;
-  int r = ps->rule, o = ps->other;
+  if (!p.event.empty() && !sets_into(*shape, p.event)) {
+    // Nothing puts the event into the port's container, so no window ever opens.
+    TemporalResult vacuous;
+    vacuous.property = p;
+    vacuous.outcome = TemporalResult::Outcome::Proved;
+    vacuous.proof = "vacuously: nothing sets " + p.event + " into " + p.port +
+                    ", so it never becomes present there and no window opens";
+    return vacuous;
+  }
   Rates rates(app, *shape, ctx);
-  Pieces w{r, o, p, rates};
+  Pieces w{ps->rule, ps->other, p, rates, {}};
+  // Silence may be all a violation needs when no answering rule's source has a rate: then
+  // the explanation names them.
+  std::vector<std::string> unrated;
+  bool rated = false;
+  for (size_t c = 0; c < shape->connections.size(); ++c) {
+    const model::Connection& conn = *shape->connections[c];
+    if (conn.kind != model::ConnectionKind::Rule) continue;
+    if (w.rule >= 0 && static_cast<int>(c) != w.rule) continue;
+    w.answers.push_back(static_cast<int>(c));
+    rated |= app.find_rate(conn.source) != nullptr;
+    if (std::find(unrated.begin(), unrated.end(), conn.source) == unrated.end())
+      unrated.push_back(conn.source);
+  }
+  if (rated) unrated.clear();
+  size_t trigger = 0;
   TemporalResult result = bounded_search(
       *shape, p, 1, bound, [&](const Unrolling& u, int n) { return violation(u, w, n, ctx); }, ctx,
-      data, deadline);
+      data, deadline,
+      [&](const z3::model& m, int n) {
+        trigger = static_cast<size_t>(m.eval(trigger_step(ctx, n), true).get_numeral_int());
+      });
   result.rates = rates.used();
-  if (result.outcome == TemporalResult::Outcome::Violated) {
-    const model::Connection& rule = *shape->connections[static_cast<size_t>(r)];
-    result.explanation = explain(result, p, rule, app.find_rate(rule.source) != nullptr);
-  }
+  if (result.outcome == TemporalResult::Outcome::Violated)
+    result.explanation = explain(result, p, trigger, unrated);
   return result;
 }
 

@@ -2,7 +2,8 @@
 // (docs/design.md#properties-over-time) on the table_clean model: search resumes within
 // track's hold plus LookAround's period only given the rate, a shorter window is refuted
 // under the rate, the rate constraints hold in every trace, silence is named, and the head's
-// deliverer switches back and forth within a second. The replayed runs are judged by
+// deliverer switches back and forth within a second; an event becoming present opens a window
+// that any rule of the port may answer. The replayed runs are judged by
 // verify/temporal/judge_response.h, tested here on hand-written records.
 #include "verify/temporal/response.h"
 
@@ -103,6 +104,52 @@ TEST(Response, AnUnknownRuleIsBadInputNotAVerdict) {
   EXPECT_NE(error.find("'trak'"), std::string::npos) << error;
 }
 
+// `after e_unreachable, HeadControl.gaze within D while ...`: the object goes out of reach and
+// the head must move (track or search) within D, as long as the arm and the rake stay idle.
+P head_moves(double window) {
+  P p{P::Kind::Response, "HeadControl.gaze", "", window, {}, "e_unreachable", "", false, {}};
+  p.condition = parse_constraint("e_unreachable and e_arm_idle and e_pull_idle").constraint;
+  return p;
+}
+
+TEST(Response, AnEventBecomingPresentOpensAWindowAndSilenceOfEitherSourceViolatesIt) {
+  TemporalResult r = check(testing::table_clean_model(), head_moves(1.0), 6);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_FALSE(r.trace.empty());
+  bool set = false;
+  for (const TraceStep& s : r.trace)
+    for (const std::string& e : s.set) set |= e == "e_unreachable";
+  EXPECT_TRUE(set) << "the trigger is the feed setting e_unreachable";
+  EXPECT_NE(r.explanation.find("e_unreachable became present at"), std::string::npos)
+      << r.explanation;
+  // Either rule answers, so both sources are named.
+  EXPECT_NE(r.explanation.find("FaceDetector.face, LookAround.gaze"), std::string::npos)
+      << r.explanation;
+}
+
+TEST(Response, AnyRuleOfThePortAnswers) {
+  // Search waits out track's hold (1 s, from a delivery just before the object went out of
+  // reach again) and then its next message (every 200 ms), unless track answers first: in time
+  // for 1.2 s. Within 0.1 s LookAround need not publish at all.
+  model::App app = with_rate(0.2);
+  EXPECT_EQ(check(app, head_moves(1.2), 10).outcome, Outcome::HoldsToBound);
+  TemporalResult r = check(app, head_moves(0.1), 10);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  // LookAround has a rate, so silence of FaceDetector alone is no explanation.
+  EXPECT_EQ(r.explanation.find("no rate"), std::string::npos) << r.explanation;
+  P only_search = head_moves(1.2);
+  only_search.rule = "search";
+  EXPECT_EQ(check(app, only_search, 10).outcome, Outcome::HoldsToBound);
+}
+
+TEST(Response, ATriggerEventNothingSetsIntoThePortIsProvedVacuouslyAndSaysSo) {
+  P p = head_moves(1.0);
+  p.event = "e_taken";  // fed into PickAndPlace.cmd, not into HeadControl.gaze
+  TemporalResult r = check(testing::table_clean_model(), p, 4);
+  EXPECT_EQ(r.outcome, Outcome::Proved);
+  EXPECT_NE(r.proof.find("vacuously"), std::string::npos) << r.proof;
+}
+
 TEST(Stability, TheHeadSwitchesBackAndForthWithinTheHold) {
   P p{P::Kind::Stability, "HeadControl.gaze", "", 1.5, {}, "", "", false, {}};
   // Under the rate the shortest violation takes 12 messages: the three feeds, then LookAround's
@@ -159,43 +206,69 @@ ReplayRecord set(double t, const std::string& owner, const std::string& e, doubl
   return {K::Set, t, owner, e, expiry};
 }
 
-model::TestCase inputs(const std::vector<double>& times) {
-  model::TestCase test;
-  for (double t : times) {
-    model::TestStep s;
-    s.t = t;
-    s.port = "LookAround.gaze";
-    test.steps.push_back(s);
-  }
-  return test;
-}
+ReplayRecord drop(double t, const std::string& rule) { return {K::Drop, t, rule, "", -1}; }
 
 TEST(JudgeResponse, AnUnansweredTriggerViolatesAndADeliveryAtTheWindowsEndAnswers) {
   P p{P::Kind::Response, "HeadControl.gaze", "search", 1.0, {}, "", "track", true, {}};
   std::string seen;
-  model::TestCase test = inputs({0.5});
-  EXPECT_TRUE(replay_violates(p, {deliver(0, "track")}, &seen, &test, "LookAround.gaze"));
-  EXPECT_FALSE(replay_violates(p, {deliver(0, "track"), deliver(1.0, "search")}, &seen, &test,
-                               "LookAround.gaze"));
+  EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), drop(0.5, "search")}, &seen));
+  EXPECT_FALSE(replay_violates(p, {deliver(0, "track"), deliver(1.0, "search")}, &seen));
   // Too late, but a later track (stops) starts a new window that is unanswered too.
-  EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), deliver(1.5, "search")}, &seen, &test,
-                              "LookAround.gaze"));
-  EXPECT_FALSE(replay_violates(p,
-                               {deliver(0, "track"), deliver(0.5, "track"), deliver(1.4, "search")},
-                               &seen, &test, "LookAround.gaze"));
+  EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), deliver(1.5, "search")}, &seen));
+  EXPECT_FALSE(replay_violates(
+      p, {deliver(0, "track"), deliver(0.5, "track"), deliver(1.4, "search")}, &seen));
   EXPECT_NE(seen.find("track at 0s"), std::string::npos) << seen;
 }
 
-TEST(JudgeResponse, TheConditionFalseAtADecisionDischargesTheWindow) {
+TEST(JudgeResponse, TheConditionFalseWhenTheRuleDecidesDischargesTheWindow) {
   P p{P::Kind::Response, "HeadControl.gaze", "search", 1.0, {}, "", "track", true, {}};
   p.condition = Constraint::event_ref("e_idle");
   std::string seen;
-  model::TestCase test = inputs({0.2, 0.8});
-  // e_idle until 0.5: false at the decision at 0.8, so search owed nothing.
-  EXPECT_FALSE(replay_violates(p, {set(0, "feed", "e_idle", 0.5), deliver(0, "track")}, &seen,
-                               &test, "LookAround.gaze"));
-  EXPECT_TRUE(replay_violates(p, {set(0, "feed", "e_idle", 2), deliver(0, "track")}, &seen, &test,
-                              "LookAround.gaze"));
+  // e_idle until 0.5: false when search decides at 0.8, so search owed nothing.
+  EXPECT_FALSE(replay_violates(p,
+                               {set(0, "feed", "e_idle", 0.5), deliver(0, "track"),
+                                drop(0.2, "search"), drop(0.8, "search")},
+                               &seen));
+  EXPECT_TRUE(replay_violates(
+      p,
+      {set(0, "feed", "e_idle", 2), deliver(0, "track"), drop(0.2, "search"), drop(0.8, "search")},
+      &seen));
+  // Only the rule's decisions count: track deciding at 0.8 discharges nothing.
+  EXPECT_TRUE(replay_violates(
+      p, {set(0, "feed", "e_idle", 0.5), deliver(0, "track"), drop(0.8, "track")}, &seen));
+  // A decision before the trigger, at the same instant, is not in its window.
+  EXPECT_TRUE(replay_violates(
+      p, {drop(0, "search"), set(0, "feed", "e_idle", 2), deliver(0, "track")}, &seen));
+}
+
+ReplayRecord lapse(double t, const std::string& owner, const std::string& e, double expiry) {
+  return {K::Remove, t, owner, e, expiry};
+}
+
+TEST(JudgeResponse, AnEventsOnsetOpensAWindowThatAnyRuleOfThePortAnswers) {
+  P p{P::Kind::Response, "HeadControl.gaze", "", 1.0, {}, "e_lost", "", false, {}};
+  std::string seen;
+  EXPECT_TRUE(replay_violates(p, {set(0, "feed", "e_lost", 5)}, &seen));
+  EXPECT_FALSE(replay_violates(p, {set(0, "feed", "e_lost", 5), deliver(0.9, "search")}, &seen));
+  EXPECT_FALSE(replay_violates(p, {set(0, "feed", "e_lost", 5), deliver(1.0, "track")}, &seen));
+  // A refresh while present is no onset; a set after the lapse is one, and goes unanswered.
+  EXPECT_FALSE(replay_violates(
+      p, {set(0, "feed", "e_lost", 0.5), deliver(0.2, "track"), set(0.4, "feed", "e_lost", 0.9)},
+      &seen));
+  EXPECT_TRUE(replay_violates(p,
+                              {set(0, "feed", "e_lost", 0.5), deliver(0.2, "track"),
+                               lapse(0.5, "feed", "e_lost", 0.5), set(0.6, "feed", "e_lost", 2)},
+                              &seen));
+  EXPECT_NE(seen.find("e_lost present at 0s"), std::string::npos) << seen;
+  // A trigger rule of the port does not answer its own delivery, only a later one.
+  P after_track{P::Kind::Response, "HeadControl.gaze", "", 1.0, {}, "", "track", false, {}};
+  EXPECT_TRUE(replay_violates(after_track, {deliver(0, "track")}, &seen));
+  EXPECT_FALSE(replay_violates(after_track, {deliver(0, "track"), deliver(0.5, "search")}, &seen));
+  // Its next delivery answers the first window and opens another.
+  EXPECT_TRUE(replay_violates(after_track, {deliver(0, "track"), deliver(0.5, "track")}, &seen));
+  // Only the named rule answers when the property names one.
+  p.rule = "search";
+  EXPECT_TRUE(replay_violates(p, {set(0, "feed", "e_lost", 5), deliver(0.5, "track")}, &seen));
 }
 
 TEST(JudgeStability, TwoSwitchesWithinTheWindowViolate) {

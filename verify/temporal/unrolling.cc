@@ -194,6 +194,17 @@ z3::expr Unrolling::present(const std::string& event, int k, const z3::expr& at)
   return any;
 }
 
+z3::expr Unrolling::becomes_present(const std::string& event, int k) const {
+  z3::expr before = ctx_.bool_val(false), after = ctx_.bool_val(false);
+  for (size_t q = 0; q < shape_.entries.size(); ++q) {
+    if (shape_.entries[q].event != event) continue;
+    auto in = [&](size_t s) { return has_[s][q] && (forever_[s][q] || t_[k] < expiry_[s][q]); };
+    before = before || in(static_cast<size_t>(k));
+    after = after || in(static_cast<size_t>(k + 1));
+  }
+  return !before && after;
+}
+
 z3::expr Unrolling::guard(const Constraint& c, int k) const {
   return constraint_expr(c, ctx_, [&](const std::string& e) { return present(e, k, t_[k]); });
 }

@@ -89,6 +89,8 @@ class Unrolling {
   z3::expr present_at_decision(const std::string& event, int k) const {
     return present(event, k, t_[k]);
   }
+  // `event` becomes present at step k: absent just before it, present just after it (at t_k).
+  z3::expr becomes_present(const std::string& event, int k) const;
   // Whether the monitor "armed by a delivery of `on`, disarmed by one of `off`" (-1: never
   // disarmed) is armed before step k: false at an empty start, a free Boolean (one per pair,
   // shared by every formula that asks) at any state.
