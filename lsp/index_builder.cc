@@ -38,10 +38,18 @@ class Builder {
     for (const ast::TemporalDecl& n : spec_.temporal) {
       if (n.rule_decl) ix_.add_occurrence("rule:" + n.rule, name_loc(n.rule_loc, n.rule));
       if (n.other_decl) ix_.add_occurrence("rule:" + n.other, name_loc(n.other_loc, n.other));
-      if (n.rule_decl && !n.event.empty())
+      // An absence's event, a response's trigger event; a port for a stability or a response
+      // the port answers.
+      if ((n.rule_decl || n.port_decl) && !n.event.empty())
         ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
       expr(n.condition.get());  // a response's `while`
-      if (n.kind == ast::TemporalDecl::Kind::Stability) port_ref(n.port);
+      if (n.port_decl) port_ref(n.port);
+    }
+    for (const ast::AssumeDecl& a : spec_.assumptions) {
+      if (!a.after_decl) continue;  // reported: its names may not resolve
+      ix_.add_occurrence("event:" + a.event, name_loc(a.event_loc, a.event));
+      ix_.add_occurrence("rule:" + a.after, name_loc(a.after_loc, a.after));
+      if (a.until_decl) ix_.add_occurrence("rule:" + a.until, name_loc(a.until_loc, a.until));
     }
     for (const ast::RateDecl& r : spec_.rates) port_ref(r.port);
     for (const ast::ResourceDecl& r : spec_.resources) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Properties over time (issue 19). Whole-process wall times, medians; beside each, in the same
 # run, the same input without what is measured as "baseline":
-#   verify_temporal_table_clean: tests/verify/table_clean_temporal.spec (table_clean with its
+#   verify_temporal_table_clean: specs/table_clean.spec (table_clean with its
 #     seven properties over time: ask's spacing explored to the default bound, take's and
 #     search-after-track's proved by k-induction, take's under the arm's assumed cycle, two
 #     absences, put's precedence proved by k-induction under its environment assumption,
@@ -32,7 +32,7 @@ expect_exit() {
   fi
 }
 
-spec=tests/verify/table_clean_temporal.spec
+spec=specs/table_clean.spec
 grep -v -E '^(never|only|assume|after|stable|given) ' "$spec" > "$work/table_clean.spec"
 expect_exit 0 "$arbc" verify "$spec"  # six proved, the response holds up to the bound
 expect_exit 0 "$arbc" verify "$work/table_clean.spec"

@@ -13,7 +13,8 @@ is checked. A declaration "declares" its kind and name: `app`, `type N`, `const 
 each event of `event a, b` / `event e = ...` / `events from M.p { a, b }`, `resource N`, the
 destination port of `arbitrate M.p` or `connect X.q -> M.p`, and `test "NAME"`. An `assert M.p: ...` of the base goes with its
 port: it is dropped when the snippet replaces `M.p`; the base's tests are dropped unless the
-snippet is a test itself. The snippet takes the place of the first
+snippet is a test itself; its properties over time, assumptions and rates are dropped when the
+snippet replaces a port or states any of those itself. The snippet takes the place of the first
 declaration it replaces (so line numbers stay near the base's), or goes at the end.
 
 An HTML comment on the last non-blank line before the fence changes what is done:
@@ -105,6 +106,10 @@ def strip_comments(text):
     return re.sub(r"//[^\n]*", "", text)
 
 
+# Properties over time, assumptions and rates: they speak of rules and sources across ports.
+TEMPORAL = ("never", "only", "after", "stable", "assume", "given")
+
+
 def declared_keys(decl):
     """The names a declaration declares (see the module comment), and the port an assert
     belongs to."""
@@ -138,6 +143,8 @@ def declared_keys(decl):
     if kind == "assert":
         m = re.match(r"assert\s+([\w.]+)\s*:", code)
         return set(), f"port:{m.group(1)}" if m else None
+    if kind in TEMPORAL:
+        return {"temporal"}, None
     return set(), None
 
 
@@ -159,15 +166,19 @@ def splice(base, snippet):
     for decl, _ in snippet_decls:
         replaced |= declared_keys(decl)[0]
     base_decls, tail = split_declarations(base)
-    # The base's tests speak of the base's rules: a snippet that is not a test drops them.
+    # The base's tests speak of the base's rules: a snippet that is not a test drops them. Its
+    # properties over time, assumptions and rates go when the snippet replaces a port (whose
+    # rules they may name) or brings its own.
     drop_tests = not any(k.startswith("test:") for k in replaced)
+    drop_temporal = any(k.startswith("port:") or k == "temporal" for k in replaced)
     out, placed = [], False
     for decl, _ in base_decls:
         keys, owner = declared_keys(decl)
-        if drop_tests and any(k.startswith("test:") for k in keys):
+        if (drop_tests and any(k.startswith("test:") for k in keys)) or \
+                (drop_temporal and "temporal" in keys):
             out.append(decl[:code_offset(decl)])
             continue
-        if keys & replaced or owner in replaced:
+        if (keys - {"temporal"}) & replaced or owner in replaced:
             # Keep the blank lines and comments before the declaration, so that line numbers
             # move only by the difference in length.
             out.append(decl[:code_offset(decl)])

@@ -126,9 +126,9 @@ TEST(TableClean, AnUnknownScenarioIsAUsageError) {
   EXPECT_NE(r.output.find("mixed"), std::string::npos) << r.output;
 }
 
-// A mutation of the spec: `from` replaced by `to` (and `from2` by `to2`, if given). The proof
-// must refute it with `check`, and the simulation must count conflicts of `conflict` in
-// `scenario`.
+// A mutation of the spec: `from` replaced by `to` (and `from2` by `to2`, `from3` by `to3`, if
+// given). The proof must refute it with `check`, and the simulation must count conflicts of
+// `conflict` in `scenario`.
 struct Mutation {
   const char* name;
   const char* from;
@@ -138,6 +138,8 @@ struct Mutation {
   const char* conflict;
   const char* from2 = nullptr;
   const char* to2 = nullptr;
+  const char* from3 = nullptr;
+  const char* to3 = nullptr;
 };
 
 // Names the mutation in test output (instead of its bytes).
@@ -156,6 +158,7 @@ TEST_P(Mutated, IsRefutedByTheProofAndConflictsInSimulation) {
   std::string text = read_file(kSpecs + "table_clean.spec");
   replace_once(text, m.from, m.to);
   if (m.from2) replace_once(text, m.from2, m.to2);
+  if (m.from3) replace_once(text, m.from3, m.to3);
   const fs::path spec = scratch() / (std::string(m.name) + ".spec");
   std::ofstream(spec) << text;
 
@@ -189,10 +192,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "take_while_holding"},
         Mutation{"take_while_rake_out", "when not e_taken and e_arm_idle and e_pull_idle {",
                  "when not e_taken and e_arm_idle {", "assert", "tool", "take_while_rake_out"},
-        // Without the priority (and its hold, which needs one), search and track overlap.
+        // Without the priority (and its hold, which needs one, and the property over its
+        // activity event, which is gone), search and track overlap.
         Mutation{"no_priority", "arbitrate HeadControl.gaze by priority {",
                  "arbitrate HeadControl.gaze {", "exclusive", "human", "search_during_face_hold",
-                 " hold 1s {", " {"}),
+                 " hold 1s {", " {", "never search while act_track;", ""}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Issue 13: a higher rule suppresses the lower ones only when it delivers. `track` never

@@ -75,7 +75,7 @@ golden temporal.sarif repo 1 --format sarif tests/verify/temporal.spec
 # table_clean with its properties over time: ask's spacing (the throttle), take's (under the
 # arm's assumed cycle), search after track (the hold), two absences and `only put after take`
 # proved, the response bounded; the mutant without ask's throttle is refuted for ask.
-golden table_clean_temporal.txt repo 0 tests/verify/table_clean_temporal.spec
+golden table_clean_temporal.txt repo 0 specs/table_clean.spec
 golden table_clean_ask_mutant.txt repo 1 tests/verify/table_clean_ask_mutant.spec
 # With track's hold halved, search is refuted by `never search within 1s after track`.
 golden table_clean_hold_mutant.txt repo 1 tests/verify/table_clean_hold_mutant.spec
@@ -83,7 +83,7 @@ golden table_clean_hold_mutant.txt repo 1 tests/verify/table_clean_hold_mutant.s
 golden table_clean_arm_mutant.txt repo 1 tests/verify/table_clean_arm_mutant.spec
 # Its response (search resumes after faces stop) to a bound that covers the mutant's shortest
 # violation (11 messages), and the mutant with a window shorter than the hold plus the period.
-golden table_clean_temporal_bound14.txt repo 0 --temporal-bound 14 tests/verify/table_clean_temporal.spec
+golden table_clean_temporal_bound14.txt repo 0 --temporal-bound 14 specs/table_clean.spec
 golden table_clean_response_mutant.txt repo 1 --temporal-bound 14 tests/verify/table_clean_response_mutant.spec
 # Response and stability with rates: holds up to the bound, violated under the rate, violated
 # by silence without one; every format.
