@@ -5,13 +5,12 @@
 namespace arbc::verify {
 
 bool SolverTimeout::arm(z3::solver& solver) {
-  Clock::time_point now = Clock::now();
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - now);
-  if (left.count() <= 0) return false;
-  if (armed_ && now - armed_at_ < kRearm) return true;
-  solver.set("timeout", static_cast<unsigned>(std::min<long long>(left.count(), 1u << 30)));
-  armed_ = true;
-  armed_at_ = now;
+  long long left =
+      std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
+  if (left <= 0) return false;
+  if (armed_ms_ > 0 && 2 * left >= armed_ms_) return true;
+  armed_ms_ = std::min<long long>(left, 1u << 30);
+  solver.set("timeout", static_cast<unsigned>(armed_ms_));
   return true;
 }
 

@@ -1,8 +1,14 @@
 // A Z3 solver's timeout, armed with the time left before a deadline. Z3 reads and writes solver
 // parameters under a global lock and reconfigures the solver each time: about a millisecond
 // here, more than most of the small queries verify asks (setting it before each query took 70
-// of the 180 ms that table_clean's properties over time cost). So the timeout is set again only
-// kRearm after the last time, and a query overruns the deadline by at most that.
+// of the 180 ms that table_clean's properties over time cost). The reconfiguration also
+// changes which model the solver finds next, so when it happens must not depend on timing, or
+// a counterexample would differ from run to run (and under the sanitizers' slower code).
+//
+// So the timeout is set at a solver's first query, and again only once the time left has
+// fallen below half of what was set: a query overruns the deadline by at most the time left
+// when it started, and a run far from its deadline (every run that ends in time, at the
+// default 60 s) sets it once per solver, its answers independent of how fast it runs.
 #pragma once
 
 #include <z3++.h>
@@ -14,18 +20,16 @@ namespace arbc::verify {
 class SolverTimeout {
  public:
   using Clock = std::chrono::steady_clock;
-  static constexpr std::chrono::milliseconds kRearm{50};
 
   explicit SolverTimeout(Clock::time_point deadline) : deadline_(deadline) {}
 
-  // Sets `solver`'s timeout to the time left, unless it did so less than kRearm ago; false
-  // (and nothing set) when no time is left. One SolverTimeout per solver.
+  // Arms `solver`'s timeout as above; false (and nothing set) when no time is left. One
+  // SolverTimeout per solver.
   bool arm(z3::solver& solver);
 
  private:
   Clock::time_point deadline_;
-  bool armed_ = false;
-  Clock::time_point armed_at_;
+  long long armed_ms_ = 0;  // the timeout last set; 0: none yet
 };
 
 }  // namespace arbc::verify
