@@ -283,8 +283,8 @@ void Builder::stmt(const ast::Stmt& s) {
 
 void Builder::expr(const ast::Expr* e) {
   if (!e) return;
-  if (e->kind == ast::Expr::Kind::Lambda && !e->field_locs.empty()) {
-    const Loc& at = e->field_locs[0];
+  if (e->kind == ast::Expr::Kind::Lambda && !e->names.empty()) {
+    const Loc& at = e->names[0].loc;
     declare({.kind = SymbolKind::Local,
              .name = e->text,
              .key = loc_key("param:", at, e->text),
@@ -308,8 +308,8 @@ void Builder::name(const ast::Expr& e) {
       if (e.local) ix_.add_occurrence(loc_key("local:", e.local->name_loc, e.text), at);
       break;
     case ast::NameKind::Param:
-      if (e.lambda && !e.lambda->field_locs.empty())
-        ix_.add_occurrence(loc_key("param:", e.lambda->field_locs[0], e.text), at);
+      if (e.lambda && !e.lambda->names.empty())
+        ix_.add_occurrence(loc_key("param:", e.lambda->names[0].loc, e.text), at);
       break;
     case ast::NameKind::Const:
       ix_.add_occurrence("const:" + e.text, at);

@@ -156,7 +156,7 @@ std::string LuaExprTranslator::expr(const ast::Expr& e) {
       std::string out = "{ ";
       for (size_t i = 0; i < e.args.size(); ++i) {
         if (i) out += ", ";
-        out += lua_table_key(e.field_names[i]) + expr(*e.args[i]);
+        out += lua_table_key(e.names[i].name) + expr(*e.args[i]);
       }
       return out + " }";
     }
@@ -206,7 +206,7 @@ std::string LuaExprTranslator::unary(const ast::Expr& e) {
 std::string LuaExprTranslator::binary(const ast::Expr& e) {
   const ast::Expr& l = *e.args[0];
   const ast::Expr& r = *e.args[1];
-  const std::string& op = e.op;
+  std::string_view op = e.op;
   if (op == "==" || op == "!=") {
     if (is_structured(l) || is_structured(r)) {
       std::string eq = helper("arbc_equal") + "(" + expr(l) + ", " + expr(r) + ")";
@@ -229,7 +229,7 @@ std::string LuaExprTranslator::binary(const ast::Expr& e) {
   // `/` is float division in the spec as in Lua; `%` truncates like the spec's constant folding
   // (C fmod), where Lua's own `%` would floor.
   if (op == "%") return "math.fmod(" + expr(l) + ", " + expr(r) + ")";
-  return operand(l) + " " + op + " " + operand(r);
+  return operand(l) + " " + std::string(op) + " " + operand(r);
 }
 
 std::string LuaExprTranslator::call(const ast::Expr& e) {

@@ -1,5 +1,8 @@
 #include "compiler/frontend/ast.h"
 
+#include <array>
+#include <stdexcept>
+
 namespace arbc::ast {
 
 const PortDecl* ModuleDecl::find_port(const std::string& port) const {
@@ -27,5 +30,13 @@ const ArbitrateDecl* Spec::find_arbitration(const std::string& qualified_port) c
 }
 
 std::string activity_event_name(const std::string& rule) { return "act_" + rule; }
+
+std::string_view operator_spelling(std::string_view written) {
+  static constexpr std::array<std::string_view, 14> kOperators = {
+      "+", "-", "*", "/", "%", "<", "<=", ">", ">=", "==", "!=", "and", "or", "not"};
+  for (std::string_view op : kOperators)
+    if (op == written) return op;
+  throw std::logic_error("not an operator of the grammar: '" + std::string(written) + "'");
+}
 
 }  // namespace arbc::ast

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/app_model.h"
@@ -91,33 +92,40 @@ struct Expr {
     Index,      // args[0][args[1]]
     Unary,      // op is "-" or "not"; args[0]
     Binary,     // op is one of + - * / % < <= > >= == != and or; args[0], args[1]
-    Record,     // { text: args[i] }: field_names[i] = args[i]
+    Record,     // { names[i].name: args[i] }
     List,       // [ args... ]
     Lambda,     // text => args[0]  (only as an argument of min_by / max_by)
     Call,       // text(args...), text names a builtin
     Otherwise,  // `otherwise`, only as a whole constraint
   };
+  // A name written inside an expression, with where it was written.
+  struct NameAt {
+    std::string name;
+    Loc loc;
+  };
+
+  // The fields are ordered to pack: a 10,000-rule spec has about 180,000 expressions, and on
+  // these machines the fresh memory they fill costs more than building them
+  // (docs/benchmarks.md).
   Kind kind = Kind::Number;
-  Loc loc;
-  std::string op;
-  std::string text;
-  double number = 0;
+  NameKind name_kind = NameKind::Unresolved;  // sema, Kind::Name
+  Builtin builtin = Builtin::None;            // sema, Kind::Call
   bool is_int = false;
   bool boolean = false;
-  std::vector<std::string> field_names;  // Kind::Record
-  std::vector<Loc>
-      field_locs;  // Record: each field name; Call: [0] the callee; Lambda: [0] the parameter
+  bool is_duration = false;  // sema: a float that came from a duration literal or constant
+  Loc loc;
+  std::string_view op;  // one of the grammar's operator spellings (static storage)
+  std::string text;
+  double number = 0;
+  std::vector<NameAt> names;  // Record: each field; Call: [0] the callee; Lambda: [0] the parameter
   std::vector<ExprPtr> args;
 
   // sema:
-  TypePtr type;              // value type; null for lambdas, events, otherwise, and on error.
-                             // An empty list literal `[]` has a List type with a null element.
-  bool is_duration = false;  // a float that came from a duration literal or duration constant
-  NameKind name_kind = NameKind::Unresolved;  // Kind::Name
-  const Stmt* local = nullptr;                // NameKind::Let / Var: the declaring statement
-  const Expr* lambda = nullptr;               // NameKind::Param: the Lambda expression
-  const ConstDecl* constant = nullptr;        // NameKind::Const
-  Builtin builtin = Builtin::None;            // Kind::Call
+  TypePtr type;                  // value type; null for lambdas, events, otherwise, and on error.
+                                 // An empty list literal `[]` has a List type with a null element.
+  const Stmt* local = nullptr;   // NameKind::Let / Var: the declaring statement
+  const Expr* lambda = nullptr;  // NameKind::Param: the Lambda expression
+  const ConstDecl* constant = nullptr;  // NameKind::Const
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -472,5 +480,9 @@ struct Spec {
 // The activity event `by priority` generates for a rule above the lowest: "act_" + rule
 // (docs/lowering.md). The name is reserved: sema rejects a declared event that takes it.
 std::string activity_event_name(const std::string& rule);
+
+// The operator `written` as a string with static storage, for Expr::op; `written` must be one of
+// the grammar's operators (+ - * / % < <= > >= == != and or not), else std::logic_error.
+std::string_view operator_spelling(std::string_view written);
 
 }  // namespace arbc::ast

@@ -233,7 +233,7 @@ class Builder {
       auto e = make(Expr::Kind::Lambda, std::move(where));  // ID '=>' expr
       auto* parameter = child<antlr4::tree::TerminalNode>(c, 0);
       e->text = tx(parameter);
-      e->field_locs.push_back(loc(parameter));  // the parameter's location
+      e->names.push_back({e->text, loc(parameter)});
       e->args.push_back(expr(operand(c, 2), depth + 1));
       return e;
     }
@@ -242,7 +242,7 @@ class Builder {
 
   ExprPtr unary(const std::string& op, ArbcParser::ExprContext* operand, Loc where, int depth) {
     auto e = make(Expr::Kind::Unary, std::move(where));
-    e->op = op;
+    e->op = operator_spelling(op);
     e->args.push_back(expr(operand, depth + 1));
     return e;
   }
@@ -250,7 +250,7 @@ class Builder {
   ExprPtr binary(const std::string& op, ArbcParser::ExprContext* left,
                  ArbcParser::ExprContext* right, Loc where, int depth) {
     auto e = make(Expr::Kind::Binary, std::move(where));
-    e->op = op;
+    e->op = operator_spelling(op);
     e->args.reserve(2);
     e->args.push_back(expr(left, depth + 1));
     e->args.push_back(expr(right, depth + 1));
@@ -289,7 +289,7 @@ class Builder {
       auto e = make(Expr::Kind::Call, std::move(where));
       auto* callee = child<antlr4::tree::TerminalNode>(c, 0);
       e->text = tx(callee);
-      e->field_locs.push_back(loc(callee));  // the callee's location
+      e->names.push_back({e->text, loc(callee)});
       for (ArbcParser::ExprContext* arg : c->expr()) e->args.push_back(expr(arg, depth + 1));
       return e;
     }
@@ -304,8 +304,7 @@ class Builder {
     if (auto* c = as<ArbcParser::RecordLitContext>(ctx)) {
       auto e = make(Expr::Kind::Record, std::move(where));
       for (ArbcParser::FieldInitContext* field : c->fieldInit()) {
-        e->field_names.push_back(tx(field->ID()));
-        e->field_locs.push_back(loc(field->ID()));
+        e->names.push_back({tx(field->ID()), loc(field->ID())});
         e->args.push_back(expr(field->expr(), depth + 1));
       }
       return e;

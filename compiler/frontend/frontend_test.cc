@@ -88,7 +88,9 @@ TEST(Frontend, TableCleanChecksAndIsAnnotated) {
   const Stmt& emit = *body[3];
   EXPECT_EQ(emit.kind, Stmt::Kind::Emit);
   EXPECT_EQ(emit.expr->kind, Expr::Kind::Record);
-  EXPECT_EQ(emit.expr->field_names, (std::vector<std::string>{"verb", "pos"}));
+  ASSERT_EQ(emit.expr->names.size(), 2u);
+  EXPECT_EQ(emit.expr->names[0].name, "verb");
+  EXPECT_EQ(emit.expr->names[1].name, "pos");
 
   // The throttle's duration constant is folded to seconds.
   const ast::ArbitrateDecl* speak = spec.find_arbitration("Speak.text");

@@ -65,11 +65,11 @@ std::optional<Value> record(const Expr& e, const Type& want, std::string* err) {
   for (size_t i = 0; i < e.args.size(); ++i) {
     const Type* field = nullptr;
     for (const Field& f : want.fields) {
-      if (f.name == e.field_names[i]) field = f.type.get();
+      if (f.name == e.names[i].name) field = f.type.get();
     }
     std::optional<Value> v = literal_value(*e.args[i], field ? *field : *e.args[i]->type, err);
     if (!v) return std::nullopt;
-    out.set(e.field_names[i], std::move(*v));
+    out.set(e.names[i].name, std::move(*v));
   }
   return out;
 }

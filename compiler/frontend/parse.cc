@@ -7,6 +7,7 @@
 #include <set>
 
 #include "compiler/frontend/ast_builder.h"
+#include "compiler/frontend/compact_token.h"
 #include "compiler/frontend/syntax_errors.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/utf8.h"
@@ -114,6 +115,37 @@ Diagnostic file_error(const std::string& file, int line, int column, std::string
   return d;
 }
 
+// One declaration at a time: SLL prediction first (fast), full LL if SLL fails, and each
+// declaration's parse tree is freed once its AST is built, so memory stays proportional to
+// the AST rather than to ANTLR's much larger trees. False at the first declaration that does
+// not parse (the caller then reports syntax errors with report_syntax_errors).
+bool parse_declarations(antlr4::CommonTokenStream& stream, AstBuilder& builder) {
+  ArbcParser parser(&stream);
+  parser.removeErrorListeners();
+  parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+  auto* simulator = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
+  while (stream.LA(1) != antlr4::Token::EOF) {
+    size_t start = stream.index();
+    ArbcParser::DeclContext* decl = nullptr;
+    for (auto mode : {antlr4::atn::PredictionMode::SLL, antlr4::atn::PredictionMode::LL}) {
+      simulator->setPredictionMode(mode);
+      try {
+        decl = parser.decl();
+        break;
+      } catch (const antlr4::ParseCancellationException&) {
+        parser.reset();
+        stream.seek(start);
+      }
+    }
+    if (!decl) return false;
+    builder.add_declaration(decl);
+    size_t next = stream.index();
+    parser.reset();  // frees this declaration's parse tree; also rewinds the stream
+    stream.seek(next);
+  }
+  return true;
+}
+
 }  // namespace
 
 ParseResult parse_spec(std::string_view text, const std::string& file) {
@@ -130,15 +162,18 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   }
 
   Utf8InputStream input(text);
-  ArbcLexer lexer(&input);
+  CompactTokenLexer lexer(&input);
   lexer.removeErrorListeners();  // ERROR_CHAR catches everything the lexer cannot match
   // At most one token per byte, plus EOF; specs average one per four to five bytes.
   ReservedTokenStream stream(&lexer, text.size() / 2 + 16);
   stream.fill();
   std::vector<antlr4::Token*> tokens;
   tokens.reserve(stream.size());
-  for (antlr4::Token* t : stream.getTokens())
+  // stream.get(i), not getTokens(): that returns a fresh copy of the whole buffer.
+  for (size_t i = 0; i < stream.size(); ++i) {
+    antlr4::Token* t = stream.get(i);
     if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) tokens.push_back(t);
+  }
 
   check_lexical(tokens, file, result.diagnostics);
   if (!result.diagnostics.empty()) return result;
@@ -150,38 +185,8 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
   }
   if (!check_nesting(tokens, lexer.getVocabulary(), file, result.diagnostics)) return result;
 
-  // One declaration at a time: SLL prediction first (fast), full LL if SLL fails, and each
-  // declaration's parse tree is freed once its AST is built, so memory stays proportional to
-  // the AST rather than to ANTLR's much larger trees. Any failure switches to
-  // report_syntax_errors, which names one error per broken declaration.
-  ArbcParser parser(&stream);
-  parser.removeErrorListeners();
-  parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
-  auto* simulator = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
   AstBuilder builder(file, text, result.diagnostics);
-  bool syntax_ok = true;
-  while (syntax_ok && stream.LA(1) != antlr4::Token::EOF) {
-    size_t start = stream.index();
-    ArbcParser::DeclContext* decl = nullptr;
-    for (auto mode : {antlr4::atn::PredictionMode::SLL, antlr4::atn::PredictionMode::LL}) {
-      simulator->setPredictionMode(mode);
-      try {
-        decl = parser.decl();
-        break;
-      } catch (const antlr4::ParseCancellationException&) {
-        parser.reset();
-        stream.seek(start);
-      }
-    }
-    if (!decl) {
-      syntax_ok = false;
-      break;
-    }
-    builder.add_declaration(decl);
-    size_t next = stream.index();
-    parser.reset();  // frees this declaration's parse tree; also rewinds the stream
-    stream.seek(next);
-  }
+  bool syntax_ok = parse_declarations(stream, builder);
   if (!syntax_ok) {
     report_syntax_errors(tokens, file, result.diagnostics);
     if (result.diagnostics.empty()) {  // cannot happen, but never stay silent

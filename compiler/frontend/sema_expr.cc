@@ -239,10 +239,11 @@ void Sema::check_binary(Expr& e, Scope& scope) {
   if (!a.type || !b.type) return;
   auto mismatch = [&] {
     error(e.loc,
-          "operator '" + e.op + "' cannot combine " + describe(a.type) + " and " + describe(b.type),
+          "operator '" + std::string(e.op) + "' cannot combine " + describe(a.type) + " and " +
+              describe(b.type),
           "type-mismatch");
   };
-  const std::string& op = e.op;
+  std::string_view op = e.op;
   if (op == "and" || op == "or") {
     if (a.type->kind != Type::Kind::Bool || b.type->kind != Type::Kind::Bool) return mismatch();
     e.type = kBool;
@@ -282,13 +283,13 @@ void Sema::check_record(Expr& e, Scope& scope) {
   bool ok = true;
   for (size_t i = 0; i < e.args.size(); ++i) {
     for (size_t j = 0; j < i; ++j) {
-      if (e.field_names[j] == e.field_names[i]) {
-        error(e.field_locs[i], "field '" + e.field_names[i] + "' is given twice", "duplicate");
+      if (e.names[j].name == e.names[i].name) {
+        error(e.names[i].loc, "field '" + e.names[i].name + "' is given twice", "duplicate");
       }
     }
     check_expr(*e.args[i], scope);
     if (!e.args[i]->type) ok = false;
-    fields.push_back({e.field_names[i], e.args[i]->type});
+    fields.push_back({e.names[i].name, e.args[i]->type});
   }
   if (ok) e.type = Type::record(std::move(fields));
 }
@@ -324,7 +325,7 @@ void Sema::check_call(Expr& e, Scope& scope) {
   const BuiltinInfo* info = nullptr;
   for (const BuiltinInfo& b : kBuiltins)
     if (e.text == b.name) info = &b;
-  const Loc& callee = e.field_locs.empty() ? e.loc : e.field_locs[0];
+  const Loc& callee = e.names.empty() ? e.loc : e.names[0].loc;
   if (!info) {
     std::vector<std::string> names;
     for (const BuiltinInfo& b : kBuiltins) names.push_back(b.name);
@@ -511,7 +512,7 @@ bool Sema::fold_const(const Expr& e, ConstDecl& into) {
     case Expr::Kind::Binary: {
       ConstDecl a, b;
       if (!fold_const(*e.args[0], a) || !fold_const(*e.args[1], b)) return false;
-      const std::string& op = e.op;
+      std::string_view op = e.op;
       bool strings = is_kind(e.args[0]->type, Type::Kind::String);
       if (op == "+") {
         if (strings)

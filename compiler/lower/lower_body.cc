@@ -92,11 +92,11 @@ BodyExpr expr(const ast::Expr& e) {
       break;
     case Kind::Binary:
       out.op = BodyExpr::Op::Binary;
-      out.text = e.op;
+      out.text = std::string(e.op);
       break;
     case Kind::Record:
       out.op = BodyExpr::Op::Record;
-      out.names = e.field_names;
+      for (const auto& field : e.names) out.names.push_back(field.name);
       break;
     case Kind::List:
       out.op = BodyExpr::Op::List;
