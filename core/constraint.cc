@@ -28,12 +28,19 @@ Constraint Constraint::negate(Constraint inner) {
 namespace {
 
 Constraint nary(Constraint::Op op, std::vector<Constraint> args) {
+  size_t total = 0;
+  for (const Constraint& a : args) total += a.op == op ? a.args.size() : 1;
+  // `a and b and c` parses as `(a and b) and c`: the first operand is the chain so far. Its
+  // operands are kept in place and the rest appended, so a chain of n costs n moves, not n^2.
   std::vector<Constraint> flat;
-  for (Constraint& a : args) {
-    if (a.op == op) {
-      for (Constraint& inner : a.args) flat.push_back(std::move(inner));
+  auto rest = args.begin();
+  if (rest != args.end() && rest->op == op) flat = std::move((rest++)->args);
+  flat.reserve(total);
+  for (; rest != args.end(); ++rest) {
+    if (rest->op == op) {
+      for (Constraint& inner : rest->args) flat.push_back(std::move(inner));
     } else {
-      flat.push_back(std::move(a));
+      flat.push_back(std::move(*rest));
     }
   }
   if (flat.empty()) return Constraint::constant(op == Constraint::Op::And);
@@ -221,33 +228,34 @@ class Parser {
 
 // The builders fold constants (the parser keeps what the user wrote): `true` vanishes from a
 // conjunction and `false` absorbs it; dually for disjunctions.
+// The front end builds a chain of n operands in n calls (one per `and`), so these work in place
+// rather than copying the operands into new vectors at every call.
 Constraint Constraint::conjunction(std::vector<Constraint> args) {
-  std::vector<Constraint> kept;
-  for (Constraint& a : args) {
+  for (const Constraint& a : args)
     if (a.op == Op::False) return constant(false);
-    if (a.op != Op::True) kept.push_back(std::move(a));
-  }
-  Constraint c = nary(Op::And, std::move(kept));
+  std::erase_if(args, [](const Constraint& a) { return a.op == Op::True; });
+  Constraint c = nary(Op::And, std::move(args));
   // `a and a` says nothing more than `a` (an effective guard adds events its constraint may
   // already require); small conjunctions only, so building stays linear for large ones.
   if (c.op == Op::And && c.args.size() <= 64) {
-    std::vector<Constraint> unique;
-    for (Constraint& a : c.args)
-      if (std::find(unique.begin(), unique.end(), a) == unique.end())
-        unique.push_back(std::move(a));
-    if (unique.size() == 1) return std::move(unique.front());
-    c.args = std::move(unique);
+    size_t unique = 0;  // c.args[0, unique) are the first occurrences, in order
+    for (size_t i = 0; i < c.args.size(); ++i) {
+      auto end = c.args.begin() + static_cast<std::ptrdiff_t>(unique);
+      if (std::find(c.args.begin(), end, c.args[i]) != end) continue;
+      if (i != unique) c.args[unique] = std::move(c.args[i]);
+      ++unique;
+    }
+    c.args.resize(unique);
+    if (unique == 1) return std::move(c.args.front());
   }
   return c;
 }
 
 Constraint Constraint::disjunction(std::vector<Constraint> args) {
-  std::vector<Constraint> kept;
-  for (Constraint& a : args) {
+  for (const Constraint& a : args)
     if (a.op == Op::True) return constant(true);
-    if (a.op != Op::False) kept.push_back(std::move(a));
-  }
-  return nary(Op::Or, std::move(kept));
+  std::erase_if(args, [](const Constraint& a) { return a.op == Op::False; });
+  return nary(Op::Or, std::move(args));
 }
 
 std::string Constraint::to_string() const {

@@ -45,6 +45,18 @@ TEST(ConstraintTest, BuildersFoldConstants) {
   EXPECT_EQ(Constraint::conjunction({}).to_string(), "true");
   EXPECT_EQ(Constraint::conjunction({x, Constraint::event_ref("y"), x}).to_string(), "x and y");
   EXPECT_EQ(Constraint::conjunction({x, x}).to_string(), "x");
+  // Nested chains flatten in order, whichever operand holds the chain; an `or` stays nested.
+  Constraint y = Constraint::event_ref("y"), z = Constraint::event_ref("z");
+  Constraint xy = Constraint::conjunction({x, Constraint::negate(y)});
+  Constraint chain = Constraint::conjunction({xy, z, Constraint::conjunction({z, x, y})});
+  ASSERT_EQ(chain.args.size(), 4u);
+  EXPECT_EQ(chain.to_string(), "x and not y and z and y");
+  EXPECT_EQ(Constraint::conjunction({z, Constraint::disjunction({x, y}), xy}).to_string(),
+            "z and (x or y) and x and not y");
+  EXPECT_EQ(
+      Constraint::disjunction({Constraint::disjunction({x, y}), z, Constraint::constant(false)})
+          .to_string(),
+      "x or y or z");
   EXPECT_EQ(parse_constraint("true and x").constraint.to_string(), "true and x");
 }
 

@@ -612,6 +612,7 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
       if (e.op == "and" || e.op == "or") {
         e.type = kBool;
         std::vector<Constraint> parts;
+        parts.reserve(2);
         parts.push_back(check_constraint(*e.args[0], where, false));
         parts.push_back(check_constraint(*e.args[1], where, false));
         return e.op == "and" ? Constraint::conjunction(std::move(parts))
