@@ -454,10 +454,10 @@ class Builder {
   }
 
   // ---- declarations -------------------------------------------------------------------------
-  PortRef port_ref(ArbcParser::PortRefContext* ctx) {
+  PortRef port_ref(ArbcParser::PortRefContext* ctx) {  // portRef : ID '.' ID ;
     PortRef p;
-    p.module = tx(ctx->ID(0));
-    p.port = tx(ctx->ID(1));
+    p.module = tx(child<antlr4::tree::TerminalNode>(ctx, 0));
+    p.port = tx(child<antlr4::tree::TerminalNode>(ctx, 2));
     p.loc = loc(ctx);
     return p;
   }
@@ -851,16 +851,31 @@ class Builder {
   }
 
   // ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
+  // The optional parts are found in one pass over the children, not by the generated accessors,
+  // each of which dynamic_casts every child: a spec's rules are most of its declarations.
   Rule rule(ArbcParser::RuleDeclContext* c) {
     Rule r;
-    r.name = tx(c->ID());
-    r.loc = loc(c->ID());
-    r.source = port_ref(c->portRef());
-    if (c->expr()) r.when = expr(c->expr(), 0);
-    r.hold = optional_duration(c->duration());
-    if (c->block()) {
-      r.has_body = true;
-      r.body = block(c->block(), 0);
+    auto* name = child<antlr4::tree::TerminalNode>(c, 0);
+    r.name = tx(name);
+    r.loc = loc(name);
+    r.source = port_ref(child<ArbcParser::PortRefContext>(c, 3));
+    for (size_t i = 4; i < c->children.size(); ++i) {
+      auto* part = dynamic_cast<antlr4::ParserRuleContext*>(c->children[i]);
+      if (!part) continue;  // 'when', 'hold', ';'
+      switch (part->getRuleIndex()) {
+        case ArbcParser::RuleExpr:
+          r.when = expr(static_cast<ArbcParser::ExprContext*>(part), 0);
+          break;
+        case ArbcParser::RuleDuration:
+          r.hold = duration(static_cast<ArbcParser::DurationContext*>(part));
+          break;
+        case ArbcParser::RuleBlock:
+          r.has_body = true;
+          r.body = block(static_cast<ArbcParser::BlockContext*>(part), 0);
+          break;
+        default:
+          break;
+      }
     }
     return r;
   }

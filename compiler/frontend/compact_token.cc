@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "compiler/frontend/lexer_dfa.h"
+
 namespace arbc::frontend {
 
 namespace {
@@ -84,6 +86,12 @@ void CompactToken::setCharPositionInLine(size_t column) {
 void CompactToken::setChannel(size_t channel) { channel_ = narrow<uint8_t>(channel, "channel"); }
 void CompactToken::setTokenIndex(size_t index) {
   index_ = index == INVALID_INDEX ? UINT32_MAX : narrow<uint32_t>(index, "index");
+}
+
+CompactTokenLexer::CompactTokenLexer(antlr4::CharStream* input)
+    : arbc_grammar::ArbcLexer(input), arena_(this, input) {
+  delete _interpreter;  // the generated constructor's, over the process-wide cache
+  _interpreter = make_thread_lexer_simulator(this).release();  // deleted by ~ArbcLexer
 }
 
 antlr4::Token* CompactTokenLexer::emit() {

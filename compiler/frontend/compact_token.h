@@ -99,8 +99,8 @@ class CompactToken final : public antlr4::WritableToken {
 // position beyond 32 bits, which a spec never reaches).
 class CompactTokenLexer : public arbc_grammar::ArbcLexer {
  public:
-  explicit CompactTokenLexer(antlr4::CharStream* input)
-      : arbc_grammar::ArbcLexer(input), arena_(this, input) {}
+  // Also gives the lexer a DFA cache of its thread's own (lexer_dfa.h): use it on one thread.
+  explicit CompactTokenLexer(antlr4::CharStream* input);
 
   using arbc_grammar::ArbcLexer::emit;
   antlr4::Token* emit() override;

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "tests/support/tree_paths.h"
 
@@ -51,6 +52,20 @@ TEST(CompactToken, LexesThePaperSpecExactlyAsCommonTokensDo) {
   ASSERT_GT(expected.size(), 500u);
   EXPECT_EQ(got, expected);
   EXPECT_EQ(compact, expected.size() - 1);  // all but EOF
+}
+
+TEST(CompactToken, LexersOnSeveralThreadsAtOnceEachGetTheSameTokens) {
+  // Each thread's lexers read a DFA cache of that thread's own (lexer_dfa.h), built as they go.
+  std::string text = read(arbc::testing::source_dir() + "/specs/table_clean.spec");
+  std::vector<std::string> expected = lex<arbc_grammar::ArbcLexer>(text);
+  std::vector<std::vector<std::string>> got(4);
+  std::vector<std::thread> threads;
+  for (auto& out : got)
+    threads.emplace_back([&text, &out] {
+      for (int round = 0; round < 3; ++round) out = lex<CompactTokenLexer>(text);
+    });
+  for (std::thread& t : threads) t.join();
+  for (const auto& out : got) EXPECT_EQ(out, expected);
 }
 
 TEST(CompactToken, IsFortyBytesAndKeepsTextSetAfterLexing) {
