@@ -1,10 +1,12 @@
 #include "core/sha256.h"
 
+#include "core/sha256_blocks.h"
+
 namespace arbc {
 
-namespace {
+namespace sha256_detail {
 
-constexpr uint32_t kRound[64] = {
+alignas(16) const uint32_t kRound[64] = {
     0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
     0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
     0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
@@ -14,10 +16,12 @@ constexpr uint32_t kRound[64] = {
     0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 
+namespace {
+
 constexpr uint32_t rotr(uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
 // One 64-byte block into the state (FIPS 180-4, 6.2.2).
-void compress(std::array<uint32_t, 8>& h, const uint8_t* block) {
+void compress_block(State& h, const uint8_t* block) {
   uint32_t w[64];
   for (int i = 0; i < 16; ++i) {
     w[i] = uint32_t{block[4 * i]} << 24 | uint32_t{block[4 * i + 1]} << 16 |
@@ -54,12 +58,22 @@ void compress(std::array<uint32_t, 8>& h, const uint8_t* block) {
 
 }  // namespace
 
-Sha256Digest sha256(std::string_view bytes) {
+void compress_portable(State& h, const uint8_t* data, size_t blocks) {
+  for (size_t i = 0; i < blocks; ++i) compress_block(h, data + 64 * i);
+}
+
+}  // namespace sha256_detail
+
+Sha256Digest sha256(std::string_view bytes, Sha256Path path) {
+  using namespace sha256_detail;
+  static const bool have_extensions = sha_extensions_available();
+  auto compress =
+      path == Sha256Path::Fastest && have_extensions ? compress_sha_extensions : compress_portable;
   std::array<uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
                                0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
   const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
   size_t full = bytes.size() / 64 * 64;
-  for (size_t at = 0; at < full; at += 64) compress(h, data + at);
+  compress(h, data, full / 64);
   // Padding: 0x80, zeros, then the length in bits as a big-endian 64-bit number.
   uint8_t tail[128] = {};
   size_t rest = bytes.size() - full;
@@ -68,7 +82,7 @@ Sha256Digest sha256(std::string_view bytes) {
   size_t tail_size = rest + 1 + 8 <= 64 ? 64 : 128;
   uint64_t bits = static_cast<uint64_t>(bytes.size()) * 8;
   for (int i = 0; i < 8; ++i) tail[tail_size - 1 - i] = static_cast<uint8_t>(bits >> (8 * i));
-  for (size_t at = 0; at < tail_size; at += 64) compress(h, tail + at);
+  compress(h, tail, tail_size / 64);
   Sha256Digest out;
   for (int i = 0; i < 8; ++i) {
     for (int j = 0; j < 4; ++j) out[4 * i + j] = static_cast<uint8_t>(h[i] >> (24 - 8 * j));

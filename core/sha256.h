@@ -13,7 +13,11 @@ namespace arbc {
 
 using Sha256Digest = std::array<uint8_t, 32>;
 
-Sha256Digest sha256(std::string_view bytes);
+// Fastest: the processor's SHA extensions where it has them (sha256_blocks.h). Portable: plain
+// C++ everywhere; the two give the same digest, which sha256_test.cc checks.
+enum class Sha256Path { Fastest, Portable };
+
+Sha256Digest sha256(std::string_view bytes, Sha256Path path = Sha256Path::Fastest);
 
 // The digest as 64 lower-case hexadecimal digits (what `sha256sum` prints).
 std::string sha256_hex(std::string_view bytes);
