@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "compiler/frontend/lexer_dfa.h"
+#include "compiler/frontend/thread_dfa.h"
 
 namespace arbc::frontend {
 

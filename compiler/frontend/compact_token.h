@@ -99,7 +99,7 @@ class CompactToken final : public antlr4::WritableToken {
 // position beyond 32 bits, which a spec never reaches).
 class CompactTokenLexer : public arbc_grammar::ArbcLexer {
  public:
-  // Also gives the lexer a DFA cache of its thread's own (lexer_dfa.h): use it on one thread.
+  // Also gives the lexer a DFA cache of its thread's own (thread_dfa.h): use it on one thread.
   explicit CompactTokenLexer(antlr4::CharStream* input);
 
   using arbc_grammar::ArbcLexer::emit;

@@ -55,7 +55,7 @@ TEST(CompactToken, LexesThePaperSpecExactlyAsCommonTokensDo) {
 }
 
 TEST(CompactToken, LexersOnSeveralThreadsAtOnceEachGetTheSameTokens) {
-  // Each thread's lexers read a DFA cache of that thread's own (lexer_dfa.h), built as they go.
+  // Each thread's lexers read a DFA cache of that thread's own (thread_dfa.h), built as they go.
   std::string text = read(arbc::testing::source_dir() + "/specs/table_clean.spec");
   std::vector<std::string> expected = lex<arbc_grammar::ArbcLexer>(text);
   std::vector<std::vector<std::string>> got(4);

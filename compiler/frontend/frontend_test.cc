@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "tests/support/tree_paths.h"
 
 namespace arbc::frontend {
@@ -212,6 +214,34 @@ TEST(Frontend, RenderCapsTheNumberOfErrors) {
   for (Diagnostic& d : many) d.message = "x";
   std::string text = render_diagnostics(many, nullptr, 50);
   EXPECT_NE(text.find("... and 10 more errors (only the first 50 are shown)"), std::string::npos);
+}
+
+// The lexer and the parser predict over DFA caches of their thread's own (thread_dfa.h), each
+// built as it goes: specs checked on several threads at once come out as on one.
+TEST(Frontend, SpecsCheckedOnSeveralThreadsAtOnceComeOutAsOnOne) {
+  auto summary = [](const std::string& name) {
+    CheckResult r = check_file(arbc::testing::source_dir() + "/specs/" + name + ".spec");
+    std::string s = ids(r);
+    if (r.spec)
+      for (const ast::ArbitrateDecl& a : r.spec->arbitrations)
+        for (const ast::Rule& rule : a.rules)
+          s += rule.name + ": " + rule.constraint.to_string() + "\n";
+    return s;
+  };
+  const std::vector<std::string> names = {"table_clean", "search_and_track", "face_filter"};
+  std::vector<std::string> expected;
+  for (const std::string& name : names) expected.push_back(summary(name));
+  std::vector<std::vector<std::string>> got(4);
+  std::vector<std::thread> threads;
+  for (auto& out : got)
+    threads.emplace_back([&names, &summary, &out] {
+      for (int round = 0; round < 3; ++round)
+        for (const std::string& name : names) out.push_back(summary(name));
+    });
+  for (std::thread& t : threads) t.join();
+  for (const auto& out : got)
+    for (size_t i = 0; i < out.size(); ++i) EXPECT_EQ(out[i], expected[i % names.size()]);
+  EXPECT_NE(expected[0].find("search: "), std::string::npos);  // the rules are really there
 }
 
 }  // namespace

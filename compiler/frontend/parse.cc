@@ -9,6 +9,7 @@
 #include "compiler/frontend/ast_builder.h"
 #include "compiler/frontend/compact_token.h"
 #include "compiler/frontend/syntax_errors.h"
+#include "compiler/frontend/thread_dfa.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/utf8.h"
 
@@ -115,12 +116,22 @@ Diagnostic file_error(const std::string& file, int line, int column, std::string
   return d;
 }
 
+// The spec parser, predicting over this thread's own DFA cache (thread_dfa.h): use it on one
+// thread.
+class ThreadDfaParser : public ArbcParser {
+ public:
+  explicit ThreadDfaParser(antlr4::TokenStream* input) : ArbcParser(input) {
+    delete _interpreter;  // the generated constructor's, over the process-wide cache
+    _interpreter = make_thread_parser_simulator(this).release();  // deleted by ~ArbcParser
+  }
+};
+
 // One declaration at a time: SLL prediction first (fast), full LL if SLL fails, and each
 // declaration's parse tree is freed once its AST is built, so memory stays proportional to
 // the AST rather than to ANTLR's much larger trees. False at the first declaration that does
 // not parse (the caller then reports syntax errors with report_syntax_errors).
 bool parse_declarations(antlr4::CommonTokenStream& stream, AstBuilder& builder) {
-  ArbcParser parser(&stream);
+  ThreadDfaParser parser(&stream);
   parser.removeErrorListeners();
   parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
   auto* simulator = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
