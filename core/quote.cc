@@ -20,15 +20,26 @@ bool append_numeric_escape(std::string& out, unsigned char c, QuoteStyle style) 
   return true;
 }
 
+bool needs_escape(unsigned char c, QuoteStyle style) {
+  if (c == '"' || c == '\\') return true;
+  if (style == QuoteStyle::Dot) return false;
+  return c < 0x20 || (style == QuoteStyle::Lua && c >= 0x7f);
+}
+
 }  // namespace
 
+// Runs of bytes that stay as they are are copied whole: app.json's source maps and the
+// monitors' text make this a large share of writing a big app.
 void append_quoted(std::string& out, std::string_view s, QuoteStyle style) {
   out += '"';
-  for (unsigned char c : s) {
+  size_t plain = 0;  // where the current run of unescaped bytes starts
+  for (size_t i = 0; i < s.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    if (!needs_escape(c, style)) continue;
+    out.append(s, plain, i - plain);
+    plain = i + 1;
     if (c == '"' || c == '\\') {
       out += '\\';
-      out += static_cast<char>(c);
-    } else if (style == QuoteStyle::Dot) {
       out += static_cast<char>(c);
     } else if (c == '\n') {
       out += "\\n";
@@ -36,10 +47,11 @@ void append_quoted(std::string& out, std::string_view s, QuoteStyle style) {
       out += "\\r";
     } else if (c == '\t') {
       out += "\\t";
-    } else if (!append_numeric_escape(out, c, style)) {
-      out += static_cast<char>(c);
+    } else {
+      append_numeric_escape(out, c, style);
     }
   }
+  out.append(s, plain, s.size() - plain);
   out += '"';
 }
 

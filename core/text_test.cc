@@ -32,6 +32,10 @@ TEST(Quote, JsonEscapesControlBytesAndKeepsUtf8) {
   EXPECT_EQ(quoted("a\"b\\c\nd\re\tf", QuoteStyle::Json), "\"a\\\"b\\\\c\\nd\\re\\tf\"");
   EXPECT_EQ(quoted("\x01\x1f\x7f", QuoteStyle::Json), "\"\\u0001\\u001f\x7f\"");
   EXPECT_EQ(quoted("caf\xc3\xa9", QuoteStyle::Json), "\"caf\xc3\xa9\"");
+  // Escapes first and last, plain runs between and none at all.
+  EXPECT_EQ(quoted("\"plain run\n\nanother\\", QuoteStyle::Json),
+            "\"\\\"plain run\\n\\nanother\\\\\"");
+  EXPECT_EQ(quoted("", QuoteStyle::Json), "\"\"");
 }
 
 TEST(Quote, LuaKeepsTheTextAscii) {
