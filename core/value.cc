@@ -252,7 +252,7 @@ bool conforms(const Value& v, const Type& t, std::string* why) {
       const ValueList& items = v.as_list();
       for (size_t i = 0; i < items.size(); ++i) {
         std::string inner;
-        if (!conforms(items[i], *t.element, &inner)) {
+        if (!conforms(items[i], *t.element, why ? &inner : nullptr)) {
           return fail("element " + std::to_string(i) + ": " + inner);
         }
       }
@@ -265,7 +265,9 @@ bool conforms(const Value& v, const Type& t, std::string* why) {
         auto it = r.find(f.name);
         if (it == r.end()) return fail("missing field " + f.name);
         std::string inner;
-        if (!conforms(it->second, *f.type, &inner)) return fail("field " + f.name + ": " + inner);
+        if (!conforms(it->second, *f.type, why ? &inner : nullptr)) {
+          return fail("field " + f.name + ": " + inner);
+        }
       }
       if (r.size() != t.fields.size()) {
         for (const auto& [name, _] : r) {

@@ -10,23 +10,21 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <functional>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
-#include <unordered_set>
-#include <vector>
+
+#include "runtime/task_queue.h"
 
 namespace arbc {
 
 class Executor {
  public:
-  using TaskId = uint64_t;
+  using TaskId = TaskQueue::TaskId;
   virtual ~Executor() = default;
   virtual double now() const = 0;
   // Runs fn at time `at` (not before now()). Returns an id for cancel().
-  virtual TaskId post(double at, std::function<void()> fn) = 0;
+  virtual TaskId post(double at, Task task) = 0;
   virtual void cancel(TaskId id) = 0;
   // Runs tasks until time `until` is reached or stop() is called; now() is then `until`
   // (or the time of the stop).
@@ -43,52 +41,10 @@ class Executor {
   const std::atomic<bool>* interrupt_ = nullptr;
 };
 
-// Tasks ordered by (time, posting order): a binary heap over a vector, with each task's
-// function in a reused slot, so that posting and running a task allocate nothing once the
-// queue has grown to its working size (a map node per task cost two allocations and frees per
-// message on the message path). A task id names its slot and the slot's generation, so a stale
-// id (a task that ran or was cancelled) cancels nothing.
-class TaskQueue {
- public:
-  using TaskId = Executor::TaskId;
-  TaskId push(double at, std::function<void()> fn);
-  void cancel(TaskId id);
-  bool empty() const { return heap_.empty(); }
-  double next_time() const { return heap_.front().at; }
-  std::function<void()> pop();
-  // Tasks waiting (cancelled ones no longer count).
-  size_t size() const { return heap_.size() - dead_; }
-  // Heap entries, cancelled ones not yet discarded included: bounded by about twice size().
-  size_t entries() const { return heap_.size(); }
-
- private:
-  struct Entry {
-    double at;
-    uint64_t seq;  // posting order, the tie-break between equal times
-    TaskId id;
-  };
-  struct Slot {
-    uint32_t generation = 0;
-    bool live = false;
-    std::function<void()> fn;
-  };
-  static bool later(const Entry& a, const Entry& b) {
-    return a.at != b.at ? a.at > b.at : a.seq > b.seq;
-  }
-  bool stale(const Entry& e) const;
-  void release(uint32_t slot);
-  void drop_dead_top();
-  std::vector<Entry> heap_;
-  std::vector<Slot> slots_;
-  std::vector<uint32_t> free_;
-  uint64_t next_seq_ = 0;
-  size_t dead_ = 0;  // cancelled entries still in heap_
-};
-
 class SimulatedExecutor : public Executor {
  public:
   double now() const override { return now_; }
-  TaskId post(double at, std::function<void()> fn) override;
+  TaskId post(double at, Task task) override;
   void cancel(TaskId id) override { queue_.cancel(id); }
   void run(double until) override;
   void stop() override { stopped_ = true; }
@@ -108,7 +64,7 @@ class RealtimeExecutor : public Executor {
   explicit RealtimeExecutor(double scale = 1)
       : start_(std::chrono::steady_clock::now()), scale_(scale) {}
   double now() const override;
-  TaskId post(double at, std::function<void()> fn) override;
+  TaskId post(double at, Task task) override;
   void cancel(TaskId id) override;
   void run(double until) override;
   void stop() override;

@@ -20,7 +20,7 @@ void Runtime::publish(std::string_view module, std::string_view port, Value v) {
   report("publish: no module named " + std::string(module));
 }
 
-void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
+void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value&& v) {
   if (!executor_->on_executor_thread()) {
     // Real time: a module's own thread published; hand the message to the executor thread.
     std::string port_name(port);
@@ -38,8 +38,9 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value v) {
     return;
   }
   OutPort& out = *it->second;
-  std::string why;
-  if (!conforms(v, *out.type, &why)) {
+  if (!conforms(v, *out.type, nullptr)) {
+    std::string why;  // built only for a value that does not conform: the check runs again
+    conforms(v, *out.type, &why);
     std::string message = "module " + m.name + " published a value on " + out.qualified +
                           " that is not a " + out.type->to_string() + " (" + why + ")";
     trace_.publish_error(now(), out.qualified, message);
@@ -106,30 +107,35 @@ void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
     drop(c, DropReason::QueueFull);
     return;
   }
-  c.queue.push_back({v, answered, arrivals_});
-  if (!c.drain_posted) {
-    c.drain_posted = true;
-    executor_->post(now(), [this, &c] { drain(c); });
-  }
+  Connection::Queued& queued = c.queue.push_back();
+  queued.value = v;
+  queued.answered = answered;
+  queued.message = arrivals_;
+  if (!c.drain_posted) post_drain(c);
+}
+
+void Runtime::post_drain(Connection& c) {
+  c.drain_posted = true;
+  auto drain_task = [](void* connection) {
+    auto* c = static_cast<Connection*>(connection);
+    c->runtime->drain(*c);
+  };
+  executor_->post(now(), Task(drain_task, &c));
 }
 
 // One message per task, so connections interleave fairly in posting order.
 void Runtime::drain(Connection& c) {
   c.drain_posted = false;
   if (c.queue.empty()) return;
-  Value msg = std::move(c.queue.front().value);
-  c.incoming_answered = c.queue.front().answered;
-  c.message = c.queue.front().message;
-  c.queue.pop_front();
+  Connection::Queued queued = c.queue.take_front();
+  c.incoming_answered = queued.answered;
+  c.message = queued.message;
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
   } else {
-    process(c, msg);
+    process(c, queued.value);
   }
-  if (!c.queue.empty() && !c.drain_posted) {
-    c.drain_posted = true;
-    executor_->post(now(), [this, &c] { drain(c); });
-  }
+  if (!c.queue.empty() && !c.drain_posted) post_drain(c);
 }
 
 // --- the path ----------------------------------------------------------------------------

@@ -208,6 +208,7 @@ class Runtime {
   bool accepted_by_monitor(Connection& c, const Value& msg);
   void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
+  void post_drain(Connection& c);  // one drain task per message, posted now
   void process(Connection& c, const Value& msg);
   void drop(Connection& c, DropReason reason, std::string_view detail = {});
   // Counts and reports a failing callback; quarantines after too many in a row.
@@ -219,7 +220,7 @@ class Runtime {
   void plugin_failed(PluginGuard& who, const char* callback, const std::string& what);
   void schedule_trig(Connection& c);
   void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
-  void publish_from(ModuleSlot& m, std::string_view port, Value v);
+  void publish_from(ModuleSlot& m, std::string_view port, Value&& v);
   // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;
   // false with *error on bad input (a script that does not load, another constraint).
   bool load_monitor(Connection& c, const std::string& app_dir, std::string* error);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "runtime/ring_queue.h"
 #include "runtime/runtime.h"
 
 namespace arbc {
@@ -80,7 +81,7 @@ struct Runtime::Connection : MonitorHost {
     uint64_t answered = 0;  // TransportSink::from_source's
     uint64_t message = 0;   // its arrival's number (Runtime::arrivals_)
   };
-  std::deque<Queued> queue;
+  RingQueue<Queued> queue;
   bool drain_posted = false;
   std::optional<double> throttle;
   double last_delivery = -std::numeric_limits<double>::infinity();
