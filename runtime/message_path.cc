@@ -29,15 +29,15 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value&& v) {
     });
     return;
   }
-  auto it = m.outputs.find(port);
-  if (it == m.outputs.end()) {
+  OutPort* found = m.output(port);
+  if (!found) {
     std::string message = "module " + m.name + " published on '" + std::string(port) +
                           "', which is not one of its output ports in the app";
     trace_.publish_error(now(), m.name + "." + std::string(port), message);
     if (m.reported.insert(message).second) report(message);
     return;
   }
-  OutPort& out = *it->second;
+  OutPort& out = *found;
   if (!conforms(v, *out.type, nullptr)) {
     std::string why;  // built only for a value that does not conform: the check runs again
     conforms(v, *out.type, &why);

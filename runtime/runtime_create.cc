@@ -178,7 +178,7 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
       out->type = p.type;
       out->hosted = slot != nullptr;
       out->remote = remote;
-      if (slot) slot->outputs.emplace(p.name, out.get());
+      if (slot) slot->outputs.push_back(out.get());
       outputs_by_name_.emplace(qualified, out.get());
       out_ports_.push_back(std::move(out));
     }

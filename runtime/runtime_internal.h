@@ -175,7 +175,15 @@ struct Runtime::PluginGuard {
 class Runtime::ModuleSlot : public ModuleContext, public PluginGuard {
  public:
   std::unique_ptr<Module> module;
-  std::map<std::string, OutPort*, std::less<>> outputs;
+  // Searched by name on every publish: a module has a few outputs, and a scan that compares
+  // lengths first costs less than a map's string comparisons.
+  std::vector<OutPort*> outputs;
+  OutPort* output(std::string_view port) const {
+    for (OutPort* out : outputs) {
+      if (out->port.size() == port.size() && out->port == port) return out;
+    }
+    return nullptr;
+  }
   std::mt19937_64 random;
   Executor::TaskId tick_task = 0;
   std::set<std::string> reported;  // publish errors already reported

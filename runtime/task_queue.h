@@ -85,9 +85,12 @@ class TaskQueue {
     bool live = false;
     Task task;
   };
-  static bool later(const Entry& a, const Entry& b) {
-    return a.at != b.at ? a.at > b.at : a.seq > b.seq;
-  }
+  // A function object rather than a function: the heap algorithms then inline it.
+  struct Later {
+    bool operator()(const Entry& a, const Entry& b) const {
+      return a.at != b.at ? a.at > b.at : a.seq > b.seq;
+    }
+  };
   bool stale(const Entry& e) const;
   void release(uint32_t slot);
   void drop_dead_top();
