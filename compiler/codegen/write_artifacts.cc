@@ -2,10 +2,10 @@
 
 #include <fcntl.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
+#include <cstdio>  // renameat2
 #include <filesystem>
+
+#include "compiler/codegen/open_directory.h"
 
 namespace arbc::codegen {
 
@@ -21,26 +21,6 @@ std::string quoted(const fs::path& path) {
   return s;
 }
 
-// True when `path` is a regular file holding exactly `content`.
-bool same_content(const fs::path& path, const std::string& content) {
-  std::error_code ec;
-  if (fs::file_size(path, ec) != content.size() || ec) return false;
-  std::FILE* in = std::fopen(path.c_str(), "rb");
-  if (!in) return false;
-  std::string existing(content.size(), '\0');
-  bool same =
-      std::fread(existing.data(), 1, existing.size(), in) == existing.size() && existing == content;
-  std::fclose(in);
-  return same;
-}
-
-bool write_file(const fs::path& path, const std::string& content) {
-  std::FILE* out = std::fopen(path.c_str(), "wb");
-  bool ok = out && std::fwrite(content.data(), 1, content.size(), out) == content.size();
-  if (out && std::fclose(out) != 0) ok = false;
-  return ok;
-}
-
 // Puts the staging directory in the target's place in one step. renameat2 exchanges the two
 // atomically, so a program loading the app sees the old build or the new one, never neither;
 // where the file system cannot exchange, the old build is removed first.
@@ -49,10 +29,10 @@ bool swap_in(const fs::path& staging, const fs::path& target, bool target_exists
   std::error_code ec;
   if (target_exists &&
       renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
-    fs::remove_all(staging, ec);  // now the old build
+    remove_tree(staging, ec);  // now the old build
     return true;
   }
-  fs::remove_all(target, ec);
+  remove_tree(target, ec);
   if (ec) {
     *err = "cannot replace " + quoted(target) + ": " + ec.message();
     return false;
@@ -87,28 +67,29 @@ bool write_artifacts(const std::string& out_dir, const std::string& app_name,
       return false;
     }
   }
-  fs::remove_all(staging, ec);
+  remove_tree(staging, ec);
   if (!fs::create_directories(staging, ec) && ec) {
     *err = "cannot create " + quoted(staging) + ": " + ec.message();
     return false;
   }
-  fs::path made;  // the last directory created: monitors come in a row
+  fs::path made;                   // the last directory created: monitors come in a row
+  OpenDirectory staged, previous;  // `made`, and its place in the previous build
   for (const OutputFile& f : files) {
     fs::path path = staging / f.path;
     if (path.parent_path() != made) {
-      fs::create_directories(path.parent_path(), ec);
       made = path.parent_path();
+      fs::create_directories(made, ec);
+      staged = OpenDirectory(made);
+      previous = target_exists ? OpenDirectory((target / f.path).parent_path()) : OpenDirectory();
     }
     // A file the previous build already wrote with the same bytes is linked, not rewritten:
     // rebuilding 10,000 monitors then costs no new inodes or data blocks, and unchanged
     // monitors keep their modification times (an rsync to the robot ships only changes).
-    fs::path previous = target / f.path;
-    if (target_exists && same_content(previous, f.content) &&
-        (fs::create_hard_link(previous, path, ec), !ec))
-      continue;
-    if (!write_file(path, f.content)) {
-      fs::remove_all(staging, ec);
-      *err = "cannot write " + quoted(previous);
+    std::string name = path.filename().string();
+    if (previous.holds(name, f.content) && staged.link_from(previous, name)) continue;
+    if (!staged.write(name, f.content)) {
+      remove_tree(staging, ec);
+      *err = "cannot write " + quoted(target / f.path);
       return false;
     }
   }

@@ -73,5 +73,35 @@ TEST_F(WriteArtifacts, RefusesToReplaceADirectoryThatIsNotABuild) {
   EXPECT_EQ(read(out_ / "app" / "notes.txt"), "mine\n");
 }
 
+TEST_F(WriteArtifacts, AFileThatIsNotRegularInThePreviousBuildIsWrittenNotLinked) {
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}, {"monitors/a.lua", ""}}, &error))
+      << error;
+  fs::path app = out_ / "app";
+  fs::remove(app / "monitors/a.lua");
+  ASSERT_EQ(::mkfifo((app / "monitors/a.lua").c_str(), 0600), 0);  // must not block the build
+  fs::create_directory(app / "monitors/b.lua");
+  ASSERT_TRUE(write_artifacts(
+      out_, "app", {{"app.json", "{}\n"}, {"monitors/a.lua", ""}, {"monitors/b.lua", ""}}, &error))
+      << error;
+  EXPECT_TRUE(fs::is_regular_file(app / "monitors/a.lua"));
+  EXPECT_TRUE(fs::is_regular_file(app / "monitors/b.lua"));
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
+TEST_F(WriteArtifacts, TheOldBuildIsRemovedWithoutFollowingLinks) {
+  fs::path elsewhere = out_ / "elsewhere";
+  fs::create_directories(elsewhere);
+  std::ofstream(elsewhere / "keep.txt") << "keep\n";
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}, {"a/b/c.lua", "c\n"}}, &error))
+      << error;
+  fs::create_directory_symlink(elsewhere, out_ / "app" / "a" / "link");
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}}, &error)) << error;
+  EXPECT_FALSE(fs::exists(out_ / "app" / "a"));
+  EXPECT_EQ(read(elsewhere / "keep.txt"), "keep\n");
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
 }  // namespace
 }  // namespace arbc::codegen
