@@ -3,7 +3,9 @@
 #include <fcntl.h>
 
 #include <cstdio>  // renameat2
+#include <exception>
 #include <filesystem>
+#include <thread>
 
 #include "compiler/codegen/open_directory.h"
 
@@ -12,6 +14,9 @@ namespace arbc::codegen {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Below this many files a second thread costs more than it saves.
+constexpr size_t kFilesPerThread = 512;
 
 // 'path', for messages. (Built by appending: GCC 12 warns falsely about "'" + string.)
 std::string quoted(const fs::path& path) {
@@ -45,6 +50,62 @@ bool swap_in(const fs::path& staging, const fs::path& target, bool target_exists
   return true;
 }
 
+// Puts files [begin, end) into `staging`, each linked from `previous` (the previous build, or
+// empty) when it holds the same bytes. The index of the first file that could not be written,
+// or `end`.
+size_t stage_files(const fs::path& staging, const fs::path& previous_build,
+                   const std::vector<OutputFile>& files, size_t begin, size_t end) {
+  fs::path made;
+  OpenDirectory staged, previous;  // `made`, and its place in the previous build
+  for (size_t i = begin; i < end; ++i) {
+    fs::path path = staging / files[i].path;
+    if (path.parent_path() != made) {
+      made = path.parent_path();
+      staged = OpenDirectory(made);
+      previous = previous_build.empty()
+                     ? OpenDirectory()
+                     : OpenDirectory((previous_build / files[i].path).parent_path());
+    }
+    // A file the previous build already wrote with the same bytes is linked, not rewritten:
+    // rebuilding 10,000 monitors then costs no new inodes or data blocks, and unchanged
+    // monitors keep their modification times (an rsync to the robot ships only changes).
+    std::string name = path.filename().string();
+    if (previous.holds(name, files[i].content) && staged.link_from(previous, name)) continue;
+    if (!staged.write(name, files[i].content)) return i;
+  }
+  return end;
+}
+
+// stage_files for all of `files`, a large build's in two halves on two threads: the kernel's
+// work for each file (open, read and compare the previous one, link or write) is most of the
+// write phase, and only the directory updates of the two halves wait for each other. The first
+// failure in file order, as one thread would find it.
+size_t stage_on_two_threads(const fs::path& staging, const fs::path& previous_build,
+                            const std::vector<OutputFile>& files) {
+  size_t n = files.size();
+  if (n < 2 * kFilesPerThread || std::thread::hardware_concurrency() < 2)
+    return stage_files(staging, previous_build, files, 0, n);
+  size_t second_failed = n;
+  std::exception_ptr failure;
+  std::thread second([&] {
+    try {
+      second_failed = stage_files(staging, previous_build, files, n / 2, n);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  });
+  size_t first_failed;
+  try {
+    first_failed = stage_files(staging, previous_build, files, 0, n / 2);
+  } catch (...) {
+    second.join();
+    throw;
+  }
+  second.join();
+  if (failure) std::rethrow_exception(failure);
+  return first_failed < n / 2 ? first_failed : second_failed;
+}
+
 }  // namespace
 
 bool write_artifacts(const std::string& out_dir, const std::string& app_name,
@@ -72,26 +133,18 @@ bool write_artifacts(const std::string& out_dir, const std::string& app_name,
     *err = "cannot create " + quoted(staging) + ": " + ec.message();
     return false;
   }
-  fs::path made;                   // the last directory created: monitors come in a row
-  OpenDirectory staged, previous;  // `made`, and its place in the previous build
+  // Every directory first, so that the two threads below only add files.
+  fs::path made;  // the last directory created: monitors come in a row
   for (const OutputFile& f : files) {
-    fs::path path = staging / f.path;
-    if (path.parent_path() != made) {
-      made = path.parent_path();
-      fs::create_directories(made, ec);
-      staged = OpenDirectory(made);
-      previous = target_exists ? OpenDirectory((target / f.path).parent_path()) : OpenDirectory();
-    }
-    // A file the previous build already wrote with the same bytes is linked, not rewritten:
-    // rebuilding 10,000 monitors then costs no new inodes or data blocks, and unchanged
-    // monitors keep their modification times (an rsync to the robot ships only changes).
-    std::string name = path.filename().string();
-    if (previous.holds(name, f.content) && staged.link_from(previous, name)) continue;
-    if (!staged.write(name, f.content)) {
-      remove_tree(staging, ec);
-      *err = "cannot write " + quoted(target / f.path);
-      return false;
-    }
+    fs::path dir = (staging / f.path).parent_path();
+    if (dir != made) fs::create_directories(dir, ec);
+    made = std::move(dir);
+  }
+  size_t failed = stage_on_two_threads(staging, target_exists ? target : fs::path(), files);
+  if (failed < files.size()) {
+    remove_tree(staging, ec);
+    *err = "cannot write " + quoted(target / files[failed].path);
+    return false;
   }
   return swap_in(staging, target, target_exists, err);
 }

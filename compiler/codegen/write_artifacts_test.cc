@@ -103,5 +103,31 @@ TEST_F(WriteArtifacts, TheOldBuildIsRemovedWithoutFollowingLinks) {
   EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
 }
 
+TEST_F(WriteArtifacts, ALargeBuildIsWrittenOnTwoThreadsWithTheSameResult) {
+  auto build = [](int generation) {
+    std::vector<OutputFile> files = {{"app.json", "{}\n"}};
+    for (int i = 0; i < 1500; ++i) {
+      std::string content = "-- monitor " + std::to_string(i) + "\n";
+      if (i % 3 == 0) content += "-- build " + std::to_string(generation) + "\n";
+      files.push_back({"monitors/m" + std::to_string(i) + ".lua", content});
+    }
+    return files;
+  };
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", build(1), &error)) << error;
+  fs::path app = out_ / "app";
+  std::vector<ino_t> before;
+  for (int i = 0; i < 1500; ++i)
+    before.push_back(inode(app / ("monitors/m" + std::to_string(i) + ".lua")));
+  std::vector<OutputFile> second = build(2);
+  ASSERT_TRUE(write_artifacts(out_, "app", second, &error)) << error;
+  for (int i = 0; i < 1500; ++i) {
+    fs::path f = app / ("monitors/m" + std::to_string(i) + ".lua");
+    EXPECT_EQ(read(f), second[i + 1].content) << f;
+    EXPECT_EQ(inode(f) == before[i], i % 3 != 0) << f;  // unchanged files are linked
+  }
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
 }  // namespace
 }  // namespace arbc::codegen
