@@ -12,6 +12,7 @@
 
 #include "cli/build_summary.h"
 #include "cli/commands.h"
+#include "cli/left_at_exit.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
@@ -162,9 +163,11 @@ int build_command(std::span<char*> args) {
     std::vector<std::string> paths;
     for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);
     std::fputs(yarp_build_summary(lowered.app, spec, a.out_dir, verified, paths).c_str(), stdout);
-    return kExitOk;
+  } else {
+    std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
   }
-  std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
+  leave_at_exit(generated);
+  leave_at_exit(compiled);
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/left_at_exit.h"
 #include "compiler/frontend/frontend.h"
 #include "core/check_ids.h"
 
@@ -86,6 +87,7 @@ int check_command(std::span<char*> args) {
       std::string text = frontend::render_diagnostics(result.diagnostics, &sources);
       std::fputs(text.c_str(), stderr);
     }
+    if (&path == &specs.back()) leave_at_exit(result);
   }
   if (format == "json") std::cout << report.dump(2) << "\n";
   return all_ok ? kExitOk : kExitBadInput;

@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/heap_reserve.h"
+#include "cli/left_at_exit.h"
 
 namespace {
 
@@ -48,6 +49,8 @@ int main(int argc, char** argv) {
   // until the pages are touched).
   bool will_prove = command == "verify" || command == "build";
   reserve_heap_for_spec(input_file_bytes(args), will_prove);
+  // The process ends with these commands: their large results need not be freed.
+  if (command == "check" || command == "build") process_ends_after_command();
   try {
     if (command == "check") return check_command(args);
     if (command == "verify") return verify_command(args);

@@ -73,5 +73,61 @@ TEST_F(WriteArtifacts, RefusesToReplaceADirectoryThatIsNotABuild) {
   EXPECT_EQ(read(out_ / "app" / "notes.txt"), "mine\n");
 }
 
+TEST_F(WriteArtifacts, AFileThatIsNotRegularInThePreviousBuildIsWrittenNotLinked) {
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}, {"monitors/a.lua", ""}}, &error))
+      << error;
+  fs::path app = out_ / "app";
+  fs::remove(app / "monitors/a.lua");
+  ASSERT_EQ(::mkfifo((app / "monitors/a.lua").c_str(), 0600), 0);  // must not block the build
+  fs::create_directory(app / "monitors/b.lua");
+  ASSERT_TRUE(write_artifacts(
+      out_, "app", {{"app.json", "{}\n"}, {"monitors/a.lua", ""}, {"monitors/b.lua", ""}}, &error))
+      << error;
+  EXPECT_TRUE(fs::is_regular_file(app / "monitors/a.lua"));
+  EXPECT_TRUE(fs::is_regular_file(app / "monitors/b.lua"));
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
+TEST_F(WriteArtifacts, TheOldBuildIsRemovedWithoutFollowingLinks) {
+  fs::path elsewhere = out_ / "elsewhere";
+  fs::create_directories(elsewhere);
+  std::ofstream(elsewhere / "keep.txt") << "keep\n";
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}, {"a/b/c.lua", "c\n"}}, &error))
+      << error;
+  fs::create_directory_symlink(elsewhere, out_ / "app" / "a" / "link");
+  ASSERT_TRUE(write_artifacts(out_, "app", {{"app.json", "{}\n"}}, &error)) << error;
+  EXPECT_FALSE(fs::exists(out_ / "app" / "a"));
+  EXPECT_EQ(read(elsewhere / "keep.txt"), "keep\n");
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
+TEST_F(WriteArtifacts, ALargeBuildIsWrittenOnTwoThreadsWithTheSameResult) {
+  auto build = [](int generation) {
+    std::vector<OutputFile> files = {{"app.json", "{}\n"}};
+    for (int i = 0; i < 1500; ++i) {
+      std::string content = "-- monitor " + std::to_string(i) + "\n";
+      if (i % 3 == 0) content += "-- build " + std::to_string(generation) + "\n";
+      files.push_back({"monitors/m" + std::to_string(i) + ".lua", content});
+    }
+    return files;
+  };
+  std::string error;
+  ASSERT_TRUE(write_artifacts(out_, "app", build(1), &error)) << error;
+  fs::path app = out_ / "app";
+  std::vector<ino_t> before;
+  for (int i = 0; i < 1500; ++i)
+    before.push_back(inode(app / ("monitors/m" + std::to_string(i) + ".lua")));
+  std::vector<OutputFile> second = build(2);
+  ASSERT_TRUE(write_artifacts(out_, "app", second, &error)) << error;
+  for (int i = 0; i < 1500; ++i) {
+    fs::path f = app / ("monitors/m" + std::to_string(i) + ".lua");
+    EXPECT_EQ(read(f), second[i + 1].content) << f;
+    EXPECT_EQ(inode(f) == before[i], i % 3 != 0) << f;  // unchanged files are linked
+  }
+  EXPECT_FALSE(fs::exists(out_ / ".app.arbc-tmp"));
+}
+
 }  // namespace
 }  // namespace arbc::codegen

@@ -5,11 +5,13 @@
 #include <antlr4-runtime.h>
 
 #include <set>
+#include <thread>
 
 #include "compiler/frontend/ast_builder.h"
-#include "compiler/frontend/compact_token.h"
+#include "compiler/frontend/lexed_text.h"
+#include "compiler/frontend/parse_declarations.h"
+#include "compiler/frontend/parse_halves.h"
 #include "compiler/frontend/syntax_errors.h"
-#include "compiler/frontend/thread_dfa.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/utf8.h"
 
@@ -72,37 +74,6 @@ void report_syntax_errors(const std::vector<antlr4::Token*>& tokens, const std::
   }
 }
 
-// ANTLR's input stream decodes UTF-8 with std::wstring_convert, which is slow on large specs.
-// The text is already validated, so decode it directly into the stream's UTF-32 buffer.
-class Utf8InputStream : public antlr4::ANTLRInputStream {
- public:
-  explicit Utf8InputStream(std::string_view utf8) {
-    _data.clear();
-    _data.reserve(utf8.size());
-    for (size_t i = 0; i < utf8.size();) {
-      unsigned char b = static_cast<unsigned char>(utf8[i]);
-      size_t len = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
-      char32_t code = len == 1 ? b : len == 2 ? (b & 0x1F) : len == 3 ? (b & 0x0F) : (b & 0x07);
-      for (size_t k = 1; k < len && i + k < utf8.size(); ++k)
-        code = (code << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3F);
-      _data.push_back(code);
-      i += len;
-    }
-    p = 0;
-  }
-};
-
-// A token stream whose buffer is reserved for `expected` tokens up front. Growing it by doubling
-// touches fresh memory at every step, and fresh memory costs a page fault (docs/benchmarks.md);
-// a reservation only touches what the lexer fills.
-class ReservedTokenStream : public antlr4::CommonTokenStream {
- public:
-  ReservedTokenStream(antlr4::TokenSource* source, size_t expected)
-      : antlr4::CommonTokenStream(source) {
-    _tokens.reserve(expected);
-  }
-};
-
 Diagnostic file_error(const std::string& file, int line, int column, std::string message,
                       std::string id) {
   Diagnostic d;
@@ -116,50 +87,15 @@ Diagnostic file_error(const std::string& file, int line, int column, std::string
   return d;
 }
 
-// The spec parser, predicting over this thread's own DFA cache (thread_dfa.h): use it on one
-// thread.
-class ThreadDfaParser : public ArbcParser {
- public:
-  explicit ThreadDfaParser(antlr4::TokenStream* input) : ArbcParser(input) {
-    delete _interpreter;  // the generated constructor's, over the process-wide cache
-    _interpreter = make_thread_parser_simulator(this).release();  // deleted by ~ArbcParser
-  }
-};
-
-// One declaration at a time: SLL prediction first (fast), full LL if SLL fails, and each
-// declaration's parse tree is freed once its AST is built, so memory stays proportional to
-// the AST rather than to ANTLR's much larger trees. False at the first declaration that does
-// not parse (the caller then reports syntax errors with report_syntax_errors).
-bool parse_declarations(antlr4::CommonTokenStream& stream, AstBuilder& builder) {
-  ThreadDfaParser parser(&stream);
-  parser.removeErrorListeners();
-  parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
-  auto* simulator = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
-  while (stream.LA(1) != antlr4::Token::EOF) {
-    size_t start = stream.index();
-    ArbcParser::DeclContext* decl = nullptr;
-    for (auto mode : {antlr4::atn::PredictionMode::SLL, antlr4::atn::PredictionMode::LL}) {
-      simulator->setPredictionMode(mode);
-      try {
-        decl = parser.decl();
-        break;
-      } catch (const antlr4::ParseCancellationException&) {
-        parser.reset();
-        stream.seek(start);
-      }
-    }
-    if (!decl) return false;
-    builder.add_declaration(decl);
-    size_t next = stream.index();
-    parser.reset();  // frees this declaration's parse tree; also rewinds the stream
-    stream.seek(next);
-  }
-  return true;
+// Placeholders for over-deep expressions would only cause follow-on type errors.
+void without_deep_placeholders(ParseResult& result) {
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.id == "nesting-too-deep") result.spec.reset();
 }
 
 }  // namespace
 
-ParseResult parse_spec(std::string_view text, const std::string& file) {
+ParseResult parse_spec(std::string_view text, const std::string& file, size_t two_thread_bytes) {
   ParseResult result;
   if (auto bad = find_invalid_utf8(text)) {
     char byte[8];
@@ -172,20 +108,18 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
     return result;
   }
 
-  Utf8InputStream input(text);
-  CompactTokenLexer lexer(&input);
-  lexer.removeErrorListeners();  // ERROR_CHAR catches everything the lexer cannot match
-  // At most one token per byte, plus EOF; specs average one per four to five bytes.
-  ReservedTokenStream stream(&lexer, text.size() / 2 + 16);
-  stream.fill();
-  std::vector<antlr4::Token*> tokens;
-  tokens.reserve(stream.size());
-  // stream.get(i), not getTokens(): that returns a fresh copy of the whole buffer.
-  for (size_t i = 0; i < stream.size(); ++i) {
-    antlr4::Token* t = stream.get(i);
-    if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) tokens.push_back(t);
+  std::u32string code_points = decode_utf8(text);
+  if (text.size() >= two_thread_bytes && std::thread::hardware_concurrency() >= 2) {
+    if (auto split = find_split(text)) {
+      if (auto halves = parse_halves(text, code_points, file, *split)) {
+        without_deep_placeholders(*halves);
+        return std::move(*halves);
+      }
+    }
   }
 
+  LexedText lexed(code_points, 0, code_points.size(), 1, text.size());
+  const std::vector<antlr4::Token*>& tokens = lexed.tokens;
   check_lexical(tokens, file, result.diagnostics);
   if (!result.diagnostics.empty()) return result;
   if (tokens.size() == 1) {  // only EOF
@@ -194,10 +128,10 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
                    "empty-spec"));
     return result;
   }
-  if (!check_nesting(tokens, lexer.getVocabulary(), file, result.diagnostics)) return result;
+  if (!check_nesting(tokens, lexed.lexer.getVocabulary(), file, result.diagnostics)) return result;
 
   AstBuilder builder(file, text, result.diagnostics);
-  bool syntax_ok = parse_declarations(stream, builder);
+  bool syntax_ok = parse_declarations(lexed.stream, builder);
   if (!syntax_ok) {
     report_syntax_errors(tokens, file, result.diagnostics);
     if (result.diagnostics.empty()) {  // cannot happen, but never stay silent
@@ -207,9 +141,7 @@ ParseResult parse_spec(std::string_view text, const std::string& file) {
     return result;
   }
   result.spec = builder.finish();
-  // Placeholders for over-deep expressions would only cause follow-on type errors.
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.id == "nesting-too-deep") result.spec.reset();
+  without_deep_placeholders(result);
   return result;
 }
 
