@@ -13,6 +13,7 @@
 #include "cli/build_summary.h"
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
+#include "cli/proof_record.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
@@ -113,6 +114,18 @@ std::optional<int> configure_target(codegen::Target& target, const std::string& 
   return std::nullopt;
 }
 
+// A proved app.json gets its proof recorded beside it (cli/proof_record.h), so that `arbc run`
+// of the directory need not prove the same bytes again. Targets without an app.json (yarp) run
+// elsewhere and get none.
+void record_proof(std::vector<codegen::OutputFile>& files, const std::string& summary) {
+  for (const codegen::OutputFile& f : files) {
+    if (f.path != "app.json") continue;
+    std::string record = proof_record(f.content, summary);
+    if (!record.empty()) files.push_back({kProofRecordFile, std::move(record)});
+    return;
+  }
+}
+
 }  // namespace
 
 int build_command(std::span<char*> args) {
@@ -153,6 +166,7 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
     return kExitRuntimeFailure;
   }
+  if (!a.no_verify) record_proof(generated.files, verified);
   std::string error;
   if (!codegen::write_artifacts(a.out_dir, lowered.app.name, generated.files, &error)) {
     std::fprintf(stderr, "arbc build: %s\n", error.c_str());

@@ -18,12 +18,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/proof_record.h"
 #include "cli/report/report_file.h"
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
@@ -110,7 +112,15 @@ void print_errors(const std::string& lines) {
   for (std::string line; std::getline(in, line);) print_errors(std::vector<std::string>{line});
 }
 
-// Proves the app before it runs, as `arbc build` does, and sets *proof to what the output and
+std::string app_json_bytes(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / "app.json", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Proves the app before it runs, as `arbc build` does (or finds that the build's proof of this
+// very app.json holds, cli/proof_record.h), and sets *proof to what the output and
 // the report say about it (a spec was proved when it was built, and the build's summary said
 // so). Returns an exit code: kExitOk to run, else the proof's (1 refuted or unknown, 2 a
 // malformed model).
@@ -120,6 +130,8 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
     *proof = "not verified (--no-verify)";
   } else if (built_from_spec) {
     *proof = verified_summary(app.arbitrated_ports.size());
+  } else if (std::optional<std::string> recorded = recorded_proof(dir, app_json_bytes(dir))) {
+    *proof = *recorded + " (by arbc build, for this very app.json)";
   } else {
     SourceCache sources;
     VerifyGate gate = verify_before_writing(

@@ -26,6 +26,14 @@ python3 - "$scratch/a/$app/app.json" docs/app.schema.json <<'PY' || { echo "FAIL
 import json, sys, jsonschema
 jsonschema.Draft202012Validator(json.load(open(sys.argv[2]))).validate(json.load(open(sys.argv[1])))
 PY
+# The proof is recorded for app.json's bytes (cli/proof_record.h); the record names the arbc
+# binary, so it is checked here and left out of the golden.
+record=$scratch/a/$app/proof.json
+[ -f "$record" ] || { echo "FAIL: no proof.json beside app.json"; exit 1; }
+digest=$(sha256sum "$scratch/a/$app/app.json" | cut -d' ' -f1)
+grep -q "\"app_json_sha256\": \"$digest\"" "$record" ||
+  { echo "FAIL: proof.json is not about this app.json"; cat "$record"; exit 1; }
+rm "$record"
 # The summary is part of the golden too (minus the output directory).
 sed "s|$scratch/a|OUT|" "$scratch/summary.txt" > "$scratch/a/$app/summary.txt"
 if [ "${ARBC_UPDATE_GOLDEN:-0}" = 1 ]; then

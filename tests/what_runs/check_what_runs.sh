@@ -24,6 +24,22 @@ app=$scratch/ok/search_and_track
 expect proved-dir-runs 0 "verified: 1 arbitrated port proved exclusive" "$arbc" run "$app" "${run[@]}"
 expect proved-dir-verifies 0 "proved" "$arbc" verify "$app"
 
+# The build recorded its proof (proof.json), and `arbc run` of exactly that app.json trusts it
+# rather than proving the same bytes again; any change to app.json, or another arbc binary,
+# and run proves again.
+reused="(by arbc build, for this very app.json)"
+expect proved-dir-reuses-build-proof 0 "$reused" "$arbc" run "$app" "${run[@]}"
+cp -r "$app" "$scratch/tampered"
+sed -i 's|"constraint": "not e_face_detected"|"constraint": "true"|' "$scratch/tampered/app.json"
+grep -q '"constraint": "true"' "$scratch/tampered/app.json" || fail "the app.json edit did not apply"
+expect app-json-edited-after-build-is-proved-again 1 "arbc run: verification refuted; nothing was run" \
+  "$arbc" run "$scratch/tampered" "${run[@]}"
+cp -r "$app" "$scratch/other_arbc"
+sed -i 's|"arbc_build_id": "[0-9a-f]*"|"arbc_build_id": "0000"|' "$scratch/other_arbc/proof.json"
+out=$("$arbc" run "$scratch/other_arbc" "${run[@]}" 2>&1) || fail "other-arbc: exit $?"$'\n'"$out"
+[[ $out == *"verified: 1 arbitrated port proved exclusive"* && $out != *"$reused"* ]] ||
+  fail "other-arbc: a proof recorded by another arbc was trusted or nothing was proved"$'\n'"$out"
+
 # A monitor edited after the build (here: it tries to select every message) is refused.
 cp -r "$app" "$scratch/edited"
 monitor=$scratch/edited/monitors/HeadControl.gaze__search.lua
@@ -59,6 +75,7 @@ sed 's|  search: from LookAround.gaze when not e_face_detected;|  search: from L
 "$arbc" build "$scratch/refuted.spec" -o "$scratch/refuted" --no-verify > /dev/null ||
   fail "unverified build"
 app=$scratch/refuted/search_and_track
+[ ! -e "$app/proof.json" ] || fail "a build with --no-verify recorded a proof"
 expect refuted-run 1 "arbc run: verification refuted; nothing was run" "$arbc" run "$app" "${run[@]}"
 expect refuted-run-no-verify-output 3 "not verified (--no-verify)" \
   "$arbc" run "$app" "${run[@]}" --no-verify --report "$scratch/report.html"
