@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runtime figures (issue 5): constraint_decision (baseline: the YARP way), monitored_delivery,
-# bare_delivery, monitor_memory. Medians over repetitions of Google Benchmark runs; times are
+# Runtime figures (issue 5): constraint_decision (baseline: the YARP way), monitored_delivery
+# (baseline: lua_floor_tables, the Lua work alone), bare_delivery, monitor_memory, and
+# lua_floor_userdata (the Lua work were a message a userdata; issue 21). Medians over repetitions of Google Benchmark runs; times are
 # CPU time per operation, which the other jobs on the shared 2-core machine disturb far less
 # than wall time (wall-time medians are printed beside them as "wall").
 set -euo pipefail
@@ -24,8 +25,11 @@ def line(**kv): print(json.dumps(kv))
 decision, yarp = cpu("BM_ConstraintDecision"), cpu("BM_YarpDecision")
 line(name="constraint_decision", value=round(decision, 2), unit="ns", baseline=round(yarp, 1),
      ratio=round(yarp / decision, 1), wall=round(wall("BM_ConstraintDecision"), 2))
-line(name="monitored_delivery", value=round(cpu("BM_MonitoredDelivery"), 1), unit="ns",
-     wall=round(wall("BM_MonitoredDelivery"), 1))
+monitored, floor = cpu("BM_MonitoredDelivery"), cpu("BM_LuaFloorTables")
+line(name="monitored_delivery", value=round(monitored, 1), unit="ns", baseline=round(floor, 1),
+     ratio=round(monitored / floor, 2), wall=round(wall("BM_MonitoredDelivery"), 1))
+line(name="lua_floor_userdata", value=round(cpu("BM_LuaFloorUserdata"), 1), unit="ns",
+     baseline=round(floor, 1), ratio=round(cpu("BM_LuaFloorUserdata") / floor, 2))
 line(name="bare_delivery", value=round(cpu("BM_BareDelivery"), 1), unit="ns",
      wall=round(wall("BM_BareDelivery"), 1))
 memory = median["BM_MonitorMemory/iterations:1000"]["bytes"]

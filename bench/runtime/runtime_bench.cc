@@ -4,12 +4,19 @@
 //                        constraint text, luaL_loadstring + pcall, every message (baseline)
 //   monitored_delivery   publish -> queue -> Lua accept + update on a small record -> deliver
 //   bare_delivery        the same path with no monitor
+//   lua_floor_tables     baseline of monitored_delivery: only the Lua work of one message, in a
+//                        plain lua_State (no runtime, no sandbox): the record pushed as tables,
+//                        accept and update called through lua_pcall, the vec3 read back
+//   lua_floor_userdata   the same with the record as a userdata whose fields are read through
+//                        __index: what another message form would cost (not what runs)
 //   monitor_memory       bytes of one monitor's lua_State (reported as a counter)
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <lua.hpp>
+#include <string_view>
 
 #include "runtime/event_container.h"
 #include "runtime/runtime.h"
@@ -157,6 +164,141 @@ void BM_MonitoredDelivery(benchmark::State& state) { delivery(state, true); }
 void BM_BareDelivery(benchmark::State& state) { delivery(state, false); }
 BENCHMARK(BM_MonitoredDelivery);
 BENCHMARK(BM_BareDelivery);
+
+// --- the Lua floor under monitored_delivery ---------------------------------------------
+// What the Lua side of one monitored message costs with nothing of arbc around it: the same
+// script, the same record, two protected calls. A plain state with Lua's own allocator and no
+// hook, so the ratio monitored_delivery / lua_floor_tables is what the runtime adds.
+
+struct FaceRecord {
+  double pos[3];
+  double certainty;
+};
+
+lua_State* floor_state() {
+  lua_State* L = luaL_newstate();
+  luaL_openlibs(L);
+  lua_newtable(L);
+  lua_setglobal(L, "PortMonitor");
+  if (luaL_dostring(L, kMonitor) != LUA_OK) {
+    lua_close(L);
+    return nullptr;
+  }
+  return L;
+}
+
+void push_face_tables(lua_State* L, const FaceRecord& m) {
+  lua_createtable(L, 0, 2);
+  lua_createtable(L, 0, 3);
+  const char* names[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    lua_pushnumber(L, m.pos[k]);
+    lua_setfield(L, -2, names[k]);
+  }
+  lua_setfield(L, -2, "pos");
+  lua_pushnumber(L, m.certainty);
+  lua_setfield(L, -2, "certainty");
+}
+
+double read_vec3_table(lua_State* L) {
+  double sum = 0;
+  for (const char* name : {"x", "y", "z"}) {
+    lua_getfield(L, -1, name);
+    sum += lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  return sum;
+}
+
+int vec3_view_index(lua_State* L) {
+  const auto* v = static_cast<const double*>(lua_touserdata(L, 1));
+  size_t n = 0;
+  const char* key = lua_tolstring(L, 2, &n);
+  if (n == 1 && key[0] >= 'x' && key[0] <= 'z') {
+    lua_pushnumber(L, v[key[0] - 'x']);
+  } else {
+    lua_pushnil(L);
+  }
+  return 1;
+}
+
+int face_view_index(lua_State* L) {
+  const auto* m = static_cast<const FaceRecord*>(lua_touserdata(L, 1));
+  std::string_view key = lua_tostring(L, 2);
+  if (key == "certainty") {
+    lua_pushnumber(L, m->certainty);
+  } else if (key == "pos") {
+    auto* v = static_cast<double*>(lua_newuserdatauv(L, sizeof m->pos, 0));
+    std::copy(m->pos, m->pos + 3, v);
+    luaL_setmetatable(L, "arbc_bench_vec3");
+  } else {
+    lua_pushnil(L);
+  }
+  return 1;
+}
+
+void push_face_userdata(lua_State* L, const FaceRecord& m) {
+  *static_cast<FaceRecord*>(lua_newuserdatauv(L, sizeof m, 0)) = m;
+  luaL_setmetatable(L, "arbc_bench_face");
+}
+
+double read_vec3_userdata(lua_State* L) {
+  const auto* v = static_cast<const double*>(luaL_testudata(L, -1, "arbc_bench_vec3"));
+  return v ? v[0] + v[1] + v[2] : 0;
+}
+
+// PortMonitor[callback](staged message) under lua_pcall, as the runtime calls it.
+bool call_with_staged(lua_State* L, const char* callback, int staged) {
+  lua_getglobal(L, "PortMonitor");
+  lua_getfield(L, -1, callback);
+  lua_remove(L, -2);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, staged);
+  return lua_pcall(L, 1, 1, 0) == LUA_OK;
+}
+
+template <class Push, class Read>
+void lua_floor(benchmark::State& state, Push push, Read read) {
+  lua_State* L = floor_state();
+  if (!L) {
+    state.SkipWithError("the monitor script did not load");
+    return;
+  }
+  luaL_newmetatable(L, "arbc_bench_vec3");
+  lua_pushcfunction(L, vec3_view_index);
+  lua_setfield(L, -2, "__index");
+  luaL_newmetatable(L, "arbc_bench_face");
+  lua_pushcfunction(L, face_view_index);
+  lua_setfield(L, -2, "__index");
+  lua_settop(L, 0);
+  lua_pushboolean(L, false);
+  int staged = luaL_ref(L, LUA_REGISTRYINDEX);
+  FaceRecord msg{{0.1, 0.2, 0.9}, 0.93};
+  double sum = 0;
+  uint64_t delivered = 0;
+  for (auto _ : state) {
+    push(L, msg);
+    lua_rawseti(L, LUA_REGISTRYINDEX, staged);
+    bool accepted = call_with_staged(L, "accept", staged) && lua_toboolean(L, -1);
+    lua_settop(L, 0);
+    if (accepted && call_with_staged(L, "update", staged)) {
+      sum += read(L);
+      ++delivered;
+    }
+    lua_settop(L, 0);
+  }
+  benchmark::DoNotOptimize(sum);
+  state.counters["delivered"] = static_cast<double>(delivered);
+  lua_close(L);
+}
+
+void BM_LuaFloorTables(benchmark::State& state) {
+  lua_floor(state, push_face_tables, read_vec3_table);
+}
+void BM_LuaFloorUserdata(benchmark::State& state) {
+  lua_floor(state, push_face_userdata, read_vec3_userdata);
+}
+BENCHMARK(BM_LuaFloorTables);
+BENCHMARK(BM_LuaFloorUserdata);
 
 void BM_MonitorMemory(benchmark::State& state) {
   Registry registry;
