@@ -37,11 +37,11 @@ std::string_view without_bom(std::string_view text) {
 }  // namespace
 
 CheckResult check_text(std::string_view text, const std::string& file,
-                       const std::string& script_dir) {
+                       const std::string& script_dir, size_t two_thread_bytes) {
   text = without_bom(text);
   CheckResult result;
   result.source = std::string(text);
-  ParseResult parsed = parse_spec(text, file);
+  ParseResult parsed = parse_spec(text, file, two_thread_bytes);
   result.diagnostics = std::move(parsed.diagnostics);
   if (parsed.spec && parsed.spec->tests_for) {
     parsed.spec = merge_with_app(std::move(parsed.spec), file, result.diagnostics, &result.app_file,

@@ -7,12 +7,14 @@
 // Errors are values: nothing here throws on bad input.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "compiler/frontend/ast.h"
+#include "compiler/frontend/parse.h"
 #include "core/diagnostic.h"
 
 namespace arbc::frontend {
@@ -34,8 +36,11 @@ struct CheckResult {
 // Parses and checks spec text; `file` names it in diagnostics. A tests file is checked with
 // the app it names, read from disk. `script_dir` as for check_spec
 // (sema.h): where `script` paths are relative to, by default the folder of `file` on disk.
+// `two_thread_bytes` as for parse_spec (parse.h); the result does not depend on it, which the
+// tests and the fuzz target check by giving 0 (two threads wherever the text can be cut).
 CheckResult check_text(std::string_view text, const std::string& file,
-                       const std::string& script_dir = "");
+                       const std::string& script_dir = "",
+                       size_t two_thread_bytes = kTwoThreadParseBytes);
 
 // Reads and checks a spec file. A missing file, a directory, an unreadable or oversized file
 // (over kMaxSpecBytes) is a diagnostic with id "io".
