@@ -5,22 +5,14 @@
 //  - a spec with no AST has an error that says why; a result that is "ok" has an AST;
 //  - every diagnostic has a message and a check id and points into the text (line 1 to the
 //    line after the last, column 0 or more) or at the whole file (line 0, column 0);
-//  - checking the same text twice renders the same diagnostics (no hidden state);
-//  - the two-thread parse (compiler/frontend/parse_halves.h) changes nothing: the text parsed
-//    in two halves wherever it can be cut (whatever its size: fuzz inputs are far below the
-//    threshold at which arbc does that) renders the same diagnostics and, when it checks,
-//    lowers to the same app.json and the same monitors.
+//  - checking the same text twice renders the same diagnostics (no hidden state).
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <memory>
 #include <string>
 #include <string_view>
 
-#include "compiler/codegen/monitor_writer.h"
 #include "compiler/frontend/frontend.h"
-#include "compiler/lower/lower.h"
-#include "core/app_json.h"
 
 namespace {
 
@@ -40,28 +32,11 @@ std::string render(const arbc::frontend::CheckResult& result) {
   return arbc::frontend::render_diagnostics(result.diagnostics, &sources);
 }
 
-// What a spec that checks compiles to: app.json and every monitor's Lua, or lowering's
-// diagnostics; empty for a spec that does not check.
-std::string compiled(arbc::frontend::CheckResult result, std::string_view text) {
-  if (!result.ok() || !result.spec) return "";
-  arbc::lower::LowerResult lowered =
-      arbc::lower::lower_spec(std::shared_ptr<const arbc::ast::Spec>(std::move(result.spec)));
-  if (!lowered.ok) return arbc::frontend::render_diagnostics(lowered.diagnostics, nullptr);
-  std::string out = arbc::model::to_app_json(lowered.lowered->app);
-  arbc::codegen::SpecLines lines(text);
-  for (const auto& plan : lowered.lowered->monitors)
-    out += arbc::codegen::write_monitor(*lowered.lowered, plan, lines).text;
-  return out;
-}
-
-constexpr size_t kOneThread = SIZE_MAX;
-constexpr size_t kTwoThreadsWhereverItCuts = 0;
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);
-  arbc::frontend::CheckResult result = arbc::frontend::check_text(text, kFile, "", kOneThread);
+  arbc::frontend::CheckResult result = arbc::frontend::check_text(text, kFile);
   if (!result.spec && result.ok()) std::abort();
   const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
   for (const arbc::Diagnostic& d : result.diagnostics) {
@@ -70,10 +45,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string first = render(result);
   if (!result.diagnostics.empty() && first.empty()) std::abort();
   if (render(arbc::frontend::check_text(text, kFile)) != first) std::abort();
-  arbc::frontend::CheckResult halves =
-      arbc::frontend::check_text(text, kFile, "", kTwoThreadsWhereverItCuts);
-  if (render(halves) != first) std::abort();
-  if (!halves.spec != !result.spec) std::abort();
-  if (compiled(std::move(halves), text) != compiled(std::move(result), text)) std::abort();
   return 0;
 }
