@@ -17,16 +17,16 @@ class BusyMarker {
   // fields change and even after; the fields are stored with release, so a reader that sees a
   // new field also sees the odd serial when it checks again.
   void enter(const char* kind, const std::string* name, const char* callback) {
-    begin_write();
+    uint64_t serial = begin_write();
     kind_.store(kind, std::memory_order_release);
     name_.store(name, std::memory_order_release);
     callback_.store(callback, std::memory_order_release);
-    end_write();
+    end_write(serial);
   }
   void leave() {
-    begin_write();
+    uint64_t serial = begin_write();
     kind_.store(nullptr, std::memory_order_release);
-    end_write();
+    end_write(serial);
   }
 
   struct Snapshot {
@@ -52,12 +52,15 @@ class BusyMarker {
   }
 
  private:
-  void begin_write() {
-    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  // Only the writer changes the serial, so it reads it once per write and carries it in a
+  // register: loading it again right after storing it chained each marking through the
+  // store-to-load forwarding latency, about 20 cycles per callback.
+  uint64_t begin_write() {
+    uint64_t odd = serial_.load(std::memory_order_relaxed) + 1;
+    serial_.store(odd, std::memory_order_relaxed);
+    return odd;
   }
-  void end_write() {
-    serial_.store(serial_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
-  }
+  void end_write(uint64_t odd) { serial_.store(odd + 1, std::memory_order_release); }
 
   std::atomic<uint64_t> serial_{0};
   std::atomic<const char*> kind_{nullptr};

@@ -8,6 +8,10 @@ Executor::TaskId SimulatedExecutor::post(double at, Task task) {
   return queue_.push(std::max(at, now_), std::move(task));
 }
 
+void SimulatedExecutor::post_plain(double at, void (*fn)(void*), void* argument) {
+  queue_.push_plain(std::max(at, now_), fn, argument);
+}
+
 void SimulatedExecutor::run(double until) {
   stopped_ = false;
   while (!stopped_ && !interrupted() && !queue_.empty() && queue_.next_time() <= until) {
@@ -27,6 +31,12 @@ Executor::TaskId RealtimeExecutor::post(double at, Task task) {
   TaskId id = queue_.push(at, std::move(task));
   wake_.notify_all();
   return id;
+}
+
+void RealtimeExecutor::post_plain(double at, void (*fn)(void*), void* argument) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  queue_.push_plain(at, fn, argument);
+  wake_.notify_all();
 }
 
 void RealtimeExecutor::cancel(TaskId id) {

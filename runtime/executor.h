@@ -25,6 +25,9 @@ class Executor {
   virtual double now() const = 0;
   // Runs fn at time `at` (not before now()). Returns an id for cancel().
   virtual TaskId post(double at, Task task) = 0;
+  // The same for a plain function that is never cancelled (no id): the cheaper way, for the
+  // task the message path posts per message.
+  virtual void post_plain(double at, void (*fn)(void*), void* argument) = 0;
   virtual void cancel(TaskId id) = 0;
   // Runs tasks until time `until` is reached or stop() is called; now() is then `until`
   // (or the time of the stop).
@@ -45,6 +48,7 @@ class SimulatedExecutor : public Executor {
  public:
   double now() const override { return now_; }
   TaskId post(double at, Task task) override;
+  void post_plain(double at, void (*fn)(void*), void* argument) override;
   void cancel(TaskId id) override { queue_.cancel(id); }
   void run(double until) override;
   void stop() override { stopped_ = true; }
@@ -65,6 +69,7 @@ class RealtimeExecutor : public Executor {
       : start_(std::chrono::steady_clock::now()), scale_(scale) {}
   double now() const override;
   TaskId post(double at, Task task) override;
+  void post_plain(double at, void (*fn)(void*), void* argument) override;
   void cancel(TaskId id) override;
   void run(double until) override;
   void stop() override;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <deque>
 #include <map>
 #include <random>
 #include <vector>
@@ -30,13 +31,24 @@ TEST(ExecutorTest, SimulatedRunsInTimeThenPostingOrder) {
   EXPECT_EQ(order.back(), 5);
 }
 
+// What a plain task (TaskQueue::push_plain) of the test below runs: *ran = number.
+struct PlainArgument {
+  int* ran;
+  int number;
+};
+void run_plain(void* argument) {
+  auto* a = static_cast<PlainArgument*>(argument);
+  *a->ran = a->number;
+}
+
 // The queue with reused slots behaves as the ordered map it replaced: tasks come out in
-// (time, posting order), a cancelled task never runs, a stale id (a task that ran or was
-// cancelled, its slot since reused) cancels nothing, and cancelled entries do not pile up.
-// `next_at` draws each posted task's time.
+// (time, posting order), plain tasks among the others, a cancelled task never runs, a stale id
+// (a task that ran or was cancelled, its slot since reused) cancels nothing, and cancelled
+// entries do not pile up. `next_at` draws each posted task's time.
 template <class NextTime>
 void expect_queue_agrees_with_an_ordered_map(NextTime next_at) {
   TaskQueue queue;
+  std::deque<PlainArgument> plain_arguments;  // a deque: their addresses stay put
   // (time, posting order) -> (task number, id)
   std::map<std::pair<double, uint64_t>, std::pair<int, TaskQueue::TaskId>> model;
   std::map<TaskQueue::TaskId, std::pair<double, uint64_t>> pending;
@@ -46,7 +58,14 @@ void expect_queue_agrees_with_an_ordered_map(NextTime next_at) {
   int ran = -1;
   for (int step = 0; step < 20000; ++step) {
     unsigned what = random() % 10;
-    if (what < 5) {
+    if (what < 2) {  // a plain task: no id, never cancelled
+      double at = next_at(random);
+      int number = static_cast<int>(posted);
+      plain_arguments.push_back({&ran, number});
+      queue.push_plain(at, run_plain, &plain_arguments.back());
+      model[{at, posted}] = {number, 0};
+      ++posted;
+    } else if (what < 5) {
       double at = next_at(random);
       int number = static_cast<int>(posted);
       TaskQueue::TaskId id = queue.push(at, [&ran, number] { ran = number; });

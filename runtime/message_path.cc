@@ -12,7 +12,7 @@ namespace arbc {
 
 void Runtime::publish(std::string_view module, std::string_view port, Value v) {
   for (auto& m : modules_) {
-    if (m->name == module) {
+    if (same_name(m->name, module)) {
       publish_from(*m, port, std::move(v));
       return;
     }
@@ -120,7 +120,7 @@ void Runtime::post_drain(Connection& c) {
     auto* c = static_cast<Connection*>(connection);
     c->runtime->drain(*c);
   };
-  executor_->post(now(), Task(drain_task, &c));
+  executor_->post_plain(now(), drain_task, &c);
 }
 
 // One message per task, so connections interleave fairly in posting order.

@@ -7,6 +7,7 @@
 
 #include "runtime/ring_queue.h"
 #include "runtime/runtime.h"
+#include "runtime/same_name.h"
 
 namespace arbc {
 
@@ -175,12 +176,12 @@ struct Runtime::PluginGuard {
 class Runtime::ModuleSlot : public ModuleContext, public PluginGuard {
  public:
   std::unique_ptr<Module> module;
-  // Searched by name on every publish: a module has a few outputs, and a scan that compares
-  // lengths first costs less than a map's string comparisons.
+  // Searched by name on every publish: a module has a few outputs, and a scan costs less than
+  // a map's string comparisons.
   std::vector<OutPort*> outputs;
   OutPort* output(std::string_view port) const {
     for (OutPort* out : outputs) {
-      if (out->port.size() == port.size() && out->port == port) return out;
+      if (same_name(out->port, port)) return out;
     }
     return nullptr;
   }

@@ -18,17 +18,26 @@ TaskQueue::TaskId TaskQueue::push(double at, Task task) {
   s.live = true;
   s.task = std::move(task);
   TaskId id = (TaskId{s.generation} << 32) | slot;
-  heap_.push_back({at, next_seq_++, id});
+  add(at, id, nullptr, nullptr);
+  return id;
+}
+
+void TaskQueue::push_plain(double at, void (*fn)(void*), void* argument) {
+  add(at, 0, fn, argument);
+}
+
+void TaskQueue::add(double at, TaskId id, void (*plain)(void*), void* argument) {
+  heap_.emplace_back(at, next_seq_++, id, plain, argument);
   // Most tasks are posted in time order (the message path's at the current time), and such a
   // task already sits where the heap wants it: no sift.
   size_t last = heap_.size() - 1;
   if (last > 0 && Later()(heap_[(last - 1) / 2], heap_[last])) {
     std::push_heap(heap_.begin(), heap_.end(), Later());
   }
-  return id;
 }
 
 bool TaskQueue::stale(const Entry& e) const {
+  if (e.id == 0) return false;  // a plain task cannot be cancelled
   const Slot& s = slots_[static_cast<uint32_t>(e.id)];
   return !s.live || s.generation != static_cast<uint32_t>(e.id >> 32);
 }
@@ -69,8 +78,13 @@ void TaskQueue::cancel(TaskId id) {
 
 Task TaskQueue::pop() {
   std::pop_heap(heap_.begin(), heap_.end(), Later());
-  auto slot = static_cast<uint32_t>(heap_.back().id);
+  Entry top = heap_.back();
   heap_.pop_back();
+  if (top.id == 0) {
+    drop_dead_top();
+    return Task(top.plain, top.argument);
+  }
+  auto slot = static_cast<uint32_t>(top.id);
   Task task = std::move(slots_[slot].task);
   release(slot);
   drop_dead_top();
