@@ -317,6 +317,34 @@ TEST(FaultInjectionTest, InfiniteLoopIsCutOffEveryTime) {
   expect_error_details(r, "monitors/faulty.lua:2: instruction budget of 200000 exceeded");
 }
 
+// accept and update run in one protected call (LuaMonitor::pass), yet each has its own
+// instruction budget: two loops of 65 % of the budget each pass, and a loop in update is
+// update's failure, not accept's.
+TEST(FaultInjectionTest, AcceptAndUpdateEachHaveTheirOwnBudget) {
+  const char* busy =
+      "local function spin(n) local s = 0 for i = 1, n do s = s + i end return s end\n"
+      "PortMonitor.accept = function(m) spin(65000) return true end\n";
+  Fault within =
+      monitor(std::string(busy) + "PortMonitor.update = function(m) spin(65000) return m end\n");
+  within.options.limits.instructions = 200000;  // a step of spin is 2 instructions
+  FaultRun ok = run(within);
+  EXPECT_EQ(ok["faulty"].delivered, 3u);
+  EXPECT_EQ(ok["faulty"].errors, 0u);
+
+  Fault endless =
+      monitor(std::string(busy) + "PortMonitor.update = function(m)\n  while true do end\nend\n");
+  endless.options.limits.instructions = 200000;
+  FaultRun r = run(endless);
+  expect_unaffected_and_accounted(r);
+  EXPECT_EQ(r["faulty"].drops(DropReason::MonitorError), 3u);
+  expect_error_details(r, "monitors/faulty.lua:4: instruction budget of 200000 exceeded");
+  bool named_update = false;
+  for (const std::string& line : r.reports) {
+    named_update |= line.find("update failed") != std::string::npos;
+  }
+  EXPECT_TRUE(named_update);
+}
+
 TEST(FaultInjectionTest, MemoryBombHitsTheCapEveryTime) {
   Fault f = monitor(
       "local keep = {}\n"

@@ -144,6 +144,35 @@ std::string kind_of(lua_State* L, int index) {
   return lua_isnoneornil(L, index) ? "nothing" : luaL_typename(L, index);
 }
 
+// accept's results are at -2 (the verdict) and -1 (a reason); false with call->type_error
+// when the verdict is not a boolean.
+bool read_verdict(lua_State* L, bool* accepted, std::string* reason, std::string* type_error) {
+  if (!lua_isboolean(L, -2)) {
+    *type_error = "accept must return a boolean, got " + kind_of(L, -2);
+    return false;
+  }
+  *accepted = lua_toboolean(L, -2);
+  // `return false, "no-value"`: a rejection with a reason.
+  if (!*accepted && lua_type(L, -1) == LUA_TSTRING) *reason = lua_tostring(L, -1);
+  return true;
+}
+
+// update's result (or the message, without an update) at -1, read as the destination's type;
+// false with call->type_error when it does not fit.
+bool read_output(lua_State* L, bool has_update, const Type& destination, Value* output,
+                 std::string* type_error) {
+  std::string why;
+  auto value = read_value(L, -1, destination, &why);
+  if (!value) {
+    *type_error = (has_update ? "update returned a value that does not fit the destination ("
+                              : "the message does not fit the destination (") +
+                  why + ")";
+    return false;
+  }
+  *output = std::move(*value);
+  return true;
+}
+
 }  // namespace
 
 struct LuaMonitor::Call {
@@ -156,6 +185,12 @@ struct LuaMonitor::Call {
   Value output;
   std::string type_error;
   int staged_ref = LUA_NOREF;
+  // pass() only
+  LuaSandbox* sandbox = nullptr;
+  Passage* passage = nullptr;
+  bool with_update = false;
+  AfterAccept after_accept = nullptr;
+  void* context = nullptr;
 };
 
 std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const std::string& file,
@@ -237,13 +272,7 @@ int LuaMonitor::run_accept(lua_State* L) {
   if (!push_callback(L, "accept")) return 0;
   lua_pushvalue(L, -2);
   lua_call(L, 1, 2);
-  if (!lua_isboolean(L, -2)) {
-    call->type_error = "accept must return a boolean, got " + kind_of(L, -2);
-    return 0;
-  }
-  call->result = lua_toboolean(L, -2);
-  // `return false, "no-value"`: a rejection with a reason.
-  if (!call->result && lua_type(L, -1) == LUA_TSTRING) call->reason = lua_tostring(L, -1);
+  read_verdict(L, &call->result, &call->reason, &call->type_error);
   return 0;
 }
 
@@ -252,15 +281,31 @@ int LuaMonitor::run_update(lua_State* L) {
   bool has_update = push_callback(L, "update");
   lua_rawgeti(L, LUA_REGISTRYINDEX, call->staged_ref);
   if (has_update) lua_call(L, 1, 1);
-  std::string why;
-  auto value = read_value(L, -1, *call->destination, &why);
-  if (!value) {
-    call->type_error = (has_update ? "update returned a value that does not fit the destination ("
-                                   : "the message does not fit the destination (") +
-                       why + ")";
+  read_output(L, has_update, *call->destination, &call->output, &call->type_error);
+  return 0;
+}
+
+int LuaMonitor::run_pass(lua_State* L) {
+  auto* call = static_cast<Call*>(lua_touserdata(L, 1));
+  Passage* p = call->passage;
+  push_value(L, *call->message);
+  int msg = lua_gettop(L);
+  p->accepted = true;
+  if (push_callback(L, "accept")) {
+    lua_pushvalue(L, msg);
+    lua_call(L, 1, 2);
+    if (!read_verdict(L, &p->accepted, &p->reason, &call->type_error)) return 0;
+  }
+  lua_settop(L, msg);
+  if (!call->after_accept(call->context, p->accepted) || !p->accepted || !call->with_update) {
     return 0;
   }
-  call->output = std::move(*value);
+  p->stage = "update";
+  call->sandbox->rearm();
+  bool has_update = push_callback(L, "update");
+  lua_pushvalue(L, msg);
+  if (has_update) lua_call(L, 1, 1);
+  p->updated = read_output(L, has_update, *call->destination, &p->output, &call->type_error);
   return 0;
 }
 
@@ -306,6 +351,21 @@ LuaCall LuaMonitor::update(const Type& destination, Value* out) {
   LuaCall r = cited(sandbox_->protected_call(run_update, &call));
   if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   if (r.ok()) *out = std::move(call.output);
+  return r;
+}
+
+LuaCall LuaMonitor::pass(const Value& msg, const Type& destination, bool with_update,
+                         AfterAccept after_accept, void* context, Passage* out) {
+  Call call;
+  call.message = &msg;
+  call.destination = &destination;
+  call.sandbox = sandbox_.get();
+  call.passage = out;
+  call.with_update = with_update;
+  call.after_accept = after_accept;
+  call.context = context;
+  LuaCall r = cited(sandbox_->protected_call(run_pass, &call));
+  if (r.ok() && !call.type_error.empty()) r = type_error(file_, call.type_error);
   return r;
 }
 

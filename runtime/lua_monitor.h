@@ -63,6 +63,23 @@ class LuaMonitor {
   LuaCall create(const MonitorOptions& options, bool* created);
   LuaCall accept(const Value& msg, bool* accepted, std::string* reason = nullptr);
   LuaCall update(const Type& destination, Value* out);
+
+  // The runtime's message path: accept, then after_accept(context, accepted) (C++ between the
+  // two callbacks: the constraint and the throttle; it must not raise Lua errors), then, when
+  // accept accepted, after_accept returned true and `with_update`, update, all in one
+  // protected call: one set-up of the sandbox per message instead of two. Each callback has
+  // its own budgets, as with accept() and update(). after_accept does not run when accept
+  // failed.
+  struct Passage {
+    bool accepted = false;         // accept's verdict (true without an accept)
+    std::string reason;            // accept's `false, "reason"`
+    bool updated = false;          // update ran and *output holds its value
+    Value output;                  // update's result, read as the destination's type
+    const char* stage = "accept";  // the callback a failure or novalue() came from
+  };
+  using AfterAccept = bool (*)(void* context, bool accepted);
+  LuaCall pass(const Value& msg, const Type& destination, bool with_update,
+               AfterAccept after_accept, void* context, Passage* out);
   LuaCall trig();
   LuaCall destroy();
 
@@ -74,6 +91,7 @@ class LuaMonitor {
   static int run_create(lua_State* L);
   static int run_accept(lua_State* L);
   static int run_update(lua_State* L);
+  static int run_pass(lua_State* L);
   static int run_simple(lua_State* L);
   void install_api();
 

@@ -72,6 +72,8 @@ class LuaSandbox {
   // light userdata at stack index 1 and passes results back through it. fn may raise Lua
   // errors. The stack is empty afterwards.
   LuaCall protected_call(int (*fn)(lua_State*), void* argument);
+  // Inside a protected call, before the next of several callbacks: fresh budgets for it.
+  void rearm() { arm(); }
 
   // The error raised by PortMonitor.novalue(): the call ends with Status::NoValue.
   static void push_novalue_marker(lua_State* L);

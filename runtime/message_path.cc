@@ -140,31 +140,53 @@ void Runtime::drain(Connection& c) {
 
 // --- the path ----------------------------------------------------------------------------
 
-// Step 1 of the path: the monitor's accept (which also stages the message for update).
-// False when it dropped the message (counted with its reason).
-bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
-  if (!c.monitor || !(c.has_accept || c.has_update)) return true;
-  bool accepted = false;
-  std::string reason;
-  LuaCall call;
-  {
-    BusyScope busy(busy_, "monitor", c.name, "accept");
-    call = c.monitor->accept(msg, &accepted, &reason);
-  }
-  if (call.status == LuaCall::Status::NoValue) {
-    c.consecutive_errors = 0;
-    drop(c, DropReason::NoValue, "accept");
-    return false;
-  }
-  if (!call.ok()) {
-    drop(c, DropReason::MonitorError, call.error);
-    monitor_failed(c, call, "accept");
-    return false;
-  }
+// What the monitor's protected call hands to after_accept, and what it leaves for process().
+struct Runtime::Passing {
+  Runtime* runtime;
+  Connection* connection;
+  double t;
+  bool refused = false;  // accepted, then not selected or throttled: `reason`, `detail`
+  DropReason reason = DropReason::NotSelected;
+  std::string detail;
+};
+
+// Between the monitor's accept and its update, inside its protected call (no Lua errors here).
+bool Runtime::after_accept(void* passing, bool accepted) {
+  auto* p = static_cast<Passing*>(passing);
+  Runtime& rt = *p->runtime;
+  Connection& c = *p->connection;
   c.fed = true;  // a feed's events now say what its source said (unknown_events.cc)
   c.answered = std::max(c.answered, c.incoming_answered);  // answered_deliveries.cc
-  c.last_fed_at = now();
-  if (accepted) return true;
+  c.last_fed_at = rt.now();
+  if (!accepted) return false;
+  if (!rt.selected(c, p->t, &p->reason, &p->detail)) {
+    p->refused = true;
+    return false;
+  }
+  rt.busy_.enter("monitor", &c.name, "update");  // the BusyScope around the call leaves it
+  return true;
+}
+
+// Steps 2 and 3 of the path: the constraint, on the container as accept left it, never on
+// events not known yet; then the throttle, which counts deliveries, so only selected messages
+// are throttled. False with the drop's reason and detail when the message goes no further.
+bool Runtime::selected(Connection& c, double t, DropReason* reason, std::string* detail) {
+  *reason = DropReason::NotSelected;
+  if (!c.unknown.empty() && !knows_events_of(c, t, detail)) return false;
+  if (!c.feedback.empty() && !answered_events_of(c, t, detail)) return false;
+  if (!c.constraint.evaluate(c.destination->container.present(t))) {
+    if (c.is_feed) *reason = DropReason::Feed;
+    return false;
+  }
+  if (c.throttle && !reached(t, c.last_delivery + *c.throttle)) {
+    *reason = DropReason::Throttled;
+    return false;
+  }
+  return true;
+}
+
+// accept said false (with `reason`, maybe empty).
+void Runtime::rejected(Connection& c, const std::string& reason) {
   c.consecutive_errors = 0;
   if (reason == drop_reason_name(DropReason::NoValue)) {
     drop(c, DropReason::NoValue, "accept");
@@ -175,65 +197,62 @@ bool Runtime::accepted_by_monitor(Connection& c, const Value& msg) {
   } else {
     drop(c, DropReason::Rejected, reason);
   }
-  return false;
 }
 
+// The path: 1. accept, 2. the constraint, 3. the throttle, 4. update, then delivery. With a
+// monitor, steps 1 to 4 run in one protected call into its script (LuaMonitor::pass).
 void Runtime::process(Connection& c, const Value& msg) {
   double t = now();
-  // 1. accept (also stages the message for update).
-  if (!accepted_by_monitor(c, msg)) return;
-  // 2. the constraint, on the container as accept left it; never on events not known yet.
-  std::string unknown;
-  if (!c.unknown.empty() && !knows_events_of(c, t, &unknown)) {
-    c.consecutive_errors = 0;
-    drop(c, DropReason::NotSelected, unknown);
-    return;
-  }
-  if (!c.feedback.empty() && !answered_events_of(c, t, &unknown)) {
-    c.consecutive_errors = 0;
-    drop(c, DropReason::NotSelected, unknown);
-    return;
-  }
-  if (!c.constraint.evaluate(c.destination->container.present(t))) {
-    c.consecutive_errors = 0;
-    drop(c, c.is_feed ? DropReason::Feed : DropReason::NotSelected);
-    return;
-  }
-  // 3. throttle: counts deliveries, so only selected messages are throttled.
-  if (c.throttle && !reached(t, c.last_delivery + *c.throttle)) {
-    c.consecutive_errors = 0;
-    drop(c, DropReason::Throttled);
-    return;
-  }
-  // 4. update, then deliver.
-  Value out;
-  const Value* delivered = &msg;
-  if (c.monitor && c.has_update) {
-    LuaCall call;
-    {
-      BusyScope busy(busy_, "monitor", c.name, "update");
-      call = c.monitor->update(*c.destination->type, &out);
-    }
-    if (call.status == LuaCall::Status::NoValue) {
+  if (!c.monitor || !(c.has_accept || c.has_update)) {
+    DropReason reason;
+    std::string detail;
+    if (!selected(c, t, &reason, &detail)) {
       c.consecutive_errors = 0;
-      drop(c, DropReason::NoValue, "update");
+      drop(c, reason, detail);
       return;
     }
-    if (!call.ok()) {
-      drop(c, DropReason::MonitorError, call.error);
-      monitor_failed(c, call, "update");
-      return;
-    }
-    delivered = &out;
+    deliver(c, t, msg);
+    return;
   }
+  Passing passing{this, &c, t, false, DropReason::NotSelected, {}};
+  LuaMonitor::Passage passage;
+  LuaCall call;
+  {
+    BusyScope busy(busy_, "monitor", c.name, "accept");
+    call = c.monitor->pass(msg, *c.destination->type, c.has_update, &Runtime::after_accept,
+                           &passing, &passage);
+  }
+  if (call.status == LuaCall::Status::NoValue) {
+    c.consecutive_errors = 0;
+    drop(c, DropReason::NoValue, passage.stage);
+    return;
+  }
+  if (!call.ok()) {
+    drop(c, DropReason::MonitorError, call.error);
+    monitor_failed(c, call, passage.stage);
+    return;
+  }
+  if (!passage.accepted) {
+    rejected(c, passage.reason);
+    return;
+  }
+  if (passing.refused) {
+    c.consecutive_errors = 0;
+    drop(c, passing.reason, passing.detail);
+    return;
+  }
+  deliver(c, t, passage.updated ? passage.output : msg);
+}
+
+void Runtime::deliver(Connection& c, double t, const Value& delivered) {
   c.consecutive_errors = 0;
   c.last_delivery = t;
   ++c.stats.delivered;
-  if (trace_.enabled()) trace_.delivery(t, c.name, c.destination->qualified, *delivered);
+  if (trace_.enabled()) trace_.delivery(t, c.name, c.destination->qualified, delivered);
   // `by priority`: only a delivered message holds the lower rules off, for the event's
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
-  Delivery d{c.destination->port, *delivered, c.name, c.model->source, t};
+  Delivery d{c.destination->port, delivered, c.name, c.model->source, t};
   if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
   transport_->deliver(c.destination->index, d);
 }

@@ -205,7 +205,11 @@ class Runtime {
   // when they happen even when no message arrives any more.
   void watch_lapses(double period);
   void report(const std::string& line);
-  bool accepted_by_monitor(Connection& c, const Value& msg);
+  struct Passing;
+  static bool after_accept(void* passing, bool accepted);
+  bool selected(Connection& c, double t, DropReason* reason, std::string* detail);
+  void rejected(Connection& c, const std::string& reason);
+  void deliver(Connection& c, double t, const Value& delivered);
   void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
   void post_drain(Connection& c);  // one drain task per message, posted now

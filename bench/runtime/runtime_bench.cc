@@ -6,7 +6,7 @@
 //   bare_delivery        the same path with no monitor
 //   lua_floor_tables     baseline of monitored_delivery: only the Lua work of one message, in a
 //                        plain lua_State (no runtime, no sandbox): the record pushed as tables,
-//                        accept and update called through lua_pcall, the vec3 read back
+//                        accept and update called in one lua_pcall, the vec3 read back
 //   lua_floor_userdata   the same with the record as a userdata whose fields are read through
 //                        __index: what another message form would cost (not what runs)
 //   monitor_memory       bytes of one monitor's lua_State (reported as a counter)
@@ -167,8 +167,9 @@ BENCHMARK(BM_BareDelivery);
 
 // --- the Lua floor under monitored_delivery ---------------------------------------------
 // What the Lua side of one monitored message costs with nothing of arbc around it: the same
-// script, the same record, two protected calls. A plain state with Lua's own allocator and no
-// hook, so the ratio monitored_delivery / lua_floor_tables is what the runtime adds.
+// script, the same record, one protected call (as LuaMonitor::pass). A plain state with Lua's own
+// allocator and no hook, so the ratio monitored_delivery / lua_floor_tables is what the runtime
+// adds.
 
 struct FaceRecord {
   double pos[3];
@@ -247,14 +248,37 @@ double read_vec3_userdata(lua_State* L) {
   return v ? v[0] + v[1] + v[2] : 0;
 }
 
-// PortMonitor[callback](staged message) under lua_pcall, as the runtime calls it.
-bool call_with_staged(lua_State* L, const char* callback, int staged) {
+// PortMonitor[callback](message at `msg`), as the runtime calls it; leaves one result.
+void call_callback(lua_State* L, const char* callback, int msg) {
   lua_getglobal(L, "PortMonitor");
   lua_getfield(L, -1, callback);
   lua_remove(L, -2);
-  lua_rawgeti(L, LUA_REGISTRYINDEX, staged);
-  return lua_pcall(L, 1, 1, 0) == LUA_OK;
+  lua_pushvalue(L, msg);
+  lua_call(L, 1, 1);
 }
+
+// One message's Lua work in one protected call, as the runtime does it (LuaMonitor::pass):
+// push the message, accept, update, read the result back.
+template <class Push, class Read>
+struct FloorMessage {
+  Push push;
+  Read read;
+  FaceRecord message;
+  double sum = 0;
+  uint64_t delivered = 0;
+
+  static int run(lua_State* L) {
+    auto* self = static_cast<FloorMessage*>(lua_touserdata(L, 1));
+    self->push(L, self->message);
+    int msg = lua_gettop(L);
+    call_callback(L, "accept", msg);
+    if (!lua_toboolean(L, -1)) return 0;
+    call_callback(L, "update", msg);
+    self->sum += self->read(L);
+    ++self->delivered;
+    return 0;
+  }
+};
 
 template <class Push, class Read>
 void lua_floor(benchmark::State& state, Push push, Read read) {
@@ -270,24 +294,15 @@ void lua_floor(benchmark::State& state, Push push, Read read) {
   lua_pushcfunction(L, face_view_index);
   lua_setfield(L, -2, "__index");
   lua_settop(L, 0);
-  lua_pushboolean(L, false);
-  int staged = luaL_ref(L, LUA_REGISTRYINDEX);
-  FaceRecord msg{{0.1, 0.2, 0.9}, 0.93};
-  double sum = 0;
-  uint64_t delivered = 0;
+  FloorMessage<Push, Read> one{push, read, {{0.1, 0.2, 0.9}, 0.93}};
   for (auto _ : state) {
-    push(L, msg);
-    lua_rawseti(L, LUA_REGISTRYINDEX, staged);
-    bool accepted = call_with_staged(L, "accept", staged) && lua_toboolean(L, -1);
-    lua_settop(L, 0);
-    if (accepted && call_with_staged(L, "update", staged)) {
-      sum += read(L);
-      ++delivered;
-    }
+    lua_pushcfunction(L, (FloorMessage<Push, Read>::run));
+    lua_pushlightuserdata(L, &one);
+    lua_pcall(L, 1, 0, 0);
     lua_settop(L, 0);
   }
-  benchmark::DoNotOptimize(sum);
-  state.counters["delivered"] = static_cast<double>(delivered);
+  benchmark::DoNotOptimize(one.sum);
+  state.counters["delivered"] = static_cast<double>(one.delivered);
   lua_close(L);
 }
 
