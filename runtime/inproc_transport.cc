@@ -26,6 +26,7 @@ class InprocTransport : public Transport {
     sink_->from_source(out, v, TransportSink::kAnswersAll);
   }
   void deliver(int in, const Delivery& d) override { sink_->to_module(in, d); }
+  bool loops_back() const override { return true; }
 
  private:
   static bool refuse(const TransportPort& p, std::string* error) {

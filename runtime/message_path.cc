@@ -53,7 +53,11 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value&& v) {
     return;
   }
   if (trace_.enabled()) trace_.publish(now(), out.qualified, v);
-  transport_->publish(out.index, v);
+  if (loops_back_) {
+    from_source(out, v, TransportSink::kAnswersAll);
+  } else {
+    transport_->publish(out.index, v);
+  }
 }
 
 // A message from `out` for the connections mediated here. One from a module hosted elsewhere
@@ -254,7 +258,11 @@ void Runtime::deliver(Connection& c, double t, const Value& delivered) {
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
   Delivery d{c.destination->port, delivered, c.name, c.model->source, t};
   if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
-  transport_->deliver(c.destination->index, d);
+  if (loops_back_) {
+    to_module(*c.destination, d);
+  } else {
+    transport_->deliver(c.destination->index, d);
+  }
 }
 
 void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {

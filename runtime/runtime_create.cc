@@ -252,6 +252,7 @@ bool Runtime::open_trace(std::string* error) {
 // Tells the transport where every port's module runs; in-process unless the options name one.
 bool Runtime::open_transport(std::string* error) {
   transport_ = options_.transport ? options_.transport : make_inproc_transport();
+  loops_back_ = transport_->loops_back();
   TransportPlan plan;
   plan.app = app_.name;
   for (const model::Module& m : app_.modules) {
