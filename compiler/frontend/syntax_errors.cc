@@ -86,11 +86,13 @@ std::string describe_context(antlr4::ParserRuleContext* ctx) {
   return "the spec";
 }
 
-bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) {
+antlr4::ParserRuleContext* enclosing(antlr4::ParserRuleContext* ctx, size_t rule) {
   for (; ctx; ctx = dynamic_cast<antlr4::ParserRuleContext*>(ctx->parent))
-    if (ctx->getRuleIndex() == rule) return true;
-  return false;
+    if (ctx->getRuleIndex() == rule) return ctx;
+  return nullptr;
 }
+
+bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) { return enclosing(ctx, rule); }
 
 const std::set<std::string> kDeclKeywords = {
     "app",       "type",      "const",   "module", "event", "events", "exclusive",
@@ -155,6 +157,39 @@ Expected expected_tokens(antlr4::Parser* parser) {
     x.wanted.push_back(token_name(vocabulary, type));
   }
   return x;
+}
+
+// A test step that starts well ('at' or 'expect') but fits none of its forms. ANTLR reports
+// this where its prediction failed, with the tokens that may start a step as the expected ones
+// ("expected 'at' or 'expect', found '-'" under the `at` the user wrote): say instead which
+// forms the step may take after the word it starts with.
+void describe_test_step(const antlr4::Token* start, const antlr4::Token* offending,
+                        const std::string& found, Diagnostic& d) {
+  Diagnostic note;
+  note.severity = Severity::Note;
+  if (start->getText() == "at") {
+    bool at_time = offending->getTokenIndex() == start->getTokenIndex() + 1;
+    if (at_time) {
+      d.message = "expected a time such as 100ms after 'at' in the test step, found " + found;
+      if (offending->getText() == "-")
+        d.message += " (times count from the start of the test: they cannot be negative)";
+    } else {
+      d.message =
+          "expected 'Module.port <- VALUE;', 'set EVENT;' or 'unset EVENT;' after the time in "
+          "the test step, found " +
+          found;
+    }
+    note.message =
+        "a timed step reads `at TIME Module.port <- VALUE;`, `at TIME set EVENT;` or `at TIME "
+        "unset EVENT;`";
+  } else {
+    d.message = "this `expect` fits none of its forms, at " + found;
+    note.message =
+        "an expectation reads `expect Module.port receives VALUE [WINDOW];` (or `receives "
+        "nothing`), `expect RULE drops [\"reason\"] [WINDOW];` or `expect CONDITION WINDOW;`, "
+        "where WINDOW is `at TIME` or `within T1..T2`";
+  }
+  d.notes.push_back(std::move(note));
 }
 
 }  // namespace
@@ -260,6 +295,23 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
           "a spacing property reads `never two RULE within D;` (RULE never delivers twice less "
           "than D apart) or `never RULE within D after OTHER;` (nor less than D after OTHER)";
       d.notes.push_back(std::move(note));
+    } else if (auto* step = enclosing(ctx, ArbcParser::RuleTestStep);
+               step && step->getStart() && step->getStart()->getText() == "at" &&
+               x.kinds.size() == 1 && x.has(".")) {
+      // `at 1s sett e_face;`: a name where a port or set/unset goes, read as a port's module.
+      antlr4::Token* name = parser->getTokenStream()->LT(-1);
+      describe_test_step(step->getStart(), offending, found, d);
+      if (name && name->getType() == ArbcParser::ID) {
+        d.message =
+            "expected 'Module.port <- VALUE;', 'set EVENT;' or 'unset EVENT;' after the "
+            "time in the test step, found '" +
+            name->getText() + "'";
+        d.loc = token_location(name, file_);
+        suggest_keyword(name, {"set", "unset"}, d);
+      }
+    } else if (ctx->getRuleIndex() == ArbcParser::RuleTestStep && x.has("at") && x.has("expect") &&
+               ctx->getStart() && ctx->getStart()->getTokenIndex() < offending->getTokenIndex()) {
+      describe_test_step(ctx->getStart(), offending, found, d);
     } else if (ctx->getRuleIndex() == ArbcParser::RuleArbitrateDecl && x.has("}") &&
                x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a rule ('NAME: from Module.port ...') or '}', found " + found;
