@@ -152,8 +152,8 @@ class Sema {
   // ---- reporting (sema_decls.cc) ----
   Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
   // Reports an unknown name, with "did you mean" when a candidate is close.
-  void unknown(const ast::Loc& loc, std::string message, std::string id, const std::string& name,
-               const std::vector<std::string>& candidates);
+  Diagnostic& unknown(const ast::Loc& loc, std::string message, std::string id,
+                      const std::string& name, const std::vector<std::string>& candidates);
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
 

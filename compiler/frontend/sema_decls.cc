@@ -22,8 +22,8 @@ Diagnostic& Sema::error(const Loc& loc, std::string message, std::string id) {
   return out_.back();
 }
 
-void Sema::unknown(const Loc& loc, std::string message, std::string id, const std::string& name,
-                   const std::vector<std::string>& candidates) {
+Diagnostic& Sema::unknown(const Loc& loc, std::string message, std::string id,
+                          const std::string& name, const std::vector<std::string>& candidates) {
   Diagnostic& d = error(loc, std::move(message), std::move(id));
   if (auto best = closest_name(name, candidates)) {
     Diagnostic note;
@@ -31,6 +31,7 @@ void Sema::unknown(const Loc& loc, std::string message, std::string id, const st
     note.message = "did you mean '" + *best + "'?";
     d.notes.push_back(std::move(note));
   }
+  return d;
 }
 
 std::string Sema::describe(const TypePtr& t) const {

@@ -8,6 +8,7 @@
 #include "compiler/frontend/literal_value.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/join.h"
 
 namespace arbc::frontend {
 
@@ -148,8 +149,14 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       }
       if (!e.reason.empty() &&
           std::find(kDropReasons.begin(), kDropReasons.end(), e.reason) == kDropReasons.end()) {
-        unknown(e.reason_loc, "unknown drop reason \"" + e.reason + "\"", "test-reason", e.reason,
-                kDropReasons);
+        Diagnostic& d = unknown(e.reason_loc, "unknown drop reason \"" + e.reason + "\"",
+                                "test-reason", e.reason, kDropReasons);
+        if (d.notes.empty()) {  // nothing close: the whole list, which is short
+          Diagnostic note;
+          note.severity = Severity::Note;
+          note.message = "a drop reason is one of " + join(kDropReasons, ", ", " or ");
+          d.notes.push_back(std::move(note));
+        }
       }
       break;
     case TestExpect::Kind::State:
