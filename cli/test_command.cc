@@ -1,8 +1,8 @@
 // `arbc test SPEC... [--filter GLOB] [--junit FILE] [--no-verify] [--jobs N]`
 // (docs/testing.md): runs the `test` declarations of each spec on the embedded runtime in
 // simulated time, one line per test, the details of each failure. Each spec is compiled and,
-// unless --no-verify, proved first (as `arbc run` does). Exit: 0 every test passed, 1 a test
-// failed (or a proof was refuted), 2 bad input.
+// unless --no-verify, proved first (as `arbc run` does), all of them before any test runs.
+// Exit: 0 every test passed, 1 a test failed (or a proof was refuted), 2 bad input.
 #include <fnmatch.h>
 #include <stdlib.h>
 
@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -24,6 +25,7 @@
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "compiler/lower/test_cases.h"
+#include "core/join.h"
 #include "runtime/app_loader.h"
 
 namespace arbc::cli {
@@ -46,6 +48,15 @@ struct Scratch {
     std::error_code ignored;
     if (!path.empty()) fs::remove_all(path, ignored);
   }
+};
+
+// One spec ready to run its tests.
+struct PreparedSpec {
+  std::string spec;
+  Scratch scratch;
+  std::string dir;
+  model::App app;
+  std::vector<model::TestCase> tests;
 };
 
 // The spec compiled, proved (unless no_verify) and written to a scratch directory, with the
@@ -147,23 +158,42 @@ size_t print_outcomes(const std::string& spec, const std::vector<TestOutcome>& o
 int test_command(std::span<char*> args) {
   TestArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  // Every spec is compiled and proved before any test runs: a spec with an error stops the
+  // whole run, so its errors are never followed by PASS lines of the others that could be
+  // taken for a result.
+  std::vector<std::unique_ptr<PreparedSpec>> prepared;
+  std::vector<std::string> not_ready;
+  int exit = kExitOk;
+  for (const std::string& spec : a.specs) {
+    auto p = std::make_unique<PreparedSpec>();
+    p->spec = spec;
+    int rc = prepare_spec(spec, a.no_verify, &p->scratch, &p->dir, &p->app, &p->tests);
+    if (rc != kExitOk) {
+      if (exit == kExitOk) exit = rc;
+      not_ready.push_back(spec);
+      continue;
+    }
+    prepared.push_back(std::move(p));
+  }
+  if (exit != kExitOk) {
+    if (a.specs.size() > 1) {
+      std::fprintf(stderr, "arbc test: no test was run, because of %s (see above)\n",
+                   join(not_ready, ", ", " and ").c_str());
+    }
+    return exit;
+  }
   std::vector<SuiteOutcome> suites;
   size_t total = 0, failed = 0;
-  for (const std::string& spec : a.specs) {
-    Scratch scratch;
-    std::string dir;
-    model::App app;
-    std::vector<model::TestCase> tests;
-    int rc = prepare_spec(spec, a.no_verify, &scratch, &dir, &app, &tests);
-    if (rc != kExitOk) return rc;
+  for (const std::unique_ptr<PreparedSpec>& p : prepared) {
     std::vector<const model::TestCase*> chosen;
-    for (const model::TestCase& t : tests) {
+    for (const model::TestCase& t : p->tests) {
       if (fnmatch(a.filter.c_str(), t.name.c_str(), 0) == 0) chosen.push_back(&t);
     }
-    std::vector<TestOutcome> outcomes = run_all(app, dir, chosen, jobs_for(chosen.size(), a.jobs));
-    failed += print_outcomes(spec, outcomes);
+    std::vector<TestOutcome> outcomes =
+        run_all(p->app, p->dir, chosen, jobs_for(chosen.size(), a.jobs));
+    failed += print_outcomes(p->spec, outcomes);
     total += outcomes.size();
-    suites.push_back({spec, app.name, std::move(outcomes)});
+    suites.push_back({p->spec, p->app.name, std::move(outcomes)});
   }
   if (!a.junit.empty()) {
     std::ofstream out(a.junit);

@@ -93,6 +93,19 @@ def case_refuted_spec_needs_no_verify(arbc, tmp):
            "the test of the paper's take rule did not catch the broken spec", out, err)
 
 
+def case_a_bad_spec_stops_every_spec(arbc, tmp):
+    # Several specs: each is checked and proved before any test runs, so one with an error
+    # (here the second) leaves no PASS line of the first that could be read as a result.
+    bad = changed_spec(tmp, "hold 1s", "hold 1s;;", name="bad.spec")
+    code, out, err = run(arbc, "test", SPEC, bad)
+    expect(code == 2, f"exit {code}, expected 2 (bad input)", out, err)
+    expect("PASS" not in out and "tests," not in out, "tests ran beside a bad spec", out, err)
+    expect(f"no test was run, because of {bad}" in err, "the bad spec is not named", out, err)
+    once = run(arbc, "test", SPEC)[1].count("PASS  ")
+    code, out, err = run(arbc, "test", SPEC, SPEC)
+    expect(code == 0 and once > 0 and out.count("PASS  ") == 2 * once, f"exit {code}", out, err)
+
+
 def case_junit_and_filter(arbc, tmp):
     junit = os.path.join(tmp, "results.xml")
     code, out, err = run(arbc, "test", SPEC, "--filter", "*take*", "--junit", junit)
