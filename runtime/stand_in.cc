@@ -134,6 +134,19 @@ Registry registry_with_stand_ins(const model::App& app, const Registry& base,
   return out;
 }
 
+namespace {
+
+// How many messages the inputs file gave `port` of `module`.
+uint64_t scripted_on(const StandInLog& log, const std::string& module, const std::string& port) {
+  auto it = log.inputs.find(module);
+  if (it == log.inputs.end()) return 0;
+  uint64_t n = 0;
+  for (const TimedValue& v : it->second) n += v.port == port;
+  return n;
+}
+
+}  // namespace
+
 std::string stand_in_summary(const model::App& app, const std::vector<std::string>& stand_ins,
                              const StandInLog& log) {
   std::map<std::string, std::vector<const Received*>> by_port;
@@ -147,7 +160,15 @@ std::string stand_in_summary(const model::App& app, const std::vector<std::strin
       if (p.direction == model::Direction::Out) {
         auto it = log.published.find(q);
         uint64_t n = it == log.published.end() ? 0 : it->second;
-        out += "  " + q + " (stand-in source): published " + std::to_string(n) + "\n";
+        out += "  " + q + " (stand-in source): published " + std::to_string(n);
+        // Inputs timed after the run's end (or an interrupt) never go out: say so, rather
+        // than let a short --duration drop them unseen.
+        uint64_t scripted = scripted_on(log, name, q);
+        if (scripted > n) {
+          out += " of the " + std::to_string(scripted) + " in the inputs (" +
+                 std::to_string(scripted - n) + " not reached: the run ended first)";
+        }
+        out += "\n";
         continue;
       }
       const std::vector<const Received*>& got = by_port[q];

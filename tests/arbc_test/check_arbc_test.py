@@ -157,6 +157,17 @@ def case_inputs_run_records_sinks(arbc, tmp):
     records = [json.loads(l) for l in open(trace, encoding="utf-8")]
     expect(any(r["type"] == "publish" and r["port"] == "ObjectDetector.objects" for r in records),
            "the trace has no publish line", out, err)
+    expect("ObjectDetector.objects (stand-in source): published 1\n" in out,
+           "a source whose inputs all went out is not summarised plainly", out, err)
+    # An input timed after the run's end is not published, and the summary says so.
+    write_lines(inputs, [
+        {"t": 0.1, "port": "ObjectDetector.objects", "value": []},
+        {"t": 5, "port": "ObjectDetector.objects", "value": []},
+    ])
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--duration", "1s")
+    expect(code == 0, f"exit {code}", out, err)
+    expect("ObjectDetector.objects (stand-in source): published 1 of the 2 in the inputs "
+           "(1 not reached: the run ended first)" in out, "a late input went unseen", out, err)
 
 
 def case_inputs_bad_line_is_bad_input(arbc, tmp):
