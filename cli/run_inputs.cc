@@ -4,6 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/json_parse.h"
 #include "core/value_json.h"
 
 namespace arbc::cli {
@@ -71,10 +72,9 @@ bool read_inputs(const std::string& path, const model::App& app,
     if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
     LineRef at{path, line};
     Json j;
-    try {
-      j = Json::parse(text);
-    } catch (const Json::exception& e) {  // nlohmann-json reports syntax errors only by throwing
-      return *err = at(std::string("not JSON: ") + e.what()), false;
+    if (JsonParseError e; !parse_json(text, &j, &e)) {
+      std::string where = e.column ? " at column " + std::to_string(e.column) : "";
+      return *err = at("not valid JSON" + where + ": " + e.detail), false;
     }
     if (!read_line(j, at, app, stand_ins, log, read, err)) return false;
   }

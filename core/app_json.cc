@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/body_text.h"
+#include "core/json_parse.h"
 
 namespace arbc::model {
 
@@ -402,36 +403,13 @@ std::optional<App> read_app(const Json& root, std::string* err) {
   return app;
 }
 
-// Line and column (1-based, in bytes) of byte offset `offset` of `text`.
-std::string position_of(std::string_view text, size_t offset) {
-  offset = std::min(offset, text.size());
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i < offset; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 // Parses text; on a syntax error says where ("not valid JSON at line 3, column 5: ...").
-// nlohmann-json reports syntax errors only as exceptions: caught here, at the boundary.
-bool parse_json(std::string_view text, Json* root, std::string* err) {
-  try {
-    *root = Json::parse(text.begin(), text.end());
-    return true;
-  } catch (const Json::parse_error& e) {
-    // e.byte is one past the offending byte; the library's own text repeats the position.
-    std::string what = e.what();
-    size_t colon = what.find(": ", what.find("parse error"));
-    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-    *err = "not valid JSON at " + position_of(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + detail;
-  } catch (const Json::out_of_range& e) {  // a number beyond a double's range, such as 1e999
-    *err = std::string("not valid JSON: ") + e.what() + " (beyond the range of a double)";
-  }
+bool parse_json_text(std::string_view text, Json* root, std::string* err) {
+  JsonParseError e;
+  if (parse_json(text, root, &e)) return true;
+  *err = e.line ? "not valid JSON at line " + std::to_string(e.line) + ", column " +
+                      std::to_string(e.column) + ": " + e.detail
+                : "not valid JSON: " + e.detail;
   return false;
 }
 
@@ -439,7 +417,7 @@ bool parse_json(std::string_view text, Json* root, std::string* err) {
 
 std::optional<App> from_app_json(std::string_view text, std::string* err) {
   Json root;
-  if (!parse_json(text, &root, err)) return std::nullopt;
+  if (!parse_json_text(text, &root, err)) return std::nullopt;
   try {
     return read_app(root, err);
   } catch (const Json::exception& e) {  // a bug above (a value read before its type was checked)

@@ -5,6 +5,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/json_parse.h"
+
 namespace arbc::dds {
 
 namespace {
@@ -12,20 +14,6 @@ namespace {
 using Json = nlohmann::json;
 
 const char* const kBuiltinTypes[] = {"bool", "int", "float", "string", "vec3"};
-
-// "line L, column C" of byte offset `at` in text (1-based), for a JSON syntax error.
-std::string line_column(std::string_view text, size_t at) {
-  int line = 1, column = 1;
-  for (size_t i = 0; i < at && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return std::to_string(line) + ":" + std::to_string(column);
-}
 
 // An object of strings: "topics" and "types".
 bool read_string_map(const Json& j, const std::string& where,
@@ -100,16 +88,9 @@ bool read_key(const std::string& key, const Json& value, const std::string& wher
 bool parse_deployment(std::string_view text, const std::string& path, Deployment* out,
                       std::string* error) {
   Json root;
-  try {
-    root = Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
-    std::string what = e.what();
-    size_t cut = what.find("parse error");
-    *error = path + ":" + line_column(text, e.byte == 0 ? 0 : e.byte - 1) + ": not valid JSON (" +
-             (cut == std::string::npos ? what : what.substr(cut)) + ")";
-    return false;
-  } catch (const Json::out_of_range& e) {  // a number beyond a double's range, such as 1e999
-    *error = path + ": not valid JSON (" + e.what() + ": beyond the range of a double)";
+  if (JsonParseError e; !parse_json(text, &root, &e)) {
+    std::string where = e.line ? ":" + std::to_string(e.line) + ":" + std::to_string(e.column) : "";
+    *error = path + where + ": not valid JSON (" + e.detail + ")";
     return false;
   }
   if (!root.is_object()) {

@@ -185,7 +185,7 @@ def case_inputs_bad_line_is_bad_input(arbc, tmp):
     expect(code == 2 and "is not an out-port of app table_clean" in err, "in-port accepted", out, err)
     write_lines(inputs, ["{not json"])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
-    expect(code == 2 and f"{inputs}:1: not JSON" in err, "bad JSON accepted", out, err)
+    expect(code == 2 and f"{inputs}:1: not valid JSON at column" in err, "bad JSON accepted", out, err)
 
 
 def case_trace_replay_and_diff(arbc, tmp):

@@ -1,0 +1,32 @@
+#include "core/json_parse.h"
+
+namespace arbc {
+
+JsonParseError json_parse_error(std::string_view text, size_t byte, std::string_view what) {
+  JsonParseError error;
+  // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ...": the
+  // text after the tags, and after the library's own position, which is given as numbers.
+  std::string_view detail = what;
+  if (size_t tags = detail.find("] "); !detail.empty() && detail[0] == '[' && tags != detail.npos)
+    detail = detail.substr(tags + 2);
+  size_t position = detail.find("parse error");
+  if (position != std::string_view::npos) {
+    size_t colon = detail.find(": ", position);
+    if (colon != std::string_view::npos) detail = detail.substr(colon + 2);
+  }
+  error.detail = std::string(detail);
+  if (byte == 0) return error;
+  error.line = 1;
+  error.column = 1;
+  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++error.line;
+      error.column = 1;
+    } else {
+      ++error.column;
+    }
+  }
+  return error;
+}
+
+}  // namespace arbc

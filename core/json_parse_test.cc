@@ -1,0 +1,45 @@
+#include "core/json_parse.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc {
+namespace {
+
+TEST(JsonParseTest, ValidTextParses) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_TRUE(parse_json(std::string_view("{\"t\": 1.5}"), &j, &e));
+  EXPECT_EQ(j["t"], 1.5);
+}
+
+// The offending byte's line and column, and the library's text without its tags and its own
+// position: "[json.exception.parse_error.101] parse error at line 2, column 3: ..." is not shown.
+TEST(JsonParseTest, ASyntaxErrorHasItsPositionAndNoLibraryTags) {
+  nlohmann::ordered_json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view("{\"a\": 1,\n  b: 2}"), &j, &e));
+  EXPECT_EQ(e.line, 2u);
+  EXPECT_EQ(e.column, 3u);
+  EXPECT_EQ(e.detail.find("json.exception"), std::string::npos) << e.detail;
+  EXPECT_EQ(e.detail.find("parse error"), std::string::npos) << e.detail;
+  EXPECT_EQ(e.detail.rfind("syntax error while parsing object key", 0), 0u) << e.detail;
+}
+
+TEST(JsonParseTest, EmptyTextIsAnErrorAtItsStart) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view(""), &j, &e));
+  EXPECT_EQ(e.line, 1u);
+  EXPECT_EQ(e.column, 1u);
+}
+
+TEST(JsonParseTest, ANumberBeyondADoubleIsAnErrorWithoutPosition) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view("[1e999]"), &j, &e));
+  EXPECT_EQ(e.line, 0u);
+  EXPECT_EQ(e.detail, "number overflow parsing '1e999' (beyond the range of a double)");
+}
+
+}  // namespace
+}  // namespace arbc
