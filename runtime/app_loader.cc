@@ -1,5 +1,6 @@
 #include "runtime/app_loader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +12,23 @@
 namespace arbc {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The app directories right under dir (sorted), as `arbc build -o dir` leaves them.
+std::vector<std::string> app_dirs_in(const std::string& dir) {
+  std::vector<std::string> apps;
+  std::error_code ec;  // a directory that changes under the walk ends it, without an exception
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code ignored;
+    if (it->is_directory(ignored) && fs::is_regular_file(it->path() / "app.json", ignored))
+      apps.push_back(it->path().string());
+  }
+  std::sort(apps.begin(), apps.end());
+  return apps;
+}
+
+}  // namespace
 
 std::optional<model::App> load_app_dir(const std::string& dir, std::string* err) {
   fs::path file = fs::path(dir) / "app.json";
@@ -24,6 +42,14 @@ std::optional<model::App> load_app_dir(const std::string& dir, std::string* err)
   if (!in) {
     *err =
         file.string() + ": cannot read; is " + dir + " an app directory written by `arbc build`?";
+    // `arbc build -o OUT` writes OUT/APP/: the directory given is often OUT.
+    std::vector<std::string> apps = app_dirs_in(dir);
+    if (apps.size() > 3) {
+      size_t more = apps.size() - 3;
+      apps.resize(3);
+      apps.push_back(std::to_string(more) + " more");
+    }
+    if (!apps.empty()) *err += " It holds " + join(apps, ", ", " and ") + ".";
     return std::nullopt;
   }
   std::ostringstream text;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 #include "core/app_json.h"
@@ -78,6 +79,12 @@ TEST(AppLoaderTest, LoadsAnAppDirAndNamesMissingOrChangedMonitors) {
 
   EXPECT_FALSE(load_app_dir(t.dir + "/nowhere", &err));
   EXPECT_NE(err.find("not a directory"), std::string::npos) << err;
+
+  // The directory `arbc build -o OUT` was given, not the app directory OUT/APP it wrote.
+  std::filesystem::create_directories(t.dir + "/out/app");
+  std::filesystem::copy_file(t.dir + "/app.json", t.dir + "/out/app/app.json");
+  EXPECT_FALSE(load_app_dir(t.dir + "/out", &err));
+  EXPECT_NE(err.find("It holds " + t.dir + "/out/app."), std::string::npos) << err;
 
   std::ofstream(t.dir + "/app.json") << "{\"schema_version\": ";
   EXPECT_FALSE(load_app_dir(t.dir, &err));
