@@ -5,6 +5,7 @@
 #include "compiler/docs/decision_table.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
+#include "compiler/docs/monitor_summary.h"
 
 namespace arbc::docs {
 namespace {
@@ -114,6 +115,32 @@ void expect_consistent_tables(const std::string& markdown) {
     if (columns < 0) columns = pipes;
     EXPECT_EQ(pipes, columns) << "line " << line_no << ": " << line;
   }
+}
+
+// What the connections table says a monitor does comes from the rule's body: an `accept`
+// anywhere (here inside an `if`) filters, an `emit` transforms, an empty body passes through.
+TEST(MonitorSummaryTest, SaysWhatTheBodyDoes) {
+  model::Connection c;
+  c.monitor = "monitors/c.lua";
+  c.body = model::Body{};
+  EXPECT_EQ(docs::monitor_summary(c), "passes every message through unchanged");
+  model::BodyStmt accept;
+  accept.kind = model::BodyStmt::Kind::Accept;
+  model::BodyStmt branch;
+  branch.kind = model::BodyStmt::Kind::If;
+  branch.else_body.push_back(accept);
+  c.body->push_back(branch);
+  EXPECT_EQ(docs::monitor_summary(c), "filters");
+  model::BodyStmt emit;
+  emit.kind = model::BodyStmt::Kind::Emit;
+  c.body->push_back(emit);
+  c.sets = {"e_busy"};
+  EXPECT_EQ(docs::monitor_summary(c), "filters, transforms, sets e_busy");
+  c.body.reset();
+  c.sets.clear();
+  EXPECT_EQ(docs::monitor_summary(c), "a monitor");
+  c.monitor.clear();
+  EXPECT_EQ(docs::monitor_summary(c), "none");
 }
 
 TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {

@@ -6,12 +6,29 @@
 
 namespace arbc::docs {
 
+namespace {
+
+// Whether the body has a statement of kind `kind`, at any depth (inside `if` and `every`).
+bool has_statement(const model::Body& body, model::BodyStmt::Kind kind) {
+  for (const model::BodyStmt& s : body) {
+    if (s.kind == kind || has_statement(s.then_body, kind) || has_statement(s.else_body, kind))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::string monitor_summary(const model::Connection& c) {
   std::vector<std::string> parts;
   if (c.kind == model::ConnectionKind::Feed) {
     parts.push_back("feeds " + join(c.sets) + " into the container; never delivers");
   } else {
     if (c.opaque) parts.push_back("hand-written script");
+    // From the rule's body: `accept` may refuse a message, `emit` delivers another value.
+    if (c.body && has_statement(*c.body, model::BodyStmt::Kind::Accept)) parts.push_back("filters");
+    if (c.body && has_statement(*c.body, model::BodyStmt::Kind::Emit))
+      parts.push_back("transforms");
     if (!c.sets.empty()) parts.push_back("sets " + join(c.sets));
     if (!c.unsets.empty()) parts.push_back("unsets " + join(c.unsets));
     if (c.throttle) {
@@ -25,7 +42,13 @@ std::string monitor_summary(const model::Connection& c) {
       parts.push_back(s.str());
     }
   }
-  if (parts.empty()) parts.push_back(c.monitor.empty() ? "none" : "filters and transforms");
+  if (parts.empty()) {
+    if (c.monitor.empty()) {
+      parts.push_back("none");
+    } else {
+      parts.push_back(c.body ? "passes every message through unchanged" : "a monitor");
+    }
+  }
   return join(parts);
 }
 
