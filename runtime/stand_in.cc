@@ -85,6 +85,15 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
+// How many messages the inputs file gave `port` of `module`.
+uint64_t scripted_on(const StandInLog& log, const std::string& module, const std::string& port) {
+  auto it = log.inputs.find(module);
+  if (it == log.inputs.end()) return 0;
+  uint64_t n = 0;
+  for (const TimedValue& v : it->second) n += v.port == port;
+  return n;
+}
+
 }  // namespace
 
 Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags) {
@@ -133,19 +142,6 @@ Registry registry_with_stand_ins(const model::App& app, const Registry& base,
   }
   return out;
 }
-
-namespace {
-
-// How many messages the inputs file gave `port` of `module`.
-uint64_t scripted_on(const StandInLog& log, const std::string& module, const std::string& port) {
-  auto it = log.inputs.find(module);
-  if (it == log.inputs.end()) return 0;
-  uint64_t n = 0;
-  for (const TimedValue& v : it->second) n += v.port == port;
-  return n;
-}
-
-}  // namespace
 
 std::string stand_in_summary(const model::App& app, const std::vector<std::string>& stand_ins,
                              const StandInLog& log) {

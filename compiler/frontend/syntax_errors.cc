@@ -299,16 +299,13 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
                step && step->getStart() && step->getStart()->getText() == "at" &&
                x.kinds.size() == 1 && x.has(".")) {
       // `at 1s sett e_face;`: a name where a port or set/unset goes, read as a port's module.
+      // The name is what is wrong: point at it, not at the token after it.
       antlr4::Token* name = parser->getTokenStream()->LT(-1);
-      describe_test_step(step->getStart(), offending, found, d);
-      if (name && name->getType() == ArbcParser::ID) {
-        d.message =
-            "expected 'Module.port <- VALUE;', 'set EVENT;' or 'unset EVENT;' after the "
-            "time in the test step, found '" +
-            name->getText() + "'";
-        d.loc = token_location(name, file_);
-        suggest_keyword(name, {"set", "unset"}, d);
-      }
+      bool named = name && name->getType() == ArbcParser::ID;
+      const antlr4::Token* wrong = named ? name : offending;
+      describe_test_step(step->getStart(), wrong, found_text(wrong), d);
+      d.loc = token_location(wrong, file_);
+      if (named) suggest_keyword(name, {"set", "unset"}, d);
     } else if (ctx->getRuleIndex() == ArbcParser::RuleTestStep && x.has("at") && x.has("expect") &&
                ctx->getStart() && ctx->getStart()->getTokenIndex() < offending->getTokenIndex()) {
       describe_test_step(ctx->getStart(), offending, found, d);
