@@ -59,6 +59,9 @@ constexpr CheckId kIds[] = {
     {"temporal", kVerify,
      "a property over time (`never two RULE within D`, `never RULE while EVENT`, `only RULE after "
      "OTHER`, `after OTHER, RULE within D`) is violated by a timed trace the runtime replays"},
+    {"temporal-bound", kVerify,
+     "a response's window cannot close within --temporal-bound messages at the given rates "
+     "(warning; an error with --strict)"},
     {"rate-source", kCheck,
      "a rate (`given M.p every D`) for a source that no rule, stream event or connect reads"},
     {"resource-port", kCheck,

@@ -30,6 +30,8 @@ inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no
 inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
 inline constexpr const char* kCheckResource = "resource";
 inline constexpr const char* kCheckTemporal = "temporal";  // a property over time is violated
+// A response whose window cannot close within --temporal-bound messages at the given rates.
+inline constexpr const char* kCheckTemporalBound = "temporal-bound";
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {
@@ -126,6 +128,13 @@ struct TemporalResult {
   // The environment rates (`given M.p every D`) the verdict relies on: those of the sources of
   // the port's connections, which the search assumed (verify/temporal/rates.h).
   std::vector<model::SourceRate> rates;
+  // HoldsToBound with rates: the shortest run they fill with more than `bound` messages
+  // (Rates::span), so the search saw only shorter runs; 0 otherwise.
+  double rated_span = 0;
+  // A response with rates: the fewest messages into the port of a run in which a window
+  // closes (the rated sources' messages due by its length, and the trigger when its source
+  // has no rate). A bound below it cannot show a violation; 0 otherwise.
+  int window_bound = 0;
   // A violated response: when its window closed unanswered, and why silence counts
   // ("no rate is given for ..."); empty otherwise.
   std::string explanation;

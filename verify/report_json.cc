@@ -151,6 +151,8 @@ Json temporal_json(const TemporalResult& t) {
       j["rates"].push_back(
           {{"port", r.port}, {"every", r.period}, {"location", location_json(r.loc)}});
     j["explanation"] = t.explanation.empty() ? Json(nullptr) : Json(t.explanation);
+    j["rated_span"] = t.rated_span > 0 ? Json(t.rated_span) : Json(nullptr);
+    j["window_bound"] = t.window_bound > 0 ? Json(t.window_bound) : Json(nullptr);
   }
   j["trace"] = Json::array();
   for (const TraceStep& s : t.trace) {

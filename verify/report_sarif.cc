@@ -33,6 +33,8 @@ struct CheckDoc {
 constexpr CheckDoc kChecks[] = {
     {kCheckExclusive, "Two rules of one arbitrated port can be selected in the same state."},
     {kCheckDead, "A rule can never be selected."},
+    {kCheckTemporalBound,
+     "A response's window cannot close within --temporal-bound messages at the given rates."},
     {kCheckUnfed, "A constraint or assert reads an event nothing sets into the port's container."},
     {kCheckUnused, "An event is set but nothing reads it."},
     {kCheckOwnership, "A monitor unsets an event it never sets."},

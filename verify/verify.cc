@@ -6,6 +6,7 @@
 #include "verify/structural_checks.h"
 #include "verify/temporal/confirm.h"
 #include "verify/temporal/property.h"
+#include "verify/temporal/short_bound.h"
 
 namespace arbc::verify {
 namespace {
@@ -31,6 +32,8 @@ bool check_temporal(const model::App& app, const VerifyOptions& options, z3::con
         temporal::check_property(app, p, options.temporal_bound, ctx, &data, deadline, err);
     if (!t) return false;
     temporal::confirm_violation(options.test_replayer, *t, report.app_findings);
+    if (auto f = temporal::short_bound_finding(*t, options.strict))
+      report.app_findings.push_back(std::move(*f));
     report.solver_queries += t->solver_queries;
     report.temporal.push_back(std::move(*t));
   }

@@ -93,6 +93,9 @@ golden temporal_response.sarif repo 1 --format sarif tests/verify/temporal_respo
 # A response to an event becoming present (a lost link), answered by a rule or by the port.
 golden temporal_failsafe.txt repo 1 tests/verify/temporal_failsafe.spec
 golden temporal_failsafe.json repo 1 --format json tests/verify/temporal_failsafe.spec
+golden temporal_short_bound.txt repo 0 tests/verify/temporal_short_bound.spec
+golden temporal_short_bound_strict.txt repo 1 --strict tests/verify/temporal_short_bound.spec
+golden temporal_short_bound.sarif repo 0 --format sarif tests/verify/temporal_short_bound.spec
 # Absence and precedence: proved at every decision, bounded, violated with replayed traces;
 # table_clean's put without e_taken refuted by `only put after take`.
 golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec

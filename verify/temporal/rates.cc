@@ -1,5 +1,8 @@
 #include "verify/temporal/rates.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/time_text.h"
 
 namespace arbc::verify::temporal {
@@ -35,7 +38,7 @@ Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : 
     if (accepts_every_message(*shape.connections[c])) always_accept_.push_back(static_cast<int>(c));
     const model::SourceRate* r = app.find_rate(shape.connections[c]->source);
     if (!r) continue;
-    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period)});
+    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period), r->period});
     bool listed = false;
     for (const model::SourceRate& u : used_) listed |= u.port == r->port;
     if (!listed) used_.push_back(*r);
@@ -62,6 +65,33 @@ z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon, Horizo
     all.push_back(recent(u, r.connection, r.period, n, horizon, end == Horizon::Included));
   }
   return z3::mk_and(all);
+}
+
+double Rates::span(int messages) const {
+  if (rated_.empty()) return 0;
+  // The multiples of the periods, in time order, until more than `messages` are due. A
+  // period's k-th multiple is computed as k * period (not summed) so that two periods'
+  // coinciding multiples compare equal, and are counted at the same instant.
+  std::vector<double> due;
+  for (const Rated& r : rated_)
+    for (int k = 1; k <= messages + 1; ++k) due.push_back(k * r.seconds);
+  std::sort(due.begin(), due.end());
+  return std::round(due[static_cast<size_t>(messages)] * 1e9) / 1e9;  // 6 * 0.2 is 1.2
+}
+
+int Rates::due_by(double t) const {
+  int n = 0;
+  // A multiple equal to t counts: t is a sum of spec durations and k * period may round a hair
+  // above it (6 * 0.2 > 1.2 in doubles), where Z3 compares the exact decimals.
+  for (const Rated& r : rated_)
+    for (int k = 1; k * r.seconds <= t * (1 + 1e-12); ++k) ++n;
+  return n;
+}
+
+bool Rates::rated(int c) const {
+  for (const Rated& r : rated_)
+    if (r.connection == c) return true;
+  return false;
 }
 
 z3::expr Rates::accepting(const Unrolling& u, int n) const {

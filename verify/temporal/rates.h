@@ -34,6 +34,17 @@ class Rates {
   // accepts on each of its steps, so a rated source's messages cannot all be rejected.
   z3::expr accepting(const Unrolling& u, int n) const;
 
+  // How long a run the rated sources fill with more than `messages` messages into the port (0
+  // with no rate): a search of `messages` steps sees only runs shorter than this, so a
+  // violation that needs a longer run is beyond it. Each rated connection has a message by
+  // every multiple of its period.
+  double span(int messages) const;
+  // How many messages the rated connections have by time t at the least (each one by every
+  // multiple of its period up to t).
+  int due_by(double t) const;
+  // Whether connection c of the port's shape has a rate.
+  bool rated(int c) const;
+
   // The rates a verdict on this port relies on, in spec order (for the report).
   const std::vector<model::SourceRate>& used() const { return used_; }
   bool empty() const { return rated_.empty(); }
@@ -47,6 +58,7 @@ class Rates {
   struct Rated {
     int connection;
     z3::expr period;
+    double seconds;
   };
   z3::context& ctx_;
   std::vector<Rated> rated_;

@@ -122,6 +122,18 @@ std::string temporal_text(const TemporalResult& r) {
   switch (r.outcome) {
     case TemporalResult::Outcome::HoldsToBound:
       out += "holds up to " + messages + " into " + port + " (bounded; not proved)\n";
+      // The rates force messages in, so the bound is also a limit on time: say which.
+      if (r.window_bound > r.bound) {
+        out += wrap("with the rates given, no window closes within " + messages + " into " + port +
+                        ", so this says nothing (temporal-bound, above)",
+                    "    ");
+      } else if (r.rated_span > 0) {
+        out += wrap("with the rates given, " + messages + " into " + port + " fill less than " +
+                        time_text(r.rated_span) +
+                        "s of a run: a violation that needs a longer run is not searched "
+                        "(--temporal-bound N searches further)",
+                    "    ");
+      }
       break;
     case TemporalResult::Outcome::Proved:
       out += "proved for runs of any length into " + port + ": " + r.proof +

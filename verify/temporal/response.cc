@@ -123,6 +123,12 @@ std::optional<TemporalResult> check_response(const model::App& app,
         trigger = static_cast<size_t>(m.eval(trigger_step(ctx, n), true).get_numeral_int());
       });
   result.rates = rates.used();
+  if (result.outcome == TemporalResult::Outcome::HoldsToBound)
+    result.rated_span = rates.span(result.bound);
+  if (!rates.empty()) {
+    bool trigger_is_rated = w.trigger < 0 || rates.rated(w.trigger);  // an event: by a feed
+    result.window_bound = rates.due_by(p.window) + (trigger_is_rated ? 0 : 1);
+  }
   if (result.outcome == TemporalResult::Outcome::Violated)
     result.explanation = explain(result, p, trigger, unrated);
   return result;

@@ -11,6 +11,7 @@
 
 #include "verify/temporal/judge.h"
 #include "verify/temporal/rates.h"
+#include "verify/temporal/short_bound.h"
 #include "verify/temporal/stability.h"
 #include "verify/test_models.h"
 
@@ -92,6 +93,48 @@ TEST(Response, AWindowShorterThanTheHoldPlusThePeriodIsRefutedUnderTheRate) {
   }
   expect_rate_kept(r.trace, 0.2, trigger + 1.1);
   EXPECT_EQ(r.explanation.find("no rate"), std::string::npos) << r.explanation;
+}
+
+// With a rate, the bound is also a limit on time: LookAround's messages are due by 0.2 s,
+// 0.4 s, ..., so eight messages fill less than 1.8 s, and a window of 1.2 s closes only in a
+// run with the six searches due by then and track's delivery.
+TEST(Response, TheReportSaysHowLongARunTheBoundCoversAndWhatAWindowNeeds) {
+  TemporalResult r = check(with_rate(0.2), search_resumes(1.2), 8);
+  ASSERT_EQ(r.outcome, Outcome::HoldsToBound);
+  EXPECT_DOUBLE_EQ(r.rated_span, 1.8);
+  EXPECT_EQ(r.window_bound, 7);
+  EXPECT_FALSE(short_bound_finding(r, false));
+}
+
+// Below the window's bound no window closes, whatever the app does: the verdict would hold
+// for any app, so a warning (an error with --strict) says so and names the bound to pass.
+TEST(Response, ABoundTooSmallForAnyWindowIsAWarningNotAVerdict) {
+  TemporalResult r = check(with_rate(0.2), search_resumes(1.2), 6);
+  ASSERT_EQ(r.outcome, Outcome::HoldsToBound);
+  EXPECT_DOUBLE_EQ(r.rated_span, 1.4);
+  std::optional<Finding> f = short_bound_finding(r, false);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->check, kCheckTemporalBound);
+  EXPECT_EQ(f->severity, Severity::Warning);
+  ASSERT_EQ(f->notes.size(), 1u);
+  EXPECT_NE(f->notes[0].message.find("--temporal-bound 7 or more"), std::string::npos)
+      << f->notes[0].message;
+  std::optional<Finding> strict = short_bound_finding(r, true);
+  ASSERT_TRUE(strict);
+  EXPECT_EQ(strict->severity, Severity::Error);
+  // The same window refuted (1.1 s, eleven messages) is no warning: a violation was found.
+  TemporalResult refuted = check(with_rate(0.2), search_resumes(1.1), 12);
+  ASSERT_EQ(refuted.outcome, Outcome::Violated);
+  EXPECT_FALSE(short_bound_finding(refuted, false));
+  EXPECT_EQ(refuted.rated_span, 0);
+}
+
+// Without a rate a source may publish at any times, so no run is too long for the bound.
+TEST(Response, WithoutARateNoBoundIsTooShort) {
+  TemporalResult r = check(testing::table_clean_model(), search_resumes(1.2), 3);
+  EXPECT_EQ(r.window_bound, 0);
+  EXPECT_EQ(r.rated_span, 0);
+  EXPECT_FALSE(short_bound_finding(r, false));
 }
 
 TEST(Response, AnUnknownRuleIsBadInputNotAVerdict) {

@@ -60,6 +60,8 @@ std::optional<TemporalResult> check_stability(const model::App& app,
       [&](const Unrolling& u, int n) { return violation(u, rules, rates, n, p.window, ctx); }, ctx,
       data, deadline);
   result.rates = rates.used();
+  if (result.outcome == TemporalResult::Outcome::HoldsToBound)
+    result.rated_span = rates.span(result.bound);
   return result;
 }
 
