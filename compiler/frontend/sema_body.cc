@@ -47,6 +47,15 @@ std::vector<std::string> Scope::names() const {
   return out;
 }
 
+std::string Scope::message_name() const {
+  for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame) {
+    for (const auto& [name, binding] : *frame) {
+      if (binding.kind == ast::NameKind::Message && !binding.message_unavailable) return name;
+    }
+  }
+  return {};
+}
+
 // The script is read at build time, relative to the spec's folder (or the script folder
 // check_spec was given); a missing one, or one that does not compile as Lua, is caught now.
 // Specs checked from memory without a script folder skip the check.

@@ -32,6 +32,9 @@ class Scope {
   void define(const std::string& name, Binding b) { frames_.back()[name] = std::move(b); }
   const Binding* find(const std::string& name) const;
   std::vector<std::string> names() const;
+  // The name the incoming message is bound to (the source port's), or empty outside a body
+  // that has one.
+  std::string message_name() const;
 
  private:
   std::vector<std::map<std::string, Binding>> frames_{1};

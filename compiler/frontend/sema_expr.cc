@@ -157,7 +157,19 @@ void Sema::check_name(Expr& e, Scope& scope) {
   }
   std::vector<std::string> candidates = scope.names();
   for (auto& [name, index] : consts_) candidates.push_back(name);
-  unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
+  Diagnostic& d =
+      unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
+  // `accept Joy.cmd.vx < 2` reads like a port reference, but a body names the message alone.
+  std::string message = scope.message_name();
+  if (modules_.count(e.text) && !message.empty()) {
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "'" + e.text +
+                   "' is a module: in this body the incoming message is named after its source "
+                   "port, '" +
+                   message + "' (write " + message + ".x, not " + e.text + "." + message + ".x)";
+    d.notes.push_back(std::move(note));
+  }
 }
 
 // `base.field` of a record or a vec3.
