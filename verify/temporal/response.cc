@@ -71,12 +71,13 @@ std::string explain(const TemporalResult& r, const model::TemporalProperty& p, s
     out = (p.event.empty() ? "'" + p.other + "' delivered" : p.event + " became present") + " at " +
           time_text(r.trace[i].time) + "s and time reached " +
           time_text(r.trace[i].time + p.window) + "s with no delivery of " + answer;
-  if (!unrated.empty())
-    out += "; no rate is given for " + join(unrated) + ", the source" +
-           (unrated.size() > 1 ? "s" : "") + " of " + answer +
-           ", so it may fall silent, and silence violates a response: if it publishes "
-           "periodically, say so with `given " +
-           unrated.front() + " every D;`";
+  if (!unrated.empty()) {
+    bool one = unrated.size() == 1;
+    out += "; no rate is given for " + join(unrated) + ", the source" + (one ? "" : "s") + " of " +
+           answer + (one ? ", so it may fall silent" : ", so they may fall silent") +
+           ", and silence violates a response: if " + (one ? "it publishes" : "they publish") +
+           " periodically, say so with `given " + unrated.front() + " every D;`";
+  }
   return out;
 }
 

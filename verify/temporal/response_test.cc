@@ -168,6 +168,7 @@ TEST(Response, AnEventBecomingPresentOpensAWindowAndSilenceOfEitherSourceViolate
   // Either rule answers, so both sources are named.
   EXPECT_NE(r.explanation.find("FaceDetector.face, LookAround.gaze"), std::string::npos)
       << r.explanation;
+  EXPECT_NE(r.explanation.find("so they may fall silent"), std::string::npos) << r.explanation;
 }
 
 TEST(Response, AnyRuleOfThePortAnswers) {
