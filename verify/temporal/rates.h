@@ -35,9 +35,9 @@ class Rates {
   z3::expr accepting(const Unrolling& u, int n) const;
 
   // How long a run the rated sources fill with more than `messages` messages into the port (0
-  // with no rate): a search of `messages` steps sees only runs shorter than this, so a
-  // violation that needs a longer run is beyond it. Each rated connection has a message by
-  // every multiple of its period.
+  // with no rate): a search of `messages` steps sees only runs up to this long (shorter, for
+  // a response's Included horizon), so a violation that needs a longer run is beyond it. Each
+  // rated connection has a message by every multiple of its period.
   double span(int messages) const;
   // How many messages the rated connections have by time t at the least (each one by every
   // multiple of its period up to t).

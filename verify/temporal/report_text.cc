@@ -128,9 +128,9 @@ std::string temporal_text(const TemporalResult& r) {
                         ", so this says nothing (temporal-bound, above)",
                     "    ");
       } else if (r.rated_span > 0) {
-        out += wrap("with the rates given, " + messages + " into " + port + " fill less than " +
-                        time_text(r.rated_span) +
-                        "s of a run: a violation that needs a longer run is not searched "
+        out += wrap("with the rates given, the runs searched (" + messages + " into " + port +
+                        ") last at most " + time_text(r.rated_span) +
+                        "s: a violation that needs a longer run is not searched "
                         "(--temporal-bound N searches further)",
                     "    ");
       }
