@@ -138,6 +138,28 @@ end
   EXPECT_FALSE(facts_of("require('yarp')").opaque);
 }
 
+// `local setEvent = PortMonitor.setEvent`, as the paper writes its listings: the calls
+// through the alias are not seen, so the names cannot be known.
+TEST(ScriptFacts, OpaqueWhenSetEventIsAliased) {
+  ScriptFacts f = facts_of(R"(
+local setEvent = PortMonitor.setEvent
+PortMonitor.accept = function(thing)
+  setEvent("e_face", 1.0)
+  return true
+end
+)");
+  EXPECT_TRUE(f.opaque);
+  EXPECT_EQ(f.opaque_line, 2);
+  EXPECT_NE(f.opaque_reason.find("PortMonitor.setEvent is used as a value"), std::string::npos);
+  EXPECT_TRUE(facts_of("PortMonitor.accept = function(t) local u = PortMonitor.unsetEvent "
+                       "u('e') return true end")
+                  .opaque);
+  // Calling it, or defining callbacks, is not using it as a value.
+  EXPECT_FALSE(facts_of("PortMonitor.accept = function(t) PortMonitor.setEvent('e') "
+                        "return PortMonitor.trig ~= nil end")
+                   .opaque);
+}
+
 TEST(ScriptFacts, RecordsCallsWithLinesAndArguments) {
   ScriptFacts f = facts_of(R"(PortMonitor.create = function(options)
   PortMonitor.setConstraint("e_x")
