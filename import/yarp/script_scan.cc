@@ -97,7 +97,9 @@ class Scanner {
   }
 
  private:
-  void make_opaque(const std::string& why, int line, const std::string& token = "PortMonitor") {
+  void make_opaque(const std::string& why, int line, const std::string& token = "PortMonitor",
+                   bool names_only = false) {
+    facts_.opaque_names_only = (facts_.opaque ? facts_.opaque_names_only : true) && names_only;
     if (facts_.opaque) return;
     facts_.opaque = true;
     facts_.opaque_reason = why;
@@ -157,7 +159,7 @@ class Scanner {
     }
     if ((fn == "setEvent" || fn == "unsetEvent") && !c.text) {
       make_opaque("PortMonitor." + fn + " is called with a name that is not a string literal",
-                  e.line, fn);
+                  e.line, fn, true);
     }
     facts_.calls.push_back(std::move(c));
   }
