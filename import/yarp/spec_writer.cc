@@ -105,6 +105,25 @@ std::string events_text(const YarpImport& im) {
   return s;
 }
 
+// A spec string literal of `text` (docs/language.md: `\"` and `\\` escapes), so a quote in
+// the XML's <description> is kept rather than lost. With `collapse`, runs of white space (the
+// line breaks of an indented multi-line <description>) become one space.
+std::string spec_string(const std::string& text, bool collapse) {
+  std::string out = "\"";
+  bool blank = false;
+  for (char c : text) {
+    if (collapse && (c == ' ' || c == '\n' || c == '\t' || c == '\r')) {
+      blank = true;
+      continue;
+    }
+    if (blank) out += ' ';
+    blank = false;
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 // `script "path";` relative to the spec's folder.
 std::string script_body(const ImportedConnection& ic, const std::string& spec_path) {
   if (!ic.monitor) return ";";
@@ -113,7 +132,7 @@ std::string script_body(const ImportedConnection& ic, const std::string& spec_pa
       std::filesystem::path(ic.monitor->path)
           .lexically_relative(base.empty() ? std::filesystem::path(".") : base);
   std::string p = rel.empty() ? ic.monitor->path : rel.generic_string();
-  return " { script \"" + p + "\"; }";
+  return " { script " + spec_string(p, false) + "; }";
 }
 
 bool spec_names_ok(const Constraint& c) {
@@ -160,11 +179,7 @@ std::string write_spec(const YarpImport& im, const std::string& spec_path) {
   s += "// Rules run the original monitors, written for YARP's Lua API (`script`).\n// Ports:\n";
   for (const auto& [yarp, p] : ports) s += "//   " + yarp + " = " + p.module + "." + p.port + "\n";
   s += "app " + identifier(im.app.name);
-  if (!im.app.description.empty()) {
-    std::string d;
-    for (char c : im.app.description) d += c == '"' || c == '\\' || c == '\n' ? ' ' : c;
-    s += " \"" + d + "\"";
-  }
+  if (!im.app.description.empty()) s += " " + spec_string(im.app.description, true);
   s += ";\n\n// A YARP Bottle holds any values; the spec does not type them.\ntype Bottle = "
        "list<string>;\n\n";
   s += modules_text(ports) + "\n" + events_text(im);
