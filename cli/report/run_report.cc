@@ -133,8 +133,8 @@ void append_timelines(std::string& out, const RunReportInput& input) {
       "<p class=\"note\">One lane per connection. Bars above a lane's midline count "
       "deliveries, bars below count drops, coloured by the most frequent reason; each bar is "
       "a " +
-      seconds_text(bin) +
-      " s bin, its height relative to the lane's busiest bin (hover for the exact counts). "
+      span_text(bin) +
+      " bin, its height relative to the lane's busiest bin (hover for the exact counts). "
       "Right: delivered / dropped.</p>\n";
   append_legend(out);
   out += connection_timeline_svg(timeline, first_feed, layout);
