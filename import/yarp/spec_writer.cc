@@ -144,6 +144,28 @@ bool spec_names_ok(const Constraint& c) {
   return true;
 }
 
+// What arbc could not follow in the connection's monitor, said where the reader of the spec
+// sees it (the import's warnings on stderr are gone once the spec is written).
+std::string unknowns_text(const ImportedConnection& ic) {
+  if (!ic.monitor) return "";
+  const MonitorAnalysis& m = *ic.monitor;
+  std::string file = std::filesystem::path(m.path).filename().string();
+  if (!m.run.loaded || !m.run.created) {
+    return "  // " + file + (!m.run.loaded ? " does not load" : "'s create fails") +
+           ": YARP passes no message through it;\n"
+           "  // the proof takes it as always selected and setting any event\n";
+  }
+  if (!ic.analysed) return "  // its constraint changes after create: taken as always selected\n";
+  if (m.facts.opaque) {
+    std::string where =
+        m.facts.opaque_line > 0 ? file + ":" + std::to_string(m.facts.opaque_line) : file;
+    return "  // " + where + ": " + m.facts.opaque_reason +
+           ";\n  // arbc cannot know every event it sets: the proof takes it as setting any "
+           "event\n";
+  }
+  return "";
+}
+
 // A `script` rule is opaque to the verifier, so what the monitor provably does before the
 // decision (must-set, must-unset) goes into its `when`: the effective guard, which selects the
 // same messages at run time (docs/design.md#effective-guards).
@@ -152,7 +174,7 @@ std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string
   const ImportedConnection& ic = im.connections[i];
   const model::Connection& c = im.app.connections[i];
   Constraint guard = model::effective_guard(im.app, c.destination, c);
-  std::string s;
+  std::string s = unknowns_text(ic);
   if (ic.meaning.parsed && !(c.constraint == ic.meaning.written) &&
       c.kind == model::ConnectionKind::Rule)
     s += "  // written `" + ic.meaning.text + "`: YARP's evaluator selects as below\n";
