@@ -1,7 +1,9 @@
 // `arbc import yarp APP.xml -o app.spec`: a yarpmanager application as a spec whose rules run
 // the original Lua monitors (docs/yarp.md#moving-to-a-spec).
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "cli/commands.h"
@@ -46,14 +48,18 @@ int import_command(std::span<char*> args) {
                  input.c_str());
     return kExitBadInput;
   }
+  errno = 0;
   std::ofstream out(output, std::ios::binary);
   out << yarp::write_spec(im, output);
   if (!out.flush()) {
-    std::fprintf(stderr, "arbc import: cannot write %s\n", output.c_str());
+    // Say why (most often: -o names a folder that does not exist), as `arbc run --report` does.
+    std::fprintf(stderr, "arbc import: cannot write %s: %s\n", output.c_str(),
+                 errno ? std::strerror(errno) : "write failed");
     return kExitBadInput;
   }
-  std::fprintf(stderr, "arbc import: wrote %s (%zu connections)\n", output.c_str(),
-               im.app.connections.size());
+  size_t n = im.app.connections.size();
+  std::fprintf(stderr, "arbc import: wrote %s (%zu connection%s)\n", output.c_str(), n,
+               n == 1 ? "" : "s");
   return kExitOk;
 }
 

@@ -322,6 +322,14 @@ bool Runtime::load_monitor(Connection& c, const std::string& app_dir, std::strin
   }
   if (!c.monitor) {
     *error = where + ": its monitor script failed to load: " + load_error;
+    // `arbc import yarp` keeps each YARP monitor as the rule's `script`, which runs on YARP's
+    // Lua API (require("yarp"), PortMonitor.*), not on this runtime: say what to do instead of
+    // leaving the user with "attempt to call a nil value (global 'require')".
+    if (script.find("PortMonitor.") != std::string::npos)
+      *error +=
+          " (the script is a YARP port monitor, written for YARP's Lua API; arbc's "
+          "runtime cannot run it: replace the rule's `script` with spec statements, see "
+          "docs/yarp.md#moving-to-a-spec)";
     return false;
   }
   c.has_accept = c.monitor->defines("accept");

@@ -45,6 +45,13 @@ std::string seconds_text(double t) {
   return buffer;
 }
 
+std::string span_text(double seconds) {
+  if (seconds >= 0.1) return seconds_text(seconds) + " s";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g ms", seconds * 1000);
+  return buffer;
+}
+
 std::string coordinate(double x) {
   double rounded = std::round(x * 10) / 10;
   if (rounded == 0) rounded = 0;  // no "-0"

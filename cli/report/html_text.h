@@ -17,6 +17,10 @@ std::string html_escape(std::string_view s);
 // reader, and stable across platforms.
 std::string seconds_text(double t);
 
+// A short span of time with its unit, to 3 significant digits: "1.67 ms" below a tenth of a
+// second (where seconds_text would round 1.67 ms to "0.002"), else "36.000 s".
+std::string span_text(double seconds);
+
 // A compact decimal for SVG coordinates: at most 1 decimal, no trailing ".0".
 std::string coordinate(double x);
 

@@ -21,6 +21,10 @@ TEST(HtmlTextTest, ControlCharactersBecomeReplacementCharacters) {
 TEST(HtmlTextTest, NumberFormats) {
   EXPECT_EQ(seconds_text(12.3), "12.300");
   EXPECT_EQ(seconds_text(0), "0.000");
+  // A 500 ms run's 300 bins are 1.67 ms wide, not "0.002 s".
+  EXPECT_EQ(span_text(0.5 / 300), "1.67 ms");
+  EXPECT_EQ(span_text(9.7 / 300), "32.3 ms");
+  EXPECT_EQ(span_text(36), "36.000 s");
   EXPECT_EQ(coordinate(240), "240");
   EXPECT_EQ(coordinate(12.34), "12.3");
   EXPECT_EQ(coordinate(-0.01), "0");

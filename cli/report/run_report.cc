@@ -80,6 +80,11 @@ void append_header(std::string& out, const RunHeader& h) {
   }
 }
 
+// "1 connection", "2 connections": the totals line is read as a sentence.
+std::string counted(uint64_t n, const std::string& noun, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural);
+}
+
 void append_totals(std::string& out, const std::vector<ConnectionRow>& rows) {
   uint64_t arrived = 0, delivered = 0, dropped = 0, pending = 0, errors = 0, quarantined = 0;
   for (const ConnectionRow& r : rows) {
@@ -90,11 +95,12 @@ void append_totals(std::string& out, const std::vector<ConnectionRow>& rows) {
     errors += r.stats.errors;
     quarantined += r.stats.quarantined ? 1 : 0;
   }
-  out += "<p id=\"totals\">" + std::to_string(rows.size()) +
-         " connections: " + std::to_string(arrived) + " messages received, " +
-         std::to_string(delivered) + " delivered, " + std::to_string(dropped) + " dropped, " +
-         std::to_string(pending) + " still queued at the end; " + std::to_string(errors) +
-         " monitor errors, " + std::to_string(quarantined) + " connections quarantined.</p>\n";
+  out += "<p id=\"totals\">" + counted(rows.size(), "connection", "connections") + ": " +
+         counted(arrived, "message", "messages") + " arrived, " + std::to_string(delivered) +
+         " delivered, " + std::to_string(dropped) + " dropped, " + std::to_string(pending) +
+         " pending (still queued at the end); " +
+         counted(errors, "monitor error", "monitor errors") + ", " +
+         counted(quarantined, "connection", "connections") + " quarantined.</p>\n";
 }
 
 void append_legend(std::string& out) {
@@ -127,8 +133,8 @@ void append_timelines(std::string& out, const RunReportInput& input) {
       "<p class=\"note\">One lane per connection. Bars above a lane's midline count "
       "deliveries, bars below count drops, coloured by the most frequent reason; each bar is "
       "a " +
-      seconds_text(bin) +
-      " s bin, its height relative to the lane's busiest bin (hover for the exact counts). "
+      span_text(bin) +
+      " bin, its height relative to the lane's busiest bin (hover for the exact counts). "
       "Right: delivered / dropped.</p>\n";
   append_legend(out);
   out += connection_timeline_svg(timeline, first_feed, layout);
@@ -200,15 +206,16 @@ void append_drops_by_reason(std::string& out, const RunReportInput& input) {
 
 void append_counters(std::string& out, const std::vector<ConnectionRow>& rows) {
   out +=
-      "<h2>Counters per connection</h2>\n<p class=\"note\">For every connection: received = "
-      "delivered + all drops + queued at the end.</p>\n<div class=\"wide\">\n"
+      "<h2>Counters per connection</h2>\n<p class=\"note\">For every connection: arrived = "
+      "delivered + all drops + pending (still queued at the end). The names are those of "
+      "<code>arbc run</code>'s table.</p>\n<div class=\"wide\">\n"
       "<table id=\"counters\">\n"
       "<tr><th>connection</th><th>source &#8594; destination</th><th>constraint</th>"
-      "<th class=\"n\">received</th><th class=\"n\">delivered</th>";
+      "<th class=\"n\">arrived</th><th class=\"n\">delivered</th>";
   for (int r = 0; r < kDropReasonCount; ++r) {
     out += std::string("<th class=\"n\">") + drop_reason_name(static_cast<DropReason>(r)) + "</th>";
   }
-  out += "<th class=\"n\">queued</th><th class=\"n\">errors</th><th>status</th></tr>\n";
+  out += "<th class=\"n\">pending</th><th class=\"n\">errors</th><th>status</th></tr>\n";
   ConnectionStats total;
   for (const ConnectionRow& row : rows) {
     const ConnectionStats& s = row.stats;

@@ -75,7 +75,7 @@ size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
-// The numbers in a counters row: received, delivered, the drop reasons, queued, errors.
+// The numbers in a counters row: arrived, delivered, the drop reasons, pending, errors.
 std::vector<uint64_t> row_numbers(const std::string& html, const std::string& escaped_name) {
   std::string table = section(html, "table", "counters");
   size_t begin = table.find("data-connection=\"" + escaped_name + "\"");
@@ -257,6 +257,14 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   EXPECT_NE(problems.find("3.000  quarantined broken: 5 failures in a row"), std::string::npos)
       << problems;
   EXPECT_EQ(count(html, "error on broken"), 5u);
+  // The totals line reads as a sentence for one connection too.
+  EXPECT_NE(html.find("<p id=\"totals\">1 connection: 8 messages arrived, 0 delivered, 8 "
+                      "dropped, 0 pending (still queued at the end); 5 monitor errors, 1 "
+                      "connection quarantined.</p>"),
+            std::string::npos);
+  // The counters' columns carry the names of `arbc run`'s table (arrived, pending).
+  EXPECT_NE(html.find("<th class=\"n\">arrived</th>"), std::string::npos);
+  EXPECT_NE(html.find("<th class=\"n\">pending</th>"), std::string::npos);
   // The three later messages are dropped as quarantined, the five before as monitor errors.
   EXPECT_EQ(row_numbers(html, "broken"),
             (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 0, 5}));

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "import/yarp/xml_mismatch.h"
+
 namespace arbc::yarp {
 namespace {
 
@@ -154,6 +156,19 @@ std::optional<XmlApplication> read_application_xml(const std::string& path,
   }
   tinyxml2::XMLDocument doc;
   if (doc.Parse(app.text.data(), app.text.size()) != tinyxml2::XML_SUCCESS) {
+    std::optional<XmlMismatch> m;
+    if (doc.ErrorID() == tinyxml2::XML_ERROR_MISMATCHED_ELEMENT) m = find_xml_mismatch(app.text);
+    if (m) {
+      // tinyxml2 points at where the element opens; the typo is at the closing tag.
+      std::string what = m->found.empty()  ? m->open + " is never closed"
+                         : m->open.empty() ? m->found + " closes no open element"
+                                           : m->found + " does not close " + m->open + " (line " +
+                                                 std::to_string(m->open_line) + ")";
+      model::SourceLocation loc{path, m->line, m->column, m->line, 0};
+      loc.end_column = m->column + static_cast<int>((m->found.empty() ? m->open : m->found).size());
+      diags.push_back(error_at(loc, "the XML does not parse: " + what));
+      return std::nullopt;
+    }
     std::string what = xml_error_text(doc);
     diags.push_back(error_at(locate(path, app.text, doc.ErrorLineNum(), ""),
                              "the XML does not parse: " + what));

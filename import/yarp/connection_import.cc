@@ -2,6 +2,7 @@
 // YARP evaluates it. Part of yarp_import.h.
 #include "import/yarp/connection_import.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -40,6 +41,18 @@ void script_error(const ImportedConnection& ic, const MonitorAnalysis& m,
                : "on YARP this connection fails to load or rejects every message (a Lua error "
                  "in create, or create not returning true); arbc takes it as always selected "
                  "and setting any event"));
+  // Lua names the script's line ("ball.lua:3: ')' expected near 'return'"): point there too,
+  // so the user lands on the line to fix, not only on the XML's <protocol>.
+  std::string prefix = m.path + ":";
+  if (m.run.error.compare(0, prefix.size(), prefix) == 0) {
+    int line = std::atoi(m.run.error.c_str() + prefix.size());
+    if (line > 0) {
+      d.notes.push_back(note(!m.run.loaded
+                                 ? "Lua reports the error here; YARP cannot load the script either"
+                                 : "create fails here",
+                             locate(m.path, m.text, line, "")));
+    }
+  }
   out.push_back(std::move(d));
 }
 

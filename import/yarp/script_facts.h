@@ -41,11 +41,17 @@ struct ScriptFacts {
   std::string opaque_reason;
   int opaque_line = 0;
   std::string opaque_token;  // the text at opaque_line to point at
+  // Opaque only because some setEvent/unsetEvent names are computed: the callbacks are still
+  // the script's own, so what `accept` returns is known (accept_may_accept), and a status
+  // monitor that sets computed events and returns false (the paper's C3) is still a feed.
+  bool opaque_names_only = false;
 
   // Path facts; valid only when paths_ok (else why not, in paths_reason).
   bool paths_ok = false;
   std::string paths_reason;
-  bool accept_may_accept = true;  // some path of accept returns a true value (or no accept)
+  // Some path of accept returns a true value (or no accept). Valid when paths_ok, and also
+  // when the script is opaque_names_only.
+  bool accept_may_accept = true;
   std::set<std::string> must_set, must_unset;                   // on every accepting path of accept
   std::vector<std::pair<std::string, std::string>> never_both;  // sorted pairs
   // Events `update` sets with a known positive lifetime on every path, and nothing but update

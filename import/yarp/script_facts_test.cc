@@ -138,6 +138,55 @@ end
   EXPECT_FALSE(facts_of("require('yarp')").opaque);
 }
 
+// `local setEvent = PortMonitor.setEvent`, as the paper writes its listings: the calls
+// through the alias are not seen, so the names cannot be known.
+TEST(ScriptFacts, OpaqueWhenSetEventIsAliased) {
+  ScriptFacts f = facts_of(R"(
+local setEvent = PortMonitor.setEvent
+PortMonitor.accept = function(thing)
+  setEvent("e_face", 1.0)
+  return true
+end
+)");
+  EXPECT_TRUE(f.opaque);
+  EXPECT_FALSE(f.opaque_names_only);
+  EXPECT_EQ(f.opaque_line, 2);
+  EXPECT_NE(f.opaque_reason.find("PortMonitor.setEvent is used as a value"), std::string::npos);
+  EXPECT_TRUE(facts_of("PortMonitor.accept = function(t) local u = PortMonitor.unsetEvent "
+                       "u('e') return true end")
+                  .opaque);
+  // Calling it, or defining callbacks, is not using it as a value.
+  EXPECT_FALSE(facts_of("PortMonitor.accept = function(t) PortMonitor.setEvent('e') "
+                        "return PortMonitor.trig ~= nil end")
+                   .opaque);
+}
+
+// The paper's status monitor (its C3): computed names, and accept never returns true. The
+// names are unknown, but it never delivers.
+TEST(ScriptFacts, ComputedNamesStillTellWhatAcceptReturns) {
+  ScriptFacts f = facts_of(R"(
+PortMonitor.accept = function(thing)
+  PortMonitor.setEvent(thing:asBottle():get(0):asString(), 0.5)
+  return false
+end
+)");
+  EXPECT_TRUE(f.opaque);
+  EXPECT_TRUE(f.opaque_names_only);
+  EXPECT_FALSE(f.paths_ok);
+  EXPECT_FALSE(f.accept_may_accept);
+  EXPECT_TRUE(f.must_set.empty());
+  // Another reason to be opaque (code loaded at run time may replace accept) keeps it unknown.
+  ScriptFacts g = facts_of(R"(
+PortMonitor.accept = function(thing)
+  PortMonitor.setEvent(thing:asBottle():get(0):asString(), 0.5)
+  return false
+end
+load("x = 1")()
+)");
+  EXPECT_FALSE(g.opaque_names_only);
+  EXPECT_TRUE(g.accept_may_accept);
+}
+
 TEST(ScriptFacts, RecordsCallsWithLinesAndArguments) {
   ScriptFacts f = facts_of(R"(PortMonitor.create = function(options)
   PortMonitor.setConstraint("e_x")

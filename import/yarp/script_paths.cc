@@ -419,10 +419,12 @@ void delivery_events(const Outcomes& update, const std::vector<std::string>& eve
 
 void analyse_paths(const LuaFunction& chunk, ScriptFacts& facts) {
   facts.paths_ok = false;
-  if (facts.opaque) {
+  if (facts.opaque && !facts.opaque_names_only) {
     facts.paths_reason = "the script's event names are not all known";
     return;
   }
+  // With computed names only, the paths are followed for what accept returns (a call with a
+  // computed name has no known effect); the event facts are dropped below.
   PathAnalysis analysis(chunk, facts);
   if (analysis.too_many_events()) {
     facts.paths_reason = "the script names more than 64 events";
@@ -453,10 +455,14 @@ void analyse_paths(const LuaFunction& chunk, ScriptFacts& facts) {
       }
     }
     facts.accept_may_accept = accepts;
-    for (size_t i = 0; accepts && i < events.size(); ++i) {
+    for (size_t i = 0; accepts && !facts.opaque && i < events.size(); ++i) {
       if (all_set[i]) facts.must_set.insert(events[i]);
       if (all_unset[i]) facts.must_unset.insert(events[i]);
     }
+  }
+  if (facts.opaque) {
+    facts.paths_reason = "the script's event names are not all known";
+    return;
   }
   if (runs.count("update")) delivery_events(runs["update"], events, facts);
   for (size_t a = 0; a < events.size(); ++a) {

@@ -97,7 +97,9 @@ class Scanner {
   }
 
  private:
-  void make_opaque(const std::string& why, int line, const std::string& token = "PortMonitor") {
+  void make_opaque(const std::string& why, int line, const std::string& token = "PortMonitor",
+                   bool names_only = false) {
+    facts_.opaque_names_only = (facts_.opaque ? facts_.opaque_names_only : true) && names_only;
     if (facts_.opaque) return;
     facts_.opaque = true;
     facts_.opaque_reason = why;
@@ -157,7 +159,7 @@ class Scanner {
     }
     if ((fn == "setEvent" || fn == "unsetEvent") && !c.text) {
       make_opaque("PortMonitor." + fn + " is called with a name that is not a string literal",
-                  e.line, fn);
+                  e.line, fn, true);
     }
     facts_.calls.push_back(std::move(c));
   }
@@ -174,6 +176,13 @@ class Scanner {
         if (is_name(e->items[0].get(), "PortMonitor")) {
           if (e->items[1]->kind != LuaExpr::Kind::String)
             make_opaque("PortMonitor is indexed with a computed key", e->line);
+          // Not the callee of a call (those are visited in the Call case): `local setEvent =
+          // PortMonitor.setEvent`, the paper's unqualified style, calls it under another name.
+          const std::string& key = e->items[1]->text;
+          if (e->items[1]->kind == LuaExpr::Kind::String &&
+              (key == "setEvent" || key == "unsetEvent"))
+            make_opaque("PortMonitor." + key + " is used as a value, so its calls are not seen",
+                        e->line, "PortMonitor." + key);
           expr(e->items[1].get());
           return;
         }
@@ -185,6 +194,11 @@ class Scanner {
                   *k == "setTrigInterval"))
           call(*e, *k);
         if (callee->kind == LuaExpr::Kind::Name) dynamic_code(*e);
+        if (k) {
+          // PortMonitor.f(...): the callee is not a use of PortMonitor.f as a value.
+          for (size_t i = 1; i < e->items.size(); ++i) expr(e->items[i].get());
+          return;
+        }
         break;
       }
       case LuaExpr::Kind::Function:

@@ -105,6 +105,25 @@ std::string events_text(const YarpImport& im) {
   return s;
 }
 
+// A spec string literal of `text` (docs/language.md: `\"` and `\\` escapes), so a quote in
+// the XML's <description> is kept rather than lost. With `collapse`, runs of white space (the
+// line breaks of an indented multi-line <description>) become one space.
+std::string spec_string(const std::string& text, bool collapse) {
+  std::string out = "\"";
+  bool blank = false;
+  for (char c : text) {
+    if (collapse && (c == ' ' || c == '\n' || c == '\t' || c == '\r')) {
+      blank = true;
+      continue;
+    }
+    if (blank) out += ' ';
+    blank = false;
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 // `script "path";` relative to the spec's folder.
 std::string script_body(const ImportedConnection& ic, const std::string& spec_path) {
   if (!ic.monitor) return ";";
@@ -113,7 +132,7 @@ std::string script_body(const ImportedConnection& ic, const std::string& spec_pa
       std::filesystem::path(ic.monitor->path)
           .lexically_relative(base.empty() ? std::filesystem::path(".") : base);
   std::string p = rel.empty() ? ic.monitor->path : rel.generic_string();
-  return " { script \"" + p + "\"; }";
+  return " { script " + spec_string(p, false) + "; }";
 }
 
 bool spec_names_ok(const Constraint& c) {
@@ -125,6 +144,28 @@ bool spec_names_ok(const Constraint& c) {
   return true;
 }
 
+// What arbc could not follow in the connection's monitor, said where the reader of the spec
+// sees it (the import's warnings on stderr are gone once the spec is written).
+std::string unknowns_text(const ImportedConnection& ic) {
+  if (!ic.monitor) return "";
+  const MonitorAnalysis& m = *ic.monitor;
+  std::string file = std::filesystem::path(m.path).filename().string();
+  if (!m.run.loaded || !m.run.created) {
+    return "  // " + file + (!m.run.loaded ? " does not load" : "'s create fails") +
+           ": YARP passes no message through it;\n"
+           "  // the proof takes it as always selected and setting any event\n";
+  }
+  if (!ic.analysed) return "  // its constraint changes after create: taken as always selected\n";
+  if (m.facts.opaque) {
+    std::string where =
+        m.facts.opaque_line > 0 ? file + ":" + std::to_string(m.facts.opaque_line) : file;
+    return "  // " + where + ": " + m.facts.opaque_reason +
+           ";\n  // arbc cannot know every event it sets: the proof takes it as setting any "
+           "event\n";
+  }
+  return "";
+}
+
 // A `script` rule is opaque to the verifier, so what the monitor provably does before the
 // decision (must-set, must-unset) goes into its `when`: the effective guard, which selects the
 // same messages at run time (docs/design.md#effective-guards).
@@ -133,7 +174,7 @@ std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string
   const ImportedConnection& ic = im.connections[i];
   const model::Connection& c = im.app.connections[i];
   Constraint guard = model::effective_guard(im.app, c.destination, c);
-  std::string s;
+  std::string s = unknowns_text(ic);
   if (ic.meaning.parsed && !(c.constraint == ic.meaning.written) &&
       c.kind == model::ConnectionKind::Rule)
     s += "  // written `" + ic.meaning.text + "`: YARP's evaluator selects as below\n";
@@ -160,11 +201,7 @@ std::string write_spec(const YarpImport& im, const std::string& spec_path) {
   s += "// Rules run the original monitors, written for YARP's Lua API (`script`).\n// Ports:\n";
   for (const auto& [yarp, p] : ports) s += "//   " + yarp + " = " + p.module + "." + p.port + "\n";
   s += "app " + identifier(im.app.name);
-  if (!im.app.description.empty()) {
-    std::string d;
-    for (char c : im.app.description) d += c == '"' || c == '\\' || c == '\n' ? ' ' : c;
-    s += " \"" + d + "\"";
-  }
+  if (!im.app.description.empty()) s += " " + spec_string(im.app.description, true);
   s += ";\n\n// A YARP Bottle holds any values; the spec does not type them.\ntype Bottle = "
        "list<string>;\n\n";
   s += modules_text(ports) + "\n" + events_text(im);

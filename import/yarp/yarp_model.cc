@@ -62,11 +62,13 @@ model::Connection model_connection(const ImportedConnection& ic) {
   return c;
 }
 
-// A connection whose accept provably never returns a true value never delivers: a feed.
+// A connection whose accept provably never returns a true value never delivers: a feed. A
+// monitor whose event names are computed can be one too (it still sets any event).
 bool never_delivers(const ImportedConnection& ic) {
   if (!ic.analysed || !ic.monitor) return false;
   const ScriptFacts& f = ic.monitor->facts;
-  return !f.opaque && f.paths_ok && f.callbacks.count("accept") && !f.accept_may_accept;
+  bool returns_known = f.paths_ok || (f.opaque && f.opaque_names_only);
+  return returns_known && f.callbacks.count("accept") && !f.accept_may_accept;
 }
 
 // YARP: unsetEvent removes only the caller's own copy of an event. So "this monitor unsets e"
