@@ -63,7 +63,11 @@ bool write_report(const RunEnd& end, const report::RunReportInput& input) {
 
 int finish_run(const RunEnd& end, const std::string& signal) {
   if (!signal.empty()) std::fprintf(stderr, "arbc run: interrupted (%s)\n", signal.c_str());
-  print_run_line(end, end.runtime.stop_reason());
+  // The run line and the report name the signal: Ctrl-C and a service manager's SIGTERM are
+  // different stories when the report is read later.
+  std::string stop = end.runtime.stop_reason();
+  if (!signal.empty() && stop == "interrupted") stop += " by " + signal;
+  print_run_line(end, stop);
   bool success = true;
   std::string verdict, summary;
   if (Environment* env = end.runtime.environment()) {
@@ -85,7 +89,9 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
   }
   std::printf("result: %s\n", verdict.c_str());
-  if (!write_report(end, report_input(end, success, verdict, summary))) return 3;
+  report::RunReportInput input = report_input(end, success, verdict, summary);
+  input.header.stop_reason = stop;
+  if (!write_report(end, input)) return 3;
   return success ? 0 : 3;
 }
 

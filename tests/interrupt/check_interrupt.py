@@ -78,11 +78,14 @@ def pattern_case(arbc, plugin, sig, name):
             fail(f"arbc run took {seconds:.2f} s to end after {name}", out, err)
         if f"arbc run: interrupted ({name})" not in err:
             fail("stderr does not say the run was interrupted", out, err)
-        if "stopped: interrupted" not in out:
-            fail("the run line does not say it was interrupted", out, err)
+        if f"stopped: interrupted by {name}" not in out:
+            fail(f"the run line does not say it was interrupted by {name}", out, err)
         if "string.find: work budget" not in err and ": interrupted" not in err:
             fail("no monitor error from the pattern", out, err)
         check_outputs(out, err, trace, report, '"stop: interrupted"')
+        with open(report) as f:
+            if f"interrupted by {name}" not in f.read():
+                fail(f"the report does not name {name}", out, err)
         print(f"ok: ended {seconds:.3f} s after {name}, exit {code}")
 
 
