@@ -96,8 +96,8 @@ TEST(Response, AWindowShorterThanTheHoldPlusThePeriodIsRefutedUnderTheRate) {
 }
 
 // With a rate, the bound is also a limit on time: LookAround's messages are due by 0.2 s,
-// 0.4 s, ..., so the runs of eight messages last at most 1.8 s, and a window of 1.2 s closes only in a
-// run with the six searches due by then and track's delivery.
+// 0.4 s, ..., so the runs of eight messages last at most 1.8 s, and a window of 1.2 s closes only
+// in a run with the six searches due by then and track's delivery.
 TEST(Response, TheReportSaysHowLongARunTheBoundCoversAndWhatAWindowNeeds) {
   TemporalResult r = check(with_rate(0.2), search_resumes(1.2), 8);
   ASSERT_EQ(r.outcome, Outcome::HoldsToBound);
