@@ -136,6 +136,18 @@ TEST(Frontend, SyntaxErrorsAreOnePerDeclarationAndInWords) {
   }
 }
 
+// A syntax error elsewhere must not split `assume E only after R;` at its `only` (which also
+// starts `only R after O;`): that gave two more errors on a line without one.
+TEST(Frontend, ASyntaxErrorDoesNotBreakAnAssumeOnlyAfter) {
+  CheckResult r = check_text(
+      "app t;\nmodule A { out x: float; in y: float; out s: list<string>; }\n"
+      "events from A.s { e };\narbitrate A.y { r: from A.x { let v = x } }\n"
+      "assume e only after r;\n",
+      "s.spec");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.diagnostics[0].loc.line, 4);
+}
+
 TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
   for (const char* name : {"search_and_track", "face_filter"}) {
     CheckResult r = check_file(arbc::testing::source_dir() + "/specs/" + name + ".spec");
