@@ -148,6 +148,22 @@ TEST(Frontend, ASyntaxErrorDoesNotBreakAnAssumeOnlyAfter) {
   EXPECT_EQ(r.diagnostics[0].loc.line, 4);
 }
 
+// A misspelt module or port is pointed at alone, not the whole `Module.port`: an editor's
+// quick fix replaces what is pointed at with the name the note suggests.
+TEST(Frontend, AMisspeltModuleOrPortIsPointedAtAlone) {
+  CheckResult r = check_text(
+      "app t;\nmodule Head { in gaze: vec3; }\nmodule Look { out gaze: vec3; }\n"
+      "connect Lok.gaze -> Head.gaz;\n",
+      "m.spec");
+  ASSERT_EQ(r.diagnostics.size(), 2u) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.diagnostics[0].id, "unknown-module");
+  EXPECT_EQ(r.diagnostics[0].loc.column, 9);
+  EXPECT_EQ(r.diagnostics[0].loc.end_column, 12);  // `Lok`
+  EXPECT_EQ(r.diagnostics[1].id, "unknown-port");
+  EXPECT_EQ(r.diagnostics[1].loc.column, 26);
+  EXPECT_EQ(r.diagnostics[1].loc.end_column, 29);  // `gaz`
+}
+
 TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
   for (const char* name : {"search_and_track", "face_filter"}) {
     CheckResult r = check_file(arbc::testing::source_dir() + "/specs/" + name + ".spec");
