@@ -414,6 +414,16 @@ class Verification(Session):
                           d["message"])
             self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
 
+    def test_a_proofs_summary_goes_to_the_clients_log_not_stderr(self):
+        # Neovim records each line of a server's stderr as an [ERROR] in its lsp.log.
+        self.open_spec()
+        logged = self.c.wait_notification(
+            lambda m: m.get("method") == "window/logMessage", timeout=120)["params"]
+        self.assertEqual(logged["type"], 4)
+        self.assertIn("proved: 4 arbitrated ports, 0 errors", logged["message"])
+        self.assertEqual(self.c.shutdown_and_exit(), 0)
+        self.assertEqual(self.c.stderr_after_exit(), "")
+
     def test_a_proved_spec_gets_no_findings_on_save(self):
         self.assertEqual(self.open_spec(), [])
         self.c.notify("textDocument/didSave", {"textDocument": {"uri": self.uri}})
