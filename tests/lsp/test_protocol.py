@@ -238,7 +238,7 @@ class TestsFile(Session):
         diags = self.open_spec(broken)
         self.assertEqual([(d["code"], d["range"]["start"]) for d in diags], [(
             check_json_at(broken, self.path)[0]["id"],
-            position_of(broken, "HeadControl.gaze_x", 0, 0))])
+            position_of(broken, "gaze_x receives", 0, 0))])  # the misspelt port alone
 
 
 class Hover(Session):
