@@ -15,7 +15,9 @@ int lsp_command(std::span<char*> args) {
   CLI::App app{
       "Serve the Language Server Protocol on stdin/stdout for editors: diagnostics as you type,\n"
       "the proof on save, hover, go to definition, references, outline, completion, quick fixes\n"
-      "and rename. Messages go to stdout; a log of what the server did goes to stderr."};
+      "and rename. Messages go to stdout; what went wrong (a malformed message, a client\n"
+      "gone) goes to stderr; what the server did (each proof's summary) goes to the client's\n"
+      "log as window/logMessage."};
   app.name("arbc lsp");
   lsp::ServerOptions options;
   options.version = ARBC_VERSION;

@@ -12,15 +12,6 @@ std::string loc_key(const char* prefix, const Loc& l, const std::string& name) {
   return std::string(prefix) + std::to_string(l.line) + ":" + std::to_string(l.column) + ":" + name;
 }
 
-// The `port` part of `Module.port` (the end of the reference).
-Loc port_part(const ast::PortRef& r) {
-  Loc l = r.loc;
-  int len = static_cast<int>(r.port.size());
-  if (l.end_line != l.line || l.end_column - len < l.column) return name_loc(l, r.port);
-  l.column = l.end_column - len;
-  return l;
-}
-
 class Builder {
  public:
   Builder(const ast::Spec& spec, SymbolIndex& ix) : spec_(spec), ix_(ix) {}
@@ -208,7 +199,7 @@ class Builder {
   // Declares the message name a body or predicate sees, at the source port's name.
   template <typename F>
   void with_message(const ast::PortRef& source, const std::string& name, F body) {
-    Loc at = port_part(source);
+    Loc at = source.port_loc;
     message_key_ = loc_key("message:", at, name);
     // No occurrence at the definition: the port's own occurrence is there.
     ix_.add_symbol({.kind = SymbolKind::Local,
@@ -223,8 +214,8 @@ class Builder {
 
   void port_ref(const ast::PortRef& r) {
     if (!r.module_decl) return;
-    ix_.add_occurrence("module:" + r.module, name_loc(r.loc, r.module));
-    if (r.port_decl) ix_.add_occurrence("port:" + r.qualified(), port_part(r));
+    ix_.add_occurrence("module:" + r.module, r.module_loc);
+    if (r.port_decl) ix_.add_occurrence("port:" + r.qualified(), r.port_loc);
   }
 
   void type_expr(const ast::TypeExpr& t) {

@@ -87,6 +87,15 @@ void Server::send(const nlohmann::json& message) {
   writer_.write(message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
+// Routine news goes to the client as window/logMessage (type 4, "Log"), not to stderr:
+// Neovim records every line a server writes on stderr as an [ERROR] in its lsp.log, so a
+// proof that went well would look like a failure there. stderr keeps what went wrong.
+void Server::log_info(const std::string& line) {
+  send({{"jsonrpc", "2.0"},
+        {"method", "window/logMessage"},
+        {"params", {{"type", 4}, {"message", "arbc lsp: " + line}}}});
+}
+
 void Server::log(const std::string& line) {
   std::lock_guard lock(log_mutex_);
   log_ << "arbc lsp: " << line << "\n";

@@ -58,7 +58,8 @@ class Server {
   void verify_document(const std::string& uri);  // on the verify worker
   void publish(const std::string& uri);
   void send(const nlohmann::json& message);
-  void log(const std::string& line);
+  void log(const std::string& line);       // something went wrong: stderr
+  void log_info(const std::string& line);  // what the server did: the client's log
 
   std::istream& in_;
   MessageWriter writer_;

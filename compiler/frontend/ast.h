@@ -53,6 +53,7 @@ struct PortRef {
   std::string module;
   std::string port;
   Loc loc;                                  // the whole `Module.port`
+  Loc module_loc, port_loc;                 // each name alone: what a misspelling points at
   const ModuleDecl* module_decl = nullptr;  // sema
   const PortDecl* port_decl = nullptr;      // sema
   std::string qualified() const { return module + "." + port; }

@@ -456,9 +456,13 @@ class Builder {
   // ---- declarations -------------------------------------------------------------------------
   PortRef port_ref(ArbcParser::PortRefContext* ctx) {  // portRef : ID '.' ID ;
     PortRef p;
-    p.module = tx(child<antlr4::tree::TerminalNode>(ctx, 0));
-    p.port = tx(child<antlr4::tree::TerminalNode>(ctx, 2));
+    auto* module = child<antlr4::tree::TerminalNode>(ctx, 0);
+    auto* port = child<antlr4::tree::TerminalNode>(ctx, 2);
+    p.module = tx(module);
+    p.port = tx(port);
     p.loc = loc(ctx);
+    p.module_loc = loc(module);
+    p.port_loc = loc(port);
     return p;
   }
 

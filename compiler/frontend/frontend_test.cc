@@ -136,6 +136,34 @@ TEST(Frontend, SyntaxErrorsAreOnePerDeclarationAndInWords) {
   }
 }
 
+// A syntax error elsewhere must not split `assume E only after R;` at its `only` (which also
+// starts `only R after O;`): that gave two more errors on a line without one.
+TEST(Frontend, ASyntaxErrorDoesNotBreakAnAssumeOnlyAfter) {
+  CheckResult r = check_text(
+      "app t;\nmodule A { out x: float; in y: float; out s: list<string>; }\n"
+      "events from A.s { e };\narbitrate A.y { r: from A.x { let v = x } }\n"
+      "assume e only after r;\n",
+      "s.spec");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.diagnostics[0].loc.line, 4);
+}
+
+// A misspelt module or port is pointed at alone, not the whole `Module.port`: an editor's
+// quick fix replaces what is pointed at with the name the note suggests.
+TEST(Frontend, AMisspeltModuleOrPortIsPointedAtAlone) {
+  CheckResult r = check_text(
+      "app t;\nmodule Head { in gaze: vec3; }\nmodule Look { out gaze: vec3; }\n"
+      "connect Lok.gaze -> Head.gaz;\n",
+      "m.spec");
+  ASSERT_EQ(r.diagnostics.size(), 2u) << render_diagnostics(r.diagnostics, nullptr);
+  EXPECT_EQ(r.diagnostics[0].id, "unknown-module");
+  EXPECT_EQ(r.diagnostics[0].loc.column, 9);
+  EXPECT_EQ(r.diagnostics[0].loc.end_column, 12);  // `Lok`
+  EXPECT_EQ(r.diagnostics[1].id, "unknown-port");
+  EXPECT_EQ(r.diagnostics[1].loc.column, 26);
+  EXPECT_EQ(r.diagnostics[1].loc.end_column, 29);  // `gaz`
+}
+
 TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
   for (const char* name : {"search_and_track", "face_filter"}) {
     CheckResult r = check_file(arbc::testing::source_dir() + "/specs/" + name + ".spec");

@@ -42,7 +42,9 @@ std::vector<std::pair<size_t, size_t>> split_declarations(
       if ((text == "}" || text == ")" || text == "]") && depth > 0) --depth;
     }
     // `after` also sits inside `only R after O;`: it starts a response only after a `;` or `}`.
-    bool starts = kDeclStarts.count(text) ||
+    // `only` also sits inside `assume E only after R;`: there it follows `assume E`.
+    bool inside_assume = text == "only" && i > 1 && tokens[i - 2]->getText() == "assume";
+    bool starts = (kDeclStarts.count(text) && !inside_assume) ||
                   (text == "after" && i > 0 &&
                    (tokens[i - 1]->getText() == ";" || tokens[i - 1]->getText() == "}"));
     if (depth == 0 && i > start && starts && tokens[i]->getType() != ArbcLexer::STRING) {

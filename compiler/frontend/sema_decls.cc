@@ -136,15 +136,17 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
   if (!ref.module_decl) {
     std::vector<std::string> names;
     for (const ModuleDecl& m : spec_.modules) names.push_back(m.name);
-    unknown(ref.loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module, names);
+    // At the module's name alone: an editor's quick fix replaces exactly what is underlined.
+    unknown(ref.module_loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module,
+            names);
     return false;
   }
   ref.port_decl = ref.module_decl->find_port(ref.port);
   if (!ref.port_decl) {
     std::vector<std::string> names;
     for (const PortDecl& p : ref.module_decl->ports) names.push_back(p.name);
-    unknown(ref.loc, "module '" + ref.module + "' has no port '" + ref.port + "'", "unknown-port",
-            ref.port, names);
+    unknown(ref.port_loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
+            "unknown-port", ref.port, names);
     return false;
   }
   std::string role_s = role;

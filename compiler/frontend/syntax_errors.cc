@@ -259,7 +259,8 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (decl_start || (x.kinds.size() == 1 && x.kinds.count(antlr4::Token::EOF))) {
       d.message =
           "expected a declaration (app, type, const, module, event, events, exclusive, "
-          "invariant, arbitrate, connect, assert or resource), found " +
+          "invariant, never, only, assume, after, stable, given, arbitrate, connect, assert, "
+          "resource, test or tests), found " +
           found;
       suggest_keyword(offending,
                       std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);

@@ -30,8 +30,10 @@ class LspClient:
         self.stderr_lines = []
         self.reader = threading.Thread(target=self._read, daemon=True)
         self.reader.start()
+        self.stderr_reader = None
         if stderr == subprocess.PIPE:
-            threading.Thread(target=self._read_stderr, daemon=True).start()
+            self.stderr_reader = threading.Thread(target=self._read_stderr, daemon=True)
+            self.stderr_reader.start()
 
     def __enter__(self):
         return self
@@ -43,6 +45,11 @@ class LspClient:
         if self.proc.poll() is None:
             self.proc.kill()
         self.proc.wait(timeout=30)
+
+    def stderr_after_exit(self, timeout=30):
+        """All the server wrote on stderr; call once the process has exited."""
+        self.stderr_reader.join(timeout)
+        return "".join(self.stderr_lines)
 
     def _read_stderr(self):
         for line in self.proc.stderr:

@@ -1,9 +1,11 @@
--- Neovim's own LSP client (0.7) attached to `arbc lsp`, driven as a person would: open a spec,
--- break a name, wait for the diagnostic, hover, go to definition, apply the quick fix. Each
--- check is written to $RESULT as JSON; nvim_test.py runs this inside tmux and reads it, then
--- takes the screenshot once $READY exists. Env: ARBC, SPEC (a copy to edit), RESULT, READY.
-local arbc, spec, result_file, ready_file =
-  os.getenv('ARBC'), os.getenv('SPEC'), os.getenv('RESULT'), os.getenv('READY')
+-- Neovim's own LSP client (0.7) attached to `arbc lsp` by docs/editors.md's init.lua (which
+-- nvim_test.py hands to nvim with -u), driven as a person would: open a spec, break a name,
+-- wait for the diagnostic, hover, go to definition, apply the quick fix; open a second spec
+-- and read the first again, on the same server. Each check is written to $RESULT as JSON;
+-- nvim_test.py runs this inside tmux and reads it, then takes the screenshot once $READY
+-- exists. Env: SPEC (a copy to edit), OTHER (a second spec), RESULT, READY.
+local spec, other, result_file, ready_file =
+  os.getenv('SPEC'), os.getenv('OTHER'), os.getenv('RESULT'), os.getenv('READY')
 local results = {}
 
 local function check(name, ok, detail)
@@ -41,14 +43,30 @@ local function break_name()
   return seen, row, col
 end
 
+-- The ids of the clients attached to the current buffer.
+local function attached()
+  return vim.tbl_keys(vim.lsp.buf_get_clients(0))
+end
+
 local function run()
   vim.cmd('edit ' .. spec)
-  vim.bo.filetype = 'arbc'
-  local id = vim.lsp.start_client({ name = 'arbc', cmd = { arbc, 'lsp', '--no-verify' },
-                                    root_dir = vim.fn.fnamemodify(spec, ':h') })
-  vim.lsp.buf_attach_client(0, id)
-  local client = vim.lsp.get_client_by_id(id)
-  check('the server initializes', vim.wait(20000, function() return client.initialized end, 20))
+  check('a .spec file is an arbc file, not an RPM spec', vim.bo.filetype == 'arbc', vim.bo.filetype)
+  check('the server starts and initializes', vim.wait(20000, function()
+    local ids = attached()
+    local client = #ids == 1 and vim.lsp.get_client_by_id(ids[1])
+    return client and client.initialized
+  end, 20), attached())
+  local id = attached()[1]
+  if id then write(result_file .. '.pid', tostring(vim.lsp.get_client_by_id(id).rpc.pid)) end
+  check('K is the hover', vim.fn.maparg('K', 'n', false, true).buffer == 1,
+        vim.fn.maparg('K', 'n', false, true))
+
+  vim.cmd('edit ' .. other)
+  vim.cmd('edit #')
+  vim.cmd('edit!')
+  check('a second spec and a file read again share the one server',
+        vim.deep_equal(attached(), { id }) and #vim.lsp.get_active_clients() == 1,
+        { attached = attached(), active = #vim.lsp.get_active_clients() })
 
   local seen, row, col = break_name()
   check('a diagnostic arrives for the broken name', seen)

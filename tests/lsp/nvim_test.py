@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Neovim (Debian's 0.7) with its built-in LSP client attached to `arbc lsp`, in a real
-terminal (tmux): nvim_lsp.lua does the editing and checks; this script starts it, reads the
-checks, and takes the screenshot (tmux capture-pane) that docs/editors.md shows.
+terminal (tmux), set up by the very init.lua docs/editors.md gives (with `arbc` on the PATH and
+filetype detection turned on first, as plugin managers do): nvim_lsp.lua does the editing and
+checks; this script starts it, reads the checks, takes the screenshot (tmux capture-pane) that
+docs/editors.md shows, then quits nvim and checks that it and the server are gone.
 
 usage: nvim_test.py ARBC SCREEN_OUT       (from the repository root; exit 77: skipped)
 """
@@ -28,14 +30,25 @@ def main():
     work = tempfile.mkdtemp(prefix="arbc-nvim-")
     spec = os.path.join(work, "table_clean.spec")
     shutil.copy(os.path.join(ROOT, "specs", "table_clean.spec"), spec)
+    other = os.path.join(work, "face_filter.spec")
+    shutil.copy(os.path.join(ROOT, "specs", "face_filter.spec"), other)
+    init = os.path.join(work, "init.lua")
+    with open(init, "w", encoding="utf-8") as f:
+        f.write(doc_init_lua())
+    bin_dir = os.path.join(work, "bin")  # `arbc` on the PATH, as the doc asks
+    os.mkdir(bin_dir)
+    os.symlink(arbc, os.path.join(bin_dir, "arbc"))
     result, ready = os.path.join(work, "result.json"), os.path.join(work, "ready")
     socket = f"arbc-nvim-{os.getpid()}"
-    env = dict(os.environ, ARBC=arbc, SPEC=spec, RESULT=result, READY=ready, TERM="xterm-256color")
+    env = dict(os.environ, SPEC=spec, OTHER=other, RESULT=result, READY=ready,
+               TERM="xterm-256color", PATH=bin_dir + os.pathsep + os.environ.get("PATH", ""))
     script = os.path.join(ROOT, "tests", "lsp", "nvim_lsp.lua")
     tmux = ["tmux", "-L", socket, "-f", "/dev/null"]
-    subprocess.run(tmux + ["new-session", "-d", "-x", str(WIDTH), "-y", str(HEIGHT),
-                           f"nvim --clean -n -i NONE -c 'set noruler noshowcmd laststatus=0' "
-                           f"-c 'luafile {script}'"], env=env, check=True, timeout=30)
+    subprocess.run(tmux + ["new-session", "-d", "-x", str(WIDTH), "-y", str(HEIGHT), "-c", work,
+                           f"nvim -u {init} --noplugin -n -i NONE "
+                           f"--cmd 'filetype plugin indent on' "
+                           f"-c 'set noruler noshowcmd laststatus=0' -c 'luafile {script}'"],
+                   env=env, check=True, timeout=30)
     try:
         deadline = time.monotonic() + 120
         while not os.path.exists(ready):
@@ -46,19 +59,46 @@ def main():
             time.sleep(0.2)
         time.sleep(0.5)  # the last redraw reaches the terminal
         screen = capture(tmux)
+        quit_checks = quit_nvim(tmux, result + ".pid")
     finally:
-        subprocess.run(tmux + ["kill-server"], timeout=30)
+        subprocess.run(tmux + ["kill-server"], capture_output=True, timeout=30)
     with open(screen_out, "w", encoding="utf-8") as f:
         f.write(screen)
     failed = 0
-    for r in json.load(open(result)):
+    results = json.load(open(result)) + quit_checks
+    for r in results:
         print(("ok   " if r["ok"] else "FAIL ") + r["name"])
         if not r["ok"]:
             print("     " + r["detail"].replace("\n", "\n     "))
             failed += 1
     failed += not check_doc(screen)
-    print(f"{len(json.load(open(result))) + 1 - failed} passed, {failed} failed")
+    print(f"{len(results) + 1 - failed} passed, {failed} failed")
     return 1 if failed else 0
+
+
+def doc_init_lua():
+    """The first Lua block of docs/editors.md's Neovim section: what a user puts in init.lua."""
+    text = open(DOC, encoding="utf-8").read()
+    section = text.split("## Neovim\n", 1)[1]
+    return section.split("```lua\n", 1)[1].split("```", 1)[0]
+
+
+def quit_nvim(tmux, pid_file):
+    """`:qa!` as a person types it: nvim must exit promptly and take the server with it."""
+    subprocess.run(tmux + ["send-keys", "Escape", ":qa!", "Enter"], timeout=30)
+    deadline = time.monotonic() + 10
+    while subprocess.run(tmux + ["has-session"], capture_output=True, timeout=30).returncode == 0:
+        if time.monotonic() > deadline:
+            return [{"name": "nvim exits on :qa!", "ok": False, "detail": capture(tmux)}]
+        time.sleep(0.1)
+    checks = [{"name": "nvim exits on :qa!", "ok": True, "detail": ""}]
+    pid = int(open(pid_file).read()) if os.path.exists(pid_file) else None
+    deadline = time.monotonic() + 10
+    while pid and os.path.exists(f"/proc/{pid}") and time.monotonic() < deadline:
+        time.sleep(0.1)
+    gone = pid is not None and not os.path.exists(f"/proc/{pid}")
+    checks.append({"name": "and the server is gone", "ok": gone, "detail": f"pid {pid}"})
+    return checks
 
 
 def capture(tmux):

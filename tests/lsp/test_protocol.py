@@ -238,7 +238,7 @@ class TestsFile(Session):
         diags = self.open_spec(broken)
         self.assertEqual([(d["code"], d["range"]["start"]) for d in diags], [(
             check_json_at(broken, self.path)[0]["id"],
-            position_of(broken, "HeadControl.gaze_x", 0, 0))])
+            position_of(broken, "gaze_x receives", 0, 0))])  # the misspelt port alone
 
 
 class Hover(Session):
@@ -333,6 +333,28 @@ class Editing(Session):
         broken = self.text.replace("e_arm_idle and e_pull_idle {", "e_arm_idel and e_pull_idle {", 1)
         self.assertEqual(apply_edits(broken, edits), self.text)
 
+    def test_the_quick_fix_of_a_misspelt_module_or_port_keeps_the_rest(self):
+        # The diagnostic used to cover the whole `Module.port`, and the fix replaced all of it
+        # with the module's (or the port's) name alone: `from BucketDetector when`.
+        version = 0
+        for good, bad in (("put: from BucketDetector.bucket", "put: from BucketDetektor.bucket"),
+                          ("put: from BucketDetector.bucket", "put: from BucketDetector.buckt"),
+                          ("events from PickAndPlace.status", "events from PikAndPlace.status")):
+            version += 2
+            broken = self.text.replace(good, bad, 1)
+            self.c.change(self.uri, version, [{"text": broken}])
+            diags = [d for d in self.c.wait_diagnostics(self.uri, version=version)
+                     if d.get("code") in ("unknown-module", "unknown-port")]
+            self.assertEqual(len(diags), 1, bad)
+            actions = self.c.request("textDocument/codeAction", {
+                "textDocument": {"uri": self.uri}, "range": diags[0]["range"],
+                "context": {"diagnostics": diags}})
+            self.assertEqual(len(actions), 1, bad)
+            self.assertEqual(apply_edits(broken, actions[0]["edit"]["changes"][self.uri]),
+                             self.text, bad)
+            self.c.change(self.uri, version + 1, [{"text": self.text}])
+            self.c.wait_diagnostics(self.uri, version=version + 1)
+
     def test_rename_an_event_keeps_its_status_flag(self):
         edit = self.c.request("textDocument/rename", dict(self.at("not e_taken", 0, 4),
                                                           newName="e_holding"))
@@ -391,6 +413,16 @@ class Verification(Session):
             self.assertIn("rules 'take' and 'put' of PickAndPlace.cmd can both be selected",
                           d["message"])
             self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
+
+    def test_a_proofs_summary_goes_to_the_clients_log_not_stderr(self):
+        # Neovim records each line of a server's stderr as an [ERROR] in its lsp.log.
+        self.open_spec()
+        logged = self.c.wait_notification(
+            lambda m: m.get("method") == "window/logMessage", timeout=120)["params"]
+        self.assertEqual(logged["type"], 4)
+        self.assertIn("proved: 4 arbitrated ports, 0 errors", logged["message"])
+        self.assertEqual(self.c.shutdown_and_exit(), 0)
+        self.assertEqual(self.c.stderr_after_exit(), "")
 
     def test_a_proved_spec_gets_no_findings_on_save(self):
         self.assertEqual(self.open_spec(), [])
