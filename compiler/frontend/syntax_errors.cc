@@ -8,6 +8,7 @@
 
 #include "compiler/frontend/suggest.h"
 #include "compiler/frontend/token_checks.h"
+#include "compiler/frontend/unit_words.h"
 #include "core/join.h"
 
 namespace arbc::frontend {
@@ -245,7 +246,23 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.id = "syntax";
     d.loc = token_location(offending, file_);
     if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
+    note_spaced_unit(parser, offending, d);
     return d;
+  }
+
+  // `lifetime 0.5 s;`: the unit, apart from its number, reads as a name, and the message says
+  // only what the parser expected there. Whatever the construct, the fix is to join them.
+  void note_spaced_unit(antlr4::Parser* parser, const antlr4::Token* offending, Diagnostic& d) {
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    if (!previous || previous->getType() != ArbcParser::NUMBER ||
+        offending->getType() != ArbcParser::ID || previous->getLine() != offending->getLine())
+      return;
+    auto unit = duration_unit(offending->getText());
+    if (!unit) return;
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "a duration is written without a space: " + previous->getText() + *unit;
+    d.notes.push_back(std::move(note));
   }
 
   // When the expected tokens show which construct comes next (a declaration, a port, a

@@ -3,6 +3,8 @@
 #include <ArbcLexer.h>
 #include <antlr4-runtime.h>
 
+#include "compiler/frontend/unit_words.h"
+
 namespace arbc::frontend {
 
 using arbc_grammar::ArbcLexer;
@@ -56,6 +58,18 @@ std::string logic_word(const std::string& text) {
   return "";
 }
 
+// A number with letters glued to it: a time unit spelled another way (`5sec`) gets the
+// spelling to use; anything else (`0.40m`, `40cm`) is a unit the language does not have.
+std::string bad_number_message(const std::string& text) {
+  auto [digits, suffix] = split_number_suffix(text);
+  if (auto unit = duration_unit(suffix))
+    return "'" + text + "' is not a duration: write " + digits + *unit +
+           " (durations end in ms, s or min)";
+  return "'" + text +
+         "' is not a number or a duration: a number carries no unit (write the bare number, in "
+         "the unit the modules use), and durations end in ms, s or min (e.g. 500ms, 1s)";
+}
+
 }  // namespace
 
 void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string& file,
@@ -64,11 +78,7 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
     const antlr4::Token* t = tokens[i];
     switch (t->getType()) {
       case ArbcLexer::BAD_NUMBER:
-        out.push_back(error_at(t, file,
-                               "'" + t->getText() +
-                                   "' is not a number or a duration: durations end in ms, s or "
-                                   "min (e.g. 500ms, 1s)",
-                               "bad-number"));
+        out.push_back(error_at(t, file, bad_number_message(t->getText()), "bad-number"));
         break;
       case ArbcLexer::UNTERMINATED_STRING:
         out.push_back(
