@@ -247,6 +247,19 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.loc = token_location(offending, file_);
     if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
     note_spaced_unit(parser, offending, d);
+    // `accept len(objects) = 0;`: a lone `=` right after an operand, where no `=` may come, is
+    // almost surely a comparison.
+    antlr4::Token* before = parser->getTokenStream()->LT(-1);
+    bool after_operand =
+        before && (before->getType() == ArbcParser::ID || before->getType() == ArbcParser::NUMBER ||
+                   before->getType() == ArbcParser::STRING || before->getText() == ")" ||
+                   before->getText() == "]");
+    if (offending->getText() == "=" && !x.has("=") && after_operand) {
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "to compare, write `==` (a single `=` only assigns, as in `NAME = VALUE;`)";
+      d.notes.push_back(std::move(note));
+    }
     return d;
   }
 
