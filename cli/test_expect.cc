@@ -22,6 +22,29 @@ std::string window(const model::Expectation& e) {
   return "between " + seconds(e.from) + " and " + seconds(e.to);
 }
 
+// When nothing reached the port in the window: the value it received closest in time outside
+// it, if any, so that an expectation with the wrong time (or the wrong value at another time)
+// says what to change rather than leaving the reader to search the trace.
+std::string nearest_outside(const model::Expectation& e, const TestRun& run) {
+  const Received* best = nullptr;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (const Received& r : run.received) {
+    if (r.port != e.port) continue;
+    double gap = r.t < e.from ? e.from - r.t : r.t - e.to;
+    // Prefer the expected value over a closer other one: it is the likelier mistake.
+    bool wanted = !e.value || near_equal(*e.value, r.value);
+    bool best_wanted = best && (!e.value || near_equal(*e.value, best->value));
+    if (!best || (wanted && !best_wanted) || (wanted == best_wanted && gap < best_gap)) {
+      best = &r;
+      best_gap = gap;
+    }
+  }
+  if (!best) return "";
+  if (!e.value || near_equal(*e.value, best->value))
+    return "; it received that value at " + seconds(best->t);
+  return "; the nearest it received was " + best->value.to_json() + " at " + seconds(best->t);
+}
+
 std::string check_receives(const model::Expectation& e, const TestRun& run) {
   std::vector<const Received*> got;
   for (const Received& r : run.received) {
@@ -35,7 +58,8 @@ std::string check_receives(const model::Expectation& e, const TestRun& run) {
   for (const Received* r : got) {
     if (!e.value || near_equal(*e.value, r->value)) return "";
   }
-  if (got.empty()) return "but nothing reached " + e.port + " " + window(e);
+  if (got.empty())
+    return "but nothing reached " + e.port + " " + window(e) + nearest_outside(e, run);
   std::string out = "but " + e.port + " received other values " + window(e) + ":";
   for (size_t i = 0; i < got.size() && i < 5; ++i)
     out += "\n    " + seconds(got[i]->t) + " " + got[i]->value.to_json();

@@ -8,6 +8,7 @@
 
 #include "compiler/frontend/suggest.h"
 #include "compiler/frontend/token_checks.h"
+#include "compiler/frontend/unit_words.h"
 #include "core/join.h"
 
 namespace arbc::frontend {
@@ -245,7 +246,36 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.id = "syntax";
     d.loc = token_location(offending, file_);
     if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
+    note_spaced_unit(parser, offending, d);
+    // `accept len(objects) = 0;`: a lone `=` right after an operand, where no `=` may come, is
+    // almost surely a comparison.
+    antlr4::Token* before = parser->getTokenStream()->LT(-1);
+    bool after_operand =
+        before && (before->getType() == ArbcParser::ID || before->getType() == ArbcParser::NUMBER ||
+                   before->getType() == ArbcParser::STRING || before->getText() == ")" ||
+                   before->getText() == "]");
+    if (offending->getText() == "=" && !x.has("=") && after_operand) {
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "to compare, write `==` (a single `=` only assigns, as in `NAME = VALUE;`)";
+      d.notes.push_back(std::move(note));
+    }
     return d;
+  }
+
+  // `lifetime 0.5 s;`: the unit, apart from its number, reads as a name, and the message says
+  // only what the parser expected there. Whatever the construct, the fix is to join them.
+  void note_spaced_unit(antlr4::Parser* parser, const antlr4::Token* offending, Diagnostic& d) {
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    if (!previous || previous->getType() != ArbcParser::NUMBER ||
+        offending->getType() != ArbcParser::ID || previous->getLine() != offending->getLine())
+      return;
+    auto unit = duration_unit(offending->getText());
+    if (!unit) return;
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "a duration is written without a space: " + previous->getText() + *unit;
+    d.notes.push_back(std::move(note));
   }
 
   // When the expected tokens show which construct comes next (a declaration, a port, a

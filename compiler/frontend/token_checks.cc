@@ -3,6 +3,8 @@
 #include <ArbcLexer.h>
 #include <antlr4-runtime.h>
 
+#include "compiler/frontend/unit_words.h"
+
 namespace arbc::frontend {
 
 using arbc_grammar::ArbcLexer;
@@ -47,18 +49,36 @@ std::string describe_char(const std::string& text) {
   return text;
 }
 
+// The spec language's word for a C-style logical operator a newcomer may type (`!`, `&&`,
+// `||`), or "" for any other character. `!=` is a token of its own and never reaches here.
+std::string logic_word(const std::string& text) {
+  if (text == "!") return "not";
+  if (text == "&") return "and";
+  if (text == "|") return "or";
+  return "";
+}
+
+// A number with letters glued to it: a time unit spelled another way (`5sec`) gets the
+// spelling to use; anything else (`0.40m`, `40cm`) is a unit the language does not have.
+std::string bad_number_message(const std::string& text) {
+  auto [digits, suffix] = split_number_suffix(text);
+  if (auto unit = duration_unit(suffix))
+    return "'" + text + "' is not a duration: write " + digits + *unit +
+           " (durations end in ms, s or min)";
+  return "'" + text +
+         "' is not a number or a duration: a number carries no unit (write the bare number, in "
+         "the unit the modules use), and durations end in ms, s or min (e.g. 500ms, 1s)";
+}
+
 }  // namespace
 
 void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string& file,
                    std::vector<Diagnostic>& out) {
-  for (const antlr4::Token* t : tokens) {
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const antlr4::Token* t = tokens[i];
     switch (t->getType()) {
       case ArbcLexer::BAD_NUMBER:
-        out.push_back(error_at(t, file,
-                               "'" + t->getText() +
-                                   "' is not a number or a duration: durations end in ms, s or "
-                                   "min (e.g. 500ms, 1s)",
-                               "bad-number"));
+        out.push_back(error_at(t, file, bad_number_message(t->getText()), "bad-number"));
         break;
       case ArbcLexer::UNTERMINATED_STRING:
         out.push_back(
@@ -68,12 +88,33 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
         out.push_back(error_at(t, file, "comment opened with '/*' is never closed with '*/'",
                                "unterminated-comment"));
         break;
-      case ArbcLexer::ERROR_CHAR:
-        out.push_back(error_at(t, file,
-                               "unexpected character '" + describe_char(t->getText()) +
-                                   "': names use only letters, digits and '_'",
-                               "bad-character"));
+      case ArbcLexer::ERROR_CHAR: {
+        std::string text = t->getText();
+        std::string word = logic_word(text);
+        if (word.empty()) {
+          out.push_back(error_at(t, file,
+                                 "unexpected character '" + describe_char(text) +
+                                     "': names use only letters, digits and '_'",
+                                 "bad-character"));
+          break;
+        }
+        // `&&` and `||` are one mistake: one error, underlining both characters.
+        bool doubled = text != "!" && i + 1 < tokens.size() &&
+                       tokens[i + 1]->getType() == ArbcLexer::ERROR_CHAR &&
+                       tokens[i + 1]->getStartIndex() == t->getStopIndex() + 1 &&
+                       tokens[i + 1]->getText() == text;
+        Diagnostic d =
+            error_at(t, file,
+                     "'" + (doubled ? text + text : text) +
+                         "' is not an operator of the spec language: write `" + word + "`",
+                     "bad-character");
+        if (doubled) {
+          d.loc.end_column += 1;
+          ++i;
+        }
+        out.push_back(std::move(d));
         break;
+      }
       default:
         break;
     }

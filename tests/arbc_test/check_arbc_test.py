@@ -133,6 +133,24 @@ def case_unit_test_of_one_rule(arbc, tmp):
            "0.1s  drop take (rejected)" in out, "unit test did not see the drop", out, err)
 
 
+def case_expectation_at_the_wrong_time(arbc, tmp):
+    # A newcomer's mistake: the take is expected 100 ms late. The failure names when the value
+    # did arrive, and when an expected value is wrong too, the nearest one that arrived.
+    late = changed_spec(tmp, 'vec3(0.3, 0.1, 0.0) } at 100ms;', 'vec3(0.3, 0.1, 0.0) } at 200ms;',
+                        "late.spec")
+    code, out, err = run(arbc, "test", late, "--filter", "take only when*")
+    expect(code == 1, f"exit {code}", out, err)
+    expect("but nothing reached PickAndPlace.cmd at 0.2s; it received that value at 0.1s\n" in out,
+           "the failure does not say when the value arrived", out, err)
+    wrong = changed_spec(tmp, '{ verb: "take", pos: vec3(0.3, 0.1, 0.0) } at 100ms;',
+                         '{ verb: "put", pos: vec3(0.3, 0.1, 0.0) } at 200ms;', "wrong.spec")
+    code, out, err = run(arbc, "test", wrong, "--filter", "take only when*")
+    expect(code == 1, f"exit {code}", out, err)
+    expect("at 0.2s; the nearest it received was "
+           '{"pos":{"x":0.3,"y":0.1,"z":0.0},"verb":"take"} at 0.1s\n' in out,
+           "the failure does not name the nearest value", out, err)
+
+
 def write_lines(path, lines):
     with open(path, "w", encoding="utf-8") as f:
         for line in lines:
