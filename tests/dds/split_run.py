@@ -8,7 +8,9 @@ starts M, then W, and checks what each prints.
 usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
   CASE  a scenario (reachable, tool, human, mixed, perturbed): every seed ends with a clean
         table and 0 conflicts, and M ends cleanly on SIGTERM;
-        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again;
+        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again (a second
+        attempt only after the known Fast-DDS failure to match the restarted M);
+        restart-m: the same with M ended by SIGTERM (it deletes its DDS entities first);
         kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT;
         signals: W and M each ended mid-run by SIGINT, then by SIGTERM: each exits, prints
         its counters, writes its trace and report and deletes its DDS entities;
@@ -145,22 +147,45 @@ def scenario(split, name, seeds):
         print(f"ok {what}: {out.splitlines()[0] if out else ''}")
 
 
-def kill_m(split):
-    m = split.start("M", [])
-    w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
-    time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
-    alive(w, "W ended before M was killed")
-    m.send_signal(signal.SIGKILL)
-    m.wait()
-    time.sleep(0.5)
-    m2 = split.start("M", [])
-    rc, out = finish(w, "W", 240)
-    mrc, mout = stop(m2, "M (restarted)")
-    check_w(rc, out, "kill-m")
-    check_m_stopped(mrc, mout, "kill-m")
-    expect("conflicts: 0" in out, "kill-m: conflicts after the restart", out)
-    split.check_files("M", "kill-m (restarted M)", True, mout)
-    print("ok kill-m: W survived M's SIGKILL; the restarted M finished the run\n" + out + mout)
+# After a SIGKILL, Fast-DDS 2.9 sometimes leaves W deaf to the restarted M for good: W
+# discovers M's new endpoints but never matches them, so W never prints "a publisher is back"
+# (docs/distributed.md#killing-and-restarting-a-process: 4 of 115 runs over UDP, 5 of 102 over
+# shared memory). That failure is below arbc, and one more attempt is allowed for it alone;
+# anything else, or the same twice, fails.
+NEVER_MATCHED_AGAIN = "a publisher is back"
+
+
+def restart_m(split, sig, case, attempts=1):
+    """M ended by `sig` in the middle of a `mixed` run and started again; W finishes the run."""
+    for attempt in range(1, attempts + 1):
+        m = split.start("M", [])
+        w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
+        time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
+        alive(w, f"W ended before M was stopped by {sig.name}")
+        m.send_signal(sig)
+        m.wait()
+        time.sleep(0.5)
+        m2 = split.start("M", [])
+        try:
+            # A run takes about 8 s; well within this limit even on a loaded machine.
+            out, _ = w.communicate(timeout=120)
+            rc = w.returncode
+        except subprocess.TimeoutExpired:
+            for p in (w, m2):
+                p.kill()
+            out, mout = w.communicate()[0], m2.communicate()[0]
+            if attempt < attempts and NEVER_MATCHED_AGAIN not in out:
+                print(f"{case}: W never matched the restarted M (the Fast-DDS failure in "
+                      "docs/distributed.md); once more\n" + out)
+                continue
+            fail(f"{case}: W did not end within 120 s of M's restart\n--- W ---\n{out}\n--- M ---\n{mout}")
+        mrc, mout = stop(m2, "M (restarted)")
+        check_w(rc, out, case)
+        check_m_stopped(mrc, mout, case)
+        expect("conflicts: 0" in out, f"{case}: conflicts after the restart", out)
+        split.check_files("M", f"{case} (restarted M)", True, mout)
+        print(f"ok {case}: W survived M's {sig.name}; the restarted M finished the run\n" + out + mout)
+        return
 
 
 def kill_w(split):
@@ -267,7 +292,9 @@ def main():
     seeds = int(sys.argv[6]) if len(sys.argv) > 6 else 5
     split = Split(arbc, plugin, spec, profile)
     if case == "kill-m":
-        kill_m(split)
+        restart_m(split, signal.SIGKILL, case, attempts=2)
+    elif case == "restart-m":
+        restart_m(split, signal.SIGTERM, case)
     elif case == "kill-w":
         kill_w(split)
     elif case == "signals":
