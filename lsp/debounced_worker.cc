@@ -40,7 +40,10 @@ void DebouncedWorker::loop() {
     for (auto it = due_.begin(); it != due_.end(); ++it)
       if (it->second < next->second) next = it;
     if (std::chrono::steady_clock::now() < next->second) {
-      wake_.wait_until(lock, next->second);
+      // A copy: wait_until reads its deadline again after waking, and cancel() may have freed
+      // the map node meanwhile (a document closed while its analysis waited).
+      const auto when = next->second;
+      wake_.wait_until(lock, when);
       continue;
     }
     std::string key = next->first;

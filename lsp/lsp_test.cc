@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -171,6 +172,29 @@ TEST(DebouncedWorker, RunsOnceForABurstOfSchedules) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   }
   EXPECT_EQ(runs, 1);
+}
+
+// A document closed while its analysis waits: the worker must not read the cancelled entry
+// (ASan caught it reading the deadline of the freed node when it woke up), and what is still
+// scheduled runs.
+TEST(DebouncedWorker, ACancelWhileTheWorkerWaitsLeavesTheRestToRun) {
+  std::atomic<int> runs{0};
+  std::string last;
+  std::mutex mutex;
+  {
+    DebouncedWorker w(std::chrono::milliseconds(200), [&](const std::string& key) {
+      std::lock_guard lock(mutex);
+      last = key;
+      ++runs;
+    });
+    w.schedule("closed");
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the worker waits on it
+    w.cancel("closed");
+    w.schedule("open");
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  }
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(last, "open");
 }
 
 }  // namespace
