@@ -14,6 +14,11 @@ import threading
 import time
 
 
+# Scratch specs are written beside the real ones (so that relative imports resolve), under a
+# hidden name: a test that globs specs/*.spec while another test runs must not pick them up.
+SCRATCH_PREFIX = ".lsp-scratch-"
+
+
 def file_uri(path):
     return "file://" + os.path.abspath(path)
 

@@ -1,6 +1,7 @@
 -- Neovim's own LSP client (0.7) attached to `arbc lsp` by docs/editors.md's init.lua (which
 -- nvim_test.py hands to nvim with -u), driven as a person would: open a spec, break a name,
--- wait for the diagnostic, hover, go to definition, apply the quick fix; open a second spec
+-- wait for the diagnostic, hover, go to definition, apply the quick fix, rename a constant
+-- and back, see a module's rename refused with the reason; open a second spec
 -- and read the first again, on the same server. Each check is written to $RESULT as JSON;
 -- nvim_test.py runs this inside tmux and reads it, then takes the screenshot once $READY
 -- exists. Env: SPEC (a copy to edit), OTHER (a second spec), RESULT, READY.
@@ -97,6 +98,40 @@ local function run()
   local line = vim.api.nvim_buf_get_lines(0, row, row + 1, false)[1]
   check('the fix restores the name', line:find('when not e_taken and e_arm_idle and e_pull_idle {', 1, true), line)
   check('and the diagnostic goes away', vim.wait(20000, function() return #vim.diagnostic.get(0) == 0 end, 20))
+
+  -- Rename, as <leader>r does with the name typed: a constant, everywhere (`within
+  -- SPEAK_PERIOD` too), then back; a module is refused with the reason (0.7 ignores a refused
+  -- prepareRename, asks for the name anyway, then shows the rename's error). What nvim would
+  -- show is recorded instead: a message that long would wait for Enter.
+  local before = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n')
+  local function rename_at(needle, offset, name)
+    local r, c = find(needle)
+    vim.api.nvim_win_set_cursor(0, { r + 1, c + offset })
+    vim.lsp.buf.rename(name)
+  end
+  local function buffer_has(text, count)
+    local body = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n')
+    local _, n = body:gsub(text, '')
+    return n == count
+  end
+  rename_at('const SPEAK_PERIOD', #'const ', 'SPEAK_EVERY')
+  check('rename of a constant reaches every use', vim.wait(10000, function()
+    return buffer_has('SPEAK_EVERY', 3) and buffer_has('SPEAK_PERIOD', 1)  -- and a comment's
+  end, 20), vim.api.nvim_buf_get_lines(0, 0, -1, false))
+  rename_at('const SPEAK_EVERY', #'const ', 'SPEAK_PERIOD')
+  check('and back', vim.wait(10000, function()
+    return table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n') == before
+  end, 20))
+  local shown = {}
+  local notify = vim.notify
+  vim.notify = function(message) table.insert(shown, message) end
+  rename_at('module PickAndPlace', #'module ', 'Arm')
+  check('a refused rename of a module says why', vim.wait(10000, function()
+    return shown[1] and shown[1]:find("module 'PickAndPlace' is not renamed here", 1, true)
+  end, 20), shown)
+  vim.notify = notify
+  check('and changes nothing',
+        table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n') == before)
 
   -- The screenshot: the name broken again, the cursor on the rule, its hover open.
   break_name()

@@ -20,7 +20,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lsp_client import LspClient, file_uri  # noqa: E402
+from lsp_client import SCRATCH_PREFIX, LspClient, file_uri  # noqa: E402
 
 PIECES = ["{", "}", ";", "when", " not ", "e_taken", ".", "->", "\"", "//", "/*", "*/", "\n",
           "é", "€", "😀", "arbitrate X.y {", "0.5s", "(", ")", "test \"t\" on take {",
@@ -61,7 +61,8 @@ def random_range(rng, text):
 
 def check_diagnostics(arbc, text, spec):
     """(id, 0-based line) of `arbc check --format json` on text saved beside spec."""
-    with tempfile.NamedTemporaryFile("w", suffix=".spec", dir=os.path.dirname(spec),
+    with tempfile.NamedTemporaryFile("w", prefix=SCRATCH_PREFIX, suffix=".spec",
+                                     dir=os.path.dirname(spec),
                                      delete=False, encoding="utf-8") as f:
         f.write(text)
     try:
