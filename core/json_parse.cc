@@ -1,5 +1,7 @@
 #include "core/json_parse.h"
 
+#include "core/text_position.h"
+
 namespace arbc {
 
 JsonParseError json_parse_error(std::string_view text, size_t byte, std::string_view what) {
@@ -16,16 +18,9 @@ JsonParseError json_parse_error(std::string_view text, size_t byte, std::string_
   }
   error.detail = std::string(detail);
   if (byte == 0) return error;
-  error.line = 1;
-  error.column = 1;
-  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++error.line;
-      error.column = 1;
-    } else {
-      ++error.column;
-    }
-  }
+  TextPosition p = text_position(text, byte - 1);
+  error.line = static_cast<size_t>(p.line);
+  error.column = static_cast<size_t>(p.column);
   return error;
 }
 

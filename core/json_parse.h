@@ -6,14 +6,19 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
+
+#include "core/json_place.h"
 
 namespace arbc {
 
 struct JsonParseError {
-  size_t line = 0, column = 0;  // of the offending byte, 1-based; 0 when the library gives none
-  std::string detail;           // "syntax error while parsing value - invalid literal; ..."
+  // Of the offending character, 1-based, the column in characters (core/text_position.h); 0
+  // when there is no place to point at.
+  size_t line = 0, column = 0;
+  std::string detail;  // "syntax error while parsing value - invalid literal; ..."
 };
 
 // From the library's exception: its byte offset (one past the offending byte, 0 for none) in
@@ -30,7 +35,9 @@ bool parse_json(std::string_view text, JsonType* out, JsonParseError* error) {
   } catch (const typename JsonType::parse_error& e) {
     *error = json_parse_error(text, e.byte, e.what());
   } catch (const typename JsonType::out_of_range& e) {  // a number such as 1e999
-    *error = json_parse_error(text, 0, e.what());
+    // The library says which literal but not where: found again in the text.
+    std::optional<size_t> at = json_number_overflow(text);
+    *error = json_parse_error(text, at ? *at + 1 : 0, e.what());
     error->detail += " (beyond the range of a double)";
   }
   return false;

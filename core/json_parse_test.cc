@@ -25,6 +25,15 @@ TEST(JsonParseTest, ASyntaxErrorHasItsPositionAndNoLibraryTags) {
   EXPECT_EQ(e.detail.rfind("syntax error while parsing object key", 0), 0u) << e.detail;
 }
 
+// Columns count characters, as every diagnostic's do: "é" is one column, not two.
+TEST(JsonParseTest, TheColumnCountsCharacters) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view("{\"\xC3\xA9\": x}"), &j, &e));
+  EXPECT_EQ(e.line, 1u);
+  EXPECT_EQ(e.column, 7u);
+}
+
 TEST(JsonParseTest, EmptyTextIsAnErrorAtItsStart) {
   nlohmann::json j;
   JsonParseError e;
@@ -33,11 +42,13 @@ TEST(JsonParseTest, EmptyTextIsAnErrorAtItsStart) {
   EXPECT_EQ(e.column, 1u);
 }
 
-TEST(JsonParseTest, ANumberBeyondADoubleIsAnErrorWithoutPosition) {
+// The library names the literal but not its place; the error has it all the same.
+TEST(JsonParseTest, ANumberBeyondADoubleIsAnErrorAtItsLiteral) {
   nlohmann::json j;
   JsonParseError e;
-  ASSERT_FALSE(parse_json(std::string_view("[1e999]"), &j, &e));
-  EXPECT_EQ(e.line, 0u);
+  ASSERT_FALSE(parse_json(std::string_view("{\"a\": 1,\n \"b\": [1e999]}"), &j, &e));
+  EXPECT_EQ(e.line, 2u);
+  EXPECT_EQ(e.column, 8u);
   EXPECT_EQ(e.detail, "number overflow parsing '1e999' (beyond the range of a double)");
 }
 
