@@ -1,10 +1,15 @@
 // What remote endpoints announce at discovery: a publisher or subscriber on one of this
 // process's topics with another type never matches (DDS matches by type name), so its
-// messages would silently not arrive. Report it, naming the topic and both types.
+// messages would silently not arrive. Report it, naming the topic and both types. Likewise a
+// second publisher on a topic this process writes as a mediator, and topics that never find
+// a peer: each would leave a run wrong or idle without a word.
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
 #include "dds/dds_transport_internal.h"
+#include "dds/no_peer_reports.h"
+#include "runtime/executor.h"
 
 namespace arbc::dds {
 
@@ -18,10 +23,14 @@ std::string text_of(const eprosima::fastdds::dds::UserDataQosPolicy& data) {
 }  // namespace
 
 void DiscoveryListener::on_publisher_discovery(
-    fdds::DomainParticipant*, eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) {
+    fdds::DomainParticipant* participant, eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) {
   if (info.status != eprosima::fastrtps::rtps::WriterDiscoveryInfo::DISCOVERED_WRITER) return;
-  transport_->check_remote(info.info.topicName().to_string(), info.info.typeName().to_string(),
-                           text_of(info.info.m_qos.m_userData), "publisher");
+  std::string topic = info.info.topicName().to_string();
+  std::string user_data = text_of(info.info.m_qos.m_userData);
+  transport_->check_remote(topic, info.info.typeName().to_string(), user_data, "publisher");
+  // This process's own writers are no second publisher.
+  if (info.info.guid().guidPrefix != participant->guid().guidPrefix)
+    transport_->check_other_writer(topic, user_data);
 }
 
 void DiscoveryListener::on_subscriber_discovery(
@@ -37,7 +46,11 @@ void DdsTransport::check_remote(const std::string& topic, const std::string& typ
                                 const std::string& user_data, const char* what) {
   if (closing_) return;
   auto it = type_of_topic_.find(topic);
-  if (it == type_of_topic_.end()) return;
+  if (it == type_of_topic_.end()) {
+    std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    seen_remote_.emplace(topic, type);
+    return;
+  }
   const std::string& ours = it->second;
   std::string line;
   if (type != ours) {
@@ -61,30 +74,135 @@ void DdsTransport::check_remote(const std::string& topic, const std::string& typ
   report(line);
 }
 
+// The arbitration is proved for what this process delivers; anything else a module reads on
+// its input topic bypasses it (a second mediator doubles every delivery). A writer may be
+// discovered before this process creates its own on the topic: add_writer asks again.
+void DdsTransport::check_other_writer(const std::string& topic, const std::string& user_data) {
+  bool arbc = user_data.rfind("arbc-type=", 0) == 0;
+  std::string port;
+  {
+    std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    remote_writers_[topic] |= arbc;
+    auto it = mediated_input_of_topic_.find(topic);
+    if (it == mediated_input_of_topic_.end()) return;
+    port = it->second;
+  }
+  report_other_writer(topic, port, arbc);
+}
+
+void DdsTransport::report_other_writer(const std::string& topic, const std::string& port,
+                                       bool arbc) {
+  if (closing_) return;
+  std::string module = port.substr(0, port.find('.'));
+  std::string line =
+      arbc ? "DDS: another arbc process also mediates " + port + " (it publishes on topic " +
+                 topic + "): " + module + " receives what both select; give --mediate " + module +
+                 " to one process only"
+           : "DDS: another program publishes on topic " + topic +
+                 ", which this process writes as the mediator of " + port + ": what it sends " +
+                 "reaches " + module + " unarbitrated; give that program a topic of its own " +
+                 "and connect it to " + port + " in the spec";
+  {
+    std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    if (!mismatches_.insert(line).second) return;
+  }
+  report(line);
+}
+
 // A topic expects a peer when the app connects its port: an output read by some connection,
 // an input some connection delivers to. Others (an output nothing reads) may stay alone.
+bool DdsTransport::expects_peer(const TransportPort& port, bool input) const {
+  for (const model::Connection& c : app_.connections) {
+    if ((input ? c.destination : c.source) == port.qualified) return true;
+  }
+  return false;
+}
+
 std::vector<std::string> DdsTransport::topics_without_peers() const {
-  auto connected = [&](const std::string& port, bool as_source) {
-    for (const model::Connection& c : app_.connections) {
-      if ((as_source ? c.source : c.destination) == port) return true;
-    }
-    return false;
-  };
   std::vector<std::string> alone;
   for (const auto& r : readers_) {
-    if (r->publishers == 0 && connected(r->port.qualified, !r->input)) alone.push_back(r->topic);
+    if (r->publishers == 0 && expects_peer(r->port, r->input)) alone.push_back(r->topic);
   }
   for (const auto& w : writers_) {
-    if (w->subscribers == 0 && connected(w->port.qualified, !w->input)) alone.push_back(w->topic);
+    if (w->subscribers == 0 && expects_peer(w->port, w->input)) alone.push_back(w->topic);
   }
   return alone;
+}
+
+namespace {
+
+std::string last_name(const std::string& topic) { return topic.substr(topic.rfind('/') + 1); }
+
+}  // namespace
+
+// A peer that never comes is most often in another domain, or on a topic or type that differs
+// from ours by a typo or by the ROS 2 naming ("rt/" and "dds_::T_"): name what to check, and
+// the remote topics seen that look like ours.
+std::string DdsTransport::peer_hint(const std::vector<std::string>& alone) const {
+  std::vector<std::string> near;
+  {
+    std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    for (const auto& [topic, type] : seen_remote_) {
+      bool like = std::any_of(alone.begin(), alone.end(), [&](const std::string& ours) {
+        return type_of_topic_.at(ours) == type || last_name(ours) == last_name(topic);
+      });
+      if (like && near.size() < 5) near.push_back(topic + " (" + type + ")");
+    }
+  }
+  std::string hint = "; is every program in domain " + std::to_string(options_.domain) +
+                     " (--domain, ROS_DOMAIN_ID), with these topic and type names (--deploy)?";
+  if (near.empty()) return hint;
+  std::string names;
+  for (const std::string& n : near) names += (names.empty() ? "" : ", ") + n;
+  return hint + " Seen in this domain: " + names;
+}
+
+std::vector<std::string> DdsTransport::topics_never_matched() const {
+  std::vector<std::string> alone;
+  for (const std::string& topic : topics_without_peers()) {
+    bool matched = false;
+    for (const auto& r : readers_) matched |= r->topic == topic && r->ever_matched;
+    for (const auto& w : writers_) matched |= w->topic == topic && w->ever_matched;
+    if (!matched) alone.push_back(topic);
+  }
+  return alone;
+}
+
+void DdsTransport::report_unmatched(int k) {
+  std::vector<std::string> alone = topics_never_matched();
+  if (alone.empty()) return;
+  std::string names;
+  for (const std::string& t : alone) names += (names.empty() ? "" : ", ") + t;
+  std::string after = wall_span_text(no_peer_report_at(k, options_.unmatched_after));
+  sink_->report(std::string(k == 0 ? "DDS: no peer yet after " : "DDS: still no peer after ") +
+                after + " on " + names + " (nothing flows there until one comes)" +
+                peer_hint(alone));
+  post_unmatched_report(k + 1);
+}
+
+double DdsTransport::wall_seconds_since_start() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
+}
+
+void DdsTransport::post_unmatched_report(int k) {
+  if (!(options_.unmatched_after > 0)) return;  // no reports
+  Executor& ex = sink_->executor();
+  double wait = no_peer_report_at(k, options_.unmatched_after) - wall_seconds_since_start();
+  ex.post(ex.now() + std::max(0.0, wait) * options_.time_scale, [this, k] {
+    if (!closing_) report_unmatched(k);
+  });
 }
 
 // Waits (wall clock) until every topic that expects a peer has one, so that the first
 // messages of a run are not published before anyone listens; then a short grace, because a
 // match seen here may not be seen yet by the other side. Gives up after wait_peers seconds.
 void DdsTransport::start(const std::atomic<bool>* interrupt) {
-  if (options_.wait_peers <= 0 || !participant_) return;
+  if (!participant_) return;
+  started_at_ = std::chrono::steady_clock::now();
+  if (options_.wait_peers <= 0) {
+    post_unmatched_report(0);
+    return;
+  }
   using Clock = std::chrono::steady_clock;
   auto begin = Clock::now();
   auto deadline = begin + std::chrono::duration_cast<Clock::duration>(
@@ -106,7 +224,13 @@ void DdsTransport::start(const std::atomic<bool>* interrupt) {
   std::string names;
   for (const std::string& t : alone) names += (names.empty() ? "" : ", ") + t;
   std::snprintf(line, sizeof line, "DDS: starting after %.1f s with no peer yet on ", waited);
-  sink_->report(line + names + " (what is published there is lost until a peer comes)");
+  sink_->report(line + names + " (what is published there is lost until a peer comes)" +
+                peer_hint(alone));
+  // Said again, as without the wait, at the reports' times still to come.
+  int k = 1;
+  while (options_.unmatched_after > 0 && no_peer_report_at(k, options_.unmatched_after) <= waited)
+    ++k;
+  post_unmatched_report(k);
 }
 
 }  // namespace arbc::dds

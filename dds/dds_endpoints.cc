@@ -78,6 +78,16 @@ bool DdsTransport::add_writer(const Endpoint& e, std::string* error) {
     return false;
   }
   (e.input ? input_writer_ : output_writer_)[static_cast<size_t>(e.port.index)] = w.get();
+  if (e.input) {  // the mediator of a module elsewhere: its only publisher (dds_discovery.cc)
+    std::optional<bool> other_arbc;
+    {
+      std::lock_guard<std::mutex> lock(mismatch_mutex_);
+      mediated_input_of_topic_[e.topic] = e.port.qualified;
+      if (auto it = remote_writers_.find(e.topic); it != remote_writers_.end())
+        other_arbc = it->second;
+    }
+    if (other_arbc) report_other_writer(e.topic, e.port.qualified, *other_arbc);
+  }
   writers_.push_back(std::move(w));
   return true;
 }
@@ -166,10 +176,10 @@ void TopicReader::on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus
 void TopicReader::on_subscription_matched(fdds::DataReader*,
                                           const fdds::SubscriptionMatchedStatus& status) {
   publishers = status.current_count;
-  if (status.current_count_change > 0 && status.current_count == 1 && ever_matched_) {
+  if (status.current_count_change > 0 && status.current_count == 1 && ever_matched) {
     transport_->report("DDS: topic " + topic + ": a publisher is back; traffic resumes");
   }
-  if (status.current_count_change > 0) ever_matched_ = true;
+  if (status.current_count_change > 0) ever_matched = true;
   if (status.current_count_change < 0 && status.current_count == 0) {
     transport_->report("DDS: topic " + topic + " (" + port.qualified +
                        ") has no publisher any more; " +
@@ -236,7 +246,7 @@ bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& p
 void TopicWriter::on_publication_matched(fdds::DataWriter*,
                                          const fdds::PublicationMatchedStatus& status) {
   subscribers = status.current_count;
-  if (status.current_count_change > 0) ever_matched_ = true;
+  if (status.current_count_change > 0) ever_matched = true;
   if (input && status.current_count_change < 0 && status.current_count == 0) {
     transport_->report("DDS: topic " + topic + " (" + port.qualified +
                        ") has no subscriber any more: the process that hosts " + port.module +

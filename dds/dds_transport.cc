@@ -2,6 +2,7 @@
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 
 #include "dds/dds_transport_internal.h"
+#include "dds/participant_qos.h"
 #include "runtime/executor.h"
 
 namespace arbc::dds {
@@ -24,7 +25,12 @@ DdsTransport::~DdsTransport() { close(); }
 // (DDS threads) only ever reads complete maps.
 bool DdsTransport::open(const TransportPlan& plan, TransportSink* sink, std::string* error) {
   sink_ = sink;
-  if (!check_deployment(options_.deployment, app_, error)) return false;
+  // `arbc run` checks the file before it makes the transport, with the file's lines quoted;
+  // this is for programs that link the transport themselves.
+  if (std::vector<Diagnostic> problems; !check_deployment(options_.deployment, app_, &problems)) {
+    *error = deployment_errors_text(problems);
+    return false;
+  }
   naming_ = std::make_unique<WireNaming>(app_, options_.deployment);
   output_writer_.assign(plan.outputs.size(), nullptr);
   input_writer_.assign(plan.inputs.size(), nullptr);
@@ -49,17 +55,16 @@ bool DdsTransport::open(const TransportPlan& plan, TransportSink* sink, std::str
   return true;
 }
 
-// The participant takes its QoS from Fast-DDS's defaults (an XML profile named by
-// FASTRTPS_DEFAULT_PROFILES_FILE applies: docs/distributed.md), with a name and a short lease
-// so that a crashed peer is noticed in seconds rather than Fast-DDS's 20.
+// The participant's QoS: the user's profile, then arbc's settings over it (dds/participant_qos.h).
 bool DdsTransport::create_participant(std::string* error) {
+  fdds::DomainParticipantQos qos;
+  std::string note;
+  if (!participant_qos({"arbc " + app_.name, options_.domain, options_.lease_seconds}, &qos, &note,
+                       error)) {
+    return false;
+  }
+  if (!note.empty()) sink_->report(note);
   fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
-  fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
-  qos.name("arbc " + app_.name);
-  auto& discovery = qos.wire_protocol().builtin.discovery_config;
-  double lease = std::max(0.5, options_.lease_seconds);
-  discovery.leaseDuration = eprosima::fastrtps::Duration_t(lease);
-  discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(lease / 3);
   fdds::StatusMask mask = fdds::StatusMask::none();  // endpoint events go to their own listeners
   participant_ = factory->create_participant(options_.domain, qos, &discovery_, mask);
   if (!participant_) {
@@ -225,6 +230,14 @@ std::string DdsTransport::summary() const {
     out += "  wrote " + w->topic + " (" + w->wire->name + "): " + std::to_string(w->written) +
            " written" + (w->failed ? ", " + std::to_string(w->failed) + " failed" : "") + "\n";
   }
+  // What a run left alone says at the end too: a report long ago on stderr is easy to miss.
+  std::string never;
+  for (const std::string& topic : topics_never_matched()) {
+    auto port = port_of_topic_.find(topic);
+    never += (never.empty() ? "" : ", ") + topic +
+             (port == port_of_topic_.end() ? "" : " (" + port->second + ")");
+  }
+  if (!never.empty()) out += "  never heard a peer: " + never + "\n";
   std::lock_guard<std::mutex> lock(mismatch_mutex_);
   for (const std::string& m : mismatches_) out += "  " + m + "\n";
   return out;

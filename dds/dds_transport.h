@@ -32,6 +32,13 @@ struct DdsOptions {
   // Wall seconds Transport::start waits for a peer on every topic that has one in the app
   // (`--wait-peers`); then the run starts anyway, naming the topics still alone. 0: no wait.
   double wait_peers = 0;
+  // The run's --time-scale: run seconds per wall second (for checks timed on the wall clock).
+  double time_scale = 1;
+  // Wall seconds into a run after which the connected topics still without a peer are first
+  // reported (a domain, topic or type unlike the programs'), then again at growing intervals
+  // (dds/no_peer_reports.h); 0: never. `arbc run` takes it from ARBC_DDS_NO_PEER_AFTER when
+  // set, so that tests need not wait 10 s.
+  double unmatched_after = 10;
 };
 
 // A transport for `app` (its named types name the wire types). Nothing is created on the

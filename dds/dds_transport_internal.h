@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <deque>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
@@ -69,6 +70,7 @@ class TopicReader : public fdds::DataReaderListener {
   fdds::DataReader* reader = nullptr;
   std::atomic<uint64_t> received{0}, lost{0}, undecodable{0};
   std::atomic<int> publishers{0};
+  std::atomic<bool> ever_matched{false};  // a publisher matched at some time
 
  private:
   // Queues a decoded sample (or counts it lost: undecodable, or `depth` of this topic's
@@ -83,7 +85,6 @@ class TopicReader : public fdds::DataReaderListener {
   std::mutex mutex_;            // guards what follows
   uint64_t overflow_ = 0, bad_ = 0;
   std::string bad_why_;
-  bool ever_matched_ = false;
 };
 
 // One topic this process writes: an output of a hosted module, or the input of a module hosted
@@ -106,12 +107,12 @@ class TopicWriter : public fdds::DataWriterListener {
   fdds::DataWriter* writer = nullptr;
   std::atomic<uint64_t> written{0}, failed{0};
   std::atomic<int> subscribers{0};
+  std::atomic<bool> ever_matched{false};  // a subscriber matched at some time
 
  private:
   DdsTransport* transport_;
   WireSample* sample_ = nullptr;
   bool reported_ = false;
-  bool ever_matched_ = false;
 };
 
 // Compares what remote endpoints announce with this process's topics.
@@ -165,6 +166,13 @@ class DdsTransport : public Transport {
   // `user_data`): reported once when it is not this process's type.
   void check_remote(const std::string& topic, const std::string& type, const std::string& user_data,
                     const char* what);
+  // A remote publisher on `topic` (its USER_DATA `user_data`): reported once when this process
+  // writes that topic as the mediator of a module hosted elsewhere, whose only publisher it must
+  // be (two mediators, or a program not given a topic of its own, bypass the arbitration).
+  void check_other_writer(const std::string& topic, const std::string& user_data);
+  // Reports (once) that a remote writer, an arbc process or not, also publishes on the topic
+  // of `port`, which this process mediates.
+  void report_other_writer(const std::string& topic, const std::string& port, bool arbc);
 
  private:
   // A topic this process reads or writes, named before any DDS entity exists.
@@ -181,8 +189,25 @@ class DdsTransport : public Transport {
   bool add_reader(const Endpoint& e, std::string* error);
   bool add_writer(const Endpoint& e, std::string* error);
   // The wire type and topic of a port, checking that no two ports share a topic.
+  // Whether the app connects this port, so that its topic expects a peer: an output some
+  // connection reads, an input some connection delivers to.
+  bool expects_peer(const TransportPort& port, bool input) const;
   // The topics read or written here whose peer is still missing (dds_discovery.cc).
   std::vector<std::string> topics_without_peers() const;
+  // What to check when the topics `alone` have no peer: the domain, and remote topics seen that
+  // look like them (same type or same last name), the likely typo (dds_discovery.cc).
+  std::string peer_hint(const std::vector<std::string>& alone) const;
+  // The connected topics that never had a peer (a topic that had one and lost it is reported
+  // as it goes).
+  std::vector<std::string> topics_never_matched() const;
+  // Executor thread: reports the connected topics no peer has matched yet (a domain, a topic or
+  // a type that differs from the programs' would otherwise leave the run silently idle), the
+  // k-th time (dds/no_peer_reports.h: 10 s into the run, then at growing intervals), and posts
+  // the next report while some remain.
+  void report_unmatched(int k);
+  // Posts the k-th report at its wall time since start().
+  void post_unmatched_report(int k);
+  double wall_seconds_since_start() const;
   bool wire_of(const TransportPort& port, std::string* topic, std::shared_ptr<const WireType>* wire,
                std::string* error);
 
@@ -211,6 +236,7 @@ class DdsTransport : public Transport {
   std::vector<bool> output_mediated_, input_hosted_;
   std::atomic<bool> closing_{false};
   bool closed_ = false;
+  std::chrono::steady_clock::time_point started_at_;  // when start() was called
   // Deliveries written into modules hosted elsewhere, not yet answered.
   struct Pending {
     eprosima::fastrtps::rtps::GUID_t writer;
@@ -226,6 +252,13 @@ class DdsTransport : public Transport {
   SampleIdentity last_received_;  // the last input sample a hosted module received
   mutable std::mutex mismatch_mutex_;
   std::set<std::string> mismatches_;  // reported lines
+  // Guarded by mismatch_mutex_ (add_writer fills the first while discovery runs):
+  // topics written here as the mediator of a module hosted elsewhere -> its port;
+  std::map<std::string, std::string> mediated_input_of_topic_;
+  // remote topics that are not this process's -> their types (for peer_hint);
+  std::map<std::string, std::string> seen_remote_;
+  // topics remote processes publish on -> whether one of them is arbc.
+  std::map<std::string, bool> remote_writers_;
 };
 
 }  // namespace arbc::dds

@@ -1,136 +1,230 @@
 #include "dds/deployment.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
-#include "core/json_parse.h"
+#include "core/json_diagnostic.h"
+#include "core/suggest.h"
 
 namespace arbc::dds {
 
 namespace {
 
 using Json = nlohmann::json;
+using Path = std::vector<std::string>;
 
 const char* const kBuiltinTypes[] = {"bool", "int", "float", "string", "vec3"};
 
-// An object of strings: "topics" and "types".
-bool read_string_map(const Json& j, const std::string& where,
-                     std::map<std::string, std::string>* out, std::string* error) {
-  if (!j.is_object()) {
-    *error = where + ": expected an object of strings, e.g. {\"Module.port\": \"/topic\"}";
-    return false;
-  }
-  for (const auto& [key, value] : j.items()) {
-    if (!value.is_string() || value.get<std::string>().empty()) {
-      *error = where + "." + key + ": expected a non-empty string";
-      return false;
-    }
-    (*out)[key] = value.get<std::string>();
-  }
-  return true;
+// "; did you mean "x"?" when one of `candidates` is a plausible typo of `name`, else nothing.
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates) {
+  auto meant = closest_name(name, candidates);
+  return meant ? "; did you mean \"" + *meant + "\"?" : "";
 }
 
-bool read_integer(const Json& j, const std::string& where, int low, int high, int* out,
-                  std::string* error) {
+// The problems of one file, each a diagnostic at the key or value it is about
+// (core/json_diagnostic.h); one that cannot be placed is at the file.
+class Problems {
+ public:
+  Problems(const std::string& file, std::string_view text, std::vector<Diagnostic>* out)
+      : file_(file), text_(text), out_(out), first_(out->size()) {}
+
+  void at(const Path& path, JsonPart part, std::string message) {
+    out_->push_back(json_diagnostic(file_, text_, path, part, std::move(message)));
+  }
+  void value(const Path& path, std::string message) { at(path, JsonPart::Value, message); }
+  void key(const Path& path, std::string message) { at(path, JsonPart::Key, message); }
+  // Attaches a note at another value to the last problem.
+  void note_value(const Path& path, std::string message) {
+    Problems notes(file_, text_, &out_->back().notes);
+    notes.value(path, std::move(message));
+    out_->back().notes.back().severity = Severity::Note;
+  }
+
+  // False when some problem was found; puts them in the file's order (the library hands keys
+  // over sorted by name).
+  bool finish() {
+    std::stable_sort(out_->begin() + static_cast<std::ptrdiff_t>(first_), out_->end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                       return std::pair(a.loc.line, a.loc.column) <
+                              std::pair(b.loc.line, b.loc.column);
+                     });
+    return out_->size() == first_;
+  }
+
+ private:
+  std::string file_;
+  std::string_view text_;
+  std::vector<Diagnostic>* out_;
+  size_t first_;
+};
+
+// An object of strings: "topics" and "types".
+void read_string_map(const Json& j, const std::string& key, const char* example,
+                     std::map<std::string, std::string>* out, Problems& problems) {
+  if (!j.is_object()) {
+    problems.value({key}, key + ": expected an object of strings, e.g. " + example);
+    return;
+  }
+  for (const auto& [name, value] : j.items()) {
+    if (!value.is_string() || value.get<std::string>().empty()) {
+      problems.value({key, name}, key + ": \"" + name + "\": expected a non-empty string");
+      continue;
+    }
+    (*out)[name] = value.get<std::string>();
+  }
+}
+
+bool read_integer(const Json& j, const Path& path, const std::string& name, int low, int high,
+                  int* out, Problems& problems) {
   if (!j.is_number_integer() || j.get<int64_t>() < low || j.get<int64_t>() > high) {
-    *error =
-        where + ": expected an integer from " + std::to_string(low) + " to " + std::to_string(high);
+    problems.value(path, name + ": expected an integer from " + std::to_string(low) + " to " +
+                             std::to_string(high));
     return false;
   }
   *out = static_cast<int>(j.get<int64_t>());
   return true;
 }
 
-bool read_qos(const Json& j, const std::string& where, Deployment* out, std::string* error) {
+void read_qos(const Json& j, Deployment* out, Problems& problems) {
   if (!j.is_object()) {
-    *error = where + ": expected an object such as {\"depth\": 100}";
-    return false;
+    problems.value({"qos"}, "qos: expected an object such as {\"depth\": 100}");
+    return;
   }
   for (const auto& [key, value] : j.items()) {
     if (key != "depth") {
-      *error = where + ": unknown key \"" + key + "\" (the qos keys are: depth)";
-      return false;
+      problems.key({"qos", key}, "qos: unknown key \"" + key + "\"" + did_you_mean(key, {"depth"}) +
+                                     " (the qos keys are: depth)");
+      continue;
     }
-    if (!read_integer(value, where + ".depth", 1, 100000, &out->depth, error)) return false;
+    read_integer(value, {"qos", "depth"}, "qos.depth", 1, 100000, &out->depth, problems);
   }
-  return true;
 }
 
 // One top-level key of the file.
-bool read_key(const std::string& key, const Json& value, const std::string& where, Deployment* out,
-              std::string* error) {
+void read_key(const std::string& key, const Json& value, Deployment* out, Problems& problems) {
   if (key == "domain") {
     int domain = 0;
     // DDS maps a domain to UDP ports; 232 is the largest the default port mapping allows.
-    if (!read_integer(value, where, 0, 232, &domain, error)) return false;
-    out->domain = domain;
-    return true;
-  }
-  if (key == "ros2") {
-    if (!value.is_boolean()) {
-      *error = where + ": expected true or false";
-      return false;
+    if (read_integer(value, {key}, key, 0, 232, &domain, problems)) out->domain = domain;
+  } else if (key == "ros2") {
+    if (value.is_boolean()) {
+      out->ros2 = value.get<bool>();
+    } else {
+      problems.value({key}, "ros2: expected true or false");
     }
-    out->ros2 = value.get<bool>();
-    return true;
+  } else if (key == "topics") {
+    read_string_map(value, key, "{\"Module.port\": \"/topic\"}", &out->topics, problems);
+  } else if (key == "types") {
+    read_string_map(value, key, "{\"Twist\": \"geometry_msgs/msg/Twist\"}", &out->types, problems);
+  } else if (key == "qos") {
+    read_qos(value, out, problems);
+  } else {
+    problems.key({key}, "unknown key \"" + key + "\"" +
+                            did_you_mean(key, {"domain", "ros2", "topics", "types", "qos"}) +
+                            " (the keys are: domain, ros2, topics, types, qos; "
+                            "docs/distributed.md#the-deployment-file)");
   }
-  if (key == "topics") return read_string_map(value, where, &out->topics, error);
-  if (key == "types") return read_string_map(value, where, &out->types, error);
-  if (key == "qos") return read_qos(value, where, out, error);
-  *error = where + ": unknown key (the keys are: domain, ros2, topics, types, qos)";
-  return false;
+}
+
+Diagnostic at_file(const std::string& path, std::string message) {
+  Diagnostic d;
+  d.loc.file = path;
+  d.message = std::move(message);
+  return d;
 }
 
 }  // namespace
 
 bool parse_deployment(std::string_view text, const std::string& path, Deployment* out,
-                      std::string* error) {
+                      std::vector<Diagnostic>* errors) {
   Json root;
   if (JsonParseError e; !parse_json(text, &root, &e)) {
-    std::string where = e.line ? ":" + std::to_string(e.line) + ":" + std::to_string(e.column) : "";
-    *error = path + where + ": not valid JSON (" + e.detail + ")";
+    errors->push_back(json_syntax_diagnostic(path, e));
     return false;
   }
+  Problems problems(path, text, errors);
   if (!root.is_object()) {
-    *error = path + ": expected a JSON object with the keys domain, ros2, topics, types, qos";
-    return false;
+    problems.value({}, "expected a JSON object with the keys domain, ros2, topics, types, qos");
+    return problems.finish();
   }
   Deployment d;
   d.path = path;
-  for (const auto& [key, value] : root.items()) {
-    if (!read_key(key, value, path + ": " + key, &d, error)) return false;
-  }
+  d.text = std::string(text);
+  for (const auto& [key, value] : root.items()) read_key(key, value, &d, problems);
+  if (!problems.finish()) return false;
   *out = std::move(d);
   return true;
 }
 
-bool read_deployment(const std::string& path, Deployment* out, std::string* error) {
+bool read_deployment(const std::string& path, Deployment* out, std::vector<Diagnostic>* errors) {
+  // Said apart, so that a directory is not reported as a JSON syntax error at 1:1.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    errors->push_back(at_file(path,
+                              "is a directory, not a deployment file (a JSON file such as "
+                              "teleop.deploy.json; docs/distributed.md#the-deployment-file)"));
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    *error = path + ": cannot read the deployment file";
+    errors->push_back(at_file(path, std::string("cannot read the deployment file") +
+                                        (std::filesystem::exists(path, ec) ? " (permission denied?)"
+                                                                           : " (no such file)")));
     return false;
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_deployment(text.str(), path, out, error);
+  return parse_deployment(text.str(), path, out, errors);
 }
 
-bool check_deployment(const Deployment& d, const model::App& app, std::string* error) {
-  std::string file = d.path.empty() ? "the deployment" : d.path;
+bool check_deployment(const Deployment& d, const model::App& app, std::vector<Diagnostic>* errors) {
+  Problems problems(d.path.empty() ? "the deployment" : d.path, d.text, errors);
+  std::vector<std::string> all_ports;
+  for (const model::Module& m : app.modules) {
+    for (const model::Port& p : m.ports) all_ports.push_back(m.name + "." + p.name);
+  }
   std::map<std::string, std::string> ports_of_topic;
   for (const auto& [port, topic] : d.topics) {
     if (!app.find_port(port)) {
-      *error = file + ": topics: \"" + port + "\" is not a port of app " + app.name +
-               " (write Module.port as in the spec)";
-      return false;
+      problems.key({"topics", port}, "topics: \"" + port + "\" is not a port of app " + app.name +
+                                         did_you_mean(port, all_ports) +
+                                         " (write Module.port as in the spec)");
+      continue;
     }
     auto [it, fresh] = ports_of_topic.emplace(topic, port);
     if (!fresh) {
-      *error = file + ": topics: \"" + port + "\" and \"" + it->second + "\" are both on topic " +
-               topic + "; give each port its own topic";
-      return false;
+      problems.value({"topics", port}, "topics: \"" + port + "\" and \"" + it->second +
+                                           "\" are both on topic " + topic +
+                                           "; give each port its own topic");
+      problems.note_value({"topics", it->second}, "the topic of \"" + it->second + "\"");
+    }
+  }
+  // A topic the file gives may also be another port's default (Module/port): the transport
+  // would find that only when it opens, naming no file.
+  std::map<std::string, std::string> port_of_wire;
+  for (const model::Module& m : app.modules) {
+    for (const model::Port& p : m.ports) {
+      std::string port = m.name + "." + p.name;
+      auto [it, fresh] = port_of_wire.emplace(wire_topic(d, port), port);
+      if (fresh) continue;
+      const std::string& given = d.topics.count(port) ? port : it->second;
+      const std::string& other = given == port ? it->second : port;
+      if (d.topics.count(other)) {                               // "/x" and "x" are one topic
+        if (d.topics.at(given) == d.topics.at(other)) continue;  // the same text: said above
+        problems.value({"topics", given}, "topics: \"" + given + "\" and \"" + other +
+                                              "\" are both on topic " + it->first +
+                                              "; give each port its own topic");
+        problems.note_value({"topics", other}, "the topic of \"" + other + "\"");
+      } else {
+        problems.value({"topics", given}, "topics: \"" + given + "\" is on topic " + it->first +
+                                              ", the default topic of " + other + "; give " +
+                                              other + " a topic of its own in \"topics\", or " +
+                                              given + " another");
+      }
     }
   }
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
@@ -139,12 +233,37 @@ bool check_deployment(const Deployment& d, const model::App& app, std::string* e
     if (!known.count(name)) {
       std::string names;
       for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
-      *error = file + ": types: \"" + name + "\" is not a type of app " + app.name +
-               " (the types are: " + names + ")";
-      return false;
+      problems.key({"types", name}, "types: \"" + name + "\" is not a type of app " + app.name +
+                                        did_you_mean(name, {known.begin(), known.end()}) +
+                                        " (the types are: " + names + ")");
     }
   }
-  return true;
+  return problems.finish();
+}
+
+std::string deployment_errors_text(const std::vector<Diagnostic>& errors) {
+  std::string out;
+  for (const Diagnostic& e : errors) {
+    if (!out.empty()) out += '\n';
+    out += e.loc.file.str();
+    if (e.loc.line > 0)
+      out += ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column);
+    out += ": " + e.message;
+  }
+  return out;
+}
+
+std::string wire_topic(const Deployment& d, const std::string& qualified) {
+  std::string written;
+  auto it = d.topics.find(qualified);
+  if (it != d.topics.end()) {
+    written = it->second;
+  } else {
+    written = qualified;
+    written[written.find('.')] = '/';
+  }
+  if (!written.empty() && written.front() == '/') written.erase(0, 1);
+  return d.ros2 ? "rt/" + written : written;
 }
 
 }  // namespace arbc::dds

@@ -12,8 +12,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/app_model.h"
+#include "core/diagnostic.h"
 
 namespace arbc::dds {
 
@@ -24,6 +26,7 @@ inline constexpr int kDefaultDepth = 100;
 
 struct Deployment {
   std::string path;  // the file read ("" without --deploy), for messages
+  std::string text;  // its text, to place what check_deployment finds in it
   std::optional<int> domain;
   bool ros2 = false;
   std::map<std::string, std::string> topics;  // "Module.port" -> topic as written
@@ -31,15 +34,26 @@ struct Deployment {
   int depth = kDefaultDepth;
 };
 
-// Parses a deployment file's text; `path` names it in messages. False with *error (the file,
-// the key, what is wrong, what to do) on malformed JSON, an unknown key or a value of the
-// wrong kind.
+// Errors are diagnostics at the place in the file they are about
+// (docs/design.md#reporting-errors): `file:line:col: error: what is wrong`, the line and column
+// of the offending key or value (of the offending character, for malformed JSON), one per
+// problem, in the file's order.
+
+// Parses a deployment file's text; `path` names it in messages. False with *errors on malformed
+// JSON, an unknown key or a value of the wrong kind.
 bool parse_deployment(std::string_view text, const std::string& path, Deployment* out,
-                      std::string* error);
-// Reads and parses the file at `path`.
-bool read_deployment(const std::string& path, Deployment* out, std::string* error);
+                      std::vector<Diagnostic>* errors);
+// Reads and parses the file at `path` (a missing file or a directory is an error at the file).
+bool read_deployment(const std::string& path, Deployment* out, std::vector<Diagnostic>* errors);
 // Checks the file against the app: every `topics` key is a port of the app, every `types` key
-// a named type of the app or a built-in type name, no two ports share a topic.
-bool check_deployment(const Deployment& d, const model::App& app, std::string* error);
+// a named type of the app or a built-in type name, no two ports share a topic (a topic the file
+// gives is not another port's default either).
+bool check_deployment(const Deployment& d, const model::App& app, std::vector<Diagnostic>* errors);
+// The diagnostics as "file:line:col: message" lines, for an error that is one string.
+std::string deployment_errors_text(const std::vector<Diagnostic>& errors);
+
+// The topic of a port ("Module.port") on the wire: the deployment's, else "Module/port"; with
+// ros2, "rt" + "/topic" ("rt/Module/port" by default).
+std::string wire_topic(const Deployment& d, const std::string& qualified);
 
 }  // namespace arbc::dds

@@ -19,54 +19,91 @@ model::App two_port_app() {
   return app;
 }
 
+// The errors as `arbc run` prints them, without the quoted lines: "file:line:col: message".
+std::string text_of(const std::vector<Diagnostic>& errors) {
+  return deployment_errors_text(errors);
+}
+
 TEST(DeploymentTest, ReadsEveryKey) {
   Deployment d;
-  std::string error;
+  std::vector<Diagnostic> errors;
   ASSERT_TRUE(parse_deployment(R"({"domain": 7, "ros2": true,
       "topics": {"Base.cmd_vel": "/cmd_vel"},
       "types": {"Twist": "geometry_msgs/msg/Twist"}, "qos": {"depth": 12}})",
-                               "d.json", &d, &error))
-      << error;
+                               "d.json", &d, &errors))
+      << text_of(errors);
   EXPECT_EQ(d.domain, 7);
   EXPECT_TRUE(d.ros2);
   EXPECT_EQ(d.topics.at("Base.cmd_vel"), "/cmd_vel");
   EXPECT_EQ(d.types.at("Twist"), "geometry_msgs/msg/Twist");
   EXPECT_EQ(d.depth, 12);
-  EXPECT_TRUE(check_deployment(d, two_port_app(), &error)) << error;
+  EXPECT_TRUE(check_deployment(d, two_port_app(), &errors)) << text_of(errors);
 }
 
 TEST(DeploymentTest, DefaultsWithoutKeys) {
   Deployment d;
-  std::string error;
-  ASSERT_TRUE(parse_deployment("{}", "d.json", &d, &error)) << error;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(parse_deployment("{}", "d.json", &d, &errors)) << text_of(errors);
   EXPECT_FALSE(d.domain);
   EXPECT_FALSE(d.ros2);
   EXPECT_EQ(d.depth, kDefaultDepth);
 }
 
-// Each bad file names the file, the place and what is expected.
-TEST(DeploymentTest, BadFilesSayWhatIsWrong) {
+// Each bad file names the file, the line and column of the offending key or value (of the
+// offending character, for JSON that does not parse), and what is expected.
+TEST(DeploymentTest, BadFilesSayWhatIsWrongAndWhere) {
   struct Case {
     const char* text;
     const char* expected;
   } cases[] = {
-      {"{\n  \"domain\": 7,\n  \"ros2\": tru\n}", "d.json:3:"},
-      {R"({"domian": 7})", "d.json: domian: unknown key (the keys are: domain, ros2, topics"},
-      {R"({"domain": -1})", "d.json: domain: expected an integer from 0 to 232"},
-      {R"({"domain": 1.5})", "d.json: domain: expected an integer from 0 to 232"},
-      {R"({"ros2": "yes"})", "d.json: ros2: expected true or false"},
-      {R"({"topics": ["a"]})", "d.json: topics: expected an object of strings"},
-      {R"({"topics": {"Base.odom": 3}})", "d.json: topics.Base.odom: expected a non-empty string"},
-      {R"({"qos": {"depth": 0}})", "d.json: qos.depth: expected an integer from 1 to 100000"},
-      {R"({"qos": {"history": 5}})", "unknown key \"history\" (the qos keys are: depth)"},
-      {"[1]", "d.json: expected a JSON object"},
+      {"{\n  \"domain\": 7,\n  \"ros2\": tru\n}",
+       "d.json:3:14: not valid JSON: syntax error while parsing value - invalid literal"},
+      {"{\"a\": 1,\n  \"b\": 1e999}",
+       "d.json:2:8: not valid JSON: number overflow parsing '1e999' (beyond the range of a "
+       "double)"},
+      {R"({"domian": 7})",
+       "d.json:1:2: unknown key \"domian\"; did you mean \"domain\"? (the keys are: domain, "
+       "ros2, topics, types, qos; docs/distributed.md#the-deployment-file)"},
+      {"{\n  \"ros2\": true,\n  \"domain\": -1\n}",
+       "d.json:3:13: domain: expected an integer from 0 to 232"},
+      {R"({"domain": 1.5})", "d.json:1:12: domain: expected an integer from 0 to 232"},
+      {R"({"ros2": "yes"})", "d.json:1:10: ros2: expected true or false"},
+      {R"({"topics": ["a"]})", "d.json:1:12: topics: expected an object of strings"},
+      {"{\"topics\": {\n    \"Base.odom\": 3}}",
+       "d.json:2:18: topics: \"Base.odom\": expected a non-empty string"},
+      {R"({"qos": {"depth": 0}})", "d.json:1:19: qos.depth: expected an integer from 1 to 100000"},
+      {R"({"qos": {"history": 5}})",
+       "d.json:1:10: qos: unknown key \"history\" (the qos keys are: depth)"},
+      {R"({"qos": {"dpeth": 5}})",
+       "d.json:1:10: qos: unknown key \"dpeth\"; did you mean \"depth\"? (the qos keys are: "
+       "depth)"},
+      {"\n  [1]", "d.json:2:3: expected a JSON object"},
   };
   for (const Case& c : cases) {
     Deployment d;
-    std::string error;
-    EXPECT_FALSE(parse_deployment(c.text, "d.json", &d, &error)) << c.text;
-    EXPECT_NE(error.find(c.expected), std::string::npos) << c.text << "\n  gave: " << error;
+    std::vector<Diagnostic> errors;
+    EXPECT_FALSE(parse_deployment(c.text, "d.json", &d, &errors)) << c.text;
+    std::string got = text_of(errors);
+    EXPECT_EQ(got.rfind(c.expected, 0), 0u) << c.text << "\n  gave: " << got;
   }
+}
+
+// Every problem is reported, in the order of the file (the library hands keys over sorted),
+// each with the span of its value for the caret and tildes under the quoted line.
+TEST(DeploymentTest, EveryProblemInTheFilesOrder) {
+  Deployment d;
+  std::vector<Diagnostic> errors;
+  EXPECT_FALSE(
+      parse_deployment("{\"ros2\": 1,\n \"domain\": 300,\n \"bogus\": 0}", "d.json", &d, &errors));
+  EXPECT_EQ(text_of(errors),
+            "d.json:1:10: ros2: expected true or false\n"
+            "d.json:2:12: domain: expected an integer from 0 to 232\n"
+            "d.json:3:2: unknown key \"bogus\" (the keys are: domain, ros2, topics, types, qos; "
+            "docs/distributed.md#the-deployment-file)");
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[1].loc.end_line, 2);
+  EXPECT_EQ(errors[1].loc.end_column, 15);
+  EXPECT_EQ(errors[1].severity, Severity::Error);
 }
 
 TEST(DeploymentTest, KeysMustNameTheAppsPortsAndTypes) {
@@ -75,25 +112,66 @@ TEST(DeploymentTest, KeysMustNameTheAppsPortsAndTypes) {
     const char* text;
     const char* expected;
   } cases[] = {
-      {R"({"topics": {"Base.cmd": "/x"}})", "\"Base.cmd\" is not a port of app demo"},
-      {R"({"topics": {"Base.cmd_vel": "/x", "Base.odom": "/x"}})", "are both on topic /x"},
-      {R"({"types": {"Twst": "a/msg/B"}})",
-       "\"Twst\" is not a type of app demo (the types are: Twist, bool, float, int, string, vec3)"},
+      {"{\"topics\": {\n  \"Base.cmd\": \"/x\"}}",
+       "d.json:2:3: topics: \"Base.cmd\" is not a port of app demo (write Module.port"},
+      {R"({"topics": {"Base.cmd_vell": "/x"}})",
+       "d.json:1:13: topics: \"Base.cmd_vell\" is not a port of app demo; did you mean "
+       "\"Base.cmd_vel\"? (write Module.port as in the spec)"},
+      {R"({"topics": {"Base.cmd_vel": "/x", "Base.odom": "/x"}})",
+       "d.json:1:48: topics: \"Base.odom\" and \"Base.cmd_vel\" are both on topic /x"},
+      // Base.odom's default topic, with and without ROS 2 naming: named here, not when the
+      // transport opens.
+      {R"({"topics": {"Base.cmd_vel": "/Base/odom"}})",
+       "d.json:1:29: topics: \"Base.cmd_vel\" is on topic Base/odom, the default topic of "
+       "Base.odom; give Base.odom a topic of its own in \"topics\", or Base.cmd_vel another"},
+      {R"({"topics": {"Base.cmd_vel": "/x", "Base.odom": "x"}})",
+       "d.json:1:48: topics: \"Base.odom\" and \"Base.cmd_vel\" are both on topic x"},
+      {R"({"ros2": true, "topics": {"Base.odom": "Base/cmd_vel"}})",
+       "d.json:1:40: topics: \"Base.odom\" is on topic rt/Base/cmd_vel, the default topic of "
+       "Base.cmd_vel"},
+      {"{\"types\": {\"Twist\": \"a/msg/T\",\n            \"Twst\": \"a/msg/B\"}}",
+       "d.json:2:13: types: \"Twst\" is not a type of app demo; did you mean \"Twist\"? (the "
+       "types are: Twist, bool, float, int, string, vec3)"},
   };
   for (const Case& c : cases) {
     Deployment d;
-    std::string error;
-    ASSERT_TRUE(parse_deployment(c.text, "d.json", &d, &error)) << error;
-    EXPECT_FALSE(check_deployment(d, app, &error)) << c.text;
-    EXPECT_NE(error.find(c.expected), std::string::npos) << c.text << "\n  gave: " << error;
+    std::vector<Diagnostic> errors;
+    ASSERT_TRUE(parse_deployment(c.text, "d.json", &d, &errors)) << text_of(errors);
+    EXPECT_FALSE(check_deployment(d, app, &errors)) << c.text;
+    std::string got = text_of(errors);
+    EXPECT_EQ(got.rfind(c.expected, 0), 0u) << c.text << "\n  gave: " << got;
+    EXPECT_EQ(errors.size(), 1u) << got;  // one problem, said once
   }
+}
+
+// Two ports on one topic: the error is at the second, a note at the first.
+TEST(DeploymentTest, ASharedTopicPointsAtBothPorts) {
+  Deployment d;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(
+      parse_deployment("{\"topics\": {\n  \"Base.cmd_vel\": \"/x\",\n  \"Base.odom\": \"/x\"}}",
+                       "d.json", &d, &errors));
+  EXPECT_FALSE(check_deployment(d, two_port_app(), &errors));
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].loc.line, 3);
+  ASSERT_EQ(errors[0].notes.size(), 1u);
+  EXPECT_EQ(errors[0].notes[0].severity, Severity::Note);
+  EXPECT_EQ(errors[0].notes[0].loc.line, 2);
+  EXPECT_EQ(errors[0].notes[0].loc.column, 19);
+  EXPECT_EQ(errors[0].notes[0].message, "the topic of \"Base.cmd_vel\"");
 }
 
 TEST(DeploymentTest, AMissingFileIsNamed) {
   Deployment d;
-  std::string error;
-  EXPECT_FALSE(read_deployment("/nonexistent/deploy.json", &d, &error));
-  EXPECT_EQ(error, "/nonexistent/deploy.json: cannot read the deployment file");
+  std::vector<Diagnostic> errors;
+  EXPECT_FALSE(read_deployment("/nonexistent/deploy.json", &d, &errors));
+  EXPECT_EQ(text_of(errors),
+            "/nonexistent/deploy.json: cannot read the deployment file (no such file)");
+  // A directory is not a JSON syntax error at 1:1.
+  errors.clear();
+  EXPECT_FALSE(read_deployment("/", &d, &errors));
+  EXPECT_EQ(text_of(errors).rfind("/: is a directory, not a deployment file", 0), 0u)
+      << text_of(errors);
 }
 
 }  // namespace

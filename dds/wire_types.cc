@@ -84,16 +84,7 @@ WireNaming::WireNaming(const model::App& app, const Deployment& deployment)
     : app_(app), deployment_(deployment) {}
 
 std::string WireNaming::topic(const std::string& qualified) const {
-  std::string written;
-  auto it = deployment_.topics.find(qualified);
-  if (it != deployment_.topics.end()) {
-    written = it->second;
-  } else {
-    written = qualified;
-    written[written.find('.')] = '/';
-  }
-  if (!written.empty() && written.front() == '/') written.erase(0, 1);
-  return deployment_.ros2 ? "rt/" + written : written;
+  return wire_topic(deployment_, qualified);
 }
 
 std::string WireNaming::mangle(const std::string& written) const {

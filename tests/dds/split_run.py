@@ -8,8 +8,9 @@ starts M, then W, and checks what each prints.
 usage: split_run.py ARBC PLUGIN SPEC PROFILE CASE [SEEDS]
   CASE  a scenario (reachable, tool, human, mixed, perturbed): every seed ends with a clean
         table and 0 conflicts, and M ends cleanly on SIGTERM;
-        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again (a second
-        attempt only after the known Fast-DDS failure to match the restarted M);
+        kill-m: M is killed (SIGKILL) in the middle of a `mixed` run and started again; over
+        shared memory, the new M must also take ports of its own, not the killed one's (a
+        survivor still writes into the killed process's segments: dds/shm_participant_id.h);
         restart-m: the same with M ended by SIGTERM (it deletes its DDS entities first);
         kill-w: W is killed; M keeps running, reports the lapsed events, ends on SIGINT;
         signals: W and M each ended mid-run by SIGINT, then by SIGTERM: each exits, prints
@@ -56,6 +57,14 @@ class Split:
         self.domain = Domain()
         self.env = environment(profile)
         self.prefix = {"W": [], "M": []}  # `ip netns exec NS` in the hosts case
+        self.procs = []
+        atexit.register(self.kill_leftovers)
+
+    def kill_leftovers(self):
+        """A failed check ends this script at once: take every process still running with it."""
+        for p in self.procs:
+            if p.poll() is None:
+                p.kill()
 
     def start(self, role, extra):
         """Starts M or W; its trace and report go to self.files(role)."""
@@ -71,8 +80,10 @@ class Split:
         else:
             words = [self.arbc, "run", self.app, "--plugin", self.plugin, "--host", "all",
                      "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
-        return subprocess.Popen(self.prefix[role] + words, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                text=True, env=self.env)
+        proc = subprocess.Popen(self.prefix[role] + words, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True, env=self.env)
+        self.procs.append(proc)
+        return proc
 
     def files(self, role):
         return os.path.join(self.dir, role + ".trace.jsonl"), os.path.join(self.dir, role + ".html")
@@ -147,45 +158,55 @@ def scenario(split, name, seeds):
         print(f"ok {what}: {out.splitlines()[0] if out else ''}")
 
 
-# After a SIGKILL, Fast-DDS 2.9 sometimes leaves W deaf to the restarted M for good: W
-# discovers M's new endpoints but never matches them, so W never prints "a publisher is back"
-# (docs/distributed.md#killing-and-restarting-a-process: 4 of 115 runs over UDP, 5 of 102 over
-# shared memory). That failure is below arbc, and one more attempt is allowed for it alone;
-# anything else, or the same twice, fails.
-NEVER_MATCHED_AGAIN = "a publisher is back"
+def shm_ports(pid):
+    """The Fast-DDS shared-memory ports process `pid` has mapped (segments still named)."""
+    try:
+        with open(f"/proc/{pid}/maps") as f:
+            maps = f.read()
+    except OSError:
+        return set()
+    return set(re.findall(r"/fastrtps_port(\d+)$", maps, re.M))
 
 
-def restart_m(split, sig, case, attempts=1):
+def expect_ports_of_its_own(m2, killed_ports, case):
+    """Over shared memory, the restarted M maps a port the killed one did not: its own."""
+    if not killed_ports:
+        return  # no shared memory in this profile
+    deadline = time.time() + 15
+    while time.time() < deadline and not shm_ports(m2.pid) - killed_ports:
+        time.sleep(0.1)
+    new = shm_ports(m2.pid)
+    expect(new - killed_ports, f"{case}: the restarted M took the killed M's shared-memory ports "
+           f"again ({sorted(new)} of {sorted(killed_ports)}); W may write into the old segments")
+
+
+def restart_m(split, sig, case):
     """M ended by `sig` in the middle of a `mixed` run and started again; W finishes the run."""
-    for attempt in range(1, attempts + 1):
-        m = split.start("M", [])
-        w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
-        time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
-        alive(w, f"W ended before M was stopped by {sig.name}")
-        m.send_signal(sig)
-        m.wait()
-        time.sleep(0.5)
-        m2 = split.start("M", [])
-        try:
-            # A run takes about 8 s; well within this limit even on a loaded machine.
-            out, _ = w.communicate(timeout=120)
-            rc = w.returncode
-        except subprocess.TimeoutExpired:
-            for p in (w, m2):
-                p.kill()
-            out, mout = w.communicate()[0], m2.communicate()[0]
-            if attempt < attempts and NEVER_MATCHED_AGAIN not in out:
-                print(f"{case}: W never matched the restarted M (the Fast-DDS failure in "
-                      "docs/distributed.md); once more\n" + out)
-                continue
-            fail(f"{case}: W did not end within 120 s of M's restart\n--- W ---\n{out}\n--- M ---\n{mout}")
-        mrc, mout = stop(m2, "M (restarted)")
-        check_w(rc, out, case)
-        check_m_stopped(mrc, mout, case)
-        expect("conflicts: 0" in out, f"{case}: conflicts after the restart", out)
-        split.check_files("M", f"{case} (restarted M)", True, mout)
-        print(f"ok {case}: W survived M's {sig.name}; the restarted M finished the run\n" + out + mout)
-        return
+    m = split.start("M", [])
+    w = split.start("W", ["--scenario", "mixed", "--seed", "3"])
+    time.sleep(2.0)  # about 20 s of the run's time: mid-way through `mixed` (about 45 s)
+    alive(w, f"W ended before M was stopped by {sig.name}")
+    killed_ports = shm_ports(m.pid) if sig == signal.SIGKILL else set()
+    m.send_signal(sig)
+    m.wait()
+    time.sleep(0.5)
+    m2 = split.start("M", [])
+    expect_ports_of_its_own(m2, killed_ports, case)
+    try:
+        # A run takes about 8 s; well within this limit even on a loaded machine.
+        out, _ = w.communicate(timeout=120)
+        rc = w.returncode
+    except subprocess.TimeoutExpired:
+        for p in (w, m2):
+            p.kill()
+        out, mout = w.communicate()[0], m2.communicate()[0]
+        fail(f"{case}: W did not end within 120 s of M's restart\n--- W ---\n{out}\n--- M ---\n{mout}")
+    mrc, mout = stop(m2, "M (restarted)")
+    check_w(rc, out, case)
+    check_m_stopped(mrc, mout, case)
+    expect("conflicts: 0" in out, f"{case}: conflicts after the restart", out)
+    split.check_files("M", f"{case} (restarted M)", True, mout)
+    print(f"ok {case}: W survived M's {sig.name}; the restarted M finished the run\n" + out + mout)
 
 
 def kill_w(split):
@@ -292,7 +313,7 @@ def main():
     seeds = int(sys.argv[6]) if len(sys.argv) > 6 else 5
     split = Split(arbc, plugin, spec, profile)
     if case == "kill-m":
-        restart_m(split, signal.SIGKILL, case, attempts=2)
+        restart_m(split, signal.SIGKILL, case)
     elif case == "restart-m":
         restart_m(split, signal.SIGTERM, case)
     elif case == "kill-w":

@@ -2,6 +2,7 @@
 // says, or the error. usage: dds_consumer FILE
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "dds/deployment.h"
 
@@ -11,9 +12,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   arbc::dds::Deployment d;
-  std::string error;
-  if (!arbc::dds::read_deployment(argv[1], &d, &error)) {
-    std::fprintf(stderr, "dds_consumer: %s\n", error.c_str());
+  std::vector<arbc::Diagnostic> errors;
+  if (!arbc::dds::read_deployment(argv[1], &d, &errors)) {
+    for (const arbc::Diagnostic& e : errors) std::fputs(arbc::render(e, nullptr).c_str(), stderr);
     return 2;
   }
   std::printf("domain %d, ros2 %s, %zu topic(s), depth %d\n", d.domain.value_or(-1),
