@@ -96,13 +96,14 @@ void add_members(const SymbolIndex& ix, const std::vector<std::string>& chain, i
           {{"label", f.name}, {"kind", kField}, {"detail", f.type ? f.type->to_string() : "?"}});
 }
 
-// The rule whose body the cursor is probably in: the last declared above the cursor.
+// The rule whose body the cursor is probably in: the last declared above the cursor; its key,
+// which its locals name as their container (two ports may each have a rule of that name).
 std::string enclosing_rule(const SymbolIndex& ix, int line) {
   const Symbol* best = nullptr;
   for (const Symbol& s : ix.symbols)
     if (s.kind == SymbolKind::Rule && s.def.line <= line && (!best || s.def.line > best->def.line))
       best = &s;
-  return best ? best->name : "";
+  return best ? best->key : "";
 }
 
 void add_names(const SymbolIndex& ix, int line, nlohmann::json& items) {

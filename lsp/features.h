@@ -15,8 +15,10 @@ nlohmann::json hover(const Document& doc, Position p);       // hover.cc
 nlohmann::json definition(const Document& doc, Position p);  // navigation.cc
 nlohmann::json references(const Document& doc, Position p, bool with_declaration);
 nlohmann::json highlights(const Document& doc, Position p);
-nlohmann::json prepare_rename(const Document& doc, Position p);  // rename.cc
-// nullopt and `err` when the symbol cannot be renamed or the name is not an identifier.
+// rename.cc. prepare_rename: null where there is no name, nullopt and `err` (why) for a name
+// that cannot be renamed. rename: nullopt and `err` when the symbol cannot be renamed or the
+// new name is not an identifier or already taken.
+std::optional<nlohmann::json> prepare_rename(const Document& doc, Position p, std::string* err);
 std::optional<nlohmann::json> rename(const Document& doc, Position p, const std::string& name,
                                      std::string* err);
 nlohmann::json document_symbols(const Document& doc);        // document_symbols.cc

@@ -12,6 +12,14 @@ std::string loc_key(const char* prefix, const Loc& l, const std::string& name) {
   return std::string(prefix) + std::to_string(l.line) + ":" + std::to_string(l.column) + ":" + name;
 }
 
+// A rule's key: its arbitrated port and its name, since rule names are unique only within a
+// port (two `arbitrate` blocks may each have a `track`). `a` is the rule's block; null: the
+// block sema resolved for it.
+std::string rule_key(const ast::Rule* r, const ast::ArbitrateDecl* a = nullptr) {
+  if (!a) a = r->port;
+  return "rule:" + (a ? a->port.qualified() : std::string()) + ":" + r->name;
+}
+
 class Builder {
  public:
   Builder(const ast::Spec& spec, SymbolIndex& ix) : spec_(spec), ix_(ix) {}
@@ -27,22 +35,27 @@ class Builder {
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
     for (const ast::TemporalDecl& n : spec_.temporal) {
-      if (n.rule_decl) ix_.add_occurrence("rule:" + n.rule, name_loc(n.rule_loc, n.rule));
-      if (n.other_decl) ix_.add_occurrence("rule:" + n.other, name_loc(n.other_loc, n.other));
+      if (n.rule_decl) ix_.add_occurrence(rule_key(n.rule_decl), name_loc(n.rule_loc, n.rule));
+      if (n.other_decl) ix_.add_occurrence(rule_key(n.other_decl), name_loc(n.other_loc, n.other));
       // An absence's event, a response's trigger event; a port for a stability or a response
       // the port answers.
       if ((n.rule_decl || n.port_decl) && !n.event.empty())
         ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
-      expr(n.condition.get());  // a response's `while`
+      expr(n.condition.get());    // a response's `while`
+      expr(n.window.expr.get());  // `within D`: D may be a constant
       if (n.port_decl) port_ref(n.port);
     }
     for (const ast::AssumeDecl& a : spec_.assumptions) {
-      if (!a.after_decl) continue;  // reported: its names may not resolve
+      expr(a.absent_for.expr.get());  // `for D`
+      if (!a.after_decl) continue;    // reported: its names may not resolve
       ix_.add_occurrence("event:" + a.event, name_loc(a.event_loc, a.event));
-      ix_.add_occurrence("rule:" + a.after, name_loc(a.after_loc, a.after));
-      if (a.until_decl) ix_.add_occurrence("rule:" + a.until, name_loc(a.until_loc, a.until));
+      ix_.add_occurrence(rule_key(a.after_decl), name_loc(a.after_loc, a.after));
+      if (a.until_decl) ix_.add_occurrence(rule_key(a.until_decl), name_loc(a.until_loc, a.until));
     }
-    for (const ast::RateDecl& r : spec_.rates) port_ref(r.port);
+    for (const ast::RateDecl& r : spec_.rates) {
+      port_ref(r.port);
+      expr(r.period.expr.get());
+    }
     for (const ast::ResourceDecl& r : spec_.resources) {
       for (const ast::PortRef& p : r.ports) port_ref(p);
       expr(r.uses.get());
@@ -87,7 +100,7 @@ class Builder {
       for (const ast::Rule& r : a.rules)
         declare({.kind = SymbolKind::Rule,
                  .name = r.name,
-                 .key = "rule:" + r.name,
+                 .key = rule_key(&r, &a),
                  .def = name_loc(r.loc, r.name),
                  .container = a.port.qualified(),
                  .rule = &r});
@@ -153,6 +166,7 @@ class Builder {
       expr(r.when.get());
       if (r.hold) expr(r.hold->expr.get());
       owner_ = r.name;
+      owner_key_ = rule_key(&r, &a);
       with_message(r.source, r.message_name, [&] { block(r.body); });
     }
   }
@@ -161,19 +175,20 @@ class Builder {
     port_ref(c.source);
     port_ref(c.destination);
     owner_ = "connect " + c.source.qualified() + " -> " + c.destination.qualified();
+    owner_key_ = owner_;
     with_message(c.source, c.message_name, [&] { block(c.body); });
   }
 
   void assertion(const ast::AssertDecl& a) {
     port_ref(a.port);
-    if (a.rule_decl) ix_.add_occurrence("rule:" + a.rule, name_loc(a.rule_loc, a.rule));
+    if (a.rule_decl) ix_.add_occurrence(rule_key(a.rule_decl), name_loc(a.rule_loc, a.rule));
     expr(a.property.get());
   }
 
   // A `test`: its rule, ports, events and the names in its values and times. A test's
   // `set` is not a rule's: set_by stays the rules'.
   void test(const ast::TestDecl& t) {
-    if (t.on_rule) ix_.add_occurrence("rule:" + t.on, name_loc(t.on_loc, t.on));
+    if (t.on_rule) ix_.add_occurrence(rule_key(t.on_rule), name_loc(t.on_loc, t.on));
     for (const ast::TestStep& s : t.steps) {
       expr(s.at.expr.get());
       if (s.kind == ast::TestStep::Kind::Input) {
@@ -185,7 +200,7 @@ class Builder {
     }
     for (const ast::TestExpect& x : t.expects) {
       if (x.kind == ast::TestExpect::Kind::Drops && x.rule_decl)
-        ix_.add_occurrence("rule:" + x.rule, name_loc(x.rule_loc, x.rule));
+        ix_.add_occurrence(rule_key(x.rule_decl), name_loc(x.rule_loc, x.rule));
       if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing)
         port_ref(x.port);
       expr(x.value.get());
@@ -206,7 +221,7 @@ class Builder {
                     .name = name.empty() ? source.port : name,
                     .key = message_key_,
                     .def = at,
-                    .container = owner_,
+                    .container = owner_key_,
                     .type = source.port_decl ? source.port_decl->type.resolved : nullptr});
     body();
     message_key_.clear();
@@ -237,6 +252,7 @@ class Builder {
   const ast::Spec& spec_;
   SymbolIndex& ix_;
   std::string owner_;        // the rule or connection whose body is walked
+  std::string owner_key_;    // the same, unique: a rule's key (rule_key), or owner_
   std::string message_key_;  // the symbol the message name resolves to there
 };
 
@@ -251,7 +267,7 @@ void Builder::stmt(const ast::Stmt& s) {
                .name = s.name,
                .key = loc_key("local:", s.name_loc, s.name),
                .def = name_loc(s.name_loc, s.name),
-               .container = owner_,
+               .container = owner_key_,
                .type = s.expr ? s.expr->type : nullptr,
                .stmt = &s});
       break;
@@ -280,7 +296,7 @@ void Builder::expr(const ast::Expr* e) {
              .name = e->text,
              .key = loc_key("param:", at, e->text),
              .def = name_loc(at, e->text),
-             .container = owner_});
+             .container = owner_key_});
   } else {
     ix_.expressions.push_back(e);
   }

@@ -2,6 +2,7 @@
 // tests/lsp (protocol suite, Neovim).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <limits>
 #include <mutex>
@@ -152,6 +153,28 @@ TEST(SymbolIndex, ResolvesUsesToDeclarations) {
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(ix->symbols[v->symbol].kind, SymbolKind::Local);
   EXPECT_EQ(ix->symbols[v->symbol].def.column, 46);
+}
+
+// A constant where a duration goes is a use of it (find references, rename), in properties
+// over time and assumptions as much as in rules.
+TEST(SymbolIndex, ConstantsInDurationsAreUses) {
+  frontend::CheckResult r = frontend::check_text(
+      "app a \"x\";\nconst D = 1s;\nmodule M { in p: int; out q: int; out s: int; }\n"
+      "event e = M.s: s > 0;\n"
+      "arbitrate M.p { r: from M.q when not e { accept q > 0; } t: from M.s when e { accept true; "
+      "} "
+      "}\n"
+      "never two r within D;\ngiven M.q every D;\nstable M.p for D;\nassume not e for D after r;\n",
+      "x.spec", ".");
+  ASSERT_TRUE(r.ok()) << frontend::render_diagnostics(r.diagnostics, nullptr);
+  std::unique_ptr<SymbolIndex> ix = build_index(*r.spec);
+  const Occurrence* decl = ix->occurrence_at(2, 7);
+  ASSERT_NE(decl, nullptr);
+  ASSERT_EQ(ix->symbols[decl->symbol].key, "const:D");
+  std::vector<int> lines;
+  for (const Occurrence* o : ix->occurrences_of(decl->symbol)) lines.push_back(o->loc.line);
+  std::sort(lines.begin(), lines.end());
+  EXPECT_EQ(lines, (std::vector<int>{2, 6, 7, 8, 9}));
 }
 
 TEST(GrammarInfo, KeywordsComeFromTheGrammar) {

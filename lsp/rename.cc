@@ -1,6 +1,8 @@
-// Rename of events and rules across the file. Other symbols are refused: a module or port
-// name is also the name a running module registers, a type or const rename is rare enough to
-// do by hand, and locals are left to the editor.
+// Rename of events, rules and constants across the file. The other names are refused with the
+// reason, in prepareRename already: a client that gets a bare null says only "nothing to
+// rename". Module, port and type names, and the app's, are also names outside the spec (a
+// plugin registers its modules by name, traces, inputs files and DDS topics name modules and
+// ports, transports name types on the wire), which a rename in the spec would not reach.
 #include <cctype>
 
 #include "compiler/frontend/grammar_info.h"
@@ -11,8 +13,36 @@ namespace arbc::lsp {
 
 namespace {
 
-bool renamable(const Symbol* s) {
-  return s && (s->kind == SymbolKind::Event || s->kind == SymbolKind::Rule);
+// Why `s` cannot be renamed here, or "" when it can.
+std::string refusal(const Symbol& s) {
+  switch (s.kind) {
+    case SymbolKind::Event:
+    case SymbolKind::Rule:
+    case SymbolKind::Const:
+      return "";
+    case SymbolKind::Module:
+      return "module '" + s.name +
+             "' is not renamed here: its plugin registers it by that name "
+             "(ARBC_REGISTER_MODULE), and traces, inputs files and DDS topics use it too; rename "
+             "it in the spec and in those by hand";
+    case SymbolKind::Port:
+      return "port '" + s.container + "." + s.name +
+             "' is not renamed here: its module's plugin, traces, inputs files and DDS topics "
+             "use that name too; rename it in the spec and in those by hand";
+    case SymbolKind::Type:
+      return "type '" + s.name +
+             "' is not renamed here: transports name it on the wire (app.json's types, "
+             "deployment files); rename it in the spec and in those by hand";
+    case SymbolKind::App:
+      return "the app's name is not renamed here: it is also the name of the directory "
+             "`arbc build` writes; change `app " +
+             s.name + "` by hand";
+    case SymbolKind::Local:
+      return "'" + s.name +
+             "' is a local name: only events, rules and constants can be renamed; change it "
+             "by hand";
+  }
+  return "only events, rules and constants can be renamed";
 }
 
 bool is_identifier(const std::string& name) {
@@ -25,19 +55,42 @@ bool is_identifier(const std::string& name) {
   return true;
 }
 
+// Another declared name spelt `name`, or null. Names of different kinds can meet (an event
+// and a constant both read as a name in an expression, `after X` takes a rule or an event, a
+// local hides a constant), so any other symbol counts; a port's name is always written
+// after its module's (`M.p`), so ports do not.
+const Symbol* taken_by(const SymbolIndex& index, const Symbol& renamed, const std::string& name) {
+  for (const Symbol& s : index.symbols)
+    if (s.name == name && &s != &renamed && s.kind != SymbolKind::Port) return &s;
+  return nullptr;
+}
+
 // Whether the index is of the text the client has: edits from an older text would land on the
 // wrong characters.
 bool index_is_current(const Document& doc) {
   return doc.analysis && doc.analysis->index && doc.analysis->index_text == doc.text;
 }
 
+// Why the name under the cursor cannot be renamed, or "" when it can (`l.symbol` is set).
+std::string cannot_rename(const Document& doc, const Lookup& l) {
+  if (!index_is_current(doc))
+    return "the text does not parse now: fix the syntax error first, then rename";
+  if (std::string why = refusal(*l.symbol); !why.empty()) return why;
+  if (in_app_spec(doc, l.symbol->def))
+    return "'" + l.symbol->name + "' is declared in " + l.symbol->def.file +
+           ": rename it there (its tests files are not renamed with it)";
+  return "";
+}
+
 }  // namespace
 
-nlohmann::json prepare_rename(const Document& doc, Position p) {
+std::optional<nlohmann::json> prepare_rename(const Document& doc, Position p, std::string* err) {
   Lookup l = look_up(doc, p);
-  if (!renamable(l.symbol) || !index_is_current(doc) || in_app_spec(doc, l.symbol->def))
-    return nullptr;
-  return {{"range", index_range(doc, l.occurrence->loc)}, {"placeholder", l.symbol->name}};
+  if (!l.symbol) return nlohmann::json(nullptr);  // no name here: nothing to rename
+  *err = cannot_rename(doc, l);
+  if (!err->empty()) return std::nullopt;
+  return nlohmann::json{{"range", index_range(doc, l.occurrence->loc)},
+                        {"placeholder", l.symbol->name}};
 }
 
 std::optional<nlohmann::json> rename(const Document& doc, Position p, const std::string& name,
@@ -47,22 +100,21 @@ std::optional<nlohmann::json> rename(const Document& doc, Position p, const std:
     *err = "the text does not parse now: fix the syntax error first, then rename";
     return std::nullopt;
   }
-  if (!renamable(l.symbol)) {
-    *err = "only events and rules can be renamed";
+  if (!l.symbol) {
+    *err = "there is no name to rename here: put the cursor on an event, a rule or a constant";
     return std::nullopt;
   }
-  if (in_app_spec(doc, l.symbol->def)) {
-    *err = "'" + l.symbol->name + "' is declared in " + l.symbol->def.file +
-           ": rename it there (its tests files are not renamed with it)";
-    return std::nullopt;
-  }
+  *err = cannot_rename(doc, l);
+  if (!err->empty()) return std::nullopt;
   if (!is_identifier(name)) {
     *err = "'" + name + "' is not a name (letters, digits and '_', not a keyword)";
     return std::nullopt;
   }
-  std::string prefix = l.symbol->kind == SymbolKind::Event ? "event:" : "rule:";
-  if (name != l.symbol->name && l.index->find(prefix + name)) {
-    *err = "there is already " + std::string(symbol_kind_name(l.symbol->kind)) + " '" + name + "'";
+  if (const Symbol* other =
+          name != l.symbol->name ? taken_by(*l.index, *l.symbol, name) : nullptr) {
+    std::string kind =
+        other->kind == SymbolKind::Local ? "local name" : symbol_kind_name(other->kind);
+    *err = "there is already " + kind + " '" + name + "'";
     return std::nullopt;
   }
   nlohmann::json edits = nlohmann::json::array();

@@ -87,7 +87,12 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
   if (method == "textDocument/documentSymbol") return document_symbols(*doc);
   if (method == "textDocument/completion") return completion(*doc, p);
   if (method == "textDocument/codeAction") return code_actions(*doc, params.at("range"));
-  if (method == "textDocument/prepareRename") return prepare_rename(*doc, p);
+  if (method == "textDocument/prepareRename") {
+    std::string why;
+    auto range = prepare_rename(*doc, p, &why);
+    if (!range) *err = {kRequestFailed, why};
+    return range;
+  }
   if (method == "textDocument/rename") {
     std::string why;
     auto edit = rename(*doc, p, params.at("newName").get<std::string>(), &why);

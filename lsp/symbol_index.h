@@ -20,11 +20,15 @@ const char* symbol_kind_name(SymbolKind k);  // "event", "rule", ...
 
 struct Symbol {
   SymbolKind kind = SymbolKind::Event;
-  std::string name;       // as written: "e_taken", "cmd", "obj"
-  std::string key;        // unique: "event:e_taken", "port:PickAndPlace.cmd", "local:12:5:obj"
-  Loc def;                // the declaring name
-  std::string container;  // ports: the module; locals: the rule or connection
-  TypePtr type;           // ports, consts, locals: the value's type (may be null)
+  std::string name;  // as written: "e_taken", "cmd", "obj"
+  // Unique: "event:e_taken", "port:PickAndPlace.cmd", "local:12:5:obj"; a rule's name is
+  // unique only in its port: "rule:PickAndPlace.cmd:take".
+  std::string key;
+  Loc def;  // the declaring name
+  // Ports: the module; rules: the arbitrated port; locals: the key of the rule whose body
+  // declares them, or "connect M.q -> N.p".
+  std::string container;
+  TypePtr type;  // ports, consts, locals: the value's type (may be null)
   // A local bound by `let`/`var`, a lambda's parameter or the incoming message.
   const ast::Stmt* stmt = nullptr;
   const ast::Rule* rule = nullptr;           // Rule symbols

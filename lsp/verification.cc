@@ -13,28 +13,59 @@ std::string state_text(const verify::EventState& s) {
          " present; " + (s.absent.empty() ? std::string("none") : join(s.absent)) + " absent";
 }
 
-// One diagnostic per rule the finding involves (the first at the finding's own location).
+bool same_place(const model::SourceLocation& a, const model::SourceLocation& b) {
+  return a.line == b.line && a.column == b.column;
+}
+
+// The rule `f` names as rules[i], by its arbitrated port and name: two ports may each have a
+// rule of that name. Null when the finding does not say the port.
+const model::Connection* named_rule(const model::App& app, const verify::Finding& f, size_t i) {
+  const std::string& port = f.rule_port(i);
+  if (port.empty()) return nullptr;
+  for (const model::Connection& c : app.connections)
+    if (c.name == f.rules[i] && c.destination == port) return &c;
+  return nullptr;
+}
+
+// The finding at its own location; and one diagnostic on every other rule of a conflict
+// between rules (a counterexample of a port: its first rule is the finding's location; a
+// resource two rules both use, reported at the resource), so each rule shows it, with notes
+// at the other rule and, when elsewhere, the finding.
 void add_finding(const model::App& app, const verify::Finding& f, std::vector<Diagnostic>& out) {
   Diagnostic d = verify::to_diagnostic(f);
-  if (!f.counterexample) {
-    out.push_back(std::move(d));
-    return;
-  }
-  d.message += "\n" + state_text(*f.counterexample);
+  if (f.counterexample) d.message += "\n" + state_text(*f.counterexample);
   out.push_back(d);
-  for (size_t i = 1; i < f.rules.size(); ++i) {
-    for (const model::Connection& c : app.connections) {
-      if (c.name != f.rules[i] || (!f.port.empty() && c.destination != f.port)) continue;
-      if (c.loc.line == f.loc.line && c.loc.column == f.loc.column) continue;
-      Diagnostic other = d;
-      other.loc = c.loc;
-      Diagnostic back;
-      back.severity = Severity::Note;
-      back.loc = f.loc;
-      back.message = "the other rule: '" + f.rules[0] + "'";
-      other.notes.insert(other.notes.begin(), back);
-      out.push_back(std::move(other));
+  if (f.rules.size() < 2 || (!f.counterexample && f.check != verify::kCheckResource)) return;
+  std::vector<const model::Connection*> rules;
+  bool at_a_rule = false;  // the finding's own location is one of its rules
+  for (size_t i = 0; i < f.rules.size(); ++i) {
+    rules.push_back(named_rule(app, f, i));
+    at_a_rule |= rules[i] && same_place(rules[i]->loc, f.loc);
+  }
+  for (size_t i = 0; i < rules.size(); ++i) {
+    if (!rules[i] || same_place(rules[i]->loc, f.loc)) continue;
+    Diagnostic other = d;
+    other.loc = rules[i]->loc;
+    std::vector<Diagnostic> back;
+    for (size_t j = 0; j < rules.size(); ++j) {
+      if (j == i || !rules[j]) continue;
+      Diagnostic n;
+      n.severity = Severity::Note;
+      n.loc = rules[j]->loc;
+      n.message = "the other rule: '" + f.rules[j] + "'";
+      if (rules[j]->destination != rules[i]->destination)
+        n.message += " (into " + rules[j]->destination + ")";
+      back.push_back(std::move(n));
     }
+    if (!at_a_rule) {
+      Diagnostic n;
+      n.severity = Severity::Note;
+      n.loc = f.loc;
+      n.message = "also reported here";
+      back.push_back(std::move(n));
+    }
+    other.notes.insert(other.notes.begin(), back.begin(), back.end());
+    out.push_back(std::move(other));
   }
 }
 
@@ -67,6 +98,8 @@ Verification verify_text(const std::string& text, int version, const std::string
   for (const verify::PortResult& p : report->ports)
     for (const verify::Finding& f : p.findings) add_finding(app, f, v.diagnostics);
   for (const verify::Finding& f : report->app_findings) add_finding(app, f, v.diagnostics);
+  for (const verify::ResourceResult& r : report->resources)
+    for (const verify::Finding& f : r.findings) add_finding(app, f, v.diagnostics);
   v.summary = std::string(verify::verdict_name(report->verdict)) + ": " +
               std::to_string(report->ports.size()) + " arbitrated ports, " +
               std::to_string(report->count(Severity::Error)) + " errors, " +

@@ -1,6 +1,7 @@
 // Verification on save: the spec's text lowered and proved as `arbc verify` does; each
-// finding becomes a diagnostic, and each counterexample one diagnostic on every rule it
-// involves, with the event state in which they conflict.
+// finding becomes a diagnostic, and each conflict between rules (two rules of a port selected
+// in one event state, or a resource two rules both use) one diagnostic on every rule it
+// involves, each rule found by its port and name; a counterexample with its event state.
 #pragma once
 
 #include <string>

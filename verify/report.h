@@ -57,13 +57,22 @@ struct Finding {
   Severity severity = Severity::Error;
   std::string port;                // "Module.port"; empty for findings about the whole app
   std::vector<std::string> rules;  // rules or connections involved, in spec order
-  std::string event;               // the event concerned (unfed, unused, ownership)
+  // The arbitrated port of each rule, parallel to `rules`, when they go into different ports
+  // (a resource's pair); empty: every rule goes into `port`. A rule's name is unique only
+  // within its port, so a rule is found by both (rule_port).
+  std::vector<std::string> rule_ports;
+  std::string event;  // the event concerned (unfed, unused, ownership)
   std::string message;
   model::SourceLocation loc;
   std::optional<EventState> counterexample;
   std::vector<MessageExample> messages;  // data findings: the message(s) that show it
   std::vector<Note> notes;               // why each side holds, what to do
   bool strict = false;                   // a warning (dead, unused) that --strict made an error
+
+  // The port of rules[i]; empty when the finding does not say.
+  const std::string& rule_port(size_t i) const {
+    return i < rule_ports.size() ? rule_ports[i] : port;
+  }
 };
 
 // The outcome for one arbitrated port.

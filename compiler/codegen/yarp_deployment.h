@@ -6,16 +6,18 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
+#include "core/diagnostic.h"
 
 namespace arbc::codegen {
 
 // Reads `path`: the port-name overrides, checked against `app` (each key a port of the spec,
-// each name a YARP port name: '/' first, no blank, no two ports alike). nullopt and `err`
-// (naming the file and what to change) otherwise.
-std::optional<std::map<std::string, std::string>> read_yarp_deployment(const std::string& path,
-                                                                       const model::App& app,
-                                                                       std::string* err);
+// each name a YARP port name: '/' first, no blank, no two ports alike). nullopt and *errors
+// otherwise: one per problem, at the line and column of its key or value (of the offending
+// character when the file is not JSON), saying what to change.
+std::optional<std::map<std::string, std::string>> read_yarp_deployment(
+    const std::string& path, const model::App& app, std::vector<Diagnostic>* errors);
 
 }  // namespace arbc::codegen

@@ -206,6 +206,89 @@ TEST(Frontend, IntWidensToFloatButNotTheOtherWay) {
   EXPECT_EQ(ids(r), "emit-type ");
 }
 
+// A misspelt field in a record literal is reported at the name, with "did you mean" among the
+// fields the literal does not give, inside lists and nested records too.
+TEST(Frontend, AStrayFieldOfARecordLiteralIsReportedAtItsName) {
+  std::string head =
+      "app t;\ntype Cmd = { verb: string, pos: vec3 };\nmodule A { out p: vec3; }\n"
+      "module B { in c: Cmd; in cs: list<Cmd>; in n: { cmd: Cmd }; }\n";
+  struct Case {
+    std::string body;
+    std::string stray;  // on line 5
+    std::string meant;
+  };
+  for (const Case& c :
+       {Case{"connect A.p -> B.c { emit { verb: \"x\", poss: p }; }", "poss", "pos"},
+        Case{"connect A.p -> B.cs { emit [{ verb: \"x\", pso: p }]; }", "pso", "pos"},
+        Case{"connect A.p -> B.n { emit { cmd: { vreb: \"x\", pos: p } }; }", "vreb", "verb"},
+        // `pos` is given already: no suggestion for the other name.
+        Case{"connect A.p -> B.c { emit { pos: p, poss: p, verb: \"\" }; }", "poss", ""}}) {
+    CheckResult r = check_text(head + c.body + "\n", "r.spec");
+    ASSERT_EQ(ids(r), "emit-type ") << c.body;
+    const Diagnostic& d = r.diagnostics[0];
+    EXPECT_EQ(d.loc.line, 5) << c.body;
+    EXPECT_EQ(d.loc.column, static_cast<int>(c.body.find(c.stray + ":")) + 1) << c.body;
+    if (c.meant.empty()) {
+      EXPECT_TRUE(d.notes.empty()) << c.body;
+    } else {
+      ASSERT_EQ(d.notes.size(), 1u) << c.body;
+      EXPECT_EQ(d.notes[0].message, "did you mean '" + c.meant + "'?");
+    }
+  }
+}
+
+// The literal bound first (`let c = { poss: p }; emit c;`) is traced through its name: the
+// error is at the field in the `let`, with a note at the use; a `var`'s initializer too, since
+// it gives the var its type.
+TEST(Frontend, AStrayFieldOfALetBoundRecordIsReportedAtItsName) {
+  std::string head =
+      "app t;\ntype Cmd = { verb: string, pos: vec3 };\nmodule A { out p: vec3; }\n"
+      "module B { in c: Cmd; in cs: list<Cmd>; in n: { cmd: Cmd }; }\n";
+  struct Case {
+    std::string body;
+    std::string stray;  // on line 5
+    std::string meant;
+    std::string use;  // where the note points: the last occurrence of this text
+  };
+  for (const Case& c :
+       {Case{"connect A.p -> B.c { let c = { verb: \"x\", poss: p }; emit c; }", "poss", "pos",
+             "c;"},
+        // A `let` of a `let`: the note is at the name emitted.
+        Case{"connect A.p -> B.c { let a = { verb: \"x\", poss: p }; let b = a; emit b; }", "poss",
+             "pos", "b;"},
+        // Nested in a record or a list literal.
+        Case{"connect A.p -> B.n { let m = { vreb: \"x\", pos: p }; emit { cmd: m }; }", "vreb",
+             "verb", "m }"},
+        Case{"connect A.p -> B.cs { let m = { verb: \"x\", pso: p }; emit [m]; }", "pso", "pos",
+             "m]"},
+        Case{"connect A.p -> B.c { var last = { verb: \"x\", poss: p }; emit last; }", "poss",
+             "pos", "last;"}}) {
+    CheckResult r = check_text(head + c.body + "\n", "r.spec");
+    ASSERT_EQ(ids(r), "emit-type ") << c.body;
+    const Diagnostic& d = r.diagnostics[0];
+    EXPECT_EQ(d.loc.line, 5) << c.body;
+    EXPECT_EQ(d.loc.column, static_cast<int>(c.body.find(c.stray + ":")) + 1) << c.body;
+    EXPECT_NE(d.message.find("has no field '" + c.stray + "'"), std::string::npos) << d.message;
+    ASSERT_EQ(d.notes.size(), 2u) << c.body;
+    EXPECT_EQ(d.notes[0].message, "did you mean '" + c.meant + "'?");
+    EXPECT_EQ(d.notes[1].loc.line, 5) << c.body;
+    EXPECT_EQ(d.notes[1].loc.column, static_cast<int>(c.body.rfind(c.use)) + 1) << c.body;
+  }
+  // One literal emitted on two paths: one error at it, a note at each `emit`.
+  std::string body =
+      "connect A.p -> B.c { let c = { verb: \"x\", poss: p }; if p.x > 0.0 { emit c; } else { "
+      "emit c; } }";
+  CheckResult r = check_text(head + body + "\n", "r.spec");
+  ASSERT_EQ(ids(r), "emit-type ");
+  ASSERT_EQ(r.diagnostics[0].notes.size(), 3u);
+  EXPECT_EQ(r.diagnostics[0].notes[1].loc.column, static_cast<int>(body.find("c; }")) + 1);
+  EXPECT_EQ(r.diagnostics[0].notes[2].loc.column, static_cast<int>(body.rfind("c; }")) + 1);
+  // A value with no literal behind it (the message) is still reported over the whole value.
+  r = check_text(head + "connect A.p -> B.c { let c = p; emit c; }\n", "r.spec");
+  ASSERT_EQ(ids(r), "emit-type ");
+  EXPECT_TRUE(r.diagnostics[0].notes.empty());
+}
+
 TEST(Frontend, EveryErrorIsReportedNotJustTheFirst) {
   CheckResult r = check_text(
       "app t;\nmodule A { out x: flot; }\nmodule B { in y: vec; }\nconnect Q.x -> B.y;\n",

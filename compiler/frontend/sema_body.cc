@@ -202,9 +202,10 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
   }
   s.var_decl = b->local;
   if (b->type && s.expr->type && !assignable(*s.expr->type, *b->type)) {
-    error(s.expr->loc,
-          "'" + s.name + "' holds " + describe(b->type) + ", not " + describe(s.expr->type),
-          "type-mismatch");
+    value_type_error(
+        *s.expr, b->type,
+        "'" + s.name + "' holds " + describe(b->type) + ", not " + describe(s.expr->type),
+        "type-mismatch");
   }
 }
 
@@ -245,10 +246,10 @@ void Sema::check_emit(Stmt& s, Scope& scope, const BodyContext& ctx) {
     return;
   }
   if (s.expr->type && ctx.destination_type && !assignable(*s.expr->type, *ctx.destination_type)) {
-    error(s.expr->loc,
-          ctx.owner + " emits " + describe(s.expr->type) + ", but " + ctx.destination + " takes " +
-              describe(ctx.destination_type),
-          "emit-type");
+    value_type_error(*s.expr, ctx.destination_type,
+                     ctx.owner + " emits " + describe(s.expr->type) + ", but " + ctx.destination +
+                         " takes " + describe(ctx.destination_type),
+                     "emit-type");
   }
 }
 

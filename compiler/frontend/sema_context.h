@@ -55,8 +55,7 @@ struct BodyContext {
 struct MonitorSite {
   ast::Block* body = nullptr;
   const ast::PortRef* source = nullptr;
-  bool source_ok = false;  // the source resolved
-  std::string message_name;
+  bool source_ok = false;    // the source resolved
   TypePtr destination_type;  // null if the destination did not resolve
   std::string destination;   // "Module.port"
   ast::Loc loc;              // the rule or connect, for "delivers its input unchanged"
@@ -149,6 +148,7 @@ class Sema {
   void check_test_value(ast::Expr& e, const ast::PortRef& port);
   void check_test_step(const ast::TestDecl& t, ast::TestStep& s);
   void check_test_expect(const ast::TestDecl& t, ast::TestExpect& e);
+  void check_reason_possible(const ast::Rule& rule, const ast::TestExpect& e);
   // `at D` or `within A..B` (A <= B); `instant_only` for event states.
   void check_test_window(ast::TestWindow& w, bool instant_only);
 
@@ -157,6 +157,13 @@ class Sema {
   // Reports an unknown name, with "did you mean" when a candidate is close.
   Diagnostic& unknown(const ast::Loc& loc, std::string message, std::string id,
                       const std::string& name, const std::vector<std::string>& candidates);
+  // Adds the note "did you mean 'X'?" (an editor's quick fix puts X in place of `d`'s range).
+  void did_you_mean(Diagnostic& d, const std::string& meant);
+  // A value of the wrong type where `want` is expected (an emit, a test's message, a var):
+  // reported at the value, or, when a record literal in it names a field `want` lacks, at
+  // that name with "did you mean" (stray_field.h).
+  Diagnostic& value_type_error(const ast::Expr& value, const TypePtr& want, std::string message,
+                               std::string id);
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
 
@@ -169,6 +176,9 @@ class Sema {
   // Resolves `Module.port`; `role` is "source" or "destination" (for the direction check) or
   // empty (no check). Returns false if it did not resolve.
   bool resolve_port(ast::PortRef& ref, const char* role, const std::string& use);
+  // Defines the message's name (the source port's) in `scope`, typed if `resolved`; a source
+  // whose port is misspelt binds the port it suggests as well (sema_message.cc).
+  void bind_message(Scope& scope, const ast::PortRef& source, bool resolved);
 
   // ---- expressions (sema_expr.cc) ----
   // Types `e` and resolves its names (the "sema:" fields of ast::Expr); reports what is wrong.

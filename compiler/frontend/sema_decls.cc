@@ -2,16 +2,26 @@
 // arbitrated ports and their rules, connects and assertions (docs/language.md#declarations).
 #include <set>
 
+#include "compiler/frontend/field_mismatch.h"
 #include "compiler/frontend/sema.h"
 #include "compiler/frontend/sema_context.h"
-#include "compiler/frontend/suggest.h"
+#include "compiler/frontend/stray_field.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/suggest.h"
 
 namespace arbc::frontend {
 
 using namespace ast;
 
 // ---- reporting ----------------------------------------------------------------------------
+
+namespace {
+
+bool same_place(const Loc& a, const Loc& b) {
+  return a.file == b.file && a.line == b.line && a.column == b.column;
+}
+
+}  // namespace
 
 Diagnostic& Sema::error(const Loc& loc, std::string message, std::string id) {
   Diagnostic d;
@@ -25,13 +35,55 @@ Diagnostic& Sema::error(const Loc& loc, std::string message, std::string id) {
 Diagnostic& Sema::unknown(const Loc& loc, std::string message, std::string id,
                           const std::string& name, const std::vector<std::string>& candidates) {
   Diagnostic& d = error(loc, std::move(message), std::move(id));
-  if (auto best = closest_name(name, candidates)) {
+  if (auto best = closest_name(name, candidates)) did_you_mean(d, *best);
+  return d;
+}
+
+void Sema::did_you_mean(Diagnostic& d, const std::string& meant) {
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = "did you mean '" + meant + "'?";
+  d.notes.push_back(std::move(note));
+}
+
+Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::string message,
+                                   std::string id) {
+  if (auto stray = stray_field(value, want)) {
+    const std::string& name = stray->name->name;
+    message += "; " + describe(stray->record) + " has no field '" + name + "'";
+    if (!stray->via)
+      return unknown(stray->name->loc, std::move(message), std::move(id), name, stray->missing);
+    // A literal bound by a `let` may be used on several paths (`if ... { emit c; } else
+    // { emit c; }`): one error at its field, with a note at each use.
     Diagnostic note;
     note.severity = Severity::Note;
-    note.message = "did you mean '" + *best + "'?";
+    note.loc = stray->via->loc;
+    note.message =
+        "'" + stray->via->text + "' has the type of that record literal; it is used here";
+    for (Diagnostic& d : out_) {
+      if (d.id == id && d.message == message && same_place(d.loc, stray->name->loc)) {
+        d.notes.push_back(std::move(note));
+        return d;
+      }
+    }
+    Diagnostic& d =
+        unknown(stray->name->loc, std::move(message), std::move(id), name, stray->missing);
     d.notes.push_back(std::move(note));
+    return d;
   }
-  return d;
+  if (auto field = field_mismatch(value, want)) {
+    if (!field->value) {
+      return error(
+          field->literal->loc,
+          message + "; field '" + field->field + "' (" + describe(field->want) + ") is missing",
+          std::move(id));
+    }
+    return error(field->value->loc,
+                 message + "; field '" + field->field + "' is " + describe(field->value->type) +
+                     " where " + describe(field->want) + " is expected",
+                 std::move(id));
+  }
+  return error(value.loc, std::move(message), std::move(id));
 }
 
 std::string Sema::describe(const TypePtr& t) const {
@@ -342,12 +394,7 @@ void Sema::declare_status_events(StatusEventDecl& e) {
 void Sema::check_derived_predicates() {
   for (DerivedEventDecl& e : spec_.derived_events) {
     Scope scope;
-    if (resolve_port(e.source, "source", "a derived event")) {
-      Binding message;
-      message.kind = NameKind::Message;
-      message.type = port_type(e.source);
-      scope.define(e.source.port, message);
-    }
+    bind_message(scope, e.source, resolve_port(e.source, "source", "a derived event"));
     check_condition(*e.predicate, scope, "the predicate of derived event '" + e.name + "'",
                     "predicate-type");
   }
@@ -398,7 +445,7 @@ void Sema::check_arbitration(ArbitrateDecl& a) {
     bool source_ok = resolve_port(r.source, "source", "rule '" + r.name + "'");
     check_rule_when(r, port, otherwise_rule);
     check_rule_hold(a, i);
-    MonitorSite site{&r.body, &r.source, source_ok, r.message_name, destination, port, r.loc};
+    MonitorSite site{&r.body, &r.source, source_ok, destination, port, r.loc};
     check_monitor(site, "rule '" + r.name + "'", "rule '" + r.name + "'");
   }
 }
@@ -451,10 +498,8 @@ void Sema::check_rule_hold(ArbitrateDecl& a, size_t i) {
 void Sema::check_monitor(const MonitorSite& site, const std::string& owner,
                          const std::string& subject) {
   Scope scope;
-  Binding message;
-  message.kind = NameKind::Message;
-  message.type = site.source_ok ? port_type(*site.source) : nullptr;
-  scope.define(site.message_name, message);
+  bind_message(scope, *site.source, site.source_ok);
+  TypePtr message_type = site.source_ok ? port_type(*site.source) : nullptr;
   BodyContext ctx;
   ctx.owner = owner;
   ctx.destination_type = site.destination_type;
@@ -462,12 +507,12 @@ void Sema::check_monitor(const MonitorSite& site, const std::string& owner,
   Block& body = *site.body;
   check_body(body, scope, ctx);
   bool script = body.size() == 1 && body[0]->kind == Stmt::Kind::Script;
-  if (!script && !definitely_emits(body) && message.type && site.destination_type &&
-      !assignable(*message.type, *site.destination_type)) {
+  if (!script && !definitely_emits(body) && message_type && site.destination_type &&
+      !assignable(*message_type, *site.destination_type)) {
     error(site.loc,
           subject + " delivers its input unchanged" +
               (body.empty() ? "" : " on a path without `emit`") + ": " + site.source->qualified() +
-              " carries " + describe(message.type) + " but " + site.destination + " takes " +
+              " carries " + describe(message_type) + " but " + site.destination + " takes " +
               describe(site.destination_type) + " (add `emit VALUE;`)",
           "emit-type");
   }
@@ -497,7 +542,7 @@ void Sema::check_connect(ConnectDecl& c) {
     }
   }
   TypePtr destination = destination_ok ? port_type(c.destination) : nullptr;
-  MonitorSite site{&c.body, &c.source, source_ok, c.message_name, destination, port, c.loc};
+  MonitorSite site{&c.body, &c.source, source_ok, destination, port, c.loc};
   check_monitor(site, "the connect into " + port, "this connect");
 }
 

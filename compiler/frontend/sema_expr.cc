@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "compiler/frontend/builtin_aliases.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
 
@@ -172,6 +173,41 @@ void Sema::check_name(Expr& e, Scope& scope) {
   }
 }
 
+namespace {
+
+// The field's name alone in `base.field` (the expression's last token; names are ASCII): what
+// an unknown field points at, so that an editor's "did you mean" fix replaces the name only.
+Loc field_name_loc(const Expr& e) {
+  Loc at = e.loc;
+  int length = static_cast<int>(e.text.size());
+  if (at.end_line <= 0 || at.end_column - length < 1) return at;
+  at.line = at.end_line;
+  at.column = at.end_column - length;
+  return at;
+}
+
+// `xs.length`, `s.size`, `v.length`: the language has no methods, and a length is a builtin
+// function. A note saying which one, for a name that means a length (builtin_aliases.h); not
+// "did you mean", whose quick fix would put the function's name in place of the field's.
+void note_length_function(Diagnostic& d, const Expr& e, const TypePtr& base) {
+  if (!is_kind(base, Type::Kind::List) && !is_kind(base, Type::Kind::String) &&
+      !is_kind(base, Type::Kind::Vec3))
+    return;
+  std::optional<std::string> meant =
+      e.text == "len" || e.text == "norm" ? e.text : meant_builtin(e.text, {"len", "norm"}, base);
+  bool vec3 = base->kind == Type::Kind::Vec3;
+  if (!meant || *meant != (vec3 ? "norm" : "len")) return;
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = std::string(vec3                             ? "a vec3's length"
+                             : base->kind == Type::Kind::List ? "a list's length"
+                                                              : "a string's length") +
+                 " is the builtin function " + *meant + "(...), not a field";
+  d.notes.push_back(std::move(note));
+}
+
+}  // namespace
+
 // `base.field` of a record or a vec3.
 void Sema::check_field(Expr& e, Scope& scope) {
   Expr& base = *e.args[0];
@@ -182,13 +218,17 @@ void Sema::check_field(Expr& e, Scope& scope) {
       e.type = kFloat;
       return;
     }
-    unknown(e.loc, "vec3 has no field '" + e.text + "' (it has x, y and z)", "unknown-field",
-            e.text, {"x", "y", "z"});
+    Diagnostic& d =
+        unknown(field_name_loc(e), "vec3 has no field '" + e.text + "' (it has x, y and z)",
+                "unknown-field", e.text, {"x", "y", "z"});
+    note_length_function(d, e, base.type);
     return;
   }
   if (base.type->kind != Type::Kind::Record) {
-    error(e.loc, "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
-          "type-mismatch");
+    Diagnostic& d = error(
+        e.loc, "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
+        "type-mismatch");
+    note_length_function(d, e, base.type);
     return;
   }
   std::vector<std::string> names;
@@ -199,8 +239,8 @@ void Sema::check_field(Expr& e, Scope& scope) {
     }
     names.push_back(f.name);
   }
-  unknown(e.loc, describe(base.type) + " has no field '" + e.text + "'", "unknown-field", e.text,
-          names);
+  unknown(field_name_loc(e), describe(base.type) + " has no field '" + e.text + "'",
+          "unknown-field", e.text, names);
 }
 
 // `list[int]`: the list's element type.
@@ -339,14 +379,18 @@ void Sema::check_call(Expr& e, Scope& scope) {
     if (e.text == b.name) info = &b;
   const Loc& callee = e.names.empty() ? e.loc : e.names[0].loc;
   if (!info) {
-    std::vector<std::string> names;
-    for (const BuiltinInfo& b : kBuiltins) names.push_back(b.name);
-    unknown(callee,
-            "unknown function '" + e.text +
-                "': the builtins are len, min_by, max_by, dist, norm, abs, min, max, now, vec3",
-            "unknown-function", e.text, names);
+    // The arguments first: `length(v)` of a vec3 means `norm`, of a list `len`.
     for (ExprPtr& arg : e.args)
       if (arg->kind != Expr::Kind::Lambda) check_expr(*arg, scope);
+    std::vector<std::string> names;
+    for (const BuiltinInfo& b : kBuiltins) names.push_back(b.name);
+    Diagnostic& d =
+        error(callee,
+              "unknown function '" + e.text +
+                  "': the builtins are len, min_by, max_by, dist, norm, abs, min, max, now, vec3",
+              "unknown-function");
+    if (auto meant = meant_builtin(e.text, names, e.args.empty() ? nullptr : e.args[0]->type))
+      did_you_mean(d, *meant);
     return;
   }
   e.builtin = info->builtin;

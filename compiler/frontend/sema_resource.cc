@@ -16,8 +16,12 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
   std::set<std::string> seen;
   TypePtr type;
   bool same = true;
+  size_t unresolved = 0;  // reported at their names; they still count as listed below
   for (PortRef& p : r.ports) {
-    if (!resolve_port(p, "destination", "a resource")) continue;
+    if (!resolve_port(p, "destination", "a resource")) {
+      ++unresolved;
+      continue;
+    }
     std::string q = p.qualified();
     if (!seen.insert(q).second) {
       error(p.loc, q + " is listed twice in resource '" + r.name + "'", "resource-port");
@@ -45,7 +49,8 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
             "resource-type");
     }
   }
-  if (seen.size() < 2)
+  // A misspelt port is one listed: "lists 1 port" would flag the resource for that typo.
+  if (seen.size() + unresolved < 2)
     error(r.loc,
           "resource '" + r.name + "' lists " + std::to_string(seen.size()) + " port" +
               (seen.size() == 1 ? "" : "s") + "; a resource is shared by at least two ports",

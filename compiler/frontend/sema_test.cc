@@ -6,7 +6,9 @@
 #include <map>
 
 #include "compiler/frontend/literal_value.h"
+#include "compiler/frontend/rule_drop_reasons.h"
 #include "compiler/frontend/sema_context.h"
+#include "compiler/frontend/test_contradiction.h"
 #include "compiler/frontend/type_rules.h"
 #include "core/join.h"
 
@@ -36,6 +38,17 @@ void Sema::check_tests() {
     if (!t.on.empty()) t.on_rule = find_test_rule(t.on, t.on_loc);
     for (TestStep& s : t.steps) check_test_step(t, s);
     for (TestExpect& e : t.expects) check_test_expect(t, e);
+    if (auto pair = contradicting_receives(t)) {
+      Diagnostic& d = error(pair->first->loc,
+                            "this expectation contradicts `expect " + pair->second->text +
+                                "` (line " + std::to_string(pair->second->loc.line) +
+                                "): no run can satisfy both, so the test can never pass",
+                            "test-window");
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "give `receives nothing` a window that leaves this one out";
+      d.notes.push_back(std::move(note));
+    }
   }
 }
 
@@ -49,7 +62,16 @@ const Rule* Sema::find_test_rule(const std::string& name, const Loc& loc) {
     }
   }
   if (found.empty()) {
-    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    Diagnostic& d = unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    if (d.notes.empty() && !all.empty()) {  // nothing close: a test names a rule, not a module
+      Diagnostic note;
+      note.severity = Severity::Note;
+      std::vector<std::string> quoted;
+      for (const std::string& r : all) quoted.push_back("'" + r + "'");
+      note.message = all.size() == 1 ? "the only rule is " + quoted[0]
+                                     : "the rules are " + join(quoted, ", ", " and ");
+      d.notes.push_back(std::move(note));
+    }
     return nullptr;
   }
   if (found.size() > 1) {
@@ -84,10 +106,10 @@ void Sema::check_test_value(Expr& e, const PortRef& port) {
   TypePtr want = port.port_decl ? port.port_decl->type.resolved : nullptr;
   if (!e.type || !want) return;
   if (!assignable(*e.type, *want)) {
-    error(e.loc,
-          "the value is " + describe(e.type) + ", but " + port.qualified() + " carries " +
-              describe(want),
-          "test-value");
+    value_type_error(e, want,
+                     "the value is " + describe(e.type) + ", but " + port.qualified() +
+                         " carries " + describe(want),
+                     "test-value");
     return;
   }
   std::string why;
@@ -129,6 +151,21 @@ void Sema::check_test_window(TestWindow& w, bool instant_only) {
   }
 }
 
+// A test expecting a drop its rule can never make can never pass: said before it runs, with
+// the reason the rule's `when` gives, which is what a newcomer usually means.
+void Sema::check_reason_possible(const Rule& rule, const TestExpect& e) {
+  std::string why = why_rule_never_drops(rule, e.reason);
+  if (why.empty()) return;
+  Diagnostic& d = error(e.reason_loc,
+                        "rule '" + rule.name + "' never drops a message as \"" + e.reason +
+                            "\": " + why + ", so this expectation can never hold",
+                        "test-reason");
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = "a message the rule's `when` does not select is dropped as \"not-selected\"";
+  d.notes.push_back(std::move(note));
+}
+
 void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
   switch (e.kind) {
     case TestExpect::Kind::Receives:
@@ -157,6 +194,8 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
           note.message = "a drop reason is one of " + join(kDropReasons, ", ", " or ");
           d.notes.push_back(std::move(note));
         }
+      } else if (!e.reason.empty() && e.rule_decl) {
+        check_reason_possible(*e.rule_decl, e);
       }
       break;
     case TestExpect::Kind::State:

@@ -6,10 +6,11 @@
 #include <algorithm>
 #include <set>
 
-#include "compiler/frontend/suggest.h"
 #include "compiler/frontend/token_checks.h"
+#include "compiler/frontend/unclosed_block.h"
 #include "compiler/frontend/unit_words.h"
 #include "core/join.h"
+#include "core/suggest.h"
 
 namespace arbc::frontend {
 
@@ -242,9 +243,20 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
   // The first syntax error as a user would say it: what was expected, in what, found what.
   Diagnostic describe(antlr4::Parser* parser, antlr4::Token* offending) {
     Expected x = expected_tokens(parser);
+    // A declaration's first word (or the end of the file) where a block could close: a '}' is
+    // missing. Declaration words are keywords, so no statement or expression can take them.
+    // (The end of the file in the middle of a statement is that statement's error.)
+    bool declaration_start = offending->getType() == antlr4::Token::EOF ||
+                             kDeclKeywords.count(offending->getText()) ||
+                             offending->getText() == "after";
+    if (declaration_start && x.has("}")) {
+      if (auto unclosed = describe_unclosed_block(parser->getTokenStream(), offending, file_))
+        return *unclosed;
+    }
     Diagnostic d;
     d.id = "syntax";
     d.loc = token_location(offending, file_);
+    if (describe_mistaken_operator(parser, offending, x, d)) return d;
     if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
     note_spaced_unit(parser, offending, d);
     // `accept len(objects) = 0;`: a lone `=` right after an operand, where no `=` may come, is
@@ -261,6 +273,37 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       d.notes.push_back(std::move(note));
     }
     return d;
+  }
+
+  // Operators of other languages where this one has its own: `o -> o.dist` for the lambda
+  // `o => o.dist`, `let x == 1;` for `let x = 1;`. Each gets "did you mean", which an editor
+  // offers as a fix of the operator alone.
+  bool describe_mistaken_operator(antlr4::Parser* parser, const antlr4::Token* offending,
+                                  const Expected& x, Diagnostic& d) {
+    const std::string text = offending->getText();
+    antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    bool after_name = previous && previous->getType() == ArbcParser::ID;
+    std::string meant;
+    size_t rule = parser->getContext()->getRuleIndex();
+    bool in_expression = rule != ArbcParser::RuleConnectDecl && rule != ArbcParser::RuleAssertDecl;
+    if (text == "->" && !x.has("->") && after_name && in_expression) {
+      // `->` joins ports in `connect` and a rule to its property in `assert`, nowhere else.
+      d.message = "a lambda is written with '=>', not '->': `" + previous->getText() + " => ...`";
+      meant = "=>";
+    } else if (text == "==" && x.wanted.size() == 1 && x.has("=") && after_name) {
+      // `let x == 1;`, `const K == 2;`: only '=' binds a name; '==' compares.
+      d.message = "expected '=' after '" + previous->getText() + "' in " +
+                  describe_context(parser->getContext()) + ", found '==': '=' gives a name its " +
+                  "value, '==' compares two values";
+      meant = "=";
+    } else {
+      return false;
+    }
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "did you mean '" + meant + "'?";
+    d.notes.push_back(std::move(note));
+    return true;
   }
 
   // `lifetime 0.5 s;`: the unit, apart from its number, reads as a name, and the message says
@@ -374,7 +417,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       }
     } else if (wanted.size() == 1 && wanted[0] == "'='" && previous &&
                previous->getType() == ArbcParser::ID &&
-               ctx->getRuleIndex() == ArbcParser::RuleStmt) {
+               ctx->getRuleIndex() == ArbcParser::RuleStmt && ctx->getStart() == previous) {
       // `emitt face;` parses as the start of an assignment `emitt = ...`.
       d.loc = token_location(previous, file_);
       d.message = "unknown statement '" + previous->getText() +
