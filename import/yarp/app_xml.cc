@@ -109,7 +109,20 @@ void read_connection(const tinyxml2::XMLElement* c, XmlApplication& app,
     diags.push_back(error_at(conn.loc, "a <connection> needs both <from> and <to> port names"));
     return;
   }
-  if (const char* id = c->Attribute("id")) conn.id = id;
+  conn.from_loc = locate(app.file, app.text, from->GetLineNum(), conn.from);
+  conn.to_loc = locate(app.file, app.text, to->GetLineNum(), conn.to);
+  conn.id_loc = conn.loc;
+  if (const char* id = c->Attribute("id")) {
+    conn.id = id;
+    for (const char* quote : {"\"", "'"}) {
+      model::SourceLocation at =
+          locate(app.file, app.text, c->GetLineNum(), std::string("id=") + quote + id + quote);
+      if (at.end_column > 0) {
+        conn.id_loc = at;
+        break;
+      }
+    }
+  }
   conn.protocol_loc = conn.loc;
   if (const tinyxml2::XMLElement* p = child(c, "protocol", "carrier")) {
     conn.protocol = trimmed_text(p);

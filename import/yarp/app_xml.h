@@ -22,11 +22,13 @@
 namespace arbc::yarp {
 
 struct XmlConnection {
-  std::string id;                      // the id attribute, if any
-  std::string from, to;                // YARP port names
-  std::string protocol;                // the carrier string; empty: YARP's default (tcp)
-  model::SourceLocation loc;           // the <connection> element
-  model::SourceLocation protocol_loc;  // its <protocol>, or loc when absent
+  std::string id;                          // the id attribute, if any
+  std::string from, to;                    // YARP port names
+  std::string protocol;                    // the carrier string; empty: YARP's default (tcp)
+  model::SourceLocation loc;               // the <connection> element
+  model::SourceLocation id_loc;            // its id attribute (id="..."), or loc
+  model::SourceLocation protocol_loc;      // its <protocol>, or loc when absent
+  model::SourceLocation from_loc, to_loc;  // the port names in <from> and <to>
 };
 
 struct XmlModule {

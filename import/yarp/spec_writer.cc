@@ -1,67 +1,14 @@
 #include "import/yarp/spec_writer.h"
 
-#include <cctype>
 #include <filesystem>
 #include <map>
 #include <set>
 
 #include "core/effective_guard.h"
+#include "import/yarp/spec_names.h"
 
 namespace arbc::yarp {
 namespace {
-
-constexpr const char* kSpecKeywords[] = {
-    "app",    "type",     "const",     "module", "in",        "out",       "event",
-    "events", "from",     "lifetime",  "for",    "exclusive", "invariant", "arbitrate",
-    "by",     "priority", "complete",  "when",   "hold",      "connect",   "assert",
-    "let",    "var",      "accept",    "set",    "unset",     "if",        "else",
-    "emit",   "throttle", "every",     "script", "not",       "and",       "or",
-    "true",   "false",    "otherwise", "never",  "two",       "within",    "while",
-    "only",   "after",    "assume",    "until",  "stops",     "given",     "stable"};
-
-bool is_keyword(const std::string& s) {
-  for (const char* k : kSpecKeywords) {
-    if (s == k) return true;
-  }
-  return false;
-}
-
-// A spec name for any text: letters, digits and '_', not starting with a digit, no keyword.
-std::string identifier(const std::string& text) {
-  std::string out;
-  for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  while (!out.empty() && out.front() == '_') out.erase(out.begin());
-  while (!out.empty() && out.back() == '_') out.pop_back();
-  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "p_" + out;
-  if (is_keyword(out)) out += "_";
-  return out;
-}
-
-struct SpecPort {
-  std::string module, port;
-  bool out = false;
-};
-
-// YARP port name -> Module.port, unique.
-std::map<std::string, SpecPort> name_ports(const YarpImport& im) {
-  std::map<std::string, SpecPort> ports;
-  std::set<std::string> taken;
-  auto add = [&](const std::string& yarp, bool out) {
-    if (ports.count(yarp)) return;
-    size_t slash = yarp.find_last_of('/');
-    std::string module = slash == std::string::npos || slash == 0
-                             ? identifier(yarp)
-                             : identifier(yarp.substr(0, slash));
-    std::string port = identifier(slash == std::string::npos ? "port" : yarp.substr(slash + 1));
-    std::string base = port;
-    for (int i = 2; !taken.insert(module + "." + port).second; ++i)
-      port = base + "_" + std::to_string(i);
-    ports[yarp] = {module, port, out};
-  };
-  for (const model::Connection& c : im.app.connections) add(c.source, true);
-  for (const model::Connection& c : im.app.connections) add(c.destination, false);
-  return ports;
-}
 
 std::string qualified(const std::map<std::string, SpecPort>& ports, const std::string& yarp) {
   const SpecPort& p = ports.at(yarp);
@@ -170,7 +117,7 @@ std::string unknowns_text(const ImportedConnection& ic) {
 // decision (must-set, must-unset) goes into its `when`: the effective guard, which selects the
 // same messages at run time (docs/design.md#effective-guards).
 std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string, SpecPort>& ports,
-                      const std::string& spec_path) {
+                      const std::string& name, const std::string& spec_path) {
   const ImportedConnection& ic = im.connections[i];
   const model::Connection& c = im.app.connections[i];
   Constraint guard = model::effective_guard(im.app, c.destination, c);
@@ -188,15 +135,17 @@ std::string rule_text(const YarpImport& im, size_t i, const std::map<std::string
     s += "  // constraint `" + ic.meaning.text + "` reads names a spec cannot hold\n";
     when = "false";
   }
-  s += "  " + identifier(c.name) + ": from " + qualified(ports, c.source);
+  s += "  " + name + ": from " + qualified(ports, c.source);
   if (when != "true") s += " when " + when;
   return s + script_body(ic, spec_path) + "\n";
 }
 
 }  // namespace
 
-std::string write_spec(const YarpImport& im, const std::string& spec_path) {
-  std::map<std::string, SpecPort> ports = name_ports(im);
+std::string write_spec(const YarpImport& im, const std::string& spec_path,
+                       std::vector<Diagnostic>& renamed) {
+  std::map<std::string, SpecPort> ports = spec_port_names(im, renamed);
+  std::vector<std::string> rule_names = spec_rule_names(im, renamed);
   std::string s = "// Imported from " + im.xml.file + " by `arbc import yarp` (docs/yarp.md).\n";
   s += "// Rules run the original monitors, written for YARP's Lua API (`script`).\n// Ports:\n";
   for (const auto& [yarp, p] : ports) s += "//   " + yarp + " = " + p.module + "." + p.port + "\n";
@@ -209,7 +158,7 @@ std::string write_spec(const YarpImport& im, const std::string& spec_path) {
     s += "\narbitrate " + qualified(ports, ap.port) + " {\n";
     for (size_t i = 0; i < im.app.connections.size(); ++i) {
       const model::Connection& c = im.app.connections[i];
-      if (c.destination == ap.port) s += rule_text(im, i, ports, spec_path);
+      if (c.destination == ap.port) s += rule_text(im, i, ports, rule_names[i], spec_path);
     }
     s += "}\n";
   }

@@ -7,13 +7,16 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "import/yarp/yarp_import.h"
 
 namespace arbc::yarp {
 
 // The spec text. `spec_path` is where it will be written: `script` paths are made relative to
-// its folder.
-std::string write_spec(const YarpImport& im, const std::string& spec_path);
+// its folder. Modules, ports of a module and rules into a port whose YARP names become one
+// spec name are told apart, each renamed one with a warning in `renamed` (spec_names.h).
+std::string write_spec(const YarpImport& im, const std::string& spec_path,
+                       std::vector<Diagnostic>& renamed);
 
 }  // namespace arbc::yarp

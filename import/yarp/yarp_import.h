@@ -58,5 +58,7 @@ inline constexpr const char* kIdKeyword = "yarp-keyword-event";
 inline constexpr const char* kIdTrigInterval = "yarp-trig-interval";
 inline constexpr const char* kIdForever = "yarp-event-forever";
 inline constexpr const char* kIdShared = "yarp-shared-event";
+inline constexpr const char* kIdDuplicateId = "yarp-duplicate-id";
+inline constexpr const char* kIdSpecName = "yarp-spec-name";
 
 }  // namespace arbc::yarp

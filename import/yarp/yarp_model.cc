@@ -23,8 +23,12 @@ Constraint model_constraint(const ImportedConnection& ic) {
 }
 
 // The rule name: the connection's id, else its monitor's file, else its source port's last
-// part; made unique within the destination port.
-std::string rule_name(const ImportedConnection& ic, std::set<std::string>& taken) {
+// part; made unique within the destination port (`taken`: each name given there, with the
+// connection it was given to). An id that has to change is a warning: the XML says one name
+// and the verdicts and the imported spec another.
+std::string rule_name(const YarpImport& im, size_t i, std::map<std::string, size_t>& taken,
+                      std::vector<Diagnostic>& diags) {
+  const ImportedConnection& ic = im.connections[i];
   std::string base = ic.xml.id;
   if (base.empty() && ic.carrier.monitor) base = ic.carrier.file;
   if (base.empty()) {
@@ -32,8 +36,27 @@ std::string rule_name(const ImportedConnection& ic, std::set<std::string>& taken
     if (base.empty()) base = ic.xml.from;
   }
   std::string name = base;
-  for (int i = 2; taken.count(name); ++i) name = base + "_" + std::to_string(i);
-  taken.insert(name);
+  for (int k = 2; taken.count(name); ++k) name = base + "_" + std::to_string(k);
+  if (name != base && !ic.xml.id.empty()) {
+    const XmlConnection& first = im.connections[taken.at(base)].xml;
+    std::string by = first.id == base ? "the id of the connection at line "
+                                      : "the name arbc gave the connection at line ";
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.loc = ic.xml.id_loc;
+    d.id = kIdDuplicateId;
+    d.message = "connection id '" + base + "' into " + ic.xml.to + " is already " + by +
+                std::to_string(first.loc.line) + ": this connection's rule is named '" + name + "'";
+    d.notes.push_back({Severity::Note, first.id_loc, "first used here", "", {}});
+    d.notes.push_back({Severity::Note,
+                       {},
+                       "give each connection into a port its own id (the verdicts and `arbc "
+                       "import yarp` name rules after them)",
+                       "",
+                       {}});
+    diags.push_back(std::move(d));
+  }
+  taken.emplace(name, i);
   return name;
 }
 
@@ -115,13 +138,14 @@ void arbitrated_ports(YarpImport& im) {
     bool constrained = std::any_of(conns.begin(), conns.end(), [&](size_t i) {
       return !im.connections[i].meaning.text.empty();
     });
-    std::set<std::string> taken;
+    std::map<std::string, size_t> taken;
     model::ArbitratedPort ap;
     ap.port = port;
     ap.loc = app.connections[conns[0]].loc;
     for (size_t i : conns) {
       model::Connection& c = app.connections[i];
-      c.name = rule_name(im.connections[i], taken);
+      c.name = rule_name(im, i, taken, im.diagnostics);
+      im.diagnostic_ports.resize(im.diagnostics.size(), port);
       c.kind = model::ConnectionKind::Connect;
       if (conns.size() < 2 && !constrained) continue;
       if (never_delivers(im.connections[i])) {

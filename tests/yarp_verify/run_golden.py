@@ -6,9 +6,11 @@ usage: run_golden.py ARBC [--update] [CASE...]
 For each case folder holding <case>.xml, runs `arbc verify <case>.xml` inside it and compares
 its exit code, stdout and stderr with <case>.out. When the case has <case>.spec, it also copies
 the folder to a temporary one, runs `arbc import yarp <case>.xml -o <case>.spec` there, compares
-the written spec with <case>.spec, and checks that `arbc check` accepts it and `arbc verify`
-gives the spec the XML's verdict. Finally every yarp-* id of `arbc check --list-ids` must
-appear in some <case>.out. --update rewrites the .out and .spec files (review them by eye).
+the written spec with <case>.spec and the import's exit code and stderr (its warnings) with
+<case>.import.out, and checks that `arbc check` accepts the spec and `arbc verify` gives it
+the XML's verdict. Finally every yarp-* id of `arbc check --list-ids` must appear in some
+<case>.out or <case>.import.out (yarp-spec-name is the import's alone). --update rewrites the
+.out, .import.out and .spec files (review them by eye).
 YARP_DATA_HOME and YARP_DATA_DIRS are cleared, so monitors are found only beside the XML.
 """
 import os
@@ -42,6 +44,15 @@ def check_import(arbc, name, folder, update, xml_code):
         code, _, err = run([arbc, "import", "yarp", name + ".xml", "-o", name + ".spec"], copy)
         if code != 0:
             return [f"{name}: arbc import exited {code}\n{err}"]
+        said = (f"# arbc import yarp {name}.xml -o {name}.spec (exit {code})\n"
+                f"## stderr\n{err}")
+        said_path = os.path.join(folder, name + ".import.out")
+        if update:
+            open(said_path, "w", encoding="utf-8").write(said)
+        if not os.path.exists(said_path):
+            failures.append(f"{name}: no {name}.import.out (run with --update and review it)")
+        elif said != open(said_path, encoding="utf-8").read():
+            failures.append(f"{name}: the import's warnings differ from {name}.import.out\n{said}")
         written = open(os.path.join(copy, name + ".spec"), encoding="utf-8").read()
         golden = os.path.join(folder, name + ".spec")
         if update:
@@ -86,6 +97,10 @@ def main():
             failures.append(f"{name}: output differs\n--- expected\n{expected}--- actual\n{text}")
         if os.path.exists(os.path.join(folder, name + ".spec")):
             failures += check_import(arbc, name, folder, update, code)
+            said_path = os.path.join(folder, name + ".import.out")
+            if os.path.exists(said_path):
+                said = open(said_path, encoding="utf-8").read()
+                seen.update(re.findall(r"\[(yarp-[a-z-]+)\]$", said, re.M))
     if not only:
         listed = run([arbc, "check", "--list-ids"], HERE)[1]
         declared = {l.split()[0] for l in listed.splitlines() if l.startswith("yarp-")}
