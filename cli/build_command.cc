@@ -20,6 +20,7 @@
 #include "compiler/codegen/yarp_deployment.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
+#include "core/diagnostic.h"
 #include "core/join.h"
 
 namespace arbc::cli {
@@ -100,9 +101,11 @@ std::optional<int> configure_target(codegen::Target& target, const std::string& 
   codegen::TargetOptions options;
   std::string error;
   if (!deploy.empty()) {
-    auto names = codegen::read_yarp_deployment(deploy, app, &error);
+    std::vector<Diagnostic> problems;
+    auto names = codegen::read_yarp_deployment(deploy, app, &problems);
     if (!names) {
-      std::fprintf(stderr, "arbc build: %s\n", error.c_str());
+      SourceCache sources;  // quotes the file's lines under each problem
+      for (const Diagnostic& d : problems) std::fputs(render(d, &sources).c_str(), stderr);
       return kExitBadInput;
     }
     options.port_names = std::move(*names);

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "core/diagnostic.h"
@@ -48,9 +50,12 @@ int import_command(std::span<char*> args) {
                  input.c_str());
     return kExitBadInput;
   }
+  std::vector<Diagnostic> renamed;
+  std::string spec = yarp::write_spec(im, output, renamed);
+  for (const Diagnostic& d : renamed) std::fputs(render(d, &sources).c_str(), stderr);
   errno = 0;
   std::ofstream out(output, std::ios::binary);
-  out << yarp::write_spec(im, output);
+  out << spec;
   if (!out.flush()) {
     // Say why (most often: -o names a folder that does not exist), as `arbc run --report` does.
     std::fprintf(stderr, "arbc import: cannot write %s: %s\n", output.c_str(),

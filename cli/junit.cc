@@ -40,6 +40,27 @@ std::string seconds(double s) {
   return text;
 }
 
+// The failure's headline, for CI pages that show only the `message` attribute: the expectation
+// and what happened instead (the first two lines of the detail, which are indented for the
+// terminal), "f.spec:24: expected ... at 100ms; but nothing reached Base.vel at 0.1s".
+std::string headline(const std::string& detail) {
+  std::string out;
+  size_t at = 0;
+  for (int line = 0; line < 2 && at < detail.size(); ++line) {
+    size_t end = detail.find('\n', at);
+    if (end == std::string::npos) end = detail.size();
+    size_t text = detail.find_first_not_of(' ', at);
+    if (text < end) {
+      std::string part = detail.substr(text, end - text);
+      if (line == 1 && part.rfind("but ", 0) != 0) break;  // a trace, not the account
+      if (part.back() == ':') part.pop_back();  // "received other values at 0.1s:" a list
+      out += (out.empty() ? "" : "; ") + part;
+    }
+    at = end + 1;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string junit_xml(const std::vector<SuiteOutcome>& suites) {
@@ -61,9 +82,8 @@ std::string junit_xml(const std::vector<SuiteOutcome>& suites) {
         out += "/>\n";
         continue;
       }
-      std::string first = t.detail.substr(0, t.detail.find('\n'));
-      out += ">\n      <failure message=\"" + xml_escaped(first) + "\">" + xml_escaped(t.detail) +
-             "</failure>\n    </testcase>\n";
+      out += ">\n      <failure message=\"" + xml_escaped(headline(t.detail)) + "\">" +
+             xml_escaped(t.detail) + "</failure>\n    </testcase>\n";
     }
     out += "  </testsuite>\n";
   }

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/duration_option.h"
 #include "lsp/server.h"
 
 namespace arbc::cli {
@@ -28,7 +29,9 @@ int lsp_command(std::span<char*> args) {
                "that pass it)");
   app.add_flag("--no-verify", no_verify, "do not prove documents on open and save");
   app.add_option("--timeout", options.verify_timeout_seconds,
-                 "seconds the proof of one document may take")
+                 "seconds the proof of one document may take (or a time with its unit: 2min)")
+      ->transform(seconds_option(false))
+      ->type_name("DURATION")
       ->capture_default_str();
   try {
     app.parse(static_cast<int>(args.size()), args.data());

@@ -166,7 +166,8 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
       ->required();
   cli.add_option("--plugin", a.plugins, "a shared library with modules (repeatable)");
   cli.add_option("--scenario", options.scenario, "scenario name passed to the environment");
-  cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min (default 60s)");
+  cli.add_option("--duration", duration_text, "how long to run: 60s, 500ms, 2min, 3h (default 60s)")
+      ->type_name("DURATION");
   cli.add_flag("--no-verify", a.no_verify,
                "run without the proof (a SPEC is built without it, a DIR is not verified)");
   cli.add_flag("--realtime", options.realtime, "run on the wall clock instead of simulated time");
@@ -245,10 +246,13 @@ int run_command(std::span<char*> args) {
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
+  // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,
+  // DDS) name what they are about: "out/app/app.json: DDS: ..." sent users to the wrong file.
+  options.app_file = (fs::path(dir) / "app.json").string();
   std::unique_ptr<Runtime> runtime =
       Runtime::create(app, dir, options, &error, stand_ins.registry());
   if (!runtime) {
-    print_errors({(fs::path(dir) / "app.json").string() + ": " + error});
+    print_errors(error);
     return kExitBadInput;
   }
   report::ReportFile report_file;

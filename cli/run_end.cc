@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cli/report/run_report.h"
+#include "core/time_format.h"
 
 namespace arbc::cli {
 
@@ -36,11 +37,13 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
 }
 
 void print_run_line(const RunEnd& end, const std::string& stop_reason) {
+  double run = end.runtime.now();  // in the unit of the run's length, as the report writes it
   std::printf(
-      "app %s, scenario %s, seed %llu, %s time %.3f s%s%s\n", end.app.name.c_str(),
+      "app %s, scenario %s, seed %llu, %s time %s%s%s\n", end.app.name.c_str(),
       end.runtime.scenario().c_str(), static_cast<unsigned long long>(end.options.seed),
       end.options.realtime ? (end.options.time_scale != 1 ? "scaled real" : "real") : "simulated",
-      end.runtime.now(), stop_reason.empty() ? "" : ", stopped: ", stop_reason.c_str());
+      TimeFormat::for_run(run).text(run).c_str(),
+      stop_reason.empty() ? "" : ", stopped: ", stop_reason.c_str());
   if (!end.placement.empty()) std::printf("transport: %s\n", end.placement.c_str());
   std::fputs(end.runtime.stats_table().c_str(), stdout);
   std::fputs(end.runtime.transport_summary().c_str(), stdout);

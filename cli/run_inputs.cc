@@ -1,10 +1,15 @@
 #include "cli/run_inputs.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/duration_option.h"
+#include "cli/out_port_hint.h"
 #include "core/json_parse.h"
+#include "core/time_text.h"
 #include "core/value_json.h"
 
 namespace arbc::cli {
@@ -22,6 +27,24 @@ struct LineRef {
   }
 };
 
+// What is wrong with a line's `t`, or "". A newcomer writes times as the spec does ("100ms"):
+// the message says what to write instead.
+std::string bad_time(const Json& j) {
+  const char* want = "the time in seconds from the start, a number >= 0 such as 0.5";
+  if (!j.contains("t")) return std::string("missing: ") + want;
+  const Json& t = j["t"];
+  if (t.is_string()) {
+    std::string text = t.get<std::string>(), why;
+    double seconds = 0;
+    if (parse_duration(text, BareNumber::Refused, true, &seconds, &why))
+      return "\"" + text + "\" is a string; write " + time_text(seconds) + ", the time in seconds";
+    return "\"" + text + "\" is a string; write " + want;
+  }
+  if (!t.is_number()) return std::string("not a number; write ") + want;
+  if (t.get<double>() < 0) return "negative; write " + std::string(want);
+  return "";
+}
+
 // The input a line holds, appended to *log. `skip` is set for a trace line that is not a
 // publication, or one by a module a plugin provides.
 bool read_line(const Json& j, const LineRef& at, const model::App& app,
@@ -33,14 +56,13 @@ bool read_line(const Json& j, const LineRef& at, const model::App& app,
     read->from_trace = true;
     if (!j["type"].is_string() || j["type"] != "publish") return true;  // what the run did
   }
-  if (!j.contains("t") || !j["t"].is_number() || j["t"].get<double>() < 0)
-    return *err = at("field 't': a time in seconds >= 0 is required"), false;
+  if (std::string why = bad_time(j); !why.empty()) return *err = at("field 't': " + why), false;
   if (!j.contains("port") || !j["port"].is_string())
     return *err = at("field 'port': a \"Module.port\" string is required"), false;
   std::string port = j["port"];
   const model::Port* p = app.find_port(port);
   if (!p || p->direction != model::Direction::Out)
-    return *err = at("field 'port': '" + port + "' is not an out-port of app " + app.name), false;
+    return *err = at("field 'port': " + not_an_out_port(app, port)), false;
   std::string module = port.substr(0, port.find('.'));
   if (std::find(stand_ins.begin(), stand_ins.end(), module) == stand_ins.end()) {
     if (trace_line) return ++read->skipped_provided, true;  // the plugin publishes anew
@@ -66,7 +88,7 @@ bool read_inputs(const std::string& path, const model::App& app,
                  const std::vector<std::string>& stand_ins, StandInLog* log, InputsRead* read,
                  std::string* err) {
   std::ifstream in(path);
-  if (!in) return *err = path + ": cannot read the inputs file", false;
+  if (!in) return *err = path + ": cannot read the inputs file: " + std::strerror(errno), false;
   std::string text;
   for (size_t line = 1; std::getline(in, text); ++line) {
     if (text.find_first_not_of(" \t\r") == std::string::npos) continue;

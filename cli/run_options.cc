@@ -1,26 +1,15 @@
 #include "cli/run_options.h"
 
 #include <charconv>
-#include <cmath>
+
+#include "cli/duration_option.h"
 
 namespace arbc::cli {
 
 bool parse_run_duration(const std::string& text, double* seconds, std::string* err) {
-  const char* begin = text.data();
-  const char* end = begin + text.size();
-  double value = 0;
-  auto [unit, ec] = std::from_chars(begin, end, value);
-  std::string suffix(unit, end);
-  double scale = suffix == "s" ? 1 : suffix == "ms" ? 1e-3 : suffix == "min" ? 60 : 0;
-  if (ec != std::errc() || scale == 0 || !std::isfinite(value) || !(value > 0)) {
-    *err = "--duration '" + text + "' is not a positive duration with its unit, such as 60s, " +
-           "500ms or 2min";
-    if (ec == std::errc() && suffix.empty() && value > 0)
-      *err += " (write " + text + "s for seconds)";
-    return false;
-  }
-  *seconds = value * scale;
-  return true;
+  if (parse_duration(text, BareNumber::Refused, false, seconds, err)) return true;
+  *err = "--duration " + *err;
+  return false;
 }
 
 bool parse_seed(const std::string& text, uint64_t* seed, std::string* err) {

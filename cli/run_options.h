@@ -7,8 +7,8 @@
 
 namespace arbc::cli {
 
-// "60s", "500ms", "2min" -> seconds (> 0). A number without a unit is refused: `5` could mean
-// seconds or milliseconds, and a run of the wrong length is a silent wrong answer.
+// --duration: "60s", "500ms", "2min", "3h" -> seconds (> 0), by parse_duration
+// (duration_option.h); a number without a unit is refused.
 bool parse_run_duration(const std::string& text, double* seconds, std::string* err);
 
 // "0" .. "18446744073709551615" -> the seed. A sign, a fraction or an overflow is refused

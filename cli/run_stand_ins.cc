@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "cli/commands.h"
+#include "cli/out_port_hint.h"
 #include "cli/run_inputs.h"
 #include "cli/trace_diff.h"
 
@@ -42,7 +43,7 @@ bool RunStandIns::prepare(const model::App& app, std::string* err) {
   for (const auto& [port, period] : log_->stub.period_of_port) {
     const model::Port* p = app.find_port(port);
     if (!p || p->direction != model::Direction::Out)
-      return *err = "--stub-rate: '" + port + "' is not an out-port of app " + app.name, false;
+      return *err = "--stub-rate: " + not_an_out_port(app, port), false;
   }
   registry_ = registry_with_stand_ins(app, Registry::global(), log_, &stand_ins_);
   if (inputs_.empty()) return true;

@@ -1,10 +1,15 @@
 #include "cli/run_transport.h"
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
+#include <vector>
 
 #include "cli/commands.h"
 #include "cli/dds_plugin.h"
+#include "cli/duration_option.h"
+#include "core/diagnostic.h"
 #include "dds/deployment.h"
 
 namespace arbc::cli {
@@ -50,21 +55,47 @@ std::string describe_set(const ModuleSet& s) {
   return out;
 }
 
-// The domain: --domain, else the deployment's, else ROS 2's ROS_DOMAIN_ID, else 0.
+// The domain: --domain, else the deployment's, else ROS 2's ROS_DOMAIN_ID, else 0. A
+// ROS_DOMAIN_ID that is not a domain is refused, not read as 0 (atoi's answer): a mediator in
+// another domain than its programs would hear nothing and say nothing.
 bool pick_domain(const TransportFlags& flags, const dds::Deployment& d, int* domain) {
+  std::string source;
   if (flags.domain) {
     *domain = *flags.domain;
+    source = "--domain " + std::to_string(*domain);
   } else if (d.domain) {
-    *domain = *d.domain;
+    *domain = *d.domain;  // the file's reader checked its range
   } else if (const char* ros = std::getenv("ROS_DOMAIN_ID"); ros && *ros) {
-    *domain = std::atoi(ros);
+    std::string_view text(ros);
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *domain);
+    source = "ROS_DOMAIN_ID='" + std::string(text) + "'";
+    if (ec != std::errc() || end != text.data() + text.size()) *domain = -1;
   } else {
     *domain = 0;
   }
   if (*domain < 0 || *domain > 232) {
-    print_error("the DDS domain " + std::to_string(*domain) + " is not from 0 to 232");
+    print_error(source + " is not a DDS domain, a whole number from 0 to 232" +
+                (flags.domain ? "" : " (give --domain N, or unset ROS_DOMAIN_ID for domain 0)"));
     return false;
   }
+  return true;
+}
+
+// ARBC_DDS_NO_PEER_AFTER=S: the first report of topics without a peer S wall seconds in
+// instead of 10 (the later ones keep their proportions, dds/no_peer_reports.h). For tests,
+// which would otherwise wait minutes to see the reports repeat.
+bool pick_no_peer_after(double* seconds) {
+  const char* text = std::getenv("ARBC_DDS_NO_PEER_AFTER");
+  if (!text || !*text) return true;
+  char* end = nullptr;
+  double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value > 0 && value <= 3600)) {
+    print_error(std::string("ARBC_DDS_NO_PEER_AFTER='") + text +
+                "' is not a number of seconds above 0 and at most 3600 (the time of the first "
+                "report of topics without a peer; unset it for 10 s)");
+    return false;
+  }
+  *seconds = value;
   return true;
 }
 
@@ -72,18 +103,23 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   dds::DdsOptions dds;
   std::string error;
   if (!flags.deploy.empty()) {
-    if (!dds::read_deployment(flags.deploy, &dds.deployment, &error) ||
-        !dds::check_deployment(dds.deployment, app, &error)) {
-      print_error(error);
+    std::vector<Diagnostic> problems;
+    if (!dds::read_deployment(flags.deploy, &dds.deployment, &problems) ||
+        !dds::check_deployment(dds.deployment, app, &problems)) {
+      // As a compiler reports a spec: file:line:col: error: ..., the line quoted.
+      SourceCache sources;
+      for (const Diagnostic& d : problems) std::fputs(render(d, &sources).c_str(), stderr);
       return false;
     }
   }
   if (!pick_domain(flags, dds.deployment, &dds.domain)) return false;
+  if (!pick_no_peer_after(&dds.unmatched_after)) return false;
   dds.wait_peers = flags.wait_peers.value_or(0);
   options->realtime = true;
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
   options->time_scale = flags.time_scale.value_or(1);
+  dds.time_scale = options->time_scale;
   options->transport = load_dds_transport(app, std::move(dds), &error);
   if (!options->transport) {
     print_error(error);
@@ -109,8 +145,10 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "dds: the DDS domain (default: the deployment's, else "
                  "ROS_DOMAIN_ID, else 0)");
   cli.add_option("--wait-peers", flags->wait_peers,
-                 "dds: wait up to S wall seconds for a peer on every connected topic before "
-                 "starting (default 0: start at once)");
+                 "dds: wait up to S wall seconds (or a time with its unit: 2min) for a peer on "
+                 "every connected topic before starting (default 0: start at once)")
+      ->transform(seconds_option(true))
+      ->type_name("DURATION");
   cli.add_option("--time-scale", flags->time_scale,
                  "wall-clock runs: time runs K times as fast as the wall clock (default 1)");
 }
@@ -132,7 +170,7 @@ int apply_transport(const TransportFlags& flags, const model::App& app, RunOptio
     }
   }
   if (flags.wait_peers && !(*flags.wait_peers >= 0 && *flags.wait_peers <= 3600)) {
-    print_error("--wait-peers must be a number of seconds from 0 to 3600");
+    print_error("--wait-peers must be from 0 to 3600 seconds (1h)");
     return kExitBadInput;
   }
   if (flags.time_scale && !(*flags.time_scale > 0 && *flags.time_scale <= 1000)) {

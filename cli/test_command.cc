@@ -2,8 +2,8 @@
 // (docs/testing.md): runs the `test` declarations of each spec on the embedded runtime in
 // simulated time, one line per test, the details of each failure. Each spec is compiled and,
 // unless --no-verify, proved first (as `arbc run` does), all of them before any test runs.
-// Exit: 0 every test passed, 1 a test failed (or a proof was refuted), 2 bad input.
-#include <fnmatch.h>
+// Exit: 0 every test passed, 1 a test failed (or a proof was refuted), 2 bad input (a --filter
+// that matches none of the tests declared included).
 #include <stdlib.h>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +18,7 @@
 
 #include "cli/commands.h"
 #include "cli/junit.h"
+#include "cli/test_filter.h"
 #include "cli/test_runner.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
@@ -182,12 +183,25 @@ int test_command(std::span<char*> args) {
     }
     return exit;
   }
+  // A filter that chooses none of the declared tests is bad input, not an empty success.
+  std::vector<std::string> declared;
+  bool any_chosen = false;
+  for (const std::unique_ptr<PreparedSpec>& p : prepared) {
+    for (const model::TestCase& t : p->tests) {
+      declared.push_back(t.name);
+      any_chosen = any_chosen || filter_matches(a.filter, t.name);
+    }
+  }
+  if (!declared.empty() && !any_chosen) {
+    std::fprintf(stderr, "arbc test: error: %s\n", filter_matched_none(a.filter, declared).c_str());
+    return kExitBadInput;
+  }
   std::vector<SuiteOutcome> suites;
   size_t total = 0, failed = 0;
   for (const std::unique_ptr<PreparedSpec>& p : prepared) {
     std::vector<const model::TestCase*> chosen;
     for (const model::TestCase& t : p->tests) {
-      if (fnmatch(a.filter.c_str(), t.name.c_str(), 0) == 0) chosen.push_back(&t);
+      if (filter_matches(a.filter, t.name)) chosen.push_back(&t);
     }
     std::vector<TestOutcome> outcomes =
         run_all(p->app, p->dir, chosen, jobs_for(chosen.size(), a.jobs));
@@ -205,7 +219,8 @@ int test_command(std::span<char*> args) {
   }
   std::printf("%zu test%s, %zu passed, %zu failed\n", total, total == 1 ? "" : "s", total - failed,
               failed);
-  if (total == 0) std::printf("no test matched (the specs declare `test \"name\" { ... }`)\n");
+  if (total == 0)
+    std::printf("no test declared (a spec declares them as `test \"name\" { ... }`)\n");
   return failed ? kExitRefuted : kExitOk;
 }
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "cli/report/run_timeline.h"
+#include "cli/value_spec_text.h"
 #include "core/time_text.h"
 
 namespace arbc::cli {
@@ -13,6 +14,13 @@ namespace arbc::cli {
 namespace {
 
 std::string seconds(double t) { return time_text(t) + "s"; }
+
+// A received value as a spec literal, fields in the order of the port's type, as the
+// expectation it is compared with is written.
+std::string text_of(const Value& v, const std::string& port, const TestRun& run) {
+  const model::Port* p = run.app ? run.app->find_port(port) : nullptr;
+  return value_spec_text(v, p && p->type ? p->type.get() : nullptr);
+}
 
 bool in_window(double t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
 
@@ -42,7 +50,8 @@ std::string nearest_outside(const model::Expectation& e, const TestRun& run) {
   if (!best) return "";
   if (!e.value || near_equal(*e.value, best->value))
     return "; it received that value at " + seconds(best->t);
-  return "; the nearest it received was " + best->value.to_json() + " at " + seconds(best->t);
+  return "; the nearest it received was " + text_of(best->value, e.port, run) + " at " +
+         seconds(best->t);
 }
 
 std::string check_receives(const model::Expectation& e, const TestRun& run) {
@@ -52,7 +61,7 @@ std::string check_receives(const model::Expectation& e, const TestRun& run) {
   }
   if (e.kind == model::Expectation::Kind::Nothing) {
     if (got.empty()) return "";
-    return "but " + e.port + " received " + got.front()->value.to_json() + " at " +
+    return "but " + e.port + " received " + text_of(got.front()->value, e.port, run) + " at " +
            seconds(got.front()->t) + " (from " + got.front()->connection + ")";
   }
   for (const Received* r : got) {
@@ -62,7 +71,7 @@ std::string check_receives(const model::Expectation& e, const TestRun& run) {
     return "but nothing reached " + e.port + " " + window(e) + nearest_outside(e, run);
   std::string out = "but " + e.port + " received other values " + window(e) + ":";
   for (size_t i = 0; i < got.size() && i < 5; ++i)
-    out += "\n    " + seconds(got[i]->t) + " " + got[i]->value.to_json();
+    out += "\n    " + seconds(got[i]->t) + " " + text_of(got[i]->value, e.port, run);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/app_model.h"
 #include "core/test_case.h"
 #include "runtime/stand_in.h"
 #include "runtime/trace_record.h"
@@ -15,6 +16,7 @@ struct TestRun {
   const std::vector<Received>& received;    // what reached the stand-ins' in-ports
   const std::vector<TraceRecord>& records;  // the trace
   double end = 0;                           // the last instant the run reached
+  const model::App* app = nullptr;          // for the ports' types, in values it quotes
 };
 
 // "" when `e` holds in `run`; else what happened instead, in a line or a few.

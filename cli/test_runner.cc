@@ -185,7 +185,7 @@ TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
     outcome.detail = "  the app did not start: " + error + "\n";
     return outcome;
   }
-  TestRun run{trace.received, trace.records, trace.end};
+  TestRun run{trace.received, trace.records, trace.end, &app};
   outcome.detail = failures(test, run, trace.reports);
   outcome.passed = outcome.detail.empty();
   outcome.seconds =

@@ -1,5 +1,7 @@
 #include "cli/trace_diff.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -111,7 +113,7 @@ std::string seconds(double t) { return time_text(t) + " s"; }
 
 bool read_trace_file(const std::string& path, std::vector<TraceRecord>* records, std::string* err) {
   std::ifstream in(path);
-  if (!in) return *err = path + ": cannot read the trace", false;
+  if (!in) return *err = path + ": cannot read the trace: " + std::strerror(errno), false;
   std::string text;
   for (size_t line = 1; std::getline(in, text); ++line) {
     if (text.find_first_not_of(" \t\r") == std::string::npos) continue;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/duration_option.h"
 #include "cli/model_loader.h"
 #include "cli/monitor_runner.h"
 #include "cli/test_replayer.h"
@@ -55,17 +56,6 @@ std::vector<std::string> default_inputs() {
   return out;
 }
 
-// CLI11's PositiveNumber names its range with the 309 digits of the largest double; this one
-// says what is wanted. The name keeps `--help` as it was (FLOAT:POSITIVE).
-const CLI::Validator kPositiveSeconds(
-    [](std::string& text) -> std::string {
-      char* end = nullptr;
-      double value = std::strtod(text.c_str(), &end);
-      if (!text.empty() && *end == '\0' && std::isfinite(value) && value > 0) return "";
-      return "'" + text + "' is not a positive number of seconds (e.g. 10 or 0.5)";
-    },
-    "POSITIVE");
-
 // The command line of `arbc verify`.
 struct VerifyArgs {
   std::vector<std::string> inputs;
@@ -88,9 +78,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->capture_default_str();
   cli.add_flag("--strict", a.options.strict, "treat warnings (dead, unused) as errors");
   cli.add_option("--timeout", a.options.timeout_seconds,
-                 "seconds the solver may spend on all ports of one input; a check cut short is "
-                 "unknown, and unknown fails")
-      ->check(kPositiveSeconds)
+                 "seconds the solver may spend on all ports of one input (or a time with its "
+                 "unit: 2min); a check cut short is unknown, and unknown fails")
+      ->transform(seconds_option(false))
+      ->type_name("DURATION")
       ->capture_default_str();
   cli.add_option("--max-pairs", a.options.max_pairs_per_port,
                  "overlapping pairs per port reported with a counterexample; the rest are counted")

@@ -43,11 +43,8 @@ bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
       // in one process, too, every connection from a source judges a message on one state.
       if (s.message == c.message) continue;
       if (u.lifetime && t >= std::max(s.time, u.feed->last_fed_at) + *u.lifetime) continue;
-      char line[256];
-      std::snprintf(line, sizeof line,
-                    "not answered: %s (%s has not spoken since the delivery at %.3f s)",
-                    u.event.c_str(), u.feed->model->source.c_str(), s.time);
-      *why = line;
+      *why = "not answered: " + u.event + " (" + u.feed->model->source +
+             " has not spoken since the delivery at " + run_time_text(s.time) + ")";
       return false;
     }
   }

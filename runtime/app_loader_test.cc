@@ -99,8 +99,40 @@ TEST(AppLoaderTest, TypeMismatchWithoutUpdateIsAnError) {
   std::string error;
   EXPECT_FALSE(Runtime::create(t.app, t.dir, {}, &error, t.registry));
   EXPECT_EQ(error,
-            "connection 'c': Src.x carries int but Sink.x takes string, and no monitor update "
-            "converts it");
+            "the app: connection 'c': Src.x carries int but Sink.x takes string, and no monitor "
+            "update converts it");
+  // An error about the model's content names the file it came from.
+  RunOptions o;
+  o.app_file = "out/demo/app.json";
+  EXPECT_FALSE(Runtime::create(t.app, t.dir, o, &error, t.registry));
+  EXPECT_EQ(error.rfind("out/demo/app.json: connection 'c': Src.x carries int", 0), 0u) << error;
+}
+
+// Errors about something else than the model's content name that, not the model's file: a
+// plugin's module, a monitor file, the trace file.
+TEST(AppLoaderTest, OtherCreateErrorsDoNotNameTheAppFile) {
+  RunOptions o;
+  o.app_file = "out/demo/app.json";
+  std::string error;
+  testing::TestApp plugin;
+  plugin.registry.add_module("Broken", []() -> std::unique_ptr<Module> { return nullptr; });
+  plugin.module("Broken", {"out x: int"});
+  EXPECT_FALSE(Runtime::create(plugin.app, plugin.dir, o, &error, plugin.registry));
+  EXPECT_EQ(error, "module 'Broken' could not be created: its factory returned no object");
+  testing::TestApp monitor;
+  monitor.module("Src", {"out x: int"});
+  monitor.module("Sink", {"in x: int"});
+  monitor.connect("c", "Src.x", "Sink.x", "true", "this is not Lua\n");
+  EXPECT_FALSE(Runtime::create(monitor.app, monitor.dir, o, &error, monitor.registry));
+  EXPECT_EQ(error.rfind("connection 'c': its monitor script failed to load: " + monitor.dir +
+                            "/monitors/c.lua:1:",
+                        0),
+            0u)
+      << error;
+  testing::TestApp trace;
+  o.trace_path = trace.dir + "/no/such/dir/trace.jsonl";
+  EXPECT_FALSE(Runtime::create(trace.app, trace.dir, o, &error, trace.registry));
+  EXPECT_EQ(error.rfind("cannot write trace file " + o.trace_path, 0), 0u) << error;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // see. Building one from the core model is runtime_create.cc.
 #include <algorithm>
 
+#include "core/time_format.h"
 #include "runtime/runtime_internal.h"
 
 namespace arbc {
@@ -75,6 +76,11 @@ void Runtime::plugin_failed(PluginGuard& who, const char* callback, const std::s
   if (who.reported_errors.insert(line).second) {
     report(line + " (the run goes on; this error is reported once)");
   }
+}
+
+std::string Runtime::run_time_text(double t) const {
+  // The run's end is not known yet, only the duration asked for.
+  return TimeFormat::for_run(options_.duration).text(t);
 }
 
 void Runtime::report(const std::string& line) {

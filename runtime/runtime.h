@@ -66,6 +66,11 @@ struct RunOptions {
   // Report (once per silence) an event that lapses because its feed's source sent nothing for
   // its lifetime: in a distributed run, the sign that a peer is gone.
   bool report_silent_lapses = false;
+  // The file the app's model was read from ("out/app/app.json"). Errors of Runtime::create about
+  // the model's content (a connection between ports the app lacks) name it ("app NAME" when it
+  // is empty); the others name what they are about (a plugin, a monitor file, the trace file, the
+  // transport), not the model.
+  std::string app_file;
   std::string trace_path;  // empty: no trace
   // Not null: every trace record is also appended here (for `arbc run --report`); the
   // vector must outlive the run.
@@ -109,8 +114,9 @@ struct PluginStats {
 class Runtime {
  public:
   // Instantiates the app: modules (from registry), monitors (files relative to app_dir),
-  // constraints, environment. Returns nullptr and sets *error (what is wrong, what to do) on
-  // failure. Does not start anything yet.
+  // constraints, environment. Returns nullptr and sets *error (what is wrong, what to do; one
+  // line per problem; see RunOptions::app_file for what it names) on failure. Does not start
+  // anything yet.
   static std::unique_ptr<Runtime> create(const model::App& app, const std::string& app_dir,
                                          const RunOptions& options, std::string* error,
                                          Registry& registry = Registry::global());
@@ -177,9 +183,8 @@ class Runtime {
   bool create_modules(const Registry& registry, std::string* error);
   bool create_module_slot(const model::Module& m, const ModuleFactory& factory, std::string* error);
   void create_ports(const model::Module& m, ModuleSlot* slot);
-  bool create_connections(const std::string& app_dir, std::string* error);
-  bool create_connection(size_t i, const std::string& display_name, const std::string& app_dir,
-                         std::string* error);
+  bool create_connections(std::string* error);
+  bool create_connection(size_t i, const std::string& display_name, std::string* error);
   bool open_trace(std::string* error);
   bool open_transport(std::string* error);
   // Routes a message published on `out` to each connection from it mediated here.
@@ -205,6 +210,9 @@ class Runtime {
   // when they happen even when no message arrives any more.
   void watch_lapses(double period);
   void report(const std::string& line);
+  // An instant of this run as its reports write it: in the unit of the run's duration, as
+  // `arbc run`'s last line and the run report do (core/time_format.h).
+  std::string run_time_text(double t) const;
   struct Passing;
   static bool after_accept(void* passing, bool accepted);
   bool selected(Connection& c, double t, DropReason* reason, std::string* detail);
@@ -227,13 +235,18 @@ class Runtime {
   void publish_from(ModuleSlot& m, std::string_view port, Value&& v);
   // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;
   // false with *error on bad input (a script that does not load, another constraint).
-  bool load_monitor(Connection& c, const std::string& app_dir, std::string* error);
+  bool load_monitor(Connection& c, std::string* error);
   // Runs every loaded monitor's create; false with *error when one sets another constraint.
   bool create_monitors(std::string* error);
+  // How errors about the model's content start: options_.app_file, else "app NAME".
+  std::string model_name() const;
+  // A monitor's file as the user finds it: under the app directory.
+  std::string monitor_path(const model::Connection& mc) const;
   // The lifetime app.json declares for `event` (none: until unset, also for unknown names).
   std::optional<double> declared_lifetime(std::string_view event) const;
 
   model::App app_;
+  std::string app_dir_;  // where the monitors are, as create() was given it
   std::map<std::string, std::optional<double>, std::less<>> lifetimes_;  // app.json's events
   std::string scenario_;
   RunOptions options_;

@@ -34,11 +34,22 @@ std::string construct(const Factory& factory, std::unique_ptr<T>* out) {
   return *out ? "" : "its factory returned no object";
 }
 
+// A Lua error at load names a generated monitor relative to the app directory
+// ("monitors/take.lua:3: ..."), as run-time errors do; said before the run, the path from here
+// lets the user open it. A hand-written script's line is already the user's file.
+std::string from_here(const std::string& lua_error, const std::string& monitor,
+                      const std::string& path) {
+  if (lua_error.rfind(monitor + ":", 0) == 0) return path + lua_error.substr(monitor.size());
+  return lua_error;
+}
+
 // A monitor asked for another constraint at load: the Lua error (file and line) when the
 // script let it through, else the file alone (the script caught the error itself).
-std::string conflict_error(const Runtime::Connection& c, const std::string& lua_error) {
-  if (lua_error.find(c.constraint_conflict) != std::string::npos) return lua_error;
-  return c.model->monitor + ": setConstraint: " + c.constraint_conflict;
+std::string conflict_error(const Runtime::Connection& c, const std::string& lua_error,
+                           const std::string& path) {
+  if (lua_error.find(c.constraint_conflict) != std::string::npos)
+    return from_here(lua_error, c.model->monitor, path);
+  return path + ": setConstraint: " + c.constraint_conflict;
 }
 
 // The names, or "none".
@@ -60,6 +71,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
                                          Registry& registry) {
   std::unique_ptr<Runtime> rt(new Runtime());
   rt->app_ = app;
+  rt->app_dir_ = app_dir;
   rt->options_ = options;
   if (!rt->options_.limits.interrupt) rt->options_.limits.interrupt = options.interrupt;
   rt->host_ = options.host;
@@ -72,11 +84,20 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   rt->executor_->set_interrupt(options.interrupt);
   if (!rt->create_environment(registry, error)) return nullptr;
   if (!rt->create_modules(registry, error)) return nullptr;
-  if (!rt->create_connections(app_dir, error)) return nullptr;
+  if (!rt->create_connections(error)) return nullptr;
   if (!rt->open_trace(error)) return nullptr;
   if (!rt->create_monitors(error)) return nullptr;
   if (!rt->open_transport(error)) return nullptr;
   return rt;
+}
+
+std::string Runtime::model_name() const {
+  if (!options_.app_file.empty()) return options_.app_file;
+  return app_.name.empty() ? "the app" : "app " + app_.name;
+}
+
+std::string Runtime::monitor_path(const model::Connection& mc) const {
+  return app_dir_ + "/" + mc.monitor;
 }
 
 // The environment is the one registered under the app's name, else the only one registered;
@@ -187,7 +208,7 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
 
 // The connections into the modules mediated here, with unique display names (a rule name may
 // repeat across ports). Event containers name owners by index into connections_.
-bool Runtime::create_connections(const std::string& app_dir, std::string* error) {
+bool Runtime::create_connections(std::string* error) {
   std::map<std::string, int> name_count;
   for (const model::Connection& c : app_.connections) ++name_count[c.name];
   for (size_t i = 0; i < app_.connections.size(); ++i) {
@@ -195,13 +216,12 @@ bool Runtime::create_connections(const std::string& app_dir, std::string* error)
     auto dst = inputs_by_name_.find(mc.destination);
     if (dst != inputs_by_name_.end() && !dst->second->mediated) continue;
     std::string name = name_count[mc.name] > 1 ? mc.destination + "/" + mc.name : mc.name;
-    if (!create_connection(i, name, app_dir, error)) return false;
+    if (!create_connection(i, name, error)) return false;
   }
   return true;
 }
 
-bool Runtime::create_connection(size_t i, const std::string& display_name,
-                                const std::string& app_dir, std::string* error) {
+bool Runtime::create_connection(size_t i, const std::string& display_name, std::string* error) {
   const model::Connection& mc = app_.connections[i];
   auto c = std::make_unique<Connection>();
   c->runtime = this;
@@ -210,7 +230,8 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
   c->name = display_name;
   auto src = outputs_by_name_.find(mc.source);
   auto dst = inputs_by_name_.find(mc.destination);
-  std::string where = "connection '" + mc.name + "'";
+  // What follows is about the model's content: it names where the model came from.
+  std::string where = model_name() + ": connection '" + mc.name + "'";
   if (src == outputs_by_name_.end()) {
     *error = where + ": source " + mc.source + " is not an output port of a module in the app";
     return false;
@@ -230,7 +251,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
   c->stats.source = mc.source;
   c->stats.destination = mc.destination;
   c->stats.model_index = i;
-  if (!mc.monitor.empty() && !load_monitor(*c, app_dir, error)) return false;
+  if (!mc.monitor.empty() && !load_monitor(*c, error)) return false;
   if (!c->has_update && !c->is_feed && !same_type(*c->source->type, *c->destination->type)) {
     *error = where + ": " + mc.source + " carries " + c->source->type->to_string() + " but " +
              mc.destination + " takes " + c->destination->type->to_string() +
@@ -290,7 +311,7 @@ bool Runtime::create_monitors(std::string* error) {
       call = c.monitor->create({c.model->source, c.model->destination, c.name}, &created);
     }
     if (!c.constraint_conflict.empty()) {
-      *error = conflict_error(c, call.error);
+      *error = conflict_error(c, call.error, monitor_path(*c.model));
       return false;
     }
     if (!call.ok()) {
@@ -302,10 +323,10 @@ bool Runtime::create_monitors(std::string* error) {
   return true;
 }
 
-bool Runtime::load_monitor(Connection& c, const std::string& app_dir, std::string* error) {
+bool Runtime::load_monitor(Connection& c, std::string* error) {
   const model::Connection& mc = *c.model;
   std::string where = "connection '" + mc.name + "'";
-  std::string path = app_dir + "/" + mc.monitor;
+  std::string path = monitor_path(mc);
   std::string script;
   if (!read_file(path, &script)) {
     *error =
@@ -317,11 +338,12 @@ bool Runtime::load_monitor(Connection& c, const std::string& app_dir, std::strin
   std::string load_error;
   c.monitor = LuaMonitor::load(script, mc.monitor, options_.limits, &c, &load_error);
   if (!c.constraint_conflict.empty()) {  // setConstraint at the script's top level
-    *error = conflict_error(c, load_error);
+    *error = conflict_error(c, load_error, path);
     return false;
   }
   if (!c.monitor) {
-    *error = where + ": its monitor script failed to load: " + load_error;
+    *error =
+        where + ": its monitor script failed to load: " + from_here(load_error, mc.monitor, path);
     // `arbc import yarp` keeps each YARP monitor as the rule's `script`, which runs on YARP's
     // Lua API (require("yarp"), PortMonitor.*), not on this runtime: say what to do instead of
     // leaving the user with "attempt to call a nil value (global 'require')".

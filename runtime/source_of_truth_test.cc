@@ -34,17 +34,20 @@ TEST(SourceOfTruthTest, AnotherConstraintInCreateIsBadInputAtLoad) {
       "  PortMonitor.setConstraint('true')\n"
       "  return true\n"
       "end\n");
-  EXPECT_EQ(create_error(t),
-            "monitors/c.lua:2: setConstraint: \"true\" would replace the constraint of connection "
-            "'c', \"e\" (app.json's, which arbc verify proves and the runtime installs); remove "
-            "the call, or change the rule's `when` in the spec and rebuild");
+  // Named from here (under the app directory), so that the user can open it.
+  EXPECT_EQ(
+      create_error(t),
+      t.dir +
+          "/monitors/c.lua:2: setConstraint: \"true\" would replace the constraint of connection "
+          "'c', \"e\" (app.json's, which arbc verify proves and the runtime installs); remove "
+          "the call, or change the rule's `when` in the spec and rebuild");
 }
 
 TEST(SourceOfTruthTest, AnotherConstraintAtTopLevelOrCaughtByPcallIsBadInputToo) {
   TestApp top = app_with_monitor("PortMonitor.setConstraint('not e')\n");
   std::string error = create_error(top);
-  EXPECT_NE(error.find("monitors/c.lua:1: setConstraint: \"not e\" would replace the constraint "
-                       "of connection 'c', \"e\""),
+  EXPECT_NE(error.find(top.dir + "/monitors/c.lua:1: setConstraint: \"not e\" would replace the "
+                                 "constraint of connection 'c', \"e\""),
             std::string::npos)
       << error;
   // The script swallows the error: the conflict is still reported, naming the file.
@@ -54,7 +57,9 @@ TEST(SourceOfTruthTest, AnotherConstraintAtTopLevelOrCaughtByPcallIsBadInputToo)
       "  return true\n"
       "end\n");
   error = create_error(caught);
-  EXPECT_EQ(error.rfind("monitors/c.lua: setConstraint: \"e or x\" would replace", 0), 0u) << error;
+  EXPECT_EQ(error.rfind(caught.dir + "/monitors/c.lua: setConstraint: \"e or x\" would replace", 0),
+            0u)
+      << error;
 }
 
 TEST(SourceOfTruthTest, TheSameConstraintIsAcceptedAndTheModelsRuns) {

@@ -46,10 +46,10 @@ void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
   double silent = expiry - c.last_arrival;
   if (!lifetime || silent + 1e-9 < *lifetime) return;  // its source spoke; the entry just ended
   if (!c.silence_reported.insert(name).second) return;
-  char line[256];
-  std::snprintf(line, sizeof line, "event %s at %s lapsed at %.3f s: nothing from %s for %.3g s",
-                name.c_str(), in.qualified.c_str(), expiry, c.model->source.c_str(), *lifetime);
-  report(line);
+  char lifetime_text[32];
+  std::snprintf(lifetime_text, sizeof lifetime_text, "%.3g s", *lifetime);
+  report("event " + name + " at " + in.qualified + " lapsed at " + run_time_text(expiry) +
+         ": nothing from " + c.model->source + " for " + lifetime_text);
 }
 
 void Runtime::watch_lapses(double period) {

@@ -106,5 +106,24 @@ TEST(UnknownEventsTest, ASilentSourcesLapseIsReportedOnce) {
   EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.700 s: nothing from Src.f for 0.5 s");
 }
 
+// The report writes its instant in the unit of the run, as `arbc run`'s last line and the run
+// report do: in a run shorter than a second, ms (it read "0.600 s").
+TEST(UnknownEventsTest, ALapseOfAShortRunIsInMilliseconds) {
+  TestApp t;
+  feed_app(t, "e");
+  RunOptions o;
+  o.report_silent_lapses = true;
+  o.duration = 0.9;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 0.1, "Src", "f", Value(true));
+  rt->advance(0.9);
+  std::vector<std::string> lapses;
+  for (const std::string& r : t.reports) {
+    if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
+  }
+  ASSERT_EQ(lapses.size(), 1u) << ::testing::PrintToString(t.reports);
+  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 600.0 ms: nothing from Src.f for 0.5 s");
+}
+
 }  // namespace
 }  // namespace arbc

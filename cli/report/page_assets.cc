@@ -42,6 +42,9 @@ const char* const kReportScript = R"js(
   for (const svg of document.querySelectorAll("svg.timeline")) {
     const x0 = Number(svg.dataset.x0), x1 = Number(svg.dataset.x1);
     const end = Number(svg.dataset.end);
+    // Times as the SVG's titles write them (core/time_format.h).
+    const unit = svg.dataset.unit, perSecond = Number(svg.dataset.perSecond);
+    const decimals = Number(svg.dataset.decimals);
     const line = document.createElementNS(svg.namespaceURI, "line");
     line.setAttribute("class", "cursor");
     line.setAttribute("y1", "0");
@@ -60,7 +63,7 @@ const char* const kReportScript = R"js(
       line.setAttribute("x1", String(p.x));
       line.setAttribute("x2", String(p.x));
       label.setAttribute("x", String(p.x + 4));
-      label.textContent = ((p.x - x0) / (x1 - x0) * end).toFixed(3) + " s";
+      label.textContent = ((p.x - x0) / (x1 - x0) * end * perSecond).toFixed(decimals) + " " + unit;
     });
     svg.addEventListener("mouseleave", () => show(false));
   }

@@ -68,9 +68,11 @@ void append_header(std::string& out, const RunHeader& h) {
     out += std::string("<dt>proof</dt><dd id=\"proof\" class=\"") + (verified ? "ok" : "bad") +
            "\">" + escaped(h.proof) + "</dd>\n";
   }
+  // The time run as the timelines write it (a 2 ms run read "0.002 s"); the duration asked for
+  // in a unit of its own, which an early stop may make far larger.
   out += std::string("<dt>") + (h.realtime ? "wall-clock" : "simulated") +
-         " time</dt><dd id=\"duration\">" + seconds_text(h.end) + " s of " +
-         seconds_text(h.requested) + " s requested";
+         " time</dt><dd id=\"duration\">" + timeline_time_format(h.end).text(h.end) + " of " +
+         TimeFormat::for_run(h.requested).text(h.requested) + " requested";
   if (!h.stop_reason.empty()) out += " (stopped early: " + escaped(h.stop_reason) + ")";
   out += "</dd>\n";
   out += std::string("<dt>outcome</dt><dd id=\"outcome\" class=\"") + (h.success ? "ok" : "bad") +
@@ -242,8 +244,10 @@ void append_counters(std::string& out, const std::vector<ConnectionRow>& rows) {
       number_cell(total.pending) + number_cell(total.errors) + "<td></td></tr>\n</table>\n</div>\n";
 }
 
-// Errors, quarantines, publish and plugin errors, then the log: the first kMaxListed of each.
-void append_messages(std::string& out, const std::vector<TraceRecord>& records) {
+// Errors, quarantines, publish and plugin errors, then the log: the first kMaxListed of each,
+// each at its time as the timelines write it.
+void append_messages(std::string& out, const std::vector<TraceRecord>& records, double end) {
+  TimeFormat format = timeline_time_format(end);
   std::string problems, log;
   size_t problem_count = 0, log_count = 0;
   for (const TraceRecord& r : records) {
@@ -263,13 +267,13 @@ void append_messages(std::string& out, const std::vector<TraceRecord>& records) 
         break;
       case TraceKind::Log:
         if (log_count++ < kMaxListed) {
-          log += seconds_text(r.t) + "  " + escaped(r.connection) + ": " + escaped(r.text) + "\n";
+          log += format.text(r.t) + "  " + escaped(r.connection) + ": " + escaped(r.text) + "\n";
         }
         continue;
       default:
         continue;
     }
-    if (problem_count++ < kMaxListed) problems += seconds_text(r.t) + "  " + escaped(line) + "\n";
+    if (problem_count++ < kMaxListed) problems += format.text(r.t) + "  " + escaped(line) + "\n";
   }
   auto more = [](size_t count) {
     return count > kMaxListed ? "… and " + std::to_string(count - kMaxListed) + " more\n"
@@ -301,7 +305,7 @@ std::string render_run_report(const RunReportInput& input) {
   append_drops_by_reason(out, input);
   append_counters(out, input.connections);
   static const std::vector<TraceRecord> kNone;
-  append_messages(out, input.records ? *input.records : kNone);
+  append_messages(out, input.records ? *input.records : kNone, input.header.end);
   out +=
       "<p class=\"note\">Written by <code>arbc run --report</code>; self-contained: no "
       "network access, no external files.</p>\n<script>";

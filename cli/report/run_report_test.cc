@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "runtime/runtime_test_util.h"
 
 namespace arbc::report {
@@ -217,6 +219,67 @@ TEST_F(RunReportTest, SizeIsBoundedByBinsNotByTheRunsLength) {
 namespace arbc::report {
 namespace {
 
+// A run of 2 ms with a message every 0.1 ms: the hovers and the cursor write its times in ms
+// with the decimals that tell the deliveries apart (they all read 0.000 to 0.002 s before).
+TEST(RunReportShortRunTest, TimesFitTheRunsLength) {
+  arbc::testing::TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("fast", "Src.x", "Sink.x", "true");
+  std::vector<TraceRecord> records;
+  RunOptions o;
+  o.trace_records = &records;
+  auto rt = t.start(o);
+  for (int k = 0; k < 20; ++k)
+    arbc::testing::TestApp::publish_at(*rt, 1e-4 * k, "Src", "x", Value(k));
+  rt->advance(0.002);
+  rt->shutdown();
+  std::vector<ConnectionStats> stats = rt->stats();
+  ASSERT_EQ(stats[0].delivered, 20u);
+
+  RunReportInput input;
+  input.header.app = "fast";
+  input.header.end = rt->now();
+  input.header.requested = 0.002;
+  input.connections.push_back({stats[0], false, "true"});
+  input.records = &records;
+  std::string svg = section(render_run_report(input), "svg", "deliveries");
+  std::set<std::string> titles;
+  for (size_t at = svg.find("<title>fast: 1 delivery, "); at != std::string::npos;
+       at = svg.find("<title>fast: 1 delivery, ", at + 1))
+    titles.insert(svg.substr(at, svg.find("</title>", at) - at));
+  EXPECT_EQ(titles.size(), 20u);
+  EXPECT_NE(svg.find("<title>fast: 1 delivery, 0.100\u20130.107 ms</title>"), std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("data-unit=\"ms\""), std::string::npos);
+  EXPECT_NE(svg.find(">1.0 ms</text>"), std::string::npos);  // an axis tick
+  EXPECT_NE(svg.find("<title>end of run: 2.000 ms</title>"), std::string::npos);
+}
+
+// The header and the lists at the end write times as the timelines do: a 2 ms run is not
+// "0.002 s of 0.002 s requested", and its log lines are not all "0.000" to "0.002".
+TEST(RunReportShortRunTest, TheHeaderAndTheLogFitTheRunsLengthToo) {
+  std::vector<TraceRecord> records(2);
+  records[0].t = 0.00125;
+  records[0].kind = TraceKind::Log;
+  records[0].connection = "environment";
+  records[0].text = "half way";
+  records[1].t = 0.0015;
+  records[1].kind = TraceKind::Error;
+  records[1].connection = "fast";
+  records[1].text = "boom";
+  RunReportInput input;
+  input.header.app = "fast";
+  input.header.end = 0.002;
+  input.header.requested = 60;
+  input.records = &records;
+  std::string html = render_run_report(input);
+  EXPECT_NE(html.find("<dd id=\"duration\">2.000 ms of 60.000 s requested"), std::string::npos)
+      << html.substr(0, 3000);
+  EXPECT_NE(html.find("1.250 ms  environment: half way\n"), std::string::npos) << html;
+  EXPECT_NE(html.find("1.500 ms  error on fast: boom\n"), std::string::npos) << html;
+}
+
 // A monitor that always fails: its errors are listed, its quarantine is marked on its lane
 // and in its counters row, and the outcome shows as a failure.
 TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
@@ -252,9 +315,9 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   EXPECT_NE(html.find("<span class=\"bad\">quarantined</span>"), std::string::npos);
   std::string problems = html.substr(html.find("<pre id=\"problems\">"));
   problems = problems.substr(0, problems.find("</pre>"));
-  EXPECT_NE(problems.find("1.000  error on broken: "), std::string::npos) << problems;
+  EXPECT_NE(problems.find("1.000 s  error on broken: "), std::string::npos) << problems;
   EXPECT_NE(problems.find("boom 0"), std::string::npos);
-  EXPECT_NE(problems.find("3.000  quarantined broken: 5 failures in a row"), std::string::npos)
+  EXPECT_NE(problems.find("3.000 s  quarantined broken: 5 failures in a row"), std::string::npos)
       << problems;
   EXPECT_EQ(count(html, "error on broken"), 5u);
   // The totals line reads as a sentence for one connection too.

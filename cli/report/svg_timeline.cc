@@ -40,17 +40,22 @@ constexpr double kLaneHeight = 30;  // a connection lane: deliveries up, drops d
 constexpr double kEventLaneHeight = 16;
 constexpr double kHeadingHeight = 22;  // "event feeds", a port's name
 
-// Maps times to x positions in the plot.
+// Maps times to x positions in the plot, and writes them as precisely as a pixel tells apart.
 class TimeScale {
  public:
   TimeScale(const TimelineLayout& layout, double end)
-      : x0_(layout.label_width), width_(layout.plot_width()), end_(end > 0 ? end : 1) {}
+      : x0_(layout.label_width),
+        width_(layout.plot_width()),
+        end_(end > 0 ? end : 1),
+        format_(timeline_time_format(end, layout)) {}
   double x(double t) const { return x0_ + width_ * std::clamp(t / end_, 0.0, 1.0); }
   double end() const { return end_; }
   double seconds_per_pixel() const { return end_ / width_; }
+  const TimeFormat& format() const { return format_; }
 
  private:
   double x0_, width_, end_;
+  TimeFormat format_;
 };
 
 // 1, 2 or 5 times a power of ten, so that about 10 ticks cover the run.
@@ -63,11 +68,12 @@ double tick_step(double end) {
   return 10 * power;
 }
 
-// As many decimals as the step needs: "10 s", "0.5 s", "0.002 s".
-std::string tick_label(double t, double step) {
-  int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 9);
+// In the run's unit, with as many decimals as the step needs: "10 s", "0.5 s", "2 ms".
+std::string tick_label(double t, double step, const TimeFormat& format) {
+  double unit_step = step * format.per_second();
+  int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(unit_step) + 1e-9)), 0, 9);
   char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.*f s", decimals, t);
+  std::snprintf(buffer, sizeof buffer, "%.*f %s", decimals, t * format.per_second(), format.unit());
   return buffer;
 }
 
@@ -79,7 +85,10 @@ void open_svg(std::string& out, const char* id, const TimelineLayout& layout, do
          "\" viewBox=\"0 0 " + coordinate(layout.width) + " " + coordinate(height) +
          "\" data-x0=\"" + coordinate(layout.label_width) + "\" data-x1=\"" +
          coordinate(layout.label_width + layout.plot_width()) + "\" data-end=\"" +
-         std::to_string(scale.end()) + "\" role=\"img\">\n<desc>";
+         std::to_string(scale.end()) + "\" data-unit=\"" + scale.format().unit() +
+         "\" data-per-second=\"" + std::to_string(scale.format().per_second()) +
+         "\" data-decimals=\"" + std::to_string(scale.format().decimals()) +
+         "\" role=\"img\">\n<desc>";
   append_html_escaped(out, description);
   out += "</desc>\n";
 }
@@ -94,14 +103,14 @@ void append_axis(std::string& out, const TimeScale& scale, double y_top, double 
     std::string x = coordinate(scale.x(t));
     out += "<line x1=\"" + x + "\" y1=\"" + coordinate(y_top) + "\" x2=\"" + x + "\" y2=\"" +
            coordinate(y_bottom) + "\"/>";
-    out += "<text x=\"" + x + "\" y=\"" + coordinate(y_top - 8) + "\">" + tick_label(t, step) +
-           "</text>\n";
+    out += "<text x=\"" + x + "\" y=\"" + coordinate(y_top - 8) + "\">" +
+           tick_label(t, step, scale.format()) + "</text>\n";
   }
   // The end of the run, where it is not on a tick.
   std::string x = coordinate(scale.x(scale.end()));
   out += "<line class=\"end\" x1=\"" + x + "\" y1=\"" + coordinate(y_top) + "\" x2=\"" + x +
-         "\" y2=\"" + coordinate(y_bottom) + "\"><title>end of run: " + seconds_text(scale.end()) +
-         " s</title></line>\n</g>\n";
+         "\" y2=\"" + coordinate(y_bottom) +
+         "\"><title>end of run: " + scale.format().text(scale.end()) + "</title></line>\n</g>\n";
 }
 
 void append_rect(std::string& out, double x, double y, double w, double h, const char* fill,
@@ -142,7 +151,7 @@ size_t bin_of(double t, const TimeScale& scale, int bins) {
 
 std::string bin_span(size_t bin, const TimeScale& scale, int bins) {
   double width = scale.end() / bins;
-  return seconds_text(bin * width) + "–" + seconds_text((bin + 1) * width) + " s";
+  return scale.format().span(bin * width, (bin + 1) * width);
 }
 
 using ReasonCounts = std::array<uint64_t, kDropReasonCount>;
@@ -193,7 +202,7 @@ void append_connection_lane(std::string& out, const ConnectionLane& lane, double
   if (lane.quarantined_at) {
     double x = scale.x(*lane.quarantined_at);
     append_rect(out, x - 1, y0 + 1, 3, kLaneHeight - 2, "#ff0000",
-                lane.name + ": quarantined at " + seconds_text(*lane.quarantined_at) + " s");
+                lane.name + ": quarantined at " + scale.format().text(*lane.quarantined_at));
   }
   append_label(out, layout.label_width + layout.plot_width() + 8, mid + 4, "total",
                std::to_string(lane.deliveries.size()) + " / " + std::to_string(lane.drops.size()),
@@ -202,6 +211,11 @@ void append_connection_lane(std::string& out, const ConnectionLane& lane, double
 }
 
 }  // namespace
+
+TimeFormat timeline_time_format(double end, const TimelineLayout& layout) {
+  if (!(end > 0)) end = 1;
+  return TimeFormat(end, end / layout.plot_width());
+}
 
 std::string connection_timeline_svg(const RunTimeline& timeline, size_t first_feed,
                                     const TimelineLayout& layout) {
@@ -273,8 +287,8 @@ std::string event_timeline_svg(const RunTimeline& timeline, const TimelineLayout
       double x = scale.x(bar.begin);
       double w = std::max(1.0, scale.x(bar.end) - x);
       append_rect(out, x, y + 3, w, kEventLaneHeight - 6, kPresenceColor,
-                  lane.event + " in " + lane.port + ": present " + seconds_text(bar.begin) + "–" +
-                      seconds_text(bar.end) + " s" +
+                  lane.event + " in " + lane.port + ": present " +
+                      scale.format().span(bar.begin, bar.end) +
                       (spans > 1 ? " (" + std::to_string(spans) + " spans with brief gaps)" : ""));
     }
     char share[32];

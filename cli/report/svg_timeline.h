@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/report/run_timeline.h"
+#include "core/time_format.h"
 #include "runtime/drop_reason.h"
 
 namespace arbc::report {
@@ -25,6 +26,11 @@ struct TimelineLayout {
   int bins = 300;            // time bins across the plot (deliveries and drops)
   double plot_width() const { return width - label_width - right_width; }
 };
+
+// How the timelines write the instants of a run that ended at `end`: its unit, and the decimals
+// a pixel of the plot tells apart. The rest of the page (the header, the log) writes times the
+// same way.
+TimeFormat timeline_time_format(double end, const TimelineLayout& layout = {});
 
 // One lane per connection: delivery bars above the lane's midline, drop bars below it
 // coloured by the bin's most frequent reason, a red rule where it was quarantined. Bar height

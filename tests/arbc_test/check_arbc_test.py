@@ -134,20 +134,23 @@ def case_unit_test_of_one_rule(arbc, tmp):
 
 
 def case_expectation_at_the_wrong_time(arbc, tmp):
-    # A newcomer's mistake: the take is expected 100 ms late. The failure names when the value
-    # did arrive, and when an expected value is wrong too, the nearest one that arrived.
-    late = changed_spec(tmp, 'vec3(0.3, 0.1, 0.0) } at 100ms;', 'vec3(0.3, 0.1, 0.0) } at 200ms;',
+    # A newcomer's mistake: the take is expected 20 ms late (200 ms late would fall in the
+    # test's `receives nothing within 150ms..1s`, which `arbc check` refuses as a
+    # contradiction). The failure names when the value did arrive, and when an expected value
+    # is wrong too, the nearest one that arrived.
+    late = changed_spec(tmp, 'vec3(0.3, 0.1, 0.0) } at 100ms;', 'vec3(0.3, 0.1, 0.0) } at 120ms;',
                         "late.spec")
     code, out, err = run(arbc, "test", late, "--filter", "take only when*")
     expect(code == 1, f"exit {code}", out, err)
-    expect("but nothing reached PickAndPlace.cmd at 0.2s; it received that value at 0.1s\n" in out,
+    expect("but nothing reached PickAndPlace.cmd at 0.12s; it received that value at 0.1s\n" in out,
            "the failure does not say when the value arrived", out, err)
     wrong = changed_spec(tmp, '{ verb: "take", pos: vec3(0.3, 0.1, 0.0) } at 100ms;',
-                         '{ verb: "put", pos: vec3(0.3, 0.1, 0.0) } at 200ms;', "wrong.spec")
+                         '{ verb: "put", pos: vec3(0.3, 0.1, 0.0) } at 120ms;', "wrong.spec")
     code, out, err = run(arbc, "test", wrong, "--filter", "take only when*")
     expect(code == 1, f"exit {code}", out, err)
-    expect("at 0.2s; the nearest it received was "
-           '{"pos":{"x":0.3,"y":0.1,"z":0.0},"verb":"take"} at 0.1s\n' in out,
+    # The value that arrived is written as the expected one is, fields in the type's order.
+    expect("at 0.12s; the nearest it received was "
+           '{ verb: "take", pos: vec3(0.3, 0.1, 0.0) } at 0.1s\n' in out,
            "the failure does not name the nearest value", out, err)
 
 
@@ -248,6 +251,64 @@ def case_stub_run_reports_stand_ins(arbc, tmp):
     expect(re.search(r"PickAndPlace\.cmd \(stand-in sink\): received \d+", out), "no sink", out, err)
     code, out, err = run(arbc, "run", SPEC, "--stub", "--stub-rate", "Nope.x=3", "--no-verify")
     expect(code == 2 and "'Nope.x' is not an out-port" in err, "bad --stub-rate accepted", out, err)
+
+
+def case_inputs_port_and_time_mistakes(arbc, tmp):
+    # A newcomer's slips in an inputs file: each error says what to write instead.
+    inputs = os.path.join(tmp, "bad.jsonl")
+    face = {"pos": [0, 0, 1], "certainty": 0.9}
+    for line, want in [
+        ({"t": 1, "port": "FaceDetector.faces", "value": face},
+         "'FaceDetector.faces' is not an out-port of app table_clean; "
+         "did you mean 'FaceDetector.face'?"),
+        ({"t": 1, "port": "HeadControl.gaze", "value": [0, 0, 1]},
+         "'HeadControl.gaze' is not an out-port of app table_clean: it is an in-port "
+         "(a stand-in publishes on out-ports, such as "),
+        ({"t": 1, "port": "FaceDetector", "value": face},
+         "name a port as Module.port (its out-ports: "),
+        ({"t": "100ms", "port": "FaceDetector.face", "value": face},
+         "field 't': \"100ms\" is a string; write 0.1, the time in seconds"),
+        ({"port": "FaceDetector.face", "value": face},
+         "field 't': missing: the time in seconds from the start"),
+    ]:
+        write_lines(inputs, [line])
+        code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
+        expect(code == 2 and f"{inputs}:1: " in err and want in err, f"exit {code}: {want}",
+               out, err)
+    # A file that is not there says why, for --inputs and --diff alike.
+    missing = os.path.join(tmp, "no-such.jsonl")
+    for option in ("--inputs", "--diff"):
+        code, out, err = run(arbc, "run", SPEC, option, missing, "--no-verify")
+        expect(code == 2 and f"{missing}: cannot read the " in err and
+               "No such file or directory" in err, f"{option}: exit {code}", out, err)
+    code, out, err = run(arbc, "run", SPEC, "--stub", "--stub-rate", "FaceDetector.fac=0",
+                         "--no-verify")
+    expect(code == 2 and "did you mean 'FaceDetector.face'?" in err, "no suggestion", out, err)
+
+
+def case_filter_that_matches_nothing(arbc, tmp):
+    # `--filter take` is not a glob for names holding "take": an error that says what to
+    # write, not "0 tests" and exit 0, which a CI job would take for a pass.
+    code, out, err = run(arbc, "test", SPEC, "--filter", "take")
+    expect(code == 2 and "PASS" not in out, f"exit {code}, expected 2", out, err)
+    expect("--filter 'take' matches none of the " in err and
+           "did you mean --filter '*take*'?" in err, "no suggestion", out, err)
+    code, out, err = run(arbc, "test", SPEC, "--filter", "nothing like it")
+    expect(code == 2 and "the tests are:\n  take only when the arm is idle and not holding" in err,
+           "the names are not listed", out, err)
+
+
+def case_junit_failure_message(arbc, tmp):
+    # CI pages show the failure's message attribute alone: it must read as a headline, the
+    # expectation and what happened, without the terminal's indentation or the trace.
+    junit = os.path.join(tmp, "results.xml")
+    broken = changed_spec(tmp, "hold 1s", "hold 300ms")
+    run(arbc, "test", broken, "--no-verify", "--junit", junit)
+    failures = ET.parse(junit).getroot().findall(".//failure")
+    expect(len(failures) == 1, "no junit failure")
+    message = failures[0].get("message")
+    expect(re.fullmatch(re.escape(broken) + r':\d+: expected search drops "not-selected" at 700ms; '
+                        r"but search delivered at 0\.7s", message), f"message {message!r}")
 
 
 def main():

@@ -18,12 +18,15 @@ printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n'
 expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
 expect 2 "unknown target 'ros'" -- "$arbc" build specs/face_filter.spec --target ros -o "$scratch/out"
 # The deployment file of --target yarp (docs/yarp.md#names-on-yarp).
+# Each error at the line and column of its key or value, as a compiler reports a spec.
 printf '{"topics": {"Nope.port": "/x"}}' > "$scratch/bad_port.json"
-expect 2 "\"Nope.port\" is not a port" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/bad_port.json" -o "$scratch/out"
+expect 2 "bad_port.json:1:13: error: \"topics\": \"Nope.port\" is not a port" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/bad_port.json" -o "$scratch/out"
+printf '{"topics": {\n  "HeadControl.gaze": "/a",\n}}' > "$scratch/not_json.json"
+expect 2 "not_json.json:3:1: error: not valid JSON: syntax error while parsing object key" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/not_json.json" -o "$scratch/out"
 printf '{"topics": {"HeadControl.gaze": "no slash"}}' > "$scratch/bad_name.json"
 expect 2 "is not a YARP port name" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/bad_name.json" -o "$scratch/out"
 printf '{"topics": {"HeadControl.gaze": "/a", "FaceDetector.face": "/a"}}' > "$scratch/same.json"
-expect 2 "are both named" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/same.json" -o "$scratch/out"
+expect 2 "same.json:1:60: error: \"topics\": HeadControl.gaze and FaceDetector.face are both named" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/same.json" -o "$scratch/out"
 printf '{"topics": {"HeadControl.gaze": "/robot/gaze:i"}}' > "$scratch/good.json"
 expect 2 "--deploy is for --target yarp" -- "$arbc" build specs/face_filter.spec --deploy "$scratch/good.json" -o "$scratch/out"
 printf '{"topics": {"HeadControl.gaze": "/robot/gaze:i"}}' > "$scratch/good.json"

@@ -7,6 +7,7 @@ usage: check_cli_input.py ARBC TEST_PLUGIN CASE        (run from the repository 
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -48,9 +49,101 @@ def case_duration_without_unit(arbc, plugin):
                      "(write 5s for seconds)")
 
 
+def case_duration_in_hours(arbc, plugin):
+    code, out, err = run(arbc, "run", "specs/face_filter.spec", "--stub", "--duration", "0.001h")
+    expect(code == 0 and "simulated time 3.600 s" in out, f"exit {code}", out, err)
+
+
+def case_run_line_fits_a_short_run(arbc, plugin):
+    # In the unit of the run's length, as the run report writes it ("0.500 s" before).
+    code, out, err = run(arbc, "run", "specs/face_filter.spec", "--stub", "--duration", "500ms")
+    expect(code == 0 and "simulated time 500.0 ms" in out, f"exit {code}", out, err)
+
+
+def case_duration_unit_unknown(arbc, plugin):
+    expect_bad_input(run(arbc, "run", PINGPONG, "--plugin", plugin, "--duration", "3d"),
+                     "--duration '3d' is not a positive duration with its unit: 'd' is not a "
+                     "unit of time; the units are ms, s, min or h")
+
+
+def case_times_share_one_parser(arbc, plugin):
+    """The other options that take a time take the same units, and say the same of a bad one."""
+    code, out, err = run(arbc, "verify", "--timeout", "2min", "tests/verify/table_clean.app.json")
+    expect(code == 0, f"verify --timeout 2min: exit {code}", out, err)
+    for command in (["verify", "tests/verify/table_clean.app.json"], ["lsp"],
+                    ["run", PINGPONG, "--plugin", plugin, "--transport", "dds"]):
+        option = "--wait-peers" if command[0] == "run" else "--timeout"
+        expect_bad_input(run(arbc, *command, option, "3d"),
+                         f"{option}: '3d' is not a ",
+                         "'d' is not a unit of time; the units are ms, s, min or h")
+    expect_bad_input(run(arbc, "run", PINGPONG, "--plugin", plugin, "--transport", "dds",
+                         "--wait-peers", "2h"), "--wait-peers must be from 0 to 3600 seconds")
+
+
 def case_timeout_zero(arbc, plugin):
     expect_bad_input(run(arbc, "verify", "--timeout", "0", "tests/verify/table_clean.app.json"),
                      "--timeout: '0' is not a positive number of seconds")
+
+
+def case_ros_domain_id_not_a_domain(arbc, plugin):
+    # Refused before any DDS entity exists, so no DDS traffic: atoi read "abc" as domain 0.
+    spec = "tests/dds/interop/teleop.spec"
+    for value in ("abc", "7x", "300"):
+        env = dict(os.environ, ROS_DOMAIN_ID=value)
+        proc = subprocess.run([arbc, "run", spec, "--transport", "dds", "--host", "none",
+                               "--duration", "1s"], capture_output=True, text=True, env=env,
+                              timeout=120)
+        expect_bad_input((proc.returncode, proc.stdout, proc.stderr),
+                         f"ROS_DOMAIN_ID='{value}' is not a DDS domain, a whole number from 0 "
+                         "to 232 (give --domain N, or unset ROS_DOMAIN_ID for domain 0)")
+    expect_bad_input(run(arbc, "run", spec, "--transport", "dds", "--domain", "233"),
+                     "--domain 233 is not a DDS domain, a whole number from 0 to 232")
+
+
+def case_no_peer_after_not_a_time(arbc, plugin):
+    # Refused before any DDS entity exists: the variable only sets when topics without a peer
+    # are first reported.
+    for value in ("abc", "0", "-1", "5s"):
+        env = dict(os.environ, ARBC_DDS_NO_PEER_AFTER=value)
+        proc = subprocess.run([arbc, "run", PINGPONG, "--plugin", plugin, "--transport", "dds",
+                               "--duration", "1s"], capture_output=True, text=True, env=env,
+                              timeout=120)
+        expect_bad_input((proc.returncode, proc.stdout, proc.stderr),
+                         f"ARBC_DDS_NO_PEER_AFTER='{value}' is not a number of seconds above 0")
+
+
+def case_run_errors_name_what_they_are_about(arbc, plugin):
+    """An error of creating the run names what it is about; only one about app.json's content
+    names app.json (it used to prefix them all: "DIR/app.json: DDS: ...")."""
+    with tempfile.TemporaryDirectory() as d:
+        trace = os.path.join(d, "no", "such", "dir", "trace.jsonl")
+        code, out, err = run(arbc, "run", PINGPONG, "--plugin", plugin, "--trace", trace)
+        expect_bad_input((code, out, err), f"arbc run: error: cannot write trace file {trace}")
+        expect("app.json" not in err, "a trace file error names app.json", out, err)
+
+        code, out, err = run(arbc, "run", PINGPONG, "--plugin", plugin, "--scenario", "nope")
+        expect_bad_input((code, out, err), "arbc run: error: unknown scenario 'nope'")
+        expect("app.json" not in err, "an unknown scenario names app.json", out, err)
+
+        # A profile that is not there: refused when the transport opens, before any DDS entity.
+        env = dict(os.environ, FASTRTPS_DEFAULT_PROFILES_FILE=os.path.join(d, "missing.xml"))
+        proc = subprocess.run([arbc, "run", PINGPONG, "--plugin", plugin, "--transport", "dds",
+                               "--duration", "1s"], capture_output=True, text=True, env=env,
+                              timeout=120)
+        result = (proc.returncode, proc.stdout, proc.stderr)
+        expect_bad_input(result, "arbc run: error: DDS: FASTRTPS_DEFAULT_PROFILES_FILE names")
+        expect("app.json" not in proc.stderr, "a DDS error names app.json", *result[1:])
+
+        # A connection from a port the app lacks is about app.json's content: it names app.json.
+        app = os.path.join(d, "app")
+        shutil.copytree(PINGPONG, app)
+        with open(os.path.join(app, "app.json")) as f:
+            text = f.read()
+        with open(os.path.join(app, "app.json"), "w") as f:
+            f.write(text.replace('"source": "Ticker.count"', '"source": "Ticker.counter"'))
+        code, out, err = run(arbc, "run", app, "--plugin", plugin, "--no-verify")
+        expect_bad_input((code, out, err), f"arbc run: error: {app}/app.json: connection 'go': "
+                         "source Ticker.counter is not an output port of a module in the app")
 
 
 def case_run_takes_app_json(arbc, plugin):
