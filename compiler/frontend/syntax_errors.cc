@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "compiler/frontend/foreign_words.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/unclosed_block.h"
 #include "compiler/frontend/unit_words.h"
@@ -335,8 +336,9 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
           "invariant, never, only, assume, after, stable, given, arbitrate, connect, assert, "
           "resource, test or tests), found " +
           found;
-      suggest_keyword(offending,
-                      std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);
+      if (!note_foreign_word(declaration_for_word(offending->getText()), d))
+        suggest_keyword(offending,
+                        std::vector<std::string>(kDeclKeywords.begin(), kDeclKeywords.end()), d);
     } else if (x.has("in") && x.has("out")) {
       d.message =
           "expected a port declaration ('in NAME: TYPE;' or 'out NAME: TYPE;') or '}', "
@@ -348,7 +350,8 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
           "expected a statement (let, var, accept, set, unset, if, emit, throttle, "
           "every, script) or '}', found " +
           found;
-      suggest_keyword(offending, kStatementKeywords, d);
+      if (!note_foreign_word(statement_for_word(offending->getText()), d))
+        suggest_keyword(offending, kStatementKeywords, d);
     } else if (x.kinds.count(ArbcParser::ID) && x.has("{") &&
                (in_rule(ctx, ArbcParser::RuleTypeExpr) ||
                 ctx->getRuleIndex() == ArbcParser::RuleTypeDecl ||
@@ -423,7 +426,8 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       d.message = "unknown statement '" + previous->getText() +
                   "': a statement is let, var, accept, set, unset, if, emit, throttle, every, "
                   "script, or an assignment NAME = VALUE;";
-      suggest_keyword(previous, kStatementKeywords, d);
+      if (!note_foreign_word(statement_for_word(previous->getText()), d))
+        suggest_keyword(previous, kStatementKeywords, d);
     } else if (wanted.size() == 1 && x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a name in " + context + ", found " + found;
       if (is_keyword(parser->getVocabulary(), offending))
@@ -440,6 +444,16 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
   }
 
   // Adds "did you mean 'module'?" when a misspelled keyword was written as a name.
+  // A word from elsewhere (foreign_words.h): a note on how the spec language says it.
+  static bool note_foreign_word(const std::optional<std::string>& how, Diagnostic& d) {
+    if (!how) return false;
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = *how;
+    d.notes.push_back(std::move(note));
+    return true;
+  }
+
   void suggest_keyword(const antlr4::Token* offending, const std::vector<std::string>& keywords,
                        Diagnostic& d) {
     if (offending->getType() != ArbcParser::ID) return;
