@@ -7,6 +7,7 @@
 // operands, exactly as sema typed them (an `int` literal is Int, a `float` literal Float).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct BodyStmt {
   std::string name;
   BodyExpr expr;
   std::vector<BodyStmt> then_body, else_body;
+  // Set: the lifetime `for D` gives, in seconds; none: the event's declared lifetime, else
+  // until unset. Not used by the proofs (they read effects from the connection); `arbc docs`
+  // names it.
+  std::optional<double> lifetime;
 };
 
 using Body = std::vector<BodyStmt>;

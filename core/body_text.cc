@@ -136,6 +136,10 @@ void append_stmt(std::string& out, const BodyStmt& s) {
     case Kind::Set:
     case Kind::Unset:
       out += ' ' + s.name;
+      if (s.lifetime) {
+        out += ' ';
+        append_json_double(out, *s.lifetime);
+      }
       break;
     case Kind::If:
       out += ' ';
@@ -371,6 +375,11 @@ bool Reader::stmt(BodyStmt& s, int depth) {
     case Kind::Unset:
       s.name = word();
       ok = !s.name.empty();
+      if (ok && s.kind == Kind::Set && !at(')')) {  // `(set LINE NAME SECONDS)`
+        BodyExpr seconds;
+        ok = number(word(), seconds) && seconds.number >= 0;
+        s.lifetime = seconds.number;
+      }
       break;
     case Kind::If:
       ok =

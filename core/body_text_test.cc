@@ -15,6 +15,7 @@ TEST(BodyText, StatementsRoundTrip) {
       "(var 3 n 0)",
       "(assign 4 n (+ (local n) 1))",
       "(every 5 ((set 5 e_x) (unset 6 e_y)))",
+      "(set 9 e_face 1.5)",
       "(throttle 7)",
       "(emit 8 (list 1 2.5 -3 \"a\\\"b\" true false (neg (index msg 0)) (not true)))",
   };

@@ -160,6 +160,35 @@ TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
   EXPECT_NE(md.find("- HeadControl.gaze: proved"), std::string::npos);
 }
 
+// The lifetime column says what each `set` gives, not only the declaration's default.
+TEST(MarkdownDocsTest, AnEventLivesAsLongAsItsSetsSay) {
+  model::App app = search_and_track();
+  app.events[0].lifetime.reset();  // `event e_face_detected;`
+  model::BodyStmt set_for;
+  set_for.kind = model::BodyStmt::Kind::Set;
+  set_for.name = "e_face_detected";
+  set_for.lifetime = 1.0;  // `set e_face_detected for 1s;`
+  app.connections[0].body = model::Body{set_for};
+  auto row = [&] {
+    std::string md = render_index_markdown({&app, {}, "app.svg", ""});
+    size_t at = md.find("| `e_face_detected` |");
+    return at == std::string::npos ? md : md.substr(at, md.find('\n', at) - at);
+  };
+  EXPECT_EQ(row(),
+            "| `e_face_detected` | monitor code | 1 s | HeadControl.gaze / track | "
+            "HeadControl.gaze / search |");
+  // A second `set` without `for`, inside an `if`: until unset, as the declaration says.
+  model::BodyStmt branch;
+  branch.kind = model::BodyStmt::Kind::If;
+  set_for.lifetime.reset();
+  branch.then_body = {set_for};
+  app.connections[0].body->push_back(branch);
+  EXPECT_NE(row().find("| 1 s (track); until unset (track) |"), std::string::npos) << row();
+  // A script's own code sets it: the docs cannot say for how long.
+  app.connections[0].body.reset();
+  EXPECT_NE(row().find("| as its script sets it (track) |"), std::string::npos) << row();
+}
+
 // A by-priority port as lowering writes it: the higher rule has an activity event (its hold),
 // the lower one reads `not act_track`.
 model::App priority_app() {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "compiler/docs/decision_table.h"
+#include "compiler/docs/event_lifetimes.h"
 #include "compiler/docs/monitor_summary.h"
 #include "core/join.h"
 
@@ -35,12 +36,6 @@ std::string ports_of(const model::Module& m, model::Direction d) {
     s += code(p.name + ": " + (p.type ? p.type->to_string() : "?"));
   }
   return s.empty() ? "-" : s;
-}
-
-std::string seconds(double s) {
-  std::ostringstream out;
-  out << s << " s";
-  return out.str();
 }
 
 void modules_section(const model::App& app, std::ostream& out) {
@@ -90,8 +85,8 @@ void events_section(const model::App& app, std::ostream& out) {
         << (!e.source.empty()        ? cell(e.source)
             : activity.count(e.name) ? "each delivery (by priority)"
                                      : "monitor code")
-        << " | " << (e.lifetime ? seconds(*e.lifetime) : "until unset") << " | "
-        << cells(set_by[e.name]) << " | " << cells(read_by[e.name]) << " |\n";
+        << " | " << cell(event_lifetime_cell(e, app)) << " | " << cells(set_by[e.name]) << " | "
+        << cells(read_by[e.name]) << " |\n";
   out << "\n";
 }
 

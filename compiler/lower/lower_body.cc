@@ -141,6 +141,7 @@ bool stmt(const ast::Stmt& s, std::vector<BodyStmt>& out) {
       break;
     case Kind::Set:
       o.kind = BodyStmt::Kind::Set;
+      if (s.duration) o.lifetime = s.duration->seconds;
       break;
     case Kind::Unset:
       o.kind = BodyStmt::Kind::Unset;
