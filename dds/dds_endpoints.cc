@@ -2,6 +2,7 @@
 // threads and the executor, and what they count.
 #include <fastrtps/types/DynamicDataFactory.h>
 
+#include "core/join.h"
 #include "dds/dds_transport_internal.h"
 #include "dds/wire_values.h"
 #include "runtime/executor.h"
@@ -173,6 +174,21 @@ void TopicReader::on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus
   transport_->to_inbox(this, std::nullopt);
 }
 
+// What a mediated output's silence does here: its rules get nothing, and the events its
+// monitors set are not refreshed (each lapses by its lifetime, if it has one).
+static std::string silence_effect(const TransportPort& port) {
+  std::string effect;
+  if (!port.connections.empty())
+    effect = join(port.connections) + " get" + (port.connections.size() == 1 ? "s" : "") +
+             " nothing until one is back";
+  if (!port.events.empty())
+    effect += std::string(effect.empty() ? "" : "; ") + join(port.events) +
+              (port.events.size() == 1 ? " is" : " are") + " no longer refreshed and lapse" +
+              (port.events.size() == 1 ? "s" : "") + " by " +
+              (port.events.size() == 1 ? "its lifetime" : "their lifetimes");
+  return effect.empty() ? "nothing here reads it" : effect;
+}
+
 void TopicReader::on_subscription_matched(fdds::DataReader*,
                                           const fdds::SubscriptionMatchedStatus& status) {
   publishers = status.current_count;
@@ -181,10 +197,9 @@ void TopicReader::on_subscription_matched(fdds::DataReader*,
   }
   if (status.current_count_change > 0) ever_matched = true;
   if (status.current_count_change < 0 && status.current_count == 0) {
-    transport_->report("DDS: topic " + topic + " (" + port.qualified +
-                       ") has no publisher any more; " +
-                       (input ? "nothing reaches the module until one is back"
-                              : "the events it feeds lapse by their lifetimes"));
+    transport_->report(
+        "DDS: topic " + topic + " (" + port.qualified + ") has no publisher any more; " +
+        (input ? "nothing reaches the module until one is back" : silence_effect(port)));
   }
 }
 

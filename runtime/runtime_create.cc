@@ -2,6 +2,7 @@
 // the connections mediated here with their monitors, the trace and the transport.
 #include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/join.h"
@@ -270,6 +271,18 @@ bool Runtime::open_trace(std::string* error) {
   return trace_.open(options_.trace_path, error);
 }
 
+// What an output reaches in this process: its connections (not the generated feeds) and the
+// events their monitors set (a rule's `by priority` hold is the runtime's, not the source's).
+static void describe_reach(const Runtime::OutPort& out, TransportPort& tp) {
+  std::set<std::string> events;
+  for (const Runtime::Connection* c : out.connections) {
+    if (!c->is_feed) tp.connections.push_back(c->name + " into " + c->model->destination);
+    for (const std::string& e : c->model->sets)
+      if (e != c->model->activity_event) events.insert(e);
+  }
+  tp.events.assign(events.begin(), events.end());
+}
+
 // Tells the transport where every port's module runs; in-process unless the options name one.
 bool Runtime::open_transport(std::string* error) {
   transport_ = options_.transport ? options_.transport : make_inproc_transport();
@@ -279,7 +292,7 @@ bool Runtime::open_transport(std::string* error) {
   for (const model::Module& m : app_.modules) {
     for (const model::Port& p : m.ports) {
       std::string qualified = m.name + "." + p.name;
-      TransportPort tp{0, m.name, p.name, qualified, p.type, host_.contains(m.name), false};
+      TransportPort tp{0, m.name, p.name, qualified, p.type, host_.contains(m.name), false, {}, {}};
       if (p.direction == model::Direction::In) {
         const InPort& in = *inputs_by_name_.at(qualified);
         tp.index = in.index;
@@ -289,6 +302,7 @@ bool Runtime::open_transport(std::string* error) {
         const OutPort& out = *outputs_by_name_.at(qualified);
         tp.index = out.index;
         tp.mediated = !out.connections.empty();
+        describe_reach(out, tp);
         plan.outputs.push_back(tp);
       }
     }

@@ -48,6 +48,10 @@ struct TransportPort {
   bool hosted = false;  // its module runs in this process
   // Input: the connections into it run here. Output: some connection from it runs here.
   bool mediated = false;
+  // Output mediated here: the connections it reaches here ("pendant into Gripper.cmd"; feeds
+  // left out) and the events their monitors set, so that a transport can say what the output's
+  // silence does.
+  std::vector<std::string> connections, events;
 };
 
 // Every port of the app, outputs and inputs each indexed by TransportPort::index.

@@ -224,6 +224,13 @@ def kill_w(split):
     check_m_stopped(mrc, mout, "kill-w", "SIGINT")
     expect(" lapsed at " in mout and "nothing from" in mout, "kill-w: M reported no lapse", mout)
     expect("has no publisher any more" in mout, "kill-w: M did not notice W's topics go", mout)
+    # What each silence does here: the rules it fed get nothing, the events it fed lapse.
+    for said in ["(PickAndPlace.status) has no publisher any more; e_arm_idle, e_taken are no "
+                 "longer refreshed and lapse by their lifetimes",
+                 "(ObjectDetector.objects) has no publisher any more; take into "
+                 "PickAndPlace.cmd, pull into PullObject.cmd get nothing until one is back; "
+                 "e_unreachable is no longer refreshed"]:
+        expect(said in mout, "kill-w: M did not say what a silent topic does: " + said, mout)
     split.check_files("M", "kill-w", True, mout)
     print("ok kill-w: M kept running and reported the lapsed events\n" + mout)
 
