@@ -26,6 +26,13 @@ bool RunStandIns::parse_rates(std::string* err) {
     double hz = eq == std::string::npos ? -1 : std::strtod(r.c_str() + eq + 1, &end);
     if (eq == std::string::npos || !end || *end != '\0' || end == r.c_str() + eq + 1 || hz < 0) {
       *err = "--stub-rate " + r + ": expected PORT=HZ, e.g. ObjectDetector.objects=5";
+      // `=10Hz`, `=100ms`: the rate is a bare number of samples per second.
+      if (end && end != r.c_str() + eq + 1 && *end != '\0' && hz >= 0)
+        *err += " (the rate is a plain number of samples per second: write " + r.substr(0, eq) +
+                "=" +
+                std::string(static_cast<const char*>(r.c_str() + eq + 1),
+                            static_cast<const char*>(end)) +
+                ", without '" + end + "')";
       return false;
     }
     log_->stub.period_of_port[r.substr(0, eq)] = hz == 0 ? 0 : 1 / hz;

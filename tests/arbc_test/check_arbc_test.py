@@ -251,6 +251,10 @@ def case_stub_run_reports_stand_ins(arbc, tmp):
     expect(re.search(r"PickAndPlace\.cmd \(stand-in sink\): received \d+", out), "no sink", out, err)
     code, out, err = run(arbc, "run", SPEC, "--stub", "--stub-rate", "Nope.x=3", "--no-verify")
     expect(code == 2 and "'Nope.x' is not an out-port" in err, "bad --stub-rate accepted", out, err)
+    code, out, err = run(arbc, "run", SPEC, "--stub", "--stub-rate", "FaceDetector.face=10Hz",
+                         "--no-verify")
+    expect(code == 2 and "write FaceDetector.face=10, without 'Hz'" in err,
+           "a rate with a unit got no hint", out, err)
 
 
 def case_inputs_port_and_time_mistakes(arbc, tmp):

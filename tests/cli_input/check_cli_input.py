@@ -125,6 +125,11 @@ def case_run_errors_name_what_they_are_about(arbc, plugin):
         expect_bad_input((code, out, err), "arbc run: error: unknown scenario 'nope'")
         expect("app.json" not in err, "an unknown scenario names app.json", out, err)
 
+        # No environment to play a scenario (stand-ins only): refused, not ignored.
+        code, out, err = run(arbc, "run", PINGPONG, "--stub", "--scenario", "stuck")
+        expect_bad_input((code, out, err), "arbc run: error: --scenario 'stuck': this run has "
+                         "no environment to play it (no plugin registers one); load the plugin")
+
         # A profile that is not there: refused when the transport opens, before any DDS entity.
         env = dict(os.environ, FASTRTPS_DEFAULT_PROFILES_FILE=os.path.join(d, "missing.xml"))
         proc = subprocess.run([arbc, "run", PINGPONG, "--plugin", plugin, "--transport", "dds",
