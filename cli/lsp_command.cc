@@ -8,6 +8,8 @@
 
 #include "cli/commands.h"
 #include "cli/duration_option.h"
+#include "cli/monitor_runner.h"
+#include "cli/test_replayer.h"
 #include "lsp/server.h"
 
 namespace arbc::cli {
@@ -40,6 +42,12 @@ int lsp_command(std::span<char*> args) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   options.verify = !no_verify;
+  // Counterexamples are replayed as `arbc verify` replays them, from the text being proved:
+  // a violation over time is then confirmed on the runtime, not left unknown.
+  options.make_replayers = [](std::shared_ptr<const lower::LoweredApp> lowered) {
+    return lsp::Replayers{std::make_unique<LuaMonitorRunner>(lowered),
+                          std::make_unique<RuntimeTestReplayer>(lowered)};
+  };
   // A client that goes away closes our stdout: writes then fail (the server sees it and
   // exits 1) instead of killing the process with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);

@@ -35,16 +35,23 @@ class ReplayHost : public MonitorHost {
 LuaMonitorRunner::LuaMonitorRunner(std::string input, const model::App& app)
     : input_(std::move(input)), app_(app) {}
 
+LuaMonitorRunner::LuaMonitorRunner(std::shared_ptr<const lower::LoweredApp> lowered)
+    : lowered_(std::move(lowered)), app_(lowered_->app) {}
+
 std::optional<std::string> LuaMonitorRunner::monitor_text(const model::Connection& c,
                                                           std::string* err) const {
-  if (is_spec_path(input_)) {
+  if (lowered_ || is_spec_path(input_)) {
     if (!generated_) {
-      lower::CompiledSpec compiled = lower::compile_spec(input_);
-      if (!compiled.ok || !compiled.lowered) {
-        *err = "the spec no longer compiles";
-        return std::nullopt;
+      std::shared_ptr<const lower::LoweredApp> lowered = lowered_;
+      if (!lowered) {
+        lower::CompiledSpec compiled = lower::compile_spec(input_);
+        if (!compiled.ok || !compiled.lowered) {
+          *err = "the spec no longer compiles";
+          return std::nullopt;
+        }
+        lowered = compiled.lowered;
       }
-      codegen::CodegenResult r = codegen::EmbeddedTarget().generate(*compiled.lowered);
+      codegen::CodegenResult r = codegen::EmbeddedTarget().generate(*lowered);
       generated_.emplace();
       for (const codegen::OutputFile& f : r.files) (*generated_)[f.path] = f.content;
     }

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "compiler/lower/lowered_app.h"
 #include "core/app_model.h"
 #include "verify/verify.h"
 
@@ -18,6 +20,9 @@ class LuaMonitorRunner : public verify::MonitorRunner {
   // `input` is what `arbc verify` was given (a spec, an app.json or a directory); `app` its
   // model, which must outlive the runner.
   LuaMonitorRunner(std::string input, const model::App& app);
+  // A spec compiled in memory (the language server's unsaved text): its monitors are generated
+  // from it, not from a file.
+  explicit LuaMonitorRunner(std::shared_ptr<const lower::LoweredApp> lowered);
 
   bool run(const model::Connection& c, const Value& message, verify::MonitorRun* out,
            std::string* err) const override;
@@ -26,6 +31,7 @@ class LuaMonitorRunner : public verify::MonitorRunner {
   std::optional<std::string> monitor_text(const model::Connection& c, std::string* err) const;
 
   std::string input_;
+  std::shared_ptr<const lower::LoweredApp> lowered_;  // set: generate from it
   const model::App& app_;
   mutable std::optional<std::map<std::string, std::string>> generated_;  // spec: path -> text
 };

@@ -18,6 +18,9 @@ namespace fs = std::filesystem;
 
 RuntimeTestReplayer::RuntimeTestReplayer(std::string input) : input_(std::move(input)) {}
 
+RuntimeTestReplayer::RuntimeTestReplayer(std::shared_ptr<const lower::LoweredApp> lowered)
+    : lowered_(std::move(lowered)) {}
+
 RuntimeTestReplayer::~RuntimeTestReplayer() {
   std::error_code ignored;
   if (!scratch_.empty()) fs::remove_all(scratch_, ignored);
@@ -31,15 +34,19 @@ bool RuntimeTestReplayer::prepare(std::string* err) const {
     return false;
   }
   scratch_ = pattern;
-  if (is_spec_path(input_)) {
-    lower::CompiledSpec compiled = lower::compile_spec(input_);
-    if (!compiled.ok || !compiled.lowered) {
-      *err = "the spec no longer compiles";
-      return false;
+  if (lowered_ || is_spec_path(input_)) {
+    std::shared_ptr<const lower::LoweredApp> lowered = lowered_;
+    if (!lowered) {
+      lower::CompiledSpec compiled = lower::compile_spec(input_);
+      if (!compiled.ok || !compiled.lowered) {
+        *err = "the spec no longer compiles";
+        return false;
+      }
+      lowered = compiled.lowered;
     }
     std::unique_ptr<codegen::Target> target = codegen::make_target(codegen::kDefaultTarget);
-    codegen::CodegenResult generated = target->generate(*compiled.lowered);
-    const std::string& name = compiled.lowered->app.name;
+    codegen::CodegenResult generated = target->generate(*lowered);
+    const std::string& name = lowered->app.name;
     if (!generated.ok || !codegen::write_artifacts(scratch_, name, generated.files, err)) {
       if (err->empty()) *err = "cannot generate the monitors";
       return false;

@@ -5,10 +5,12 @@
 // harness never lands in the user's build), and removed with the replayer.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "compiler/lower/lowered_app.h"
 #include "core/app_model.h"
 #include "verify/verify.h"
 
@@ -18,6 +20,8 @@ class RuntimeTestReplayer : public verify::TestReplayer {
  public:
   // `input` is what `arbc verify` was given: a spec, an app.json or a built directory.
   explicit RuntimeTestReplayer(std::string input);
+  // A spec compiled in memory (the language server's unsaved text).
+  explicit RuntimeTestReplayer(std::shared_ptr<const lower::LoweredApp> lowered);
   ~RuntimeTestReplayer() override;
   RuntimeTestReplayer(const RuntimeTestReplayer&) = delete;
   RuntimeTestReplayer& operator=(const RuntimeTestReplayer&) = delete;
@@ -30,6 +34,7 @@ class RuntimeTestReplayer : public verify::TestReplayer {
   bool prepare(std::string* err) const;  // the scratch app directory, once
 
   std::string input_;
+  std::shared_ptr<const lower::LoweredApp> lowered_;  // set: write the app from it
   mutable std::string scratch_, app_dir_;
   mutable std::optional<model::App> app_;
 };

@@ -22,6 +22,7 @@
 #include "lsp/document_store.h"
 #include "lsp/framing.h"
 #include "lsp/parser_gate.h"
+#include "lsp/verification.h"
 
 namespace arbc::lsp {
 
@@ -31,6 +32,7 @@ struct ServerOptions {
   std::chrono::milliseconds verify_delay{200};   // quiet time before proving
   std::chrono::milliseconds request_wait{1000};  // how long a request waits for an analysis
   double verify_timeout_seconds = 30;            // the solver's budget per proof
+  MakeReplayers make_replayers;                  // replays counterexamples; empty: none
   bool verify = true;                            // prove on open and save
   // Called (on a watch thread) once the process named by initialize's processId is gone;
   // `arbc lsp` exits there. Null: the client's process is not watched.

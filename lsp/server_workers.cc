@@ -46,7 +46,7 @@ void Server::verify_document(const std::string& uri) {
   std::optional<Document> d = store_.get(uri);
   if (!d || d->text.size() > frontend::kMaxSpecBytes) return;
   Verification v = verify_text(d->text, d->version, d->path, d->script_dir, gate_,
-                               options_.verify_timeout_seconds);
+                               options_.verify_timeout_seconds, options_.make_replayers);
   log_info(uri + " (version " + std::to_string(v.version) + "): " + v.summary);
   store_.set_verification(uri, std::move(v));
   publish(uri);

@@ -2,6 +2,8 @@
 
 #include "compiler/lower/compile_spec.h"
 #include "core/join.h"
+#include "verify/temporal/rates.h"
+#include "verify/temporal/report_text.h"
 #include "verify/verify.h"
 
 namespace arbc::lsp {
@@ -35,7 +37,10 @@ void add_finding(const model::App& app, const verify::Finding& f, std::vector<Di
   Diagnostic d = verify::to_diagnostic(f);
   if (f.counterexample) d.message += "\n" + state_text(*f.counterexample);
   out.push_back(d);
-  if (f.rules.size() < 2 || (!f.counterexample && f.check != verify::kCheckResource)) return;
+  bool assert_on_rule = f.check == verify::kCheckAssert && f.rules.size() == 1;
+  if (!assert_on_rule &&
+      (f.rules.size() < 2 || (!f.counterexample && f.check != verify::kCheckResource)))
+    return;
   std::vector<const model::Connection*> rules;
   bool at_a_rule = false;  // the finding's own location is one of its rules
   for (size_t i = 0; i < f.rules.size(); ++i) {
@@ -69,10 +74,33 @@ void add_finding(const model::App& app, const verify::Finding& f, std::vector<Di
   }
 }
 
+// A property over time that is violated or undecided, at the property: what the CLI prints
+// (the trace, its replay, the assumptions), with the rates it relies on as related places.
+void add_temporal(const verify::TemporalResult& t, std::vector<Diagnostic>& out) {
+  using Outcome = verify::TemporalResult::Outcome;
+  if (t.outcome != Outcome::Violated && t.outcome != Outcome::Unknown) return;
+  Diagnostic d;
+  d.severity = t.outcome == Outcome::Violated ? Severity::Error : Severity::Warning;
+  d.id = t.outcome == Outcome::Violated ? verify::kCheckTemporal : verify::kCheckUnknown;
+  d.loc = t.property.loc;
+  std::string text = verify::temporal::temporal_text(t);
+  d.message = text.substr(std::min(text.find_first_not_of(' '), text.size()));
+  while (!d.message.empty() && d.message.back() == '\n') d.message.pop_back();
+  for (const model::SourceRate& rate : t.rates) {
+    Diagnostic n;
+    n.severity = Severity::Note;
+    n.loc = rate.loc;
+    n.message = verify::temporal::rate_words(rate);
+    d.notes.push_back(std::move(n));
+  }
+  out.push_back(std::move(d));
+}
+
 }  // namespace
 
 Verification verify_text(const std::string& text, int version, const std::string& file,
-                         const std::string& script_dir, ParserGate& gate, double timeout_seconds) {
+                         const std::string& script_dir, ParserGate& gate, double timeout_seconds,
+                         const MakeReplayers& make_replayers) {
   Verification v;
   v.version = version;
   lower::CompiledSpec compiled =
@@ -83,6 +111,10 @@ Verification verify_text(const std::string& text, int version, const std::string
   }
   verify::VerifyOptions options;
   options.timeout_seconds = timeout_seconds;
+  Replayers replayers;
+  if (make_replayers) replayers = make_replayers(compiled.lowered);
+  options.runner = replayers.monitors.get();
+  options.test_replayer = replayers.runs.get();
   std::string err;
   std::optional<verify::VerifyReport> report =
       verify::verify_app(compiled.lowered->app, options, &err);
@@ -100,6 +132,7 @@ Verification verify_text(const std::string& text, int version, const std::string
   for (const verify::Finding& f : report->app_findings) add_finding(app, f, v.diagnostics);
   for (const verify::ResourceResult& r : report->resources)
     for (const verify::Finding& f : r.findings) add_finding(app, f, v.diagnostics);
+  for (const verify::TemporalResult& t : report->temporal) add_temporal(t, v.diagnostics);
   v.summary = std::string(verify::verdict_name(report->verdict)) + ": " +
               std::to_string(report->ports.size()) + " arbitrated ports, " +
               std::to_string(report->count(Severity::Error)) + " errors, " +

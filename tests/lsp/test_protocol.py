@@ -565,6 +565,50 @@ class Verification(Session):
                 self.assertIn(f"'{rules[other['location']['range']['start']['line']][0]}'",
                               other["message"])
 
+    # A gripper: the planner may deliver any force, the pendant only what its accept allows.
+    GRIPPER = ("app gripper;\n"
+               "type Grip = { width: float, force: float };\n"
+               "module Pendant { out grip: Grip; }\n"
+               "module Planner { out grip: Grip; }\n"
+               "module Gripper { in cmd: Grip; }\n"
+               "event e_pendant;\n"
+               "arbitrate Gripper.cmd {\n"
+               "  pendant: from Pendant.grip { set e_pendant for 2s; accept grip.force <= 60.0; }\n"
+               "  plan: from Planner.grip when not e_pendant;\n"
+               "}\n")
+
+    def open_gripper(self, extra, code):
+        text = self.GRIPPER + extra
+        # Never saved: the proof and its replays work from the editor's text.
+        uri = file_uri(os.path.join(os.path.dirname(SPEC), SCRATCH_PREFIX + "gripper.spec"))
+        self.c.open(uri, text)
+        diags = self.c.wait_diagnostics(
+            uri, accept=lambda ds: any(d.get("code") == code for d in ds), timeout=120)
+        return text, diags
+
+    def test_an_assert_that_can_fail_lands_on_its_rule_too(self):
+        text, diags = self.open_gripper("assert Gripper.cmd: plan -> emitted.force <= 60.0;\n",
+                                        "assert")
+        asserts = [d for d in diags if d.get("code") == "assert"]
+        self.assertEqual(sorted(d["range"]["start"]["line"] for d in asserts),
+                         sorted([position_of(text, "assert Gripper")["line"],
+                                 position_of(text, "plan: from")["line"]]))
+        for d in asserts:
+            self.assertIn("'plan' can deliver a value for which the property is false",
+                          d["message"])
+            related = " | ".join(r["message"] for r in d["relatedInformation"])
+            # Replayed through the generated monitor, as `arbc verify` does.
+            self.assertIn("replayed through the Lua monitors: 'plan' accepts it", related)
+
+    def test_a_violated_property_over_time_shows_its_replayed_trace(self):
+        text, diags = self.open_gripper("never two plan within 1s;\n", "temporal")
+        [d] = [d for d in diags if d.get("code") == "temporal"]
+        self.assertEqual(d["severity"], 1)
+        self.assertEqual(d["range"]["start"]["line"], position_of(text, "never two")["line"])
+        self.assertIn("never two plan within 1s", d["message"])
+        self.assertIn("violated: a shortest trace of 2 messages into Gripper.cmd", d["message"])
+        self.assertIn("replayed on the runtime in simulated time", d["message"])
+
     def test_a_proofs_summary_goes_to_the_clients_log_not_stderr(self):
         # Neovim records each line of a server's stderr as an [ERROR] in its lsp.log.
         self.open_spec()
