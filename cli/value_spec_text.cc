@@ -15,11 +15,8 @@ std::string number(double d) {
 const Type* element_of(const Type* t) { return t && t->element ? t->element.get() : nullptr; }
 
 const Type* field_type(const Type* t, const std::string& name) {
-  if (!t) return nullptr;
-  for (const Field& f : t->fields) {
-    if (f.name == name) return f.type.get();
-  }
-  return nullptr;
+  const Field* f = t ? t->field(name) : nullptr;
+  return f ? f->type.get() : nullptr;
 }
 
 }  // namespace

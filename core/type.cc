@@ -25,6 +25,12 @@ TypePtr Type::record(std::vector<Field> fields) {
   return t;
 }
 
+const Field* Type::field(std::string_view name) const {
+  for (const Field& f : fields)
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
 std::string Type::to_string() const {
   switch (kind) {
     case Kind::Bool:

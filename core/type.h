@@ -30,6 +30,8 @@ struct Type {
 
   // Canonical text: "list<{pos: vec3, dist: float}>". Fields keep declaration order.
   std::string to_string() const;
+  // The record field called `name`; null when there is none (or this is not a record).
+  const Field* field(std::string_view name) const;
 };
 
 // Structural equality; record fields compare by name, in any order.

@@ -120,11 +120,10 @@ bool Runtime::create_environment(const Registry& registry, std::string* error) {
   // nothing, and a run that ignored it would pass for the scenario it names. A process that
   // hosts no module takes the same command line as its peers, so it lets it pass.
   if (!environment_ && hosts_any && !options_.scenario.empty()) {
-    *error = "--scenario '" + options_.scenario +
-             "': this run has no environment to play it (" +
+    *error = "--scenario '" + options_.scenario + "': this run has no environment to play it (" +
              (env_names.empty() ? std::string("no plugin registers one")
-                                : "none registered for app " + app_.name + "; registered: " +
-                                      names_or_none(env_names)) +
+                                : "none registered for app " + app_.name +
+                                      "; registered: " + names_or_none(env_names)) +
              "); load the plugin that simulates the world with --plugin, or leave --scenario out";
     return false;
   }

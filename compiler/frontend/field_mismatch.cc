@@ -4,21 +4,13 @@
 
 namespace arbc::frontend {
 
-namespace {
-
-const Field* find_field(const Type& record, const std::string& name) {
-  for (const Field& f : record.fields)
-    if (f.name == name) return &f;
-  return nullptr;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::optional<FieldMismatch> field_mismatch(const ast::Expr& value, const TypePtr& want) {
   if (!want) return std::nullopt;
   if (value.kind == ast::Expr::Kind::Record && want->kind == Type::Kind::Record) {
     for (size_t i = 0; i < value.names.size() && i < value.args.size(); ++i) {
-      const Field* field = find_field(*want, value.names[i].name);
+      const Field* field = want->field(value.names[i].name);
       const ast::Expr* arg = value.args[i].get();
       if (!field || !arg || !arg->type || !field->type) continue;
       if (assignable(*arg->type, *field->type)) continue;

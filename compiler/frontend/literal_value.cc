@@ -63,10 +63,8 @@ std::optional<Value> constant(const Expr& e, const Type& want, std::string* err)
 std::optional<Value> record(const Expr& e, const Type& want, std::string* err) {
   Value out = Value::record();
   for (size_t i = 0; i < e.args.size(); ++i) {
-    const Type* field = nullptr;
-    for (const Field& f : want.fields) {
-      if (f.name == e.names[i].name) field = f.type.get();
-    }
+    const Field* f = want.field(e.names[i].name);
+    const Type* field = f ? f->type.get() : nullptr;
     std::optional<Value> v = literal_value(*e.args[i], field ? *field : *e.args[i]->type, err);
     if (!v) return std::nullopt;
     out.set(e.names[i].name, std::move(*v));

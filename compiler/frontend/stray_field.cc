@@ -4,12 +4,6 @@ namespace arbc::frontend {
 
 namespace {
 
-const Field* find_field(const Type& record, const std::string& name) {
-  for (const Field& f : record.fields)
-    if (f.name == name) return &f;
-  return nullptr;
-}
-
 std::vector<std::string> not_given(const ast::Expr& literal, const Type& record) {
   std::vector<std::string> out;
   for (const Field& f : record.fields) {
@@ -33,7 +27,7 @@ std::optional<StrayField> stray_field(const ast::Expr& value, const TypePtr& wan
   }
   if (value.kind == ast::Expr::Kind::Record && want->kind == Type::Kind::Record) {
     for (size_t i = 0; i < value.names.size() && i < value.args.size(); ++i) {
-      const Field* field = find_field(*want, value.names[i].name);
+      const Field* field = want->field(value.names[i].name);
       if (!field) return StrayField{&value.names[i], want, not_given(value, *want)};
       if (value.args[i])
         if (auto inner = stray_field(*value.args[i], field->type)) return inner;
