@@ -12,6 +12,8 @@ the XML's verdict. Finally every yarp-* id of `arbc check --list-ids` must appea
 <case>.out or <case>.import.out (yarp-spec-name is the import's alone). --update rewrites the
 .out, .import.out and .spec files (review them by eye).
 YARP_DATA_HOME and YARP_DATA_DIRS are cleared, so monitors are found only beside the XML.
+Cases share the monitors of monitors/ through symbolic links (YARP follows them, tests/yarp_real
+runs them); the temporary copies hold the files themselves.
 """
 import os
 import re
