@@ -1,6 +1,8 @@
 #include "cli/yarp_verify.h"
 
 #include <algorithm>
+#include <iterator>
+#include <map>
 #include <set>
 
 #include "import/yarp/yarp_import.h"
@@ -84,6 +86,33 @@ void recompute_verdicts(verify::VerifyReport& report) {
                              : verify::Verdict::Proved;
 }
 
+// The importer's findings (a monitor that does not load, a constraint YARP evaluates
+// otherwise, ...) are what the proof started from, so each goes before the verifier's findings
+// it causes (an overlap of a rule taken as always selected), in the import's order.
+void put_causes_first(const yarp::YarpImport& im, verify::VerifyReport& report) {
+  std::map<std::string, std::vector<verify::Finding>> by_port;
+  std::vector<verify::Finding> app;
+  for (size_t i = 0; i < im.diagnostics.size(); ++i) {
+    verify::Finding f = to_finding(im.diagnostics[i]);
+    f.port = im.diagnostic_ports[i];
+    bool known = std::any_of(report.ports.begin(), report.ports.end(),
+                             [&](const verify::PortResult& p) { return p.port == f.port; });
+    if (known) {
+      by_port[f.port].push_back(std::move(f));
+    } else {
+      f.port.clear();
+      app.push_back(std::move(f));
+    }
+  }
+  for (verify::PortResult& p : report.ports) {
+    std::vector<verify::Finding>& causes = by_port[p.port];
+    p.findings.insert(p.findings.begin(), std::make_move_iterator(causes.begin()),
+                      std::make_move_iterator(causes.end()));
+  }
+  report.app_findings.insert(report.app_findings.begin(), std::make_move_iterator(app.begin()),
+                             std::make_move_iterator(app.end()));
+}
+
 }  // namespace
 
 bool is_yarp_application(const std::string& input) {
@@ -109,18 +138,7 @@ YarpVerify verify_yarp_application(const std::string& xml, const verify::VerifyO
   out.report = std::move(*report);
   drop_cross_port_findings(im.app, out.report);
   point_at_scripts(im, out.report);
-  for (size_t i = 0; i < im.diagnostics.size(); ++i) {
-    verify::Finding f = to_finding(im.diagnostics[i]);
-    f.port = im.diagnostic_ports[i];
-    auto port = std::find_if(out.report.ports.begin(), out.report.ports.end(),
-                             [&](const verify::PortResult& p) { return p.port == f.port; });
-    if (port != out.report.ports.end()) {
-      port->findings.push_back(std::move(f));
-    } else {
-      f.port.clear();
-      out.report.app_findings.push_back(std::move(f));
-    }
-  }
+  put_causes_first(im, out.report);
   recompute_verdicts(out.report);
   out.ok = true;
   return out;
