@@ -14,6 +14,7 @@ using testing::arbitrated;
 using testing::connection;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::parse;
 
 VerifyReport run(const model::App& app, VerifyOptions options = {}) {
@@ -130,6 +131,33 @@ TEST(Checks, DeadIsAWarningAndAnErrorWhenStrict) {
   VerifyReport strict_report = run(app, strict);
   EXPECT_EQ(findings(strict_report, "dead")[0]->severity, Severity::Error);
   EXPECT_EQ(strict_report.verdict, Verdict::Refuted);
+}
+
+// `when false` with a monitor that sets events is a feed (an imported YARP monitor that never
+// delivers): a note that says so, left alone by --strict (which still makes the events pull
+// read, now unused, errors). Without events it is still dead.
+TEST(Checks, AWhenFalseRuleThatFeedsEventsIsANoteEvenWhenStrict) {
+  model::App app = testing::table_clean_model();
+  connection(app, "pull").constraint = parse("false");
+  connection(app, "pull").opaque = true;  // `script "pull.lua";`: it may set events
+  VerifyOptions strict;
+  strict.strict = true;
+  VerifyReport report = run(app, strict);
+  auto dead = findings(report, "dead");
+  ASSERT_EQ(dead.size(), 1u);
+  EXPECT_EQ(dead[0]->severity, Severity::Note);
+  EXPECT_THAT(dead[0]->message, HasSubstr("it is an event feed"));
+  EXPECT_THAT(dead[0]->notes[0].message, Not(HasSubstr("remove the rule")));
+  EXPECT_FALSE(dead[0]->strict);
+
+  connection(app, "pull").opaque = false;
+  connection(app, "pull").sets.clear();
+  connection(app, "pull").unsets.clear();
+  VerifyReport silent = run(app, strict);
+  auto still_dead = findings(silent, "dead");
+  ASSERT_EQ(still_dead.size(), 1u);
+  EXPECT_EQ(still_dead[0]->severity, Severity::Error);
+  EXPECT_THAT(still_dead[0]->notes[0].message, HasSubstr("remove the rule"));
 }
 
 TEST(Checks, DeadUnderAnInvariant) {

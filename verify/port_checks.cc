@@ -30,6 +30,18 @@ std::string state_text(const EventState& s) {
 
 const std::string& rule_name(const ScopedRule& r) { return r.connection->name; }
 
+// A rule written `when false` whose monitor sets or unsets events (a `script` may: its Lua is
+// not analysed) is an event feed by design: the runtime runs accept before the decision, so it
+// changes the container on every message and delivers none. `arbc import yarp` writes a YARP
+// monitor that only sets events this way (docs/yarp.md#moving-to-a-spec). Its `by priority`
+// activity event does not count: that is set only by a delivery.
+bool feeds_events(const model::Connection& c) {
+  if (!(c.constraint == Constraint::constant(false))) return false;
+  if (c.opaque || !c.unsets.empty()) return true;
+  return std::any_of(c.sets.begin(), c.sets.end(),
+                     [&](const std::string& e) { return e != c.activity_event; });
+}
+
 // Why rule r holds (or fails) in the state: its constraint, the events it reads, the events
 // its own monitor sets or unsets before the decision, and its activity event.
 Note explain_rule(const ScopedRule& r, const std::vector<std::string>& present, bool holds) {
@@ -114,21 +126,48 @@ class PortChecker {
         return unknown("whether rule '" + rule_name(scope_.rules[i]) + "' can be selected");
       if (a == Answer::Sat) continue;
       const ScopedRule& r = scope_.rules[i];
-      Finding f;
-      f.check = kCheckDead;
-      f.severity = options_.strict ? Severity::Error : Severity::Warning;
-      f.strict = options_.strict;
-      f.port = scope_.port->port;
-      f.rules = {rule_name(r)};
-      f.loc = r.connection->loc;
-      f.message =
-          "rule '" + rule_name(r) + "' of " + scope_.port->port +
-          " can never be selected: its effective guard `" + r.effective_guard.to_string() +
-          "` is unsatisfiable" +
-          (scope_.domain.empty() ? "" : " under the declared invariants and exclusive groups");
-      f.notes.push_back({"fix the `when` of '" + rule_name(r) + "', or remove the rule", {}});
-      result_.findings.push_back(std::move(f));
+      result_.findings.push_back(feeds_events(*r.connection) ? feed_note(r) : dead_rule(r));
     }
+  }
+
+  Finding dead_rule(const ScopedRule& r) const {
+    Finding f;
+    f.check = kCheckDead;
+    f.severity = options_.strict ? Severity::Error : Severity::Warning;
+    f.strict = options_.strict;
+    f.port = scope_.port->port;
+    f.rules = {rule_name(r)};
+    f.loc = r.connection->loc;
+    f.message =
+        "rule '" + rule_name(r) + "' of " + scope_.port->port +
+        " can never be selected: its effective guard `" + r.effective_guard.to_string() +
+        "` is unsatisfiable" +
+        (scope_.domain.empty() ? "" : " under the declared invariants and exclusive groups");
+    f.notes.push_back({"fix the `when` of '" + rule_name(r) + "', or remove the rule", {}});
+    return f;
+  }
+
+  // A rule that says it never delivers and does something to the container is there for that
+  // (feeds_events): removing it would take its events away from the other rules. So it is a
+  // note, which --strict leaves alone, that says what the rule does.
+  Finding feed_note(const ScopedRule& r) const {
+    const model::Connection& c = *r.connection;
+    Finding f;
+    f.check = kCheckDead;
+    f.severity = Severity::Note;
+    f.port = scope_.port->port;
+    f.rules = {rule_name(r)};
+    f.loc = c.loc;
+    f.message = "rule '" + rule_name(r) + "' of " + scope_.port->port +
+                " never delivers (`when false`): it is an event feed, run on each message for "
+                "the events its " +
+                (c.opaque ? "script" : "body") + " sets or unsets";
+    f.notes.push_back(
+        {"nothing to fix if it is meant to feed events, as `arbc import yarp` writes a YARP "
+         "monitor whose accept never returns true; to deliver its messages, give it a `when` "
+         "that can hold",
+         {}});
+    return f;
   }
 
   void check_exclusive() {

@@ -6,14 +6,14 @@ usage: run_golden.py ARBC [--update] [CASE...]
 For each case folder holding <case>.xml, runs `arbc verify <case>.xml` inside it and compares
 its exit code, stdout and stderr with <case>.out. When the case has <case>.spec, it also copies
 the folder to a temporary one, runs `arbc import yarp <case>.xml -o <case>.spec` there, compares
-the written spec with <case>.spec and the import's exit code and stderr (its warnings) with
-<case>.import.out, and checks that `arbc check` accepts the spec and `arbc verify` gives it
-the XML's verdict. Finally every yarp-* id of `arbc check --list-ids` must appear in some
-<case>.out or <case>.import.out (yarp-spec-name is the import's alone). --update rewrites the
-.out, .import.out and .spec files (review them by eye).
+the written spec with <case>.spec, and the import's exit code and stderr (its warnings) followed
+by `arbc verify <case>.spec`'s output with <case>.import.out; it checks that `arbc check` accepts
+the spec and that `arbc verify` gives it the XML's verdict, with and without --strict. Finally
+every yarp-* id of `arbc check --list-ids` must appear in some <case>.out or <case>.import.out
+(yarp-spec-name is the import's alone). --update rewrites the .out, .import.out and .spec files
+(review them by eye). Cases share the monitors of monitors/ through symbolic links (YARP follows
+them, tests/yarp_real runs them); the temporary copies hold the files themselves.
 YARP_DATA_HOME and YARP_DATA_DIRS are cleared, so monitors are found only beside the XML.
-Cases share the monitors of monitors/ through symbolic links (YARP follows them, tests/yarp_real
-runs them); the temporary copies hold the files themselves.
 """
 import os
 import re
@@ -48,13 +48,6 @@ def check_import(arbc, name, folder, update, xml_code):
             return [f"{name}: arbc import exited {code}\n{err}"]
         said = (f"# arbc import yarp {name}.xml -o {name}.spec (exit {code})\n"
                 f"## stderr\n{err}")
-        said_path = os.path.join(folder, name + ".import.out")
-        if update:
-            open(said_path, "w", encoding="utf-8").write(said)
-        if not os.path.exists(said_path):
-            failures.append(f"{name}: no {name}.import.out (run with --update and review it)")
-        elif said != open(said_path, encoding="utf-8").read():
-            failures.append(f"{name}: the import's warnings differ from {name}.import.out\n{said}")
         written = open(os.path.join(copy, name + ".spec"), encoding="utf-8").read()
         golden = os.path.join(folder, name + ".spec")
         if update:
@@ -65,9 +58,23 @@ def check_import(arbc, name, folder, update, xml_code):
         if code != 0:
             failures.append(f"{name}: arbc check rejects the imported spec\n{err}")
         code, out, err = run([arbc, "verify", name + ".spec"], copy)
+        said += f"# arbc verify {name}.spec (exit {code})\n## stdout\n{out}## stderr\n{err}"
         if code != xml_code:
             failures.append(f"{name}: the spec verifies with exit {code}, the XML with "
                             f"{xml_code}\n{out}{err}")
+        # --strict makes dead and unused rules errors: a feed (`when false`) must not be one.
+        strict = [run([arbc, "verify", "--strict", f], copy)[0]
+                  for f in (name + ".xml", name + ".spec")]
+        if strict[0] != strict[1]:
+            failures.append(f"{name}: with --strict the spec verifies with exit {strict[1]}, "
+                            f"the XML with {strict[0]}")
+        said_path = os.path.join(folder, name + ".import.out")
+        if update:
+            open(said_path, "w", encoding="utf-8").write(said)
+        if not os.path.exists(said_path):
+            failures.append(f"{name}: no {name}.import.out (run with --update and review it)")
+        elif said != open(said_path, encoding="utf-8").read():
+            failures.append(f"{name}: the import's output differs from {name}.import.out\n{said}")
     return failures
 
 
