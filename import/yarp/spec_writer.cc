@@ -71,13 +71,18 @@ std::string spec_string(const std::string& text, bool collapse) {
   return out + "\"";
 }
 
-// `script "path";` relative to the spec's folder.
+// `script "path";` relative to the spec's folder, as the compiler reads it, so the spec and
+// the monitors can be moved together. Both paths are made absolute first: the monitor's is
+// relative to the working directory, or absolute (an absolute XML path, a YARP data folder),
+// and lexically_relative between an absolute and a relative path has no answer. Symbolic
+// links are kept as named (a monitor linked into the XML's folder stays there).
 std::string script_body(const ImportedConnection& ic, const std::string& spec_path) {
   if (!ic.monitor) return ";";
-  std::filesystem::path base = std::filesystem::path(spec_path).parent_path();
-  std::filesystem::path rel =
-      std::filesystem::path(ic.monitor->path)
-          .lexically_relative(base.empty() ? std::filesystem::path(".") : base);
+  namespace fs = std::filesystem;
+  std::error_code ec_monitor, ec_base;  // no working directory: the path as found
+  fs::path monitor = fs::absolute(ic.monitor->path, ec_monitor).lexically_normal();
+  fs::path base = fs::absolute(spec_path, ec_base).lexically_normal().parent_path();
+  fs::path rel = ec_monitor || ec_base ? fs::path() : monitor.lexically_relative(base);
   std::string p = rel.empty() ? ic.monitor->path : rel.generic_string();
   return " { script " + spec_string(p, false) + "; }";
 }
