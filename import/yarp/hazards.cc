@@ -239,8 +239,18 @@ bool names_collide(const ConstraintMeaning& m) {
 }
 
 void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out);
+void port_name_hazards(const YarpImport& im, std::vector<Diagnostic>& out,
+                       std::vector<std::string>& ports);
 
 void add_hazards(YarpImport& im) {
+  // A misspelt port comes first: the shared events and the port verdicts follow from it.
+  std::vector<Diagnostic> typos;
+  std::vector<std::string> typo_ports;
+  port_name_hazards(im, typos, typo_ports);
+  for (size_t k = 0; k < typos.size(); ++k) {
+    im.diagnostics.push_back(std::move(typos[k]));
+    im.diagnostic_ports.push_back(typo_ports[k]);
+  }
   std::vector<Diagnostic> out;
   for (size_t i = 0; i < im.connections.size(); ++i) {
     const ImportedConnection& ic = im.connections[i];

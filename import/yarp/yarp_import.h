@@ -60,5 +60,6 @@ inline constexpr const char* kIdForever = "yarp-event-forever";
 inline constexpr const char* kIdShared = "yarp-shared-event";
 inline constexpr const char* kIdDuplicateId = "yarp-duplicate-id";
 inline constexpr const char* kIdSpecName = "yarp-spec-name";
+inline constexpr const char* kIdPortName = "yarp-port-name";
 
 }  // namespace arbc::yarp
