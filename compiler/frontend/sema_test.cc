@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "compiler/frontend/expectation_hint.h"
 #include "compiler/frontend/literal_value.h"
 #include "compiler/frontend/rule_drop_reasons.h"
 #include "compiler/frontend/sema_context.h"
@@ -38,6 +39,7 @@ void Sema::check_tests() {
     if (!t.on.empty()) t.on_rule = find_test_rule(t.on, t.on_loc);
     for (TestStep& s : t.steps) check_test_step(t, s);
     for (TestExpect& e : t.expects) check_test_expect(t, e);
+    if (t.expects.empty()) report_expects_nothing(t);
     if (auto pair = contradicting_receives(t)) {
       Diagnostic& d = error(pair->first->loc,
                             "this expectation contradicts `expect " + pair->second->text +
@@ -50,6 +52,24 @@ void Sema::check_tests() {
       d.notes.push_back(std::move(note));
     }
   }
+}
+
+// A test without an expectation passes whatever the app does: its green would prove nothing,
+// so, like a test that can never pass, it is an error before anything runs.
+void Sema::report_expects_nothing(const TestDecl& t) {
+  Diagnostic& d = error(t.loc,
+                        "test \"" + t.name +
+                            "\" expects nothing, so it would pass whatever the app does: add "
+                            "an `expect`",
+                        "test-expect");
+  Diagnostic note;
+  note.severity = Severity::Note;
+  std::string hint = expectation_hint(t, spec_);
+  note.message = (hint.empty() ? "" : "for example `" + hint + "`. ") +
+                 std::string(
+                     "A test can expect that a port receives a value (or nothing), that "
+                     "a rule drops a message, or that events hold at a time");
+  d.notes.push_back(std::move(note));
 }
 
 const Rule* Sema::find_test_rule(const std::string& name, const Loc& loc) {

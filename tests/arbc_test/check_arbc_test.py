@@ -315,6 +315,24 @@ def case_junit_failure_message(arbc, tmp):
                         r"but search delivered at 0\.7s", message), f"message {message!r}")
 
 
+def case_test_that_expects_nothing(arbc, tmp):
+    # A test without an `expect` would pass whatever the app does, and a green line is taken
+    # for proof: an error before any test runs, at the test's name, with an expectation to add.
+    text = open(SPEC, encoding="utf-8").read()
+    line = text.count("\n") + 2
+    path = os.path.join(tmp, "no_expectation.spec")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text + '\ntest "a face is tracked" {\n'
+                '  at 100ms FaceDetector.face <- { pos: vec3(0.0, 0.5, 1.0), certainty: 0.9 };\n'
+                '}\n')
+    code, out, err = run(arbc, "test", path, "--no-verify")
+    expect(code == 2 and "PASS" not in out, f"exit {code}, expected 2 and no test run", out, err)
+    expect(f'{path}:{line}:6: error: test "a face is tracked" expects nothing, so it would pass '
+           "whatever the app does: add an `expect` [test-expect]" in err, "no error", out, err)
+    expect("for example `expect HeadControl.gaze receives at 100ms;`" in err, "no suggestion", out,
+           err)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)

@@ -1,0 +1,28 @@
+// core/duration_literal.h: times written as the spec language writes durations.
+#include "core/duration_literal.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc {
+namespace {
+
+TEST(DurationLiteral, MillisecondsBelowASecondSecondsFromOne) {
+  EXPECT_EQ(duration_literal(0), "0s");
+  EXPECT_EQ(duration_literal(0.1), "100ms");
+  EXPECT_EQ(duration_literal(0.12), "120ms");
+  EXPECT_EQ(duration_literal(0.0005), "0.5ms");
+  EXPECT_EQ(duration_literal(1), "1s");
+  EXPECT_EQ(duration_literal(1.2), "1.2s");
+  EXPECT_EQ(duration_literal(90), "90s");
+}
+
+TEST(DurationLiteral, RoundsToTheMicrosecond) {
+  EXPECT_EQ(duration_literal(0.1 + 0.2), "300ms");  // binary noise of a simulated clock
+  EXPECT_EQ(duration_literal(0.9999999), "1s");     // not 1000ms
+  EXPECT_EQ(duration_literal(0.0000016), "0.002ms");
+  EXPECT_EQ(duration_literal(-0.0000001), "0s");
+  EXPECT_EQ(duration_literal(2.0000001), "2s");
+}
+
+}  // namespace
+}  // namespace arbc
