@@ -7,13 +7,14 @@
 
 #include "cli/report/run_timeline.h"
 #include "cli/value_spec_text.h"
-#include "core/time_text.h"
+#include "core/duration_literal.h"
 
 namespace arbc::cli {
 
 namespace {
 
-std::string seconds(double t) { return time_text(t) + "s"; }
+// Times as the spec writes durations, like the expectations the failures quote.
+std::string seconds(double t) { return duration_literal(t); }
 
 // A received value as a spec literal, fields in the order of the port's type, as the
 // expectation it is compared with is written.
@@ -185,16 +186,14 @@ std::string trace_around(const TestRun& run, double from, double to) {
   }
   std::stable_sort(window.begin(), window.end(),
                    [](const TraceRecord* a, const TraceRecord* b) { return a->t < b->t; });
+  size_t shown = std::min<size_t>(window.size(), 20), more = window.size() - shown;
+  // The times in a column as wide as the widest (they read "0s", "100ms", "1.2s").
+  size_t width = 0;
+  for (size_t i = 0; i < shown; ++i) width = std::max(width, seconds(window[i]->t).size());
   std::string out;
-  size_t shown = 0, more = 0;
-  for (const TraceRecord* rp : window) {
-    const TraceRecord& r = *rp;
-    if (shown == 20) {
-      ++more;
-      continue;
-    }
-    ++shown;
-    out += "    " + seconds(r.t) + "  " + describe(r) + "\n";
+  for (size_t i = 0; i < shown; ++i) {
+    std::string t = seconds(window[i]->t);
+    out += "    " + t + std::string(width - t.size() + 2, ' ') + describe(*window[i]) + "\n";
   }
   if (more) out += "    ... " + std::to_string(more) + " more\n";
   return out.empty() ? "    (no trace records then)\n" : out;
