@@ -49,6 +49,13 @@ std::optional<Document> DocumentStore::get(const std::string& uri) const {
   return it->second;
 }
 
+std::vector<Document> DocumentStore::all() const {
+  std::lock_guard lock(mutex_);
+  std::vector<Document> out;
+  for (const auto& [uri, d] : docs_) out.push_back(d);
+  return out;
+}
+
 void DocumentStore::set_analysis(const std::string& uri, std::shared_ptr<const Analysis> a) {
   {
     std::lock_guard lock(mutex_);

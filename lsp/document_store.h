@@ -43,6 +43,7 @@ class DocumentStore {
   void close(const std::string& uri);
 
   std::optional<Document> get(const std::string& uri) const;  // a copy
+  std::vector<Document> all() const;                          // copies, by URI
   // Stores an analysis unless a newer one is there already; wakes wait_current().
   void set_analysis(const std::string& uri, std::shared_ptr<const Analysis> a);
   void set_verification(const std::string& uri, Verification v);

@@ -1,8 +1,11 @@
-// Rename of events, rules and constants across the file. The other names are refused with the
-// reason, in prepareRename already: a client that gets a bare null says only "nothing to
-// rename". Module, port and type names, and the app's, are also names outside the spec (a
-// plugin registers its modules by name, traces, inputs files and DDS topics name modules and
-// ports, transports name types on the wire), which a rename in the spec would not reach.
+// Rename of events, rules, constants and modules across the file and the app's tests files
+// (`tests for`). The other names are refused with the reason, in prepareRename already: a
+// client that gets a bare null says only "nothing to rename". Port and type names, and the
+// app's, are also names outside the spec (traces, inputs files and DDS topics name ports,
+// transports name types on the wire, the build directory is the app's), which a rename in the
+// spec would not reach. So are modules' (a plugin registers its modules by name): a module is
+// renamed in the spec all the same, since its name is written in every `Module.port`, and the
+// rename's warning names what is left to change by hand.
 #include <cctype>
 
 #include "compiler/frontend/grammar_info.h"
@@ -19,12 +22,8 @@ std::string refusal(const Symbol& s) {
     case SymbolKind::Event:
     case SymbolKind::Rule:
     case SymbolKind::Const:
-      return "";
     case SymbolKind::Module:
-      return "module '" + s.name +
-             "' is not renamed here: its plugin registers it by that name "
-             "(ARBC_REGISTER_MODULE), and traces, inputs files and DDS topics use it too; rename "
-             "it in the spec and in those by hand";
+      return "";
     case SymbolKind::Port:
       return "port '" + s.container + "." + s.name +
              "' is not renamed here: its module's plugin, traces, inputs files and DDS topics "
@@ -39,10 +38,10 @@ std::string refusal(const Symbol& s) {
              s.name + "` by hand";
     case SymbolKind::Local:
       return "'" + s.name +
-             "' is a local name: only events, rules and constants can be renamed; change it "
-             "by hand";
+             "' is a local name: only events, rules, constants and modules can be renamed; "
+             "change it by hand";
   }
-  return "only events, rules and constants can be renamed";
+  return "only events, rules, constants and modules can be renamed";
 }
 
 bool is_identifier(const std::string& name) {
@@ -78,8 +77,28 @@ std::string cannot_rename(const Document& doc, const Lookup& l) {
   if (std::string why = refusal(*l.symbol); !why.empty()) return why;
   if (in_app_spec(doc, l.symbol->def))
     return "'" + l.symbol->name + "' is declared in " + l.symbol->def.file +
-           ": rename it there (its tests files are not renamed with it)";
+           ": rename it there (its tests files are renamed with it)";
   return "";
+}
+
+// The edits of renaming `symbol` (by key) to `name` in one document's index.
+nlohmann::json edits_in(const Document& doc, const SymbolIndex& index, size_t symbol,
+                        const std::string& old_name, const std::string& name) {
+  nlohmann::json edits = nlohmann::json::array();
+  for (const Occurrence* o : index.occurrences_of(symbol)) {
+    // `events from M.p { e }`: the module still sends flag "e".
+    std::string text = o->implicit_flag ? name + " = \"" + old_name + "\"" : name;
+    edits.push_back({{"range", index_range(doc, o->loc)}, {"newText", text}});
+  }
+  return edits;
+}
+
+// What a module's rename leaves to do outside the spec.
+std::string module_warning(const std::string& old_name, const std::string& name) {
+  return "module '" + old_name + "' is now '" + name +
+         "' in the spec; its plugin still registers it as '" + old_name +
+         "' (ARBC_REGISTER_MODULE), and inputs files, traces and DDS deployment files name it "
+         "too: rename it there";
 }
 
 }  // namespace
@@ -94,14 +113,17 @@ std::optional<nlohmann::json> prepare_rename(const Document& doc, Position p, st
 }
 
 std::optional<nlohmann::json> rename(const Document& doc, Position p, const std::string& name,
-                                     std::string* err) {
+                                     const std::vector<Document>& tests_files, std::string* err,
+                                     std::string* warning) {
   Lookup l = look_up(doc, p);
   if (!index_is_current(doc)) {
     *err = "the text does not parse now: fix the syntax error first, then rename";
     return std::nullopt;
   }
   if (!l.symbol) {
-    *err = "there is no name to rename here: put the cursor on an event, a rule or a constant";
+    *err =
+        "there is no name to rename here: put the cursor on an event, a rule, a constant or a "
+        "module";
     return std::nullopt;
   }
   *err = cannot_rename(doc, l);
@@ -117,13 +139,21 @@ std::optional<nlohmann::json> rename(const Document& doc, Position p, const std:
     *err = "there is already " + kind + " '" + name + "'";
     return std::nullopt;
   }
-  nlohmann::json edits = nlohmann::json::array();
-  for (const Occurrence* o : l.index->occurrences_of(l.occurrence->symbol)) {
-    // `events from M.p { e }`: the module still sends flag "e".
-    std::string text = o->implicit_flag ? name + " = \"" + l.symbol->name + "\"" : name;
-    edits.push_back({{"range", index_range(doc, o->loc)}, {"newText", text}});
+  nlohmann::json changes = nlohmann::json::object();
+  changes[doc.uri] = edits_in(doc, *l.index, l.occurrence->symbol, l.symbol->name, name);
+  // The app's tests files name its events, rules, constants and modules too; a tests file
+  // whose text does not parse now is left alone (its edits would land on the wrong places).
+  for (const Document& t : tests_files) {
+    if (!index_is_current(t) || t.uri == doc.uri) continue;
+    const Symbol* there = t.analysis->index->find(l.symbol->key);
+    if (!there) continue;
+    size_t symbol = static_cast<size_t>(there - t.analysis->index->symbols.data());
+    nlohmann::json edits = edits_in(t, *t.analysis->index, symbol, l.symbol->name, name);
+    if (!edits.empty()) changes[t.uri] = std::move(edits);
   }
-  return nlohmann::json{{"changes", {{doc.uri, edits}}}};
+  if (l.symbol->kind == SymbolKind::Module && name != l.symbol->name)
+    *warning = module_warning(l.symbol->name, name);
+  return nlohmann::json{{"changes", changes}};
 }
 
 }  // namespace arbc::lsp

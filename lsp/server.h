@@ -56,6 +56,10 @@ class Server {
   nlohmann::json initialize_result() const;
   void watch_client(const nlohmann::json& initialize_params);
   std::optional<Document> document(const nlohmann::json& params);
+  // The tests files of the app spec `app`, analysed: the open ones and the others on disk.
+  std::vector<Document> tests_files_of(const Document& app);
+  std::optional<nlohmann::json> rename_request(const Document& doc, const nlohmann::json& params,
+                                               RequestError* err);
   void check_document(const std::string& uri);   // on the check worker
   void verify_document(const std::string& uri);  // on the verify worker
   void publish(const std::string& uri);

@@ -1,9 +1,12 @@
 // Server::request and Server::notification: the methods the server handles, each handed to
 // its feature (features.h) with a snapshot of the document.
+#include <filesystem>
 #include <set>
 
 #include "lsp/features.h"
 #include "lsp/server.h"
+#include "lsp/tests_files.h"
+#include "lsp/uri.h"
 
 namespace arbc::lsp {
 
@@ -38,6 +41,47 @@ void Server::watch_client(const nlohmann::json& initialize_params) {
 std::optional<Document> Server::document(const nlohmann::json& params) {
   std::string uri = params.at("textDocument").at("uri").get<std::string>();
   return store_.wait_current(uri, std::chrono::steady_clock::now() + options_.request_wait);
+}
+
+std::vector<Document> Server::tests_files_of(const Document& app) {
+  std::vector<Document> out;
+  std::set<std::string> open;
+  std::string app_path = std::filesystem::path(app.path).lexically_normal().string();
+  auto names_app = [&](const Document& d) {
+    return d.analysis && d.analysis->app_file == app_path;
+  };
+  for (Document& d : store_.all()) {
+    open.insert(std::filesystem::path(d.path).lexically_normal().string());
+    if (names_app(d)) out.push_back(std::move(d));
+  }
+  for (auto& [path, text] : tests_files_on_disk(app_path)) {
+    if (open.count(path)) continue;  // the editor's text, not the disk's
+    Document d;
+    d.uri = path_to_uri(path);
+    d.path = path;
+    d.script_dir = std::filesystem::path(path).parent_path().string();
+    d.text = std::move(text);
+    d.analysis = gate_.run(path, [&] { return analyze(d.text, 0, path, d.script_dir, nullptr); });
+    if (names_app(d)) out.push_back(std::move(d));
+  }
+  return out;
+}
+
+std::optional<nlohmann::json> Server::rename_request(const Document& doc,
+                                                     const nlohmann::json& params,
+                                                     RequestError* err) {
+  Position p = parse_position(params.value("position", nlohmann::json::object()));
+  std::string why, warning;
+  // Only an app spec has tests files; a tests file's own names are declared in its app.
+  std::vector<Document> tests_files;
+  if (doc.analysis && doc.analysis->app_file.empty()) tests_files = tests_files_of(doc);
+  auto edit = rename(doc, p, params.at("newName").get<std::string>(), tests_files, &why, &warning);
+  if (!edit) *err = {kRequestFailed, why};
+  if (edit && !warning.empty())
+    send({{"jsonrpc", "2.0"},
+          {"method", "window/showMessage"},
+          {"params", {{"type", 2 /* Warning */}, {"message", warning}}}});
+  return edit;
 }
 
 std::optional<nlohmann::json> Server::request(const std::string& method,
@@ -93,12 +137,7 @@ std::optional<nlohmann::json> Server::request(const std::string& method,
     if (!range) *err = {kRequestFailed, why};
     return range;
   }
-  if (method == "textDocument/rename") {
-    std::string why;
-    auto edit = rename(*doc, p, params.at("newName").get<std::string>(), &why);
-    if (!edit) *err = {kRequestFailed, why};
-    return edit;
-  }
+  if (method == "textDocument/rename") return rename_request(*doc, params, err);
   *err = {kMethodNotFound, "unknown method " + method};
   return std::nullopt;
 }

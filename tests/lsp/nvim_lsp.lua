@@ -1,7 +1,7 @@
 -- Neovim's own LSP client (0.7) attached to `arbc lsp` by docs/editors.md's init.lua (which
 -- nvim_test.py hands to nvim with -u), driven as a person would: open a spec, break a name,
 -- wait for the diagnostic, hover, go to definition, apply the quick fix, rename a constant
--- and back, see a module's rename refused with the reason; open a second spec
+-- and back, a module and back, see a port's rename refused with the reason; open a second spec
 -- and read the first again, on the same server. Each check is written to $RESULT as JSON;
 -- nvim_test.py runs this inside tmux and reads it, then takes the screenshot once $READY
 -- exists. Env: SPEC (a copy to edit), OTHER (a second spec), RESULT, READY.
@@ -100,8 +100,7 @@ local function run()
   check('and the diagnostic goes away', vim.wait(20000, function() return #vim.diagnostic.get(0) == 0 end, 20))
 
   -- Rename, as <leader>r does with the name typed: a constant, everywhere (`within
-  -- SPEAK_PERIOD` too), then back; a module is refused with the reason (0.7 ignores a refused
-  -- prepareRename, asks for the name anyway, then shows the rename's error). What nvim would
+  -- SPEAK_PERIOD` too), then back; a module, then back; a port is refused. What nvim would
   -- show is recorded instead: a message that long would wait for Enter.
   local before = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n')
   local function rename_at(needle, offset, name)
@@ -122,12 +121,35 @@ local function run()
   check('and back', vim.wait(10000, function()
     return table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n') == before
   end, 20))
+  -- A module: every `PickAndPlace.` goes with it (not the comments' words), with a warning
+  -- that its plugin still registers the old name; then back.
+  local warned = {}
+  local show_message = vim.lsp.handlers['window/showMessage']
+  vim.lsp.handlers['window/showMessage'] = function(_, message) table.insert(warned, message) end
+  local in_comments = select(2, table.concat(vim.tbl_map(function(l) return l:match('//.*') or '' end,
+    vim.api.nvim_buf_get_lines(0, 0, -1, false)), '\n'):gsub('PickAndPlace', ''))
+  local uses = select(2, before:gsub('PickAndPlace', '')) - in_comments
+  rename_at('module PickAndPlace', #'module ', 'Arm')
+  check('rename of a module reaches every Module.port', vim.wait(10000, function()
+    return buffer_has('Arm', uses) and buffer_has('PickAndPlace', in_comments)
+  end, 20), vim.api.nvim_buf_get_lines(0, 0, -1, false))
+  check('and warns that its plugin registers the old name', vim.wait(10000, function()
+    return warned[1] and warned[1].type == 2 and
+           warned[1].message:find("its plugin still registers it as 'PickAndPlace'", 1, true)
+  end, 20), warned)
+  vim.lsp.handlers['window/showMessage'] = show_message
+  rename_at('module Arm', #'module ', 'PickAndPlace')
+  check('and back', vim.wait(10000, function()
+    return table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n') == before
+  end, 20))
+  -- A port is refused with the reason (0.7 ignores a refused prepareRename, asks for the name
+  -- anyway, then shows the rename's error).
   local shown = {}
   local notify = vim.notify
   vim.notify = function(message) table.insert(shown, message) end
-  rename_at('module PickAndPlace', #'module ', 'Arm')
-  check('a refused rename of a module says why', vim.wait(10000, function()
-    return shown[1] and shown[1]:find("module 'PickAndPlace' is not renamed here", 1, true)
+  rename_at('in cmd: Cmd', #'in ', 'command')
+  check('a refused rename of a port says why', vim.wait(10000, function()
+    return shown[1] and shown[1]:find("port 'PickAndPlace.cmd' is not renamed here", 1, true)
   end, 20), shown)
   vim.notify = notify
   check('and changes nothing',

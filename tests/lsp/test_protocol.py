@@ -7,6 +7,7 @@ import glob
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -296,6 +297,134 @@ class TestsFile(Session):
             position_of(broken, "gaze_x receives", 0, 0))])  # the misspelt port alone
 
 
+RENAME_APP = """// The app a rename starts in.
+app look "Look at a face when one is seen, else look around.";
+
+const LONG = 1s;
+
+module Face { out face: vec3; }
+module Scan { out gaze: vec3; }
+module Head { in gaze: vec3; }
+
+event e_face = Face.face : face.x > 0.5 for 500ms;
+
+arbitrate Head.gaze by priority {
+  track:  from Face.face when e_face hold LONG;
+  search: from Scan.gaze;
+}
+
+test "looks around" {
+  at 0s Scan.gaze <- vec3(1.0, 0.0, 0.0);
+  expect Head.gaze receives vec3(1.0, 0.0, 0.0) at 0s;
+}
+"""
+
+RENAME_TESTS = """// Tests of app.spec in a file of their own: Scan, LONG, e_face and search are the app's.
+tests for "%s";
+
+test "a face holds the head" {
+  at 0s set e_face;
+  at 100ms Face.face <- vec3(1.0, 0.0, 0.0);
+  at 500ms Scan.gaze <- vec3(0.0, 1.0, 0.0);
+  expect search drops "not-selected" within 0s..LONG;
+}
+"""
+
+
+class RenameReachesTestsFiles(Session):
+    """A rename in an app's spec reaches its tests files: an open one as the editor holds it
+    (unsaved), one on disk two folders below, not another app's, not a hidden scratch file,
+    not one whose text does not parse."""
+
+    def setUp(self):
+        super().setUp()
+        self.dir = tempfile.mkdtemp(prefix="arbc-rename-")
+        self.paths = {
+            "app": os.path.join(self.dir, "app.spec"),
+            "open": os.path.join(self.dir, "app.test.spec"),
+            "below": os.path.join(self.dir, "more", "deeper", "app_more.test.spec"),
+            "other": os.path.join(self.dir, "other.test.spec"),
+            "hidden": os.path.join(self.dir, ".scratch.test.spec"),
+        }
+        os.makedirs(os.path.dirname(self.paths["below"]))
+        self.texts = {
+            "app": RENAME_APP,
+            "open": RENAME_TESTS % "app.spec",
+            "below": RENAME_TESTS % "../../app.spec",
+            "other": (RENAME_TESTS % "other.spec").replace("app.spec", "other.spec"),
+            "hidden": RENAME_TESTS % "app.spec",
+        }
+        for key, path in self.paths.items():
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(self.texts[key])
+        with open(os.path.join(self.dir, "other.spec"), "w", encoding="utf-8") as f:
+            f.write(RENAME_APP)
+        self.on_disk = dict(self.texts)
+        # The open tests file has an unsaved test: its edits are computed on the editor's text.
+        self.texts["open"] += '\ntest "unsaved" {\n  at LONG Scan.gaze <- vec3(1.0, 0.0, 0.0);\n' \
+                              '  expect Head.gaze receives at LONG;\n}\n'
+        self.uris = {key: file_uri(path) for key, path in self.paths.items()}
+        self.open_spec(self.texts["app"], self.uris["app"])
+        self.open_spec(self.texts["open"], self.uris["open"])
+
+    def tearDown(self):
+        super().tearDown()
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def rename(self, needle, offset, name):
+        at = {"textDocument": {"uri": self.uris["app"]},
+              "position": position_of(self.texts["app"], needle, 0, offset)}
+        return self.c.request("textDocument/rename", dict(at, newName=name))["changes"]
+
+    def check_renamed(self, changes, old, new):
+        """Each renamed file is clean for arbc check and names `new`, not `old`, outside its
+        comments."""
+        self.assertEqual(sorted(changes), sorted(self.uris[k] for k in ("app", "open", "below")))
+        renamed = {k: apply_edits(self.texts[k], changes[self.uris[k]])
+                   for k in ("app", "open", "below")}
+        for key, text in renamed.items():
+            with open(self.paths[key], "w", encoding="utf-8") as f:
+                f.write(text)
+        for key, text in renamed.items():
+            with self.subTest(file=key):
+                code = re.sub(r"//.*", "", text)
+                self.assertIsNone(re.search(r"\b%s\b" % old, code), text)
+                self.assertRegex(code, r"\b%s\b" % new)
+                proc = subprocess.run([ARBC, "check", self.paths[key]], capture_output=True,
+                                      text=True, timeout=60)
+                self.assertEqual((proc.returncode, proc.stderr), (0, ""))
+        # The unsaved test's uses too: as many as there were, outside comments.
+        self.assertEqual(len(re.findall(r"\b%s\b" % new, re.sub(r"//.*", "", renamed["open"]))),
+                         len(re.findall(r"\b%s\b" % old, re.sub(r"//.*", "", self.texts["open"]))))
+
+    def test_a_constant_a_module_an_event_and_a_rule(self):
+        for needle, offset, old, new in (("const LONG", len("const "), "LONG", "HOLD"),
+                                         ("module Scan", len("module "), "Scan", "Looker"),
+                                         ("event e_face", len("event "), "e_face", "e_seen"),
+                                         ("search: from", 0, "search", "roam")):
+            with self.subTest(name=old):
+                changes = self.rename(needle, offset, new)
+                self.check_renamed(changes, old, new)
+                for key in ("app", "open", "below"):  # as they were, for the next name
+                    with open(self.paths[key], "w", encoding="utf-8") as f:
+                        f.write(self.on_disk[key])
+
+    def test_a_tests_file_that_does_not_parse_is_left_alone(self):
+        broken = self.texts["open"].replace("at 0s set e_face;", "at 0s set e_face", 1)
+        self.c.change(self.uris["open"], 2, [{"text": broken}])
+        self.c.wait_diagnostics(self.uris["open"], version=2)
+        changes = self.rename("const LONG", len("const "), "HOLD")
+        self.assertEqual(sorted(changes), sorted([self.uris["app"], self.uris["below"]]))
+
+    def test_a_name_of_the_app_is_renamed_in_the_app_not_from_a_tests_file(self):
+        at = {"textDocument": {"uri": self.uris["open"]},
+              "position": position_of(self.texts["open"], "within 0s..LONG", 0, len("within 0s.."))}
+        with self.assertRaises(RuntimeError) as e:
+            self.c.request("textDocument/rename", dict(at, newName="HOLD"))
+        self.assertIn("'LONG' is declared in %s: rename it there (its tests files are renamed "
+                      "with it)" % self.paths["app"], e.exception.args[1])
+
+
 class Hover(Session):
     def setUp(self):
         super().setUp()
@@ -465,16 +594,41 @@ class Editing(Session):
                     self.assertEqual(check_json_at(renamed, path), check_json_at(text, path))
         self.assertIn("never two ask within SPEAK_PERIOD;", self.text)  # what is reached
 
-    def test_a_module_is_refused_with_the_reason_before_and_at_the_rename(self):
-        at = self.at("module PickAndPlace", 0, len("module "))
+    def test_rename_a_module_in_every_module_port_with_a_warning(self):
+        """A module's name is written in every `Module.port`; all go (from a use as from the
+        declaration), comments stay, and a warning says that its plugin keeps the old name."""
+        self.open_spec()
+        code = re.sub(r"//.*", "", self.text)
+        uses = len(re.findall(r"\bPickAndPlace\b", code))
+        for needle, offset in (("module PickAndPlace", len("module ")),
+                               ("arbitrate PickAndPlace.cmd", len("arbitrate "))):
+            with self.subTest(at=needle):
+                edit = self.c.request("textDocument/rename",
+                                      dict(self.at(needle, 0, offset), newName="Arm"))
+                self.assertEqual(list(edit["changes"]), [self.uri])
+                renamed = apply_edits(self.text, edit["changes"][self.uri])
+                self.assertEqual(len(edit["changes"][self.uri]), uses)
+                self.assertIsNone(re.search(r"\bPickAndPlace\b", re.sub(r"//.*", "", renamed)))
+                self.assertIn("arbitrate Arm.cmd {", renamed)
+                self.assertIn('at 0s     Arm.status <- ["e_arm_idle"];', renamed)
+                self.assertEqual(check_json(renamed), [])
+                warning = self.c.wait_notification(
+                    lambda m: m.get("method") == "window/showMessage")["params"]
+                self.assertEqual(warning["type"], 2)
+                self.assertIn("module 'PickAndPlace' is now 'Arm' in the spec; its plugin still "
+                              "registers it as 'PickAndPlace' (ARBC_REGISTER_MODULE)",
+                              warning["message"])
+
+    def test_a_port_is_refused_with_the_reason_before_and_at_the_rename(self):
+        at = self.at("PickAndPlace.cmd", 0, len("PickAndPlace."))
         for method, params in (("textDocument/prepareRename", at),
-                               ("textDocument/rename", dict(at, newName="Arm"))):
+                               ("textDocument/rename", dict(at, newName="command"))):
             with self.subTest(method=method):
                 with self.assertRaises(RuntimeError) as e:
                     self.c.request(method, params)
                 self.assertEqual(e.exception.args[0], -32803)
-                self.assertIn("module 'PickAndPlace' is not renamed here: its plugin registers "
-                              "it by that name", e.exception.args[1])
+                self.assertIn("port 'PickAndPlace.cmd' is not renamed here: its module's plugin",
+                              e.exception.args[1])
 
     def test_prepare_rename_says_why_for_each_kind_it_refuses(self):
         for needle, offset, why in [("PickAndPlace.cmd", len("PickAndPlace."), "port 'PickAndPlace.cmd'"),
@@ -488,13 +642,15 @@ class Editing(Session):
         # Where there is no name at all: nothing to rename, not an error.
         self.assertIsNone(self.c.request("textDocument/prepareRename", self.at("arbitrate")))
 
-    def test_rename_refuses_keywords_taken_names_and_modules(self):
+    def test_rename_refuses_keywords_and_taken_names(self):
         for needle, name, why in [("take: from", "when", "not a name"),
                                   ("take: from", "put", "already rule 'put'"),
                                   ("HAND_REACHABLE", "e_taken", "already event 'e_taken'"),
                                   ("HAND_REACHABLE", "obj", "already local name 'obj'"),
                                   ("HAND_REACHABLE", "TOOL_REACHABLE", "already const"),
-                                  ("module PickAndPlace", "Arm", "module 'PickAndPlace'")]:
+                                  ("module PickAndPlace", "PullObject",
+                                   "already module 'PullObject'"),
+                                  ("module PickAndPlace", "e_taken", "already event 'e_taken'")]:
             with self.subTest(name=name):
                 with self.assertRaises(RuntimeError) as e:
                     offset = len("module ") if needle.startswith("module") else 0
