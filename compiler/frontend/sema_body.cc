@@ -50,7 +50,9 @@ std::vector<std::string> Scope::names() const {
 std::string Scope::message_name() const {
   for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame) {
     for (const auto& [name, binding] : *frame) {
-      if (binding.kind == ast::NameKind::Message && !binding.message_unavailable) return name;
+      if (binding.kind == ast::NameKind::Message && !binding.message_unavailable &&
+          !binding.other_port)
+        return name;
     }
   }
   return {};
@@ -164,7 +166,7 @@ void Sema::check_local(Stmt& s, Scope& scope, const BodyContext& ctx) {
     error(s.loc, "`var` declares monitor state: put it at the top level of the body",
           "statement-context");
   }
-  if (const Binding* existing = scope.find(s.name)) {
+  if (const Binding* existing = scope.find(s.name); existing && !existing->other_port) {
     error(s.name_loc,
           "'" + s.name + "' is already defined here as " + local_kind(existing->kind) +
               "; choose another name",

@@ -22,6 +22,9 @@ struct Binding {
   const ast::Stmt* local = nullptr;   // Let, Var
   const ast::Expr* lambda = nullptr;  // Param
   bool message_unavailable = false;   // the message inside an `every` body
+  // A port of the source's module, bound while the source port is misspelt (bind_message);
+  // a `let` may take its name.
+  bool other_port = false;
 };
 
 // Nested scopes of a body: lookups go innermost first.

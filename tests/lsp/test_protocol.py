@@ -136,6 +136,19 @@ class Diagnostics(Session):
         self.assertEqual(self.c.wait_diagnostics(self.uri, version=3), [])
 
 
+class MisspeltSourcePort(Session):
+    def test_only_the_misspelt_port_is_flagged_not_the_body_that_reads_the_right_one(self):
+        """`from Camera.things` (no port close to it): one diagnostic, on `things`, as
+        `arbc check` gives; the body's `objects`, the name meant, is not flagged."""
+        text = read(os.path.join(ROOT, "tests", "check", "unknown_port_source_far",
+                                 "unknown_port_source_far.spec"))
+        diags = self.open_spec(text)
+        self.assertEqual([(d["code"], d["range"]) for d in diags],
+                         [("unknown-port", {"start": position_of(text, "things {"),
+                                            "end": position_of(text, "things {", 0, 6)})])
+        self.assertEqual([d["id"] for d in check_json(text)], ["unknown-port"])
+
+
 class Navigation(Session):
     def setUp(self):
         super().setUp()
