@@ -71,11 +71,16 @@ std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, 
   }
   std::ostringstream text;
   text << in.rdbuf();
-  std::string error;
-  std::optional<model::App> app = model::from_app_json(text.str(), &error);
+  Diagnostic error;
+  std::optional<model::App> app = model::from_app_json(text.str(), file, &error);
   if (!app) {
-    *err = file + ": not a valid app.json: " + error;
-    notes->errors.push_back(file_error(file, "not a valid app.json: " + error, "app-json"));
+    // As a spec's errors: at the place in the file, the line quoted, then one line that says
+    // the input was not taken.
+    SourceCache sources;
+    sources.add(file, text.str());
+    notes->rendered += render(error, &sources);
+    *err = file + ": not a valid app.json (the error above)";
+    notes->errors.push_back(std::move(error));
   }
   return app;
 }

@@ -221,9 +221,15 @@ int run_command(std::span<char*> args) {
   int prepared = prepare_app_dir(a.input, a.no_verify, &temp, &dir);
   if (prepared != kExitOk) return prepared;
   std::string load_error;
-  std::optional<model::App> loaded = load_app_dir(dir, &load_error);
+  Diagnostic app_json_error;  // in app.json's text: rendered as a compiler's, line quoted
+  std::optional<model::App> loaded = load_app_dir(dir, &load_error, &app_json_error);
   if (!loaded) {
-    print_errors(load_error);
+    if (app_json_error.loc.file.empty()) {
+      print_errors(load_error);
+    } else {
+      SourceCache sources;
+      std::fputs(render(app_json_error, &sources).c_str(), stderr);
+    }
     return kExitBadInput;
   }
   const model::App& app = *loaded;

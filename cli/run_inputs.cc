@@ -95,6 +95,10 @@ bool read_inputs(const std::string& path, const model::App& app,
     LineRef at{path, line};
     Json j;
     if (JsonParseError e; !parse_json(text, &j, &e)) {
+      if (e.first_line)  // a key repeated: each line is parsed alone, so the place is a column
+        return *err = at("at column " + std::to_string(e.column) + ": " +
+                         json_error_message(e, /*one_line=*/true)),
+               false;
       std::string where = e.column ? " at column " + std::to_string(e.column) : "";
       return *err = at("not valid JSON" + where + ": " + e.detail), false;
     }

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "core/body_text.h"
-#include "core/json_parse.h"
+#include "core/json_diagnostic.h"
 
 namespace arbc::model {
 
@@ -403,27 +403,82 @@ std::optional<App> read_app(const Json& root, std::string* err) {
   return app;
 }
 
-// Parses text; on a syntax error says where ("not valid JSON at line 3, column 5: ...").
-bool parse_json_text(std::string_view text, Json* root, std::string* err) {
-  JsonParseError e;
-  if (parse_json(text, root, &e)) return true;
-  *err = e.line ? "not valid JSON at line " + std::to_string(e.line) + ", column " +
-                      std::to_string(e.column) + ": " + e.detail
-                : "not valid JSON: " + e.detail;
-  return false;
+// read_app with the library's exceptions caught: they mean a bug above (a value read before
+// its type was checked), not a bad file, but still end in an error rather than a crash.
+std::optional<App> read_app_checked(const Json& root, std::string* err) {
+  try {
+    return read_app(root, err);
+  } catch (const Json::exception& e) {
+    *err = std::string("app.json: ") + e.what();
+    return std::nullopt;
+  }
+}
+
+// The readers above name a bad value by its path written out ("connections[3].source: ...",
+// "app.json.schema_version: ..."), made of the schema's own keys (none holds '.', '[' or ':')
+// and of indices, so it splits back into the path json_place takes (core/json_place.h). Sets
+// *message to the error without the file's own name; the path is {} for the whole file.
+std::vector<std::string> path_of(const std::string& err, std::string* message) {
+  std::string_view rest = err;
+  for (std::string_view file : {"app.json: ", "app.json."}) {
+    if (rest.substr(0, file.size()) == file) rest.remove_prefix(file.size());
+  }
+  *message = std::string(rest);
+  std::vector<std::string> path;
+  size_t end = rest.find(": ");
+  if (end == std::string_view::npos) return path;
+  std::string_view written = rest.substr(0, end);
+  for (size_t i = 0; i < written.size();) {
+    if (written[i] == '.') {
+      ++i;
+    } else if (written[i] == '[') {
+      size_t close = written.find(']', i);
+      if (close == std::string_view::npos) return {};
+      path.emplace_back(written.substr(i + 1, close - i - 1));
+      i = close + 1;
+    } else {
+      size_t next = written.find_first_of(".[", i);
+      if (next == std::string_view::npos) next = written.size();
+      path.emplace_back(written.substr(i, next - i));
+      i = next;
+    }
+  }
+  return path;
 }
 
 }  // namespace
 
 std::optional<App> from_app_json(std::string_view text, std::string* err) {
   Json root;
-  if (!parse_json_text(text, &root, err)) return std::nullopt;
-  try {
-    return read_app(root, err);
-  } catch (const Json::exception& e) {  // a bug above (a value read before its type was checked)
-    *err = std::string("app.json: ") + e.what();
+  if (JsonParseError e; !parse_json(text, &root, &e)) {
+    std::string where =
+        e.line ? "line " + std::to_string(e.line) + ", column " + std::to_string(e.column) + ": "
+               : "";
+    *err = where + json_error_message(e);
     return std::nullopt;
   }
+  return read_app_checked(root, err);
+}
+
+std::optional<App> from_app_json(std::string_view text, const std::string& file,
+                                 Diagnostic* error) {
+  Json root;
+  if (JsonParseError e; !parse_json(text, &root, &e)) {
+    *error = json_syntax_diagnostic(file, e);
+    error->id = "app-json";
+    return std::nullopt;
+  }
+  std::string err;
+  std::optional<App> app = read_app_checked(root, &err);
+  if (app) return app;
+  std::string message;
+  std::vector<std::string> path = path_of(err, &message);
+  // A value that is missing is placed at the object that lacks it: the nearest part of the
+  // path that the text has.
+  while (!path.empty() && !json_place(text, path)) path.pop_back();
+  *error = json_diagnostic(file, text, path, JsonPart::Value, message);
+  error->id = "app-json";
+  return std::nullopt;
 }
 
 }  // namespace arbc::model

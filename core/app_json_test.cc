@@ -240,7 +240,7 @@ TEST(AppJsonTest, EveryMonitorHasItsDigest) {
 
 TEST(AppJsonTest, ErrorsNameThePathOfTheBadValue) {
   EXPECT_EQ(load_error("{"),
-            "not valid JSON at line 1, column 2: syntax error while parsing object key - "
+            "line 1, column 2: not valid JSON: syntax error while parsing object key - "
             "unexpected end of input; expected string literal");
   EXPECT_EQ(load_error("[]"), "app.json: expected a JSON object");
   std::string text = to_app_json(small_app());
@@ -297,9 +297,74 @@ TEST(AppJsonTest, ASyntaxErrorNamesItsLineAndColumn) {
   text.insert(at, ",");  // a second comma after the previous member
   size_t line = 1 + std::count(text.begin(), text.begin() + at, '\n');
   size_t column = at - text.rfind('\n', at);
-  std::string want = "not valid JSON at line " + std::to_string(line) + ", column " +
-                     std::to_string(column) + ": syntax error";
+  std::string want = "line " + std::to_string(line) + ", column " + std::to_string(column) +
+                     ": not valid JSON: syntax error";
   EXPECT_EQ(load_error(text).substr(0, want.size()), want);
+}
+
+// "line:column: message" of the error from_app_json gives for `text` read from a file, as
+// render() heads it; a test failure when it loads.
+std::string placed_error(std::string_view text) {
+  Diagnostic d;
+  EXPECT_FALSE(from_app_json(text, "out/demo/app.json", &d)) << "loaded";
+  EXPECT_EQ(d.loc.file.str(), "out/demo/app.json");
+  EXPECT_EQ(d.id, "app-json");
+  return std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + ": " + d.message;
+}
+
+// "line:column" of the first occurrence of `needle` in `text`.
+std::string place_of(const std::string& text, const std::string& needle) {
+  size_t at = text.find(needle);
+  if (at == std::string::npos) return "no " + needle;
+  size_t line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  size_t line_start = text.rfind('\n', at);
+  size_t column = line_start == std::string::npos ? at + 1 : at - line_start;
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// Read from a file, each error is at its place in the file: a syntax error at its character, a
+// value of the wrong kind at the value, a missing value at the object that lacks it, a repeated
+// key at the second one. The message is the one the path-naming form gives.
+TEST(AppJsonTest, AFilesErrorsAreAtTheirPlace) {
+  EXPECT_EQ(placed_error("{\n  \"schema_version\": 2,\n  \"name\": \"x\",,\n}\n"),
+            "3:15: not valid JSON: syntax error while parsing object key - unexpected ','; "
+            "expected string literal");
+  EXPECT_EQ(placed_error("\n  []"), "2:3: expected a JSON object");
+
+  using Json = nlohmann::ordered_json;
+  const Json good = Json::parse(to_app_json(small_app()));
+  Json bad = good;
+  bad["modules"][0]["ports"][0]["direction"] = "up";
+  std::string text = bad.dump(2);
+  EXPECT_EQ(placed_error(text), place_of(text, "\"up\"") +
+                                    ": modules[0].ports[0].direction: expected \"in\" or \"out\"");
+
+  bad = good;
+  bad["schema_version"] = 7;
+  text = bad.dump(2);
+  EXPECT_EQ(placed_error(text), place_of(text, "7") +
+                                    ": schema_version: this arbc reads version 2, the file has 7; "
+                                    "rebuild it with this arbc");
+
+  bad = good;  // missing: at the object without it, here the second module
+  bad["modules"][1].erase("name");
+  text = bad.dump(2);
+  size_t module = text.rfind("\n    {", text.find("\"gaze\"")) + 5;  // its port's name
+  EXPECT_EQ(placed_error(text),
+            place_of(text, text.substr(module, 20)) + ": modules[1]: missing \"name\"");
+
+  bad = good;
+  bad.erase("connections");
+  text = bad.dump(2);
+  EXPECT_EQ(placed_error(text), "1:1: missing \"connections\"");
+
+  text = to_app_json(small_app());  // the app's "name" twice
+  std::string first = place_of(text, "\"name\"");
+  text.insert(text.find('\n', text.find("\"name\"")) + 1, "  \"name\": \"again\",\n");
+  std::string want = place_of(text, "\"name\": \"again\"") +
+                     ": key \"name\" repeated in one object (the first is at line " +
+                     first.substr(0, first.find(':')) + ")";
+  EXPECT_EQ(placed_error(text).substr(0, want.size()), want);
 }
 
 }  // namespace

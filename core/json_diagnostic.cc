@@ -22,7 +22,7 @@ Diagnostic json_syntax_diagnostic(const std::string& file, const JsonParseError&
   d.loc.file = file;
   d.loc.line = static_cast<int>(e.line);
   d.loc.column = static_cast<int>(e.column);
-  d.message = "not valid JSON: " + e.detail;
+  d.message = json_error_message(e);
   return d;
 }
 

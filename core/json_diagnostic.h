@@ -19,7 +19,8 @@ Diagnostic json_diagnostic(const std::string& file, std::string_view text,
                            const std::vector<std::string>& path, JsonPart part,
                            std::string message);
 
-// An error for text that is not JSON (core/json_parse.h), at the offending character.
+// An error for text that is not JSON, or repeats a key in one object (core/json_parse.h), at
+// the offending character or the second key.
 Diagnostic json_syntax_diagnostic(const std::string& file, const JsonParseError& e);
 
 }  // namespace arbc

@@ -24,4 +24,22 @@ JsonParseError json_parse_error(std::string_view text, size_t byte, std::string_
   return error;
 }
 
+std::string json_error_message(const JsonParseError& e, bool one_line) {
+  if (e.first_line == 0) return "not valid JSON: " + e.detail;
+  std::string first = one_line ? "column " + std::to_string(e.first_column)
+                               : "line " + std::to_string(e.first_line);
+  return "key \"" + e.detail + "\" repeated in one object (the first is at " + first +
+         "); JSON readers keep only the last value, so remove one of the two";
+}
+
+JsonParseError json_repeated_key_error(const JsonRepeatedKey& r) {
+  JsonParseError e;
+  e.line = static_cast<size_t>(r.second.begin.line);
+  e.column = static_cast<size_t>(r.second.begin.column);
+  e.first_line = static_cast<size_t>(r.first.begin.line);
+  e.first_column = static_cast<size_t>(r.first.begin.column);
+  e.detail = r.key;
+  return e;
+}
+
 }  // namespace arbc

@@ -52,5 +52,33 @@ TEST(JsonParseTest, ANumberBeyondADoubleIsAnErrorAtItsLiteral) {
   EXPECT_EQ(e.detail, "number overflow parsing '1e999' (beyond the range of a double)");
 }
 
+// JSON the library would take, keeping the last of two values of one key without a word: an
+// error at the second key that names the line (or, for one line of JSON lines, the column) of
+// the first.
+TEST(JsonParseTest, AKeyRepeatedInOneObjectIsAnErrorAtTheSecond) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view("{\"t\": 1,\n \"v\": {\"x\": 1},\n \"t\": 2}"), &j, &e));
+  EXPECT_EQ(e.line, 3u);
+  EXPECT_EQ(e.column, 2u);
+  EXPECT_EQ(e.first_line, 1u);
+  EXPECT_EQ(e.first_column, 2u);
+  EXPECT_EQ(json_error_message(e),
+            "key \"t\" repeated in one object (the first is at line 1); JSON readers keep only "
+            "the last value, so remove one of the two");
+  EXPECT_NE(json_error_message(e, /*one_line=*/true).find("(the first is at column 2)"),
+            std::string::npos);
+  nlohmann::ordered_json ordered;
+  EXPECT_FALSE(parse_json(std::string_view("{\"a\": 1, \"a\": 1}"), &ordered, &e));
+  EXPECT_TRUE(parse_json(std::string_view("{\"a\": {\"b\": 1}, \"b\": {\"a\": 1}}"), &j, &e));
+}
+
+TEST(JsonParseTest, ASyntaxErrorSaysItIsNotJson) {
+  nlohmann::json j;
+  JsonParseError e;
+  ASSERT_FALSE(parse_json(std::string_view("{\"a\": tru}"), &j, &e));
+  EXPECT_EQ(json_error_message(e).rfind("not valid JSON: syntax error", 0), 0u);
+}
+
 }  // namespace
 }  // namespace arbc

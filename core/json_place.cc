@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 
 namespace arbc {
 
@@ -214,6 +215,51 @@ std::optional<TextSpan> json_place(std::string_view text, const std::vector<std:
   size_t end = skip_value(text, i);
   if (end == npos) return std::nullopt;
   return span(text, i, end);
+}
+
+std::optional<JsonRepeatedKey> json_repeated_key(std::string_view text) {
+  // In JSON the library accepted, a string right after an object's '{' or after a ',' at the
+  // object's own level is a key; any other string is a value. One frame per open container,
+  // on a vector rather than the call stack.
+  struct Frame {
+    bool object = false;
+    bool want_key = false;
+    std::map<std::string, size_t> keys;  // decoded key -> its offset
+  };
+  std::vector<Frame> open;
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i];
+    if (c == '{' || c == '[') {
+      open.push_back({c == '{', c == '{', {}});
+      ++i;
+    } else if (c == '}' || c == ']') {
+      if (!open.empty()) open.pop_back();
+      ++i;
+    } else if (c == ',') {
+      if (!open.empty() && open.back().object) open.back().want_key = true;
+      ++i;
+    } else if (c == '"') {
+      size_t end = npos;
+      if (open.empty() || !open.back().want_key) {
+        end = skip_string(text, i);
+      } else {
+        std::optional<std::string> key = read_string(text, i, &end);
+        if (!key) return std::nullopt;
+        Frame& f = open.back();
+        f.want_key = false;
+        auto [seen, fresh] = f.keys.emplace(*key, i);
+        if (!fresh) {
+          size_t first_end = skip_string(text, seen->second);
+          return JsonRepeatedKey{*key, span(text, seen->second, first_end), span(text, i, end)};
+        }
+      }
+      if (end == npos) return std::nullopt;
+      i = end;
+    } else {
+      ++i;
+    }
+  }
+  return std::nullopt;
 }
 
 std::optional<size_t> json_number_overflow(std::string_view text) {

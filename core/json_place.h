@@ -28,6 +28,18 @@ enum class JsonPart { Key, Value };
 std::optional<TextSpan> json_place(std::string_view text, const std::vector<std::string>& path,
                                    JsonPart part = JsonPart::Value);
 
+// A key that occurs a second time in one object: the library keeps its last value and drops
+// the first without a word, so readers of user files refuse it (core/json_parse.h).
+struct JsonRepeatedKey {
+  std::string key;  // as the library decodes it
+  TextSpan first, second;
+};
+
+// The first key of `text` (which the library parsed) that repeats an earlier key of the same
+// object, keys compared as the library decodes them ("a" and "\u0061" are one key); nothing
+// when every object's keys are distinct.
+std::optional<JsonRepeatedKey> json_repeated_key(std::string_view text);
+
 // The byte offset of the first number literal of `text` that a double cannot hold (1e999),
 // which the library reports without a position; nothing when there is none.
 std::optional<size_t> json_number_overflow(std::string_view text);

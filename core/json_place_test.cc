@@ -56,6 +56,35 @@ TEST(JsonPlaceTest, DecodesKeysAndTakesTheLastOfARepeatedOne) {
   EXPECT_EQ(where("\xEF\xBB\xBF{\"a\": 1}", {"a"}), "1:8-1:9");  // the BOM is a column
 }
 
+// "key first-line:column second-line:column" of the first repeated key, or "none".
+std::string repeated(std::string_view text) {
+  std::optional<JsonRepeatedKey> r = json_repeated_key(text);
+  if (!r) return "none";
+  return r->key + " " + std::to_string(r->first.begin.line) + ":" +
+         std::to_string(r->first.begin.column) + " " + std::to_string(r->second.begin.line) + ":" +
+         std::to_string(r->second.begin.column);
+}
+
+// A key repeated in one object is found at both places; the same key in two objects, a value
+// that reads like a key, or a key in an array's objects are not repeats.
+TEST(JsonRepeatedKeyTest, FindsAKeyRepeatedInOneObjectOnly) {
+  EXPECT_EQ(repeated("{\n  \"a\": 1,\n  \"b\": 2,\n  \"a\": 3\n}"), "a 2:3 4:3");
+  EXPECT_EQ(repeated(R"({"a": {"a": 1}, "b": {"a": 2}})"), "none");
+  EXPECT_EQ(repeated(R"({"a": "b", "b": "a"})"), "none");
+  EXPECT_EQ(repeated(R"([{"a": 1}, {"a": 2}, ["a", "a"]])"), "none");
+  EXPECT_EQ(repeated(R"({"a": [1, {"x": 1}], "b": {"y": {}, "y": []}})"), "y 1:28 1:37");
+  EXPECT_EQ(repeated(R"({"x": {"a": 1}, "x": 2})"), "x 1:2 1:17");  // the outer object's
+  EXPECT_EQ(repeated(R"({"a\"b": 1, "c,{": 2, "a\u0022b": 3})"), "a\"b 1:2 1:23");  // decoded
+  EXPECT_EQ(repeated("\"a\""), "none");
+  EXPECT_EQ(repeated("{}"), "none");
+}
+
+// The scan walks nesting on the heap: the library's own depth does not exhaust the stack.
+TEST(JsonRepeatedKeyTest, DeepNestingIsNoProblem) {
+  std::string deep = std::string(100000, '[') + "{\"a\": 1, \"a\": 2}" + std::string(100000, ']');
+  EXPECT_EQ(repeated(deep), "a 1:100002 1:100010");
+}
+
 // Columns count characters: a caret under the line lands on the value.
 TEST(JsonPlaceTest, ColumnsCountCharactersNotBytes) {
   EXPECT_EQ(where("{\"\xC3\xA9t\xC3\xA9\": 1, \"b\": 2}", {"b"}), "1:17-1:18");

@@ -78,6 +78,12 @@ TEST(DeploymentTest, BadFilesSayWhatIsWrongAndWhere) {
        "d.json:1:10: qos: unknown key \"dpeth\"; did you mean \"depth\"? (the qos keys are: "
        "depth)"},
       {"\n  [1]", "d.json:2:3: expected a JSON object"},
+      // The library would keep the last "domain" without a word: the second one is an error.
+      {"{\n  \"domain\": 7,\n  \"ros2\": true,\n  \"domain\": 8\n}",
+       "d.json:4:3: key \"domain\" repeated in one object (the first is at line 2); JSON "
+       "readers keep only the last value, so remove one of the two"},
+      {"{\"topics\": {\"Base.odom\": \"/a\",\n  \"Base.odom\": \"/b\"}}",
+       "d.json:2:3: key \"Base.odom\" repeated in one object (the first is at line 1)"},
   };
   for (const Case& c : cases) {
     Deployment d;

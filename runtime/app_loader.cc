@@ -30,7 +30,8 @@ std::vector<std::string> app_dirs_in(const std::string& dir) {
 
 }  // namespace
 
-std::optional<model::App> load_app_dir(const std::string& dir, std::string* err) {
+std::optional<model::App> load_app_dir(const std::string& dir, std::string* err,
+                                       Diagnostic* placed) {
   fs::path file = fs::path(dir) / "app.json";
   std::ifstream in(file, std::ios::binary);
   if (!fs::is_directory(dir)) {
@@ -54,13 +55,17 @@ std::optional<model::App> load_app_dir(const std::string& dir, std::string* err)
   }
   std::ostringstream text;
   text << in.rdbuf();
-  std::string error;
-  std::optional<model::App> app = model::from_app_json(text.str(), &error);
+  Diagnostic error;
+  std::optional<model::App> app = model::from_app_json(text.str(), file.string(), &error);
   if (!app) {
     // One rebuild hint: the model's own error may already carry one (a newer schema).
-    std::string hint =
-        error.find("rebuild") == std::string::npos ? " (rebuild it with `arbc build`)" : "";
-    *err = file.string() + ": " + error + hint;
+    if (error.message.find("rebuild") == std::string::npos)
+      error.message += " (rebuild it with `arbc build`)";
+    *err = file.string();
+    if (error.loc.line > 0)
+      *err += ":" + std::to_string(error.loc.line) + ":" + std::to_string(error.loc.column);
+    *err += ": " + error.message;
+    if (placed) *placed = std::move(error);
     return std::nullopt;
   }
   // Every monitor exists and has the bytes `arbc build` wrote (the digests in app.json).

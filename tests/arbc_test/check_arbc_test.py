@@ -207,6 +207,11 @@ def case_inputs_bad_line_is_bad_input(arbc, tmp):
     write_lines(inputs, ["{not json"])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
     expect(code == 2 and f"{inputs}:1: not valid JSON at column" in err, "bad JSON accepted", out, err)
+    # A key given twice: JSON readers keep the last value silently; arbc refuses the line.
+    write_lines(inputs, ['{"t": 0, "port": "PickAndPlace.status", "t": 1, "value": ["e_arm_idle"]}'])
+    code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
+    expect(code == 2 and f'{inputs}:1: at column 41: key "t" repeated in one object (the first '
+           "is at column 2)" in err, "a repeated key accepted", out, err)
 
 
 def case_trace_replay_and_diff(arbc, tmp):

@@ -162,13 +162,28 @@ def case_malformed_app_json(arbc, plugin):
         with open(os.path.join(d, "app.json"), "w") as f:
             f.write('{\n  "schema_version": 1,\n  "name": "x",,\n}\n')
         code, out, err = run(arbc, "run", d, "--plugin", plugin)
-        expect_bad_input((code, out, err), "app.json: not valid JSON at line 3, column 15:")
+        # As a compiler reports a spec: file:line:col, the line quoted, a caret at the fault.
+        expect_bad_input((code, out, err), f"{d}/app.json:3:15: error: not valid JSON: syntax "
+                         "error while parsing object key",
+                         '\n    "name": "x",,\n                ^\n')
         expect(err.count("rebuild") == 1, "the rebuild hint is not given exactly once", out, err)
         with open(os.path.join(d, "app.json"), "w") as f:
             f.write(json.dumps({"schema_version": 99}))
         code, out, err = run(arbc, "run", d, "--plugin", plugin)
-        expect_bad_input((code, out, err), "this arbc reads version 2, the file has 99")
+        expect_bad_input((code, out, err), f"{d}/app.json:1:20: error: schema_version: this arbc "
+                         "reads version 2, the file has 99")
         expect(err.count("rebuild") == 1, "the rebuild hint is not given exactly once", out, err)
+        # A value of the wrong kind is pointed at; a key given twice is refused at the second.
+        with open(os.path.join(d, "app.json"), "w") as f:
+            f.write('{\n  "schema_version": 2,\n  "name": 5\n}\n')
+        code, out, err = run(arbc, "run", d, "--plugin", plugin)
+        expect_bad_input((code, out, err), f"{d}/app.json:3:11: error: name: expected a string",
+                         "\n    \"name\": 5\n            ^\n")
+        with open(os.path.join(d, "app.json"), "w") as f:
+            f.write('{\n  "schema_version": 2,\n  "name": "x",\n  "name": "y"\n}\n')
+        code, out, err = run(arbc, "run", d, "--plugin", plugin)
+        expect_bad_input((code, out, err), f"{d}/app.json:4:3: error: key \"name\" repeated in "
+                         "one object (the first is at line 3)")
 
 
 def case_script_error_cites_the_script(arbc, plugin):
