@@ -61,6 +61,9 @@ struct Finding {
   // (a resource's pair); empty: every rule goes into `port`. A rule's name is unique only
   // within its port, so a rule is found by both (rule_port).
   std::vector<std::string> rule_ports;
+  // Where each of those rules is in the spec, parallel to `rule_ports` (SARIF places a
+  // resource finding at both rules); empty with it.
+  std::vector<model::SourceLocation> rule_locs;
   std::string event;  // the event concerned (unfed, unused, ownership)
   std::string message;
   model::SourceLocation loc;

@@ -170,6 +170,45 @@ TEST(SarifFormat, UnknownIsAnErrorResult) {
   EXPECT_EQ(j["runs"][0]["results"][0]["level"], "error");
 }
 
+// A resource finding's rules go into different ports: JSON names each rule's port, SARIF
+// places it at each rule with the rule and its port as a logical location, even where no note
+// is at the rule (a rule opaque for data), and names it on a note that is.
+TEST(SarifFormat, AResourceFindingHasALocationPerRuleWithItsPort) {
+  Finding f;
+  f.check = kCheckResource;
+  f.message = "resource 'arm' is not proved for 'take' and 'pull'";
+  f.loc = {"a.spec", 9, 10, 9, 13};
+  f.rules = {"take", "pull"};
+  f.rule_ports = {"PickAndPlace.cmd", "PullObject.cmd"};
+  f.rule_locs = {{"a.spec", 3, 3, 3, 7}, {"a.spec", 5, 3, 5, 7}};
+  f.notes.push_back({"'pull' is selected", {"a.spec", 5, 3, 5, 7}});
+  VerifyReport report;
+  report.app = "a";
+  ResourceResult r;
+  r.name = "arm";
+  r.verdict = Verdict::Refuted;
+  r.findings = {f};
+  report.resources = {r};
+  std::vector<InputReport> inputs;
+  inputs.emplace_back("a.spec", report);
+
+  nlohmann::json j = nlohmann::json::parse(format_json(inputs, false));
+  const nlohmann::json& finding = j["inputs"][0]["resources"][0]["findings"][0];
+  EXPECT_EQ(finding["rule_ports"], nlohmann::json({"PickAndPlace.cmd", "PullObject.cmd"}));
+
+  j = nlohmann::json::parse(format_sarif(inputs, "0.1.0"));
+  const nlohmann::json& related = j["runs"][0]["results"][0]["relatedLocations"];
+  ASSERT_EQ(related.size(), 2u) << related.dump(2);
+  // The note at 'pull' comes first and gets its name; 'take' has a location of its own.
+  EXPECT_EQ(related[0]["message"]["text"], "'pull' is selected");
+  EXPECT_EQ(related[0]["logicalLocations"][0]["fullyQualifiedName"], "PullObject.cmd.pull");
+  EXPECT_EQ(related[1]["id"], 1);
+  EXPECT_EQ(related[1]["message"]["text"], "rule 'take' of PickAndPlace.cmd");
+  EXPECT_EQ(related[1]["physicalLocation"]["region"]["startLine"], 3);
+  EXPECT_EQ(related[1]["logicalLocations"][0]["name"], "take");
+  EXPECT_EQ(related[1]["logicalLocations"][0]["fullyQualifiedName"], "PickAndPlace.cmd.take");
+}
+
 // Every check id printed in diagnostics and SARIF helpUris has its section in docs/checks.md.
 TEST(Docs, EveryCheckIdHasASectionInChecksMd) {
   std::string docs = read(arbc::testing::source_dir() + "/docs/checks.md");

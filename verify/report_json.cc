@@ -25,6 +25,11 @@ Json finding_json(const Finding& f) {
   j["severity"] = severity_name(f.severity);
   j["port"] = f.port.empty() ? Json(nullptr) : Json(f.port);
   j["rules"] = f.rules;
+  // Each rule's arbitrated port: a rule's name is unique only within its port, and a resource
+  // finding's rules go into different ports.
+  j["rule_ports"] = Json::array();
+  for (size_t i = 0; i < f.rules.size(); ++i)
+    j["rule_ports"].push_back(f.rule_port(i).empty() ? Json(nullptr) : Json(f.rule_port(i)));
   j["event"] = f.event.empty() ? Json(nullptr) : Json(f.event);
   j["message"] = f.message;
   j["location"] = location_json(f.loc);

@@ -97,6 +97,34 @@ Json diagnostic_result(const Diagnostic& d) {
   return r;
 }
 
+// A finding whose rules go into different ports (a resource's pair): a related location per
+// rule, at the rule, naming it with its port as a logical location ("PickAndPlace.cmd.take";
+// a rule's name is unique only within its port). A note already at the rule gets the name.
+void add_rule_locations(const Finding& f, Json& related) {
+  for (size_t i = 0; i < f.rule_ports.size() && i < f.rules.size(); ++i) {
+    Json logical = Json::array({{{"name", f.rules[i]},
+                                 {"fullyQualifiedName", f.rule_ports[i] + "." + f.rules[i]},
+                                 {"kind", "function"}}});
+    model::SourceLocation loc = i < f.rule_locs.size() ? f.rule_locs[i] : model::SourceLocation{};
+    Json* at = nullptr;
+    if (!loc.file.empty()) {
+      Json physical = sarif_location(loc)["physicalLocation"];
+      for (Json& l : related)
+        if (!at && l.contains("physicalLocation") && l.at("physicalLocation") == physical &&
+            !l.contains("logicalLocations"))
+          at = &l;
+    }
+    if (!at) {
+      Json l = loc.file.empty() ? Json::object() : sarif_location(loc);
+      l["id"] = static_cast<int>(related.size());
+      l["message"] = {{"text", "rule '" + f.rules[i] + "' of " + f.rule_ports[i]}};
+      related.push_back(std::move(l));
+      at = &related.back();
+    }
+    (*at)["logicalLocations"] = std::move(logical);
+  }
+}
+
 }  // namespace
 
 // A violated (or undecided) property over time as a result; nullopt when it holds up to the
@@ -151,6 +179,7 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
       l["message"] = {{"text", n.message}};
       related.push_back(l);
     }
+    add_rule_locations(f, related);
     if (!related.empty()) r["relatedLocations"] = related;
     if (f.counterexample) {
       r["properties"] = {

@@ -193,6 +193,7 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
     Finding f = base_finding(kCheckResource);
     f.rules = {a.connection->name, b.connection->name};
     f.rule_ports = {a.connection->destination, b.connection->destination};
+    f.rule_locs = {a.connection->loc, b.connection->loc};
     f.message = "resource '" + res_.name + "' is not proved for " + pair_name(a, b) + ": '" +
                 r->connection->name + "' is opaque for data (" + why + ")";
     f.notes.push_back({"without its body arbc must assume it can deliver any command", {}});
@@ -249,6 +250,7 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
   Finding f = base_finding(kCheckResource);
   f.rules = {a.connection->name, b.connection->name};
   f.rule_ports = {a.connection->destination, b.connection->destination};
+  f.rule_locs = {a.connection->loc, b.connection->loc};
   f.message =
       pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name + "' (" +
       (same ? "from one " + a.connection->source + " message" : "from two independent messages") +
