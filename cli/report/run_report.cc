@@ -82,6 +82,13 @@ void append_header(std::string& out, const RunHeader& h) {
   }
 }
 
+void append_transport(std::string& out, const TransportSection& t) {
+  if (t.placement.empty() && t.summary.empty()) return;
+  out += "<h2>Transport</h2>\n";
+  if (!t.placement.empty()) out += "<p id=\"transport\">" + escaped(t.placement) + "</p>\n";
+  if (!t.summary.empty()) out += "<pre id=\"transport-summary\">" + escaped(t.summary) + "</pre>\n";
+}
+
 // "1 connection", "2 connections": the totals line is read as a sentence.
 std::string counted(uint64_t n, const std::string& noun, const std::string& plural) {
   return std::to_string(n) + " " + (n == 1 ? noun : plural);
@@ -300,6 +307,7 @@ std::string render_run_report(const RunReportInput& input) {
   out += kReportStyle;
   out += "</style>\n</head>\n<body>\n";
   append_header(out, input.header);
+  append_transport(out, input.transport);
   append_totals(out, input.connections);
   append_timelines(out, input);
   append_drops_by_reason(out, input);

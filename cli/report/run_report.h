@@ -3,9 +3,9 @@
 // page reads the same with scripts off; a few lines of inline script only add a time cursor.
 //
 // Sections: header (app, scenario, seed, the proof, time run, outcome, the environment's
-// summary), totals, the delivery/drop timeline per connection, event presence per port and
-// event, drops by reason, the counters per connection with a totals row, errors and
-// quarantines, and the run's log.
+// summary), the transport (when the run had one), totals, the delivery/drop timeline per
+// connection, event presence per port and event, drops by reason, the counters per connection with
+// a totals row, errors and quarantines, and the run's log.
 #pragma once
 
 #include <cstdint>
@@ -37,8 +37,17 @@ struct ConnectionRow {
   std::string constraint;
 };
 
+// A run over a transport between processes (DDS): what `arbc run` prints about it, so
+// that a page read later still says which topics never heard a peer and how many messages
+// were lost. Both empty in-process: then the page has no transport section.
+struct TransportSection {
+  std::string placement;  // "dds (domain 7, ...)" (cli/run_transport.h)
+  std::string summary;    // the transport's own lines (Transport::summary), shown as they are
+};
+
 struct RunReportInput {
   RunHeader header;
+  TransportSection transport;
   std::vector<ConnectionRow> connections;             // in the app's order
   const std::vector<TraceRecord>* records = nullptr;  // the whole trace, in order
 };

@@ -132,6 +132,28 @@ TEST_F(RunReportTest, OneDeliveryLanePerConnectionAndOneEventLane) {
   EXPECT_GT(count(events, "present "), 5u);
 }
 
+// A run over a transport shows what `arbc run` printed about it (topics that never heard a
+// peer, messages lost), escaped; an in-process run has no such section.
+TEST_F(RunReportTest, ATransportHasItsSectionAndInProcessHasNone) {
+  EXPECT_EQ(run_->html.find("<h2>Transport</h2>"), std::string::npos);
+  RunReportInput input;
+  input.header.app = "split";
+  input.transport.placement = "dds (domain 7, hosting M, mediating <all>)";
+  input.transport.summary =
+      "dds: domain 7, 1 topic(s) read, 0 written\n"
+      "  read  M/x (int): 0 received, 3 lost, 0 undecodable\n"
+      "  never heard a peer: M/x (M.x)\n";
+  std::string html = render_run_report(input);
+  ASSERT_NE(html.find("<h2>Transport</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<p id=\"transport\">dds (domain 7, hosting M, mediating &lt;all&gt;)</p>"),
+            std::string::npos);
+  std::string summary = section(html, "pre", "transport-summary");
+  EXPECT_NE(summary.find("3 lost"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("never heard a peer: M/x (M.x)"), std::string::npos) << summary;
+  // Before the counters: it explains a page of empty timelines.
+  EXPECT_LT(html.find("<h2>Transport</h2>"), html.find("<h2>Counters per connection</h2>"));
+}
+
 // The header says whether the app that ran was proved (issue 13).
 TEST_F(RunReportTest, TheHeaderSaysWhetherTheAppWasProved) {
   EXPECT_NE(run_->html.find("<dt>proof</dt><dd id=\"proof\" class=\"bad\">not verified "

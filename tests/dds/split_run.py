@@ -99,6 +99,10 @@ class Split:
             json.loads(line)  # every line is a JSON record (raises on a torn line)
         html = open(report).read()
         expect("</html>" in html, f"{what}: {role}'s report is not complete", *outputs)
+        # What the run printed about DDS (its topics, messages lost, peers never heard) is on
+        # the page too.
+        expect("<h2>Transport</h2>" in html and "dds: domain" in html,
+               f"{what}: {role}'s report has no transport section", *outputs)
         expect(("interrupted" in html) == interrupted,
                f"{what}: {role}'s report {'does not say' if interrupted else 'says'} it was interrupted",
                *outputs)
