@@ -364,7 +364,10 @@ void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::c
   result.complete = scope.port->complete;
   result.loc = scope.port->loc;
   result.asserts = static_cast<int>(scope.port->asserts.size());
-  for (const ScopedRule& r : scope.rules) result.rules.push_back(rule_name(r));
+  // A feed stays in the encoding (its effective guard is false, so it overlaps nothing) but
+  // is not named among the rules the proof says are never selected together.
+  for (const ScopedRule& r : scope.rules)
+    (feeds_events(*r.connection) ? result.feeds : result.rules).push_back(rule_name(r));
   result.events = scope.events;
   for (const DomainConstraint& d : scope.domain) {
     if (d.is_invariant) {

@@ -85,7 +85,11 @@ struct PortResult {
   bool complete = false;
   model::SourceLocation loc;
   Verdict verdict = Verdict::Proved;
-  std::vector<std::string> rules;       // in spec order
+  // The candidates: rules that can deliver, in spec order. A feed (a rule written `when false`
+  // whose body or script sets or unsets events, as `arbc import yarp` writes a YARP monitor
+  // that only sets events) is never one, so the proof's claim does not name it.
+  std::vector<std::string> rules;
+  std::vector<std::string> feeds;       // the port's feeds, in spec order
   std::vector<std::string> events;      // the port's scope, sorted
   std::vector<std::string> invariants;  // texts of the invariants used
   int exclusive_groups = 0;             // exclusive groups used

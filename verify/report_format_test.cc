@@ -93,6 +93,30 @@ TEST(TextFormat, LongListsAreCutToOneReadableLine) {
   EXPECT_THAT(text, HasSubstr("proved: 1 port, 1000 rules"));
 }
 
+// A feed (`when false`, a script that sets events: what `arbc import yarp` writes for a YARP
+// monitor that only sets events) never delivers, so the proof's claim names only the rules that
+// can; the text, JSON and the summary's rule count agree, and the feed is listed apart.
+TEST(TextFormat, AFeedIsNotAmongTheRulesNeverSelectedTogether) {
+  model::App app = testing::table_clean_model();
+  for (model::Connection& c : app.connections) {
+    if (c.name != "put") continue;
+    c.constraint = Constraint::constant(false);
+    c.opaque = true;
+  }
+  std::vector<InputReport> inputs = reports(app);
+  std::string text = format_text(inputs, nullptr, false);
+  EXPECT_THAT(text, HasSubstr("PickAndPlace.cmd: proved: one rule (take), nothing can overlap"));
+  EXPECT_THAT(text, HasSubstr("\n    event feeds (never deliver): put\n"));
+  EXPECT_THAT(text, HasSubstr("proved: 4 ports, 5 rules;"));
+  nlohmann::json port = nlohmann::json::parse(format_json(inputs, false))["inputs"][0]["ports"][0];
+  ASSERT_EQ(port["port"], "PickAndPlace.cmd");
+  EXPECT_EQ(port["rules"], nlohmann::json::array({"take"}));
+  EXPECT_EQ(port["feeds"], nlohmann::json::array({"put"}));
+  EXPECT_FALSE(nlohmann::json::parse(format_json(reports(testing::table_clean_model()),
+                                                 false))["inputs"][0]["ports"][0]
+                   .contains("feeds"));
+}
+
 TEST(TextFormat, AssertCountAgreesWithItsVerb) {
   VerifyReport report;
   PortResult port;

@@ -89,6 +89,7 @@ Json port_json(const PortResult& p, bool stats) {
   j["complete"] = p.complete;
   j["location"] = location_json(p.loc);
   j["rules"] = p.rules;
+  if (!p.feeds.empty()) j["feeds"] = p.feeds;
   j["events"] = p.events;
   j["invariants"] = p.invariants;
   j["exclusive_groups"] = p.exclusive_groups;

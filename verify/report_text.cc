@@ -42,8 +42,13 @@ std::string port_line(const PortResult& p, bool stats) {
   line += ": ";
   line += verdict_name(p.verdict);
   if (p.verdict == Verdict::Proved) {
-    line += p.rules.size() == 1 ? ": one rule (" + p.rules[0] + "), nothing can overlap"
-                                : ": rules " + listed(p.rules) + " are never selected together";
+    if (p.rules.empty()) {
+      line += ": no rule delivers, nothing can overlap";
+    } else if (p.rules.size() == 1) {
+      line += ": one rule (" + p.rules[0] + "), nothing can overlap";
+    } else {
+      line += ": rules " + listed(p.rules) + " are never selected together";
+    }
     if (p.complete) line += "; some rule is selected in every state";
     if (p.asserts) {
       line += "; " + plural(static_cast<size_t>(p.asserts), "assert") +
@@ -69,6 +74,7 @@ std::string port_line(const PortResult& p, bool stats) {
   line += "\n    over " + plural(p.events.size(), "event") + " (" + listed(p.events) +
           "); invariants used: " + listed(p.invariants);
   if (p.exclusive_groups) line += "; exclusive groups used: " + std::to_string(p.exclusive_groups);
+  if (!p.feeds.empty()) line += "\n    event feeds (never deliver): " + listed(p.feeds);
   line += "\n";
   for (const std::string& d : p.exclusive_by_data) line += "    exclusive by data: " + d + "\n";
   return line;

@@ -8,7 +8,8 @@ its exit code, stdout and stderr with <case>.out. When the case has <case>.spec,
 the folder to a temporary one, runs `arbc import yarp <case>.xml -o <case>.spec` there, compares
 the written spec with <case>.spec, and the import's exit code and stderr (its warnings) followed
 by `arbc verify <case>.spec`'s output with <case>.import.out; it checks that `arbc check` accepts
-the spec and that `arbc verify` gives it the XML's verdict, with and without --strict. Finally
+the spec and that `arbc verify` gives it the XML's verdict, with and without --strict, and counts
+the XML's rules (a feed, `when false`, is none). Finally
 every yarp-* id of `arbc check --list-ids` must appear in some <case>.out or <case>.import.out
 (yarp-spec-name is the import's alone). --update rewrites the .out, .import.out and .spec files
 (review them by eye). Cases share the monitors of monitors/ through symbolic links (YARP follows
@@ -36,7 +37,13 @@ def verify_text(arbc, name, folder):
     return code, f"# arbc verify {name}.xml (exit {code})\n## stdout\n{out}## stderr\n{err}"
 
 
-def check_import(arbc, name, folder, update, xml_code):
+def rules_counted(out):
+    """The summary's rule count ("proved: 1 port, 2 rules; ..."), or None."""
+    m = re.search(r"^[a-z]+: \d+ ports?, (\d+) rules?;", out, re.M)
+    return m and int(m.group(1))
+
+
+def check_import(arbc, name, folder, update, xml_code, xml_rules):
     """Failures of the import half of a case, as a list of strings."""
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -62,6 +69,10 @@ def check_import(arbc, name, folder, update, xml_code):
         if code != xml_code:
             failures.append(f"{name}: the spec verifies with exit {code}, the XML with "
                             f"{xml_code}\n{out}{err}")
+        # A feed (`when false`) is not a rule that delivers, in the XML or in the spec.
+        if xml_rules is not None and rules_counted(out) != xml_rules:
+            failures.append(f"{name}: the spec's summary counts {rules_counted(out)} rules, the "
+                            f"XML's {xml_rules}\n{out}")
         # --strict makes dead and unused rules errors: a feed (`when false`) must not be one.
         strict = [run([arbc, "verify", "--strict", f], copy)[0]
                   for f in (name + ".xml", name + ".spec")]
@@ -93,6 +104,7 @@ def main():
     for name in cases:
         folder = os.path.join(HERE, name)
         code, text = verify_text(arbc, name, folder)
+        xml_rules = rules_counted(text)
         out_path = os.path.join(folder, name + ".out")
         if update:
             open(out_path, "w", encoding="utf-8").write(text)
@@ -105,7 +117,7 @@ def main():
         elif text != expected:
             failures.append(f"{name}: output differs\n--- expected\n{expected}--- actual\n{text}")
         if os.path.exists(os.path.join(folder, name + ".spec")):
-            failures += check_import(arbc, name, folder, update, code)
+            failures += check_import(arbc, name, folder, update, code, xml_rules)
             said_path = os.path.join(folder, name + ".import.out")
             if os.path.exists(said_path):
                 said = open(said_path, encoding="utf-8").read()
