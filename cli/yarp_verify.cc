@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 
+#include "import/yarp/app_xml.h"
 #include "import/yarp/yarp_import.h"
 
 namespace arbc::cli {
@@ -50,7 +52,9 @@ void drop_cross_port_findings(const model::App& app, verify::VerifyReport& repor
 void point_at_scripts(const yarp::YarpImport& im, verify::VerifyReport& report) {
   for (verify::PortResult& p : report.ports) {
     for (verify::Finding& f : p.findings) {
-      if (f.check != verify::kCheckExclusive && f.check != verify::kCheckAssert) continue;
+      if (f.check != verify::kCheckExclusive && f.check != verify::kCheckAssert &&
+          f.check != verify::kCheckUnfed)
+        continue;
       for (const std::string& rule : f.rules) {
         for (size_t i = 0; i < im.app.connections.size(); ++i) {
           const model::Connection& c = im.app.connections[i];
@@ -60,6 +64,58 @@ void point_at_scripts(const yarp::YarpImport& im, verify::VerifyReport& report) 
             continue;
           f.notes.push_back({"'" + rule + "' sets its constraint `" + ic.meaning.text + "` here",
                              ic.monitor->constraint_loc});
+        }
+      }
+    }
+  }
+}
+
+// An event no monitor sets is most often a misspelt constraint, which the proof then takes as
+// free: the overlap it reports follows from the misspelling, so the misspelling goes first.
+void unfed_first(verify::VerifyReport& report) {
+  for (verify::PortResult& p : report.ports) {
+    std::stable_partition(p.findings.begin(), p.findings.end(),
+                          [](const verify::Finding& f) { return f.check == verify::kCheckUnfed; });
+  }
+}
+
+bool same_place(const model::SourceLocation& a, const model::SourceLocation& b) {
+  return a.file == b.file && a.line == b.line && a.column == b.column;
+}
+
+// The setEvent call of `event` in connection i's monitor, if the monitor was read and has one.
+std::optional<model::SourceLocation> set_event_call(const yarp::YarpImport& im, size_t i,
+                                                    const std::string& event) {
+  const yarp::ImportedConnection& ic = im.connections[i];
+  if (!ic.monitor) return std::nullopt;
+  for (const yarp::MonitorCall& c : ic.monitor->facts.calls) {
+    if (c.function == "setEvent" && c.text == event)
+      return yarp::locate(ic.monitor->path, ic.monitor->text, c.line, "setEvent");
+  }
+  return std::nullopt;
+}
+
+// `unfed` speaks the spec: `events from M.p { e }` or `set e` in a monitor, and its "did you
+// mean" points at the connection that sets the close name. A YARP application sets events
+// with PortMonitor.setEvent, and the user fixes the Lua line, so the notes say that and point
+// there.
+void unfed_in_yarp_words(const yarp::YarpImport& im, verify::VerifyReport& report) {
+  for (verify::PortResult& p : report.ports) {
+    for (verify::Finding& f : p.findings) {
+      if (f.check != verify::kCheckUnfed) continue;
+      for (verify::Note& n : f.notes) {
+        if (n.message.rfind("feed it into the port", 0) == 0) {
+          n.message = "set it with PortMonitor.setEvent(\"" + f.event +
+                      "\") in the monitor of a connection into " + p.port +
+                      ", or correct the name where the constraint reads it";
+        } else if (n.message.rfind("did you mean '", 0) == 0) {
+          size_t from = n.message.find('\'') + 1;
+          std::string meant = n.message.substr(from, n.message.find('\'', from) - from);
+          for (size_t i = 0; i < im.app.connections.size(); ++i) {
+            const model::Connection& c = im.app.connections[i];
+            if (c.destination != p.port || !same_place(c.loc, n.loc)) continue;
+            if (std::optional<model::SourceLocation> at = set_event_call(im, i, meant)) n.loc = *at;
+          }
         }
       }
     }
@@ -138,6 +194,8 @@ YarpVerify verify_yarp_application(const std::string& xml, const verify::VerifyO
   out.report = std::move(*report);
   drop_cross_port_findings(im.app, out.report);
   point_at_scripts(im, out.report);
+  unfed_in_yarp_words(im, out.report);
+  unfed_first(out.report);
   put_causes_first(im, out.report);
   recompute_verdicts(out.report);
   out.ok = true;

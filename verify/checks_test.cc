@@ -186,6 +186,30 @@ TEST(Checks, UnfedWhenAFeedIsMissing) {
   EXPECT_EQ(report.verdict, Verdict::Refuted);
 }
 
+// A misspelt read (`e_arm_idl`) where the port sets a close name: the note names it and points
+// at the connection that sets it. An event no close name is set for gets no guess.
+TEST(Checks, UnfedSaysWhichCloseEventThePortSets) {
+  model::App app = testing::table_clean_model();
+  connection(app, "take").constraint = parse("not e_taken and e_arm_idl and e_pull_idle");
+  VerifyReport report = run(app);
+  auto unfed = findings(report, "unfed");
+  ASSERT_EQ(unfed.size(), 1u);
+  EXPECT_EQ(unfed[0]->event, "e_arm_idl");
+  ASSERT_GE(unfed[0]->notes.size(), 2u);
+  EXPECT_EQ(unfed[0]->notes[0].message,
+            "did you mean 'e_arm_idle'? the connection from PickAndPlace.status sets it");
+  EXPECT_GT(unfed[0]->notes[0].loc.line, 0);
+
+  model::App missing = testing::table_clean_model();
+  std::erase_if(missing.connections, [](const model::Connection& c) {
+    return c.name == "feed_PullObject_status__PickAndPlace_cmd";
+  });
+  VerifyReport far = run(missing);
+  auto none = findings(far, "unfed");
+  ASSERT_EQ(none.size(), 1u);
+  for (const Note& n : none[0]->notes) EXPECT_THAT(n.message, Not(HasSubstr("did you mean")));
+}
+
 TEST(Checks, UnfedIsNotReportedWhenAScriptRuleMaySetTheEvent) {
   model::App app = testing::table_clean_model();
   std::erase_if(app.connections, [](const model::Connection& c) {

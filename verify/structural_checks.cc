@@ -5,6 +5,8 @@
 #include <set>
 #include <span>
 
+#include "core/suggest.h"
+
 namespace arbc::verify {
 namespace {
 
@@ -93,13 +95,16 @@ using Reads = std::map<std::string, std::map<std::string, Read>>;  // port -> ev
 void check_unfed(const model::App& app, const Reads& reads, std::vector<Finding>& out) {
   for (const model::ArbitratedPort& port : app.arbitrated_ports) {
     std::set<std::string> fed;
+    std::map<std::string, const model::Connection*> setter;  // each fed event's first setter
     bool opaque_feeds = false;  // a `script` monitor may set any event: nothing is provably unfed
     for (const model::Connection* c : app.connections_into(port.port)) {
       std::set<std::string> s = events_set_by(*c);
       fed.insert(s.begin(), s.end());
+      for (const std::string& e : s) setter.emplace(e, c);
       opaque_feeds |= c->opaque;
     }
     if (opaque_feeds) continue;
+    std::vector<std::string> fed_names(fed.begin(), fed.end());
     for (const auto& [event, read] : reads.at(port.port)) {
       if (fed.count(event)) continue;
       Finding f;
@@ -111,6 +116,13 @@ void check_unfed(const model::App& app, const Reads& reads, std::vector<Finding>
       f.loc = read.loc;
       f.message = read.reader + " of " + port.port + " reads event '" + event +
                   "', but no connection into " + port.port + " sets it, so it is never present";
+      // A misspelt event (a constraint `e_bal` where a monitor sets `e_ball`) is the likely
+      // cause when a set event is a typo away: say which, and who sets it.
+      if (std::optional<std::string> meant = closest_name(event, fed_names)) {
+        f.notes.push_back({"did you mean '" + *meant + "'? the connection from " +
+                               setter.at(*meant)->source + " sets it",
+                           setter.at(*meant)->loc});
+      }
       f.notes.push_back({"feed it into the port: `events from M.p { " + event +
                              " }`, a derived event, or `set " + event +
                              "` in a monitor on a connection into " + port.port,
