@@ -48,7 +48,16 @@ void drop_cross_port_findings(const model::App& app, verify::VerifyReport& repor
   std::erase_if(report.app_findings, cross_port);
 }
 
-// A note at the Lua line that sets each involved rule's constraint.
+// Where the monitor defines PortMonitor.create (where a constraint is set), else `fallback`.
+model::SourceLocation create_call(const yarp::MonitorAnalysis& m,
+                                  const model::SourceLocation& fallback) {
+  size_t at = m.text.find("PortMonitor.create");
+  if (at == std::string::npos) return fallback;
+  int line = 1 + static_cast<int>(std::count(m.text.begin(), m.text.begin() + at, '\n'));
+  return yarp::locate(m.path, m.text, line, "PortMonitor.create");
+}
+
+// A note at the Lua line that sets each involved rule's constraint, or where it would.
 void point_at_scripts(const yarp::YarpImport& im, verify::VerifyReport& report) {
   for (verify::PortResult& p : report.ports) {
     for (verify::Finding& f : p.findings) {
@@ -59,11 +68,16 @@ void point_at_scripts(const yarp::YarpImport& im, verify::VerifyReport& report) 
         for (size_t i = 0; i < im.app.connections.size(); ++i) {
           const model::Connection& c = im.app.connections[i];
           const yarp::ImportedConnection& ic = im.connections[i];
-          if (c.destination != p.port || c.name != rule || !ic.analysed || !ic.monitor ||
-              !ic.monitor->has_constraint)
-            continue;
-          f.notes.push_back({"'" + rule + "' sets its constraint `" + ic.meaning.text + "` here",
-                             ic.monitor->constraint_loc});
+          if (c.destination != p.port || c.name != rule || !ic.analysed || !ic.monitor) continue;
+          if (ic.monitor->has_constraint) {
+            f.notes.push_back({"'" + rule + "' sets its constraint `" + ic.meaning.text + "` here",
+                               ic.monitor->constraint_loc});
+          } else if (f.check == verify::kCheckExclusive) {
+            f.notes.push_back({"'" + rule +
+                                   "' sets no constraint (no PortMonitor.setConstraint in its " +
+                                   "create), so YARP selects it whatever the events: set one here",
+                               create_call(*ic.monitor, ic.xml.protocol_loc)});
+          }
         }
       }
     }
@@ -95,13 +109,22 @@ std::optional<model::SourceLocation> set_event_call(const yarp::YarpImport& im, 
   return std::nullopt;
 }
 
-// `unfed` speaks the spec: `events from M.p { e }` or `set e` in a monitor, and its "did you
-// mean" points at the connection that sets the close name. A YARP application sets events
-// with PortMonitor.setEvent, and the user fixes the Lua line, so the notes say that and point
-// there.
-void unfed_in_yarp_words(const yarp::YarpImport& im, verify::VerifyReport& report) {
+// The verifier's advice speaks the spec: an `exclusive` group or `invariant` to declare,
+// `events from M.p { e }` or `set e` in a monitor, a "did you mean" at the connection that sets
+// the close name. A YARP application has no such declarations, sets events with
+// PortMonitor.setEvent, and the user fixes the Lua line, so the notes say that and point there.
+void advice_in_yarp_words(const yarp::YarpImport& im, verify::VerifyReport& report) {
   for (verify::PortResult& p : report.ports) {
     for (verify::Finding& f : p.findings) {
+      if (f.check == verify::kCheckExclusive) {
+        for (verify::Note& n : f.notes) {
+          if (n.message.rfind("make the constraints exclusive", 0) != 0) continue;
+          n.message =
+              "make the constraints exclusive (`not EVENT` in one monitor's "
+              "PortMonitor.setConstraint), or have the monitors that set the events never leave "
+              "this state (unset one event as they set the other)";
+        }
+      }
       if (f.check != verify::kCheckUnfed) continue;
       for (verify::Note& n : f.notes) {
         if (n.message.rfind("feed it into the port", 0) == 0) {
@@ -194,7 +217,7 @@ YarpVerify verify_yarp_application(const std::string& xml, const verify::VerifyO
   out.report = std::move(*report);
   drop_cross_port_findings(im.app, out.report);
   point_at_scripts(im, out.report);
-  unfed_in_yarp_words(im, out.report);
+  advice_in_yarp_words(im, out.report);
   unfed_first(out.report);
   put_causes_first(im, out.report);
   recompute_verdicts(out.report);

@@ -12,6 +12,7 @@ namespace {
 
 using testing::arbitrated;
 using testing::connection;
+using ::testing::Contains;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -208,6 +209,21 @@ TEST(Checks, UnfedSaysWhichCloseEventThePortSets) {
   auto none = findings(far, "unfed");
   ASSERT_EQ(none.size(), 1u);
   for (const Note& n : none[0]->notes) EXPECT_THAT(n.message, Not(HasSubstr("did you mean")));
+}
+
+// A `when` that cannot be false overlaps whatever the events: the counterexample says so of it
+// instead of naming the state's events as if they were why; the other rule's note is as before.
+TEST(Checks, AConstraintTrueWhateverTheEventsIsSaidToHoldInEveryState) {
+  model::App app = testing::table_clean_model();
+  connection(app, "take").constraint = parse("e_taken or not e_taken");
+  VerifyReport report = run(app);
+  auto overlap = findings(report, "exclusive");
+  ASSERT_EQ(overlap.size(), 1u);
+  std::vector<std::string> notes;
+  for (const Note& n : overlap[0]->notes) notes.push_back(n.message);
+  EXPECT_THAT(notes, Contains("'take' holds in every state: `e_taken or not e_taken` is true "
+                              "whatever the events"));
+  EXPECT_THAT(notes, Contains(HasSubstr("'put' holds: `e_taken and e_arm_idle` with")));
 }
 
 TEST(Checks, UnfedIsNotReportedWhenAScriptRuleMaySetTheEvent) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "core/join.h"
 #include "verify/data_assert.h"
@@ -42,12 +43,36 @@ bool feeds_events(const model::Connection& c) {
                      [&](const std::string& e) { return e != c.activity_event; });
 }
 
+// Does `c` hold whatever the events are (`true`, `e_ball or not e_ball`)? Decided by the
+// runtime's evaluator on every state of the events it reads, so only for a few of them.
+bool holds_whatever_the_events(const Constraint& c) {
+  std::set<std::string> read;
+  c.collect_events(read);
+  std::vector<std::string> events(read.begin(), read.end());
+  if (events.size() > 10) return false;
+  for (unsigned bits = 0; bits < (1u << events.size()); ++bits) {
+    std::vector<std::string> present;
+    for (size_t i = 0; i < events.size(); ++i)
+      if (bits & (1u << i)) present.push_back(events[i]);
+    if (!runtime_holds(c, present)) return false;
+  }
+  return true;
+}
+
 // Why rule r holds (or fails) in the state: its constraint, the events it reads, the events
 // its own monitor sets or unsets before the decision, and its activity event.
 Note explain_rule(const ScopedRule& r, const std::vector<std::string>& present, bool holds) {
+  const Constraint& when = r.connection->constraint;
   std::string m = "'" + rule_name(r) + "' " + (holds ? "holds" : "does not hold") + ": `" +
-                  r.connection->constraint.to_string() + "` with " +
-                  describe_state(r.connection->constraint, present);
+                  when.to_string() + "` with " + describe_state(when, present);
+  // A constraint that cannot be false is the overlap's cause however the events fall: say so
+  // rather than let the state look like the reason.
+  if (holds && holds_whatever_the_events(when)) {
+    std::set<std::string> read;
+    when.collect_events(read);
+    m = "'" + rule_name(r) + "' holds in every state: `" + when.to_string() + "` " +
+        (read.empty() ? "reads no events" : "is true whatever the events");
+  }
   if (!r.forced_present.empty()) {
     m += "; its monitor sets " + list(r.forced_present) + " on every accepting path";
   }
