@@ -137,8 +137,7 @@ std::optional<Json> temporal_result(const TemporalResult& t) {
   Json r;
   r["ruleId"] = violated ? kCheckTemporal : kCheckUnknown;
   r["level"] = "error";
-  std::string what = temporal::temporal_text(t);
-  r["message"] = {{"text", what.substr(what.find_first_not_of(' '))}};
+  r["message"] = {{"text", temporal::temporal_message(t)}};
   r["locations"] = Json::array();
   if (!t.property.loc.file.empty()) r["locations"].push_back(sarif_location(t.property.loc));
   // The rates (`given M.p every D`) the verdict relies on, where the spec states them.

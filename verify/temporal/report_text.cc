@@ -16,29 +16,39 @@ namespace {
 constexpr const char* kAssumptions =
     "    assuming: sources publish at any times; monitors accept or reject any message (data is\n"
     "    not modelled); exclusive groups and invariants are not used\n";
+constexpr const char* kAssumptionsLine =
+    "assuming: sources publish at any times; monitors accept or reject any message (data is not "
+    "modelled); exclusive groups and invariants are not used\n";
 
 // The spec's environment assumptions the verdict is under, one line each (none: nothing).
-std::string environment_text(const TemporalResult& r) {
+std::string environment_text(const TemporalResult& r, bool plain) {
   std::string out;
   for (const model::Assumption& a : r.assumptions) {
     std::string where = a.loc.line ? " (line " + std::to_string(a.loc.line) + ")" : "";
-    out += "    assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
+    out += std::string(plain ? "" : "    ") +
+           "assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
   }
   return out;
 }
 
 std::string wrap(const std::string& text, const std::string& by, size_t width = 96);
 
+// A sentence of the report: wrapped and indented in the text report; one line as it is in a
+// diagnostic's message (SARIF), whose viewer wraps it.
+std::string paragraph(const std::string& text, bool plain) {
+  return plain ? text + "\n" : wrap(text, "    ");
+}
+
 // The assumptions line; the rates the verdict relies on replace "at any times" for their sources.
-std::string assumptions(const TemporalResult& r) {
-  if (r.rates.empty()) return kAssumptions;
+std::string assumptions(const TemporalResult& r, bool plain) {
+  if (r.rates.empty()) return plain ? kAssumptionsLine : kAssumptions;
   std::string out = "assuming:";
   for (const model::SourceRate& rate : r.rates) out += " " + rate_words(rate) + ";";
-  return wrap(out +
-                  " other sources publish at any times; monitors accept or reject any message "
-                  "(data is not modelled; a rule with no `accept` accepts every message); "
-                  "exclusive groups and invariants are not used",
-              "    ");
+  return paragraph(out +
+                       " other sources publish at any times; monitors accept or reject any "
+                       "message (data is not modelled; a rule with no `accept` accepts every "
+                       "message); exclusive groups and invariants are not used",
+                   plain);
 }
 
 std::string property_text(const model::TemporalProperty& p) {
@@ -47,10 +57,11 @@ std::string property_text(const model::TemporalProperty& p) {
 }
 
 // "    at 0.25s  ObjectDetector.objects -> take: accepted, delivered; sets e_x"
-std::string step_text(const TraceStep& s) {
+std::string step_text(const TraceStep& s, bool plain) {
   char time[32];
   std::snprintf(time, sizeof time, "%-8s", (time_text(s.time) + "s").c_str());
-  std::string line = "    at " + std::string(time) + " " + s.source + " -> " + s.connection + ": ";
+  std::string line = (plain ? "at " + time_text(s.time) + "s:" : "    at " + std::string(time)) +
+                     " " + s.source + " -> " + s.connection + ": ";
   line += s.feed        ? "feed"
           : s.delivered ? "accepted, delivered"
           : s.accepted  ? "accepted, not delivered"
@@ -115,24 +126,28 @@ std::string spec_name(const model::TemporalProperty& p) {
   return slash == std::string::npos ? file : file.substr(slash + 1);
 }
 
-std::string temporal_text(const TemporalResult& r) {
+namespace {
+
+// The text report's lines (`plain` false), or a diagnostic's message at the property (`plain`).
+std::string render(const TemporalResult& r, bool plain) {
   const std::string port = r.property.port;
-  std::string out = "  " + property_text(r.property) + ": ";
+  std::string out =
+      plain ? property_words(r.property) + ": " : "  " + property_text(r.property) + ": ";
   std::string messages = std::to_string(r.bound) + " message" + (r.bound == 1 ? "" : "s");
   switch (r.outcome) {
     case TemporalResult::Outcome::HoldsToBound:
       out += "holds up to " + messages + " into " + port + " (bounded; not proved)\n";
       // The rates force messages in, so the bound is also a limit on time: say which.
       if (r.window_bound > r.bound) {
-        out += wrap("with the rates given, no window closes within " + messages + " into " + port +
-                        ", so this says nothing (temporal-bound, above)",
-                    "    ");
+        out += paragraph("with the rates given, no window closes within " + messages + " into " +
+                             port + ", so this says nothing (temporal-bound, above)",
+                         plain);
       } else if (r.rated_span > 0) {
-        out += wrap("with the rates given, the runs searched (" + messages + " into " + port +
-                        ") last at most " + time_text(r.rated_span) +
-                        "s: a violation that needs a longer run is not searched "
-                        "(--temporal-bound N searches further)",
-                    "    ");
+        out += paragraph("with the rates given, the runs searched (" + messages + " into " + port +
+                             ") last at most " + time_text(r.rated_span) +
+                             "s: a violation that needs a longer run is not searched "
+                             "(--temporal-bound N searches further)",
+                         plain);
       }
       break;
     case TemporalResult::Outcome::Proved:
@@ -141,19 +156,36 @@ std::string temporal_text(const TemporalResult& r) {
       break;
     case TemporalResult::Outcome::Unknown:
       out += "unknown (" + r.unknown_reason + ") after " + messages + " into " + port + "\n";
-      for (const TraceStep& s : r.trace) out += step_text(s);
+      for (const TraceStep& s : r.trace) out += step_text(s, plain);
       break;
     case TemporalResult::Outcome::Violated:
       out += "violated: a shortest trace of " + messages + " into " + port + ":\n";
-      for (const TraceStep& s : r.trace) out += step_text(s);
-      if (!r.explanation.empty()) out += wrap(r.explanation, "    ");
+      for (const TraceStep& s : r.trace) out += step_text(s, plain);
+      if (!r.explanation.empty()) out += paragraph(r.explanation, plain);
+      if (plain) {
+        out +=
+            "replayed on the runtime in simulated time, which shows the violation "
+            "(the tests file is the result's properties.test; --counterexamples DIR writes "
+            "it)\n";
+        break;
+      }
       out +=
           "    replayed on the runtime in simulated time, which shows the violation; as a tests\n"
           "    file (--counterexamples DIR writes it):\n";
       out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
       break;
   }
-  return out + assumptions(r) + environment_text(r);
+  return out + assumptions(r, plain) + environment_text(r, plain);
+}
+
+}  // namespace
+
+std::string temporal_text(const TemporalResult& r) { return render(r, false); }
+
+std::string temporal_message(const TemporalResult& r) {
+  std::string text = render(r, true);
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  return text;
 }
 
 }  // namespace arbc::verify::temporal

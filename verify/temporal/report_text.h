@@ -11,6 +11,11 @@ namespace arbc::verify::temporal {
 // "  never two take within 1s (spec:70): ..." and, when violated, one line per step.
 std::string temporal_text(const TemporalResult& r);
 
+// The same as a diagnostic's message at the property (SARIF's result): the location says where,
+// so no "(file:line)"; each step and each sentence one line, not wrapped or indented (the
+// viewer wraps); the tests file of a violation is not repeated (SARIF's properties.test has it).
+std::string temporal_message(const TemporalResult& r);
+
 // The summary's count of properties by outcome, zero counts left out: "1 violated, 1 proved",
 // "2 hold up to the bound". `counts` is indexed by TemporalResult::Outcome.
 std::string outcome_counts(const size_t counts[4]);
