@@ -1,5 +1,6 @@
 #include "verify/temporal/assumption.h"
 
+#include "core/duration_literal.h"
 #include "core/time_text.h"
 #include "verify/temporal/unrolling.h"
 
@@ -7,7 +8,8 @@ namespace arbc::verify::temporal {
 
 std::string assumption_words(const model::Assumption& a) {
   if (a.absent_for)
-    return "assume not " + a.event + " for " + time_text(*a.absent_for) + "s after " + a.after;
+    return "assume not " + a.event + " for " + duration_literal(*a.absent_for) + " after " +
+           a.after;
   return "assume " + a.event + " only after " + a.after +
          (a.until.empty() ? "" : " until " + a.until);
 }

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/property.h"
@@ -150,7 +151,7 @@ class Builder {
       e.value = w->emitted[0];
       e.from = e.to = t;
       e.text = c.destination + " receives " + spec_value_text(w->emitted[0]) + " at " +
-               time_text(t) + "s";
+               duration_literal(t);
       test.expectations.push_back(std::move(e));
     }
     return true;
@@ -190,7 +191,7 @@ std::string test_file_text(const model::TestCase& test, const std::string& spec_
       "tests for \"" +
       spec_path + "\";\n\ntest \"" + test.name + "\" {\n";
   for (const model::TestStep& s : test.steps) {
-    out += "  at " + time_text(s.t) + "s ";
+    out += "  at " + duration_literal(s.t) + " ";
     switch (s.kind) {
       case model::TestStep::Kind::Input:
         out += s.port + " <- " + spec_value_text(s.value) + ";\n";

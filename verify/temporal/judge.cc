@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/duration_literal.h"
 #include "core/instant.h"
 #include "core/join.h"
 #include "core/time_text.h"
@@ -17,7 +18,7 @@ using Kind = ReplayRecord::Kind;
 
 std::string at_times(const std::vector<double>& times) {
   std::vector<std::string> at;
-  for (double t : times) at.push_back(time_text(t) + "s");
+  for (double t : times) at.push_back(duration_literal(t));
   return at.empty() ? std::string("no time") : join(at);
 }
 
@@ -84,7 +85,7 @@ bool precedence(const model::TemporalProperty& p, const std::vector<ReplayRecord
     } else {
       continue;
     }
-    order.push_back(r.connection + " at " + time_text(r.t) + "s");
+    order.push_back(r.connection + " at " + duration_literal(r.t));
   }
   *seen = "the deliveries were " + (order.empty() ? std::string("none") : join(order));
   return false;
@@ -98,7 +99,7 @@ bool stability(const model::TemporalProperty& p, const std::vector<ReplayRecord>
   std::vector<std::string> order;
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) continue;
-    order.push_back(r.connection + " at " + time_text(r.t) + "s");
+    order.push_back(r.connection + " at " + duration_literal(r.t));
     if (!last.empty() && r.connection != last) switches.push_back(r.t);
     last = r.connection;
   }
@@ -125,8 +126,8 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
     if (a.absent_for) {
       if (last_after && !reached(r.t - *last_after, *a.absent_for) && event.present(r.t)) {
         *broken = a.event + " was present when '" + r.connection + "' delivered at " +
-                  time_text(r.t) + "s, less than " + time_text(*a.absent_for) + "s after " +
-                  a.after + " delivered at " + time_text(*last_after) + "s";
+                  duration_literal(r.t) + ", less than " + duration_literal(*a.absent_for) +
+                  " after " + a.after + " delivered at " + duration_literal(*last_after);
         return false;
       }
       if (r.connection == a.after) last_after = r.t;
@@ -134,7 +135,7 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
     }
     if (!armed && event.present(r.t)) {
       *broken = a.event + " was present when '" + r.connection + "' delivered at " +
-                time_text(r.t) + "s, before " + a.after + " delivered" +
+                duration_literal(r.t) + ", before " + a.after + " delivered" +
                 (a.until.empty() ? "" : " (or after " + a.until + " did)");
       return false;
     }

@@ -3,6 +3,7 @@
 #include <map>
 #include <set>
 
+#include "core/duration_literal.h"
 #include "core/instant.h"
 #include "core/join.h"
 #include "core/time_text.h"
@@ -62,14 +63,14 @@ bool response_violated(const model::TemporalProperty& p, const std::vector<Repla
       event.apply(r);
       if (before || !event.present(r.t)) continue;
       if (unanswered(p, records, i)) return true;
-      order.push_back(p.event + " present at " + time_text(r.t) + "s");
+      order.push_back(p.event + " present at " + duration_literal(r.t));
       continue;
     }
     // A delivery of the trigger opens a window that only a later delivery answers (with the
     // port answering, the trigger rule is one of the port's rules too).
     if (r.connection == p.other && unanswered(p, records, i)) return true;
     if (r.connection == p.other || r.connection == p.rule || p.rule.empty())
-      order.push_back(r.connection + " at " + time_text(r.t) + "s");
+      order.push_back(r.connection + " at " + duration_literal(r.t));
   }
   std::string trigger = p.event.empty() ? p.other : p.event;
   *seen = "the deliveries and triggers were " +

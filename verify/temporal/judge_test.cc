@@ -99,7 +99,7 @@ TEST(Judge, AReplayMustKeepTheAssumptionAtEachDelivery) {
                       &broken));
   // Reported before any take.
   EXPECT_FALSE(replay_respects(a, {set(0, "h", "e_taken", -1), deliver(0.1, "put")}, &broken));
-  EXPECT_NE(broken.find("e_taken was present when 'put' delivered at 0.1s"), std::string::npos)
+  EXPECT_NE(broken.find("e_taken was present when 'put' delivered at 100ms"), std::string::npos)
       << broken;
   // Still reported at a delivery after the put.
   EXPECT_FALSE(replay_respects(
@@ -122,7 +122,7 @@ TEST(Judge, ASpacingAfterAnotherRuleMeasuresFromItsLastDelivery) {
       p,
       {deliver(0, "search"), deliver(0.1, "search"), deliver(0.2, "track"), deliver(1.2, "search")},
       &seen));
-  EXPECT_NE(seen.find("'search' delivered at 0s, 0.1s, 1.2s, 'track' at 0.2s"), std::string::npos)
+  EXPECT_NE(seen.find("'search' delivered at 0s, 100ms, 1.2s, 'track' at 200ms"), std::string::npos)
       << seen;
   // A later track restarts the window.
   EXPECT_TRUE(replay_violates(
@@ -141,7 +141,7 @@ TEST(Judge, AReplayMustKeepTheTimedAssumptionForItsWindow) {
   // Still present half a second after the take.
   EXPECT_FALSE(replay_respects(
       a, {set(0, "h", "e_arm_idle", -1), deliver(0, "take"), deliver(0.5, "take")}, &broken));
-  EXPECT_NE(broken.find("e_arm_idle was present when 'take' delivered at 0.5s, less than 1s "
+  EXPECT_NE(broken.find("e_arm_idle was present when 'take' delivered at 500ms, less than 1s "
                         "after take delivered at 0s"),
             std::string::npos)
       << broken;

@@ -1,5 +1,6 @@
 #include "verify/temporal/property.h"
 
+#include "core/duration_literal.h"
 #include "core/time_text.h"
 #include "verify/temporal/absence.h"
 #include "verify/temporal/precedence.h"
@@ -34,8 +35,8 @@ std::string property_words(const model::TemporalProperty& p) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
       if (!p.other.empty())
-        return "never " + p.rule + " within " + time_text(p.window) + "s after " + p.other;
-      return "never two " + p.rule + " within " + time_text(p.window) + "s";
+        return "never " + p.rule + " within " + duration_literal(p.window) + " after " + p.other;
+      return "never two " + p.rule + " within " + duration_literal(p.window);
     case model::TemporalProperty::Kind::Absence:
       return "never " + p.rule + " while " + p.event;
     case model::TemporalProperty::Kind::Precedence:
@@ -43,12 +44,12 @@ std::string property_words(const model::TemporalProperty& p) {
     case model::TemporalProperty::Kind::Response: {
       std::string words = "after " + (p.event.empty() ? p.other : p.event) +
                           (p.stops ? " stops, " : ", ") + (p.rule.empty() ? p.port : p.rule) +
-                          " within " + time_text(p.window) + "s";
+                          " within " + duration_literal(p.window);
       if (p.condition.op != Constraint::Op::True) words += " while " + p.condition.to_string();
       return words;
     }
     case model::TemporalProperty::Kind::Stability:
-      return "stable " + p.port + " for " + time_text(p.window) + "s";
+      return "stable " + p.port + " for " + duration_literal(p.window);
   }
   return p.rule;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/duration_literal.h"
 #include "core/time_text.h"
 
 namespace arbc::verify::temporal {
@@ -112,7 +113,7 @@ bool accepts_every_message(const model::Connection& c) {
 
 std::string rate_words(const model::SourceRate& r) {
   std::string where = r.loc.line ? " (" + r.loc.file + ":" + std::to_string(r.loc.line) + ")" : "";
-  return "given " + r.port + " every " + time_text(r.period) + "s" + where;
+  return "given " + r.port + " every " + duration_literal(r.period) + where;
 }
 
 }  // namespace arbc::verify::temporal

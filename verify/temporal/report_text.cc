@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/assumption.h"
@@ -56,12 +57,13 @@ std::string property_text(const model::TemporalProperty& p) {
   return property_words(p) + where;
 }
 
-// "    at 0.25s  ObjectDetector.objects -> take: accepted, delivered; sets e_x"
+// "    at 250ms    ObjectDetector.objects -> take: accepted, delivered; sets e_x"
 std::string step_text(const TraceStep& s, bool plain) {
   char time[32];
-  std::snprintf(time, sizeof time, "%-8s", (time_text(s.time) + "s").c_str());
-  std::string line = (plain ? "at " + time_text(s.time) + "s:" : "    at " + std::string(time)) +
-                     " " + s.source + " -> " + s.connection + ": ";
+  std::snprintf(time, sizeof time, "%-8s", (duration_literal(s.time)).c_str());
+  std::string line =
+      (plain ? "at " + duration_literal(s.time) + ":" : "    at " + std::string(time)) + " " +
+      s.source + " -> " + s.connection + ": ";
   line += s.feed        ? "feed"
           : s.delivered ? "accepted, delivered"
           : s.accepted  ? "accepted, not delivered"
@@ -144,8 +146,8 @@ std::string render(const TemporalResult& r, bool plain) {
                          plain);
       } else if (r.rated_span > 0) {
         out += paragraph("with the rates given, the runs searched (" + messages + " into " + port +
-                             ") last at most " + time_text(r.rated_span) +
-                             "s: a violation that needs a longer run is not searched "
+                             ") last at most " + duration_literal(r.rated_span) +
+                             ": a violation that needs a longer run is not searched "
                              "(--temporal-bound N searches further)",
                          plain);
       }

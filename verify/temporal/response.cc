@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/bmc.h"
@@ -69,8 +70,8 @@ std::string explain(const TemporalResult& r, const model::TemporalProperty& p, s
   std::string out;
   if (i < r.trace.size())
     out = (p.event.empty() ? "'" + p.other + "' delivered" : p.event + " became present") + " at " +
-          time_text(r.trace[i].time) + "s and time reached " +
-          time_text(r.trace[i].time + p.window) + "s with no delivery of " + answer;
+          duration_literal(r.trace[i].time) + " and time reached " +
+          duration_literal(r.trace[i].time + p.window) + " with no delivery of " + answer;
   if (!unrated.empty()) {
     bool one = unrated.size() == 1;
     out += "; no rate is given for " + join(unrated) + ", the source" + (one ? "" : "s") + " of " +

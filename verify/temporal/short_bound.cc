@@ -1,5 +1,6 @@
 #include "verify/temporal/short_bound.h"
 
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/time_text.h"
 #include "verify/temporal/property.h"
@@ -17,8 +18,8 @@ std::optional<Finding> short_bound_finding(const TemporalResult& t, bool strict)
   if (!t.property.rule.empty()) f.rules = {t.property.rule};
   f.loc = t.property.loc;
   f.message = "'" + property_words(t.property) + "' holds up to " + std::to_string(t.bound) +
-              " messages only because no window of " + time_text(t.property.window) +
-              "s fits in a run that short: at the rates given, " + std::to_string(t.bound) +
+              " messages only because no window of " + duration_literal(t.property.window) +
+              " fits in a run that short: at the rates given, " + std::to_string(t.bound) +
               " messages come sooner, so the search shows nothing about it";
   std::vector<std::string> rates;
   for (const model::SourceRate& r : t.rates) rates.push_back(rate_words(r));

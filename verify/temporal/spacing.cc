@@ -1,5 +1,6 @@
 #include "verify/temporal/spacing.h"
 
+#include "core/duration_literal.h"
 #include "core/time_text.h"
 #include "verify/temporal/bmc.h"
 #include "verify/temporal/induction.h"
@@ -13,7 +14,7 @@ namespace {
 // any two are at least the period, hence the window, apart. Empty when it does not apply.
 std::string throttle_proof(const model::Connection& c, double window) {
   if (!c.throttle || *c.throttle < window) return "";
-  std::string period = time_text(*c.throttle) + "s";
+  std::string period = duration_literal(*c.throttle);
   return "'" + c.name + "' has `throttle " + period +
          ";`, at least the window, and the runtime drops a delivery less than " + period +
          " after the last one";
