@@ -75,7 +75,8 @@ void add_finding(const model::App& app, const verify::Finding& f, std::vector<Di
 }
 
 // A property over time that is violated or undecided, at the property: what the CLI prints
-// (the trace, its replay, the assumptions), with the rates it relies on as related places.
+// (the trace, its replay and tests file, the assumptions) as lines the editor's float wraps,
+// with the rates it relies on as related places.
 void add_temporal(const verify::TemporalResult& t, std::vector<Diagnostic>& out) {
   using Outcome = verify::TemporalResult::Outcome;
   if (t.outcome != Outcome::Violated && t.outcome != Outcome::Unknown) return;
@@ -83,9 +84,7 @@ void add_temporal(const verify::TemporalResult& t, std::vector<Diagnostic>& out)
   d.severity = t.outcome == Outcome::Violated ? Severity::Error : Severity::Warning;
   d.id = t.outcome == Outcome::Violated ? verify::kCheckTemporal : verify::kCheckUnknown;
   d.loc = t.property.loc;
-  std::string text = verify::temporal::temporal_text(t);
-  d.message = text.substr(std::min(text.find_first_not_of(' '), text.size()));
-  while (!d.message.empty() && d.message.back() == '\n') d.message.pop_back();
+  d.message = verify::temporal::temporal_editor_message(t);
   for (const model::SourceRate& rate : t.rates) {
     Diagnostic n;
     n.severity = Severity::Note;

@@ -777,6 +777,12 @@ class Verification(Session):
         self.assertIn("never two plan within 1s", d["message"])
         self.assertIn("violated: a shortest trace of 2 messages into Gripper.cmd", d["message"])
         self.assertIn("replayed on the runtime in simulated time", d["message"])
+        # One line per step and sentence, for the editor's float to wrap; the file:line is the
+        # diagnostic's place, not text; the replayed tests file is there to copy.
+        self.assertRegex(d["message"], r"(?m)^at \S+: \S+ -> plan: accepted, delivered$")
+        self.assertNotIn("\n    ", d["message"])
+        self.assertNotIn("gripper.spec:", d["message"])
+        self.assertIn('tests for "', d["message"])
 
     def test_a_proofs_summary_goes_to_the_clients_log_not_stderr(self):
         # Neovim records each line of a server's stderr as an [ERROR] in its lsp.log.

@@ -130,8 +130,13 @@ std::string spec_name(const model::TemporalProperty& p) {
 
 namespace {
 
-// The text report's lines (`plain` false), or a diagnostic's message at the property (`plain`).
-std::string render(const TemporalResult& r, bool plain) {
+// Who reads the verdict: the text report (wrapped and indented), SARIF (one line per step and
+// sentence; the tests file is the result's properties.test) or an editor (one line per step and
+// sentence, with the tests file, which the editor has nowhere else to show).
+enum class Reader { Report, Sarif, Editor };
+
+std::string render(const TemporalResult& r, Reader reader) {
+  const bool plain = reader != Reader::Report;
   const std::string port = r.property.port;
   std::string out =
       plain ? property_words(r.property) + ": " : "  " + property_text(r.property) + ": ";
@@ -164,11 +169,18 @@ std::string render(const TemporalResult& r, bool plain) {
       out += "violated: a shortest trace of " + messages + " into " + port + ":\n";
       for (const TraceStep& s : r.trace) out += step_text(s, plain);
       if (!r.explanation.empty()) out += paragraph(r.explanation, plain);
-      if (plain) {
+      if (reader == Reader::Sarif) {
         out +=
             "replayed on the runtime in simulated time, which shows the violation "
             "(the tests file is the result's properties.test; --counterexamples DIR writes "
             "it)\n";
+        break;
+      }
+      if (reader == Reader::Editor) {
+        out +=
+            "replayed on the runtime in simulated time, which shows the violation; as a tests "
+            "file (arbc verify --counterexamples DIR writes it):\n";
+        out += test_file_text(*r.replay_test, spec_name(r.property));
         break;
       }
       out +=
@@ -182,12 +194,21 @@ std::string render(const TemporalResult& r, bool plain) {
 
 }  // namespace
 
-std::string temporal_text(const TemporalResult& r) { return render(r, false); }
+std::string temporal_text(const TemporalResult& r) { return render(r, Reader::Report); }
 
-std::string temporal_message(const TemporalResult& r) {
-  std::string text = render(r, true);
+namespace {
+std::string without_last_newlines(std::string text) {
   while (!text.empty() && text.back() == '\n') text.pop_back();
   return text;
+}
+}  // namespace
+
+std::string temporal_message(const TemporalResult& r) {
+  return without_last_newlines(render(r, Reader::Sarif));
+}
+
+std::string temporal_editor_message(const TemporalResult& r) {
+  return without_last_newlines(render(r, Reader::Editor));
 }
 
 }  // namespace arbc::verify::temporal

@@ -16,6 +16,10 @@ std::string temporal_text(const TemporalResult& r);
 // viewer wraps); the tests file of a violation is not repeated (SARIF's properties.test has it).
 std::string temporal_message(const TemporalResult& r);
 
+// The same for an editor's diagnostic at the property (the language server): as SARIF's, but a
+// violation ends with its replayed tests file, which the editor has no other place to show.
+std::string temporal_editor_message(const TemporalResult& r);
+
 // The summary's count of properties by outcome, zero counts left out: "1 violated, 1 proved",
 // "2 hold up to the bound". `counts` is indexed by TemporalResult::Outcome.
 std::string outcome_counts(const size_t counts[4]);
