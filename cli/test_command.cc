@@ -26,6 +26,7 @@
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "compiler/lower/test_cases.h"
+#include "core/diagnostic.h"
 #include "core/join.h"
 #include "runtime/app_loader.h"
 
@@ -88,7 +89,13 @@ int prepare_spec(const std::string& spec, bool no_verify, Scratch* scratch, std:
     return kExitRuntimeFailure;
   }
   *app_dir = (fs::path(pattern) / lowered.app.name).string();
-  std::optional<model::App> loaded = load_app_dir(*app_dir, &error);
+  Diagnostic app_json_error;  // in app.json's text: rendered as a compiler's, line quoted
+  std::optional<model::App> loaded = load_app_dir(*app_dir, &error, &app_json_error);
+  if (!loaded && !app_json_error.loc.file.empty()) {
+    SourceCache sources;  // as `arbc run` and `arbc verify` show it
+    std::fputs(render(app_json_error, &sources).c_str(), stderr);
+    return kExitRuntimeFailure;
+  }
   if (!loaded || !write_test_harness(*app_dir, &error)) {
     std::istringstream lines(error);
     for (std::string line; std::getline(lines, line);)
