@@ -1,8 +1,11 @@
 #include "cli/run_end.h"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "cli/report/run_report.h"
+#include "core/duration_literal.h"
 #include "core/time_format.h"
 
 namespace arbc::cli {
@@ -102,23 +105,18 @@ int finish_run(const RunEnd& end, const std::string& signal) {
 void give_up_stuck_run(const RunEnd& end, const std::string& signal, double waited) {
   BusyMarker::Snapshot busy = end.runtime.busy();
   std::string who = Runtime::describe(busy);
+  // The budget as a spec writes durations (500ms); the measured waits, to a tenth of a second,
+  // in the same form, so that the sentence does not mix `0.6 s` and `500ms`.
+  std::string waited_text = duration_literal(std::round(waited * 10) / 10);
   std::string why;
   if (who.empty()) {
-    char line[96];
-    std::snprintf(line, sizeof line, "the run did not stop within %.1f s", waited);
-    why = line;
+    why = "the run did not stop within " + waited_text;
   } else {
-    char budget[96] = "";
-    if (busy.kind == "monitor") {
-      std::snprintf(budget, sizeof budget, ", past its wall-clock budget of %g s",
-                    end.options.limits.wall_seconds);
-    } else {
-      std::snprintf(budget, sizeof budget, " (plugin code cannot be stopped)");
-    }
-    char line[512];
-    std::snprintf(line, sizeof line, "%s is still running %.1f s after the interrupt%s",
-                  who.c_str(), waited, budget);
-    why = line;
+    std::string budget =
+        busy.kind == "monitor"
+            ? ", past its wall-clock budget of " + duration_literal(end.options.limits.wall_seconds)
+            : " (plugin code cannot be stopped)";
+    why = who + " is still running " + waited_text + " after the interrupt" + budget;
   }
   std::fprintf(stderr, "arbc run: interrupted (%s), but %s; ending the run without it\n",
                signal.c_str(), why.c_str());

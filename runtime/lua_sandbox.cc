@@ -5,7 +5,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <lua.hpp>
+#include <string>
 
+#include "core/duration_literal.h"
 #include "runtime/sandbox_strings.h"
 
 namespace arbc {
@@ -113,9 +115,8 @@ bool LuaSandbox::within_limits(lua_State* L, const char* function) {
     call_.started = now;
     call_.clock_started = true;
   } else if (std::chrono::duration<double>(now - call_.started).count() > limits_.wall_seconds) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%g", limits_.wall_seconds);
-    return exhaust(L, std::string("wall-clock budget of ") + seconds + " s exceeded");
+    return exhaust(L,
+                   "wall-clock budget of " + duration_literal(limits_.wall_seconds) + " exceeded");
   }
   return true;
 }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "core/time_text.h"
+#include "core/duration_literal.h"
 
 namespace arbc {
 
@@ -170,8 +170,9 @@ std::string stand_in_summary(const model::App& app, const std::vector<std::strin
       const std::vector<const Received*>& got = by_port[q];
       out += "  " + q + " (stand-in sink): received " + std::to_string(got.size());
       if (!got.empty()) {
-        out += ", first at " + time_text(got.front()->t) + " s, last at " +
-               time_text(got.back()->t) + " s (" + got.back()->connection +
+        // As a test's expectation writes them (`expect P receives at 2.9s`).
+        out += ", first at " + duration_literal(got.front()->t) + ", last at " +
+               duration_literal(got.back()->t) + " (" + got.back()->connection +
                "): " + got.back()->value.to_json();
       }
       out += "\n";

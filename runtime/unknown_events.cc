@@ -5,6 +5,7 @@
 // event is not selected: absence of knowledge is not absence of the event. This only removes
 // selections, so the proof (at most one selected connection per port) holds as before. Also:
 // reporting events that lapse because their source is silent.
+#include "core/duration_literal.h"
 #include "runtime/runtime_internal.h"
 
 namespace arbc {
@@ -46,8 +47,8 @@ void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
   double silent = expiry - c.last_arrival;
   if (!lifetime || silent + 1e-9 < *lifetime) return;  // its source spoke; the entry just ended
   if (!c.silence_reported.insert(name).second) return;
-  char lifetime_text[32];
-  std::snprintf(lifetime_text, sizeof lifetime_text, "%.3g s", *lifetime);
+  // The lifetime as the spec declares it (`for 500ms`), not as a run's instants read.
+  std::string lifetime_text = duration_literal(*lifetime);
   report("event " + name + " at " + in.qualified + " lapsed at " + run_time_text(expiry) +
          ": nothing from " + c.model->source + " for " + lifetime_text);
 }

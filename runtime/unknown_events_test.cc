@@ -103,7 +103,7 @@ TEST(UnknownEventsTest, ASilentSourcesLapseIsReportedOnce) {
     if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
   }
   ASSERT_EQ(lapses.size(), 1u) << ::testing::PrintToString(t.reports);
-  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.700 s: nothing from Src.f for 0.5 s");
+  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.700 s: nothing from Src.f for 500ms");
 }
 
 // The report writes its instant in the unit of the run, as `arbc run`'s last line and the run
@@ -122,7 +122,7 @@ TEST(UnknownEventsTest, ALapseOfAShortRunIsInMilliseconds) {
     if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
   }
   ASSERT_EQ(lapses.size(), 1u) << ::testing::PrintToString(t.reports);
-  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 600.0 ms: nothing from Src.f for 0.5 s");
+  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 600.0 ms: nothing from Src.f for 500ms");
 }
 
 }  // namespace

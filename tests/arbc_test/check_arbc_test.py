@@ -173,7 +173,7 @@ def case_inputs_run_records_sinks(arbc, tmp):
                          "--trace", trace)
     expect(code == 0, f"exit {code}", out, err)
     expect("inputs: 3 messages from" in out, "inputs not counted", out, err)
-    expect('PickAndPlace.cmd (stand-in sink): received 1, first at 0.1 s, last at 0.1 s (take): '
+    expect('PickAndPlace.cmd (stand-in sink): received 1, first at 100ms, last at 100ms (take): '
            '{"pos":{"x":0.3,"y":0.1,"z":0.0},"verb":"take"}' in out, "sink not summarised", out, err)
     records = [json.loads(l) for l in open(trace, encoding="utf-8")]
     expect(any(r["type"] == "publish" and r["port"] == "ObjectDetector.objects" for r in records),

@@ -13,6 +13,7 @@ cases:
                     watchdog names it, writes what there is and ends the process (exit 3)
 """
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -102,6 +103,9 @@ def stuck_plugin_case(arbc, plugin):
         words = "module 'Arm', in on_delivery is still running"
         if words not in err or "plugin code cannot be stopped" not in err:
             fail("stderr does not name the stuck callback", out, err)
+        # The wait as the spec writes times (600ms), as the monitor's budget beside it is.
+        if not re.search(r"is still running \d+(\.\d+)?m?s after the interrupt", err):
+            fail("the wait is not written as a duration (600ms)", out, err)
         if "result: interrupted (the run did not finish)" not in out:
             fail("no verdict for the unfinished run", out, err)
         check_outputs(out, err, trace, report, words)
