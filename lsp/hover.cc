@@ -6,6 +6,7 @@
 #include "compiler/docs/decision_table.h"
 #include "compiler/docs/markdown_docs.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/duration_literal.h"
 #include "core/effective_guard.h"
 #include "core/join.h"
 #include "lsp/features.h"
@@ -56,7 +57,7 @@ void describe_event(const Document& doc, const SymbolIndex& ix, const Symbol& s,
       out << "\n\nderived from " << code(e->source);
     else
       out << "\n\nset by monitor code";
-    if (e->lifetime) out << "; lifetime " << *e->lifetime << " s";
+    if (e->lifetime) out << "; lifetime " << duration_literal(*e->lifetime);
   }
   auto list = [&](const char* what, const std::map<std::string, std::vector<std::string>>& m) {
     auto it = m.find(s.name);
@@ -82,7 +83,7 @@ void describe_rule(const Document& doc, const Symbol& s, std::ostringstream& out
   out << " from " << code(r->source.qualified());
   // As written: with errors in the text, sema's constraint tree may be incomplete.
   out << "\n\nwhen: " << code(r->when ? source_text(doc, r->when->loc) : "true");
-  if (r->hold) out << "; hold " << r->hold->seconds << " s";
+  if (r->hold) out << "; hold " << duration_literal(r->hold->seconds);
   const model::App* app = lowered_app(doc, out);
   if (!app) return;
   for (const model::Connection& c : app->connections)

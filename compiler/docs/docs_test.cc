@@ -175,7 +175,7 @@ TEST(MarkdownDocsTest, AnEventLivesAsLongAsItsSetsSay) {
     return at == std::string::npos ? md : md.substr(at, md.find('\n', at) - at);
   };
   EXPECT_EQ(row(),
-            "| `e_face_detected` | monitor code | 1 s | HeadControl.gaze / track | "
+            "| `e_face_detected` | monitor code | 1s | HeadControl.gaze / track | "
             "HeadControl.gaze / search |");
   // A second `set` without `for`, inside an `if`: until unset, as the declaration says.
   model::BodyStmt branch;
@@ -183,7 +183,7 @@ TEST(MarkdownDocsTest, AnEventLivesAsLongAsItsSetsSay) {
   set_for.lifetime.reset();
   branch.then_body = {set_for};
   app.connections[0].body->push_back(branch);
-  EXPECT_NE(row().find("| 1 s (track); until unset (track) |"), std::string::npos) << row();
+  EXPECT_NE(row().find("| 1s (track); until unset (track) |"), std::string::npos) << row();
   // A script's own code sets it: the docs cannot say for how long.
   app.connections[0].body.reset();
   EXPECT_NE(row().find("| as its script sets it (track) |"), std::string::npos) << row();
@@ -229,14 +229,14 @@ TEST(GraphDocsTest, PriorityShowsTheOrderTheWhenWrittenAndTheHold) {
   std::string dot = render_dot(priority_app());
   EXPECT_NE(dot.find("<B>A HeadControl.gaze</B> by priority, highest first"), std::string::npos);
   // The activity events lowering added are not part of the `when` the user wrote.
-  EXPECT_NE(dot.find("<B>1 track</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when a<BR/>hold 0.5 "
-                     "s<BR/>sets e_face_detected</TD>"),
+  EXPECT_NE(dot.find("<B>1 track</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when a<BR/>hold 500ms"
+                     "<BR/>sets e_face_detected</TD>"),
             std::string::npos);
   EXPECT_NE(dot.find("<B>2 search</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">when not "
                      "e_face_detected</TD>"),
             std::string::npos);
   std::string mmd = render_mermaid(priority_app());
-  EXPECT_NE(mmd.find("[[\"A HeadControl.gaze by priority<br/>1 track: when a, hold 0.5 s, sets "
+  EXPECT_NE(mmd.find("[[\"A HeadControl.gaze by priority<br/>1 track: when a, hold 500ms, sets "
                      "e_face_detected<br/>2 search: when not e_face_detected\"]]"),
             std::string::npos);
 }

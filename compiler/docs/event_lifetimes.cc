@@ -3,19 +3,16 @@
 #include <algorithm>
 #include <map>
 #include <set>
-#include <sstream>
 
+#include "core/duration_literal.h"
 #include "core/join.h"
 
 namespace arbc::docs {
 
 namespace {
 
-std::string seconds_text(double s) {
-  std::ostringstream out;
-  out << s << " s";
-  return out.str();
-}
+// As the spec writes the lifetime (`set e for 1s`).
+std::string seconds_text(double s) { return duration_literal(s); }
 
 // The lifetime of each `set EVENT` in `body`, nested blocks included.
 void collect_sets(const model::Body& body, const std::string& event, const std::string& fallback,

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "compiler/docs/port_summary.h"
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/quote.h"
 
@@ -66,11 +67,8 @@ std::vector<std::string> wrap(const std::string& text) {
   return lines;
 }
 
-std::string seconds(double s) {
-  std::ostringstream out;
-  out << s << " s";
-  return out.str();
-}
+// As the spec writes the time (`hold 1s`, `throttle 500ms`).
+std::string seconds(double s) { return duration_literal(s); }
 
 // One line of an arbitrator's rule list: "take: when ...", "1 track: when ..., hold 1 s".
 std::string rule_line(const PortSummary& p, size_t k) {

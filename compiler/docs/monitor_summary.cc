@@ -1,7 +1,6 @@
 #include "compiler/docs/monitor_summary.h"
 
-#include <sstream>
-
+#include "core/duration_literal.h"
 #include "core/join.h"
 
 namespace arbc::docs {
@@ -31,16 +30,9 @@ std::string monitor_summary(const model::Connection& c) {
       parts.push_back("transforms");
     if (!c.sets.empty()) parts.push_back("sets " + join(c.sets));
     if (!c.unsets.empty()) parts.push_back("unsets " + join(c.unsets));
-    if (c.throttle) {
-      std::ostringstream s;
-      s << "at most one delivery per " << *c.throttle << " s";
-      parts.push_back(s.str());
-    }
-    if (c.trig_interval) {
-      std::ostringstream s;
-      s << "runs every " << *c.trig_interval << " s";
-      parts.push_back(s.str());
-    }
+    // Times as the spec writes them (`throttle 500ms`).
+    if (c.throttle) parts.push_back("at most one delivery per " + duration_literal(*c.throttle));
+    if (c.trig_interval) parts.push_back("runs every " + duration_literal(*c.trig_interval));
   }
   if (parts.empty()) {
     if (c.monitor.empty()) {

@@ -462,7 +462,7 @@ class Hover(Session):
     def test_an_event_shows_where_it_comes_from(self):
         text = self.hover("not e_taken", 0, 4)
         self.assertIn("status flag `\"e_taken\"` of `PickAndPlace.status`", text)
-        self.assertIn("lifetime 0.5 s", text)
+        self.assertIn("lifetime 500ms", text)
         self.assertIn("in the `when` of: `take`, `put`, `pull`", text)
         self.assertIn("derived from `FaceDetector.face`", self.hover("e_face_detected ="))
 
