@@ -34,6 +34,7 @@
 #include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
+#include "core/join.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
 
@@ -207,6 +208,21 @@ bool load_plugins(const std::vector<std::string>& plugins) {
   return true;
 }
 
+// A spec tried before its C++ exists names modules no plugin provides: the way to run it
+// anyway is --stub (docs/testing.md), which a newcomer cannot guess from "load the plugin".
+void print_stand_in_hint(const model::App& app, const Registry& registry, const ModuleSet& host) {
+  std::vector<std::string> missing;
+  for (const model::Module& m : app.modules) {
+    if (host.contains(m.name) && !registry.find_module(m.name)) missing.push_back(m.name);
+  }
+  if (missing.empty()) return;
+  std::fprintf(stderr,
+               "arbc run: note: to try the app without C++ for %s, add --stub: modules no "
+               "plugin provides run as stand-ins (a source publishes samples of its type, a "
+               "sink records what reaches it; docs/testing.md)\n",
+               join(missing, ", ", " and ").c_str());
+}
+
 }  // namespace
 
 int run_command(std::span<char*> args) {
@@ -243,6 +259,7 @@ int run_command(std::span<char*> args) {
       check_modules(app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
   if (!mismatches.empty()) {
     print_errors(mismatches);
+    print_stand_in_hint(app, stand_ins.registry(), options.host);
     return kExitBadInput;
   }
   std::string proof;

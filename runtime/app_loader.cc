@@ -85,7 +85,12 @@ std::vector<std::string> check_modules(const model::App& app, const std::string&
     const ModuleFactory* factory = registry.find_module(m.name);
     if (!factory) {
       std::string known = join(registry.module_names());
-      errors.push_back(app_file + ": module '" + m.name +
+      // At the module's declaration in the spec when app.json records it: the app.json of
+      // `arbc run SPEC` is in a scratch directory that is gone when the message is read.
+      std::string where = app_file;
+      if (!m.loc.file.empty() && m.loc.line > 0)
+        where = m.loc.file + ":" + std::to_string(m.loc.line) + ":" + std::to_string(m.loc.column);
+      errors.push_back(where + ": module '" + m.name +
                        "' is not registered; load the plugin that provides it with --plugin LIB" +
                        " (registered: " + (known.empty() ? "none" : known) + ")");
       continue;

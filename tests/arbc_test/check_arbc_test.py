@@ -338,6 +338,19 @@ def case_test_that_expects_nothing(arbc, tmp):
            err)
 
 
+def case_run_without_plugins_points_at_stub(arbc, tmp):
+    # A newcomer runs a spec with no C++ yet: each module is named at its declaration in the
+    # spec (the built app.json is in a scratch directory, gone by then), and one note says
+    # that --stub runs them as stand-ins.
+    code, out, err = run(arbc, "run", SPEC, "--duration", "1s")
+    expect(code == 2, f"exit {code}, expected 2", out, err)
+    expect(f"arbc run: error: {SPEC}:13:8: module 'ObjectDetector' is not registered;" in err,
+           "the module is not named at its declaration", out, err)
+    expect("/tmp/" not in err, "a scratch directory is named", out, err)
+    expect(err.count("add --stub") == 1 and "ObjectDetector, BucketDetector" in err,
+           "no single note about --stub", out, err)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
