@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -61,19 +63,43 @@ struct PreparedSpec {
   std::vector<model::TestCase> tests;
 };
 
+// What earlier specs of the same `arbc test` printed and proved. A tests file compiles and
+// proves the app it tests: given beside that app's spec (or another of its tests files), its
+// errors and the proof's report would be printed again, and the proof run again.
+struct Seen {
+  std::set<std::string> diagnostics;    // rendered
+  std::map<std::string, int> verdicts;  // the app's spec file (canonical) -> the gate's exit
+};
+
 // The spec compiled, proved (unless no_verify) and written to a scratch directory, with the
 // test harness; its tests. Returns an exit code (kExitOk: *app_dir, *app and *tests are set).
-int prepare_spec(const std::string& spec, bool no_verify, Scratch* scratch, std::string* app_dir,
-                 model::App* app, std::vector<model::TestCase>* tests) {
+int prepare_spec(const std::string& spec, bool no_verify, Seen* seen, Scratch* scratch,
+                 std::string* app_dir, model::App* app, std::vector<model::TestCase>* tests) {
   lower::CompiledSpec compiled = lower::compile_spec(spec);
-  std::fputs(frontend::render_diagnostics(compiled.diagnostics, &compiled.sources).c_str(), stderr);
+  std::vector<Diagnostic> fresh;
+  for (const Diagnostic& d : compiled.diagnostics) {
+    if (seen->diagnostics.insert(render(d, &compiled.sources)).second) fresh.push_back(d);
+  }
+  std::fputs(frontend::render_diagnostics(fresh, &compiled.sources).c_str(), stderr);
   if (!compiled.ok) return kExitBadInput;
   const lower::LoweredApp& lowered = *compiled.lowered;
   if (!no_verify) {
-    VerifyGate gate = verify_before_writing(
-        lowered.app, spec, &compiled.sources, false,
-        "no test was run (fix the spec, or run the tests anyway with --no-verify)", "arbc test");
-    if (!gate.pass) return gate.exit_code;
+    std::error_code ec;
+    std::string app_spec = fs::weakly_canonical(lowered.app.spec_file, ec).string();
+    if (ec) app_spec = lowered.app.spec_file;
+    auto [verdict, first] = seen->verdicts.try_emplace(app_spec, kExitOk);
+    if (first) {
+      VerifyGate gate = verify_before_writing(
+          lowered.app, spec, &compiled.sources, false,
+          "no test was run (fix the spec, or run the tests anyway with --no-verify)", "arbc test");
+      if (!gate.pass) verdict->second = gate.exit_code;
+    } else if (verdict->second != kExitOk) {
+      std::fprintf(stderr,
+                   "arbc test: %s: no test was run: it tests %s, whose proof failed above (fix "
+                   "the spec, or run the tests anyway with --no-verify)\n",
+                   spec.c_str(), lowered.app.spec_file.c_str());
+    }
+    if (verdict->second != kExitOk) return verdict->second;
   }
   std::unique_ptr<codegen::Target> target = codegen::make_target(codegen::kDefaultTarget);
   codegen::CodegenResult generated = target->generate(lowered);
@@ -171,11 +197,12 @@ int test_command(std::span<char*> args) {
   // taken for a result.
   std::vector<std::unique_ptr<PreparedSpec>> prepared;
   std::vector<std::string> not_ready;
+  Seen seen;
   int exit = kExitOk;
   for (const std::string& spec : a.specs) {
     auto p = std::make_unique<PreparedSpec>();
     p->spec = spec;
-    int rc = prepare_spec(spec, a.no_verify, &p->scratch, &p->dir, &p->app, &p->tests);
+    int rc = prepare_spec(spec, a.no_verify, &seen, &p->scratch, &p->dir, &p->app, &p->tests);
     if (rc != kExitOk) {
       if (exit == kExitOk) exit = rc;
       not_ready.push_back(spec);

@@ -351,6 +351,29 @@ def case_run_without_plugins_points_at_stub(arbc, tmp):
            "no single note about --stub", out, err)
 
 
+def case_an_app_and_its_tests_file_report_once(arbc, tmp):
+    # `arbc test app.spec app.test.spec`: the tests file compiles and proves the app it tests.
+    # An error of the app, or the proof's report, is printed once, not once per file.
+    def with_tests_file(app):
+        tests = os.path.join(tmp, "more.test.spec")
+        with open(tests, "w", encoding="utf-8") as f:
+            f.write(f'tests for "{os.path.basename(app)}";\n\ntest "t" {{\n'
+                    "  at 100ms LookAround.gaze <- vec3(1.0, 0.0, 0.0);\n"
+                    "  expect HeadControl.gaze receives at 100ms;\n}\n")
+        return tests
+    bad = changed_spec(tmp, "hold 1s", "hold 1s;;", name="bad.spec")
+    code, out, err = run(arbc, "test", bad, with_tests_file(bad))
+    expect(code == 2 and err.count(f"{bad}:") == 1, "the app's error is not printed once", out,
+           err)
+    refuted = changed_spec(tmp, "take: from ObjectDetector.objects when not e_taken and",
+                           "take: from ObjectDetector.objects when", name="refuted.spec")
+    tests = with_tests_file(refuted)
+    code, out, err = run(arbc, "test", refuted, tests)
+    expect(code == 1 and err.count("\nrefuted: ") == 1, "the proof is not reported once", out, err)
+    expect(f"arbc test: {tests}: no test was run: it tests {refuted}, whose proof failed above"
+           in err, "the tests file is not named", out, err)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
