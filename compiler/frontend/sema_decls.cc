@@ -7,6 +7,7 @@
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/stray_field.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/join.h"
 #include "core/suggest.h"
 
 namespace arbc::frontend {
@@ -195,10 +196,23 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
   }
   ref.port_decl = ref.module_decl->find_port(ref.port);
   if (!ref.port_decl) {
-    std::vector<std::string> names;
-    for (const PortDecl& p : ref.module_decl->ports) names.push_back(p.name);
-    unknown(ref.port_loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
-            "unknown-port", ref.port, names);
+    std::vector<std::string> names, listed;
+    for (const PortDecl& p : ref.module_decl->ports) {
+      names.push_back(p.name);
+      listed.push_back("'" + p.name + "' (" + (p.direction == model::Direction::In ? "in" : "out") +
+                       ")");
+    }
+    Diagnostic& d =
+        unknown(ref.port_loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
+                "unknown-port", ref.port, names);
+    if (d.notes.empty() && !listed.empty()) {  // nothing close (`velocity` for `vel`): list them
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = (listed.size() == 1 ? "the only port of " + ref.module + " is "
+                                         : "the ports of " + ref.module + " are ") +
+                     join(listed, ", ", " and ");
+      d.notes.push_back(std::move(note));
+    }
     return false;
   }
   std::string role_s = role;
