@@ -258,7 +258,9 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.id = "syntax";
     d.loc = token_location(offending, file_);
     if (describe_mistaken_operator(parser, offending, x, d)) return d;
-    if (!describe_construct(parser, offending, x, d)) describe_by_position(parser, offending, x, d);
+    if (!describe_set_of_a_port(parser, offending, x, d) &&
+        !describe_construct(parser, offending, x, d))
+      describe_by_position(parser, offending, x, d);
     note_spaced_unit(parser, offending, d);
     // `accept len(objects) = 0;`: a lone `=` right after an operand, where no `=` may come, is
     // almost surely a comparison.
@@ -320,6 +322,31 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     note.severity = Severity::Note;
     note.message = "a duration is written without a space: " + previous->getText() + *unit;
     d.notes.push_back(std::move(note));
+  }
+
+  // `at 0s set Bumper.hit;`: a port where `set` takes an event. Publishing on the port is the
+  // step meant, or setting the event its feed would set.
+  bool describe_set_of_a_port(antlr4::Parser* parser, const antlr4::Token* offending,
+                              const Expected& x, Diagnostic& d) {
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    antlr4::Token* port = tokens->LT(-1);
+    if (!enclosing(parser->getContext(), ArbcParser::RuleTestStep) || offending->getText() != "." ||
+        !x.has(";") || !port || port->getType() != ArbcParser::ID || port->getTokenIndex() == 0)
+      return false;
+    std::string verb = tokens->get(port->getTokenIndex() - 1)->getText();
+    if (verb != "set" && verb != "unset") return false;
+    antlr4::Token* field = tokens->LT(2);
+    bool named = field && field->getType() == ArbcParser::ID;
+    std::string name = port->getText() + "." + (named ? field->getText() : "port");
+    d.message = "`" + verb + "` takes an event, not a port such as " + name;
+    d.loc = token_location(port, file_);
+    if (named) d.loc.end_column += 1 + static_cast<int>(field->getText().size());
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "to publish on the port write `at TIME " + name +
+                   " <- VALUE;`; to give an event directly, `at TIME " + verb + " EVENT;`";
+    d.notes.push_back(std::move(note));
+    return true;
   }
 
   // When the expected tokens show which construct comes next (a declaration, a port, a
