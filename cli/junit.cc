@@ -42,7 +42,7 @@ std::string seconds(double s) {
 
 // The failure's headline, for CI pages that show only the `message` attribute: the expectation
 // and what happened instead (the first two lines of the detail, which are indented for the
-// terminal), "f.spec:24: expected ... at 100ms; but nothing reached Base.vel at 0.1s".
+// terminal), "f.spec:24:3: expected ... at 100ms; but nothing reached Base.vel at 100ms".
 std::string headline(const std::string& detail) {
   std::string out;
   size_t at = 0;

@@ -131,7 +131,10 @@ std::string failures(const model::TestCase& test, const TestRun& run,
   for (const model::Expectation& e : test.expectations) {
     std::string why = check_expectation(e, run);
     if (why.empty()) continue;
-    out += "  " + e.loc.file + ":" + std::to_string(e.loc.line) + ": expected " + e.text + "\n";
+    // FILE:LINE:COL, as diagnostics are: editors and CI problem matchers jump to the `expect`.
+    std::string where = e.loc.file + ":" + std::to_string(e.loc.line);
+    if (e.loc.column > 0) where += ":" + std::to_string(e.loc.column);
+    out += "  " + where + ": expected " + e.text + "\n";
     out += "  " + why + "\n  trace:\n" + trace_around(run, e.from, e.to);
   }
   if (!out.empty()) {

@@ -316,7 +316,7 @@ def case_junit_failure_message(arbc, tmp):
     failures = ET.parse(junit).getroot().findall(".//failure")
     expect(len(failures) == 1, "no junit failure")
     message = failures[0].get("message")
-    expect(re.fullmatch(re.escape(broken) + r':\d+: expected search drops "not-selected" at 700ms; '
+    expect(re.fullmatch(re.escape(broken) + r':\d+:3: expected search drops "not-selected" at 700ms; '
                         r"but search delivered at 700ms", message), f"message {message!r}")
 
 
