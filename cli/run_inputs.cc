@@ -5,10 +5,12 @@
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli/duration_option.h"
 #include "cli/out_port_hint.h"
 #include "core/json_parse.h"
+#include "core/json_place.h"
 #include "core/time_text.h"
 #include "core/value_json.h"
 
@@ -18,12 +20,21 @@ namespace {
 
 using Json = nlohmann::json;
 
-// One line's place, for errors: "inputs.jsonl:3: ".
+// One line's place, for errors: "inputs.jsonl:3: ", or "inputs.jsonl:3:17: " at a field's
+// value (or at a column), as compilers place theirs, so that an editor jumps to it.
 struct LineRef {
   const std::string& path;
   size_t line;
-  std::string operator()(const std::string& what) const {
-    return path + ":" + std::to_string(line) + ": " + what;
+  const std::string& text;  // the line
+  std::string operator()(const std::string& what, int column = 0) const {
+    std::string where = path + ":" + std::to_string(line);
+    if (column > 0) where += ":" + std::to_string(column);
+    return where + ": " + what;
+  }
+  // About the value of `field` (at the line alone when the line has no such field).
+  std::string field(const std::string& field, const std::string& what) const {
+    std::optional<TextSpan> span = json_place(text, {field});
+    return (*this)("field '" + field + "': " + what, span ? span->begin.column : 0);
   }
 };
 
@@ -56,26 +67,26 @@ bool read_line(const Json& j, const LineRef& at, const model::App& app,
     read->from_trace = true;
     if (!j["type"].is_string() || j["type"] != "publish") return true;  // what the run did
   }
-  if (std::string why = bad_time(j); !why.empty()) return *err = at("field 't': " + why), false;
+  if (std::string why = bad_time(j); !why.empty()) return *err = at.field("t", why), false;
   if (!j.contains("port") || !j["port"].is_string())
-    return *err = at("field 'port': a \"Module.port\" string is required"), false;
+    return *err = at.field("port", "a \"Module.port\" string is required"), false;
   std::string port = j["port"];
   const model::Port* p = app.find_port(port);
   if (!p || p->direction != model::Direction::Out)
-    return *err = at("field 'port': " + not_an_out_port(app, port)), false;
+    return *err = at.field("port", not_an_out_port(app, port)), false;
   std::string module = port.substr(0, port.find('.'));
   if (std::find(stand_ins.begin(), stand_ins.end(), module) == stand_ins.end()) {
     if (trace_line) return ++read->skipped_provided, true;  // the plugin publishes anew
-    return *err = at("field 'port': module " + module +
-                     " is provided by a plugin, which publishes on its ports itself"),
+    return *err = at.field("port", "module " + module +
+                                       " is provided by a plugin, which publishes on its ports "
+                                       "itself"),
            false;
   }
-  if (!j.contains("value")) return *err = at("field 'value': missing"), false;
+  if (!j.contains("value")) return *err = at.field("value", "missing"), false;
   std::string why;
   std::optional<Value> v = value_from_json(j["value"], *p->type, &why);
   if (!v)
-    return *err =
-               at("field 'value': " + why + " (port " + port + " is " + p->type->to_string() + ")"),
+    return *err = at.field("value", why + " (port " + port + " is " + p->type->to_string() + ")"),
            false;
   log->inputs[module].push_back({j["t"].get<double>(), port, std::move(*v)});
   ++read->messages;
@@ -92,15 +103,12 @@ bool read_inputs(const std::string& path, const model::App& app,
   std::string text;
   for (size_t line = 1; std::getline(in, text); ++line) {
     if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
-    LineRef at{path, line};
+    LineRef at{path, line, text};
     Json j;
     if (JsonParseError e; !parse_json(text, &j, &e)) {
       if (e.first_line)  // a key repeated: each line is parsed alone, so the place is a column
-        return *err = at("at column " + std::to_string(e.column) + ": " +
-                         json_error_message(e, /*one_line=*/true)),
-               false;
-      std::string where = e.column ? " at column " + std::to_string(e.column) : "";
-      return *err = at("not valid JSON" + where + ": " + e.detail), false;
+        return *err = at(json_error_message(e, /*one_line=*/true), e.column), false;
+      return *err = at("not valid JSON: " + e.detail, e.column), false;
     }
     if (!read_line(j, at, app, stand_ins, log, read, err)) return false;
   }

@@ -199,18 +199,19 @@ def case_inputs_bad_line_is_bad_input(arbc, tmp):
     ])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
     expect(code == 2, f"exit {code}", out, err)
-    expect(f"{inputs}:2: field 'value': field certainty: expected float, got string" in err,
-           "the line and field are not named", out, err)
+    # At the value's column, as compilers place errors: an editor jumps to it.
+    expect(f"{inputs}:2:48: field 'value': field certainty: expected float, got string" in err,
+           "the line, column and field are not named", out, err)
     write_lines(inputs, [{"t": 0, "port": "HeadControl.gaze", "value": [0, 0, 1]}])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
     expect(code == 2 and "is not an out-port of app table_clean" in err, "in-port accepted", out, err)
     write_lines(inputs, ["{not json"])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
-    expect(code == 2 and f"{inputs}:1: not valid JSON at column" in err, "bad JSON accepted", out, err)
+    expect(code == 2 and f"{inputs}:1:3: not valid JSON: " in err, "bad JSON accepted", out, err)
     # A key given twice: JSON readers keep the last value silently; arbc refuses the line.
     write_lines(inputs, ['{"t": 0, "port": "PickAndPlace.status", "t": 1, "value": ["e_arm_idle"]}'])
     code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
-    expect(code == 2 and f'{inputs}:1: at column 41: key "t" repeated in one object (the first '
+    expect(code == 2 and f'{inputs}:1:41: key "t" repeated in one object (the first '
            "is at column 2)" in err, "a repeated key accepted", out, err)
 
 
@@ -282,7 +283,7 @@ def case_inputs_port_and_time_mistakes(arbc, tmp):
     ]:
         write_lines(inputs, [line])
         code, out, err = run(arbc, "run", SPEC, "--inputs", inputs, "--no-verify")
-        expect(code == 2 and f"{inputs}:1: " in err and want in err, f"exit {code}: {want}",
+        expect(code == 2 and f"{inputs}:1:" in err and want in err, f"exit {code}: {want}",
                out, err)
     # A file that is not there says why, for --inputs and --diff alike.
     missing = os.path.join(tmp, "no-such.jsonl")
