@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <string>
 #include <tuple>
 
 #include "compiler/frontend/frontend.h"
 #include "compiler/frontend/parse.h"
+#include "core/suggest.h"
 
 namespace arbc::frontend {
 
@@ -46,6 +48,19 @@ std::optional<std::pair<ast::Loc, std::string>> first_non_test(const ast::Spec& 
   return *std::min_element(found.begin(), found.end(), [](const auto& a, const auto& b) {
     return std::tie(a.first.line, a.first.column) < std::tie(b.first.line, b.first.column);
   });
+}
+
+// The name of a .spec file beside `missing` (a path that does not exist) close enough to its
+// name to be a typo; nothing when there is none, or the folder cannot be read.
+std::optional<std::string> close_spec_file(const fs::path& missing) {
+  std::error_code ec;
+  fs::path folder = missing.parent_path().empty() ? fs::path(".") : missing.parent_path();
+  std::vector<std::string> names;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() == ".spec") names.push_back(it->path().filename().string());
+  }
+  std::sort(names.begin(), names.end());  // the first of equally close names, whatever the disk
+  return closest_name(missing.filename().string(), names);
 }
 
 }  // namespace
@@ -92,10 +107,18 @@ std::unique_ptr<ast::Spec> merge_with_app(std::unique_ptr<ast::Spec> tests, cons
   *app_file = app.lexically_normal().string();
   Diagnostic problem;
   if (!read_spec_file(*app_file, app_text, &problem)) {
-    out.push_back(error_at(named.loc,
-                           "cannot read the app's spec " + *app_file + ": " + problem.message +
-                               " (the path is relative to this file's folder)",
-                           "tests-file"));
+    Diagnostic d = error_at(named.loc,
+                            "cannot read the app's spec " + *app_file + ": " + problem.message +
+                                " (the path is relative to this file's folder)",
+                            "tests-file");
+    if (auto meant = close_spec_file(app)) {  // `bse.spec` for `base.spec`
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message =
+          "did you mean \"" + (fs::path(named.path).parent_path() / *meant).string() + "\"?";
+      d.notes.push_back(std::move(note));
+    }
+    out.push_back(std::move(d));
     return nullptr;
   }
   ParseResult parsed = parse_spec(*app_text, *app_file);
