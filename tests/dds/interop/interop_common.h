@@ -20,6 +20,10 @@ namespace fdds = eprosima::fastdds::dds;
 // The participant of domain `domain` with the Twist type registered; exits on failure.
 inline fdds::DomainParticipant* participant(int domain, const char* name) {
   fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
+  // The default QoS is Fast-DDS's own until the profiles of FASTRTPS_DEFAULT_PROFILES_FILE are
+  // loaded: without this the program ran on the builtin transports (shared memory and UDP on
+  // every interface), whatever the profile said (docs/distributed.md#confining-dds-to-one-machine).
+  factory->load_profiles();
   fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
   qos.name(name);
   fdds::DomainParticipant* p = factory->create_participant(domain, qos);
