@@ -35,7 +35,7 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
     input.connections.push_back(
         {s, c.kind == model::ConnectionKind::Feed, c.constraint.to_string()});
   }
-  input.transport = {end.placement, end.runtime.transport_summary()};
+  input.transport = {end.placement, end.runtime.transport_status()};
   input.records = &end.records;
   return input;
 }

@@ -217,29 +217,59 @@ void DdsTransport::close() {
   participant_ = nullptr;
 }
 
-std::string DdsTransport::summary() const {
-  std::string out = "dds: domain " + std::to_string(options_.domain) + ", " +
-                    std::to_string(readers_.size()) + " topic(s) read, " +
-                    std::to_string(writers_.size()) + " written\n";
+TransportStatus DdsTransport::status() const {
+  TransportStatus status;
+  status.domain = options_.domain;
   for (const auto& r : readers_) {
-    out += "  read  " + r->topic + " (" + r->wire->name + "): " + std::to_string(r->received) +
-           " received, " + std::to_string(r->lost) + " lost, " + std::to_string(r->undecodable) +
-           " undecodable\n";
+    TransportTopicStatus t;
+    t.topic = r->topic, t.port = r->port.qualified, t.type = r->wire->name, t.read = true;
+    t.heard_peer = r->ever_matched, t.peers_now = r->publishers;
+    t.expects_peer = expects_peer(r->port, r->input);
+    t.received = r->received, t.lost = r->lost, t.undecodable = r->undecodable;
+    status.topics.push_back(std::move(t));
   }
   for (const auto& w : writers_) {
-    out += "  wrote " + w->topic + " (" + w->wire->name + "): " + std::to_string(w->written) +
-           " written" + (w->failed ? ", " + std::to_string(w->failed) + " failed" : "") + "\n";
+    TransportTopicStatus t;
+    t.topic = w->topic, t.port = w->port.qualified, t.type = w->wire->name, t.read = false;
+    t.heard_peer = w->ever_matched, t.peers_now = w->subscribers;
+    t.expects_peer = expects_peer(w->port, w->input);
+    t.written = w->written, t.failed = w->failed;
+    status.topics.push_back(std::move(t));
+  }
+  std::lock_guard<std::mutex> lock(mismatch_mutex_);
+  status.notes.assign(mismatches_.begin(), mismatches_.end());
+  return status;
+}
+
+std::string DdsTransport::summary() const {
+  TransportStatus status = this->status();
+  size_t read = 0;
+  for (const auto& t : status.topics) read += t.read;
+  std::string out = "dds: domain " + std::to_string(status.domain) + ", " + std::to_string(read) +
+                    " topic(s) read, " + std::to_string(status.topics.size() - read) + " written\n";
+  for (const auto& t : status.topics) {
+    if (t.read) {
+      out += "  read  " + t.topic + " (" + t.type + "): " + std::to_string(t.received) +
+             " received, " + std::to_string(t.lost) + " lost, " + std::to_string(t.undecodable) +
+             " undecodable\n";
+    } else {
+      out += "  wrote " + t.topic + " (" + t.type + "): " + std::to_string(t.written) + " written" +
+             (t.failed ? ", " + std::to_string(t.failed) + " failed" : "") + "\n";
+    }
   }
   // What a run left alone says at the end too: a report long ago on stderr is easy to miss.
+  // A topic both read and written is named once.
   std::string never;
-  for (const std::string& topic : topics_never_matched()) {
-    auto port = port_of_topic_.find(topic);
-    never += (never.empty() ? "" : ", ") + topic +
-             (port == port_of_topic_.end() ? "" : " (" + port->second + ")");
+  std::set<std::string> named;
+  for (const auto& t : status.topics) {
+    if (t.heard_peer || !t.expects_peer || !named.insert(t.topic).second) continue;
+    bool heard_otherwise = false;
+    for (const auto& u : status.topics) heard_otherwise |= u.topic == t.topic && u.heard_peer;
+    if (heard_otherwise) continue;
+    never += (never.empty() ? "" : ", ") + t.topic + " (" + t.port + ")";
   }
   if (!never.empty()) out += "  never heard a peer: " + never + "\n";
-  std::lock_guard<std::mutex> lock(mismatch_mutex_);
-  for (const std::string& m : mismatches_) out += "  " + m + "\n";
+  for (const std::string& m : status.notes) out += "  " + m + "\n";
   return out;
 }
 

@@ -139,6 +139,7 @@ class DdsTransport : public Transport {
   void start(const std::atomic<bool>* interrupt) override;
   void close() override;
   std::string summary() const override;
+  TransportStatus status() const override;
 
   // For the endpoints and the discovery listener.
   TransportSink& sink() { return *sink_; }

@@ -147,6 +147,7 @@ class Runtime {
   // The transport's name ("inproc", "dds") and its end-of-run lines.
   std::string transport_name() const;
   std::string transport_summary() const;
+  TransportStatus transport_status() const;
   // A table of the counters, one row per connection.
   std::string stats_table() const;
   // Where run-time problems are reported (default: stderr). Each distinct script error is

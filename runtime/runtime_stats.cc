@@ -28,6 +28,10 @@ std::string Runtime::transport_summary() const {
   return transport_ ? transport_->summary() : std::string();
 }
 
+TransportStatus Runtime::transport_status() const {
+  return transport_ ? transport_->status() : TransportStatus{};
+}
+
 std::map<std::string, size_t> Runtime::monitor_memory() const {
   std::map<std::string, size_t> out;
   for (const auto& c : connections_) {

@@ -24,6 +24,7 @@
 #include "core/value.h"
 #include "runtime/drop_reason.h"
 #include "runtime/module.h"
+#include "runtime/transport_status.h"
 
 namespace arbc {
 
@@ -104,6 +105,8 @@ class Transport {
   virtual void close() {}
   // Lines about the transport for the end of the run (peers seen and lost, ...); may be empty.
   virtual std::string summary() const { return {}; }
+  // The same as data, for the run's report; empty when nothing crosses a process.
+  virtual TransportStatus status() const { return {}; }
   // True when publish(out, v) is exactly sink->from_source(out, v, kAnswersAll) and
   // deliver(in, d) exactly sink->to_module(in, d), on the caller's thread (the in-process
   // transport): the runtime then makes those calls itself, two indirect calls fewer per hop.

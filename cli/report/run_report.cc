@@ -82,11 +82,43 @@ void append_header(std::string& out, const RunHeader& h) {
   }
 }
 
+// One row per topic: a topic that never heard a peer is marked, since nothing flowed there.
+void append_transport_topic(std::string& out, const TransportTopicStatus& t) {
+  bool alone = !t.heard_peer && t.expects_peer;
+  std::string heard = t.heard_peer ? "yes" : t.expects_peer ? "never" : "no (none expected)";
+  auto count = [](uint64_t n) { return "<td class=\"n\">" + std::to_string(n) + "</td>"; };
+  auto blank = std::string("<td class=\"n\"></td>");
+  out += std::string("<tr") + (alone ? " class=\"bad\"" : "") + "><td><code>" + escaped(t.topic) +
+         "</code></td><td>" + escaped(t.port) + "</td><td><code>" + escaped(t.type) +
+         "</code></td><td>" + (t.read ? "read" : "written") + "</td><td>" + heard +
+         "</td><td class=\"n\">" + std::to_string(t.peers_now) + "</td>";
+  if (t.read) {
+    out += count(t.received) + count(t.lost) + count(t.undecodable) + blank + blank;
+  } else {
+    out += blank + blank + blank + count(t.written) + count(t.failed);
+  }
+  out += "</tr>\n";
+}
+
 void append_transport(std::string& out, const TransportSection& t) {
-  if (t.placement.empty() && t.summary.empty()) return;
+  if (t.placement.empty() && t.status.topics.empty()) return;
   out += "<h2>Transport</h2>\n";
   if (!t.placement.empty()) out += "<p id=\"transport\">" + escaped(t.placement) + "</p>\n";
-  if (!t.summary.empty()) out += "<pre id=\"transport-summary\">" + escaped(t.summary) + "</pre>\n";
+  if (t.status.topics.empty()) return;
+  out += "<p>DDS domain " + std::to_string(t.status.domain) +
+         ". Lost: samples DDS dropped before they reached this process, or that came while "
+         "its queue for the topic was full.</p>\n<div class=\"wide\">\n"
+         "<table id=\"transport-topics\">\n<tr><th>topic</th><th>port</th><th>type</th>"
+         "<th>here</th><th>heard a peer</th><th class=\"n\">peers at the end</th>"
+         "<th class=\"n\">received</th><th class=\"n\">lost</th>"
+         "<th class=\"n\">undecodable</th><th class=\"n\">written</th>"
+         "<th class=\"n\">failed</th></tr>\n";
+  for (const TransportTopicStatus& topic : t.status.topics) append_transport_topic(out, topic);
+  out += "</table>\n</div>\n";
+  if (t.status.notes.empty()) return;
+  out += "<ul id=\"transport-notes\">\n";
+  for (const std::string& note : t.status.notes) out += "<li>" + escaped(note) + "</li>\n";
+  out += "</ul>\n";
 }
 
 // "1 connection", "2 connections": the totals line is read as a sentence.

@@ -37,12 +37,13 @@ struct ConnectionRow {
   std::string constraint;
 };
 
-// A run over a transport between processes (DDS): what `arbc run` prints about it, so
-// that a page read later still says which topics never heard a peer and how many messages
-// were lost. Both empty in-process: then the page has no transport section.
+// A run over a transport between processes (DDS): where the modules ran and were mediated,
+// and per topic whether a peer was ever heard and what was received, lost and written, so
+// that a page read later still says why a timeline is empty. Both empty in-process: then the
+// page has no transport section.
 struct TransportSection {
-  std::string placement;  // "dds (domain 7, ...)" (cli/run_transport.h)
-  std::string summary;    // the transport's own lines (Transport::summary), shown as they are
+  std::string placement;   // "dds (domain 7, ...)" (cli/run_transport.h)
+  TransportStatus status;  // the transport's own counters (Transport::status)
 };
 
 struct RunReportInput {

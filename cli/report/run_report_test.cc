@@ -132,24 +132,46 @@ TEST_F(RunReportTest, OneDeliveryLanePerConnectionAndOneEventLane) {
   EXPECT_GT(count(events, "present "), 5u);
 }
 
-// A run over a transport shows what `arbc run` printed about it (topics that never heard a
-// peer, messages lost), escaped; an in-process run has no such section.
-TEST_F(RunReportTest, ATransportHasItsSectionAndInProcessHasNone) {
+// A run over a transport has a table with a row per topic, drawn from the transport's status
+// (not from its text): whether a peer was ever heard, what was received, lost and written; a
+// topic that never heard a peer is marked; what discovery found amiss is listed; names are
+// escaped. An in-process run has no such section.
+TEST_F(RunReportTest, ATransportHasATableOfItsTopicsAndInProcessHasNone) {
   EXPECT_EQ(run_->html.find("<h2>Transport</h2>"), std::string::npos);
   RunReportInput input;
   input.header.app = "split";
   input.transport.placement = "dds (domain 7, hosting M, mediating <all>)";
-  input.transport.summary =
-      "dds: domain 7, 1 topic(s) read, 0 written\n"
-      "  read  M/x (int): 0 received, 3 lost, 0 undecodable\n"
-      "  never heard a peer: M/x (M.x)\n";
+  input.transport.status.domain = 7;
+  TransportTopicStatus heard;
+  heard.topic = "M/x", heard.port = "M.x", heard.type = "int", heard.heard_peer = true;
+  heard.peers_now = 1, heard.received = 40, heard.lost = 3, heard.undecodable = 2;
+  TransportTopicStatus alone;
+  alone.topic = "W/y<1>", alone.port = "W.y", alone.type = "int", alone.read = false;
+  alone.written = 5, alone.failed = 1;
+  input.transport.status.topics = {heard, alone};
+  input.transport.status.notes = {"DDS: topic M/x: a remote writer's type is <other>"};
   std::string html = render_run_report(input);
   ASSERT_NE(html.find("<h2>Transport</h2>"), std::string::npos);
   EXPECT_NE(html.find("<p id=\"transport\">dds (domain 7, hosting M, mediating &lt;all&gt;)</p>"),
             std::string::npos);
-  std::string summary = section(html, "pre", "transport-summary");
-  EXPECT_NE(summary.find("3 lost"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("never heard a peer: M/x (M.x)"), std::string::npos) << summary;
+  std::string table = section(html, "table", "transport-topics");
+  EXPECT_NE(table.find("<tr><td><code>M/x</code></td><td>M.x</td><td><code>int</code></td>"
+                       "<td>read</td><td>yes</td><td class=\"n\">1</td><td class=\"n\">40</td>"
+                       "<td class=\"n\">3</td><td class=\"n\">2</td>"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("<tr class=\"bad\"><td><code>W/y&lt;1&gt;</code></td><td>W.y</td>"
+                       "<td><code>int</code></td><td>written</td><td>never</td>"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("<td class=\"n\">5</td><td class=\"n\">1</td></tr>"), std::string::npos)
+      << table;
+  std::string notes = section(html, "ul", "transport-notes");
+  EXPECT_NE(notes.find("<li>DDS: topic M/x: a remote writer&#39;s type is &lt;other&gt;</li>"),
+            std::string::npos)
+      << notes;
+  // No text to parse: the summary's lines are not on the page.
+  EXPECT_EQ(html.find("transport-summary"), std::string::npos);
   // Before the counters: it explains a page of empty timelines.
   EXPECT_LT(html.find("<h2>Transport</h2>"), html.find("<h2>Counters per connection</h2>"));
 }

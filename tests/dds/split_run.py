@@ -99,10 +99,19 @@ class Split:
             json.loads(line)  # every line is a JSON record (raises on a torn line)
         html = open(report).read()
         expect("</html>" in html, f"{what}: {role}'s report is not complete", *outputs)
-        # What the run printed about DDS (its topics, messages lost, peers never heard) is on
-        # the page too.
-        expect("<h2>Transport</h2>" in html and "dds: domain" in html,
-               f"{what}: {role}'s report has no transport section", *outputs)
+        # The page has a row per DDS topic from the transport's status: every one of them
+        # heard a peer (W and M publish to each other), and M received messages.
+        expect("<h2>Transport</h2>" in html and '<table id="transport-topics">' in html,
+               f"{what}: {role}'s report has no table of DDS topics", *outputs)
+        rows = re.findall(r"<tr[^>]*><td><code>([^<]*)</code></td><td>([^<]*)</td><td><code>"
+                          r"[^<]*</code></td><td>(read|written)</td><td>([^<]*)</td>"
+                          r'<td class="n">\d+</td><td class="n">(\d*)</td>', html)
+        expect(rows, f"{what}: {role}'s table of DDS topics has no rows", *outputs)
+        unheard = [f"{topic} ({port})" for topic, port, _, heard, _ in rows if heard == "never"]
+        expect(not unheard, f"{what}: {role}'s report says {unheard} never heard a peer",
+               *outputs)
+        expect(any(int(received or 0) > 0 for *_, received in rows),
+               f"{what}: {role}'s report counts nothing received on any topic", *outputs)
         expect(("interrupted" in html) == interrupted,
                f"{what}: {role}'s report {'does not say' if interrupted else 'says'} it was interrupted",
                *outputs)
