@@ -9,6 +9,7 @@
 
 #include "dds/dds_transport_internal.h"
 #include "dds/no_peer_reports.h"
+#include "dds/type_name_hint.h"
 #include "runtime/executor.h"
 
 namespace arbc::dds {
@@ -56,6 +57,12 @@ void DdsTransport::check_remote(const std::string& topic, const std::string& typ
   if (type != ours) {
     line = "DDS: type mismatch on topic " + topic + ": a remote " + what + " uses type " + type +
            ", this process uses " + ours + "; they do not match, so nothing flows between them";
+    auto port = port_of_topic_.find(topic);
+    const model::Port* p = port == port_of_topic_.end() ? nullptr : app_.find_port(port->second);
+    if (p && p->type &&
+        (p->type->kind == Type::Kind::Record || p->type->kind == Type::Kind::List)) {
+      line += type_name_hint(options_.deployment, port->second, naming_->spec_name(*p->type), type);
+    }
   } else if (user_data.rfind("arbc-type=", 0) == 0) {
     std::string remote = user_data.substr(10);
     std::string local = port_of_topic_.count(topic)

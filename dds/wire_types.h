@@ -49,10 +49,10 @@ class WireNaming {
   // "pkg/msg/Name" -> "pkg::msg::dds_::Name_" with ros2, else "pkg::msg::Name"; a name with
   // "::" is used as written.
   std::string mangle(const std::string& written) const;
-
- private:
   // The spec's name for a record or list type (the first named type with its structure).
   std::string spec_name(const Type& t) const;
+
+ private:
   // The DDS name of a struct for spec type t: mapped, derived from its spec name, or from
   // `anonymous` (a Module_port_field path) when the spec did not name it.
   std::string struct_name(const Type& t, const std::string& anonymous) const;

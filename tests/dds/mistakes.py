@@ -10,6 +10,9 @@ usage: mistakes.py ARBC TESTS_DDS_DIR CASE
                  without a peer, its domain, and the topic seen in the domain that looks like
                  the misspelled one; says so again at growing intervals; and its end-of-run
                  summary names the topics that never heard a peer
+  type-typo      the mediator's deployment maps Twist to another ROS 2 type than the programs
+                 use: each topic's type mismatch names the deployment file's line and column
+                 of that mapping and the programs' type to write there
 """
 import json
 import os
@@ -45,7 +48,7 @@ class Teleop:
         edit(d)
         path = os.path.join(self.dir, "deploy.json")
         with open(path, "w") as f:
-            json.dump(d, f)
+            json.dump(d, f, indent=2)
         return path
 
     def start(self, host, mediate, seconds, deploy=None, extra=(), env=None):
@@ -102,9 +105,30 @@ def topic_typo(t):
         fail("the programs' summary does not name rt/joy/cmd_vel", *outs)
 
 
+def type_typo(t):
+    wrong = t.deployment(lambda d: d["types"].update({"Twist": "geometry_msgs/msg/TwistStamped"}))
+    lines = open(wrong).read().splitlines()
+    line = next(i for i, text in enumerate(lines, 1) if '"Twist":' in text)
+    column = lines[line - 1].index('"Twist":') + 1
+    mediator = t.start("none", "all", 5, deploy=wrong)
+    programs = t.start("Joy,Nav", "none", 5, extra=["--stub"])
+    outs = finish(mediator, programs)
+    for topic, what, port in (("rt/joy/cmd_vel", "publisher", "Joy.cmd_vel"),
+                              ("rt/nav/cmd_vel", "publisher", "Nav.cmd_vel")):
+        said = (f"DDS: type mismatch on topic {topic}: a remote {what} uses type "
+                "geometry_msgs::msg::dds_::Twist_, this process uses "
+                "geometry_msgs::msg::dds_::TwistStamped_; they do not match, so nothing flows "
+                f"between them; the name is the deployment's, {wrong}:{line}:{column} (\"Twist\": "
+                f"\"geometry_msgs/msg/TwistStamped\", the type of {port}): if the program's type "
+                "is the same message, write \"geometry_msgs/msg/Twist\" there")
+        if said not in outs[0]:
+            fail(f"the mediator does not say {said!r}", *outs)
+
+
 def main():
     arbc, here, case = sys.argv[1:4]
-    {"two-mediators": two_mediators, "topic-typo": topic_typo}[case](Teleop(arbc, here))
+    {"two-mediators": two_mediators, "topic-typo": topic_typo,
+     "type-typo": type_typo}[case](Teleop(arbc, here))
     print("ok")
 
 
