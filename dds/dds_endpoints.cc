@@ -215,6 +215,19 @@ void TopicReader::report_losses() {
   TransportSink& sink = transport_->sink();
   if (overflow) sink.lost(input, port.index, DropReason::QueueFull, overflow, "DDS: " + topic);
   if (bad) sink.lost(input, port.index, DropReason::BadType, bad, why);
+  // Said once, when it first happens: the counters alone show it only at the end of the run.
+  // A program without arbc in it announces no spec type, so this is the first sign that its
+  // type has the name this process expects and another layout.
+  if (bad && !bad_reported_) {
+    bad_reported_ = true;
+    sink.report("DDS: topic " + topic + " (" + port.qualified + "): " + why +
+                "; the remote program's type has this name but other fields, or another order: "
+                "give " +
+                port.qualified +
+                "'s type in the spec the program's fields, in the "
+                "program's order (docs/distributed.md#types-on-the-wire); until then every "
+                "sample is dropped as bad-type");
+  }
 }
 
 void TopicReader::hand(const Buffered& b) {

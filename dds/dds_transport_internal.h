@@ -85,6 +85,7 @@ class TopicReader : public fdds::DataReaderListener {
   std::mutex mutex_;            // guards what follows
   uint64_t overflow_ = 0, bad_ = 0;
   std::string bad_why_;
+  bool bad_reported_ = false;  // executor thread: a sample that did not decode was reported
 };
 
 // One topic this process writes: an output of a hosted module, or the input of a module hosted
