@@ -10,6 +10,7 @@
 #include "cli/dds_plugin.h"
 #include "cli/duration_option.h"
 #include "core/diagnostic.h"
+#include "core/suggest.h"
 #include "dds/deployment.h"
 
 namespace arbc::cli {
@@ -35,9 +36,15 @@ bool parse_module_set(const std::string& text, const char* flag, const model::Ap
     std::string name = text.substr(start, comma == std::string::npos ? comma : comma - start);
     if (!app.find_module(name)) {
       std::string known;
-      for (const model::Module& m : app.modules) known += (known.empty() ? "" : ", ") + m.name;
+      std::vector<std::string> names;
+      for (const model::Module& m : app.modules) {
+        known += (known.empty() ? "" : ", ") + m.name;
+        names.push_back(m.name);
+      }
+      auto meant = closest_name(name, names);
       print_error(std::string(flag) + " '" + text + "': '" + name + "' is not a module of app " +
-                  app.name + " (its modules: " + known + "; or write all, none)");
+                  app.name + (meant ? "; did you mean '" + *meant + "'?" : "") +
+                  " (its modules: " + known + "; or write all, none)");
       return false;
     }
     out->names.insert(name);
@@ -114,6 +121,16 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   }
   if (!pick_domain(flags, dds.deployment, &dds.domain)) return false;
   if (!pick_no_peer_after(&dds.unmatched_after)) return false;
+  // --host none alone (--mediate follows --host): a process that would run for its whole
+  // duration and do nothing, most often a mediator whose --mediate was forgotten.
+  const ModuleSet& mediated = options->mediate ? *options->mediate : options->host;
+  if (options->host.empty() && mediated.empty()) {
+    print_error(
+        "this process hosts no module and mediates none, so it would do nothing; "
+        "give --mediate all (or the modules whose connections run here) for a mediator, "
+        "or --host the modules it runs");
+    return false;
+  }
   dds.wait_peers = flags.wait_peers.value_or(0);
   options->realtime = true;
   options->unknown_until_fed = true;

@@ -195,6 +195,25 @@ def case_script_error_cites_the_script(arbc, plugin):
     expect("monitors/" not in err, "an error cites the generated monitor", out, err)
 
 
+def case_dds_placement_mistakes(arbc, plugin):
+    """A newcomer's --host and --mediate: a misspelt module is named with the one meant, and
+    a process that would run nothing (--host none without --mediate) is refused, not left to
+    run its whole duration idle."""
+    spec = "tests/dds/interop/teleop.spec"
+    expect_bad_input(run(arbc, "run", spec, "--transport", "dds", "--host", "Jog"),
+                     "--host 'Jog': 'Jog' is not a module of app teleop; did you mean 'Joy'? "
+                     "(its modules: Joy, Nav, Base; or write all, none)")
+    expect_bad_input(run(arbc, "run", spec, "--transport", "dds", "--host", "none",
+                         "--mediate", "Bsae"),
+                     "--mediate 'Bsae': 'Bsae' is not a module of app teleop; did you mean "
+                     "'Base'?")
+    expect_bad_input(run(arbc, "run", spec, "--transport", "dds", "--host", "none",
+                         "--duration", "1s"),
+                     "arbc run: error: this process hosts no module and mediates none, so it "
+                     "would do nothing; give --mediate all (or the modules whose connections "
+                     "run here) for a mediator, or --host the modules it runs")
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":
