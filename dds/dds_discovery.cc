@@ -5,6 +5,7 @@
 // a peer: each would leave a run wrong or idle without a word.
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <thread>
 
 #include "dds/dds_transport_internal.h"
@@ -32,6 +33,37 @@ void DiscoveryListener::on_publisher_discovery(
   // This process's own writers are no second publisher.
   if (info.info.guid().guidPrefix != participant->guid().guidPrefix)
     transport_->check_other_writer(topic, user_data);
+}
+
+void DiscoveryListener::on_participant_discovery(
+    fdds::DomainParticipant* participant,
+    eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) {
+  using Info = eprosima::fastrtps::rtps::ParticipantDiscoveryInfo;
+  const auto& data = info.info;
+  if (data.m_guid.guidPrefix == participant->guid().guidPrefix) return;
+  std::ostringstream id;
+  id << data.m_guid.guidPrefix;
+  if (info.status == Info::REMOVED_PARTICIPANT || info.status == Info::DROPPED_PARTICIPANT) {
+    shm_ports_.left(id.str(), info.status == Info::REMOVED_PARTICIPANT);
+    return;
+  }
+  if (info.status != Info::DISCOVERED_PARTICIPANT) return;
+  std::vector<uint32_t> ports;
+  for (const auto* list : {&data.metatraffic_locators.unicast, &data.default_locators.unicast}) {
+    for (const auto& locator : *list) {
+      if (locator.kind == LOCATOR_KIND_SHM) ports.push_back(locator.port);
+    }
+  }
+  std::string name = data.m_participantName.to_string();
+  auto before = shm_ports_.discovered(id.str(), name, ports);
+  if (!before || transport_->closing()) return;
+  transport_->report(
+      "DDS: participant '" + name + "' started on the shared-memory port " +
+      std::to_string(before->port) + " of '" + before->name +
+      "', which vanished without leaving (killed?): Fast-DDS 2.9 may go on writing into the old "
+      "segment, so it may hear this process seconds late or not at all; run that program over "
+      "UDP only, or start this process again too "
+      "(docs/distributed.md#killing-and-restarting-a-process)");
 }
 
 void DiscoveryListener::on_subscriber_discovery(

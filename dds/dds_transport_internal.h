@@ -26,6 +26,7 @@
 
 #include "dds/dds_transport.h"
 #include "dds/inbox.h"
+#include "dds/shm_port_owners.h"
 #include "dds/topic_type.h"
 #include "dds/wire_types.h"
 
@@ -124,9 +125,13 @@ class DiscoveryListener : public fdds::DomainParticipantListener {
                               eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override;
   void on_subscriber_discovery(fdds::DomainParticipant* participant,
                                eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override;
+  // A program started on the shared-memory ports of one that vanished is reported.
+  void on_participant_discovery(fdds::DomainParticipant* participant,
+                                eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override;
 
  private:
   DdsTransport* transport_;
+  ShmPortOwners shm_ports_;
 };
 
 class DdsTransport : public Transport {

@@ -27,7 +27,8 @@ def fail(message, *outputs):
 def main():
     arbc, stream, here = sys.argv[1:4]
     env = environment(os.path.join(here, "loopback_profile.xml"))
-    domain = str(Domain().id)
+    held = Domain()  # the lock on the domain lasts as long as this object
+    domain = str(held.id)
     out_dir = tempfile.mkdtemp(prefix="arbc-dds-foreign-layout-")
     spec = os.path.join(out_dir, "teleop.spec")
     text = open(os.path.join(here, "interop", "teleop.spec")).read()

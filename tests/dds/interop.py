@@ -29,7 +29,8 @@ def fail(message, *outputs):
 def main():
     arbc, pub, sub, here = sys.argv[1:5]
     env = environment(os.path.join(here, "loopback_profile.xml"))
-    domain = str(Domain().id)
+    held = Domain()  # the lock on the domain lasts as long as this object
+    domain = str(held.id)
     out_dir = tempfile.mkdtemp(prefix="arbc-dds-interop-")
     built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
                             out_dir], capture_output=True, text=True)

@@ -91,7 +91,8 @@ def main():
     if built.returncode != 0:
         fail("arbc build", built.stdout + built.stderr)
     app = os.path.join(out_dir, os.path.splitext(os.path.basename(spec))[0])
-    domain = Domain().id
+    held = Domain()  # the lock on the domain lasts as long as this object
+    domain = held.id
 
     shm, addresses, proc = run_under(arbc, app, os.path.join(here, "loopback_udp_profile.xml"),
                                      domain)

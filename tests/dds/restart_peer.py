@@ -7,7 +7,8 @@ each message on to rt/cmd_vel, where interop_sub listens. Each cycle kills inter
 SIGKILL and starts it again at once, as a crash and a service manager would. Fast-DDS gives
 the restarted subscriber the killed one's participant id, hence its shared-memory ports
 (arbc's own processes avoid that, dds/shm_participant_id.h), while the mediator still has the
-killed one's segments mapped. Each restarted subscriber must hear the mediator within
+killed one's segments mapped; the mediator must say so at each restart. Each restarted
+subscriber must hear the mediator within
 HEARD_WITHIN seconds and then miss nothing. Prints per cycle: whether it took the killed one's
 ports again, how long after it listened the first message came, and what it heard.
 
@@ -87,7 +88,8 @@ def main():
     HEARD_WITHIN = 10.0 if measure else float(heard_within)
     env = environment(os.path.join(here, "loopback_profile.xml"))
     sub_env = environment(os.path.join(here, profile))
-    domain = str(Domain().id)
+    held = Domain()  # the lock on the domain lasts as long as this object
+    domain = str(held.id)
     out_dir = tempfile.mkdtemp(prefix="arbc-dds-restart-peer-")
     built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
                             out_dir], capture_output=True, text=True)
@@ -106,6 +108,8 @@ def main():
         for cycle in range(int(cycles) + 1):
             s = Subscriber(sub, domain, sub_env)
             heard = s.wait(lambda: s.values, HEARD_WITHIN + 5)
+            # Segments are mapped as they are first used: compare what each maps just before
+            # it is killed, which by then holds them all.
             ports = shm_ports(s.proc.pid)
             again = bool(previous and ports and ports <= previous)
             same_ports += again
@@ -123,7 +127,7 @@ def main():
                       f"({got[0]}..{got[-1]}), {missing} missing")
                 if delay > HEARD_WITHIN or missing:
                     failures.append(cycle)
-            previous = ports
+            previous = shm_ports(s.proc.pid) | ports
             s.kill()
     finally:
         publisher.kill()
@@ -135,6 +139,13 @@ def main():
     print(f"{same_ports} of {cycles} restarted subscribers took the killed one's ports again")
     print(f"{len(failures)} of {cycles} heard the mediator late, never, or missed messages: "
           f"cycles {failures}")
+    # The mediator names each restart on the killed one's shared-memory ports as it sees it
+    # (dds/shm_port_owners.h), and none over UDP only.
+    said = len(re.findall(r"DDS: participant 'interop_sub' started on the shared-memory port "
+                          r"\d+ of 'interop_sub', which vanished without leaving", mediated))
+    if said != same_ports:
+        fail(f"the mediator named {said} restarts on the killed one's ports, not {same_ports}",
+             mediated)
     if measure:
         if same_ports != int(cycles):
             fail("a restarted subscriber took shared-memory ports of its own: Fast-DDS no longer "
