@@ -6,6 +6,7 @@
 
 #include "cli/report/run_report.h"
 #include "core/duration_literal.h"
+#include "core/join.h"
 #include "core/time_format.h"
 
 namespace arbc::cli {
@@ -38,6 +39,30 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
   input.transport = {end.placement, end.runtime.transport_status()};
   input.records = &end.records;
   return input;
+}
+
+// A run without an environment has no world to say whether it went well. It is judged by what
+// the runtime can tell is broken: a quarantined connection (its monitor kept failing), and a
+// message that could not be read as its port's type (a module, or a program across the
+// transport, does not keep the port's contract; a DDS sample that does not decode is one). Such
+// messages are dropped and counted; the verdict names them, so that `success` never stands over
+// a run whose messages all went unread. *success receives the verdict.
+std::string judge_without_environment(const Runtime& runtime, bool* success) {
+  std::vector<std::string> broken;
+  for (const ConnectionStats& s : runtime.stats()) {
+    if (s.quarantined) broken.push_back(s.name + " quarantined");
+    if (uint64_t n = s.drops(DropReason::BadType))
+      broken.push_back(std::to_string(n) + " bad-type into " + s.name);
+  }
+  for (const InputStats& s : runtime.input_stats()) {
+    if (uint64_t n = s.drops(DropReason::BadType))
+      broken.push_back(std::to_string(n) + " bad-type into " + s.port);
+  }
+  *success = broken.empty();
+  std::string verdict = std::string(*success ? "success" : "failure") +
+                        " (no environment; judged by quarantined connections and messages of the "
+                        "wrong type";
+  return verdict + (broken.empty() ? "" : ": " + join(broken, ", ")) + ")";
 }
 
 void print_run_line(const RunEnd& end, const std::string& stop_reason) {
@@ -86,9 +111,7 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     success = env->success();
     verdict = success ? "success" : "failure";
   } else {
-    for (const ConnectionStats& s : end.runtime.stats()) success &= !s.quarantined;
-    verdict = std::string(success ? "success" : "failure") +
-              " (no environment; judged by quarantined connections)";
+    verdict = judge_without_environment(end.runtime, &success);
   }
   if (end.stand_ins) {
     std::string received = end.stand_ins();

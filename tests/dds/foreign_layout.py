@@ -2,7 +2,7 @@
 """A spec type with the name a program without arbc in it uses and other fields
 (docs/distributed.md#types-on-the-wire): DDS matches the two by name, and every sample fails to
 decode. The mediator must say so when the first one comes, naming the topic, the port and what
-to change, not only count them at the end.
+to change, not only count them at the end; and its run is a failure, not a success.
 
 teleop.spec with Twist given a third field; interop_stream (plain Fast-DDS) publishes ROS 2
 Twists on rt/nav/cmd_vel.
@@ -61,6 +61,14 @@ def main():
     # Before the end of the run: when the first sample came, not with the counters.
     if out.index(said) > out.index("interrupted (SIGTERM)"):
         fail("the mediator says it only at the end", out)
+    # A run whose every sample went unread is not a success, environment or not.
+    verdict = [line for line in out.splitlines() if line.startswith("result: ")]
+    if (len(verdict) != 1 or not verdict[0].startswith(
+            "result: failure (no environment; judged by quarantined connections and messages "
+            "of the wrong type: ") or " bad-type into " not in verdict[0]):
+        fail("the mediator's verdict does not name the messages it could not read", out)
+    if mediator.returncode != 3:
+        fail(f"the mediator exits {mediator.returncode}, not 3 (a run-time failure)", out)
     print("ok\n" + out)
 
 
