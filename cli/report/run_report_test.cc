@@ -348,7 +348,8 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   input.header.app = "failing";
   input.header.end = rt->now();
   input.header.requested = 6;
-  input.header.verdict = "failure (no environment; judged by quarantined connections and messages of the wrong type)";
+  input.header.verdict =
+      "failure (no environment; judged by quarantined connections and messages of the wrong type)";
   input.connections.push_back({stats[0], false, "true"});
   input.records = &records;
   std::string html = render_run_report(input);
