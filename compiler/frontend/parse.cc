@@ -26,6 +26,8 @@ const std::set<std::string> kDeclStarts = {
     "app",       "type",      "const",     "module",  "event",  "events",
     "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
     "resource",  "never",     "only",      "assume",  "given",  "stable"};
+// What a declared name follows: a declaration word, or a comma at depth 0 (`event a, b;`).
+const std::set<std::string> kNamingWords = {"app", "type", "const", "module", "event", ","};
 
 // Token ranges [begin, end) of top-level declarations: a declaration keyword at bracket
 // depth 0 starts a new one. Text before the first keyword is a range of its own.
@@ -44,7 +46,11 @@ std::vector<std::pair<size_t, size_t>> split_declarations(
     // `after` also sits inside `only R after O;`: it starts a response only after a `;` or `}`.
     // `only` also sits inside `assume E only after R;`: there it follows `assume E`.
     bool inside_assume = text == "only" && i > 1 && tokens[i - 2]->getText() == "assume";
-    bool starts = (kDeclStarts.count(text) && !inside_assume) ||
+    // `event test;`: a keyword where the declaration's name goes is that declaration's one
+    // error (a keyword used as a name), not the start of the next.
+    bool as_name = i > 0 && kNamingWords.count(tokens[i - 1]->getText()) &&
+                   tokens[i - 1]->getType() != ArbcLexer::STRING;
+    bool starts = (kDeclStarts.count(text) && !inside_assume && !as_name) ||
                   (text == "after" && i > 0 &&
                    (tokens[i - 1]->getText() == ";" || tokens[i - 1]->getText() == "}"));
     if (depth == 0 && i > start && starts && tokens[i]->getType() != ArbcLexer::STRING) {

@@ -4,6 +4,7 @@
 #include <antlr4-runtime.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "compiler/frontend/foreign_words.h"
@@ -258,6 +259,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.id = "syntax";
     d.loc = token_location(offending, file_);
     if (describe_mistaken_operator(parser, offending, x, d)) return d;
+    if (describe_keyword_after_declaring_word(parser, offending, d)) return d;
     if (!describe_set_of_a_port(parser, offending, x, d) &&
         !describe_construct(parser, offending, x, d))
       describe_by_position(parser, offending, x, d);
@@ -307,6 +309,43 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     note.message = "did you mean '" + meant + "'?";
     d.notes.push_back(std::move(note));
     return true;
+  }
+
+  // `event when;`: a keyword right after a word that only a name may follow. `event` starts
+  // two declarations, so the parser fails before it expects the name and would say "expected a
+  // declaration"; the word before the keyword says what was being named.
+  bool describe_keyword_after_declaring_word(antlr4::Parser* parser, const antlr4::Token* offending,
+                                             Diagnostic& d) {
+    static const std::map<std::string, std::string> kNamedBy = {
+        {"app", "the app declaration"},
+        {"type", "the type declaration"},
+        {"const", "the constant declaration"},
+        {"module", "the module declaration"},
+        {"event", "the event declaration"},
+        {"let", "the statement"},
+        {"var", "the statement"}};
+    const antlr4::dfa::Vocabulary& vocabulary = parser->getVocabulary();
+    // The token before the keyword, not LT(-1): a failed prediction leaves the stream at the
+    // declaration's start.
+    size_t index = offending->getTokenIndex();
+    if (index == 0 || index > parser->getTokenStream()->size()) return false;
+    antlr4::Token* previous = parser->getTokenStream()->get(index - 1);
+    if (!is_keyword(vocabulary, offending) || !previous || !is_keyword(vocabulary, previous))
+      return false;
+    auto named = kNamedBy.find(previous->getText());
+    if (named == kNamedBy.end()) return false;
+    d.message = "expected a name in " + named->second + ", found " + found_text(offending);
+    note_keyword_as_name(d);
+    return true;
+  }
+
+  // What to do about a keyword written as a name.
+  static void note_keyword_as_name(Diagnostic& d) {
+    d.message += " (a keyword cannot be used as a name)";
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "choose another name; docs/language.md#lexical-structure lists the keywords";
+    d.notes.push_back(std::move(note));
   }
 
   // `lifetime 0.5 s;`: the unit, apart from its number, reads as a name, and the message says
@@ -457,10 +496,11 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
         suggest_keyword(previous, kStatementKeywords, d);
     } else if (wanted.size() == 1 && x.kinds.count(ArbcParser::ID)) {
       d.message = "expected a name in " + context + ", found " + found;
-      if (is_keyword(parser->getVocabulary(), offending))
-        d.message += " (a keyword cannot be used as a name)";
+      if (is_keyword(parser->getVocabulary(), offending)) note_keyword_as_name(d);
     } else if (!wanted.empty() && wanted.size() <= 6) {
       d.message = "expected " + join(wanted, ", ", " or ") + " in " + context + ", found " + found;
+      if (x.kinds.count(ArbcParser::ID) && is_keyword(parser->getVocabulary(), offending))
+        note_keyword_as_name(d);
       std::vector<std::string> keywords;
       for (const std::string& l : x.literals)
         if (!l.empty() && std::isalpha(static_cast<unsigned char>(l[0]))) keywords.push_back(l);
