@@ -150,7 +150,13 @@ TypePtr Sema::resolve_type(TypeExpr& t) {
 TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
   if (types_done_.count(&decl)) return decl.type.resolved;
   if (types_active_.count(&decl)) {
-    error(decl.loc, "type '" + decl.name + "' is defined in terms of itself", "type-cycle");
+    // A message is a finite value that the proof and the Lua monitors copy whole: no type
+    // may contain itself, not even through a list.
+    error(decl.loc,
+          "type '" + decl.name +
+              "' is defined in terms of itself: a type cannot contain itself, even through a "
+              "list or another type; give the inner value a type of its own",
+          "type-cycle");
     types_done_.insert(&decl);
     return nullptr;
   }

@@ -610,7 +610,10 @@ void Sema::check_const(size_t index) {
   if (const_state_[index] == 2) return;
   ConstDecl& c = spec_.consts[index];
   if (const_state_[index] == 1) {
-    error(c.loc, "constant '" + c.name + "' is defined in terms of itself", "not-constant");
+    error(c.loc,
+          "constant '" + c.name +
+              "' is defined in terms of itself: compute it from literals and other constants",
+          "not-constant");
     const_state_[index] = 2;
     return;
   }

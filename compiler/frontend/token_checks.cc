@@ -94,7 +94,7 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
         if (word.empty()) {
           out.push_back(error_at(t, file,
                                  "unexpected character '" + describe_char(text) +
-                                     "': names use only letters, digits and '_'",
+                                     "': names use only ASCII letters, digits and '_'",
                                  "bad-character"));
           break;
         }
