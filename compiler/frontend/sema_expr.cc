@@ -6,6 +6,7 @@
 #include "compiler/frontend/builtin_aliases.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/join.h"
 
 namespace arbc::frontend {
 
@@ -239,7 +240,11 @@ void Sema::check_field(Expr& e, Scope& scope) {
     }
     names.push_back(f.name);
   }
-  unknown(field_name_loc(e), describe(base.type) + " has no field '" + e.text + "'",
+  // The fields it has, as for a vec3, so that a name too far for "did you mean" (`distance`
+  // for `dist`) still shows what to write; a long record's list would drown the line.
+  std::string has;
+  if (!names.empty() && names.size() <= 8) has = " (it has " + join(names, ", ", " and ") + ")";
+  unknown(field_name_loc(e), describe(base.type) + " has no field '" + e.text + "'" + has,
           "unknown-field", e.text, names);
 }
 

@@ -70,6 +70,39 @@ std::string bad_number_message(const std::string& text) {
          "the unit the modules use), and durations end in ms, s or min (e.g. 500ms, 1s)";
 }
 
+// `'take'`: a string quoted as in Python or Lua. One error from the quote to its partner on
+// the same line, with the string to write; returns the index of the last token it covers.
+size_t report_single_quotes(const std::vector<antlr4::Token*>& tokens, size_t open,
+                            const std::string& file, std::vector<Diagnostic>& out) {
+  const antlr4::Token* t = tokens[open];
+  size_t close = open + 1;
+  while (close < tokens.size() && tokens[close]->getLine() == t->getLine() &&
+         !(tokens[close]->getType() == ArbcLexer::ERROR_CHAR && tokens[close]->getText() == "'"))
+    ++close;
+  if (close >= tokens.size() || tokens[close]->getLine() != t->getLine()) {
+    out.push_back(error_at(
+        t, file, "unexpected character \"'\": strings are written in double quotes, \"like this\"",
+        "bad-character"));
+    return open;
+  }
+  std::string inside = close == open + 1 && tokens[close]->getStartIndex() == t->getStartIndex() + 1
+                           ? ""
+                           : t->getInputStream()->getText(antlr4::misc::Interval(
+                                 t->getStartIndex() + 1, tokens[close]->getStartIndex() - 1));
+  Diagnostic d = error_at(
+      t, file,
+      "strings are written in double quotes: write \"" + inside + "\", not '" + inside + "'",
+      "bad-character");
+  d.loc.end_column = error_at(tokens[close], file, "", "").loc.end_column;
+  // The note an editor turns into a quick fix that rewrites the quotes.
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = "did you mean '\"" + inside + "\"'?";
+  d.notes.push_back(std::move(note));
+  out.push_back(std::move(d));
+  return close;
+}
+
 }  // namespace
 
 void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string& file,
@@ -90,6 +123,10 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
         break;
       case ArbcLexer::ERROR_CHAR: {
         std::string text = t->getText();
+        if (text == "'") {
+          i = report_single_quotes(tokens, i, file, out);
+          break;
+        }
         std::string word = logic_word(text);
         if (word.empty()) {
           out.push_back(error_at(t, file,
