@@ -215,7 +215,7 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
 void Sema::check_set(Stmt& s) {
   auto it = events_.find(s.name);
   if (it == events_.end()) {
-    unknown(s.name_loc, "unknown event '" + s.name + "'", "unknown-event", s.name, event_names_);
+    unknown_event(s.name_loc, s.name, true);
   } else {
     const EventSymbol& event = spec_.event_symbols[it->second];
     if (event.kind != EventSymbol::Kind::Manual) {

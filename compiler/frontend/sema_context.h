@@ -163,6 +163,9 @@ class Sema {
                       const std::string& name, const std::vector<std::string>& candidates);
   // Adds the note "did you mean 'X'?" (an editor's quick fix puts X in place of `d`'s range).
   void did_you_mean(Diagnostic& d, const std::string& meant);
+  // An unknown event with no close name: how to declare it, for monitor code to set
+  // (`set_by_code`) or in any of the three ways.
+  Diagnostic& unknown_event(const ast::Loc& loc, const std::string& name, bool set_by_code);
   // A value of the wrong type where `want` is expected (an emit, a test's message, a var):
   // reported at the value, or, when a record literal in it names a field `want` lacks, at
   // that name with "did you mean" (stray_field.h).

@@ -40,6 +40,22 @@ Diagnostic& Sema::unknown(const Loc& loc, std::string message, std::string id,
   return d;
 }
 
+Diagnostic& Sema::unknown_event(const Loc& loc, const std::string& name, bool set_by_code) {
+  Diagnostic& d = unknown(loc, "unknown event '" + name + "'", "unknown-event", name, event_names_);
+  if (!d.notes.empty()) return d;  // "did you mean": most likely a misspelling
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message =
+      set_by_code ? "declare it: `event " + name + ";` (monitor code sets the events declared so)"
+                  : "declare it: `event " + name +
+                        ";` for monitor code to set, a status flag in "
+                        "`events from Module.port { " +
+                        name + " } lifetime D;`, or a derived event `event " + name +
+                        " = Module.port : PREDICATE;`";
+  d.notes.push_back(std::move(note));
+  return d;
+}
+
 void Sema::did_you_mean(Diagnostic& d, const std::string& meant) {
   Diagnostic note;
   note.severity = Severity::Note;
@@ -425,7 +441,7 @@ void Sema::check_domain() {
     std::set<std::string> seen;
     for (const EventName& n : x.events) {
       if (!events_.count(n.name)) {
-        unknown(n.loc, "unknown event '" + n.name + "'", "unknown-event", n.name, event_names_);
+        unknown_event(n.loc, n.name, false);
       } else if (!seen.insert(n.name).second) {
         error(n.loc, "event '" + n.name + "' is listed twice", "duplicate");
       }

@@ -663,7 +663,7 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
               "constraint-term");
         return Constraint::constant(false);
       }
-      unknown(e.loc, "unknown event '" + e.text + "'", "unknown-event", e.text, event_names_);
+      unknown_event(e.loc, e.text, false);
       return Constraint::constant(false);
     }
     case Expr::Kind::Unary:
