@@ -191,8 +191,15 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
       error(s.name_loc, "'" + s.name + "' is a constant; only `var` variables can be assigned",
             "assign");
     } else {
-      unknown(s.name_loc, "unknown variable '" + s.name + "'", "unknown-name", s.name,
-              scope.names());
+      Diagnostic& d = unknown(s.name_loc, "unknown variable '" + s.name + "'", "unknown-name",
+                              s.name, scope.names());
+      if (d.notes.empty()) {  // no close name: state is declared before it is assigned
+        Diagnostic note;
+        note.severity = Severity::Note;
+        note.message =
+            "declare it first, at the top level of the body: `var " + s.name + " = VALUE;`";
+        d.notes.push_back(std::move(note));
+      }
     }
     return;
   }

@@ -212,8 +212,16 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
     std::vector<std::string> names;
     for (const ModuleDecl& m : spec_.modules) names.push_back(m.name);
     // At the module's name alone: an editor's quick fix replaces exactly what is underlined.
-    unknown(ref.module_loc, "unknown module '" + ref.module + "'", "unknown-module", ref.module,
-            names);
+    Diagnostic& d = unknown(ref.module_loc, "unknown module '" + ref.module + "'", "unknown-module",
+                            ref.module, names);
+    if (d.notes.empty()) {  // no close name: what there is, and how to add it
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message = "declare it: `module " + ref.module + " { in|out PORT: TYPE; ... }`";
+      if (!names.empty() && names.size() <= 10)
+        note.message += "; the modules declared are " + join(names, ", ", " and ");
+      d.notes.push_back(std::move(note));
+    }
     return false;
   }
   ref.port_decl = ref.module_decl->find_port(ref.port);

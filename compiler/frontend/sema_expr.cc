@@ -171,6 +171,13 @@ void Sema::check_name(Expr& e, Scope& scope) {
                    "port, '" +
                    message + "' (write " + message + ".x, not " + e.text + "." + message + ".x)";
     d.notes.push_back(std::move(note));
+  } else if (d.notes.empty()) {  // no close name: what a name can be here
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = std::string("a name is ") +
+                   (message.empty() ? "" : "the incoming message, '" + message + "', ") +
+                   "a `let` or `var` written before it, or a `const`";
+    d.notes.push_back(std::move(note));
   }
 }
 
