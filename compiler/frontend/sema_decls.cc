@@ -12,6 +12,9 @@
 
 namespace arbc::frontend {
 
+// What to do about a name declared twice (the two may mean different things, so not "delete").
+const char* const kRenameOne = ": rename one of them";
+
 using namespace ast;
 
 // ---- reporting ----------------------------------------------------------------------------
@@ -147,8 +150,8 @@ TypePtr Sema::resolve_type(TypeExpr& t) {
       for (size_t i = 0; i < t.fields.size(); ++i) {
         for (size_t j = 0; j < i; ++j)
           if (t.fields[j].first == t.fields[i].first)
-            error(t.field_locs[i], "field '" + t.fields[i].first + "' is declared twice",
-                  "duplicate");
+            error(t.field_locs[i],
+                  "field '" + t.fields[i].first + "' is declared twice" + kRenameOne, "duplicate");
         TypePtr f = resolve_type(*t.fields[i].second);
         if (!f) ok = false;
         fields.push_back({t.fields[i].first, f});
@@ -306,7 +309,8 @@ void Sema::declare_types() {
         t.name == "string" || t.name == "vec3" || t.name == "list") {
       if (types_.count(t.name)) {
         error(t.loc,
-              "type '" + t.name + "' is already defined at " + where_defined(types_[t.name]->loc),
+              "type '" + t.name + "' is already defined at " + where_defined(types_[t.name]->loc) +
+                  kRenameOne,
               "duplicate");
       } else {
         error(t.loc, "'" + t.name + "' is a built-in type and cannot be redefined", "duplicate");
@@ -325,7 +329,7 @@ void Sema::declare_consts() {
     if (consts_.count(c.name)) {
       error(c.loc,
             "constant '" + c.name + "' is already defined at " +
-                where_defined(spec_.consts[consts_[c.name]].loc),
+                where_defined(spec_.consts[consts_[c.name]].loc) + kRenameOne,
             "duplicate");
       const_state_[i] = 2;
       continue;
@@ -339,7 +343,8 @@ void Sema::declare_modules() {
   for (ModuleDecl& m : spec_.modules) {
     if (modules_.count(m.name)) {
       error(m.loc,
-            "module '" + m.name + "' is already defined at " + where_defined(modules_[m.name]->loc),
+            "module '" + m.name + "' is already defined at " +
+                where_defined(modules_[m.name]->loc) + kRenameOne,
             "duplicate");
     } else {
       modules_[m.name] = &m;
@@ -349,7 +354,7 @@ void Sema::declare_modules() {
       if (ports.count(p.name)) {
         error(p.loc,
               "module '" + m.name + "' already has a port '" + p.name + "' (" +
-                  where_defined(ports[p.name]->loc) + ")",
+                  where_defined(ports[p.name]->loc) + ")" + kRenameOne,
               "duplicate");
       }
       ports[p.name] = &p;
@@ -382,7 +387,7 @@ void Sema::add_event(EventSymbol symbol) {
   if (it != events_.end()) {
     error(symbol.loc,
           "event '" + symbol.name + "' is already declared at " +
-              where_defined(spec_.event_symbols[it->second].loc),
+              where_defined(spec_.event_symbols[it->second].loc) + kRenameOne,
           "duplicate");
     return;
   }
@@ -482,7 +487,7 @@ void Sema::check_arbitration(ArbitrateDecl& a) {
     if (names.count(r.name)) {
       error(r.loc,
             "port " + port + " already has a rule '" + r.name + "' (" +
-                where_defined(names[r.name]->loc) + ")",
+                where_defined(names[r.name]->loc) + ")" + kRenameOne,
             "duplicate");
     }
     names[r.name] = &r;

@@ -33,7 +33,7 @@ void Sema::check_tests() {
     if (!added) {
       error(t.loc,
             "test \"" + t.name + "\" is already defined at line " +
-                std::to_string(it->second->loc.line),
+                std::to_string(it->second->loc.line) + ": rename one of them",
             "duplicate");
     }
     if (!t.on.empty()) t.on_rule = find_test_rule(t.on, t.on_loc);
