@@ -547,7 +547,7 @@ void Sema::check_duration(Duration& d, const std::string& what) {
   }
   d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
   if (!(d.seconds > 0) || !std::isfinite(d.seconds))
-    error(e.loc, what + " must be a positive duration", "duration");
+    error(e.loc, what + " must be a positive duration, such as 500ms or 1s", "duration");
 }
 
 bool Sema::fold_const(const Expr& e, ConstDecl& into) {
