@@ -264,6 +264,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
         !describe_construct(parser, offending, x, d))
       describe_by_position(parser, offending, x, d);
     note_spaced_unit(parser, offending, d);
+    note_nested_comment(parser, offending, d);
     // `accept len(objects) = 0;`: a lone `=` right after an operand, where no `=` may come, is
     // almost surely a comparison.
     antlr4::Token* before = parser->getTokenStream()->LT(-1);
@@ -345,6 +346,45 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     Diagnostic note;
     note.severity = Severity::Note;
     note.message = "choose another name; docs/language.md#lexical-structure lists the keywords";
+    d.notes.push_back(std::move(note));
+  }
+
+  // `/* a /* b */ c */`: block comments do not nest, so the first `*/` ended the comment and
+  // its rest reads as code. Seen as two `/*` in the text skipped just before the offending
+  // token, which ends in `*/`.
+  static void note_nested_comment(antlr4::Parser* parser, const antlr4::Token* offending,
+                                  Diagnostic& d) {
+    size_t index = offending->getTokenIndex();
+    if (offending->getType() == antlr4::Token::EOF || index == 0 ||
+        index > parser->getTokenStream()->size())
+      return;
+    const antlr4::Token* next = index + 1 < parser->getTokenStream()->size()
+                                    ? parser->getTokenStream()->get(index + 1)
+                                    : nullptr;
+    if (offending->getText() == "*" && next && next->getText() == "/" &&
+        next->getStartIndex() == offending->getStopIndex() + 1) {
+      // A `*/` in code: the comment it was meant to close ended at an earlier `*/`.
+      Diagnostic note;
+      note.severity = Severity::Note;
+      note.message =
+          "this '*/' closes no comment: block comments do not nest, so an earlier '*/' closed "
+          "it; use // for the inner comment";
+      d.notes.push_back(std::move(note));
+      return;
+    }
+    const antlr4::Token* previous = parser->getTokenStream()->get(index - 1);
+    if (!previous || previous->getStopIndex() + 1 >= offending->getStartIndex()) return;
+    std::string skipped = offending->getInputStream()->getText(
+        antlr4::misc::Interval(previous->getStopIndex() + 1, offending->getStartIndex() - 1));
+    size_t end = skipped.find_last_not_of(" \t\r\n");
+    if (end == std::string::npos || end < 1 || skipped.compare(end - 1, 2, "*/") != 0) return;
+    size_t first = skipped.find("/*");
+    if (first == std::string::npos || skipped.find("/*", first + 2) == std::string::npos) return;
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message =
+        "block comments do not nest: the first '*/' closed the comment, and the rest reads as "
+        "code; use // for the inner comment";
     d.notes.push_back(std::move(note));
   }
 
