@@ -65,6 +65,10 @@ std::optional<std::string> statement_for_word(std::string_view word) {
            "`emit EXPR;` gives the value delivered"},
           {{"rate", "limit", "period"}, "`throttle D;` delivers at most one message per D"},
           {{"const"}, "a name for the rest of the body is `let NAME = EXPR;`"},
+          {{"while", "for", "foreach", "loop", "do"},
+           "a body has no loops: it runs once per message, and `min_by`, `max_by` and `len` "
+           "read a whole list"},
+          {{"else"}, "`else` follows the `}` of an `if`: `if C { ... } else { ... }`"},
       },
       word);
 }

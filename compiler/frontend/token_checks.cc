@@ -127,6 +127,13 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
           i = report_single_quotes(tokens, i, file, out);
           break;
         }
+        if (text == "?") {  // C's `c ? a : b`
+          out.push_back(error_at(t, file,
+                                 "'?' is not an operator of the spec language: choose with "
+                                 "`if C { emit A; } else { emit B; }`",
+                                 "bad-character"));
+          break;
+        }
         std::string word = logic_word(text);
         if (word.empty()) {
           out.push_back(error_at(t, file,
