@@ -4,8 +4,10 @@
 #include <ArbcParser.h>
 #include <antlr4-runtime.h>
 
+#include <algorithm>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include "compiler/frontend/ast_builder.h"
 #include "compiler/frontend/lexed_text.h"
@@ -62,11 +64,21 @@ std::vector<std::pair<size_t, size_t>> split_declarations(
   return ranges;
 }
 
+bool lexical_error(const antlr4::Token* t) {
+  size_t type = t->getType();
+  return type == ArbcLexer::ERROR_CHAR || type == ArbcLexer::BAD_NUMBER ||
+         type == ArbcLexer::UNTERMINATED_STRING || type == ArbcLexer::UNTERMINATED_COMMENT;
+}
+
 // Parses each declaration on its own so that every broken declaration gets exactly one
-// error, and errors do not cascade from one declaration into the next.
+// error, and errors do not cascade from one declaration into the next. With
+// `skip_lexical_errors`, a declaration holding a lexical error (already reported) is left out.
 void report_syntax_errors(const std::vector<antlr4::Token*>& tokens, const std::string& file,
-                          std::vector<Diagnostic>& out) {
+                          std::vector<Diagnostic>& out, bool skip_lexical_errors = false) {
   for (auto [begin, end] : split_declarations(tokens)) {
+    if (skip_lexical_errors &&
+        std::any_of(tokens.begin() + begin, tokens.begin() + end, lexical_error))
+      continue;
     std::vector<std::unique_ptr<antlr4::Token>> copies;
     for (size_t i = begin; i < end; ++i)
       copies.push_back(std::make_unique<antlr4::CommonToken>(tokens[i]));
@@ -129,7 +141,18 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
   LexedText lexed(code_points, 0, code_points.size(), 1, text.size());
   const std::vector<antlr4::Token*>& tokens = lexed.tokens;
   check_lexical(tokens, file, result.diagnostics);
-  if (!result.diagnostics.empty()) return result;
+  if (!result.diagnostics.empty()) {
+    // The other declarations' syntax errors too, so that one stray character does not hide
+    // them until it is fixed; in file order.
+    if (check_nesting(tokens, lexed.lexer.getVocabulary(), file, result.diagnostics))
+      report_syntax_errors(tokens, file, result.diagnostics, true);
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                       return std::tie(a.loc.line, a.loc.column) <
+                              std::tie(b.loc.line, b.loc.column);
+                     });
+    return result;
+  }
   if (tokens.size() == 1) {  // only EOF
     result.diagnostics.push_back(
         file_error(file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
