@@ -260,6 +260,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     d.loc = token_location(offending, file_);
     if (describe_mistaken_operator(parser, offending, x, d)) return d;
     if (describe_keyword_after_declaring_word(parser, offending, d)) return d;
+    if (describe_when_after_hold(parser, offending, d)) return d;
     if (!describe_set_of_a_port(parser, offending, x, d) &&
         !describe_construct(parser, offending, x, d))
       describe_by_position(parser, offending, x, d);
@@ -337,6 +338,19 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (named == kNamedBy.end()) return false;
     d.message = "expected a name in " + named->second + ", found " + found_text(offending);
     note_keyword_as_name(d);
+    return true;
+  }
+
+  // `a: from M.p hold 1s when e;`: the rule's parts in the wrong order.
+  bool describe_when_after_hold(antlr4::Parser* parser, const antlr4::Token* offending,
+                                Diagnostic& d) {
+    if (offending->getText() != "when" || !in_rule(parser->getContext(), ArbcParser::RuleRuleDecl))
+      return false;
+    antlr4::Token* hold = parser->getTokenStream()->LT(-2);
+    if (!hold || hold->getText() != "hold") return false;
+    d.message =
+        "`when` goes before `hold` in a rule: write `NAME: from Module.port when CONSTRAINT "
+        "hold D`";
     return true;
   }
 
