@@ -2,11 +2,13 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <string>
 #include <string_view>
 
 #include "cli/commands.h"
 #include "cli/heap_reserve.h"
 #include "cli/left_at_exit.h"
+#include "core/suggest.h"
 
 namespace {
 
@@ -65,6 +67,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "arbc: internal error: %s\n", e.what());
     return kExitRuntimeFailure;
   }
-  std::fprintf(stderr, "arbc: unknown command '%s'\n\n%s", argv[1], kUsage);
+  // A misspelt command (`verfy`) is named with the one meant, above the usage.
+  std::string hint;
+  if (auto meant = arbc::closest_name(
+          command, {"check", "verify", "build", "run", "test", "docs", "import", "lsp"}))
+    hint = ": did you mean '" + *meant + "'?";
+  std::fprintf(stderr, "arbc: unknown command '%s'%s\n\n%s", argv[1], hint.c_str(), kUsage);
   return kExitBadInput;
 }

@@ -214,6 +214,17 @@ def case_dds_placement_mistakes(arbc, plugin):
                      "run here) for a mediator, or --host the modules it runs")
 
 
+def case_misspelt_command(arbc, plugin):
+    # `arbc verfy`: the command meant, then the usage; a word close to none gets the usage alone.
+    code, out, err = run(arbc, "verfy", "specs/table_clean.spec")
+    expect(code == 2, f"exit {code}, expected 2", out, err)
+    expect(err.startswith("arbc: unknown command 'verfy': did you mean 'verify'?\n\nusage: "),
+           "no suggestion above the usage", out, err)
+    code, out, err = run(arbc, "frobnicate")
+    expect(code == 2 and err.startswith("arbc: unknown command 'frobnicate'\n\nusage: "),
+           "a far word gets more than the usage", out, err)
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":
