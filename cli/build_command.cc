@@ -13,6 +13,7 @@
 #include "cli/build_summary.h"
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
+#include "cli/parse_error.h"
 #include "cli/proof_record.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
@@ -65,8 +66,7 @@ std::optional<int> parse_args(std::span<char*> args, BuildArgs& a) {
     for (size_t i = args.size(); i > 1; --i) rest.emplace_back(args[i - 1]);
     cli.parse(rest);
   } catch (const CLI::ParseError& e) {
-    int code = cli.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
   return std::nullopt;
 }

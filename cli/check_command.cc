@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
+#include "cli/parse_error.h"
 #include "compiler/frontend/frontend.h"
 #include "core/check_ids.h"
 
@@ -54,8 +55,7 @@ int check_command(std::span<char*> args) {
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(app, e);
   }
   if (list_ids) {
     for (const frontend::CheckId& id : frontend::all_check_ids())

@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_loader.h"
+#include "cli/parse_error.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
 #include "core/join.h"
@@ -54,7 +55,7 @@ int docs_command(std::span<char*> args) {
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e) == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
 
   LoadNotes notes;

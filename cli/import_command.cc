@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/parse_error.h"
 #include "core/diagnostic.h"
 #include "import/yarp/spec_writer.h"
 #include "import/yarp/yarp_import.h"
@@ -36,8 +37,7 @@ int import_command(std::span<char*> args) {
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int code = cli.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
   yarp::YarpImport im = yarp::import_yarp(input, {search_paths});
   SourceCache sources;

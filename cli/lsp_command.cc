@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/duration_option.h"
 #include "cli/monitor_runner.h"
+#include "cli/parse_error.h"
 #include "cli/test_replayer.h"
 #include "lsp/server.h"
 
@@ -38,8 +39,7 @@ int lsp_command(std::span<char*> args) {
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(app, e);
   }
   options.verify = !no_verify;
   // Counterexamples are replayed as `arbc verify` replays them, from the text being proved:

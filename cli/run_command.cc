@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/parse_error.h"
 #include "cli/proof_record.h"
 #include "cli/report/report_file.h"
 #include "cli/run_end.h"
@@ -183,8 +184,7 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int rc = cli.exit(e);
-    return rc == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
   std::string value_error;
   if (!parse_run_duration(duration_text, &options.duration, &value_error) ||

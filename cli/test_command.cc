@@ -20,6 +20,7 @@
 
 #include "cli/commands.h"
 #include "cli/junit.h"
+#include "cli/parse_error.h"
 #include "cli/test_filter.h"
 #include "cli/test_runner.h"
 #include "cli/verify_gate.h"
@@ -168,8 +169,7 @@ std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int code = cli.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
   return std::nullopt;
 }

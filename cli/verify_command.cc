@@ -14,6 +14,7 @@
 #include "cli/duration_option.h"
 #include "cli/model_loader.h"
 #include "cli/monitor_runner.h"
+#include "cli/parse_error.h"
 #include "cli/test_replayer.h"
 #include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
@@ -107,8 +108,7 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
-    int code = cli.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return exit_for_parse_error(cli, e);
   }
   return std::nullopt;
 }

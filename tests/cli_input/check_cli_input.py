@@ -225,6 +225,18 @@ def case_misspelt_command(arbc, plugin):
            "a far word gets more than the usage", out, err)
 
 
+def case_misspelt_option(arbc, plugin):
+    # `--frmat`: the option meant, in the command's name; its value may come along as an extra.
+    code, out, err = run(arbc, "check", "--frmat", "json", "specs/table_clean.spec")
+    expect_bad_input((code, out, err),
+                     "arbc check: there is no option --frmat: did you mean '--format'?\n")
+    code, out, err = run(arbc, "run", "specs/table_clean.spec", "--seeed", "3")
+    expect_bad_input((code, out, err), "arbc run: there is no option --seeed: did you mean '--seed'?")
+    code, out, err = run(arbc, "verify", "--zzzzzz", "specs/table_clean.spec")
+    expect_bad_input((code, out, err), "--zzzzzz")
+    expect("did you mean" not in err, "a suggestion for a word close to no option", out, err)
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":
