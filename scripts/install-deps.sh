@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages arbc needs, only those missing; safe to run twice.
-# Usage: scripts/install-deps.sh [--test]   (--test adds what only the test suite needs)
+# Usage: scripts/install-deps.sh [--test | --bench]
+#   --test adds what only the test suite needs, --bench what only bench/run needs
 set -euo pipefail
 
 packages=(
@@ -14,6 +15,9 @@ packages=(
   graphviz                                   # arbc docs: app.svg
   libfastrtps-dev libfastcdr-dev fastddsgen  # arbc_dds: the distributed runtime (Fast-DDS 2.9)
 )
+if [[ "${1:-}" == "--bench" ]]; then
+  packages+=(valgrind)                       # bench/figures/instructions.sh: callgrind's counts
+fi
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
              clang-format                    # tests/code_shape: code_format (scripts/format.sh)

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Runtime figures (issue 5): constraint_decision (baseline: the YARP way), monitored_delivery
-# (baseline: lua_floor_tables, the Lua work alone), bare_delivery, monitor_memory, and
-# lua_floor_userdata (the Lua work were a message a userdata; issue 21). Medians over repetitions of Google Benchmark runs; times are
-# CPU time per operation, which the other jobs on the shared 2-core machine disturb far less
-# than wall time (wall-time medians are printed beside them as "wall").
+# (baseline: lua_floor_tables, the Lua work alone), bare_delivery, monitor_memory,
+# lua_floor_reused (the Lua work with the message's tables reused: the lower bound of the table
+# form) and lua_floor_userdata (the Lua work were a message a userdata; issue 21). Medians over
+# repetitions of Google Benchmark runs; times are CPU time per operation, which the other jobs
+# on the shared 2-core machine disturb far less than wall time (wall-time medians are printed
+# beside them as "wall"). bench/figures/instructions.sh counts the same paths' instructions.
 set -euo pipefail
 build=${ARBC_BENCH_BUILD:-${ARBC_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}/build-bench}
 bench=$build/bench/runtime/runtime_bench
@@ -28,6 +30,8 @@ line(name="constraint_decision", value=round(decision, 2), unit="ns", baseline=r
 monitored, floor = cpu("BM_MonitoredDelivery"), cpu("BM_LuaFloorTables")
 line(name="monitored_delivery", value=round(monitored, 1), unit="ns", baseline=round(floor, 1),
      ratio=round(monitored / floor, 2), wall=round(wall("BM_MonitoredDelivery"), 1))
+line(name="lua_floor_reused", value=round(cpu("BM_LuaFloorReused"), 1), unit="ns",
+     baseline=round(floor, 1), ratio=round(cpu("BM_LuaFloorReused") / floor, 2))
 line(name="lua_floor_userdata", value=round(cpu("BM_LuaFloorUserdata"), 1), unit="ns",
      baseline=round(floor, 1), ratio=round(cpu("BM_LuaFloorUserdata") / floor, 2))
 line(name="bare_delivery", value=round(cpu("BM_BareDelivery"), 1), unit="ns",
