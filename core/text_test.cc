@@ -1,5 +1,5 @@
-// core/join.h, core/quote.h and core/time_text.h: the one join, the one escaping routine and
-// the one way a time is printed for people.
+// core/join.h, core/quote.h, core/xml_text.h and core/time_text.h: the one join, the escaping
+// routines for literals and for markup, and the one way a time is printed for people.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -9,6 +9,7 @@
 #include "core/join.h"
 #include "core/quote.h"
 #include "core/time_text.h"
+#include "core/xml_text.h"
 
 namespace arbc {
 namespace {
@@ -51,6 +52,20 @@ TEST(Quote, AppendsAfterWhatIsThere) {
   std::string out = "x=";
   append_quoted(out, "v", QuoteStyle::Json);
   EXPECT_EQ(out, "x=\"v\"");
+}
+
+TEST(XmlText, EscapesMarkupAndKeepsUtf8AndApostrophes) {
+  EXPECT_EQ(xml_escaped("a<b> & \"c\" it's \xc3\xa9"),
+            "a&lt;b&gt; &amp; &quot;c&quot; it's \xc3\xa9");
+}
+
+TEST(XmlText, ControlCharactersXmlForbidsBecomeReplacementCharacters) {
+  EXPECT_EQ(xml_escaped(std::string("a\x01"
+                                    "b\0c\td\ne\rf",
+                                    11)),
+            "a\xEF\xBF\xBD"
+            "b\xEF\xBF\xBD"
+            "c\td\ne\rf");
 }
 
 TEST(TimeText, DropsBinaryNoiseAndTrailingZeros) {

@@ -3,34 +3,17 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/xml_text.h"
+
 namespace arbc::report {
 
 void append_html_escaped(std::string& out, std::string_view s) {
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-          out += "\xEF\xBF\xBD";  // U+FFFD
-        } else {
-          out += c;
-        }
-    }
+  // HTML escapes ' besides XML's specials, so text is safe in a single-quoted attribute too.
+  for (size_t quote; (quote = s.find('\'')) != std::string_view::npos; s.remove_prefix(quote + 1)) {
+    append_xml_escaped(out, s.substr(0, quote));
+    out += "&#39;";
   }
+  append_xml_escaped(out, s);
 }
 
 std::string html_escape(std::string_view s) {
