@@ -134,7 +134,10 @@ void TopicReader::take_one(WireSample& sample, const fdds::SampleInfo& info) {
   Buffered b;
   std::string why;
   bool bad = sample.bad;
-  if (bad) {
+  if (bad && sample.extra_bytes > 0) {
+    why = "a sample on " + topic + " has " + std::to_string(sample.extra_bytes) +
+          " bytes more than " + wire->name + " as the spec declares it";
+  } else if (bad) {
     why = "a sample on " + topic + " does not decode as " + wire->name;
   } else if (!from_wire(*wire, sample.data, &b.value, &why)) {
     bad = true;
