@@ -9,6 +9,7 @@
 
 #include "core/json_diagnostic.h"
 #include "core/suggest.h"
+#include "dds/known_messages.h"
 
 namespace arbc::dds {
 
@@ -284,6 +285,14 @@ bool check_deployment(const Deployment& d, const model::App& app, std::vector<Di
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
   for (const model::NamedType& t : app.types) known.insert(t.name);
   for (const auto& [name, wire] : d.types) {
+    const model::NamedType* named = nullptr;
+    for (const model::NamedType& t : app.types) {
+      if (t.name == name) named = &t;
+    }
+    if (named && named->type) {
+      std::string order = field_order_problem(name, *named->type, wire);
+      if (!order.empty()) problems.value({"types", name}, "types: \"" + name + "\": " + order);
+    }
     if (!known.count(name)) {
       std::string names;
       for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;

@@ -60,7 +60,9 @@ bool parse_deployment(std::string_view text, const std::string& path, Deployment
 // Reads and parses the file at `path` (a missing file or a directory is an error at the file).
 bool read_deployment(const std::string& path, Deployment* out, std::vector<Diagnostic>* errors);
 // Checks the file against the app: every `topics` key is a port of the app, every `types` key
-// a named type of the app or a built-in type name, every "qos" "ports" key a port, no two ports
+// a named type of the app or a built-in type name whose fields, when it stands for a known ROS 2
+// message, come in that message's order (dds/known_messages.h), every "qos" "ports" key a port,
+// no two ports
 // share a topic (a topic the file gives is not another port's default either).
 bool check_deployment(const Deployment& d, const model::App& app, std::vector<Diagnostic>* errors);
 // The diagnostics as "file:line:col: message" lines, for an error that is one string.
