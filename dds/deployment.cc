@@ -96,7 +96,7 @@ void read_qos_word(const Json& j, const Path& path, const char* usual, const cha
                    Problems& problems) {
   std::string word = j.is_string() ? j.get<std::string>() : "";
   if (word != usual && word != other) {
-    problems.value(path, "qos: ports." + path[2] + "." + path[3] + ": expected \"" + usual +
+    problems.value(path, "qos: ports: \"" + path[2] + "\": " + path[3] + ": expected \"" + usual +
                              "\" or \"" + other + "\"");
     return;
   }

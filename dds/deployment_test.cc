@@ -83,9 +83,10 @@ TEST(DeploymentTest, BadFilesSayWhatIsWrongAndWhere) {
        "d.json:1:10: qos: unknown key \"dpeth\"; did you mean \"depth\"? (the qos keys are: "
        "depth, ports)"},
       {R"({"qos": {"ports": {"Base.odom": {"reliability": "besteffort"}}}})",
-       "d.json:1:49: qos: ports.Base.odom.reliability: expected \"reliable\" or \"best_effort\""},
+       "d.json:1:49: qos: ports: \"Base.odom\": reliability: expected \"reliable\" or "
+       "\"best_effort\""},
       {R"({"qos": {"ports": {"Base.odom": {"durability": true}}}})",
-       "d.json:1:48: qos: ports.Base.odom.durability: expected \"volatile\" or "
+       "d.json:1:48: qos: ports: \"Base.odom\": durability: expected \"volatile\" or "
        "\"transient_local\""},
       {R"({"qos": {"ports": {"Base.odom": {"reliabilty": "reliable"}}}})",
        "d.json:1:34: qos: ports: \"Base.odom\": unknown key \"reliabilty\"; did you mean "
