@@ -8,8 +8,10 @@
 #include <sstream>
 #include <thread>
 
+#include "core/join.h"
 #include "dds/dds_transport_internal.h"
 #include "dds/no_peer_reports.h"
+#include "dds/qos_mismatch.h"
 #include "dds/type_name_hint.h"
 #include "runtime/executor.h"
 
@@ -148,6 +150,47 @@ void DdsTransport::report_other_writer(const std::string& topic, const std::stri
   report(line);
 }
 
+namespace {
+
+// DDS's name for a QoS policy, as its specification writes it.
+std::string policy_name(fdds::QosPolicyId_t id) {
+  switch (id) {
+    case fdds::DEADLINE_QOS_POLICY_ID:
+      return "DEADLINE";
+    case fdds::LIVELINESS_QOS_POLICY_ID:
+      return "LIVELINESS";
+    case fdds::OWNERSHIP_QOS_POLICY_ID:
+      return "OWNERSHIP";
+    case fdds::DESTINATIONORDER_QOS_POLICY_ID:
+      return "DESTINATION_ORDER";
+    case fdds::PRESENTATION_QOS_POLICY_ID:
+      return "PRESENTATION";
+    case fdds::LATENCYBUDGET_QOS_POLICY_ID:
+      return "LATENCY_BUDGET";
+    case fdds::DATAREPRESENTATION_QOS_POLICY_ID:
+      return "DATA_REPRESENTATION";
+    default:
+      return "QoS policy " + std::to_string(static_cast<int>(id));
+  }
+}
+
+}  // namespace
+
+void DdsTransport::report_qos_mismatch(const std::string& topic, const std::string& port,
+                                       bool reader, fdds::QosPolicyId_t policy) {
+  if (closing_) return;
+  QosMismatch m{topic, port, reader, QosPolicy::Other, policy_name(policy)};
+  if (policy == fdds::RELIABILITY_QOS_POLICY_ID) m.policy = QosPolicy::Reliability;
+  if (policy == fdds::DURABILITY_QOS_POLICY_ID) m.policy = QosPolicy::Durability;
+  std::string line = qos_mismatch_text(options_.deployment, m);
+  {
+    std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    qos_mismatched_.insert(topic);
+    if (!mismatches_.insert(line).second) return;
+  }
+  report(line);
+}
+
 // A topic expects a peer when the app connects its port: an output read by some connection,
 // an input some connection delivers to. Others (an output nothing reads) may stay alone.
 bool DdsTransport::expects_peer(const TransportPort& port, bool input) const {
@@ -178,9 +221,12 @@ std::string last_name(const std::string& topic) { return topic.substr(topic.rfin
 // from ours by a typo or by the ROS 2 naming ("rt/" and "dds_::T_"): name what to check, and
 // the remote topics seen that look like ours.
 std::string DdsTransport::peer_hint(const std::vector<std::string>& alone) const {
-  std::vector<std::string> near;
+  std::vector<std::string> near, qos;
   {
     std::lock_guard<std::mutex> lock(mismatch_mutex_);
+    for (const std::string& topic : alone) {
+      if (qos_mismatched_.count(topic)) qos.push_back(topic);
+    }
     for (const auto& [topic, type] : seen_remote_) {
       bool like = std::any_of(alone.begin(), alone.end(), [&](const std::string& ours) {
         return type_of_topic_.at(ours) == type || last_name(ours) == last_name(topic);
@@ -188,7 +234,12 @@ std::string DdsTransport::peer_hint(const std::vector<std::string>& alone) const
       if (like && near.size() < 5) near.push_back(topic + " (" + type + ")");
     }
   }
-  std::string hint = "; is every program in domain " + std::to_string(options_.domain) +
+  // A peer that DDS refused for its QoS is there: the question is not where it is.
+  std::string refused =
+      qos.empty() ? ""
+                  : "; a program on " + join(qos) + " has a QoS that does not match (said above)";
+  if (qos.size() == alone.size()) return refused;
+  std::string hint = refused + "; is every program in domain " + std::to_string(options_.domain) +
                      " (--domain, ROS_DOMAIN_ID), with these topic and type names (--deploy)?";
   if (near.empty()) return hint;
   std::string names;

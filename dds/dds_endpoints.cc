@@ -19,11 +19,14 @@ std::vector<eprosima::fastrtps::rtps::octet> user_data(const WireType& wire) {
 }
 
 // Reliable, volatile, keep-last `depth`: what ROS 2's default profile is, with a deeper history
-// (dds/deployment.h says why). Payloads grow as needed: types are unbounded.
+// (dds/deployment.h says why), unless the deployment gives the port best effort or transient
+// local (the QoS of the program at the other end). Payloads grow as needed: types are unbounded.
 template <class Qos>
-void set_common_qos(Qos& qos, int depth, const WireType& wire) {
-  qos.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
-  qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+void set_common_qos(Qos& qos, int depth, const WireType& wire, const PortQos& port) {
+  qos.reliability().kind =
+      port.best_effort ? fdds::BEST_EFFORT_RELIABILITY_QOS : fdds::RELIABLE_RELIABILITY_QOS;
+  qos.durability().kind =
+      port.transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS : fdds::VOLATILE_DURABILITY_QOS;
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = depth;
   qos.endpoint().history_memory_policy =
@@ -53,10 +56,11 @@ bool DdsTransport::add_reader(const Endpoint& e, std::string* error) {
   if (!t) return false;
   auto r = std::make_unique<TopicReader>(this, e.port, e.input, e.topic, e.wire);
   fdds::DataReaderQos qos = subscriber_->get_default_datareader_qos();
-  set_common_qos(qos, depth(), *e.wire);
+  set_common_qos(qos, depth(), *e.wire, options_.deployment.qos_of(e.port.qualified));
   fdds::StatusMask mask = fdds::StatusMask::data_available()
                           << fdds::StatusMask::sample_lost()
-                          << fdds::StatusMask::subscription_matched();
+                          << fdds::StatusMask::subscription_matched()
+                          << fdds::StatusMask::requested_incompatible_qos();
   r->reader = subscriber_->create_datareader(t, qos, r.get(), mask);
   if (!r->reader) {
     *error = "DDS: cannot create a reader on topic " + e.topic;
@@ -71,9 +75,10 @@ bool DdsTransport::add_writer(const Endpoint& e, std::string* error) {
   if (!t) return false;
   auto w = std::make_unique<TopicWriter>(this, e.port, e.input, e.topic, e.wire);
   fdds::DataWriterQos qos = publisher_->get_default_datawriter_qos();
-  set_common_qos(qos, depth(), *e.wire);
-  w->writer =
-      publisher_->create_datawriter(t, qos, w.get(), fdds::StatusMask::publication_matched());
+  set_common_qos(qos, depth(), *e.wire, options_.deployment.qos_of(e.port.qualified));
+  w->writer = publisher_->create_datawriter(t, qos, w.get(),
+                                            fdds::StatusMask::publication_matched()
+                                                << fdds::StatusMask::offered_incompatible_qos());
   if (!w->writer) {
     *error = "DDS: cannot create a writer on topic " + e.topic;
     return false;
@@ -129,7 +134,10 @@ void TopicReader::take_one(WireSample& sample, const fdds::SampleInfo& info) {
   Buffered b;
   std::string why;
   bool bad = sample.bad;
-  if (bad) {
+  if (bad && sample.extra_bytes > 0) {
+    why = "a sample on " + topic + " has " + std::to_string(sample.extra_bytes) +
+          " bytes more than " + wire->name + " as the spec declares it";
+  } else if (bad) {
     why = "a sample on " + topic + " does not decode as " + wire->name;
   } else if (!from_wire(*wire, sample.data, &b.value, &why)) {
     bad = true;
@@ -201,6 +209,12 @@ void TopicReader::on_subscription_matched(fdds::DataReader*,
         "DDS: topic " + topic + " (" + port.qualified + ") has no publisher any more; " +
         (input ? "nothing reaches the module until one is back" : silence_effect(port)));
   }
+}
+
+void TopicReader::on_requested_incompatible_qos(
+    fdds::DataReader*, const fdds::RequestedIncompatibleQosStatus& status) {
+  if (status.total_count_change > 0)
+    transport_->report_qos_mismatch(topic, port.qualified, true, status.last_policy_id);
 }
 
 void TopicReader::report_losses() {
@@ -280,6 +294,12 @@ void TopicWriter::on_publication_matched(fdds::DataWriter*,
                        ") has no subscriber any more: the process that hosts " + port.module +
                        " is gone; what is delivered to it is lost until it is back");
   }
+}
+
+void TopicWriter::on_offered_incompatible_qos(fdds::DataWriter*,
+                                              const fdds::OfferedIncompatibleQosStatus& status) {
+  if (status.total_count_change > 0)
+    transport_->report_qos_mismatch(topic, port.qualified, false, status.last_policy_id);
 }
 
 }  // namespace arbc::dds

@@ -7,7 +7,9 @@
 //     its topic;
 //   - what a connection mediated here delivers to a module hosted elsewhere is published on
 //     that module's input topic; a hosted module whose input another process mediates reads it.
-// QoS: reliable, volatile, keep-last with the deployment's depth (100 by default). A reader
+// QoS: reliable, volatile, keep-last with the deployment's depth (100 by default), or a port's
+// reliability and durability from the deployment; a remote endpoint DDS does not match for its
+// QoS is reported with the setting to write (dds/qos_mismatch.h). A reader
 // hands samples to the executor through a buffer of that depth: overflow, and samples the
 // writer dropped before they arrived (DDS "sample lost"), count as `queue-full`; a sample that
 // does not decode counts as `bad-type`. A remote endpoint on one of this process's topics with

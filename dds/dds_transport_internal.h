@@ -59,6 +59,9 @@ class TopicReader : public fdds::DataReaderListener {
   void on_sample_lost(fdds::DataReader* reader, const fdds::SampleLostStatus& status) override;
   void on_subscription_matched(fdds::DataReader* reader,
                                const fdds::SubscriptionMatchedStatus& status) override;
+  // A remote publisher DDS will not match for its QoS (best effort, say): reported.
+  void on_requested_incompatible_qos(fdds::DataReader* reader,
+                                     const fdds::RequestedIncompatibleQosStatus& status) override;
   // The executor thread: hands one sample from the inbox to the engine.
   void hand(const Buffered& b);
   // The executor thread: reports the samples counted lost or undecodable since the last call.
@@ -101,6 +104,9 @@ class TopicWriter : public fdds::DataWriterListener {
   bool write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params);
   void on_publication_matched(fdds::DataWriter* writer,
                               const fdds::PublicationMatchedStatus& status) override;
+  // A remote subscriber DDS will not match for its QoS (transient local, say): reported.
+  void on_offered_incompatible_qos(fdds::DataWriter* writer,
+                                   const fdds::OfferedIncompatibleQosStatus& status) override;
 
   const TransportPort port;
   const bool input;
@@ -180,6 +186,11 @@ class DdsTransport : public Transport {
   // Reports (once) that a remote writer, an arbc process or not, also publishes on the topic
   // of `port`, which this process mediates.
   void report_other_writer(const std::string& topic, const std::string& port, bool arbc);
+  // DDS threads: a remote endpoint on `topic` (of `port`) that this process's reader (else
+  // writer) does not match because of QoS `policy`: reported once per topic and policy
+  // (dds/qos_mismatch.h), and named again by the no-peer reports.
+  void report_qos_mismatch(const std::string& topic, const std::string& port, bool reader,
+                           fdds::QosPolicyId_t policy);
 
  private:
   // A topic this process reads or writes, named before any DDS entity exists.
@@ -258,7 +269,8 @@ class DdsTransport : public Transport {
   double longest_lifetime_ = 0;   // of the app's events
   SampleIdentity last_received_;  // the last input sample a hosted module received
   mutable std::mutex mismatch_mutex_;
-  std::set<std::string> mismatches_;  // reported lines
+  std::set<std::string> mismatches_;      // reported lines
+  std::set<std::string> qos_mismatched_;  // topics with a QoS mismatch, for peer_hint
   // Guarded by mismatch_mutex_ (add_writer fills the first while discovery runs):
   // topics written here as the mediator of a module hosted elsewhere -> its port;
   std::map<std::string, std::string> mediated_input_of_topic_;

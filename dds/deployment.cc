@@ -9,6 +9,7 @@
 
 #include "core/json_diagnostic.h"
 #include "core/suggest.h"
+#include "dds/known_messages.h"
 
 namespace arbc::dds {
 
@@ -89,18 +90,66 @@ bool read_integer(const Json& j, const Path& path, const std::string& name, int 
   return true;
 }
 
+// One of a port's QoS words: `key` is "reliability" or "durability", `other` the word that
+// turns the setting on ("best_effort", "transient_local"), `usual` the default's word.
+void read_qos_word(const Json& j, const Path& path, const char* usual, const char* other, bool* out,
+                   Problems& problems) {
+  std::string word = j.is_string() ? j.get<std::string>() : "";
+  if (word != usual && word != other) {
+    problems.value(path, "qos: ports: \"" + path[2] + "\": " + path[3] + ": expected \"" + usual +
+                             "\" or \"" + other + "\"");
+    return;
+  }
+  *out = word == other;
+}
+
+// "ports": {"Module.port": {"reliability": ..., "durability": ...}}; the ports are checked
+// against the app by check_deployment.
+void read_port_qos(const Json& j, Deployment* out, Problems& problems) {
+  if (!j.is_object()) {
+    problems.value({"qos", "ports"},
+                   "qos: ports: expected an object such as "
+                   "{\"Bumper.state\": {\"reliability\": \"best_effort\"}}");
+    return;
+  }
+  for (const auto& [port, settings] : j.items()) {
+    if (!settings.is_object()) {
+      problems.value(
+          {"qos", "ports", port},
+          "qos: ports: \"" + port + "\": expected an object with the keys reliability, durability");
+      continue;
+    }
+    PortQos& qos = out->port_qos[port];
+    for (const auto& [key, value] : settings.items()) {
+      Path path{"qos", "ports", port, key};
+      if (key == "reliability") {
+        read_qos_word(value, path, "reliable", "best_effort", &qos.best_effort, problems);
+      } else if (key == "durability") {
+        read_qos_word(value, path, "volatile", "transient_local", &qos.transient_local, problems);
+      } else {
+        problems.key(path, "qos: ports: \"" + port + "\": unknown key \"" + key + "\"" +
+                               did_you_mean(key, {"reliability", "durability"}) +
+                               " (the keys are: reliability, durability)");
+      }
+    }
+  }
+}
+
 void read_qos(const Json& j, Deployment* out, Problems& problems) {
   if (!j.is_object()) {
     problems.value({"qos"}, "qos: expected an object such as {\"depth\": 100}");
     return;
   }
   for (const auto& [key, value] : j.items()) {
-    if (key != "depth") {
-      problems.key({"qos", key}, "qos: unknown key \"" + key + "\"" + did_you_mean(key, {"depth"}) +
-                                     " (the qos keys are: depth)");
-      continue;
+    if (key == "depth") {
+      read_integer(value, {"qos", "depth"}, "qos.depth", 1, 100000, &out->depth, problems);
+    } else if (key == "ports") {
+      read_port_qos(value, out, problems);
+    } else {
+      problems.key({"qos", key}, "qos: unknown key \"" + key + "\"" +
+                                     did_you_mean(key, {"depth", "ports"}) +
+                                     " (the qos keys are: depth, ports)");
     }
-    read_integer(value, {"qos", "depth"}, "qos.depth", 1, 100000, &out->depth, problems);
   }
 }
 
@@ -227,9 +276,23 @@ bool check_deployment(const Deployment& d, const model::App& app, std::vector<Di
       }
     }
   }
+  for (const auto& [port, qos] : d.port_qos) {
+    if (!app.find_port(port))
+      problems.key({"qos", "ports", port}, "qos: ports: \"" + port + "\" is not a port of app " +
+                                               app.name + did_you_mean(port, all_ports) +
+                                               " (write Module.port as in the spec)");
+  }
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
   for (const model::NamedType& t : app.types) known.insert(t.name);
   for (const auto& [name, wire] : d.types) {
+    const model::NamedType* named = nullptr;
+    for (const model::NamedType& t : app.types) {
+      if (t.name == name) named = &t;
+    }
+    if (named && named->type) {
+      std::string order = field_order_problem(name, *named->type, wire);
+      if (!order.empty()) problems.value({"types", name}, "types: \"" + name + "\": " + order);
+    }
     if (!known.count(name)) {
       std::string names;
       for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;

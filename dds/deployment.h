@@ -5,7 +5,7 @@
 //   {"domain": 7, "ros2": true,
 //    "topics": {"Base.cmd_vel": "/cmd_vel"},
 //    "types": {"Twist": "geometry_msgs/msg/Twist", "vec3": "geometry_msgs/msg/Vector3"},
-//    "qos": {"depth": 100}}
+//    "qos": {"depth": 100, "ports": {"Bumper.state": {"reliability": "best_effort"}}}}
 #pragma once
 
 #include <map>
@@ -24,6 +24,14 @@ namespace arbc::dds {
 // busy for a moment (a burst of three sources, a descheduled process) loses nothing.
 inline constexpr int kDefaultDepth = 100;
 
+// How one port's topic is read or written where it is not reliable and volatile: DDS matches a
+// reliable reader with no best-effort writer (ROS 2's sensor-data profile), and a volatile
+// writer with no transient-local reader (a latched topic), and then nothing flows.
+struct PortQos {
+  bool best_effort = false;      // "reliability": "best_effort"
+  bool transient_local = false;  // "durability": "transient_local"
+};
+
 struct Deployment {
   std::string path;  // the file read ("" without --deploy), for messages
   std::string text;  // its text, to place what check_deployment finds in it
@@ -32,6 +40,12 @@ struct Deployment {
   std::map<std::string, std::string> topics;  // "Module.port" -> topic as written
   std::map<std::string, std::string> types;   // named type (or "vec3", ...) -> "pkg/msg/Name"
   int depth = kDefaultDepth;
+  std::map<std::string, PortQos> port_qos;  // "Module.port" -> "qos": {"ports": ...}
+
+  PortQos qos_of(const std::string& port) const {
+    auto it = port_qos.find(port);
+    return it == port_qos.end() ? PortQos{} : it->second;
+  }
 };
 
 // Errors are diagnostics at the place in the file they are about
@@ -46,8 +60,10 @@ bool parse_deployment(std::string_view text, const std::string& path, Deployment
 // Reads and parses the file at `path` (a missing file or a directory is an error at the file).
 bool read_deployment(const std::string& path, Deployment* out, std::vector<Diagnostic>* errors);
 // Checks the file against the app: every `topics` key is a port of the app, every `types` key
-// a named type of the app or a built-in type name, no two ports share a topic (a topic the file
-// gives is not another port's default either).
+// a named type of the app or a built-in type name whose fields, when it stands for a known ROS 2
+// message, come in that message's order (dds/known_messages.h), every "qos" "ports" key a port,
+// no two ports
+// share a topic (a topic the file gives is not another port's default either).
 bool check_deployment(const Deployment& d, const model::App& app, std::vector<Diagnostic>* errors);
 // The diagnostics as "file:line:col: message" lines, for an error that is one string.
 std::string deployment_errors_text(const std::vector<Diagnostic>& errors);

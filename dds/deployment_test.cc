@@ -29,7 +29,8 @@ TEST(DeploymentTest, ReadsEveryKey) {
   std::vector<Diagnostic> errors;
   ASSERT_TRUE(parse_deployment(R"({"domain": 7, "ros2": true,
       "topics": {"Base.cmd_vel": "/cmd_vel"},
-      "types": {"Twist": "geometry_msgs/msg/Twist"}, "qos": {"depth": 12}})",
+      "types": {"Twist": "geometry_msgs/msg/Twist"}, "qos": {"depth": 12,
+      "ports": {"Base.odom": {"reliability": "best_effort", "durability": "transient_local"}}}})",
                                "d.json", &d, &errors))
       << text_of(errors);
   EXPECT_EQ(d.domain, 7);
@@ -37,6 +38,10 @@ TEST(DeploymentTest, ReadsEveryKey) {
   EXPECT_EQ(d.topics.at("Base.cmd_vel"), "/cmd_vel");
   EXPECT_EQ(d.types.at("Twist"), "geometry_msgs/msg/Twist");
   EXPECT_EQ(d.depth, 12);
+  EXPECT_TRUE(d.qos_of("Base.odom").best_effort);
+  EXPECT_TRUE(d.qos_of("Base.odom").transient_local);
+  EXPECT_FALSE(d.qos_of("Base.cmd_vel").best_effort);  // not given: reliable, volatile
+  EXPECT_FALSE(d.qos_of("Base.cmd_vel").transient_local);
   EXPECT_TRUE(check_deployment(d, two_port_app(), &errors)) << text_of(errors);
 }
 
@@ -73,10 +78,22 @@ TEST(DeploymentTest, BadFilesSayWhatIsWrongAndWhere) {
        "d.json:2:18: topics: \"Base.odom\": expected a non-empty string"},
       {R"({"qos": {"depth": 0}})", "d.json:1:19: qos.depth: expected an integer from 1 to 100000"},
       {R"({"qos": {"history": 5}})",
-       "d.json:1:10: qos: unknown key \"history\" (the qos keys are: depth)"},
+       "d.json:1:10: qos: unknown key \"history\" (the qos keys are: depth, ports)"},
       {R"({"qos": {"dpeth": 5}})",
        "d.json:1:10: qos: unknown key \"dpeth\"; did you mean \"depth\"? (the qos keys are: "
-       "depth)"},
+       "depth, ports)"},
+      {R"({"qos": {"ports": {"Base.odom": {"reliability": "besteffort"}}}})",
+       "d.json:1:49: qos: ports: \"Base.odom\": reliability: expected \"reliable\" or "
+       "\"best_effort\""},
+      {R"({"qos": {"ports": {"Base.odom": {"durability": true}}}})",
+       "d.json:1:48: qos: ports: \"Base.odom\": durability: expected \"volatile\" or "
+       "\"transient_local\""},
+      {R"({"qos": {"ports": {"Base.odom": {"reliabilty": "reliable"}}}})",
+       "d.json:1:34: qos: ports: \"Base.odom\": unknown key \"reliabilty\"; did you mean "
+       "\"reliability\"? (the keys are: reliability, durability)"},
+      {R"({"qos": {"ports": {"Base.odom": "best_effort"}}})",
+       "d.json:1:33: qos: ports: \"Base.odom\": expected an object with the keys reliability, "
+       "durability"},
       {"\n  [1]", "d.json:2:3: expected a JSON object"},
       // The library would keep the last "domain" without a word: the second one is an error.
       {"{\n  \"domain\": 7,\n  \"ros2\": true,\n  \"domain\": 8\n}",
@@ -120,6 +137,9 @@ TEST(DeploymentTest, KeysMustNameTheAppsPortsAndTypes) {
   } cases[] = {
       {"{\"topics\": {\n  \"Base.cmd\": \"/x\"}}",
        "d.json:2:3: topics: \"Base.cmd\" is not a port of app demo (write Module.port"},
+      {R"({"qos": {"ports": {"Base.cmd_vell": {"reliability": "best_effort"}}}})",
+       "d.json:1:20: qos: ports: \"Base.cmd_vell\" is not a port of app demo; did you mean "
+       "\"Base.cmd_vel\"? (write Module.port as in the spec)"},
       {R"({"topics": {"Base.cmd_vell": "/x"}})",
        "d.json:1:13: topics: \"Base.cmd_vell\" is not a port of app demo; did you mean "
        "\"Base.cmd_vel\"? (write Module.port as in the spec)"},

@@ -18,6 +18,9 @@ namespace arbc::dds {
 struct WireSample {
   eprosima::fastrtps::types::DynamicData* data = nullptr;  // owned (DynamicDataFactory)
   bool bad = false;  // the last deserialize could not decode the bytes
+  // Bytes the last sample had beyond what its decoded value takes (a program whose type has
+  // the spec's fields and more); `bad` is set with it.
+  uint32_t extra_bytes = 0;
 };
 
 class WireTopicType : public eprosima::fastdds::dds::TopicDataType {
@@ -26,7 +29,8 @@ class WireTopicType : public eprosima::fastdds::dds::TopicDataType {
   const WireType& wire() const { return *wire_; }
 
   bool serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) override;
-  // Always true: a sample that does not decode is marked WireSample::bad instead.
+  // Always true: a sample that does not decode is marked WireSample::bad instead, and so is one
+  // longer than its decoded value (CDR decodes a prefix of a longer struct without a word).
   bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override;
   std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
   void* createData() override;

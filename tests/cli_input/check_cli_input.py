@@ -214,6 +214,30 @@ def case_dds_placement_mistakes(arbc, plugin):
                      "run here) for a mediator, or --host the modules it runs")
 
 
+def case_dds_field_order(arbc, plugin):
+    """A spec Twist with geometry_msgs/msg/Twist's fields in another order: both are Vector3,
+    so every sample would decode, each rule reading `angular` for `linear`. Refused at the
+    deployment's mapping, before any DDS entity exists."""
+    folder = tempfile.mkdtemp(prefix="arbc-field-order-")
+    spec = os.path.join(folder, "teleop.spec")
+    text = open("tests/dds/interop/teleop.spec").read()
+    swapped = text.replace("type Twist = { linear: vec3, angular: vec3 };",
+                           "type Twist = { angular: vec3, linear: vec3 };")
+    expect(swapped != text, "teleop.spec no longer declares Twist as this case expects")
+    open(spec, "w").write(swapped)
+    deploy = "tests/dds/interop/teleop.deploy.json"
+    code, out, err = run(arbc, "run", spec, "--transport", "dds", "--host", "none", "--mediate",
+                         "all", "--deploy", deploy, "--duration", "1s")
+    shutil.rmtree(folder)
+    expect(code == 2, f"exit {code}, expected 2", out, err)
+    line = next(i for i, t in enumerate(open(deploy).read().splitlines(), 1) if '"Twist":' in t)
+    expect(f"{deploy}:{line}:14: error: types: \"Twist\": the spec's Twist lists its fields "
+           "angular, linear, but geometry_msgs/msg/Twist has them in the order linear, angular; "
+           "the bytes come in the message's order and nothing on the wire names a field, so "
+           "each would be read as another: list them in the message's order" in err,
+           "the field order is not named at the mapping", out, err)
+
+
 def case_misspelt_command(arbc, plugin):
     # `arbc verfy`: the command meant, then the usage; a word close to none gets the usage alone.
     code, out, err = run(arbc, "verfy", "specs/table_clean.spec")

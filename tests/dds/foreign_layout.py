@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """A spec type with the name a program without arbc in it uses and other fields
-(docs/distributed.md#types-on-the-wire): DDS matches the two by name, and every sample fails to
-decode. The mediator must say so when the first one comes, naming the topic, the port and what
-to change, not only count them at the end; and its run is a failure, not a success.
+(docs/distributed.md#types-on-the-wire): DDS matches the two by name. The mediator must say so
+when the first sample comes, naming the topic, the port and what to change, not only count
+them at the end; and its run is a failure, not a success.
 
-teleop.spec with Twist given a third field; interop_stream (plain Fast-DDS) publishes ROS 2
-Twists on rt/nav/cmd_vel.
+teleop.spec with Twist changed; interop_stream (plain Fast-DDS) publishes ROS 2 Twists on
+rt/nav/cmd_vel.
+  longer   Twist given a third field: no sample decodes
+  shorter  Twist without `angular`: every sample decodes as its first field, and the mediator
+           used to pass on 24-byte Twists, which the program's subscribers drop without a trace
+           (they are refused as 24 bytes longer than the spec's Twist)
 
-usage: foreign_layout.py ARBC INTEROP_STREAM TESTS_DDS_DIR
+usage: foreign_layout.py ARBC INTEROP_STREAM TESTS_DDS_DIR [longer|shorter]
 """
 import os
 import signal
@@ -26,14 +30,21 @@ def fail(message, *outputs):
 
 def main():
     arbc, stream, here = sys.argv[1:4]
+    case = sys.argv[4] if len(sys.argv) > 4 else "longer"
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
     out_dir = tempfile.mkdtemp(prefix="arbc-dds-foreign-layout-")
     spec = os.path.join(out_dir, "teleop.spec")
     text = open(os.path.join(here, "interop", "teleop.spec")).read()
-    wrong = text.replace("type Twist = { linear: vec3, angular: vec3 };",
-                         "type Twist = { linear: vec3, angular: vec3, speed: float };")
+    twist = "type Twist = { linear: vec3, angular: vec3 };"
+    if case == "longer":
+        wrong = text.replace(twist, "type Twist = { linear: vec3, angular: vec3, speed: float };")
+        why = "does not decode as geometry_msgs::msg::dds_::Twist_"
+    else:
+        wrong = text.replace(twist, "type Twist = { linear: vec3 };").replace(
+            "or norm(cmd_vel.angular) > 0.0", "")
+        why = "has 24 bytes more than geometry_msgs::msg::dds_::Twist_ as the spec declares it"
     if wrong == text:
         fail("teleop.spec no longer declares Twist as this test expects")
     open(spec, "w").write(wrong)
@@ -51,8 +62,8 @@ def main():
     publisher.wait()
     mediator.send_signal(signal.SIGTERM)
     out, _ = mediator.communicate(timeout=30)
-    said = ("DDS: topic rt/nav/cmd_vel (Nav.cmd_vel): a sample on rt/nav/cmd_vel does not decode "
-            "as geometry_msgs::msg::dds_::Twist_; the remote program's type has this name but "
+    said = (f"DDS: topic rt/nav/cmd_vel (Nav.cmd_vel): a sample on rt/nav/cmd_vel {why}; "
+            "the remote program's type has this name but "
             "other fields, or another order: give Nav.cmd_vel's type in the spec the program's "
             "fields, in the program's order (docs/distributed.md#types-on-the-wire); until then "
             "every sample is dropped as bad-type")

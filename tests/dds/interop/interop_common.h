@@ -48,4 +48,23 @@ void reliable(Qos& qos) {
   qos.history().depth = 100;
 }
 
+// The reliable QoS above, changed by the words `first`.. of the command line: `best_effort`
+// (ROS 2's sensor-data profile) and `transient_local` (a latched topic), so that a test can
+// give a program the QoS a ROS 2 node may have. Exits on another word.
+template <class Qos>
+void qos_from_args(Qos& qos, int argc, char** argv, int first) {
+  reliable(qos);
+  for (int i = first; i < argc; ++i) {
+    std::string word = argv[i];
+    if (word == "best_effort") {
+      qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
+    } else if (word == "transient_local") {
+      qos.durability().kind = fdds::TRANSIENT_LOCAL_DURABILITY_QOS;
+    } else {
+      std::fprintf(stderr, "unknown QoS word '%s' (best_effort, transient_local)\n", argv[i]);
+      std::exit(2);
+    }
+  }
+}
+
 }  // namespace interop

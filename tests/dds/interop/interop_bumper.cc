@@ -1,0 +1,51 @@
+// A bumper as a plain Fast-DDS program (no arbc in it): publishes std_msgs/msg/Bool on
+// rt/bumper every 50 ms, as a ROS 2 node would on /bumper with the sensor-data profile (best
+// effort): released for 2 s, pressed for 1 s, released for 2 s; then exits.
+// usage: interop_bumper DOMAIN
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <thread>
+
+#include "BoolPubSubTypes.h"
+
+namespace fdds = eprosima::fastdds::dds;
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: interop_bumper DOMAIN\n");
+    return 2;
+  }
+  fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
+  factory->load_profiles();  // FASTRTPS_DEFAULT_PROFILES_FILE (interop_common.h says why)
+  fdds::DomainParticipantQos pqos = factory->get_default_participant_qos();
+  pqos.name("interop_bumper");
+  fdds::DomainParticipant* p = factory->create_participant(std::atoi(argv[1]), pqos);
+  if (!p) return 3;
+  fdds::TypeSupport type(new std_msgs::msg::dds_::Bool_PubSubType());
+  type.register_type(p);
+  fdds::Topic* topic =
+      p->create_topic("rt/bumper", "std_msgs::msg::dds_::Bool_", fdds::TOPIC_QOS_DEFAULT);
+  fdds::Publisher* pub = p->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  fdds::DataWriterQos qos = pub->get_default_datawriter_qos();
+  qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
+  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = 5;
+  fdds::DataWriter* writer = pub->create_datawriter(topic, qos);
+  for (int i = 0; i < 100; ++i) {  // 5 s at 50 ms
+    std_msgs::msg::dds_::Bool_ b;
+    b.data(i >= 40 && i < 60);
+    writer->write(&b);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::printf("interop_bumper: sent 100, 20 pressed\n");
+  p->delete_contained_entities();
+  factory->delete_participant(p);
+  return 0;
+}
