@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
 #include "compiler/codegen/yarp_deployment.h"
+#include "compiler/codegen/yarp_filled_modules.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "core/diagnostic.h"
@@ -117,6 +120,21 @@ std::optional<int> configure_target(codegen::Target& target, const std::string& 
   return std::nullopt;
 }
 
+// The <module>s the user filled in (docs/yarp.md step 3) in the application XML this build
+// replaces are kept in the new one; their names, to say so.
+std::vector<std::string> keep_user_modules(std::vector<codegen::OutputFile>& files,
+                                           const std::string& app_dir, const std::string& xml) {
+  std::vector<std::string> kept;
+  std::ifstream in(app_dir + "/" + xml, std::ios::binary);
+  if (!in) return kept;
+  std::ostringstream previous;
+  previous << in.rdbuf();
+  for (codegen::OutputFile& f : files) {
+    if (f.path == xml) f.content = codegen::keep_filled_modules(f.content, previous.str(), &kept);
+  }
+  return kept;
+}
+
 // A proved app.json gets its proof recorded beside it (cli/proof_record.h), so that `arbc run`
 // of the directory need not prove the same bytes again. Targets without an app.json (yarp) run
 // elsewhere and get none.
@@ -169,6 +187,10 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
     return kExitRuntimeFailure;
   }
+  std::vector<std::string> kept;
+  if (a.target_name == "yarp")
+    kept = keep_user_modules(generated.files, a.out_dir + "/" + lowered.app.name,
+                             lowered.app.name + ".xml");
   if (!a.no_verify) record_proof(generated.files, verified);
   std::string error;
   if (!codegen::write_artifacts(a.out_dir, lowered.app.name, generated.files, &error)) {
@@ -180,6 +202,9 @@ int build_command(std::span<char*> args) {
     std::vector<std::string> paths;
     for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);
     std::fputs(yarp_build_summary(lowered.app, spec, a.out_dir, verified, paths).c_str(), stdout);
+    if (!kept.empty())
+      std::printf("  kept the <module>s you filled in for %s from the %s.xml it replaced\n",
+                  join(kept).c_str(), lowered.app.name.c_str());
   } else {
     std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
   }
