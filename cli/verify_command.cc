@@ -162,6 +162,22 @@ void print_internal_errors(const std::vector<verify::InputReport>& reports) {
   }
 }
 
+// A directory without app.json: a --target yarp build stands for its application XML, and a
+// folder of yarpmanager XMLs is bad input that names them. False when `input` goes no further.
+bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>& reports) {
+  YarpDirectory dir = yarp_directory(input);
+  if (dir.build_xml) input = *dir.build_xml;
+  if (dir.build_xml || dir.xmls.empty()) return true;
+  std::string xmls;
+  for (const std::string& x : dir.xmls) xmls += (xmls.empty() ? "" : ", ") + x;
+  std::string error = input + ": a directory without app.json, holding " + xmls +
+                      "; give the yarpmanager application XML itself (arbc verify " + dir.xmls[0] +
+                      ")";
+  std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
+  reports.push_back({input, {}, {file_error(input, error.substr(input.size() + 2), "io")}});
+  return false;
+}
+
 }  // namespace
 
 int verify_command(std::span<char*> args) {
@@ -182,17 +198,7 @@ int verify_command(std::span<char*> args) {
   bool bad_input = false;
   std::vector<verify::InputReport> reports;
   for (std::string input : inputs) {
-    YarpDirectory dir = yarp_directory(input);
-    if (dir.build_xml) {
-      input = *dir.build_xml;  // a --target yarp build: its application XML
-    } else if (!dir.xmls.empty()) {
-      std::string xmls;
-      for (const std::string& x : dir.xmls) xmls += (xmls.empty() ? "" : ", ") + x;
-      std::string error = input + ": a directory without app.json, holding " + xmls +
-                          "; give the yarpmanager application XML itself (arbc verify " +
-                          dir.xmls[0] + ")";
-      std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
-      reports.push_back({input, {}, {file_error(input, error.substr(input.size() + 2), "io")}});
+    if (!resolve_yarp_directory(input, reports)) {
       bad_input = true;
       continue;
     }
