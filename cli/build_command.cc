@@ -121,18 +121,23 @@ std::optional<int> configure_target(codegen::Target& target, const std::string& 
 }
 
 // The <module>s the user filled in (docs/yarp.md step 3) in the application XML this build
-// replaces are kept in the new one; their names, to say so.
-std::vector<std::string> keep_user_modules(std::vector<codegen::OutputFile>& files,
-                                           const std::string& app_dir, const std::string& xml) {
-  std::vector<std::string> kept;
+// replaces: kept in the new one, or dropped with their module from the spec; their names.
+struct UserModules {
+  std::vector<std::string> kept, dropped;
+};
+
+UserModules keep_user_modules(std::vector<codegen::OutputFile>& files, const std::string& app_dir,
+                              const std::string& xml) {
+  UserModules m;
   std::ifstream in(app_dir + "/" + xml, std::ios::binary);
-  if (!in) return kept;
+  if (!in) return m;
   std::ostringstream previous;
   previous << in.rdbuf();
   for (codegen::OutputFile& f : files) {
-    if (f.path == xml) f.content = codegen::keep_filled_modules(f.content, previous.str(), &kept);
+    if (f.path == xml)
+      f.content = codegen::keep_filled_modules(f.content, previous.str(), &m.kept, &m.dropped);
   }
-  return kept;
+  return m;
 }
 
 // A proved app.json gets its proof recorded beside it (cli/proof_record.h), so that `arbc run`
@@ -187,9 +192,9 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
     return kExitRuntimeFailure;
   }
-  std::vector<std::string> kept;
+  UserModules user;
   if (a.target_name == "yarp")
-    kept = keep_user_modules(generated.files, a.out_dir + "/" + lowered.app.name,
+    user = keep_user_modules(generated.files, a.out_dir + "/" + lowered.app.name,
                              lowered.app.name + ".xml");
   if (!a.no_verify) record_proof(generated.files, verified);
   std::string error;
@@ -202,9 +207,14 @@ int build_command(std::span<char*> args) {
     std::vector<std::string> paths;
     for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);
     std::fputs(yarp_build_summary(lowered.app, spec, a.out_dir, verified, paths).c_str(), stdout);
-    if (!kept.empty())
+    if (!user.kept.empty())
       std::printf("  kept the <module>s you filled in for %s from the %s.xml it replaced\n",
-                  join(kept).c_str(), lowered.app.name.c_str());
+                  join(user.kept).c_str(), lowered.app.name.c_str());
+    if (!user.dropped.empty())
+      std::fprintf(stderr,
+                   "arbc build: warning: the replaced %s.xml had <module>s filled in for %s, "
+                   "which the spec no longer has: they are not in the new one\n",
+                   lowered.app.name.c_str(), join(user.dropped).c_str());
   } else {
     std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
   }

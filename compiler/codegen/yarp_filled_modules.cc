@@ -1,5 +1,6 @@
 #include "compiler/codegen/yarp_filled_modules.h"
 
+#include <algorithm>
 #include <cctype>
 #include <optional>
 
@@ -37,10 +38,35 @@ std::string placeholder_name(const std::string& text, const Span& s) {
   return text.substr(open + 6, close - open - 6);
 }
 
+// The placeholder arbc writes for spec module `name`.
+std::string placeholder_for(const std::string& name) {
+  return "<module>\n    <name>" + name +
+         "</name>\n    <parameters></parameters>\n    <node>localhost</node>\n  </module>";
+}
+
+// The modules of `previous` filled in by the user (arbc's comment, then a <module> that is not
+// its placeholder), by spec module name.
+std::vector<std::string> filled_in(const std::string& previous) {
+  std::vector<std::string> out;
+  for (size_t at = previous.find("<!-- "); at != std::string::npos;
+       at = previous.find("<!-- ", at + 1)) {
+    size_t begin = at + 5, end = begin;
+    while (end < previous.size() &&
+           (std::isalnum(static_cast<unsigned char>(previous[end])) || previous[end] == '_'))
+      ++end;
+    if (end == begin) continue;
+    std::string name = previous.substr(begin, end - begin);
+    std::optional<Span> user = module_after_comment(previous, name);
+    if (user && previous.compare(user->begin, user->end - user->begin, placeholder_for(name)) != 0)
+      out.push_back(name);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string keep_filled_modules(const std::string& generated, const std::string& previous,
-                                std::vector<std::string>* kept) {
+                                std::vector<std::string>* kept, std::vector<std::string>* dropped) {
   std::string out;
   size_t from = 0;
   for (size_t at = generated.find("<module>"); at != std::string::npos;
@@ -57,6 +83,11 @@ std::string keep_filled_modules(const std::string& generated, const std::string&
     out += generated.substr(from, at - from) + user_text;
     from = placeholder.end;
     kept->push_back(name);
+  }
+  for (const std::string& name : filled_in(previous)) {
+    if (std::find(kept->begin(), kept->end(), name) == kept->end() &&
+        std::find(dropped->begin(), dropped->end(), name) == dropped->end())
+      dropped->push_back(name);
   }
   return out + generated.substr(from);
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_yarp_rebuild.sh ARBC SCRATCH: a rebuild with --target yarp keeps the <module>s the user
 # filled in (docs/yarp.md#deploying-a-spec-on-yarp-step-by-step, step 3) and says so, while the
-# placeholders of modules left alone stay as generated.
+# placeholders of modules left alone stay as generated; one the spec no longer has is reported.
 set -uo pipefail
 arbc=$1 scratch=$2
 rm -rf "$scratch" && mkdir -p "$scratch"
@@ -25,4 +25,9 @@ grep -q '<node>icub-head</node>' "$xml" || fail "the rebuild lost the node"
 grep -q '<name>HeadControl</name>' "$xml" || fail "a placeholder left alone changed"
 # The application still reads back and proves.
 "$arbc" verify "$xml" > /dev/null || fail "the rebuilt application does not verify"
+# A filled-in module the spec no longer has is not carried over, and the build says so.
+sed 's/module LookAround /module Explorer /; s/LookAround\.gaze/Explorer.gaze/g' \
+  specs/search_and_track.spec > "$scratch/search_and_track.spec"
+err=$("$arbc" build "$scratch/search_and_track.spec" --target yarp -o "$scratch" 2>&1 >/dev/null) || fail "rebuild without LookAround: $err"
+[[ "$err" == *"the replaced search_and_track.xml had <module>s filled in for LookAround, which the spec no longer has"* ]] || fail "the drop was not said: $err"
 echo ok
