@@ -26,6 +26,7 @@
 #include "compiler/lower/compile_spec.h"
 #include "core/diagnostic.h"
 #include "core/join.h"
+#include "core/suggest.h"
 
 namespace arbc::cli {
 
@@ -160,8 +161,10 @@ int build_command(std::span<char*> args) {
   const std::string& spec = a.spec;
   std::unique_ptr<codegen::Target> target = codegen::make_target(a.target_name);
   if (!target) {
-    std::fprintf(stderr, "arbc build: unknown target '%s'; the targets are: %s\n",
-                 a.target_name.c_str(), target_list().c_str());
+    std::optional<std::string> meant = closest_name(a.target_name, codegen::target_names());
+    std::fprintf(stderr, "arbc build: unknown target '%s'%s; the targets are: %s\n",
+                 a.target_name.c_str(), meant ? (" (did you mean '" + *meant + "'?)").c_str() : "",
+                 target_list().c_str());
     return kExitBadInput;
   }
 

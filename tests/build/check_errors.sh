@@ -17,6 +17,7 @@ expect 2 "no such file" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/ou
 printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n' > "$scratch/broken.spec"
 expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
 expect 2 "unknown target 'ros'" -- "$arbc" build specs/face_filter.spec --target ros -o "$scratch/out"
+expect 2 "unknown target 'yrp' (did you mean 'yarp'?); the targets are" -- "$arbc" build specs/face_filter.spec --target yrp -o "$scratch/out"
 # The deployment file of --target yarp (docs/yarp.md#names-on-yarp).
 # Each error at the line and column of its key or value, as a compiler reports a spec.
 printf '{"topics": {"Nope.port": "/x"}}' > "$scratch/bad_port.json"
