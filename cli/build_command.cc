@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,10 +21,12 @@
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
 #include "compiler/codegen/yarp_deployment.h"
+#include "compiler/codegen/yarp_filled_modules.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
 #include "core/diagnostic.h"
 #include "core/join.h"
+#include "core/suggest.h"
 
 namespace arbc::cli {
 
@@ -117,6 +121,26 @@ std::optional<int> configure_target(codegen::Target& target, const std::string& 
   return std::nullopt;
 }
 
+// The <module>s the user filled in (docs/yarp.md step 3) in the application XML this build
+// replaces: kept in the new one, or dropped with their module from the spec; their names.
+struct UserModules {
+  std::vector<std::string> kept, dropped;
+};
+
+UserModules keep_user_modules(std::vector<codegen::OutputFile>& files, const std::string& app_dir,
+                              const std::string& xml) {
+  UserModules m;
+  std::ifstream in(app_dir + "/" + xml, std::ios::binary);
+  if (!in) return m;
+  std::ostringstream previous;
+  previous << in.rdbuf();
+  for (codegen::OutputFile& f : files) {
+    if (f.path == xml)
+      f.content = codegen::keep_filled_modules(f.content, previous.str(), &m.kept, &m.dropped);
+  }
+  return m;
+}
+
 // A proved app.json gets its proof recorded beside it (cli/proof_record.h), so that `arbc run`
 // of the directory need not prove the same bytes again. Targets without an app.json (yarp) run
 // elsewhere and get none.
@@ -137,8 +161,10 @@ int build_command(std::span<char*> args) {
   const std::string& spec = a.spec;
   std::unique_ptr<codegen::Target> target = codegen::make_target(a.target_name);
   if (!target) {
-    std::fprintf(stderr, "arbc build: unknown target '%s'; the targets are: %s\n",
-                 a.target_name.c_str(), target_list().c_str());
+    std::optional<std::string> meant = closest_name(a.target_name, codegen::target_names());
+    std::fprintf(stderr, "arbc build: unknown target '%s'%s; the targets are: %s\n",
+                 a.target_name.c_str(), meant ? (" (did you mean '" + *meant + "'?)").c_str() : "",
+                 target_list().c_str());
     return kExitBadInput;
   }
 
@@ -169,6 +195,10 @@ int build_command(std::span<char*> args) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
     return kExitRuntimeFailure;
   }
+  UserModules user;
+  if (a.target_name == "yarp")
+    user = keep_user_modules(generated.files, a.out_dir + "/" + lowered.app.name,
+                             lowered.app.name + ".xml");
   if (!a.no_verify) record_proof(generated.files, verified);
   std::string error;
   if (!codegen::write_artifacts(a.out_dir, lowered.app.name, generated.files, &error)) {
@@ -180,6 +210,14 @@ int build_command(std::span<char*> args) {
     std::vector<std::string> paths;
     for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);
     std::fputs(yarp_build_summary(lowered.app, spec, a.out_dir, verified, paths).c_str(), stdout);
+    if (!user.kept.empty())
+      std::printf("  kept the <module>s you filled in for %s from the %s.xml it replaced\n",
+                  join(user.kept).c_str(), lowered.app.name.c_str());
+    if (!user.dropped.empty())
+      std::fprintf(stderr,
+                   "arbc build: warning: the replaced %s.xml had <module>s filled in for %s, "
+                   "which the spec no longer has: they are not in the new one\n",
+                   lowered.app.name.c_str(), join(user.dropped).c_str());
   } else {
     std::fputs(build_summary(lowered.app, spec, a.out_dir, verified).c_str(), stdout);
   }

@@ -62,6 +62,15 @@ std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, 
   if (std::filesystem::is_directory(path, ec))
     file = (std::filesystem::path(path) / "app.json").string();
   std::ifstream in(file, std::ios::binary);
+  if (!in && std::filesystem::exists(std::filesystem::path(path) / "ports.json", ec)) {
+    // A build for YARP has no app.json: it runs on YARP, and `arbc verify` takes it.
+    *err = path +
+           ": a build for YARP (arbc build --target yarp), which runs on YARP "
+           "(docs/yarp.md#deploying-a-spec-on-yarp-step-by-step) and has no app.json; for "
+           "arbc's runtime, build the spec without --target yarp";
+    notes->errors.push_back(file_error(path, err->substr(path.size() + 2), "io"));
+    return std::nullopt;
+  }
   if (!in) {
     *err = file +
            ": cannot read the file; give a spec (*.spec), an app.json, or a directory "

@@ -16,6 +16,7 @@
 #include "cli/monitor_runner.h"
 #include "cli/parse_error.h"
 #include "cli/test_replayer.h"
+#include "cli/yarp_directory.h"
 #include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
@@ -161,6 +162,22 @@ void print_internal_errors(const std::vector<verify::InputReport>& reports) {
   }
 }
 
+// A directory without app.json: a --target yarp build stands for its application XML, and a
+// folder of yarpmanager XMLs is bad input that names them. False when `input` goes no further.
+bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>& reports) {
+  YarpDirectory dir = yarp_directory(input);
+  if (dir.build_xml) input = *dir.build_xml;
+  if (dir.build_xml || dir.xmls.empty()) return true;
+  std::string xmls;
+  for (const std::string& x : dir.xmls) xmls += (xmls.empty() ? "" : ", ") + x;
+  std::string error = input + ": a directory without app.json, holding " + xmls +
+                      "; give the yarpmanager application XML itself (arbc verify " + dir.xmls[0] +
+                      ")";
+  std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
+  reports.push_back({input, {}, {file_error(input, error.substr(input.size() + 2), "io")}});
+  return false;
+}
+
 }  // namespace
 
 int verify_command(std::span<char*> args) {
@@ -180,7 +197,11 @@ int verify_command(std::span<char*> args) {
 
   bool bad_input = false;
   std::vector<verify::InputReport> reports;
-  for (const std::string& input : inputs) {
+  for (std::string input : inputs) {
+    if (!resolve_yarp_directory(input, reports)) {
+      bad_input = true;
+      continue;
+    }
     if (is_yarp_application(input)) {
       YarpVerify y = verify_yarp_application(input, a.options, a.yarp_paths);
       std::fputs(y.diagnostics.c_str(), stderr);

@@ -119,6 +119,9 @@ constexpr CheckId kIds[] = {
     {"yarp-monitor-missing", kYarp, "the Lua file a carrier names is not found"},
     {"yarp-opaque", kYarp, "a monitor whose event names arbc cannot all know"},
     {"yarp-port-name", kYarp, "a <from> or <to> port name that is probably misspelt"},
+    {"yarp-require", kYarp,
+     "a monitor that does not require(\"yarp\") when it loads: YARP crashes the receiving "
+     "process"},
     {"yarp-script-error", kYarp, "a monitor that fails to load, or whose create fails"},
     {"yarp-shared-event", kYarp, "an event set or read by monitors on different ports"},
     {"yarp-spec-name", kYarp,

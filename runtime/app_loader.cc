@@ -40,6 +40,15 @@ std::optional<model::App> load_app_dir(const std::string& dir, std::string* err,
            "monitors/)";
     return std::nullopt;
   }
+  std::error_code ec;
+  if (!in && fs::exists(fs::path(dir) / "ports.json", ec)) {
+    // `arbc build --target yarp` writes no app.json: the application runs on YARP.
+    *err = dir +
+           ": a build for YARP (arbc build --target yarp), which runs on YARP "
+           "(docs/yarp.md#deploying-a-spec-on-yarp-step-by-step) and has no app.json; to run "
+           "on arbc's runtime, build the spec without --target yarp";
+    return std::nullopt;
+  }
   if (!in) {
     *err =
         file.string() + ": cannot read; is " + dir + " an app directory written by `arbc build`?";

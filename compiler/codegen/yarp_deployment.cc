@@ -1,15 +1,27 @@
 #include "compiler/codegen/yarp_deployment.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/json_diagnostic.h"
+#include "core/suggest.h"
 
 namespace arbc::codegen {
 
 namespace {
+
+// The keys of a deployment file (docs/distributed.md#the-deployment-file): the yarp target
+// reads "topics"; the others are the DDS transport's, allowed so that one file serves both.
+const std::vector<std::string> kDeploymentKeys = {"domain", "ros2", "topics", "types", "qos"};
+
+// "; did you mean \"x\"?" when one of `candidates` is a plausible typo of `name`, else "".
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates) {
+  std::optional<std::string> meant = closest_name(name, candidates);
+  return meant ? "; did you mean \"" + *meant + "\"?" : "";
+}
 
 // The problems of the "topics" entries, each at the key or value it is about.
 class Entries {
@@ -21,9 +33,13 @@ class Entries {
   // Checks one "Module.port": "/name" entry against the app and the names taken so far.
   bool check(const std::string& port, const nlohmann::json& value) {
     if (!app_.find_port(port)) {
+      std::vector<std::string> ports;
+      for (const model::Module& m : app_.modules) {
+        for (const model::Port& p : m.ports) ports.push_back(m.name + "." + p.name);
+      }
       error({"topics", port}, JsonPart::Key,
-            "\"topics\": \"" + port + "\" is not a port of app '" + app_.name +
-                "' (write Module.port, as in the spec)");
+            "\"topics\": \"" + port + "\" is not a port of app '" + app_.name + "'" +
+                did_you_mean(port, ports) + " (write Module.port, as in the spec)");
       return false;
     }
     if (!value.is_string()) {
@@ -80,11 +96,17 @@ class Entries {
 
 std::optional<std::map<std::string, std::string>> read_yarp_deployment(
     const std::string& path, const model::App& app, std::vector<Diagnostic>* errors) {
+  std::error_code ec;
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  if (!in || std::filesystem::is_directory(path, ec)) {
     Diagnostic d;
     d.loc.file = path;
-    d.message = "cannot read the deployment file";
+    d.message = std::string("cannot read the deployment file") +
+                (std::filesystem::is_directory(path, ec) ? " (it is a directory)"
+                 : std::filesystem::exists(path, ec)     ? " (permission denied?)"
+                                                         : " (no such file)") +
+                "; --deploy takes a JSON file such as {\"topics\": {\"Module.port\": "
+                "\"/yarp/name\"}} (docs/yarp.md#deploying-a-spec-on-yarp-step-by-step)";
     errors->push_back(std::move(d));
     return std::nullopt;
   }
@@ -102,6 +124,18 @@ std::optional<std::map<std::string, std::string>> read_yarp_deployment(
                   "not a JSON object (docs/yarp.md#names-on-yarp shows the format)");
     return std::nullopt;
   }
+  // A key the file format does not have is most likely a misspelt "topics", which would
+  // otherwise leave every port with its default name without a word.
+  size_t first_key_error = errors->size();
+  for (const auto& [key, value] : j.items()) {
+    if (std::find(kDeploymentKeys.begin(), kDeploymentKeys.end(), key) != kDeploymentKeys.end())
+      continue;
+    entries.error({key}, JsonPart::Key,
+                  "unknown key \"" + key + "\"" + did_you_mean(key, kDeploymentKeys) +
+                      " (the keys are: domain, ros2, topics, types, qos; the yarp target reads "
+                      "\"topics\", the others are the DDS transport's)");
+  }
+  if (errors->size() != first_key_error) return std::nullopt;
   std::map<std::string, std::string> out;
   if (!j.contains("topics")) return out;
   if (!j["topics"].is_object()) {

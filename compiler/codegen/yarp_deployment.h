@@ -1,6 +1,7 @@
 // The deployment file of the yarp target (docs/yarp.md#names-on-yarp): the DDS transport's
 // JSON, of which the yarp target reads `"topics": {"Module.port": "/yarp/name", ...}` to name
-// YARP ports; its other keys (domain, ros2, types) are the DDS transport's and are ignored.
+// YARP ports; its other keys (domain, ros2, types, qos) are the DDS transport's and are
+// ignored, and any other key is an error (a misspelt "topics" would rename nothing).
 #pragma once
 
 #include <map>

@@ -5,6 +5,7 @@
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/yarp_bottle_lua.h"
 #include "compiler/codegen/yarp_constraint.h"
+#include "compiler/codegen/yarp_layout_example.h"
 #include "core/join.h"
 
 namespace arbc::codegen {
@@ -138,6 +139,7 @@ class YarpMonitorWriter {
   }
 
   std::string accept_function() const;
+  std::string layout_report() const;
   std::string callbacks() const;
   std::string create() const;
   std::string every_due() const;
@@ -154,6 +156,34 @@ class YarpMonitorWriter {
 
 namespace {
 
+// A Bottle without the source's layout is dropped. Said once per connection on the receiving
+// process's stderr, with the Bottle and one that has the layout: a module that writes its own
+// layout would otherwise see nothing arrive, and no word of why.
+std::string YarpMonitorWriter::layout_report() const {
+  const Type& type = *type_of(link_.source);
+  std::string before = "arbc monitor " + link_.monitor + " (" + names_.port(link_.source) + " -> " +
+                       names_.port(link_.destination) + "): dropped a message that is not a " +
+                       type.to_string() + " (" + link_.source +
+                       ") in arbc's Bottle layout, such as `" + yarp_layout_example(type) +
+                       "` (docs/yarp.md#the-bottle-layout): got `";
+  std::string after =
+      "`; later messages of this connection without the layout are dropped without a word\n";
+  return "\n-- A message without the layout of " + link_.source +
+         " is dropped: said once, on the receiving\n"
+         "-- process's stderr, or a module writing another layout would not know why nothing "
+         "arrives.\n"
+         "local arbc_layout_reported = false\n"
+         "local function arbc_report_layout(thing)\n"
+         "  if arbc_layout_reported then return end\n"
+         "  arbc_layout_reported = true\n"
+         "  local b = thing:asBottle()\n"
+         "  local text = b ~= nil and b:toString() or \"\"\n"
+         "  io.stderr:write(" +
+         lua_string(before) + " .. text .. " + lua_string(after) +
+         ")\n"
+         "end\n";
+}
+
 std::string YarpMonitorWriter::accept_function() const {
   std::string out =
       "-- The embedded runtime's message path (docs/design.md#the-message-path), in accept:\n"
@@ -161,9 +191,13 @@ std::string YarpMonitorWriter::accept_function() const {
       "local arbc_out = nil  -- the Bottle update() delivers, made by accept\n";
   const model::Connection* d = link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
   if (d && d->throttle) out += "local arbc_last_delivery = nil  -- for the throttle\n";
+  out += layout_report();
   out += "\nlocal function arbc_accept(thing)\n";
   out += "  local msg = arbc_read(thing, arbc_in_type)\n";
-  out += "  if msg == nil then return false end  -- not the layout of " + link_.source + "\n";
+  out += "  if msg == nil then  -- not the layout of " + link_.source + "\n";
+  out += "    arbc_report_layout(thing)\n";
+  out += "    return false\n";
+  out += "  end\n";
   // The feeds first: their events count at the rule's decision, as YARP evaluates it.
   for (size_t k = 0; k < link_.parts.size(); ++k) {
     const model::Connection& c = conn(k);

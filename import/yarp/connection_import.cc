@@ -8,6 +8,7 @@
 
 #include "import/yarp/app_xml.h"
 #include "import/yarp/script_locator.h"
+#include "import/yarp/yarp_require.h"
 
 namespace arbc::yarp {
 namespace {
@@ -134,6 +135,7 @@ ImportedConnection import_connection(const XmlConnection& xml, const std::string
     script_error(ic, m, out);
     return ic;
   }
+  check_requires_yarp(ic, out);
   if (const MonitorCall* late = constraint_set_later(m.facts)) {
     Diagnostic d = diag(Severity::Warning, locate(m.path, m.text, late->line, "setConstraint"),
                         "the monitor " + m.path + " of " + xml.from + " -> " + xml.to +

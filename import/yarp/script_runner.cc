@@ -129,6 +129,9 @@ ScriptRun run_script(const std::string& text, const std::string& chunk_name,
     return run;
   }
   run.loaded = true;
+  lua_getglobal(box->state(), "__arbc_yarp_required");
+  run.requires_yarp = lua_toboolean(box->state(), -1);
+  lua_pop(box->state(), 1);
   CallArgs create{"create", &context, nullptr};
   LuaCall c = box->protected_call(call_callback, &create);
   if (!c.ok()) {

@@ -31,7 +31,10 @@ struct SampleRun {
 struct ScriptRun {
   bool loaded = false;   // the top level ran
   bool created = false;  // create ran without error and returned a true value (or is absent)
-  std::string error;     // why not loaded / not created: "ball.lua:7: attempt to ..."
+  // The top level called require("yarp"). YARP hands create, accept and update a YARP object
+  // (SWIG), and without the bindings loaded first its receiving process crashes.
+  bool requires_yarp = false;
+  std::string error;  // why not loaded / not created: "ball.lua:7: attempt to ..."
   std::optional<std::string> constraint;  // the last setConstraint before accept
   int constraint_line = 0;
   std::vector<RecordedCall> create_calls;  // top level and create

@@ -51,6 +51,7 @@ inline constexpr const char* kIdXml = "yarp-xml";
 inline constexpr const char* kIdCarrier = "yarp-carrier";
 inline constexpr const char* kIdMonitorMissing = "yarp-monitor-missing";
 inline constexpr const char* kIdScriptError = "yarp-script-error";
+inline constexpr const char* kIdRequire = "yarp-require";
 inline constexpr const char* kIdOpaque = "yarp-opaque";
 inline constexpr const char* kIdConstraintSyntax = "yarp-constraint-syntax";
 inline constexpr const char* kIdSubstring = "yarp-substring-event";

@@ -209,7 +209,10 @@ local yarp_module = {
 yarp = setmetatable(yarp_module, {__index = missing("yarp")})
 
 function require(name)
-  if name == "yarp" then return yarp end
+  if name == "yarp" then
+    __arbc_yarp_required = true  -- YARP needs it before any callback that gets a YARP object
+    return yarp
+  end
   error("module '" .. tostring(name) .. "' not found (arbc's analysis offers only \"yarp\")", 2)
 end
 

@@ -17,10 +17,17 @@ expect 2 "no such file" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/ou
 printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n' > "$scratch/broken.spec"
 expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
 expect 2 "unknown target 'ros'" -- "$arbc" build specs/face_filter.spec --target ros -o "$scratch/out"
+expect 2 "unknown target 'yrp' (did you mean 'yarp'?); the targets are" -- "$arbc" build specs/face_filter.spec --target yrp -o "$scratch/out"
 # The deployment file of --target yarp (docs/yarp.md#names-on-yarp).
 # Each error at the line and column of its key or value, as a compiler reports a spec.
 printf '{"topics": {"Nope.port": "/x"}}' > "$scratch/bad_port.json"
 expect 2 "bad_port.json:1:13: error: \"topics\": \"Nope.port\" is not a port" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/bad_port.json" -o "$scratch/out"
+# A misspelt port, and a misspelt "topics" (which would otherwise rename nothing, silently).
+printf '{"topics": {"HeadControl.gase": "/x"}}' > "$scratch/typo_port.json"
+expect 2 "did you mean \"HeadControl.gaze\"?" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/typo_port.json" -o "$scratch/out"
+printf '{"domain": 3,\n "topic": {"HeadControl.gaze": "/robot/gaze:i"}}' > "$scratch/typo_topics.json"
+expect 2 "typo_topics.json:2:2: error: unknown key \"topic\"; did you mean \"topics\"?" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/typo_topics.json" -o "$scratch/out"
+expect 2 "missing.json: error: cannot read the deployment file (no such file)" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/missing.json" -o "$scratch/out"
 printf '{"topics": {\n  "HeadControl.gaze": "/a",\n}}' > "$scratch/not_json.json"
 expect 2 "not_json.json:3:1: error: not valid JSON: syntax error while parsing object key" -- "$arbc" build specs/face_filter.spec --target yarp --deploy "$scratch/not_json.json" -o "$scratch/out"
 # A key given twice: the JSON library would keep the second without a word.

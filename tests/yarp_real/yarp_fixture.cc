@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 #include "import/yarp/app_xml.h"
@@ -111,6 +112,13 @@ void YarpTest::start_receiver(const std::vector<std::string>& ports) {
     }
     ASSERT_TRUE(there) << p << " did not open; see " << log;
   }
+}
+
+std::string YarpTest::receiver_log() {
+  std::ifstream in(g_tmp / "receiver.log", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 bool YarpTest::receiver_alive() {

@@ -35,6 +35,8 @@ class YarpTest : public ::testing::Test {
   void start_receiver(const std::vector<std::string>& ports);
   // Is the receiver still running? (A monitor can abort it.)
   bool receiver_alive();
+  // What the receiver printed so far (its stdout and stderr: YARP's log, the monitors' words).
+  std::string receiver_log();
   // Opens (once) a port that the test writes to.
   ::yarp::os::BufferedPort<::yarp::os::Bottle>& writer(const std::string& name);
   // Connects with a carrier string as a yarpmanager XML gives it; waits for the monitor.

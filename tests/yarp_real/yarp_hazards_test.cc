@@ -82,6 +82,19 @@ TEST_F(YarpApp, KeywordEventNeverDeliversAndAbortsTheReceiver) {
   EXPECT_FALSE(receiver_alive());
 }
 
+// yarp-require: a monitor that does not require("yarp"), as in the paper's listings. The search
+// passes while no face came; the first face crashes the receiving process (YARP hands accept a
+// SWIG object whose type the monitor's Lua state does not have).
+TEST_F(YarpApp, MonitorWithoutRequireCrashesTheReceiver) {
+  start("require_missing");
+  send("/lookAround/gaze:o", "0 0 1");
+  EXPECT_THAT(received("/gaze/target:i"), ElementsAre("0 0 1"));
+  ASSERT_TRUE(receiver_alive());
+  send("/faceDetector/faces:o", "1 2 10");
+  ::yarp::os::Time::delay(0.5);
+  EXPECT_FALSE(receiver_alive());
+}
+
 // yarp-trig-interval: the watchdog's trig should run every 0.1 s and stop the base half a
 // second after the last scan; it does not run, so the planner keeps driving.
 TEST_F(YarpApp, TrigIntervalLetsThePlannerDriveWithoutTheLaser) {

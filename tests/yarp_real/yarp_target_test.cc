@@ -4,6 +4,7 @@
 // runtime delivered there: the same messages, in the same order. The replay follows the trace's
 // clock on the wall clock, so a decision within kTolerance of an event's expiry (or a
 // throttle's end) may go either way; those are counted, not failed.
+#include <gmock/gmock.h>
 #include <yarp/os/Time.h>
 
 #include <cstdlib>
@@ -59,6 +60,18 @@ class YarpTargetTest : public YarpTest {
     YarpTest::TearDown();
     std::error_code ec;
     if (!HasFailure()) fs::remove_all(dir_, ec);
+  }
+
+  // Builds only the yarp target of `spec`; fills yarp_dir_ and ports_.
+  void build_yarp(const std::string& spec, const std::string& app) {
+    std::string arbc = ARBC_BINARY;
+    ASSERT_EQ(shell(arbc + " build '" + source_dir(spec) + "' --target yarp -o '" +
+                        (dir_ / "yarp").string() + "'",
+                    dir_ / "build-yarp.log"),
+              0)
+        << slurp(dir_ / "build-yarp.log");
+    yarp_dir_ = dir_ / "yarp" / app;
+    ports_ = nlohmann::json::parse(slurp(yarp_dir_ / "ports.json"));
   }
 
   // Records the run, builds both targets; fills app_ and ports_.
@@ -197,6 +210,27 @@ TEST_F(YarpTargetTest, SearchAndTrackDeliversTheSameOnYarp) {
 // certainty 0.8 or more, as positions.
 TEST_F(YarpTargetTest, FaceFilterStubRunDeliversTheSameOnYarp) {
   run_case({"specs/face_filter.spec", "", "", "10s", 10.0});
+}
+
+// A module that writes another layout than the spec's type (here a word where LookAround.gaze
+// is a vec3) sees nothing arrive: the monitor says why once, on the receiver's stderr, with the
+// Bottle it got and one it would take; the next such Bottle is dropped without a word, and a
+// Bottle with the layout passes.
+TEST_F(YarpTargetTest, ABottleWithoutTheLayoutIsDroppedAndSaidOnce) {
+  ASSERT_NO_FATAL_FAILURE(build_yarp("specs/search_and_track.spec", "search_and_track"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/LookAround/gaze:o", "left");
+  send("/LookAround/gaze:o", "0.5 up");
+  send("/LookAround/gaze:o", "0.5 0.25 1");
+  EXPECT_THAT(received("/HeadControl/gaze:i"), ::testing::ElementsAre("0.5 0.25 1.0"));
+  std::string log = receiver_log();
+  std::string said =
+      "arbc monitor HeadControl_gaze__search (/LookAround/gaze:o -> /HeadControl/gaze:i): "
+      "dropped a message that is not a vec3 (LookAround.gaze) in arbc's Bottle layout, such as "
+      "`0.0 0.0 0.0` (docs/yarp.md#the-bottle-layout): got `left`";
+  EXPECT_NE(log.find(said), std::string::npos) << log;
+  EXPECT_EQ(log.find("got `0.5 up`"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
 }
 
 }  // namespace

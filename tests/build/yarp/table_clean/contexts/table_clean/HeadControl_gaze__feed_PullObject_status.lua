@@ -152,9 +152,23 @@ end
 -- the parts run in the spec's order, each under pcall; a feed never delivers.
 local arbc_out = nil  -- the Bottle update() delivers, made by accept
 
+-- A message without the layout of PullObject.status is dropped: said once, on the receiving
+-- process's stderr, or a module writing another layout would not know why nothing arrives.
+local arbc_layout_reported = false
+local function arbc_report_layout(thing)
+  if arbc_layout_reported then return end
+  arbc_layout_reported = true
+  local b = thing:asBottle()
+  local text = b ~= nil and b:toString() or ""
+  io.stderr:write("arbc monitor HeadControl_gaze__feed_PullObject_status (/PullObject/status:o -> /HeadControl/gaze:i): dropped a message that is not a list<string> (PullObject.status) in arbc's Bottle layout, such as `\"text\"` (docs/yarp.md#the-bottle-layout): got `" .. text .. "`; later messages of this connection without the layout are dropped without a word\n")
+end
+
 local function arbc_accept(thing)
   local msg = arbc_read(thing, arbc_in_type)
-  if msg == nil then return false end  -- not the layout of PullObject.status
+  if msg == nil then  -- not the layout of PullObject.status
+    arbc_report_layout(thing)
+    return false
+  end
   pcall(arbc_part_1.accept, msg)  -- feed_PullObject_status: events only
   return false
 end

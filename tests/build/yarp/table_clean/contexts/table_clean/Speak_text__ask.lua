@@ -180,9 +180,23 @@ end
 local arbc_out = nil  -- the Bottle update() delivers, made by accept
 local arbc_last_delivery = nil  -- for the throttle
 
+-- A message without the layout of FaceDetector.face is dropped: said once, on the receiving
+-- process's stderr, or a module writing another layout would not know why nothing arrives.
+local arbc_layout_reported = false
+local function arbc_report_layout(thing)
+  if arbc_layout_reported then return end
+  arbc_layout_reported = true
+  local b = thing:asBottle()
+  local text = b ~= nil and b:toString() or ""
+  io.stderr:write("arbc monitor Speak_text__ask (/FaceDetector/face:o -> /Speak/text:i): dropped a message that is not a {pos: vec3, certainty: float} (FaceDetector.face) in arbc's Bottle layout, such as `(pos (0.0 0.0 0.0)) (certainty 0.0)` (docs/yarp.md#the-bottle-layout): got `" .. text .. "`; later messages of this connection without the layout are dropped without a word\n")
+end
+
 local function arbc_accept(thing)
   local msg = arbc_read(thing, arbc_in_type)
-  if msg == nil then return false end  -- not the layout of FaceDetector.face
+  if msg == nil then  -- not the layout of FaceDetector.face
+    arbc_report_layout(thing)
+    return false
+  end
   pcall(arbc_part_2.accept, msg)  -- feed_FaceDetector_face: events only
   -- ask
   local ok, accepted = pcall(arbc_part_1.accept, msg)
