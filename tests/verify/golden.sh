@@ -110,6 +110,8 @@ golden table_clean_put_mutant.sarif repo 1 --format sarif tests/verify/table_cle
 # by the two mutations with a concrete message.
 golden data_exclusive.txt repo 1 tests/verify/data_exclusive.spec
 golden data_exclusive.json repo 1 --format json tests/verify/data_exclusive.spec
+# String constants are the bytes Lua compares: an escape-like text and a non-ASCII label refuted.
+golden data_string_bytes.txt repo 1 tests/verify/data_string_bytes.spec
 golden resource_pull_mutant.txt repo 1 tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.json repo 1 --format json tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.sarif repo 1 --format sarif tests/verify/table_clean_pull_mutant.spec
