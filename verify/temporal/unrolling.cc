@@ -1,11 +1,11 @@
 #include "verify/temporal/unrolling.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
+#include "verify/temporal/decimal_text.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -35,14 +35,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 
 }  // namespace
 
-z3::expr seconds(z3::context& ctx, double v) {
-  char text[64];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v) break;
-  }
-  return ctx.real_val(text);
-}
+z3::expr seconds(z3::context& ctx, double v) { return ctx.real_val(shortest_decimal(v).c_str()); }
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err) {
