@@ -12,9 +12,11 @@ Constraint effective_guard(std::span<const Connection* const> into, const Connec
   if (rule.opaque) return Constraint::conjunction(std::move(parts));
   for (const std::string& e : rule.must_set) parts.push_back(Constraint::event_ref(e));
   for (const std::string& e : rule.must_unset) {
+    // A `script` rule may set any event: its `sets` are only the names it passes to setEvent
+    // as literals, and a name it computes keeps the event present after this unset.
     bool set_elsewhere = std::any_of(into.begin(), into.end(), [&](const Connection* other) {
-      return other != &rule &&
-             std::find(other->sets.begin(), other->sets.end(), e) != other->sets.end();
+      return other != &rule && (other->opaque || std::find(other->sets.begin(), other->sets.end(),
+                                                           e) != other->sets.end());
     });
     if (!set_elsewhere) parts.push_back(Constraint::negate(Constraint::event_ref(e)));
   }

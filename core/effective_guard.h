@@ -1,7 +1,7 @@
 // The effective guard of a rule (docs/design.md#effective-guards):
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every such path that no other connection of the port
-//             sets)
+//             sets, a `script` rule counting as one that may set any event)
 //             and act_c (`by priority`: the activity event the runtime sets when c delivers)
 // A `script` rule is opaque: E_c = G_c and act_c. The activity event is set after the
 // decision, on delivery only, so a message that is rejected or not selected suppresses

@@ -56,6 +56,17 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
       events.insert(e);
     }
   }
+  // A `script` rule's Lua is not analysed: its `sets` are only the names it passes to setEvent
+  // as literals, and a name it computes may be any event of the port. So it owns an entry of
+  // every event the port reads, set and removed freely (a counterexample that needs one is
+  // unknown: the replay cannot make the script do it).
+  for (size_t owner = 0; owner < shape.connections.size(); ++owner) {
+    const model::Connection& c = *shape.connections[owner];
+    if (!c.opaque) continue;
+    for (const std::string& e : events)
+      if (!contains(c.sets, e) && e != c.activity_event)
+        shape.entries.push_back(entry_of(app, c, e, static_cast<int>(owner)));
+  }
   shape.events.assign(events.begin(), events.end());
   if (!add_port_assumptions(app, shape, err)) return std::nullopt;
   return shape;
@@ -141,7 +152,8 @@ void Unrolling::add_entry_step(size_t q, int k) {
   z3::expr set = set_[k][q], unset = unset_[k][q];
   bool must_set = contains(c.must_set, e.event), must_unset = contains(c.must_unset, e.event);
   solver_.add(z3::implies(set, running));
-  solver_.add(contains(c.unsets, e.event) ? z3::implies(unset, running) : !unset);
+  bool may_unset = c.opaque || contains(c.unsets, e.event);  // a script's names are not all known
+  solver_.add(may_unset ? z3::implies(unset, running) : !unset);
   solver_.add(!(set && unset));
   if (must_set && !must_unset) solver_.add(z3::implies(running && acc_[k], set));
   if (must_unset && !must_set) solver_.add(z3::implies(running && acc_[k], unset));
