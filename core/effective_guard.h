@@ -25,4 +25,12 @@ Constraint effective_guard(std::span<const Connection* const> into, const Connec
 
 Constraint effective_guard(const App& app, std::string_view port, const Connection& rule);
 
+// E_c without act_c: what the runtime evaluates at c's decision (runtime_create.cc). For a
+// monitor that does what app.json says it does, it holds exactly when G_c does, since accept
+// has just set the must-set events and unset the must-unset ones. A monitor that does not (an
+// app.json edited after the build, so that it claims a `must_set` its Lua lacks) is held to
+// the model the proof was about: its message is not selected, rather than delivered in a state
+// the proof took to be impossible.
+Constraint decision_guard(std::span<const Connection* const> into, const Connection& rule);
+
 }  // namespace arbc::model
