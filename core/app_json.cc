@@ -1,11 +1,13 @@
 #include "core/app_json.h"
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <utility>
 
 #include "core/body_text.h"
+#include "core/instant.h"
 #include "core/json_diagnostic.h"
 
 namespace arbc::model {
@@ -55,6 +57,16 @@ bool opt_number(const Json& j, const std::string& path, const char* key, std::op
   if (!j.contains(key) || j[key].is_null()) return true;
   if (!j[key].is_number()) return fail(path + "." + key + ": expected a number or null", err);
   *out = j[key].get<double>();
+  return true;
+}
+
+// A lifetime, hold, throttle or period: absent, or at least core/instant.h's kShortestDuration
+// (a hand-edited 0 or 1e-10 would run other than the proof reads it).
+bool opt_duration(const Json& j, const std::string& path, const char* key,
+                  std::optional<double>* out, std::string* err) {
+  if (!opt_number(j, path, key, out, err)) return false;
+  if (*out && !(**out >= kShortestDuration && std::isfinite(**out)))
+    return fail(path + "." + key + ": expected a number of seconds of at least 0.000001", err);
   return true;
 }
 
@@ -219,7 +231,7 @@ bool read_module(const Json& j, const std::string& p, Module* m, std::string* er
 
 bool read_event(const Json& j, const std::string& p, Event* e, std::string* err) {
   return get_string(j, p, "name", &e->name, err) &&
-         opt_number(j, p, "lifetime", &e->lifetime, err) &&
+         opt_duration(j, p, "lifetime", &e->lifetime, err) &&
          opt_string(j, p, "source", &e->source, err) && read_location(j, p, &e->loc, err);
 }
 
@@ -249,8 +261,8 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          string_list(j, p, "must_unset", &c->must_unset, err) &&
          opt_string(j, p, "activity_event", &c->activity_event, err) &&
          opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
-         opt_number(j, p, "trig_interval", &c->trig_interval, err) &&
-         opt_number(j, p, "throttle", &c->throttle, err) &&
+         opt_duration(j, p, "trig_interval", &c->trig_interval, err) &&
+         opt_duration(j, p, "throttle", &c->throttle, err) &&
          opt_string(j, p, "monitor", &c->monitor, err) &&
          read_digest(j, p, c->monitor, &c->monitor_sha256, err) &&
          read_array(j, p, p + ".", "source_map", false, &c->source_map, read_source_map_entry,
@@ -314,8 +326,8 @@ bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* 
   if (!get_string(j, p, "port", &r->port, err)) return false;
   std::optional<double> every;
   if (!opt_number(j, p, "every", &every, err)) return false;
-  if (!every || !(*every > 0))
-    return fail(p + ".every: expected a positive number of seconds", err);
+  if (!every || !(*every >= kShortestDuration))
+    return fail(p + ".every: expected a positive number of seconds, at least 0.000001", err);
   r->period = *every;
   return read_location(j, p, &r->loc, err);
 }
@@ -341,8 +353,8 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   if (t->kind == K::Spacing || t->kind == K::Response || t->kind == K::Stability) {
     std::optional<double> window;
     if (!opt_number(j, p, "window", &window, err)) return false;
-    if (!window || !(*window > 0))
-      return fail(p + ".window: expected a positive number of seconds", err);
+    if (!window || !(*window >= kShortestDuration))
+      return fail(p + ".window: expected a positive number of seconds, at least 0.000001", err);
     t->window = *window;
   }
   if (t->kind == K::Spacing && !opt_string(j, p, "after", &t->other, err)) return false;
@@ -361,8 +373,8 @@ bool read_assumption(const Json& j, const std::string& p, Assumption* a, std::st
     return false;
   if (!opt_string(j, p, "until", &a->until, err)) return false;
   if (!opt_number(j, p, "absent_for", &a->absent_for, err)) return false;
-  if (a->absent_for && !(*a->absent_for > 0))
-    return fail(p + ".absent_for: expected a positive number of seconds", err);
+  if (a->absent_for && !(*a->absent_for >= kShortestDuration))
+    return fail(p + ".absent_for: expected a positive number of seconds, at least 0.000001", err);
   if (a->absent_for && !a->until.empty())
     return fail(p + ": an assumption has \"until\" or \"absent_for\", not both", err);
   return read_location(j, p, &a->loc, err);

@@ -276,6 +276,11 @@ TEST(AppJsonTest, EverySectionNamesThePathOfItsBadValue) {
             "modules[0].ports[0].direction: expected \"in\" or \"out\"");
   EXPECT_EQ(with("/modules/0/loc/line", "3"), "modules[0].loc.line: expected an integer");
   EXPECT_EQ(with("/events/0/lifetime", true), "events[0].lifetime: expected a number or null");
+  // A lifetime the runtime takes as over the instant it is set (core/instant.h).
+  EXPECT_EQ(with("/events/0/lifetime", 1e-10),
+            "events[0].lifetime: expected a number of seconds of at least 0.000001");
+  EXPECT_EQ(with("/events/0/lifetime", 0),
+            "events[0].lifetime: expected a number of seconds of at least 0.000001");
   EXPECT_EQ(with("/connections/0/kind", "rul"),
             "connections[0].kind: expected \"rule\", \"feed\" or \"connect\"");
   EXPECT_EQ(with("/connections/0/opaque", 0), "connections[0].opaque: expected true or false");

@@ -1,7 +1,7 @@
 // The effective guard of a rule (docs/design.md#effective-guards):
 //   E_c = G_c and (events c sets on every accepting path)
 //             and not (events c unsets on every such path that no other connection of the port
-//             sets)
+//             sets, a `script` rule counting as one that may set any event)
 //             and act_c (`by priority`: the activity event the runtime sets when c delivers)
 // A `script` rule is opaque: E_c = G_c and act_c. The activity event is set after the
 // decision, on delivery only, so a message that is rejected or not selected suppresses
@@ -24,5 +24,13 @@ namespace arbc::model {
 Constraint effective_guard(std::span<const Connection* const> into, const Connection& rule);
 
 Constraint effective_guard(const App& app, std::string_view port, const Connection& rule);
+
+// E_c without act_c: what the runtime evaluates at c's decision (runtime_create.cc). For a
+// monitor that does what app.json says it does, it holds exactly when G_c does, since accept
+// has just set the must-set events and unset the must-unset ones. A monitor that does not (an
+// app.json edited after the build, so that it claims a `must_set` its Lua lacks) is held to
+// the model the proof was about: its message is not selected, rather than delivered in a state
+// the proof took to be impossible.
+Constraint decision_guard(std::span<const Connection* const> into, const Connection& rule);
 
 }  // namespace arbc::model

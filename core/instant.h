@@ -10,6 +10,13 @@ namespace arbc {
 
 inline constexpr double kSameInstant = 1e-9;  // seconds
 
+// The shortest duration a spec or an app.json may state (a lifetime, hold, throttle, period,
+// window). The proof reads durations as exact reals, but the runtime takes a lifetime of
+// kSameInstant or less as over the instant it is set: a hold of 0.0000000005s let the rule below
+// deliver at the very instant the proof said the hold kept it out. Counterexamples are replayed
+// on a grid of microseconds, so the bound is one microsecond.
+inline constexpr double kShortestDuration = 1e-6;  // seconds
+
 // Whether `now` has reached `deadline` (a lapse, the end of a throttle period).
 inline bool reached(double now, double deadline) { return now + kSameInstant >= deadline; }
 

@@ -28,6 +28,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -185,7 +186,8 @@ class Runtime {
   bool create_module_slot(const model::Module& m, const ModuleFactory& factory, std::string* error);
   void create_ports(const model::Module& m, ModuleSlot* slot);
   bool create_connections(std::string* error);
-  bool create_connection(size_t i, const std::string& display_name, std::string* error);
+  bool create_connection(size_t i, const std::string& display_name,
+                         std::span<const model::Connection* const> into, std::string* error);
   bool open_trace(std::string* error);
   bool open_transport(std::string* error);
   // Routes a message published on `out` to each connection from it mediated here.

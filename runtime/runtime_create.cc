@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/effective_guard.h"
 #include "core/join.h"
 #include "core/monitor_digests.h"
 #include "runtime/runtime_internal.h"
@@ -223,17 +224,21 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
 bool Runtime::create_connections(std::string* error) {
   std::map<std::string, int> name_count;
   for (const model::Connection& c : app_.connections) ++name_count[c.name];
+  std::map<std::string, std::vector<const model::Connection*>, std::less<>> into;
+  for (const model::Connection& c : app_.connections) into[c.destination].push_back(&c);
   for (size_t i = 0; i < app_.connections.size(); ++i) {
     const model::Connection& mc = app_.connections[i];
     auto dst = inputs_by_name_.find(mc.destination);
     if (dst != inputs_by_name_.end() && !dst->second->mediated) continue;
     std::string name = name_count[mc.name] > 1 ? mc.destination + "/" + mc.name : mc.name;
-    if (!create_connection(i, name, error)) return false;
+    if (!create_connection(i, name, into[mc.destination], error)) return false;
   }
   return true;
 }
 
-bool Runtime::create_connection(size_t i, const std::string& display_name, std::string* error) {
+bool Runtime::create_connection(size_t i, const std::string& display_name,
+                                std::span<const model::Connection* const> into,
+                                std::string* error) {
   const model::Connection& mc = app_.connections[i];
   auto c = std::make_unique<Connection>();
   c->runtime = this;
@@ -257,7 +262,12 @@ bool Runtime::create_connection(size_t i, const std::string& display_name, std::
   c->destination = dst->second;
   c->is_feed = mc.kind == model::ConnectionKind::Feed;
   c->throttle = mc.throttle;
-  c->constraint = CompiledConstraint::compile(mc.constraint, c->destination->container.index());
+  // A rule is selected on its effective guard without the activity event, which equals its
+  // constraint whenever its monitor does what app.json says (core/effective_guard.h): so a
+  // monitor that does otherwise cannot deliver in a state the proof took to be impossible.
+  Constraint selection =
+      mc.kind == model::ConnectionKind::Rule ? model::decision_guard(into, mc) : mc.constraint;
+  c->constraint = CompiledConstraint::compile(selection, c->destination->container.index());
   c->constraint_text = mc.constraint.to_string();
   c->stats.name = c->name;
   c->stats.source = mc.source;

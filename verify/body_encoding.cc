@@ -88,7 +88,7 @@ Ev Encoder::eval(const BodyExpr& e) {
       return {{K::Real, exact_real(ctx_, e.number)}, ctx_.bool_val(true)};
     }
     case BodyExpr::Op::String:
-      return {{K::String, ctx_.string_val(e.text)}, ctx_.bool_val(true)};
+      return {{K::String, byte_string(ctx_, e.text)}, ctx_.bool_val(true)};
     case BodyExpr::Op::Bool:
       return {{K::Bool, ctx_.bool_val(e.boolean)}, ctx_.bool_val(true)};
     case BodyExpr::Op::Local:

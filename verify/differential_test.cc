@@ -120,9 +120,10 @@ struct BruteForce {
   std::vector<const model::Invariant*> invariants;  // those touching the port, transitively
   std::vector<const model::ExclusiveGroup*> groups;
 
+  // A `script` rule (opaque) may set any event, whatever its `sets` say.
   bool other_sets(const model::Connection& c, const std::string& e) const {
     for (const model::Connection& o : app->connections) {
-      if (&o != &c && std::count(o.sets.begin(), o.sets.end(), e)) return true;
+      if (&o != &c && (o.opaque || std::count(o.sets.begin(), o.sets.end(), e))) return true;
     }
     return false;
   }

@@ -25,11 +25,12 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-// Does some connection into the port other than `self` set `event`?
+// Does some connection into the port other than `self` set `event`? A `script` rule may set
+// any event (core/effective_guard.h).
 bool set_by_other(const std::vector<const model::Connection*>& into, const model::Connection* self,
                   const std::string& event) {
   for (const model::Connection* c : into) {
-    if (c != self && contains(c->sets, event)) return true;
+    if (c != self && (c->opaque || contains(c->sets, event))) return true;
   }
   return false;
 }

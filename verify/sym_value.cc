@@ -64,7 +64,7 @@ SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bou
     case Type::Kind::Float:
       return {K::Real, exact_real(ctx, v.as_float())};
     case Type::Kind::String:
-      return {K::String, ctx.string_val(v.as_string())};
+      return {K::String, byte_string(ctx, v.as_string())};
     case Type::Kind::Vec3: {
       SymValue out(K::Vec3, ctx.bool_val(true));
       Eigen::Vector3d p = v.is_vec3() ? v.as_vec3() : Eigen::Vector3d::Zero();
@@ -141,6 +141,12 @@ std::string pow2_text(int k) {
 }
 
 }  // namespace
+
+z3::expr byte_string(z3::context& ctx, const std::string& s) {
+  Z3_ast r = Z3_mk_lstring(ctx, static_cast<unsigned>(s.size()), s.data());
+  ctx.check_error();
+  return z3::expr(ctx, r);
+}
 
 z3::expr exact_real(z3::context& ctx, double d) {
   int exp = 0;
@@ -263,8 +269,13 @@ Value concrete(const z3::model& m, const SymValue& v) {
     }
     case K::Real:
       return Value(real_value(m.eval(v.scalar, true)));
-    case K::String:
-      return Value(m.eval(v.scalar, true).get_string());
+    case K::String: {
+      // The bytes, not Z3_get_string's escaped text (a newline would come back as `\u{a}`).
+      z3::expr s = m.eval(v.scalar, true);
+      unsigned n = 0;
+      const char* bytes = Z3_get_lstring(s.ctx(), s, &n);
+      return Value(std::string(bytes, n));
+    }
     case K::Vec3:
       return Value::vec3(real_value(m.eval(v.items[0].scalar, true)),
                          real_value(m.eval(v.items[1].scalar, true)),

@@ -45,6 +45,11 @@ SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bou
 // A fresh value shaped like `v` (a `var`'s unknown state); lists keep v's capacity.
 SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& prefix);
 
+// The string `s` as a Z3 string of its bytes, one character each, as Lua compares strings.
+// Z3_mk_string (z3::context::string_val) reads escapes and mangles bytes outside ASCII: a rule
+// accepting only the six bytes `\u{41}` was proved exclusive with one accepting all but "A".
+z3::expr byte_string(z3::context& ctx, const std::string& s);
+
 // The exact rational value of a finite double, as a Real numeral.
 z3::expr exact_real(z3::context& ctx, double d);
 

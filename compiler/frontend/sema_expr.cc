@@ -6,6 +6,7 @@
 #include "compiler/frontend/builtin_aliases.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/instant.h"
 #include "core/join.h"
 
 namespace arbc::frontend {
@@ -546,8 +547,15 @@ void Sema::check_duration(Duration& d, const std::string& what) {
     return;
   }
   d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
-  if (!(d.seconds > 0) || !std::isfinite(d.seconds))
+  if (!(d.seconds > 0) || !std::isfinite(d.seconds)) {
     error(e.loc, what + " must be a positive duration, such as 500ms or 1s", "duration");
+  } else if (d.seconds < kShortestDuration) {
+    error(e.loc,
+          what +
+              " must be at least 0.001ms: the runtime takes instants less than a nanosecond "
+              "apart as one, so a shorter duration would not mean what the proof reads",
+          "duration");
+  }
 }
 
 bool Sema::fold_const(const Expr& e, ConstDecl& into) {

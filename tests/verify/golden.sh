@@ -110,6 +110,8 @@ golden table_clean_put_mutant.sarif repo 1 --format sarif tests/verify/table_cle
 # by the two mutations with a concrete message.
 golden data_exclusive.txt repo 1 tests/verify/data_exclusive.spec
 golden data_exclusive.json repo 1 --format json tests/verify/data_exclusive.spec
+# String constants are the bytes Lua compares: an escape-like text and a non-ASCII label refuted.
+golden data_string_bytes.txt repo 1 tests/verify/data_string_bytes.spec
 golden resource_pull_mutant.txt repo 1 tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.json repo 1 --format json tests/verify/table_clean_pull_mutant.spec
 golden resource_pull_mutant.sarif repo 1 --format sarif tests/verify/table_clean_pull_mutant.spec
@@ -122,6 +124,9 @@ golden data_assert.json repo 1 --format json tests/verify/data_assert.spec
 golden data_assert.sarif repo 1 --format sarif tests/verify/data_assert.spec
 # An assert over data on a `script` rule: not proved, says why.
 golden data_assert_script.txt repo 1 tests/verify/data_assert_script.spec
+# A script that sets an event under a computed name: it may set any event of its port, so an
+# unset elsewhere proves nothing and the property over time is unknown, not "holds".
+golden script_computed_event.txt repo 1 tests/verify/script_computed_event.spec
 # A body and its Lua monitor that disagree (an arbc bug, simulated): `internal`, also on stderr.
 golden internal_resource.txt repo 1 tests/verify/internal_resource/app.json
 golden internal_assert.txt repo 1 tests/verify/internal_assert/app.json

@@ -34,6 +34,34 @@ sed -i 's|"constraint": "not e_face_detected"|"constraint": "true"|' "$scratch/t
 grep -q '"constraint": "true"' "$scratch/tampered/app.json" || fail "the app.json edit did not apply"
 expect app-json-edited-after-build-is-proved-again 1 "arbc run: verification refuted; nothing was run" \
   "$arbc" run "$scratch/tampered" "${run[@]}"
+# An app.json whose model of a monitor is not the monitor (right's `must_set` claims an event its
+# Lua never sets, which left's constraint excludes) is proved again, and proved; the runtime then
+# selects right on what the proof assumed (its effective guard), so the two arms never both
+# deliver on one state: right's message is not selected.
+"$arbc" build tests/what_runs/gripper.spec -o "$scratch/gripper" > /dev/null || fail "gripper build"
+python3 - "$scratch/gripper/gripper/app.json" <<'PY'
+import json, sys
+path = sys.argv[1]
+app = json.load(open(path))
+for c in app["connections"]:
+    if c["name"] == "right":
+        c.update(constraint="true", sets=["e_claimed"], must_set=["e_claimed"])
+    if c["name"] == "left":
+        c["constraint"] = "e_left_owns and not e_claimed"
+json.dump(app, open(path, "w"), indent=2)
+PY
+cat > "$scratch/gripper.jsonl" <<'LINES'
+{"t": 0.0, "port": "Gripper.status", "value": ["e_left_owns"]}
+{"t": 0.1, "port": "LeftArm.grip", "value": {"verb": "close", "force": 1.0}}
+{"t": 0.1, "port": "RightArm.grip", "value": {"verb": "open", "force": 1.0}}
+LINES
+out=$("$arbc" run "$scratch/gripper/gripper" --stub --inputs "$scratch/gripper.jsonl" \
+  --duration 1s 2>&1) || fail "gripper-run: exit $?"$'\n'"$out"
+[[ $out == *"verified: 1 arbitrated port proved exclusive"* ]] ||
+  fail "gripper-run: the edited app.json was not proved"$'\n'"$out"
+grep -Eq '^right +1 +0 +0 +0 +1 ' <<< "$out" ||
+  fail "gripper-run: right delivered though its monitor does not set what app.json says"$'\n'"$out"
+
 cp -r "$app" "$scratch/other_arbc"
 sed -i 's|"arbc_build_id": "[0-9a-f]*"|"arbc_build_id": "0000"|' "$scratch/other_arbc/proof.json"
 out=$("$arbc" run "$scratch/other_arbc" "${run[@]}" 2>&1) || fail "other-arbc: exit $?"$'\n'"$out"

@@ -1,11 +1,11 @@
 #include "verify/temporal/unrolling.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
+#include "verify/temporal/decimal_text.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -35,14 +35,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 
 }  // namespace
 
-z3::expr seconds(z3::context& ctx, double v) {
-  char text[64];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v) break;
-  }
-  return ctx.real_val(text);
-}
+z3::expr seconds(z3::context& ctx, double v) { return ctx.real_val(shortest_decimal(v).c_str()); }
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err) {
@@ -62,6 +55,17 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
       shape.entries.push_back(entry_of(app, *c, e, owner));
       events.insert(e);
     }
+  }
+  // A `script` rule's Lua is not analysed: its `sets` are only the names it passes to setEvent
+  // as literals, and a name it computes may be any event of the port. So it owns an entry of
+  // every event the port reads, set and removed freely (a counterexample that needs one is
+  // unknown: the replay cannot make the script do it).
+  for (size_t owner = 0; owner < shape.connections.size(); ++owner) {
+    const model::Connection& c = *shape.connections[owner];
+    if (!c.opaque) continue;
+    for (const std::string& e : events)
+      if (!contains(c.sets, e) && e != c.activity_event)
+        shape.entries.push_back(entry_of(app, c, e, static_cast<int>(owner)));
   }
   shape.events.assign(events.begin(), events.end());
   if (!add_port_assumptions(app, shape, err)) return std::nullopt;
@@ -148,7 +152,8 @@ void Unrolling::add_entry_step(size_t q, int k) {
   z3::expr set = set_[k][q], unset = unset_[k][q];
   bool must_set = contains(c.must_set, e.event), must_unset = contains(c.must_unset, e.event);
   solver_.add(z3::implies(set, running));
-  solver_.add(contains(c.unsets, e.event) ? z3::implies(unset, running) : !unset);
+  bool may_unset = c.opaque || contains(c.unsets, e.event);  // a script's names are not all known
+  solver_.add(may_unset ? z3::implies(unset, running) : !unset);
   solver_.add(!(set && unset));
   if (must_set && !must_unset) solver_.add(z3::implies(running && acc_[k], set));
   if (must_unset && !must_set) solver_.add(z3::implies(running && acc_[k], unset));
