@@ -167,6 +167,10 @@ struct ResourceResult {
   // message (one, or two) makes both deliver a command that uses it ("exclusive by data").
   std::vector<std::string> exclusive_by_events;
   std::vector<std::string> exclusive_by_data;
+  // Sources whose pairs are exclusive by data for one message each: two messages of one of them
+  // in one event state are two decisions, which the check does not cover (said with the
+  // verdict, docs/checks.md#resource).
+  std::vector<std::string> per_message_sources;
   std::vector<Finding> findings;
   std::string unknown_reason;
 };

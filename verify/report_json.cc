@@ -219,6 +219,7 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         rj["pairs"] = res.pairs;
         rj["exclusive_by_events"] = res.exclusive_by_events;
         rj["exclusive_by_data"] = res.exclusive_by_data;
+        rj["per_message_sources"] = res.per_message_sources;
         rj["unknown_reason"] =
             res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
         rj["findings"] = Json::array();

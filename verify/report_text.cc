@@ -97,6 +97,10 @@ std::string resource_lines(const ResourceResult& r) {
   line += "\n";
   for (const std::string& p : r.exclusive_by_events) line += "    exclusive by events: " + p + "\n";
   for (const std::string& p : r.exclusive_by_data) line += "    exclusive by data: " + p + "\n";
+  for (const std::string& src : r.per_message_sources)
+    line += "    per message: two " + src +
+            " messages in one event state are not covered (two decisions; an event one rule's "
+            "monitor sets and the other's `when` forbids would cover them)\n";
   return line;
 }
 

@@ -221,6 +221,11 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
                          : "one of them never delivers a command that uses it";
   out_.exclusive_by_data.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") +
                                    ": " + why);
+  // One message of a source is one decision. Two of its messages before the event state changes
+  // (a module reporting what the first command did) could give each rule one: not proved here.
+  std::vector<std::string>& sources = out_.per_message_sources;
+  if (same && std::find(sources.begin(), sources.end(), a.connection->source) == sources.end())
+    sources.push_back(a.connection->source);
 }
 
 bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool same,
