@@ -8,6 +8,7 @@ Each case runs the arbc binary and checks its exit code and the words of its out
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -373,6 +374,32 @@ def case_an_app_and_its_tests_file_report_once(arbc, tmp):
     expect(code == 1 and err.count("\nrefuted: ") == 1, "the proof is not reported once", out, err)
     expect(f"arbc test: {tests}: no test was run: it tests {refuted}, whose proof failed above"
            in err, "the tests file is not named", out, err)
+
+
+def case_arm_is_proved_per_message(arbc, tmp):
+    # The resource check of the arm is per message of ObjectDetector.objects, and verify says
+    # so; what it does not cover happens: two lists in one event state, near then far, give the
+    # arm to take and then to pull. Should the check come to cover it, this test must change
+    # with the report's line.
+    code, out, err = run(arbc, "verify", SPEC)
+    expect(code == 0, f"exit {code}", out, err)
+    expect("    per message: two ObjectDetector.objects messages in one event state are not "
+           "covered" in out, "verify does not say the arm is proved per message", out, err)
+    tests = os.path.join(tmp, "arm.test.spec")
+    shutil.copy(SPEC, tmp)
+    with open(tests, "w", encoding="utf-8") as f:
+        f.write(f'tests for "{os.path.basename(SPEC)}";\n\ntest "two lists in one state" {{\n'
+                '  at 0s PullObject.status <- ["e_pull_idle"];\n'
+                '  at 0s PickAndPlace.status <- ["e_arm_idle"];\n'
+                "  at 100ms ObjectDetector.objects <- [{ pos: vec3(0.3, 0.1, 0.0), dist: 0.3 }];\n"
+                "  at 100ms ObjectDetector.objects <- [{ pos: vec3(0.6, 0.1, 0.0), dist: 0.6 }];\n"
+                '  expect PickAndPlace.cmd receives { verb: "take", pos: vec3(0.3, 0.1, 0.0) } '
+                "at 100ms;\n"
+                '  expect PullObject.cmd receives { verb: "pull", pos: vec3(0.6, 0.1, 0.0) } '
+                "at 100ms;\n}\n")
+    code, out, err = run(arbc, "test", os.path.join(tmp, os.path.basename(SPEC)), tests)
+    expect(code == 0 and "PASS" in out, "two lists in one state did not command the arm twice",
+           out, err)
 
 
 def main():
