@@ -14,9 +14,9 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 
 from dds_domain import Domain, environment
+from teleop_app import build_teleop
 
 EXPECTED = list(range(1, 11)) + list(range(101, 111)) + list(range(301, 311))
 
@@ -31,11 +31,7 @@ def main():
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-interop-")
-    built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
-                            out_dir], capture_output=True, text=True)
-    if built.returncode != 0:
-        fail("arbc build", built.stdout + built.stderr)
+    out_dir = build_teleop(arbc, here, "arbc-dds-interop-")
     receiver = subprocess.Popen([sub, domain, "6", "60"], stdout=subprocess.PIPE,
                                 stderr=subprocess.STDOUT, text=True, env=env)
     mediator = subprocess.Popen(

@@ -19,9 +19,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 
 from dds_domain import Domain, environment
+from teleop_app import build_teleop
 
 
 def fail(message, *outputs):
@@ -34,11 +34,7 @@ class Teleop:
         self.arbc, self.here = arbc, here
         self.env = environment(os.path.join(here, "loopback_profile.xml"))
         self.domain = Domain()
-        self.dir = tempfile.mkdtemp(prefix="arbc-dds-mistakes-")
-        built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
-                                self.dir], capture_output=True, text=True)
-        if built.returncode != 0:
-            fail("arbc build", built.stdout + built.stderr)
+        self.dir = build_teleop(arbc, here, "arbc-dds-mistakes-")
         self.deploy = os.path.join(here, "interop", "teleop.deploy.json")
 
     def deployment(self, edit):

@@ -17,10 +17,10 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 
 from dds_domain import Domain, environment
+from teleop_app import build_teleop
 
 
 def fail(message, *outputs):
@@ -53,11 +53,7 @@ def main():
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-qos-mismatch-")
-    built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
-                            out_dir], capture_output=True, text=True)
-    if built.returncode != 0:
-        fail("arbc build", built.stdout + built.stderr)
+    out_dir = build_teleop(arbc, here, "arbc-dds-qos-mismatch-")
     app = os.path.join(out_dir, "teleop")
     deploy = os.path.join(here, "interop", "teleop.deploy.json")
 

@@ -28,11 +28,11 @@ import re
 import signal
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 
 from dds_domain import Domain, environment
+from teleop_app import build_teleop
 
 HEARD_WITHIN = 10.0  # s; set from the command line
 LISTEN = 2.0  # s of messages counted after the first
@@ -90,11 +90,7 @@ def main():
     sub_env = environment(os.path.join(here, profile))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-restart-peer-")
-    built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
-                            out_dir], capture_output=True, text=True)
-    if built.returncode != 0:
-        fail("arbc build", built.stdout + built.stderr)
+    out_dir = build_teleop(arbc, here, "arbc-dds-restart-peer-")
     mediator = subprocess.Popen(
         [arbc, "run", os.path.join(out_dir, "teleop"), "--transport", "dds", "--host", "none",
          "--mediate", "all", "--deploy", os.path.join(here, "interop", "teleop.deploy.json"),
