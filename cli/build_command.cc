@@ -193,7 +193,7 @@ int build_command(std::span<char*> args) {
     std::fputs(render(d, &compiled.sources).c_str(), stderr);
   if (!generated.ok) {
     std::fprintf(stderr, "arbc build: code generation failed; nothing was written\n");
-    return kExitRuntimeFailure;
+    return generated.bad_input ? kExitBadInput : kExitRuntimeFailure;
   }
   UserModules user;
   if (a.target_name == "yarp")

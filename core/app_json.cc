@@ -230,6 +230,12 @@ bool read_module(const Json& j, const std::string& p, Module* m, std::string* er
 }
 
 bool read_event(const Json& j, const std::string& p, Event* e, std::string* err) {
+  if (j.contains("predicate")) {
+    std::string text, error;
+    if (!get_string(j, p, "predicate", &text, err)) return false;
+    e->predicate = parse_body_expr(text, &error);
+    if (!e->predicate) return fail(p + ".predicate: " + error, err);
+  }
   return get_string(j, p, "name", &e->name, err) &&
          opt_duration(j, p, "lifetime", &e->lifetime, err) &&
          opt_string(j, p, "source", &e->source, err) && read_location(j, p, &e->loc, err);

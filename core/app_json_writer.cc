@@ -234,6 +234,7 @@ std::string to_app_json(const App& app) {
     w.member("name", e.name);
     write_optional(w, "lifetime", e.lifetime);
     w.member("source", e.source);
+    if (e.predicate) w.member("predicate", body_expr_text(*e.predicate));
     write_location(w, e.loc);
     w.end_object();
   }

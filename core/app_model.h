@@ -59,6 +59,11 @@ struct Event {
   std::optional<double> lifetime;  // seconds; none: until unset
   std::string source;
   SourceLocation loc;
+  // A derived event's predicate over its source's message (BodyExpr::Op::Message); for a
+  // delivery event (`source` an arbitrated in-port, docs/language.md#delivery-events), over
+  // what that port delivers. nullopt: not derived, or not recorded. The resource check reads
+  // it (verify/resource_checks.h): which deliveries set the event.
+  std::optional<BodyExpr> predicate = std::nullopt;
 };
 
 // One line of a generated monitor and the spec line it comes from, so a script error at

@@ -62,6 +62,9 @@ constexpr CheckId kIds[] = {
     {"temporal-bound", kVerify,
      "a response's window cannot close within --temporal-bound messages at the given rates "
      "(warning; an error with --strict)"},
+    {"vacuous", kVerify,
+     "a property over time reads an event nothing can put into its port's container, so it says "
+     "nothing (warning; an error with --strict)"},
     {"rate-source", kCheck,
      "a rate (`given M.p every D`) for a source that no rule, stream event or connect reads"},
     {"resource-port", kCheck,

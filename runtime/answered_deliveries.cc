@@ -21,7 +21,8 @@ void Runtime::collect_feedback_events() {
     c.model->constraint.collect_events(read);
     for (const std::string& e : read) {
       for (Connection* feed : c.destination->feeds) {
-        if (!feed->source->remote) continue;  // hosted here: it answers at once
+        // Hosted here, or this process's own deliveries: it answers at once.
+        if (!feed->source || !feed->source->remote) continue;
         const std::vector<std::string>& sets = feed->model->sets;
         if (std::find(sets.begin(), sets.end(), e) == sets.end()) continue;
         c.feedback.push_back({e, feed, declared_lifetime(e)});

@@ -256,6 +256,13 @@ void Runtime::deliver(Connection& c, double t, const Value& delivered) {
   // `by priority`: only a delivered message holds the lower rules off, for the event's
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
+  // Delivery events (docs/design.md#delivery-events): their feeds read what was delivered, in
+  // this task, so no decision runs between a delivery and the events it sets.
+  for (Connection* f : c.destination->delivery_feeds) {
+    ++f->stats.arrived;
+    f->message = c.message;
+    process(*f, delivered);
+  }
   Delivery d{c.destination->port, delivered, c.name, c.model->source, t};
   if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
   if (loops_back_) {

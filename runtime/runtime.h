@@ -186,6 +186,7 @@ class Runtime {
   bool create_module_slot(const model::Module& m, const ModuleFactory& factory, std::string* error);
   void create_ports(const model::Module& m, ModuleSlot* slot);
   bool create_connections(std::string* error);
+  bool attach_delivery_feed(Connection& c, const std::string& where, std::string* error);
   bool create_connection(size_t i, const std::string& display_name,
                          std::span<const model::Connection* const> into, std::string* error);
   bool open_trace(std::string* error);

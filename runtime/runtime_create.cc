@@ -236,6 +236,28 @@ bool Runtime::create_connections(std::string* error) {
   return true;
 }
 
+// A feed whose source is an arbitrated input port carries a delivery event
+// (docs/design.md#delivery-events): it runs on what that port delivers, in the same task as the
+// delivery, so the port must be mediated here too; otherwise its deliveries happen in another
+// process and the events would never be set here, so rules reading `not EVENT` would be
+// selected while the proof took them to be blocked.
+bool Runtime::attach_delivery_feed(Connection& c, const std::string& where, std::string* error) {
+  const model::Connection& mc = *c.model;
+  auto from = inputs_by_name_.find(mc.source);
+  if (!c.is_feed || from == inputs_by_name_.end()) {
+    *error = where + ": source " + mc.source + " is not an output port of a module in the app";
+    return false;
+  }
+  if (!from->second->mediated) {
+    *error = where + ": the delivery events it carries (" + join(mc.sets) + ") come from what " +
+             mc.source + " delivers, which another process mediates; mediate " + mc.source +
+             " and " + mc.destination + " in one process (--mediate)";
+    return false;
+  }
+  c.delivered_from = from->second;
+  return true;
+}
+
 bool Runtime::create_connection(size_t i, const std::string& display_name,
                                 std::span<const model::Connection* const> into,
                                 std::string* error) {
@@ -249,8 +271,10 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
   auto dst = inputs_by_name_.find(mc.destination);
   // What follows is about the model's content: it names where the model came from.
   std::string where = model_name() + ": connection '" + mc.name + "'";
-  if (src == outputs_by_name_.end()) {
-    *error = where + ": source " + mc.source + " is not an output port of a module in the app";
+  c->is_feed = mc.kind == model::ConnectionKind::Feed;
+  if (src != outputs_by_name_.end()) {
+    c->source = src->second;
+  } else if (!attach_delivery_feed(*c, where, error)) {
     return false;
   }
   if (dst == inputs_by_name_.end()) {
@@ -258,9 +282,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
         where + ": destination " + mc.destination + " is not an input port of a module in the app";
     return false;
   }
-  c->source = src->second;
   c->destination = dst->second;
-  c->is_feed = mc.kind == model::ConnectionKind::Feed;
   c->throttle = mc.throttle;
   // A rule is selected on its effective guard without the activity event, which equals its
   // constraint whenever its monitor does what app.json says (core/effective_guard.h): so a
@@ -280,7 +302,8 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
              ", and no monitor update converts it";
     return false;
   }
-  c->source->connections.push_back(c.get());
+  if (c->source) c->source->connections.push_back(c.get());
+  if (c->delivered_from) c->delivered_from->delivery_feeds.push_back(c.get());
   if (c->is_feed) c->destination->feeds.push_back(c.get());
   connections_.push_back(std::move(c));
   return true;

@@ -42,7 +42,10 @@ struct Runtime::InPort {
   RemoteModule* remote = nullptr;  // its module, when hosted elsewhere
   EventContainer container;
   std::vector<Connection*> feeds;  // the feed connections into it
-  InputStats stats;                // what arrived mediated by another process
+  // Feeds of delivery events (docs/design.md#delivery-events): from what this port delivers,
+  // into the containers of the ports that read them; run in the task of each delivery.
+  std::vector<Connection*> delivery_feeds;
+  InputStats stats;  // what arrived mediated by another process
 };
 
 // An output port and the connections leaving it, in model order.
@@ -62,8 +65,9 @@ struct Runtime::Connection : MonitorHost {
   int index = 0;  // owner id in event containers
   std::string name;
   const model::Connection* model = nullptr;
-  OutPort* source = nullptr;
+  OutPort* source = nullptr;  // null for a delivery feed, whose stream is `delivered_from`
   InPort* destination = nullptr;
+  InPort* delivered_from = nullptr;  // a delivery event's feed: the port whose deliveries it reads
   bool is_feed = false;
 
   std::unique_ptr<LuaMonitor> monitor;

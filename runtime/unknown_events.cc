@@ -20,6 +20,8 @@ void Runtime::collect_unknown_events() {
       const model::Event* event = app_.find_event(e);
       if (!event || event->source.empty()) continue;  // not provided by a feed
       for (Connection* feed : c.destination->feeds) {
+        // What this process delivers is known from the start: none of it yet.
+        if (feed->delivered_from) continue;
         const std::vector<std::string>& sets = feed->model->sets;
         if (std::find(sets.begin(), sets.end(), e) != sets.end())
           c.unknown.push_back({e, feed, event->lifetime});
@@ -42,7 +44,9 @@ void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
   Connection& c = *connections_[static_cast<size_t>(owner)];
   const std::string& name = in.container.index().name(event);
   trace_.event(expiry, in.qualified, "expire", name, c.name, expiry);
-  if (!options_.report_silent_lapses) return;
+  // A delivery event lapses when its port has delivered nothing for its lifetime: no source
+  // is silent then.
+  if (!options_.report_silent_lapses || c.delivered_from) return;
   std::optional<double> lifetime = declared_lifetime(name);
   double silent = expiry - c.last_arrival;
   if (!lifetime || silent + 1e-9 < *lifetime) return;  // its source spoke; the entry just ended

@@ -32,6 +32,8 @@ inline constexpr const char* kCheckResource = "resource";
 inline constexpr const char* kCheckTemporal = "temporal";  // a property over time is violated
 // A response whose window cannot close within --temporal-bound messages at the given rates.
 inline constexpr const char* kCheckTemporalBound = "temporal-bound";
+// A property over time about an event nothing can put into its port's container: it says nothing.
+inline constexpr const char* kCheckVacuous = "vacuous";
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {
@@ -121,7 +123,9 @@ struct TraceStep {
 struct TemporalResult {
   // Proved: for every run, whatever its length (`proof` says by what argument); the search
   // also found no violation up to `bound` messages.
-  enum class Outcome { HoldsToBound, Violated, Unknown, Proved };
+  // Vacuous: about an event nothing can put into the port's container, so true of any run and
+  // saying nothing (a `vacuous` warning, never "proved"); `proof` says why.
+  enum class Outcome { HoldsToBound, Violated, Unknown, Proved, Vacuous };
   model::TemporalProperty property;
   Outcome outcome = Outcome::Unknown;
   // HoldsToBound and Proved: the largest number of messages into the port explored;
@@ -163,14 +167,11 @@ struct ResourceResult {
   model::SourceLocation loc;
   Verdict verdict = Verdict::Proved;
   int pairs = 0;  // pairs of rules (into different ports) checked
-  // Per proved pair, why: never selected in one event state ("exclusive by events"), or no
-  // message (one, or two) makes both deliver a command that uses it ("exclusive by data").
+  // Per proved pair, why: neither can be selected in the state the other's delivery leaves
+  // ("exclusive by events"), or one of them never delivers a command that uses it ("exclusive
+  // by data").
   std::vector<std::string> exclusive_by_events;
   std::vector<std::string> exclusive_by_data;
-  // Sources whose pairs are exclusive by data for one message each: two messages of one of them
-  // in one event state are two decisions, which the check does not cover (said with the
-  // verdict, docs/checks.md#resource).
-  std::vector<std::string> per_message_sources;
   std::vector<Finding> findings;
   std::string unknown_reason;
 };

@@ -106,7 +106,7 @@ Json port_json(const PortResult& p, bool stats) {
 
 // A property over time: its verdict with the bound, and a violation's timed trace.
 Json temporal_json(const TemporalResult& t) {
-  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown", "proved"};
+  static const char* kOutcome[] = {"holds-up-to-bound", "violated", "unknown", "proved", "vacuous"};
   Json j;
   j["kind"] = model::temporal_kind_name(t.property.kind);
   j["port"] = t.property.port;
@@ -219,7 +219,6 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         rj["pairs"] = res.pairs;
         rj["exclusive_by_events"] = res.exclusive_by_events;
         rj["exclusive_by_data"] = res.exclusive_by_data;
-        rj["per_message_sources"] = res.per_message_sources;
         rj["unknown_reason"] =
             res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
         rj["findings"] = Json::array();

@@ -35,6 +35,9 @@ constexpr CheckDoc kChecks[] = {
     {kCheckDead, "A rule can never be selected."},
     {kCheckTemporalBound,
      "A response's window cannot close within --temporal-bound messages at the given rates."},
+    {kCheckVacuous,
+     "A property over time reads an event nothing can put into its port's container: it says "
+     "nothing."},
     {kCheckUnfed, "A constraint or assert reads an event nothing sets into the port's container."},
     {kCheckUnused, "An event is set but nothing reads it."},
     {kCheckOwnership, "A monitor unsets an event it never sets."},
@@ -130,8 +133,9 @@ void add_rule_locations(const Finding& f, Json& related) {
 // A violated (or undecided) property over time as a result; nullopt when it holds up to the
 // bound, which is no finding.
 std::optional<Json> temporal_result(const TemporalResult& t) {
+  // A vacuous property is reported by its `vacuous` finding.
   if (t.outcome == TemporalResult::Outcome::HoldsToBound ||
-      t.outcome == TemporalResult::Outcome::Proved)
+      t.outcome == TemporalResult::Outcome::Proved || t.outcome == TemporalResult::Outcome::Vacuous)
     return std::nullopt;
   bool violated = t.outcome == TemporalResult::Outcome::Violated;
   Json r;

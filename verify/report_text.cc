@@ -46,6 +46,12 @@ std::string port_line(const PortResult& p, bool stats) {
       line += ": no rule delivers, nothing can overlap";
     } else if (p.rules.size() == 1) {
       line += ": one rule (" + p.rules[0] + "), nothing can overlap";
+    } else if (p.by_priority) {
+      // The proof counts a rule's hold as part of its delivery: a lower rule can still deliver
+      // in a state just before a higher one does (docs/design.md#priorities-and-holds).
+      line += ": a rule's delivery holds every rule below it off for its hold (" + listed(p.rules) +
+              ", highest first); in one event state a higher rule may still deliver right after "
+              "a lower one";
     } else {
       line += ": rules " + listed(p.rules) + " are never selected together";
     }
@@ -97,10 +103,6 @@ std::string resource_lines(const ResourceResult& r) {
   line += "\n";
   for (const std::string& p : r.exclusive_by_events) line += "    exclusive by events: " + p + "\n";
   for (const std::string& p : r.exclusive_by_data) line += "    exclusive by data: " + p + "\n";
-  for (const std::string& src : r.per_message_sources)
-    line += "    per message: two " + src +
-            " messages in one event state are not covered (two decisions; an event one rule's "
-            "monitor sets and the other's `when` forbids would cover them)\n";
   return line;
 }
 
@@ -133,7 +135,7 @@ std::vector<std::string> strict_failures(const std::vector<InputReport>& inputs)
 std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sources, bool stats) {
   std::string out;
   size_t ports = 0, rules = 0, errors = 0, warnings = 0, properties = 0;
-  size_t by_outcome[4] = {0, 0, 0, 0};  // TemporalResult::Outcome
+  size_t by_outcome[temporal::kOutcomes] = {};  // TemporalResult::Outcome
   bool refuted = false, unknown = false;
   size_t bad = 0;
   double seconds = 0;

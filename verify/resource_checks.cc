@@ -8,6 +8,8 @@
 
 #include "core/join.h"
 #include "verify/data_pair.h"
+#include "verify/delivery_effects.h"
+#include "verify/joint_scope.h"
 
 namespace arbc::verify {
 
@@ -22,34 +24,15 @@ struct ResourceRule {
   int index = 0;  // in its port's scope
 };
 
-// Two ports' rules over one event state: the union of both scopes and domains (an event name is
-// one fact for the resource, docs/checks.md#resource). Rules: the first port's, then the second's.
-PortScope joint_scope(const PortScope& a, const PortScope& b) {
-  PortScope j;
-  j.port = a.port;
-  j.rules = a.rules;
-  j.rules.insert(j.rules.end(), b.rules.begin(), b.rules.end());
-  j.events = a.events;
-  j.events.insert(j.events.end(), b.events.begin(), b.events.end());
-  std::sort(j.events.begin(), j.events.end());
-  j.events.erase(std::unique(j.events.begin(), j.events.end()), j.events.end());
-  j.domain = a.domain;
-  for (const DomainConstraint& d : b.domain) {
-    bool known = false;
-    for (const DomainConstraint& e : j.domain) known |= e.text == d.text;
-    if (!known) j.domain.push_back(d);
-  }
-  return j;
-}
-
-// The event side of every pair of rules of two ports, decided by one solver over their joint
-// scope: a few queries for all pairs, where one solver per pair of rules cost milliseconds each.
-struct PortPair {
-  PortScope scope;
-  std::unique_ptr<PortSolver> solver;
-  int first_rules = 0;                        // rules of the first port (joint indices below)
-  std::set<std::pair<int, int>> overlapping;  // pairs selected together in some state
-  bool undecided = false;                     // the solver gave no answer: every pair may overlap
+// Two decisions in a row: `first` delivers a command that uses the resource, then `second`
+// decides in the state that delivery left (docs/checks.md#resource). The state is the same but
+// for the delivery events the first delivery feeds into the second's port.
+struct Order {
+  const ResourceRule* first = nullptr;
+  const ResourceRule* second = nullptr;
+  std::vector<DeliveryEffect> effects;  // on the second's container
+  Answer answer = Answer::Unsat;        // can both deliver in this order?
+  std::vector<std::string> state;       // Sat: the state before the first (fewest present)
 };
 
 class ResourceChecker {
@@ -82,6 +65,7 @@ class ResourceChecker {
                                                   : Verdict::Proved;
   }
 
+ private:
   // The rules into the resource's ports.
   std::vector<ResourceRule> resource_rules() {
     std::vector<ResourceRule> out;
@@ -117,33 +101,18 @@ class ResourceChecker {
            b.connection->name + "' (into " + res_.ports[b.port] + ")";
   }
 
-  // What an unsat core of one message says: "passes the accept on line 34 of 'take' and makes
-  // 'pull' emit a command that satisfies the resource's `when`".
-  std::string core_text(const ResourceRule& a, const ResourceRule& b, const DataCore& core) const {
-    std::vector<std::string> parts;
-    for (size_t s = 0; s < 2; ++s) {
-      const std::string& name = (s == 0 ? a : b).connection->name;
-      if (!core.accept_lines[s].empty())
-        parts.push_back("passes " + core_lines_text(core.accept_lines[s], name));
-      if (core.predicate_used[s] && res_.uses)
-        parts.push_back("makes '" + name + "' emit a command that satisfies the resource's `when`");
-    }
-    if (parts.empty()) return "makes both deliver a command that uses it";
-    return join(parts, ", ", " and ");
-  }
+  const model::BodyExpr* uses() const { return res_.uses ? &*res_.uses : nullptr; }
 
-  void by_events(const ResourceRule& a, const ResourceRule& b) {
-    out_.exclusive_by_events.push_back(
-        pair_name(a, b) + ": `" + a.rule->effective_guard.to_string() + "` and `" +
-        b.rule->effective_guard.to_string() + "` never hold together");
-  }
-
-  PortPair& port_pair(const ResourceRule& a, const ResourceRule& b);
+  JointScope& joint(const ResourceRule& a, const ResourceRule& b);
+  void decide_order(const ResourceRule& a, const ResourceRule& b, Order& o);
+  std::string effects_text(const Order& o) const;
+  bool opaque_pair(const ResourceRule& a, const ResourceRule& b);
   void check_pair(const ResourceRule& a, const ResourceRule& b);
-  void refuted(const ResourceRule& a, const ResourceRule& b, bool same, const DataWitness& w,
-               const std::vector<std::string>& state);
-  bool replay(const ResourceRule& a, const ResourceRule& b, bool same, const DataWitness& w,
-              MessageExample& ex, std::string* why);
+  void by_events(const ResourceRule& a, const ResourceRule& b, const Order& ab, const Order& ba);
+  bool never_uses(const ResourceRule& a, const ResourceRule& b, DataWitness w[2]);
+  void refuted(const Order& o, const DataWitness w[2]);
+  bool replay(const Order& o, const std::vector<Value>& messages, MessageExample& ex,
+              std::string* why);
 
   const model::App& app_;
   const std::vector<PortScope>& scopes_;
@@ -153,40 +122,90 @@ class ResourceChecker {
   DataQuery& data_;
   const model::Resource& res_;
   ResourceResult& out_;
-  std::map<std::pair<size_t, size_t>, PortPair> port_pairs_;  // by the two ports' indices
+  std::map<std::pair<size_t, size_t>, JointScope> joints_;  // by the two ports' indices
 };
 
-// The pair of `a`'s and `b`'s ports (a.port < b.port), its overlapping pairs found on first use.
-PortPair& ResourceChecker::port_pair(const ResourceRule& a, const ResourceRule& b) {
-  auto [it, fresh] = port_pairs_.try_emplace({a.port, b.port});
-  PortPair& pp = it->second;
-  if (!fresh) return pp;
-  pp.scope = joint_scope(*a.scope, *b.scope);
-  pp.first_rules = static_cast<int>(a.scope->rules.size());
-  pp.solver = std::make_unique<PortSolver>(pp.scope, ctx_, deadline_);
-  const int n = pp.first_rules;
-  std::vector<std::pair<int, int>> pairs;
-  // Pairs within one port are the port's own check, not the resource's.
-  Answer ans = pp.solver->overlapping_pairs(
-      [n](int i, int j) { return (i < n) == (j < n) ? Known::No : Known::Unknown; }, pairs);
-  pp.overlapping.insert(pairs.begin(), pairs.end());
-  if (ans == Answer::Unknown) {
-    pp.undecided = true;
-    unknown("which rules of " + res_.ports[a.port] + " and " + res_.ports[b.port] +
-                " can be selected together",
-            pp.solver->unknown_reason());
-  }
-  return pp;
+// The joint scope of a's and b's ports (a.port < b.port), made on first use.
+JointScope& ResourceChecker::joint(const ResourceRule& a, const ResourceRule& b) {
+  auto [it, fresh] = joints_.try_emplace({a.port, b.port});
+  if (fresh) it->second = make_joint_scope(app_, *a.scope, *b.scope);
+  return it->second;
 }
 
-void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
-  ++out_.pairs;
-  PortPair& pp = port_pair(a, b);
-  const int ia = a.index, ib = pp.first_rules + b.index;
-  if (!pp.undecided && !pp.overlapping.count({ia, ib})) {
-    by_events(a, b);
+// Whether o.first can deliver and then o.second be selected: one query over the joint scope, in
+// which the second's guard reads what the first's delivery events leave (present, or either
+// way: a fresh variable).
+void ResourceChecker::decide_order(const ResourceRule& a, const ResourceRule& b, Order& o) {
+  JointScope& j = joint(a, b);
+  bool first_is_a = o.first == &a;
+  const auto& second_names = first_is_a ? j.names_b : j.names_a;
+  o.effects = delivery_effects(app_, data_, *o.first->connection, res_.ports[o.second->port],
+                               o.second->scope->events, uses());
+  PortScope s;
+  s.port = j.scope.port;
+  s.events = j.scope.events;
+  s.domain = j.scope.domain;
+  int fi = first_is_a ? a.index : j.first_rules + b.index;
+  int si = first_is_a ? j.first_rules + b.index : a.index;
+  s.rules = {j.scope.rules[static_cast<size_t>(fi)], j.scope.rules[static_cast<size_t>(si)]};
+  std::map<std::string, Constraint> after;
+  for (const DeliveryEffect& e : o.effects) {
+    const std::string& v = second_names.at(e.event);
+    if (e.must_set) {
+      after[v] = Constraint::constant(true);
+    } else {
+      after[v] = Constraint::event_ref(v + "'");  // either way after the delivery
+      s.events.push_back(v + "'");
+    }
+  }
+  ScopedRule& second = s.rules[1];
+  second.effective_guard = map_events(second.effective_guard, [&](const std::string& e) {
+    auto it = after.find(e);
+    return it == after.end() ? Constraint::event_ref(e) : it->second;
+  });
+  PortSolver solver(s, ctx_, deadline_);
+  std::optional<std::vector<std::string>> state = solver.minimal_state({0, 1}, {});
+  o.answer = state                                     ? Answer::Sat
+             : solver.last_answer() == Answer::Unknown ? Answer::Unknown
+                                                       : Answer::Unsat;
+  if (o.answer == Answer::Unknown) {
+    unknown("an event state that selects " + pair_name(a, b), solver.unknown_reason());
+  }
+  if (state) {
+    for (const std::string& e : *state)
+      if (e.empty() || e.back() != '\'') o.state.push_back(joint_event_text(e));
+  }
+}
+
+std::string ResourceChecker::effects_text(const Order& o) const {
+  std::vector<std::string> set;
+  for (const DeliveryEffect& e : o.effects)
+    if (e.must_set) set.push_back(e.event);
+  std::string first = "after '" + o.first->connection->name + "' delivers a command that uses it";
+  if (set.empty())
+    return first + ", '" + o.second->connection->name + "' is not selected: `" +
+           o.second->rule->effective_guard.to_string() + "` and `" +
+           o.first->rule->effective_guard.to_string() + "` never hold together";
+  return first + ", " + join(set) + (set.size() == 1 ? " is" : " are") + " present in " +
+         res_.ports[o.second->port] + " (" +
+         (set.size() == 1 ? "a delivery event" : "delivery events") + "), which keeps '" +
+         o.second->connection->name + "' out";
+}
+
+void ResourceChecker::by_events(const ResourceRule& a, const ResourceRule& b, const Order& ab,
+                                const Order& ba) {
+  if (ab.effects.empty() && ba.effects.empty()) {
+    out_.exclusive_by_events.push_back(
+        pair_name(a, b) + ": `" + a.rule->effective_guard.to_string() + "` and `" +
+        b.rule->effective_guard.to_string() + "` never hold together");
     return;
   }
+  out_.exclusive_by_events.push_back(pair_name(a, b) + ": " + effects_text(ab) + "; " +
+                                     effects_text(ba));
+}
+
+// A rule opaque for data makes the pair an error: it might deliver any command.
+bool ResourceChecker::opaque_pair(const ResourceRule& a, const ResourceRule& b) {
   for (const ResourceRule* r : {&a, &b}) {
     std::string why = data_.opaque_reason(*r->connection);
     if (why.empty()) continue;
@@ -198,50 +217,62 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
                 r->connection->name + "' is opaque for data (" + why + ")";
     f.notes.push_back({"without its body arbc must assume it can deliver any command", {}});
     out_.findings.push_back(std::move(f));
-    return;
+    return true;
   }
-  bool same = a.connection->source == b.connection->source;
-  const model::BodyExpr* uses = res_.uses ? &*res_.uses : nullptr;
-  DataWitness w;
-  DataCore core;
-  Answer ans = data_.ask({{a.connection, uses}, {b.connection, uses}}, &w, &core);
-  if (ans == Answer::Unknown)
-    return unknown("whether " + pair_name(a, b) + " can both use it", data_.unknown_reason());
-  if (ans == Answer::Sat) {
-    // The state is needed only now: a minimal one costs a query per event it drops.
-    std::optional<std::vector<std::string>> state = pp.solver->minimal_state({ia, ib}, {});
-    if (state) return refuted(a, b, same, w, *state);
-    if (pp.solver->last_answer() == Answer::Unknown)
-      return unknown("an event state that selects " + pair_name(a, b), pp.solver->unknown_reason());
-    // Only when the overlapping pairs were undecided: the pair is exclusive by events after all.
-    by_events(a, b);
-    return;
-  }
-  std::string why = same ? "no " + a.connection->source + " message " + core_text(a, b, core)
-                         : "one of them never delivers a command that uses it";
-  out_.exclusive_by_data.push_back(pair_name(a, b) + (same ? " (one message)" : " (two messages)") +
-                                   ": " + why);
-  // One message of a source is one decision. Two of its messages before the event state changes
-  // (a module reporting what the first command did) could give each rule one: not proved here.
-  std::vector<std::string>& sources = out_.per_message_sources;
-  if (same && std::find(sources.begin(), sources.end(), a.connection->source) == sources.end())
-    sources.push_back(a.connection->source);
+  return false;
 }
 
-bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool same,
-                             const DataWitness& w, MessageExample& ex, std::string* why) {
-  if (!replay_accepts(options_.runner, {a.connection, b.connection}, w.messages, {0, same ? 0 : 1},
-                      ex, why))
+// Whether one of the two never delivers a command that uses the resource (said as exclusive by
+// data); else each side's witness, a message of its own (two messages: even from one source,
+// two decisions may come one after the other in one event state).
+bool ResourceChecker::never_uses(const ResourceRule& a, const ResourceRule& b, DataWitness w[2]) {
+  const ResourceRule* sides[2] = {&a, &b};
+  for (int s = 0; s < 2; ++s) {
+    DataCore core;
+    Answer ans = data_.ask({{sides[s]->connection, uses()}}, &w[s], &core);
+    if (ans == Answer::Unknown) {
+      unknown("whether '" + sides[s]->connection->name + "' can use it", data_.unknown_reason());
+      return true;
+    }
+    if (ans == Answer::Sat) continue;
+    std::string why = "'" + sides[s]->connection->name + "' never delivers a command that uses it";
+    if (!core.accept_lines[0].empty())
+      why += " (" + core_lines_text(core.accept_lines[0], sides[s]->connection->name) + ")";
+    out_.exclusive_by_data.push_back(pair_name(a, b) + ": " + why);
+    return true;
+  }
+  return false;
+}
+
+void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
+  ++out_.pairs;
+  Order ab{&a, &b, {}, Answer::Unsat, {}}, ba{&b, &a, {}, Answer::Unsat, {}};
+  decide_order(a, b, ab);
+  decide_order(b, a, ba);
+  if (ab.answer == Answer::Unknown || ba.answer == Answer::Unknown) return;
+  if (ab.answer == Answer::Unsat && ba.answer == Answer::Unsat) return by_events(a, b, ab, ba);
+  if (opaque_pair(a, b)) return;
+  DataWitness w[2];
+  if (never_uses(a, b, w)) return;
+  if (ab.answer == Answer::Sat) return refuted(ab, w);
+  DataWitness swapped[2] = {w[1], w[0]};
+  refuted(ba, swapped);
+}
+
+bool ResourceChecker::replay(const Order& o, const std::vector<Value>& messages, MessageExample& ex,
+                             std::string* why) {
+  const model::Connection* rules[2] = {o.first->connection, o.second->connection};
+  if (!replay_accepts(options_.runner, {rules[0], rules[1]}, messages, {0, 1}, ex, why))
     return false;
   if (!res_.uses) return true;
-  for (const ResourceRule* r : {&a, &b}) {
-    const model::Port* p = app_.find_port(r->connection->destination);
+  for (int s = 0; s < 2; ++s) {
+    const model::Port* p = app_.find_port(rules[s]->destination);
     MonitorRun run;
     std::string err;
-    options_.runner->run(*r->connection, w.messages[same || r == &a ? 0 : 1], &run, &err);
-    std::optional<bool> uses = data_.holds(*res_.uses, run.delivered, *p->type);
-    if (!uses || !*uses) {
-      *why = "Z3 says '" + r->connection->name + "' delivers a command that uses '" + res_.name +
+    options_.runner->run(*rules[s], messages[static_cast<size_t>(s)], &run, &err);
+    std::optional<bool> used = data_.holds(*res_.uses, run.delivered, *p->type);
+    if (!used || !*used) {
+      *why = "Z3 says '" + rules[s]->name + "' delivers a command that uses '" + res_.name +
              "', but its Lua monitor delivers " + spec_value_text(run.delivered) +
              ", which does not";
       return false;
@@ -250,38 +281,39 @@ bool ResourceChecker::replay(const ResourceRule& a, const ResourceRule& b, bool 
   return true;
 }
 
-void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool same,
-                              const DataWitness& w, const std::vector<std::string>& state) {
+// `w[0]` is the first rule's witness, `w[1]` the second's.
+void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
+  const ResourceRule& a = *o.first;
+  const ResourceRule& b = *o.second;
   Finding f = base_finding(kCheckResource);
   f.rules = {a.connection->name, b.connection->name};
   f.rule_ports = {a.connection->destination, b.connection->destination};
   f.rule_locs = {a.connection->loc, b.connection->loc};
-  f.message =
-      pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name + "' (" +
-      (same ? "from one " + a.connection->source + " message" : "from two independent messages") +
-      ")";
+  f.message = pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name +
+              "' (two messages, one decision after the other in one event state)";
   f.notes.push_back({"in the event state (fewest events present): present: " +
-                         (state.empty() ? std::string("none") : join(state)),
+                         (o.state.empty() ? std::string("none") : join(o.state)),
                      {}});
-  for (size_t m = 0; m < w.messages.size(); ++m) {
+  std::vector<Value> messages;
+  for (int s = 0; s < 2; ++s) {
     MessageExample ex;
-    ex.source = w.message_sources[m];
-    ex.value = spec_value_text(w.messages[m]);
+    ex.source = w[s].message_sources[0];
+    ex.value = spec_value_text(w[s].messages[0]);
+    messages.push_back(w[s].messages[0]);
     f.messages.push_back(ex);
     f.notes.push_back(
-        {std::string(same ? "the message: " : "message " + std::to_string(m + 1) + ": ") +
-             ex.source + " = " + ex.value,
-         {}});
+        {"message " + std::to_string(s + 1) + ": " + ex.source + " = " + ex.value, {}});
   }
-  for (size_t s = 0; s < 2; ++s) {
+  for (int s = 0; s < 2; ++s) {
     const ResourceRule& r = s == 0 ? a : b;
-    f.notes.push_back({"'" + r.connection->name + "' is selected (`" +
+    std::string when = s == 0 ? "first" : "then, in the state the first delivery left,";
+    f.notes.push_back({when + " '" + r.connection->name + "' is selected (`" +
                            r.rule->effective_guard.to_string() + "`) and delivers " +
-                           spec_value_text(w.emitted[s]) + " to " + res_.ports[r.port],
+                           spec_value_text(w[s].emitted[0]) + " to " + res_.ports[r.port],
                        r.connection->loc});
   }
-  std::vector<std::string> assumed = w.assumed_state[0];
-  assumed.insert(assumed.end(), w.assumed_state[1].begin(), w.assumed_state[1].end());
+  std::vector<std::string> assumed = w[0].assumed_state[0];
+  assumed.insert(assumed.end(), w[1].assumed_state[0].begin(), w[1].assumed_state[0].end());
   if (!assumed.empty()) {
     f.notes.push_back({"with monitor state " + join(assumed) +
                            " (abstracted: any value earlier messages could leave), so not "
@@ -290,7 +322,7 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
   } else if (options_.runner) {
     MessageExample ex;
     std::string why;
-    if (!replay(a, b, same, w, ex, &why)) {
+    if (!replay(o, messages, ex, &why)) {
       out_.findings.push_back(internal_data_error("", res_.loc, why));
       return;
     }
@@ -300,9 +332,11 @@ void ResourceChecker::refuted(const ResourceRule& a, const ResourceRule& b, bool
     f.notes.push_back({"not replayed (no monitor runner)", {}});
   }
   f.notes.push_back(
-      {"make the rules' bodies exclusive on the message (an `accept` or an `if` "
-       "on the same field), or their `when`s exclusive through an event both "
-       "ports read",
+      {"keep '" + b.connection->name + "' out after '" + a.connection->name +
+           "' delivers: a delivery event of " + res_.ports[a.port] + " (`event e = " +
+           res_.ports[a.port] + " : PREDICATE for D;`) with `not e` in '" + b.connection->name +
+           "''s `when`, and the same the other way round (docs/language.md#delivery-events); "
+           "or make one of them never deliver a command that uses it",
        {}});
   out_.findings.push_back(std::move(f));
 }

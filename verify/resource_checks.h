@@ -1,7 +1,9 @@
 // `resource` checks (docs/checks.md#resource): for every pair of rules into two different
-// ports of a resource, no message (same source) or pair of messages (different sources) makes
-// both deliver a command that uses the resource, in any one event state (an event name is one
-// fact over the two ports' joint scope: docs/design.md#the-proof).
+// ports of a resource, no two messages (of one source or two) make both deliver a command that
+// uses the resource, one decision after the other in one event state: the second decides in the
+// state the first's delivery left, which differs only by the delivery events that delivery
+// feeds into the second's port (verify/delivery_effects.h). Each port's container holds its own
+// facts (verify/joint_scope.h, core/event_facts.h).
 #pragma once
 
 #include <z3++.h>

@@ -34,6 +34,8 @@ bool check_temporal(const model::App& app, const VerifyOptions& options, z3::con
     temporal::confirm_violation(options.test_replayer, *t, report.app_findings);
     if (auto f = temporal::short_bound_finding(*t, options.strict))
       report.app_findings.push_back(std::move(*f));
+    if (auto f = temporal::vacuous_finding(app, *t, options.strict))
+      report.app_findings.push_back(std::move(*f));
     report.solver_queries += t->solver_queries;
     report.temporal.push_back(std::move(*t));
   }

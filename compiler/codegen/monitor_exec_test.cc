@@ -104,7 +104,7 @@ TEST_F(TableCleanTest, StatusFeedSetsListedFlagsAndUnsetsTheOthers) {
 TEST_F(TableCleanTest, TakePicksTheClosestReachableObjectOnlyWhenSelected) {
   ASSERT_EQ(app_.error(), "");
   auto& take = app_.monitor("PickAndPlace.cmd", "take");
-  EXPECT_EQ(take.constraint(), "not e_taken and e_arm_idle and e_pull_idle");
+  EXPECT_EQ(take.constraint(), "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling");
   // Nothing in the container yet: e_arm_idle is absent, so take is not selected.
   EXPECT_EQ(take.deliver(kObjectsFarAndNear).reason, "not-selected");
   app_.monitor("PickAndPlace.cmd", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");

@@ -27,6 +27,9 @@ struct OutputFile {
 
 struct CodegenResult {
   bool ok = false;
+  // Not ok because of the input (exit 2: what the target cannot carry, names that clash), not
+  // because of a bug in arbc (exit 3: a generated monitor that is not valid Lua).
+  bool bad_input = false;
   std::vector<OutputFile> files;  // in a fixed order; the same input gives the same bytes
   std::vector<Diagnostic> diagnostics;
 };

@@ -31,6 +31,27 @@ bool unique_port_names(const model::App& app, const YarpNames& names, Diagnostic
   return true;
 }
 
+// A delivery event (docs/language.md#delivery-events) is set in the task of a delivery into
+// another port. On YARP each arbitrator runs in the process of its port's module and keeps its
+// events there, so no monitor can set an event where another module's arbitrator reads it.
+bool no_delivery_events(const model::App& app, std::vector<Diagnostic>& out) {
+  bool ok = true;
+  for (const model::Event& e : app.events) {
+    const model::Port* p = app.find_port(e.source);
+    if (!p || p->direction != model::Direction::In) continue;
+    Diagnostic d;
+    d.loc = e.loc;
+    d.id = "codegen";
+    d.message = "delivery event '" + e.name + "' (what " + e.source +
+                " delivers) cannot be built for YARP: each YARP arbitrator keeps its events in "
+                "its own module's process, where no other port's delivery can set them; build "
+                "for the embedded runtime or DDS, or leave the event out of this target's spec";
+    out.push_back(std::move(d));
+    ok = false;
+  }
+  return ok;
+}
+
 }  // namespace
 
 bool YarpTarget::configure(const TargetOptions& options, std::string*) {
@@ -43,7 +64,14 @@ CodegenResult YarpTarget::generate(const lower::LoweredApp& lowered) const {
   const model::App& app = lowered.app;
   YarpNames names(app, options_.port_names);
   Diagnostic clash;
-  if (!unique_port_names(app, names, &clash)) result.diagnostics.push_back(clash);
+  if (!unique_port_names(app, names, &clash)) {
+    result.diagnostics.push_back(clash);
+    result.bad_input = true;
+  }
+  if (!no_delivery_events(app, result.diagnostics)) {
+    result.bad_input = true;
+    return result;
+  }
   SpecLines lines(lowered.spec_text);
   frontend::LuaSyntaxChecker lua;
   std::vector<OutputFile> monitors;

@@ -119,8 +119,10 @@ std::string arbitrator_label(const PortSummary& p) {
         << "</B></TD><TD ALIGN=\"LEFT\" BALIGN=\"LEFT\">" << join(lines, "<BR/>") << "</TD></TR>";
   }
   for (size_t k = 0; k < p.feeds.size(); ++k) {
-    std::vector<std::string> lines =
-        wrap("events from " + p.feeds[k].connection->source + ": " + join(p.feeds[k].events, ", "));
+    std::vector<std::string> lines = wrap(
+        (p.feeds[k].delivered ? "events from what " + p.feeds[k].connection->source + " delivers: "
+                              : "events from " + p.feeds[k].connection->source + ": ") +
+        join(p.feeds[k].events, ", "));
     for (std::string& l : lines) l = html(l);
     out << "<TR><TD PORT=\"f" << k << "\" COLSPAN=\"2\" ALIGN=\"LEFT\" BALIGN=\"LEFT\">"
         << "<FONT COLOR=\"#555555\">" << join(lines, "<BR/>") << "</FONT></TD></TR>";

@@ -106,6 +106,13 @@ void decision_section(const model::App& app, std::ostream& out) {
     out << "\n\n";
     decision_table_markdown(t, out);
     out << "\n";
+    if (p.by_priority) {
+      // What the proof of a `by priority` port says (docs/design.md#priorities-and-holds): the
+      // table's rows are single decisions, and a higher rule's hold starts when it delivers.
+      out << "Under `by priority` a rule's activity event is set as it delivers, for its hold:\n"
+             "after each delivery no rule below it is selected until the hold ends. Before\n"
+             "that, in one state, a lower rule may deliver and a higher one right after it.\n\n";
+    }
   }
 }
 

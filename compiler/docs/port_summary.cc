@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "core/event_facts.h"
+
 namespace arbc::docs {
 
 namespace {
@@ -53,7 +55,8 @@ PortSummary summarize_port(const model::App& app, const model::ArbitratedPort& p
     if (c->kind != model::ConnectionKind::Feed) continue;
     std::set<std::string> events(c->sets.begin(), c->sets.end());
     events.insert(c->unsets.begin(), c->unsets.end());
-    out.feeds.push_back({c, std::vector<std::string>(events.begin(), events.end())});
+    out.feeds.push_back({c, std::vector<std::string>(events.begin(), events.end()),
+                         model::is_delivery_feed(app, *c)});
   }
   return out;
 }

@@ -26,6 +26,7 @@ struct RuleSummary {
 struct FeedSummary {
   const model::Connection* connection = nullptr;
   std::vector<std::string> events;  // what it sets or unsets in the port's container, sorted
+  bool delivered = false;           // delivery events: it reads what its source port delivers
 };
 
 struct PortSummary {

@@ -89,6 +89,7 @@ class Sema {
   void declare_status_events(ast::StatusEventDecl& e);
   // After all events exist, so that a predicate naming an event gets the right message.
   void check_derived_predicates();
+  bool resolve_derived_source(ast::DerivedEventDecl& e);
   // `exclusive` groups and invariants: domain knowledge for the proof.
   void check_domain();
   // An arbitrated port (once per port) and each of its rules: name, source, when, hold, body.

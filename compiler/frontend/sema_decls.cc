@@ -440,10 +440,27 @@ void Sema::declare_status_events(StatusEventDecl& e) {
   }
 }
 
+// A derived event reads an `out` port's messages, or what an arbitrated `in` port delivers (a
+// delivery event, docs/language.md#delivery-events).
+bool Sema::resolve_derived_source(DerivedEventDecl& e) {
+  if (!resolve_port(e.source, "", "a derived event")) return false;
+  if (e.source.port_decl->direction == model::Direction::Out) return true;
+  std::string q = e.source.qualified();
+  for (const ArbitrateDecl& a : spec_.arbitrations)
+    if (a.port.qualified() == q) return true;
+  error(e.source.loc,
+        q +
+            " is an `in` port that is not arbitrated; a derived event reads an `out` port's "
+            "messages, or what an arbitrated `in` port delivers (`arbitrate " +
+            q + " { ... }`)",
+        "port-direction");
+  return false;
+}
+
 void Sema::check_derived_predicates() {
   for (DerivedEventDecl& e : spec_.derived_events) {
     Scope scope;
-    bind_message(scope, e.source, resolve_port(e.source, "source", "a derived event"));
+    bind_message(scope, e.source, resolve_derived_source(e));
     check_condition(*e.predicate, scope, "the predicate of derived event '" + e.name + "'",
                     "predicate-type");
   }

@@ -132,8 +132,12 @@ class Lowerer {
   }
 
   void lower_events() {
-    for (const ast::EventSymbol& e : spec_.event_symbols)
-      out_.app.events.push_back({e.name, e.lifetime, e.source, e.loc});
+    for (const ast::EventSymbol& e : spec_.event_symbols) {
+      model::Event event{e.name, e.lifetime, e.source, e.loc, std::nullopt};
+      for (const ast::DerivedEventDecl& d : spec_.derived_events)
+        if (d.name == e.name && d.predicate) event.predicate = lower_expr(*d.predicate);
+      out_.app.events.push_back(std::move(event));
+    }
   }
 
   size_t add_connection(model::Connection c, MonitorPlan plan) {

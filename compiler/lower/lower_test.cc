@@ -36,12 +36,12 @@ std::string spec(const std::string& body) { return std::string("app t;\n") + kMo
 
 // ---- the paper's application ---------------------------------------------------------------
 
-TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakFeed) {
+TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakAndDeliveryFeeds) {
   CompiledSpec c = compile_ok(read_file(arbc::testing::source_dir() + "/specs/table_clean.spec"));
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
   EXPECT_EQ(app.name, "table_clean");
-  ASSERT_EQ(app.connections.size(), 14u);
+  ASSERT_EQ(app.connections.size(), 16u);
   int rules = 0, feeds = 0;
   for (const model::Connection& conn : app.connections) {
     if (conn.kind == model::ConnectionKind::Rule) ++rules;
@@ -54,12 +54,25 @@ TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakFeed) {
     EXPECT_EQ(conn.monitor, "monitors/" + conn.destination + "__" + conn.name + ".lua");
   }
   EXPECT_EQ(rules, 6);
-  EXPECT_EQ(feeds, 8);  // C3, C5, C6, C7, C11, C12, C13 and FaceDetector into Speak
+  // C3, C5, C6, C7, C11, C12, C13, FaceDetector into Speak, and the two delivery events' feeds
+  EXPECT_EQ(feeds, 10);
   const model::Connection* take = find_connection(app, "PickAndPlace.cmd", "take");
   ASSERT_NE(take, nullptr);
-  EXPECT_EQ(take->constraint.to_string(), "not e_taken and e_arm_idle and e_pull_idle");
+  EXPECT_EQ(take->constraint.to_string(),
+            "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling");
   EXPECT_FALSE(take->generated);
-  EXPECT_EQ(take->loc.line, 31);
+  EXPECT_EQ(take->loc.line, 37);
+  // A delivery event (docs/language.md#delivery-events): a feed from what PickAndPlace.cmd
+  // delivers into the port that reads it, and its predicate in the model for the resource check.
+  const model::Connection* picking =
+      find_connection(app, "PullObject.cmd", "feed_PickAndPlace_cmd");
+  ASSERT_NE(picking, nullptr);
+  EXPECT_EQ(picking->source, "PickAndPlace.cmd");
+  EXPECT_EQ(picking->sets, std::vector<std::string>{"e_arm_picking"});
+  const model::Event* e = app.find_event("e_arm_picking");
+  ASSERT_NE(e, nullptr);
+  ASSERT_TRUE(e->predicate);
+  EXPECT_EQ(e->source, "PickAndPlace.cmd");
   EXPECT_EQ(app.arbitrated_ports.size(), 4u);
   EXPECT_EQ(app.arbitrated_ports[0].asserts.size(), 3u);
 }

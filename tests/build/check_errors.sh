@@ -16,6 +16,9 @@ expect 2 "SPEC is required" -- "$arbc" build
 expect 2 "no such file" -- "$arbc" build "$scratch/missing.spec" -o "$scratch/out"
 printf 'app broken;\nmodule A { out x: int; }\narbitrate A.x { r: from A.y; }\n' > "$scratch/broken.spec"
 expect 2 "broken.spec:3:" -- "$arbc" build "$scratch/broken.spec" -o "$scratch/out"
+# YARP cannot carry a delivery event (docs/language.md#delivery-events): bad input, exit 2.
+expect 2 "delivery event 'e_arm_picking' (what PickAndPlace.cmd delivers) cannot be built for YARP" -- "$arbc" build specs/table_clean.spec --target yarp -o "$scratch/out"
+[ ! -e "$scratch/out" ] || fail "a refused --target yarp build wrote $scratch/out"
 expect 2 "unknown target 'ros'" -- "$arbc" build specs/face_filter.spec --target ros -o "$scratch/out"
 expect 2 "unknown target 'yrp' (did you mean 'yarp'?); the targets are" -- "$arbc" build specs/face_filter.spec --target yrp -o "$scratch/out"
 # The deployment file of --target yarp (docs/yarp.md#names-on-yarp).

@@ -452,9 +452,10 @@ class Hover(Session):
     def test_a_rule_shows_its_effective_guard_and_decision_table(self):
         text = self.hover("take: from")
         self.assertIn("**rule** `take` into `PickAndPlace.cmd`", text)
-        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle`", text)
-        self.assertIn("| e_arm_idle | e_pull_idle | e_taken | selects |", text)
-        self.assertIn("| 1 | 1 | 0 | take |", text)
+        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling`",
+                      text)
+        self.assertIn("| e_arm_idle | e_arm_pulling | e_pull_idle | e_taken | selects |", text)
+        self.assertIn("| 1 | 0 | 1 | 0 | take |", text)
 
     def test_a_by_priority_rule_shows_its_activity_event(self):
         self.assertIn("act_track", self.hover("track:  from"))
@@ -517,7 +518,7 @@ class Editing(Session):
             self.assertIn(expected, labels)
 
     def test_a_did_you_mean_quick_fix(self):
-        start = position_of(self.text, "e_arm_idle and e_pull_idle {")
+        start = position_of(self.text, "e_arm_idle and e_pull_idle and not e_arm_pulling {")
         end = dict(start, character=start["character"] + len("e_arm_idle"))
         self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_arm_idel"}])
         diags = self.c.wait_diagnostics(self.uri, version=2)
@@ -527,7 +528,7 @@ class Editing(Session):
         self.assertEqual(len(actions), 1)
         self.assertEqual(actions[0]["title"], "Change to 'e_arm_idle'")
         edits = actions[0]["edit"]["changes"][self.uri]
-        broken = self.text.replace("e_arm_idle and e_pull_idle {", "e_arm_idel and e_pull_idle {", 1)
+        broken = self.text.replace("e_arm_idle and e_pull_idle and not", "e_arm_idel and e_pull_idle and not", 1)
         self.assertEqual(apply_edits(broken, edits), self.text)
 
     def test_the_quick_fix_of_a_misspelt_module_or_port_keeps_the_rest(self):
@@ -676,8 +677,8 @@ class Verification(Session):
     verify = True
 
     def test_a_counterexample_lands_on_both_rules(self):
-        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle {",
-                                 "when e_arm_idle and e_pull_idle {", 1)
+        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling {",
+                                 "when e_arm_idle and e_pull_idle and not e_arm_pulling {", 1)
         self.c.open(self.uri, text)
         diags = self.c.wait_diagnostics(
             self.uri, accept=lambda ds: any(d.get("code") == "exclusive" for d in ds), timeout=120)
@@ -691,10 +692,10 @@ class Verification(Session):
             self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
 
     def test_a_resource_finding_lands_on_each_rule_in_its_own_port(self):
-        # Both ports have a rule 'move'. The resource is refuted for Left's move with Right's
-        # grab, and for Left's rest with Right's move: each finding is at the resource and on
-        # its two rules, found by port and name (by name alone, each finding naming a 'move'
-        # would land on both).
+        # Both ports have a rule 'move'. e_a is fed into each port by a feed of its own, so it is
+        # two facts (docs/design.md#feeds) and the resource is refuted for every pair of a Left
+        # rule and a Right rule: each finding is at the resource and on its two rules, found by
+        # port and name (by name alone, each finding naming a 'move' would land on both).
         text = ("app two_moves;\n"
                 "module Cam { out target: vec3; out ball: vec3; out status: list<string>; }\n"
                 "module Left { in arm: vec3; }\n"
@@ -720,7 +721,7 @@ class Verification(Session):
                  line("grab: from"): ("grab", "Right.arm"),
                  line("move: from", 1): ("move", "Right.arm")}
         self.assertEqual(sorted(d["range"]["start"]["line"] for d in diags),
-                         sorted([resource, resource] + list(rules)))
+                         sorted([resource] * 4 + list(rules) * 2))
         for d in diags:
             at = d["range"]["start"]["line"]
             if at == resource:

@@ -57,6 +57,12 @@ golden spec_refuted.txt repo 1 tests/verify/table_clean_take_mutant.spec
 golden spec_refuted.sarif repo 1 --format sarif tests/verify/table_clean_take_mutant.spec
 # Each proof check the fixtures above do not show: unfed, ownership, complete.
 golden findings.txt repo 1 tests/verify/findings.spec
+# Each port's container holds its own events (docs/design.md#feeds): a resource kept apart by
+# an event of one name that only one port's container holds is refuted; a property reading an
+# event that only another port's container holds is vacuous (a warning), not proved.
+golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
+golden vacuous_other_port.txt repo 0 tests/verify/vacuous_other_port.spec
+golden vacuous_other_port_strict.txt repo 1 --strict tests/verify/vacuous_other_port.spec
 # No time to decide is "unknown", exit 1, never "proved".
 golden unknown_timeout.txt repo 1 --timeout 1e-9 tests/verify/overlap.spec
 golden unknown_timeout.json repo 1 --timeout 1e-9 --format json tests/verify/overlap.spec

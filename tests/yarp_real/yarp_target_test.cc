@@ -198,7 +198,7 @@ class YarpTargetTest : public YarpTest {
 };
 
 TEST_F(YarpTargetTest, TableCleanMixedRunDeliversTheSameOnYarp) {
-  run_case({"specs/table_clean.spec", TABLE_CLEAN_PLUGIN, "mixed", "60s", 40.0});
+  run_case({"specs/table_clean_yarp.spec", TABLE_CLEAN_PLUGIN, "mixed", "60s", 40.0});
 }
 
 TEST_F(YarpTargetTest, SearchAndTrackDeliversTheSameOnYarp) {

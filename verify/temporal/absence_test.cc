@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "verify/temporal/short_bound.h"
 #include "verify/test_models.h"
 
 namespace arbc::verify::temporal {
@@ -63,10 +64,17 @@ TEST(Absence, AGuardThatNeedsTheEventIsRefutedInTwoMessages) {
             Outcome::Proved);
 }
 
-TEST(Absence, AnEventNothingSetsIntoThePortIsNeverPresent) {
+TEST(Absence, AnEventNothingSetsIntoThePortIsVacuousNotProved) {
+  // e_face_detected is fed into Speak.text only: PickAndPlace.cmd's container never holds it,
+  // so the property is true of every run and says nothing (docs/checks.md#vacuous).
   TemporalResult r =
       check(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_face_detected");
-  EXPECT_EQ(r.outcome, Outcome::Proved);
+  EXPECT_EQ(r.outcome, Outcome::Vacuous);
+  std::optional<Finding> f = vacuous_finding(testing::table_clean_model(), r, false);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->severity, Severity::Warning);
+  EXPECT_NE(f->notes[0].message.find("Speak.text"), std::string::npos) << f->notes[0].message;
+  EXPECT_EQ(vacuous_finding(testing::table_clean_model(), r, true)->severity, Severity::Error);
   EXPECT_NE(r.proof.find("no connection into PickAndPlace.cmd sets e_face_detected"),
             std::string::npos)
       << r.proof;

@@ -106,10 +106,11 @@ std::string wrap(const std::string& text, const std::string& by, size_t width) {
 
 }  // namespace
 
-std::string outcome_counts(const size_t counts[4]) {
+std::string outcome_counts(const size_t counts[kOutcomes]) {
   using O = TemporalResult::Outcome;
   const std::pair<O, const char*> order[] = {{O::Violated, " violated"},
                                              {O::Unknown, " unknown"},
+                                             {O::Vacuous, " vacuous"},
                                              {O::HoldsToBound, " hold up to the bound"},
                                              {O::Proved, " proved"}};
   std::string out;
@@ -160,6 +161,9 @@ std::string render(const TemporalResult& r, Reader reader) {
     case TemporalResult::Outcome::Proved:
       out += "proved for runs of any length into " + port + ": " + r.proof +
              " (no violation up to " + messages + " either)\n";
+      break;
+    case TemporalResult::Outcome::Vacuous:
+      out += "vacuous, not proved: " + r.proof + " [vacuous]\n";
       break;
     case TemporalResult::Outcome::Unknown:
       out += "unknown (" + r.unknown_reason + ") after " + messages + " into " + port + "\n";

@@ -22,7 +22,8 @@ std::string temporal_editor_message(const TemporalResult& r);
 
 // The summary's count of properties by outcome, zero counts left out: "1 violated, 1 proved",
 // "2 hold up to the bound". `counts` is indexed by TemporalResult::Outcome.
-std::string outcome_counts(const size_t counts[4]);
+inline constexpr int kOutcomes = 5;  // the values of TemporalResult::Outcome
+std::string outcome_counts(const size_t counts[kOutcomes]);
 
 // The file name of the spec the property is in, as a tests file beside it names it.
 std::string spec_name(const model::TemporalProperty& p);

@@ -96,8 +96,8 @@ std::optional<TemporalResult> check_response(const model::App& app,
     // Nothing puts the event into the port's container, so no window ever opens.
     TemporalResult vacuous;
     vacuous.property = p;
-    vacuous.outcome = TemporalResult::Outcome::Proved;
-    vacuous.proof = "vacuously: nothing sets " + p.event + " into " + p.port +
+    vacuous.outcome = TemporalResult::Outcome::Vacuous;
+    vacuous.proof = "nothing sets " + p.event + " into " + p.port +
                     ", so it never becomes present there and no window opens";
     return vacuous;
   }

@@ -14,4 +14,9 @@ namespace arbc::verify::temporal {
 // window_bound; nullopt for anything else.
 std::optional<Finding> short_bound_finding(const TemporalResult& t, bool strict);
 
+// The warning (an error with `strict`) for a vacuous property: its event can never be present in
+// its port's container. The note names the ports whose containers something does put it into
+// (core/event_facts.h): one name in two containers is two facts. nullopt for anything else.
+std::optional<Finding> vacuous_finding(const model::App& app, const TemporalResult& t, bool strict);
+
 }  // namespace arbc::verify::temporal
