@@ -135,6 +135,11 @@ struct TemporalResult {
   int induction_k = 0;  // Proved by k-induction (verify/temporal/induction.h): its k
   // The environment assumptions the verdict is under (those about the port), printed with it.
   std::vector<model::Assumption> assumptions;
+  // Decided among the runs a replay makes (verify/temporal/unrolling.h PortShape::faithful),
+  // after the free model's violation did not replay: each message of a source reaches every
+  // connection from it into the port together. Printed with the verdict, which is then at best
+  // "holds up to the bound".
+  bool faithful = false;
   std::vector<TraceStep> trace;  // Violated only
   // The trace as a test of the app that `arbc test` runs (verify/temporal/counterexample.h);
   // nullopt when some step has no message to replay it with (`not_replayable` says why).

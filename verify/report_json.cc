@@ -138,6 +138,7 @@ Json temporal_json(const TemporalResult& t) {
   j["bound"] = t.bound;
   j["proof"] = t.proof.empty() ? Json(nullptr) : Json(t.proof);
   j["induction_k"] = t.induction_k ? Json(t.induction_k) : Json(nullptr);
+  j["faithful"] = t.faithful;
   // The environment assumptions the verdict is under (docs/language.md#environment-assumptions).
   j["assumptions"] = Json::array();
   for (const model::Assumption& a : t.assumptions) {

@@ -22,16 +22,65 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Properties over time, each decided in the abstract model and a violation replayed on the
-// runtime (docs/design.md#properties-over-time). False and *err on a malformed model.
+// A property over time decided in the abstract model, a violation replayed on the runtime
+// (docs/design.md#properties-over-time). A violation the runtime does not show is searched for
+// again among the runs a replay can make (PortShape::faithful); one found there and shown is the
+// verdict. None found there: "holds up to the bound" under what those runs take for granted,
+// which the verdict prints; a proof needs the free model. Never a violation the runtime does
+// not show.
+std::optional<TemporalResult> decide_temporal(const model::App& app,
+                                              const model::TemporalProperty& p,
+                                              const VerifyOptions& options, z3::context& ctx,
+                                              DataQuery& data, Clock::time_point deadline,
+                                              VerifyReport& report, std::string* err) {
+  std::optional<TemporalResult> t =
+      temporal::check_property(app, p, options.temporal_bound, ctx, &data, deadline, err);
+  std::string seen;
+  if (!t || temporal::confirm_violation(options.test_replayer, *t, report.app_findings, &seen) !=
+                temporal::Confirmation::NotShown)
+    return t;
+  std::optional<TemporalResult> again = temporal::check_property(
+      app, p, options.temporal_bound, ctx, &data, deadline, err, /*faithful=*/true);
+  if (!again) return std::nullopt;
+  std::string seen_again;
+  again->solver_queries += t->solver_queries;
+  again->faithful = true;
+  if (again->outcome == TemporalResult::Outcome::Violated &&
+      temporal::confirm_violation(options.test_replayer, *again, report.app_findings,
+                                  &seen_again) == temporal::Confirmation::Shown)
+    return again;
+  // No violation among those runs: bounded, and under what they take for granted (a proof of
+  // the faithful model, by induction or at one decision, says nothing of the other runs).
+  if (again->outcome == TemporalResult::Outcome::HoldsToBound ||
+      again->outcome == TemporalResult::Outcome::Proved) {
+    again->outcome = TemporalResult::Outcome::HoldsToBound;
+    again->proof.clear();
+    again->induction_k = 0;
+    return again;
+  }
+  t->solver_queries = again->solver_queries;
+  t->outcome = TemporalResult::Outcome::Unknown;
+  t->unknown_reason =
+      "violated in the model, but the runtime does not show it (" + seen +
+      "); among the runs a replay makes (each message of a source handed to all its rules and "
+      "feeds into " +
+      p.port + " at one instant), " +
+      (again->outcome == TemporalResult::Outcome::Violated
+           ? "the violation found does not replay either (" + seen_again + ")"
+           : "the search ended unknown (" + again->unknown_reason + ")");
+  t->trace.clear();
+  t->replay_test.reset();
+  return t;
+}
+
+// Properties over time, each decided by decide_temporal. False and *err on a malformed model.
 bool check_temporal(const model::App& app, const VerifyOptions& options, z3::context& ctx,
                     DataQuery& data, Clock::time_point deadline, VerifyReport& report,
                     std::string* err) {
   for (const model::TemporalProperty& p : app.temporal) {
     std::optional<TemporalResult> t =
-        temporal::check_property(app, p, options.temporal_bound, ctx, &data, deadline, err);
+        decide_temporal(app, p, options, ctx, data, deadline, report, err);
     if (!t) return false;
-    temporal::confirm_violation(options.test_replayer, *t, report.app_findings);
     if (auto f = temporal::short_bound_finding(*t, options.strict))
       report.app_findings.push_back(std::move(*f));
     if (auto f = temporal::vacuous_finding(app, *t, options.strict))

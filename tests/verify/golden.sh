@@ -61,6 +61,12 @@ golden findings.txt repo 1 tests/verify/findings.spec
 # an event of one name that only one port's container holds is refuted; a property reading an
 # event that only another port's container holds is vacuous (a warning), not proved.
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
+# Properties over time whose free-model counterexample the runtime does not show (issue 38
+# item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
+golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec
+golden temporal_shared_source.txt repo 0 tests/verify/temporal_shared_source.spec
+golden temporal_derived_same_source.txt repo 0 tests/verify/temporal_derived_same_source.spec
+golden temporal_every_step.txt repo 1 tests/verify/temporal_every_step.spec
 golden vacuous_other_port.txt repo 0 tests/verify/vacuous_other_port.spec
 golden vacuous_other_port_strict.txt repo 1 --strict tests/verify/vacuous_other_port.spec
 # No time to decide is "unknown", exit 1, never "proved".

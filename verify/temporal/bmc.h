@@ -45,7 +45,8 @@ struct PropertyShape {
   int rule = -1;
   int other = -1;
 };
+// `faithful`: the shape's unrolling keeps to runs the replay can make (PortShape::faithful).
 std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
-                                            std::string* err);
+                                            std::string* err, bool faithful = false);
 
 }  // namespace arbc::verify::temporal

@@ -27,17 +27,17 @@ void unknown(TemporalResult& r, const std::string& why) {
 
 }  // namespace
 
-void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
-                       std::vector<Finding>& findings) {
-  if (r.outcome != TemporalResult::Outcome::Violated) return;
+Confirmation confirm_violation(const TestReplayer* replayer, TemporalResult& r,
+                               std::vector<Finding>& findings, std::string* seen) {
+  if (r.outcome != TemporalResult::Outcome::Violated) return Confirmation::Shown;
   if (!r.replay_test) {
     unknown(
         r, "violated in the abstract model, but the trace cannot be replayed: " + r.not_replayable);
-    return;
+    return Confirmation::NotReplayed;
   }
   if (!replayer) {
     unknown(r, "violated in the abstract model, not replayed (no runtime)");
-    return;
+    return Confirmation::NotReplayed;
   }
   std::string err;
   std::optional<std::vector<ReplayRecord>> records =
@@ -45,24 +45,21 @@ void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
   if (!records) {
     findings.push_back(internal_replay_error(r, "the replay did not run (" + err + ")"));
     unknown(r, "internal error in the replay");
-    return;
+    return Confirmation::NotReplayed;
   }
   for (const model::Assumption& a : r.assumptions) {
     std::string broken;
     if (!replay_respects(a, *records, &broken)) {
-      findings.push_back(internal_replay_error(
-          r, "the replay breaks the assumption `" + assumption_words(a) + "`: " + broken));
-      unknown(r, "internal error in the replay");
-      return;
+      *seen = "the replay breaks the assumption `" + assumption_words(a) + "`: " + broken;
+      return Confirmation::NotShown;
     }
   }
-  std::string seen;
-  if (!replay_violates(r.property, *records, &seen)) {
-    findings.push_back(internal_replay_error(r, "replayed, " + seen));
-    unknown(r, "internal error in the replay");
-    return;
+  if (!replay_violates(r.property, *records, seen)) {
+    *seen = "replayed, " + *seen;
+    return Confirmation::NotShown;
   }
   r.replayed = true;
+  return Confirmation::Shown;
 }
 
 }  // namespace arbc::verify::temporal

@@ -10,10 +10,17 @@
 
 namespace arbc::verify::temporal {
 
-// Replays `r`'s test when r is Violated. Confirmed: r.replayed. No test or no replayer: r
-// becomes Unknown, saying why. A replay that does not show the violation: an `internal` error
-// in `findings` and r Unknown, never a verdict.
-void confirm_violation(const TestReplayer* replayer, TemporalResult& r,
-                       std::vector<Finding>& findings);
+enum class Confirmation {
+  Shown,        // r.replayed: the runtime shows the violation
+  NotShown,     // the replay ran and does not show it, or breaks an assumption: *seen says how
+  NotReplayed,  // r is Unknown, saying why (no test, no replayer, or the replay could not run)
+};
+
+// Replays `r`'s test when r is Violated (Shown for anything else, which needs no replay). A
+// replay that could not run is an `internal` error in `findings`. NotShown leaves r as it is:
+// the caller searches again for a run the replay can make (PortShape::faithful) and otherwise
+// makes r Unknown, never a verdict.
+Confirmation confirm_violation(const TestReplayer* replayer, TemporalResult& r,
+                               std::vector<Finding>& findings, std::string* seen);
 
 }  // namespace arbc::verify::temporal

@@ -21,6 +21,6 @@ std::optional<TemporalResult> check_precedence(const model::App& app,
                                                const model::TemporalProperty& p, int bound,
                                                z3::context& ctx, DataQuery* data,
                                                std::chrono::steady_clock::time_point deadline,
-                                               std::string* err);
+                                               std::string* err, bool faithful = false);
 
 }  // namespace arbc::verify::temporal

@@ -14,18 +14,18 @@ std::optional<TemporalResult> check_property(const model::App& app,
                                              const model::TemporalProperty& p, int bound,
                                              z3::context& ctx, DataQuery* data,
                                              std::chrono::steady_clock::time_point deadline,
-                                             std::string* err) {
+                                             std::string* err, bool faithful) {
   switch (p.kind) {
     case model::TemporalProperty::Kind::Spacing:
-      return check_spacing(app, p, bound, ctx, data, deadline, err);
+      return check_spacing(app, p, bound, ctx, data, deadline, err, faithful);
     case model::TemporalProperty::Kind::Absence:
-      return check_absence(app, p, bound, ctx, data, deadline, err);
+      return check_absence(app, p, bound, ctx, data, deadline, err, faithful);
     case model::TemporalProperty::Kind::Precedence:
-      return check_precedence(app, p, bound, ctx, data, deadline, err);
+      return check_precedence(app, p, bound, ctx, data, deadline, err, faithful);
     case model::TemporalProperty::Kind::Response:
-      return check_response(app, p, bound, ctx, data, deadline, err);
+      return check_response(app, p, bound, ctx, data, deadline, err, faithful);
     case model::TemporalProperty::Kind::Stability:
-      return check_stability(app, p, bound, ctx, data, deadline, err);
+      return check_stability(app, p, bound, ctx, data, deadline, err, faithful);
   }
   *err = "unknown kind of property over time";
   return std::nullopt;

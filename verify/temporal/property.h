@@ -19,7 +19,7 @@ std::optional<TemporalResult> check_property(const model::App& app,
                                              const model::TemporalProperty& p, int bound,
                                              z3::context& ctx, DataQuery* data,
                                              std::chrono::steady_clock::time_point deadline,
-                                             std::string* err);
+                                             std::string* err, bool faithful = false);
 
 // The property as the spec states it: "never two take within 1s", "never search while
 // act_track", "only put after take".

@@ -21,23 +21,34 @@ constexpr const char* kAssumptionsLine =
     "assuming: sources publish at any times; monitors accept or reject any message (data is not "
     "modelled); exclusive groups and invariants are not used\n";
 
-// The spec's environment assumptions the verdict is under, one line each (none: nothing).
-std::string environment_text(const TemporalResult& r, bool plain) {
-  std::string out;
-  for (const model::Assumption& a : r.assumptions) {
-    std::string where = a.loc.line ? " (line " + std::to_string(a.loc.line) + ")" : "";
-    out += std::string(plain ? "" : "    ") +
-           "assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
-  }
-  return out;
-}
-
 std::string wrap(const std::string& text, const std::string& by, size_t width = 96);
 
 // A sentence of the report: wrapped and indented in the text report; one line as it is in a
 // diagnostic's message (SARIF), whose viewer wraps it.
 std::string paragraph(const std::string& text, bool plain) {
   return plain ? text + "\n" : wrap(text, "    ");
+}
+
+// The spec's environment assumptions the verdict is under, one line each (none: nothing), after
+// what a verdict decided among the runs a replay makes takes for granted.
+std::string environment_text(const TemporalResult& r, bool plain) {
+  std::string out;
+  if (r.faithful) {
+    out += paragraph(
+        "assuming, as the runtime hands them out, that each message of a source "
+        "reaches all its rules and feeds into " +
+            r.property.port +
+            " together, at one instant (the free model's violation did not replay; "
+            "a module that publishes while it takes a delivery could interleave "
+            "other messages)",
+        plain);
+  }
+  for (const model::Assumption& a : r.assumptions) {
+    std::string where = a.loc.line ? " (line " + std::to_string(a.loc.line) + ")" : "";
+    out += std::string(plain ? "" : "    ") +
+           "assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
+  }
+  return out;
 }
 
 // The assumptions line; the rates the verdict relies on replace "at any times" for their sources.

@@ -40,8 +40,8 @@ z3::expr violation(const Unrolling& u, int first, int r, int n, double window, z
 std::optional<TemporalResult> check_spacing(const model::App& app, const model::TemporalProperty& p,
                                             int bound, z3::context& ctx, DataQuery* data,
                                             std::chrono::steady_clock::time_point deadline,
-                                            std::string* err) {
-  std::optional<PropertyShape> ps = property_shape(app, p, err);
+                                            std::string* err, bool faithful) {
+  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful);
   if (!ps) return std::nullopt;
   const PortShape* shape = &ps->shape;
   int r = ps->rule;

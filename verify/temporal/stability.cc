@@ -46,8 +46,8 @@ std::optional<TemporalResult> check_stability(const model::App& app,
                                               const model::TemporalProperty& p, int bound,
                                               z3::context& ctx, DataQuery* data,
                                               std::chrono::steady_clock::time_point deadline,
-                                              std::string* err) {
-  std::optional<PropertyShape> ps = property_shape(app, p, err);
+                                              std::string* err, bool faithful) {
+  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful);
   if (!ps) return std::nullopt;
   const PortShape* shape = &ps->shape;
   std::vector<int> rules;

@@ -14,6 +14,21 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
+// The lifetimes the `set event` statements of a body give: `for D`, or the event's declared
+// lifetime (none: until unset). False when a statement of `event` is not in `body`'s reach
+// (never: the caller checks); `out` collects one entry per distinct lifetime.
+void set_lifetimes(const model::Body& body, const std::string& event,
+                   std::optional<double> declared, std::vector<std::optional<double>>& out) {
+  for (const model::BodyStmt& s : body) {
+    if (s.kind == model::BodyStmt::Kind::Set && s.name == event) {
+      std::optional<double> life = s.lifetime ? s.lifetime : declared;
+      if (std::find(out.begin(), out.end(), life) == out.end()) out.push_back(life);
+    }
+    set_lifetimes(s.then_body, event, declared, out);
+    set_lifetimes(s.else_body, event, declared, out);
+  }
+}
+
 // How long an entry the connection sets lives (docs/design.md#properties-over-time).
 Entry entry_of(const model::App& app, const model::Connection& c, const std::string& event,
                int owner) {
@@ -27,8 +42,19 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
     e.lifetime = lifetime;  // the rule's hold
   } else if (c.kind == model::ConnectionKind::Feed) {
     e.lifetime = lifetime;  // `events from ... lifetime D`, a derived event's `for D`
+    if (declared && declared->predicate && declared->predicate->op == model::BodyExpr::Op::Bool)
+      e.constant_predicate = declared->predicate->boolean;
   } else {
-    e.free_lifetime = true;  // `set e for D`: D is not in the model, so any lifetime
+    // `set e [for D]` in the rule's body: the lifetime every such statement gives, as the
+    // runtime applies it. Without the body (a script), or with statements that differ, any
+    // lifetime: more behaviours, and a counterexample that needs one is replayed to be sure.
+    std::vector<std::optional<double>> lifetimes;
+    if (c.body && !c.opaque) set_lifetimes(*c.body, event, lifetime, lifetimes);
+    if (lifetimes.size() == 1) {
+      e.lifetime = lifetimes[0];
+    } else {
+      e.free_lifetime = true;
+    }
   }
   return e;
 }
@@ -142,6 +168,7 @@ void Unrolling::add_step(int k) {
     if (shape_.entries[q].activity) add_activity_step(q, k);
   }
   add_assumptions(k);
+  if (shape_.faithful) add_faithful(k);
 }
 
 // An entry the running connection's monitor may set or remove (must, on an accepting step).

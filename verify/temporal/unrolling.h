@@ -25,6 +25,8 @@ struct Entry {
   bool activity = false;           // the owner's `by priority` activity event
   std::optional<double> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
   bool free_lifetime = false;      // `set e for D` in rule code: D is not in the model
+  // A feed's derived event whose predicate is the constant true or false (PortShape::faithful).
+  std::optional<bool> constant_predicate;
 };
 
 // What the unrolling needs of the port, read from the model once.
@@ -40,6 +42,13 @@ struct PortShape {
     int after = -1, until = -1;
   };
   std::vector<Assumed> assumptions;
+  // Runs as a replay makes them (verify/temporal/faithful.cc), asked again when a
+  // counterexample of the free model does not replay: one message of a source reaches every
+  // connection from it into the port, one after the other at one instant and in model order,
+  // where the free model lets each take messages of its own; a rule that accepts every message
+  // accepts it; a derived event with a constant predicate follows it. Sound proofs never use
+  // it: the runtime can interleave more (a module that publishes while it takes a delivery).
+  bool faithful = false;
 };
 
 // The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`.
@@ -124,6 +133,7 @@ class Unrolling {
   void add_any_start_entry(size_t q);  // one entry of any state (induction.cc)
   void constrain_any_start();          // what any state says of times before t_1 (induction.cc)
   void add_assumptions(int k);         // the environment at step k (assumption.cc)
+  void add_faithful(int k);            // PortShape::faithful's constraints at step k (faithful.cc)
 
   const PortShape& shape_;
   z3::context& ctx_;
