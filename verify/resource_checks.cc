@@ -204,18 +204,29 @@ void ResourceChecker::by_events(const ResourceRule& a, const ResourceRule& b, co
                                      effects_text(ba));
 }
 
-// A rule opaque for data makes the pair an error: it might deliver any command.
+// A rule opaque for data makes the pair an error: it might deliver any command. So does a
+// `when` the data encoding cannot read (the length of a string): any command might use it.
 bool ResourceChecker::opaque_pair(const ResourceRule& a, const ResourceRule& b) {
   for (const ResourceRule* r : {&a, &b}) {
-    std::string why = data_.opaque_reason(*r->connection);
+    std::string why = data_.opaque_reason(*r->connection), what, note;
+    if (!why.empty()) {
+      what = "'" + r->connection->name + "' is opaque for data (" + why + ")";
+      note = "without its body arbc must assume it can deliver any command";
+    } else if (res_.uses) {
+      why = data_.predicate_opaque_reason(*r->connection, *res_.uses);
+      what =
+          "its `when` cannot be read of what '" + r->connection->name + "' delivers (" + why + ")";
+      note =
+          "arbc must then assume any command uses it: write the `when` with what the proof reads "
+          "(docs/checks.md#message-data)";
+    }
     if (why.empty()) continue;
     Finding f = base_finding(kCheckResource);
     f.rules = {a.connection->name, b.connection->name};
     f.rule_ports = {a.connection->destination, b.connection->destination};
     f.rule_locs = {a.connection->loc, b.connection->loc};
-    f.message = "resource '" + res_.name + "' is not proved for " + pair_name(a, b) + ": '" +
-                r->connection->name + "' is opaque for data (" + why + ")";
-    f.notes.push_back({"without its body arbc must assume it can deliver any command", {}});
+    f.message = "resource '" + res_.name + "' is not proved for " + pair_name(a, b) + ": " + what;
+    f.notes.push_back({note, {}});
     out_.findings.push_back(std::move(f));
     return true;
   }

@@ -61,6 +61,7 @@ golden findings.txt repo 1 tests/verify/findings.spec
 # an event of one name that only one port's container holds is refuted; a property reading an
 # event that only another port's container holds is vacuous (a warning), not proved.
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
+golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
 # Properties over time whose free-model counterexample the runtime does not show (issue 38
 # item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
 golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec
