@@ -62,6 +62,9 @@ constexpr CheckId kIds[] = {
     {"temporal-bound", kVerify,
      "a response's window cannot close within --temporal-bound messages at the given rates "
      "(warning; an error with --strict)"},
+    {"list-bound", kVerify,
+     "a rule accepts no message whose lists have at most --list-bound elements, so the proof "
+     "does not see what it accepts (warning; an error with --strict)"},
     {"vacuous", kVerify,
      "a property over time reads an event nothing can put into its port's container, so it says "
      "nothing (warning; an error with --strict)"},

@@ -25,6 +25,13 @@ TypePtr Type::record(std::vector<Field> fields) {
   return t;
 }
 
+bool Type::has_list() const {
+  if (kind == Kind::List) return true;
+  for (const Field& f : fields)
+    if (f.type && f.type->has_list()) return true;
+  return false;
+}
+
 const Field* Type::field(std::string_view name) const {
   for (const Field& f : fields)
     if (f.name == name) return &f;

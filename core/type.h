@@ -32,6 +32,8 @@ struct Type {
   std::string to_string() const;
   // The record field called `name`; null when there is none (or this is not a record).
   const Field* field(std::string_view name) const;
+  // Whether a list is anywhere in it (itself, an element, a field's type).
+  bool has_list() const;
 };
 
 // Structural equality; record fields compare by name, in any order.

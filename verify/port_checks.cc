@@ -155,6 +155,43 @@ class PortChecker {
     }
   }
 
+  // Whether rule c's message has a list: the data encoding sees at most --list-bound elements.
+  bool reads_lists(const model::Connection& c) const {
+    const model::Port* p = data_.app().find_port(c.source);
+    return p && p->type && p->type->has_list();
+  }
+
+  // A verdict about rule `r` rests on its message data with lists: it holds for lists of at most
+  // --list-bound elements, which the verdict says. A rule whose body accepts no such message
+  // looks dead by data, and every pair it is in exclusive by data, while a longer list may pass
+  // it: a warning, once per rule.
+  void bounded_by_lists(const ScopedRule& r) {
+    const model::Connection& c = *r.connection;
+    if (!reads_lists(c)) return;
+    result_.list_bound = options_.list_bound;
+    if (!warned_bound_.insert(&c).second || !data_.opaque_reason(c).empty()) return;
+    DataWitness w;
+    DataCore core;
+    ++data_queries_;
+    if (data_.ask({{&c, nullptr}}, &w, &core) != Answer::Unsat) return;
+    Finding f;
+    f.check = kCheckListBound;
+    f.severity = options_.strict ? Severity::Error : Severity::Warning;
+    f.strict = options_.strict;
+    f.port = scope_.port->port;
+    f.rules = {rule_name(r)};
+    f.loc = c.loc;
+    std::string n = std::to_string(options_.list_bound);
+    f.message = "rule '" + rule_name(r) + "' of " + scope_.port->port + " accepts no " + c.source +
+                " message whose lists have at most " + n + " elements (--list-bound " + n +
+                "): what it accepts, the proof does not see";
+    f.notes.push_back(
+        {"raise the bound past the lists it needs (--list-bound N), or fix its "
+         "`accept`s if it should accept short lists too",
+         {}});
+    result_.findings.push_back(std::move(f));
+  }
+
   Finding dead_rule(const ScopedRule& r) const {
     Finding f;
     f.check = kCheckDead;
@@ -286,6 +323,8 @@ class PortChecker {
       switch (d.kind) {
         case DataPair::Kind::Exclusive:
           result_.exclusive_by_data.push_back(d.text);
+          bounded_by_lists(scope_.rules[static_cast<size_t>(i)]);
+          bounded_by_lists(scope_.rules[static_cast<size_t>(j)]);
           continue;
         case DataPair::Kind::Unknown:
           unknown(d.text, data_.unknown_reason());
@@ -341,6 +380,8 @@ class PortChecker {
       DataAssertOutcome d = check_data_assert(scope_, r, a, solver_, data_, options_.runner);
       if (!d.unknown.empty()) unknown(d.unknown, d.unknown_reason);
       if (d.finding) result_.findings.push_back(std::move(*d.finding));
+      // Holds of what the rule delivers for messages with lists of at most the bound.
+      if (!d.finding && r >= 0) bounded_by_lists(scope_.rules[static_cast<size_t>(r)]);
       return;
     }
     std::optional<std::vector<std::string>> present = solver_.minimal_state({r}, {}, &a.property);
@@ -375,6 +416,7 @@ class PortChecker {
   const VerifyOptions& options_;
   DataQuery& data_;
   int data_queries_ = 0;
+  std::set<const model::Connection*> warned_bound_;  // rules bounded_by_lists has looked at
   PortSolver solver_;
   CubeShortcut shortcut_;
   PortResult& result_;

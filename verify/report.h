@@ -34,6 +34,8 @@ inline constexpr const char* kCheckTemporal = "temporal";  // a property over ti
 inline constexpr const char* kCheckTemporalBound = "temporal-bound";
 // A property over time about an event nothing can put into its port's container: it says nothing.
 inline constexpr const char* kCheckVacuous = "vacuous";
+// A rule that accepts no message whose lists have at most --list-bound elements.
+inline constexpr const char* kCheckListBound = "list-bound";
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {
@@ -103,6 +105,10 @@ struct PortResult {
   // Pairs that overlap in some event state but never accept the same message, each with why
   // ("'take' and 'put': ...").
   std::vector<std::string> exclusive_by_data;
+  // A proved verdict that rests on message data with lists, encoded with at most this many
+  // elements (--list-bound): the verdict's first line says "for lists of at most N elements".
+  // 0: no such claim.
+  int list_bound = 0;
   double seconds = 0;  // wall time, printed only with --stats
   int solver_queries = 0;
 };
@@ -177,6 +183,7 @@ struct ResourceResult {
   // by data").
   std::vector<std::string> exclusive_by_events;
   std::vector<std::string> exclusive_by_data;
+  int list_bound = 0;  // as PortResult::list_bound
   std::vector<Finding> findings;
   std::string unknown_reason;
 };

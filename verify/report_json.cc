@@ -98,6 +98,7 @@ Json port_json(const PortResult& p, bool stats) {
   j["reported_pairs"] = p.reported_pairs;
   j["unknown_reason"] = p.unknown_reason.empty() ? Json(nullptr) : Json(p.unknown_reason);
   if (!p.exclusive_by_data.empty()) j["exclusive_by_data"] = p.exclusive_by_data;
+  j["list_bound"] = p.list_bound ? Json(p.list_bound) : Json(nullptr);
   j["findings"] = Json::array();
   for (const Finding& f : p.findings) j["findings"].push_back(finding_json(f));
   if (stats) j["stats"] = {{"seconds", p.seconds}, {"solver_queries", p.solver_queries}};
@@ -220,6 +221,7 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
         rj["pairs"] = res.pairs;
         rj["exclusive_by_events"] = res.exclusive_by_events;
         rj["exclusive_by_data"] = res.exclusive_by_data;
+        rj["list_bound"] = res.list_bound ? Json(res.list_bound) : Json(nullptr);
         rj["unknown_reason"] =
             res.unknown_reason.empty() ? Json(nullptr) : Json(res.unknown_reason);
         rj["findings"] = Json::array();

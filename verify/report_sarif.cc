@@ -35,6 +35,7 @@ constexpr CheckDoc kChecks[] = {
     {kCheckDead, "A rule can never be selected."},
     {kCheckTemporalBound,
      "A response's window cannot close within --temporal-bound messages at the given rates."},
+    {kCheckListBound, "A rule accepts no message whose lists have at most --list-bound elements."},
     {kCheckVacuous,
      "A property over time reads an event nothing can put into its port's container: it says "
      "nothing."},

@@ -41,6 +41,8 @@ std::string port_line(const PortResult& p, bool stats) {
   }
   line += ": ";
   line += verdict_name(p.verdict);
+  if (p.verdict == Verdict::Proved && p.list_bound)
+    line += " for lists of at most " + std::to_string(p.list_bound) + " elements";
   if (p.verdict == Verdict::Proved) {
     if (p.rules.empty()) {
       line += ": no rule delivers, nothing can overlap";
@@ -90,6 +92,8 @@ std::string port_line(const PortResult& p, bool stats) {
 std::string resource_lines(const ResourceResult& r) {
   std::string line =
       "  resource " + r.name + " (" + join(r.ports) + "): " + verdict_name(r.verdict);
+  if (r.verdict == Verdict::Proved && r.list_bound)
+    line += " for lists of at most " + std::to_string(r.list_bound) + " elements";
   if (r.verdict == Verdict::Proved) {
     line += r.pairs == 0 ? ": no two rules into different ports"
                          : ": " + plural(static_cast<size_t>(r.pairs), "pair") +

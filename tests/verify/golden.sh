@@ -62,6 +62,9 @@ golden findings.txt repo 1 tests/verify/findings.spec
 # event that only another port's container holds is vacuous (a warning), not proved.
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
 golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
+# A proof that rests on lists of at most --list-bound elements says so; raised, it is refuted.
+golden list_bound.txt repo 0 tests/verify/list_bound.spec
+golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound.spec
 # Properties over time whose free-model counterexample the runtime does not show (issue 38
 # item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
 golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec
