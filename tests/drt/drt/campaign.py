@@ -28,19 +28,27 @@ def main(argv=None):
     ap.add_argument("--no-shrink", action="store_true")
     ap.add_argument("--shrink-seconds", type=float, default=180)
     ap.add_argument("--keep", action="store_true", help="keep the work folder")
+    ap.add_argument("--specs", type=int, default=0, help="stop after this many specs (0: none)")
+    ap.add_argument("--avoid", default="", help="generator features to leave out (comma list)")
+    ap.add_argument("--avoid-open", action="store_true",
+                    help="leave out the features tests/drt/open/AVOID names (open bugs)")
     args = ap.parse_args(argv)
-    oracle = Oracle(Arbc(os.path.abspath(args.arbc)))
+    avoid = set(filter(None, args.avoid.split(",")))
+    if args.avoid_open:
+        avoid |= open_features()
+    oracle = Oracle(Arbc(os.path.abspath(args.arbc)), avoid=avoid)
     work = tempfile.mkdtemp(prefix="arbc-drt.")
     out_dir = args.out or os.path.join(work, "found")
-    deadline = time.monotonic() + args.seconds
+    started = time.monotonic()
+    deadline = started + args.seconds
     totals = {"specs": 0, "steps": 0, "rejected": 0, "timeouts": 0, "outside": 0, "unjudged": 0,
               "skipped": 0, "disagreements": 0, "runs": 0}
     verdicts, rejected_ids, kinds = {}, {}, {}
     index = 0
-    while time.monotonic() < deadline:
+    while time.monotonic() < deadline and not (args.specs and index >= args.specs):
         index += 1
         rng = random.Random(f"{args.seed}/{index}")
-        spec = SpecGen(rng, index).make()
+        spec = SpecGen(rng, index, avoid).make()
         spec_work = os.path.join(work, f"spec{index}")
         res = oracle.judge(spec, spec_work, rng, args.runs)
         totals["specs"] += 1
@@ -60,7 +68,8 @@ def main(argv=None):
         if res.breaches:
             totals["disagreements"] += 1
             report_found(args, oracle, spec, spec_work, res, out_dir, index, kinds)
-    print(f"drt: seed {args.seed}, {args.seconds:g} s, {totals['runs']} runs; verdicts "
+    print(f"drt: seed {args.seed}, {time.monotonic() - started:.0f} s, {totals['runs']} runs"
+          + (f", leaving out {', '.join(sorted(avoid))}" if avoid else "") + "; verdicts "
           + ", ".join(f"{k} {v}" for k, v in sorted(verdicts.items())))
     print(f"drt: rejected by arbc check: {totals['rejected']}"
           + (f" ({', '.join(f'{k} {v}' for k, v in sorted(rejected_ids.items()))})" if rejected_ids else ""))
@@ -75,6 +84,18 @@ def main(argv=None):
     print(f"drt: {totals['specs']} specs, {totals['steps']} steps, "
           f"{totals['disagreements']} disagreements")
     return 1 if totals["disagreements"] else 0
+
+
+def open_features():
+    """The generator features tests/drt/open/AVOID names: `FEATURE CASE-FOLDER why` per line."""
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "open", "AVOID")
+    out = set()
+    if os.path.exists(path):
+        for line in open(path):
+            line = line.split("#")[0].strip()
+            if line:
+                out.add(line.split()[0])
+    return out
 
 
 def report_found(args, oracle, spec, spec_work, res, out_dir, index, kinds):

@@ -38,6 +38,19 @@ class Breach:
     detail: str   # what the run did
     needs: str = ""  # a data assumption the breach relies on, if any
 
+    def signature(self):
+        """What makes two breaches the same disagreement, for the shrinker: the claim, and for
+        a process-level one (internal error, crash, refused replay) its message with names,
+        numbers and paths left out."""
+        if self.claim in ("internal", "crash", "replay", "timeout"):
+            import re
+            text = re.sub(r"'[^']*'|`[^`]*`|\"[^\"]*\"|/\S+|\b[\w.]+\.(spec|lua)\b|[\d.]+", "_",
+                          self.detail)
+            return self.claim + ":" + text[text.find("error") if "error" in text else 0:][:70]
+        if self.claim == "temporal":
+            return self.claim + ":" + self.what.split(" property")[0]
+        return self.claim
+
 
 def with_act(d, model):
     c = model.connections[d["conn"]]
@@ -193,6 +206,8 @@ def resource(run, model, res, pairs, needs_of):
     using = {}
     for d in run.decisions:
         if d["delivered"] and d["port"] in res["ports"]:
+            if not model.domain_holds(with_act(d, model)):
+                continue  # outside the domain the proof assumes (an exclusive group, invariant)
             u = uses(d, res["when"])
             if u:
                 using.setdefault(d["conn"], []).append(d)

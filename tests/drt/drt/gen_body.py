@@ -8,9 +8,10 @@ DURATIONS = ["1ms", "50ms", "100ms", "200ms", "250ms", "300ms", "0.5s", "1s", "1
 
 
 class BodyGen:
-    def __init__(self, rng, consts, counter):
+    def __init__(self, rng, consts, counter, avoid=()):
         self.rng = rng
-        self.exprs = ExprGen(rng, consts)
+        self.avoid = set(avoid)
+        self.exprs = ExprGen(rng, consts, avoid)
         self.counter = counter  # shared: let/var names unique in the spec
 
     def fresh(self, prefix):
@@ -38,8 +39,9 @@ class BodyGen:
         if r.random() < 0.1 and events:
             e = r.choice(events)
             sets.add(e)
-            stmts.append(Stmt("every", duration=r.choice(DURATIONS[3:]),
-                              branches=[(None, [Stmt("set", e, duration=r.choice(["", "100ms"]))])]))
+            every = Stmt("every", duration=r.choice(DURATIONS[3:]),
+                         branches=[(None, [Stmt("set", e, duration=r.choice(["", "100ms"]))])])
+            stmts.insert(0 if "every-late" in self.avoid else len(stmts), every)
         if must_emit or r.random() < 0.5:
             stmts.append(Stmt("emit", expr=self.exprs.gen(dst_type, env, 3)))
         return stmts, sets

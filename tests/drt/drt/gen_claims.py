@@ -50,9 +50,9 @@ def data_assert(g, a, rule):
     ty = g.spec.port_type(a.port)
     pred = rule.pred
     if pred is None or g.chance(0.2):
-        pred = ExprGen(g.rng, g.consts).gen(BOOL, {"emitted": ty}, 3, pure=True)
+        pred = ExprGen(g.rng, g.consts, g.avoid).gen(BOOL, {"emitted": ty}, 3, pure=True)
         if "emitted" not in pred.text():
-            pred = ExprGen(g.rng, g.consts).gen(BOOL, {"emitted": ty}, 2, pure=True)
+            pred = ExprGen(g.rng, g.consts, g.avoid).gen(BOOL, {"emitted": ty}, 2, pure=True)
     if "emitted" not in pred.text():
         pred = type(pred)("bin", BOOL, [name(ty, "emitted"), name(ty, "emitted")], "==")
     return Decl("assert_data", f"assert {a.port}: {rule.name} -> {pred.text()};",
@@ -61,6 +61,9 @@ def data_assert(g, a, rule):
 
 def temporal(g, a, events):
     r = g.rng
+    sources = [x.source for x in a.rules]
+    if "shared-source-temporal" in g.avoid and len(set(sources)) < len(sources):
+        return None
     rules = [x.name for x in a.rules]
     rule = r.choice(rules)
     others = [x for x in rules if x != rule]
@@ -101,6 +104,10 @@ def response(g, a, rule, others, events, acts, w):
     else:
         return None
     answer = a.port if r.random() < 0.3 else rule
+    src = next(x.source for x in a.rules if x.name == rule)
+    if "response-unrated" in g.avoid and src not in g.rated:
+        g.rated.add(src)
+        g.spec.decls.append(Decl("given", f"given {src} every 100ms;", {"source": src}))
     cond = ""
     if events and r.random() < 0.4:
         cond = " while " + r.choice(events) + (f" and not {r.choice(events)}" if r.random() < 0.3 else "")
@@ -135,7 +142,7 @@ def resources(g, ports):
         ty = g.spec.port_type(group[0])
         pred = None
         if g.chance(0.5):
-            pred = ExprGen(g.rng, g.consts).gen(BOOL, {"emitted": ty}, 2, pure=True)
+            pred = ExprGen(g.rng, g.consts, g.avoid).gen(BOOL, {"emitted": ty}, 2, pure=True)
             if "emitted" not in pred.text():
                 pred = None
         text = f"resource res{k} {{ {', '.join(group)} }}" + (f" when {pred.text()}" if pred else "") + ";"

@@ -13,8 +13,9 @@ STRING_LITS = ['""', '"a"', '"take"', '"é✓"', '"日本"', '"a\\"b"', '"x\\ny"
 class ExprGen:
     """Expressions over `env` (name -> type) of a wanted type; `pure` leaves out now()."""
 
-    def __init__(self, rng, consts=None):
+    def __init__(self, rng, consts=None, avoid=()):
         self.rng = rng
+        self.avoid = set(avoid)
         self.consts = consts or {}  # const name -> type
         self.lambda_count = 0
 
@@ -48,7 +49,8 @@ class ExprGen:
         if ty == BOOL:
             return lit(BOOL, self.rng.choice(["true", "false"]))
         if ty == INT:
-            return lit(INT, self.rng.choice(INT_LITS))
+            pool = INT_LITS[:-2] if "int-literal-edge" in self.avoid else INT_LITS
+            return lit(INT, self.rng.choice(pool))
         if ty == FLOAT:
             if self.chance(0.15):
                 return lit(FLOAT, self.rng.choice(DURATION_LITS))
@@ -82,8 +84,7 @@ class ExprGen:
                   lambda: self.compare(env, d, pure), lambda: self.compare(env, d, pure),
                   lambda: self.equality(env, d, pure)]
         elif ty == INT:
-            m += [lambda: Expr("bin", INT, [g(INT, env, d, pure), g(INT, env, d, pure)],
-                               self.rng.choice(["+", "-", "*", "%"])),
+            m += [lambda: self.int_arith(env, d, pure),
                   lambda: Expr("neg", INT, [g(INT, env, d, pure)]),
                   lambda: Expr("call", INT, [g(INT, env, d, pure)], "abs"),
                   lambda: Expr("call", INT, [g(INT, env, d, pure) for _ in range(self.rng.randint(2, 3))],
@@ -119,6 +120,13 @@ class ExprGen:
                                             for _ in range(self.rng.randint(1, 3))])]
         return m
 
+    def int_arith(self, env, d, pure):
+        op = self.rng.choice(["+", "-", "*", "%"])
+        rhs = self.gen(INT, env, d, pure)
+        if op == "%" and "int-mod" in self.avoid:
+            rhs = lit(INT, self.rng.choice(["2", "3", "10"]))
+        return Expr("bin", INT, [self.gen(INT, env, d, pure), rhs], op)
+
     def num(self):
         return self.rng.choice([INT, FLOAT])
 
@@ -131,7 +139,7 @@ class ExprGen:
         nonzero constant makes the rule opaque for data (docs/checks.md#message-data)."""
         op = self.rng.choice(["+", "-", "*", "/", "%", "/"])
         a = self.gen(FLOAT, env, d, pure)
-        if op in ("/", "%") and self.chance(0.7):
+        if op in ("/", "%") and (self.chance(0.7) or "int-mod" in self.avoid):
             b = self.nonzero()
         else:
             b = self.gen(self.num(), env, d, pure)

@@ -11,8 +11,9 @@ SIMPLE = [INT, FLOAT, BOOL, STRING, VEC3]
 
 
 class SpecGen:
-    def __init__(self, rng, index):
+    def __init__(self, rng, index, avoid=()):
         self.rng = rng
+        self.avoid = set(avoid)
         self.index = index
         self.counter = {}
         self.spec = Spec(app=f"drt{index}")
@@ -68,10 +69,12 @@ class SpecGen:
                 self.durations_extra = getattr(self, "durations_extra", []) + [n]
                 kind = FLOAT
             elif kind == INT:
-                e = Expr("bin", INT, [lit(INT, self.rng.choice(["2", "9223372036854775806"])),
+                big = [] if "int-literal-edge" in self.avoid else ["9223372036854775806"]
+                e = Expr("bin", INT, [lit(INT, self.rng.choice(["2"] + big)),
                                       lit(INT, "1")], "+")
             elif kind == FLOAT:
-                e = lit(FLOAT, self.rng.choice(["0.5", "0.1", "1e308", "0.3333333333333333"]))
+                e = lit(FLOAT, self.rng.choice(["0.5", "0.1"] + ([] if "rounding" in self.avoid else
+                                                                ["1e308", "0.3333333333333333"])))
             else:
                 e = lit(STRING, self.rng.choice(['"take"', '""', '"é"']))
             self.spec.consts.append((n, e))
@@ -116,7 +119,7 @@ class SpecGen:
         for i in range(r.randint(0, 2)):
             src = r.choice(self.sources)
             msg = src.split(".")[1]
-            pred = BodyGen(r, self.consts, self.counter).exprs.gen(
+            pred = BodyGen(r, self.consts, self.counter, self.avoid).exprs.gen(
                 BOOL, {msg: self.spec.port_type(src)}, 3, pure=True)
             life = r.choice(["", "", "100ms", "300ms", "1s"])
             n = f"d{i + 1}"
@@ -138,7 +141,7 @@ class SpecGen:
         by_priority = self.chance(0.4)
         a = Arbitrate(port, by_priority, complete=self.chance(0.1))
         n_rules = r.randint(1, 4)
-        bodies = BodyGen(r, self.consts, self.counter)
+        bodies = BodyGen(r, self.consts, self.counter, self.avoid)
         owned = set()
         for i in range(n_rules):
             self.counter["r"] = self.counter.get("r", 0) + 1
@@ -146,7 +149,8 @@ class SpecGen:
             src_type = self.spec.port_type(rule.source)
             msg = rule.source.split(".")[1]
             roll = r.random()
-            guarded = guarded_emit(r, msg, src_type, dst) if roll < 0.15 else None
+            guarded = guarded_emit(r, msg, src_type, dst) if roll < 0.15 and "rounding" not in self.avoid \
+                else None
             if guarded:
                 rule.body = guarded[0]
                 rule.pred = guarded[1]
@@ -201,7 +205,7 @@ class SpecGen:
         body = None
         src_type, dst = self.spec.port_type(src), self.spec.port_type(dest)
         if src_type != dst or self.chance(0.5):
-            body, _ = BodyGen(self.rng, self.consts, self.counter).body(
+            body, _ = BodyGen(self.rng, self.consts, self.counter, self.avoid).body(
                 src.split(".")[1], src_type, dst, [], must_emit=src_type != dst, in_rule=True)
         return Connect(src, dest, body)
 

@@ -30,15 +30,16 @@ def exact_time(d):
 
 
 class InputGen:
-    def __init__(self, rng, spec, sources, list_bound):
+    def __init__(self, rng, spec, sources, list_bound, avoid=()):
         """`sources`: port -> (type, flags or None); flags make a status port."""
         self.rng = rng
+        self.avoid = set(avoid)
         self.spec = spec
         self.text = spec.text()
         self.sources = sources
         self.durations = spec_durations(self.text)
         strings = re.findall(r'"([a-z_0-9]*)"', self.text)
-        self.values = ValueGen(rng, spec_numbers(self.text), strings, list_bound)
+        self.values = ValueGen(rng, spec_numbers(self.text), strings, list_bound, self.avoid)
         self.rates = {d.info["source"]: spec_durations(d.text)[0] for d in spec.decls_of("given")}
         self.skipped = 0  # values with no JSON form
 
@@ -52,7 +53,8 @@ class InputGen:
                 pass  # the same instant
             elif out and roll < 0.55 and self.durations:
                 base = r.choice(out)
-                t = max(t, base + r.choice(self.durations) + r.choice(OFFSETS))
+                offsets = OFFSETS[:2] if "nanosecond" in self.avoid else OFFSETS
+                t = max(t, base + r.choice(self.durations) + r.choice(offsets))
             else:
                 t = t + Decimal(r.choice([1, 5, 10, 25, 50, 100, 200, 250, 300, 500])) / 1000
             out.append(exact_time(t))

@@ -75,8 +75,9 @@ def write_spec(spec, work):
 
 
 class Oracle:
-    def __init__(self, arbc, list_bound=4, temporal_bound=6, verify_timeout=10):
+    def __init__(self, arbc, list_bound=4, temporal_bound=6, verify_timeout=10, avoid=()):
         self.arbc = arbc
+        self.avoid = set(avoid)
         self.list_bound = list_bound
         self.temporal_bound = temporal_bound
         self.verify_timeout = verify_timeout
@@ -101,9 +102,9 @@ class Oracle:
         b = process_breach("arbc verify", rc, out, err)
         if b:
             res.breaches.append((b, None))
-            if b.claim == "timeout":
-                res.timeouts += 1
-            return None
+            res.timeouts += b.claim == "timeout"
+            if b.claim != "internal":  # an internal error still leaves a report to judge by
+                return None
         report = json.loads(out)
         res.verdict = report["verdict"]
         return report
@@ -138,7 +139,7 @@ class Oracle:
             return res
         model = Model(os.path.join(app_dir, "app.json"))
         claims = Claims(report, spec, model, self.list_bound)
-        gen = InputGen(rng, spec, self.sources(spec, model), self.list_bound)
+        gen = InputGen(rng, spec, self.sources(spec, model), self.list_bound, self.avoid)
         durations = spec_durations(spec.text())
         todo = [inputs] if inputs else [gen.make() for _ in range(runs)]
         for k, (msgs, end) in enumerate(todo):
@@ -179,8 +180,12 @@ class Oracle:
             return
         rc, out, err = self.arbc(["test", "--no-verify"] + files, cwd=work)
         b = process_breach("arbc test (counterexamples)", rc, out, err, ok=(0,))
+        if b and b.claim == "crash" and rc == 1:
+            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote passes "
+                         "`arbc test` (it asserts the violation, docs/checks.md#temporal)",
+                         "\n".join(ln for ln in out.splitlines() if ln.startswith(("FAIL", "  ")))[:800])
+        elif b and b.claim == "crash" and rc == 2:
+            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote is refused "
+                         "by `arbc test`", (out + err).strip().splitlines()[0][:600])
         if b:
-            if b.claim == "crash" and rc == 1:
-                b = C.Breach("replay", "a counterexample verify wrote replays as a passing test",
-                             "\n".join(ln for ln in out.splitlines() if ln.startswith(("FAIL", "  ")))[:800])
             res.breaches.append((b, None))

@@ -22,7 +22,8 @@ class Claims:
             for f in p.get("findings", []):
                 if f.get("location"):
                     found_lines.setdefault(f["location"]["line"], []).append(f["check"])
-            if p["verdict"] == "proved":
+            if not p["unknown_reason"] and not any(
+                    f["check"] in ("exclusive", "unknown", "internal") for f in p.get("findings", [])):
                 self.ports.append(p["port"])
                 self.data_pairs[p["port"]] = [pair(s)[:2] for s in p.get("exclusive_by_data", [])
                                               if pair(s)]

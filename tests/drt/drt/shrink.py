@@ -13,10 +13,6 @@ from .spec import Expr, Arbitrate, Connect, Decl, lit, BOOL, INT, FLOAT, STRING
 LEAVES = {BOOL: ["true", "false"], INT: ["0", "1"], FLOAT: ["0.0", "1.0"], STRING: ['""']}
 
 
-def same(breach, res):
-    return any(b.claim == breach.claim for b, _ in res.breaches)
-
-
 def fit_inputs(spec, inputs):
     """The messages whose port the spec still has, with the same type."""
     if not inputs:
@@ -35,7 +31,7 @@ def shrink(oracle, spec, inputs_file, breach, work, seconds):
         tries[0] += 1
         sub = os.path.join(work, f"shrink{tries[0]}")
         res = oracle.judge(cand_spec, sub, random.Random(0), 0, cand_inputs)
-        hit = [b for b, _ in res.breaches if b.claim == breach.claim]
+        hit = [b for b, _ in res.breaches if b.signature() == breach.signature()]
         return hit[0] if hit else None
 
     best = breach

@@ -46,8 +46,9 @@ class ValueGen:
     """Random values of a type; `numbers` are the spec's own constants, so thresholds are hit
     exactly and one ulp either side; `list_bound` is verify's --list-bound (longer lists too)."""
 
-    def __init__(self, rng, numbers=(), strings=(), list_bound=4):
+    def __init__(self, rng, numbers=(), strings=(), list_bound=4, avoid=()):
         self.rng = rng
+        self.avoid = set(avoid)
         self.numbers = list(numbers)
         self.strings = list(strings)
         self.list_bound = list_bound
@@ -58,6 +59,8 @@ class ValueGen:
             return r.random() < 0.5
         if ty == INT:
             pool = EDGE_INTS + [int(n) for n in self.numbers if float(n).is_integer() and abs(n) < 2**62]
+            if "int-edge" in self.avoid:
+                pool = [v for v in pool if abs(v) < 2**31]
             v = r.choice(pool) if r.random() < 0.6 else r.randint(-3, 12)
             return v + r.choice([0, 0, 1, -1]) if abs(v) < 2**62 else v
         if ty == FLOAT:
@@ -79,7 +82,8 @@ class ValueGen:
             v = float(r.choice(self.numbers))
             return r.choice([v, v, next_float(v), next_float(v, False), -v])
         if roll < 0.7:
-            return r.choice(EDGE_FLOATS)
+            v = r.choice(EDGE_FLOATS)
+            return v if "float-edge" not in self.avoid or 1e-300 < abs(v) < 1e300 else 0.5
         return round(r.uniform(-2, 2), r.choice([1, 2, 17]))
 
     def length(self):
@@ -87,7 +91,7 @@ class ValueGen:
         r = self.rng.random()
         if r < 0.15:
             return 0
-        if r < 0.8:
+        if r < 0.8 or "long-lists" in self.avoid:
             return self.rng.randint(1, self.list_bound)
         return self.rng.randint(self.list_bound + 1, self.list_bound + 3)
 
