@@ -146,7 +146,7 @@ def event_assert(run, model, port, rule, constraint, what):
     return out, outside
 
 
-def data_assert(run, port, rule, pred, what, needs_of):
+def data_assert(run, model, port, rule, pred, what, needs_of):
     """`assert M.p: RULE -> P(emitted);` (docs/checks.md#assert-over-data): every value RULE
     delivers makes P true (a P that reads a value that does not exist is false). A delivered
     value the trace cannot write (NaN, an infinity: `null`) is not judged (counted)."""
@@ -157,6 +157,8 @@ def data_assert(run, port, rule, pred, what, needs_of):
         if has_null(d["value"]):
             unjudged += 1
             continue
+        if not model.domain_holds(with_act(d, model)):
+            continue  # the rule is selected only outside the domain the proof assumes
         try:
             ok = evaluate(pred, {"emitted": d["value"]}) is True
         except (NoValue, ArithmeticError, KeyError, IndexError, TypeError):

@@ -118,6 +118,7 @@ class ExprGen:
         elif ty[0] == "list":
             m += [lambda: Expr("list", ty, [exact(g(ty[1], env, d, pure), ty[1])
                                             for _ in range(self.rng.randint(1, 3))])]
+
         return m
 
     def int_arith(self, env, d, pure):

@@ -74,7 +74,7 @@ class Claims:
                                                 d.info["constraint"], what)
                 res.outside += outside
             else:
-                found, unjudged = C.data_assert(run, d.info["port"], d.info["rule"], d.info["pred"],
+                found, unjudged = C.data_assert(run, m, d.info["port"], d.info["rule"], d.info["pred"],
                                                 what, self.needs)
                 res.unjudged += unjudged
             out += found

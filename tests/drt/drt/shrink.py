@@ -189,12 +189,13 @@ def expr_steps(spec, inputs):
                 target = list(subexprs(expr_slots(s)[si]))[ni]
                 new = copy.deepcopy(rep)
                 target.kind, target.ty, target.args, target.val = new.kind, new.ty, new.args, new.val
-                refresh_decls(s)
-                yield s, inputs
+                if refresh_decls(s):
+                    yield s, inputs
 
 
 def refresh_decls(spec):
-    """Reprints the declarations whose text holds an expression."""
+    """Reprints the declarations whose text holds an expression; False when an assert over data
+    no longer reads `emitted` (it would be an assert over events: another claim)."""
     for d in spec.decls:
         if not isinstance(d, Decl):
             continue
@@ -202,11 +203,14 @@ def refresh_decls(spec):
             d.text = f"event {d.info['event']} = {d.info['source']} : {d.info['pred'].text()}" + \
                 (f" for {d.info['for']}" if d.info["for"] else "") + ";"
         elif d.kind == "assert_data":
+            if "emitted" not in d.info["pred"].text():
+                return False
             d.text = f"assert {d.info['port']}: {d.info['rule']} -> {d.info['pred'].text()};"
         elif d.kind == "resource":
             w = d.info.get("when")
             d.text = f"resource {d.info['name']} {{ {', '.join(d.info['ports'])} }}" + \
                 (f" when {w.text()}" if w is not None else "") + ";"
+    return True
 
 
 def value_steps(spec, inputs):
