@@ -29,6 +29,7 @@ def main(argv=None):
     ap.add_argument("--shrink-seconds", type=float, default=180)
     ap.add_argument("--keep", action="store_true", help="keep the work folder")
     ap.add_argument("--specs", type=int, default=0, help="stop after this many specs (0: none)")
+    ap.add_argument("--only", type=int, default=0, help="judge only spec number N of the seed")
     ap.add_argument("--avoid", default="", help="generator features to leave out (comma list)")
     ap.add_argument("--avoid-open", action="store_true",
                     help="leave out the features tests/drt/open/AVOID names (open bugs)")
@@ -47,6 +48,10 @@ def main(argv=None):
     index = 0
     while time.monotonic() < deadline and not (args.specs and index >= args.specs):
         index += 1
+        if args.only and index != args.only:
+            if index > args.only:
+                break
+            continue
         rng = random.Random(f"{args.seed}/{index}")
         spec = SpecGen(rng, index, avoid).make()
         spec_work = os.path.join(work, f"spec{index}")

@@ -146,7 +146,7 @@ def event_assert(run, model, port, rule, constraint, what):
     return out, outside
 
 
-def data_assert(run, model, port, rule, pred, what, needs_of):
+def data_assert(run, model, port, rule, pred, what, needs_of, consts):
     """`assert M.p: RULE -> P(emitted);` (docs/checks.md#assert-over-data): every value RULE
     delivers makes P true (a P that reads a value that does not exist is false). A delivered
     value the trace cannot write (NaN, an infinity: `null`) is not judged (counted)."""
@@ -160,7 +160,7 @@ def data_assert(run, model, port, rule, pred, what, needs_of):
         if not model.domain_holds(with_act(d, model)):
             continue  # the rule is selected only outside the domain the proof assumes
         try:
-            ok = evaluate(pred, {"emitted": d["value"]}) is True
+            ok = evaluate(pred, {**consts, "emitted": d["value"]}) is True
         except (NoValue, ArithmeticError, KeyError, IndexError, TypeError):
             ok = False
         if not ok:
@@ -179,7 +179,7 @@ def has_null(v):
     return False
 
 
-def uses(d, pred):
+def uses(d, pred, consts):
     """Whether a delivery uses the resource (its `when` over `emitted`; none: every command).
     None when the delivered value cannot be judged (NaN or an infinity in it)."""
     if pred is None:
@@ -187,12 +187,12 @@ def uses(d, pred):
     if has_null(d["value"]):
         return None
     try:
-        return evaluate(pred, {"emitted": d["value"]}) is True
+        return evaluate(pred, {**consts, "emitted": d["value"]}) is True
     except (NoValue, ArithmeticError, KeyError, IndexError, TypeError):
         return False
 
 
-def resource(run, model, res, pairs, needs_of):
+def resource(run, model, res, pairs, needs_of, consts):
     """`resource R { P1, P2, ... } [when U];` proved (docs/checks.md#resource), per pair of rules
     (r1 into P1, r2 into P2) as the report lists it:
     - exclusive by events: no two deliveries of r1 and r2 that both use R at one instant from
@@ -210,7 +210,7 @@ def resource(run, model, res, pairs, needs_of):
         if d["delivered"] and d["port"] in res["ports"]:
             if not model.domain_holds(with_act(d, model)):
                 continue  # outside the domain the proof assumes (an exclusive group, invariant)
-            u = uses(d, res["when"])
+            u = uses(d, res["when"], consts)
             if u:
                 using.setdefault(d["conn"], []).append(d)
     for a, b, how in pairs:

@@ -62,8 +62,10 @@ def data_assert(g, a, rule):
 def temporal(g, a, events):
     r = g.rng
     sources = [x.source for x in a.rules]
+    derived = {d.info["event"]: d.info["source"] for d in g.spec.decls_of("derived")}
+    sources += [derived[e] for e in events if e in derived]
     if "shared-source-temporal" in g.avoid and len(set(sources)) < len(sources):
-        return None
+        return None  # a message that goes to a rule and another connection of the port
     rules = [x.name for x in a.rules]
     rule = r.choice(rules)
     others = [x for x in rules if x != rule]
@@ -97,17 +99,15 @@ def temporal(g, a, events):
 
 def response(g, a, rule, others, events, acts, w):
     r = g.rng
-    if others and r.random() < 0.6:
+    if others and (r.random() < 0.6 or "response-event" in g.avoid):
         trigger = r.choice(others) + (" stops" if r.random() < 0.4 else "")
+    elif "response-event" in g.avoid:
+        return None
     elif events or acts:
         trigger = r.choice(events + acts)
     else:
         return None
     answer = a.port if r.random() < 0.3 else rule
-    src = next(x.source for x in a.rules if x.name == rule)
-    if "response-unrated" in g.avoid and src not in g.rated:
-        g.rated.add(src)
-        g.spec.decls.append(Decl("given", f"given {src} every 100ms;", {"source": src}))
     cond = ""
     if events and r.random() < 0.4:
         cond = " while " + r.choice(events) + (f" and not {r.choice(events)}" if r.random() < 0.3 else "")

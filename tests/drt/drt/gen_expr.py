@@ -54,7 +54,8 @@ class ExprGen:
         if ty == FLOAT:
             if self.chance(0.15):
                 return lit(FLOAT, self.rng.choice(DURATION_LITS))
-            return lit(FLOAT, self.rng.choice(FLOAT_LITS))
+            pool = [f for f in FLOAT_LITS if "float-edge" not in self.avoid or f not in ("1e308", "1e-300")]
+            return lit(FLOAT, self.rng.choice(pool))
         if ty == STRING:
             return lit(STRING, self.rng.choice(STRING_LITS))
         if ty == VEC3:
@@ -162,8 +163,10 @@ class ExprGen:
                     self.rng.choice(["==", "!="]))
 
     def length(self, env, d):
-        lists = [n for n, t in env.items() if t[0] == "list" or t == STRING]
-        if not lists or self.chance(0.2):
+        lists = [n for n, t in env.items() if t[0] == "list" or (t == STRING and "string-len" not in self.avoid)]
+        if not lists:
+            return None if "string-len" in self.avoid else Expr("call", INT, [self.gen(STRING, env, d)], "len")
+        if self.chance(0.2) and "string-len" not in self.avoid:
             return Expr("call", INT, [self.gen(STRING, env, d)], "len")
         n = self.rng.choice(lists)
         return Expr("call", INT, [name(env[n], n)], "len")

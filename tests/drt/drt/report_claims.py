@@ -14,6 +14,7 @@ INT_EDGE = 2**62
 class Claims:
     def __init__(self, report, spec, model, list_bound):
         self.model = model
+        self.consts = const_env(spec)
         self.list_bound = list_bound
         inp = report["inputs"][0]
         self.ports, self.data_pairs = [], {}
@@ -75,11 +76,11 @@ class Claims:
                 res.outside += outside
             else:
                 found, unjudged = C.data_assert(run, m, d.info["port"], d.info["rule"], d.info["pred"],
-                                                what, self.needs)
+                                                what, self.needs, self.consts)
                 res.unjudged += unjudged
             out += found
         for info, pairs in self.resources:
-            out += C.resource(run, m, info, pairs, self.needs)
+            out += C.resource(run, m, info, pairs, self.needs, self.consts)
         out += self.judge_temporal(run, end, res)
         out += monitor_errors(run, m)
         return out
@@ -102,6 +103,18 @@ class Claims:
                                     f"{p['outcome']} (bound {p['bound']})",
                                     f"violated after {steps} decisions into {p['port']}: {what}"))
         return out
+
+
+def const_env(spec):
+    """The spec's constants, evaluated in order as the constant folder does."""
+    from .values import evaluate
+    env = {}
+    for n, e in spec.consts:
+        try:
+            env[n] = evaluate(e, env)
+        except Exception:  # noqa: BLE001 - a constant with no value is left out
+            pass
+    return env
 
 
 def pair(s):
