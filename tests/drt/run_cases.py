@@ -9,6 +9,7 @@ disagree on today's code; `--expect-disagreement` runs those and fails on one th
 usage: run_cases.py ARBC FOLDER... [--expect-disagreement]   (a FOLDER of case folders, or a case)
 """
 import os
+import shutil
 import sys
 import tempfile
 
@@ -50,7 +51,9 @@ def main():
                 print("  it agrees now: move it to tests/drt/cases/")
         else:
             print(f"PASS  {folder}" + (" (still disagrees)" if expect else ""))
-    print(f"{n} cases, {bad} failed (work folder {work})")
+    print(f"{n} cases, {bad} failed" + (f" (work folder {work})" if bad else ""))
+    if not bad:
+        shutil.rmtree(work, ignore_errors=True)
     return 1 if bad or n == 0 else 0
 
 

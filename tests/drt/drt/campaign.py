@@ -8,6 +8,7 @@ usage: python3 -m drt.campaign ARBC [SECONDS] [SEED] [--out DIR] [--runs N] [--n
 import argparse
 import os
 import random
+import shutil
 import sys
 import tempfile
 import time
@@ -86,6 +87,8 @@ def main(argv=None):
         print("drt: disagreements by claim: " + ", ".join(f"{k} {v}" for k, v in sorted(kinds.items())))
     if totals["disagreements"] or args.keep:
         print(f"drt: work folder kept: {work}")
+    else:
+        shutil.rmtree(work, ignore_errors=True)
     print(f"drt: {totals['specs']} specs, {totals['steps']} steps, "
           f"{totals['disagreements']} disagreements")
     return 1 if totals["disagreements"] else 0
