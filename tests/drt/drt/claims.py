@@ -81,7 +81,9 @@ def selection(run, model):
 
 
 def exclusive_by_events(run, model, port, data_pairs=()):
-    """A proved port (docs/checks.md: "no decision state selects two rules"): at every delivery
+    """A port whose report has no `exclusive`, `unknown` or `internal` finding (docs/checks.md:
+    "no decision state selects two rules"; other errors, such as a refuted assert or `unfed`,
+    leave that claim standing), except pairs exclusive by data (below): at every delivery
     of a rule r, the decision state with r's activity event added (set in the same step,
     docs/design.md#priorities-and-holds) satisfies no other rule's effective guard. Two
     deliveries from one event state of a `by priority` port, a higher rule's after a lower one's

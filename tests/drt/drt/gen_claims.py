@@ -66,6 +66,10 @@ def temporal(g, a, events):
     sources += [derived[e] for e in events if e in derived]
     if "shared-source-temporal" in g.avoid and len(set(sources)) < len(sources):
         return None  # a message that goes to a rule and another connection of the port
+    if "temporal-every" in g.avoid and body_has(a, lambda s: s.kind == "every"):
+        return None
+    if "temporal-set-for" in g.avoid and body_has(a, lambda s: s.kind == "set" and s.duration):
+        return None
     rules = [x.name for x in a.rules]
     rule = r.choice(rules)
     others = [x for x in rules if x != rule]
@@ -95,6 +99,13 @@ def temporal(g, a, events):
     if shape == "assume":
         return assume(g, a, rules)
     return None
+
+
+def body_has(a, test):
+    """Whether a statement of a rule of port `a` (nested ones included) passes `test`."""
+    def walk(stmts):
+        return any(test(s) or any(walk(b) for _, b in s.branches) for s in stmts)
+    return any(walk(r.body or []) for r in a.rules)
 
 
 def response(g, a, rule, others, events, acts, w):
