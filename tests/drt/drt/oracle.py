@@ -181,8 +181,8 @@ class Oracle:
         rc, out, err = self.arbc(["test", "--no-verify"] + files, cwd=work)
         b = process_breach("arbc test (counterexamples)", rc, out, err, ok=(0,))
         if b and b.claim == "crash" and rc == 1:
-            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote passes "
-                         "`arbc test` (it asserts the violation, docs/checks.md#temporal)",
+            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote fails under "
+                         "`arbc test` (it should show the violation again, docs/checks.md#temporal)",
                          "\n".join(ln for ln in out.splitlines() if ln.startswith(("FAIL", "  ")))[:800])
         elif b and b.claim == "crash" and rc == 2:
             b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote is refused "
