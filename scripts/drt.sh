@@ -13,5 +13,6 @@ seed=${2:-38}
 shift $(( $# > 2 ? 2 : $# ))
 arbc=${ARBC:-${ARBC_BUILD_DIR:-$root/build}/cli/arbc}
 out=${ARBC_DRT_OUT:-${ARBC_BUILD_DIR:-$root/build}/drt-found}
+export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
 cd "$root/tests/drt"
 exec python3 -m drt.campaign "$arbc" "$seconds" "$seed" --out "$out" "$@"
