@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Runs the kept cases of the random differential test (docs/reliability.md#random-differential-
-testing): each case folder (tests/drt/cases/NAME/: app.spec, spec.json, inputs.jsonl, end,
+"""Runs the kept cases of the random differential test
+(docs/reliability.md#random-differential-testing): each case folder (tests/drt/cases/NAME/: app.spec, spec.json, inputs.jsonl, end,
 README) is verified and run again on its inputs, and must now agree: no claim of the report
 broken by the run, no internal error, crash or hang. tests/drt/open/ holds the cases that still
 disagree on today's code; `--expect-disagreement` runs those and fails on one that agrees

@@ -12,6 +12,7 @@ Common ground, for every claim:
 - The decision state of a message on connection c into port P is P's container after c's
   `accept` ran (docs/design.md#the-message-path, step 2): the `set`/`unset` records before c's
   deliver or drop record, with entries lapsing at their exact expiry.
+- A record an `every D` block makes (a trig, at no message's instant) is at k * D exactly.
 - A message is identified by its source port and its index among that port's publications:
   the k-th decision of a connection is about the k-th message its source published.
 - A run that breaks a claim's premises (an `exclusive` group or `invariant` false in the state,
