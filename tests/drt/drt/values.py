@@ -18,7 +18,8 @@ UNWRITABLE = "NaN and infinities (the inputs file has no form for them yet)"
 EDGE_INTS = [0, 1, -1, 2, 3, 5, 7, 10, 100, INT64_MAX, INT64_MIN, INT64_MAX - 1, INT64_MIN + 1,
              2**53 + 1, -(2**62)]
 EDGE_FLOATS = [0.0, -0.0, 0.5, 0.1, 0.2, 0.3, 1.0, 1.5, 2.0, -1.0, 0.3333333333333333, 1e308,
-               -1e308, 5e-324, 1e-300, 0.49999999999999994, 0.7999999999999999, 3.75, 1e15 + 0.5]
+               -1e308, 5e-324, 1e-300, 0.49999999999999994, 0.7999999999999999, 3.75, 1e15 + 0.5,
+               math.nan, math.inf, -math.inf]  # drawn, then left out: see UNWRITABLE
 EDGE_STRINGS = ["", "a", "take", "é✓", "日本", 'a"b', "x\ny", "\\", "z" * 300, "idle", "e1"]
 
 
