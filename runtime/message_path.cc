@@ -307,9 +307,15 @@ void Runtime::quarantine(Connection& c, const std::string& why, bool destroy) {
   }
 }
 
-void Runtime::schedule_trig(Connection& c) {
+void Runtime::schedule_trig(Connection& c, bool restart) {
   if (c.trig_task) executor_->cancel(c.trig_task);
-  c.trig_task = executor_->post(now() + c.trig_interval, [this, &c] {
+  if (restart) {
+    c.trig_start = now();
+    c.trig_runs = 0;
+  }
+  ++c.trig_runs;
+  double at = c.trig_start + static_cast<double>(c.trig_runs) * c.trig_interval;
+  c.trig_task = executor_->post(at, [this, &c] {
     c.trig_task = 0;
     if (c.quarantined || !c.monitor) return;
     LuaCall call;
@@ -322,7 +328,7 @@ void Runtime::schedule_trig(Connection& c) {
     } else {
       c.consecutive_errors = 0;
     }
-    if (!c.quarantined && c.trig_task == 0) schedule_trig(c);
+    if (!c.quarantined && c.trig_task == 0) schedule_trig(c, false);
   });
 }
 
@@ -376,7 +382,7 @@ bool Runtime::Connection::set_constraint(std::string_view text, std::string* err
 
 void Runtime::Connection::set_trig_interval(double seconds) {
   trig_interval = seconds;
-  if (!quarantined && has_trig && runtime->started_) runtime->schedule_trig(*this);
+  if (!quarantined && has_trig && runtime->started_) runtime->schedule_trig(*this, true);
 }
 
 void Runtime::Connection::print(const std::string& line) {

@@ -275,5 +275,27 @@ TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
   EXPECT_EQ(s.delivered, 1u);
 }
 
+// Trig k runs at k * interval from when the interval was set, not at the previous trig plus the
+// interval: 20,000 additions of 1 ms drift off the instants the spec's `every 1ms` names, and an
+// event a trig sets then outlives the instant its lifetime ends at (tests/drt: the random
+// differential test saw it 1.2e-12 s late after 608 trigs of 200 ms).
+TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.connect("c", "Src.x", "Sink.x", "true",
+            "k, late = 0, 0\n"
+            "PortMonitor.create = function(o) PortMonitor.setTrigInterval(0.001) return true end\n"
+            "PortMonitor.trig = function() k = k + 1\n"
+            "  if PortMonitor.now() ~= k * 0.001 then late = late + 1 end end\n"
+            "PortMonitor.accept = function(m) return k > 19000 and late == 0 end\n");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 19.9995, "Src", "x", Value(0));
+  rt->advance(20);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.errors, 0u) << (t.reports.empty() ? "" : t.reports[0]);
+  EXPECT_EQ(s.delivered, 1u);
+}
+
 }  // namespace
 }  // namespace arbc

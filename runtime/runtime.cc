@@ -125,7 +125,7 @@ void Runtime::start() {
     if (c.trig_interval == 0 && c.model->trig_interval && *c.model->trig_interval > 0) {
       c.trig_interval = *c.model->trig_interval;
     }
-    if (c.trig_interval > 0 && c.has_trig && c.trig_task == 0) schedule_trig(c);
+    if (c.trig_interval > 0 && c.has_trig && c.trig_task == 0) schedule_trig(c, true);
   }
   for (auto& m : modules_) m->guarded("start", [&] { m->module->start(); });
   for (auto& m : modules_) {

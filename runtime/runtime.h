@@ -234,7 +234,8 @@ class Runtime {
   void quarantine(Connection& c, const std::string& why, bool destroy = true);
   // Counts, traces and reports an exception that escaped plugin code.
   void plugin_failed(PluginGuard& who, const char* callback, const std::string& what);
-  void schedule_trig(Connection& c);
+  // The next trig of c; `restart`: the interval was (re)set now, so trig 1 is one interval on.
+  void schedule_trig(Connection& c, bool restart);
   void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
   void publish_from(ModuleSlot& m, std::string_view port, Value&& v);
   // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;

@@ -65,7 +65,11 @@ void walk_stmt(const ast::Stmt& s, PathState& path, EventEffects& effects) {
 
 void walk(const ast::Block& block, PathState& path, EventEffects& effects) {
   for (const auto& s : block) {
-    if (path.rejects) return;
+    // A statement after an `accept false` never runs on a message, but an `every` block runs
+    // from trig() whatever the message path does: what it sets is set all the same (the proof
+    // had a port whose only setter was such a block never see the event:
+    // tests/drt/cases/temporal-every-after-reject).
+    if (path.rejects && s->kind != ast::Stmt::Kind::Every) continue;
     walk_stmt(*s, path, effects);
   }
 }

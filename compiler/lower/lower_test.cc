@@ -293,6 +293,21 @@ arbitrate Head.gaze {
   EXPECT_EQ(r->must_unset, (V{"b"}));
 }
 
+// An `every` block runs from trig whatever the message path does, so what it sets counts even
+// after an `accept false` that ends every message's path.
+TEST(LowerTest, AnEveryBlockAfterAcceptFalseStillSets) {
+  CompiledSpec c = compile_ok(spec(R"(
+event a, tick_seen;
+arbitrate Mouth.text {
+  ask: from Eye.face when a { accept false; set a; every 250ms { set tick_seen; } emit "hi"; }
+}
+)"));
+  ASSERT_TRUE(c.ok);
+  const model::Connection* ask = find_connection(c.lowered->app, "Mouth.text", "ask");
+  EXPECT_EQ(ask->sets, (V{"tick_seen"}));  // `set a` never runs: it follows the accept false
+  EXPECT_TRUE(ask->must_set.empty());
+}
+
 // ---- throttle, every, connect, script -------------------------------------------------------
 
 TEST(LowerTest, ThrottleAndEveryBecomeConnectionFields) {

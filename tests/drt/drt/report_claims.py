@@ -1,0 +1,160 @@
+"""What `arbc verify --format json` claims (docs/verify-json.md), read into the claims that
+claims.py judges runs by: proved ports (and their pairs exclusive by data), proved asserts (no
+finding at the assert's line), proved resources (their pairs, by events or by data), and
+properties over time that are proved or hold up to the bound."""
+import re
+
+from . import claims as C
+
+PAIR = re.compile(r"^'([^']+)' (?:\(into [^)]*\) )?and '([^']+)'(?: \(into [^)]*\))?"
+                  r"(?: \((one message|two messages)\))?")
+INT_EDGE = 2**62
+
+
+class Claims:
+    def __init__(self, report, spec, model, list_bound):
+        self.model = model
+        self.consts = const_env(spec)
+        self.list_bound = list_bound
+        inp = report["inputs"][0]
+        self.ports, self.data_pairs = [], {}
+        found_lines = {}
+        for p in inp.get("ports", []):
+            for f in p.get("findings", []):
+                if f.get("location"):
+                    found_lines.setdefault(f["location"]["line"], []).append(f["check"])
+            if not p["unknown_reason"] and not any(
+                    f["check"] in ("exclusive", "unknown", "internal") for f in p.get("findings", [])):
+                self.ports.append(p["port"])
+                self.data_pairs[p["port"]] = [pair(s)[:2] for s in p.get("exclusive_by_data", [])
+                                              if pair(s)]
+        known = {p["port"]: p for p in inp.get("ports", [])}
+        self.asserts = []
+        for d in spec.decls:
+            kind = getattr(d, "kind", None)
+            if kind not in ("assert", "assert_data"):
+                continue
+            line = spec.line_of.get(id(d))
+            port = known.get(d.info["port"])
+            if port is None or port["unknown_reason"] or line in found_lines:
+                continue
+            self.asserts.append((d, f"{d.text} (line {line})"))
+        self.resources = []
+        specs = {d.info["name"]: d.info for d in spec.decls_of("resource")}
+        for r in inp.get("resources", []):
+            if r["verdict"] != "proved" or r["name"] not in specs:
+                continue
+            pairs = [pair(s)[:2] + ("events",) for s in r.get("exclusive_by_events", []) if pair(s)]
+            pairs += [pair(s) for s in r.get("exclusive_by_data", []) if pair(s)]
+            self.resources.append((specs[r["name"]], pairs))
+        self.temporal = [t for t in inp.get("temporal", [])
+                         if t["outcome"] in ("proved", "holds-up-to-bound")]
+        for t in self.temporal:
+            t["_rules"] = model.ports.get(t["port"], {}).get("rules", [])
+        self.triggered = {c.destination for c in model.connections.values()
+                          if model.json["connections"] and trig(model, c.name)}
+
+    def needs(self, value):
+        """The data assumption of the report a message breaks, if any (a label, not a filter)."""
+        out = []
+        walk(value, self.list_bound, out)
+        return "; ".join(sorted(set(out)))
+
+    def judge(self, run, end, res):
+        m = self.model
+        out = C.selection(run, m)
+        for port in self.ports:
+            pairs = {tuple(p) for p in self.data_pairs.get(port, [])}
+            found, outside = C.exclusive_by_events(run, m, port, pairs)
+            out += found
+            res.outside += outside
+            out += C.exclusive_by_data(run, pairs, port, self.needs)
+        for d, what in self.asserts:
+            if d.kind == "assert":
+                found, outside = C.event_assert(run, m, d.info["port"], d.info["rule"],
+                                                d.info["constraint"], what)
+                res.outside += outside
+            else:
+                found, unjudged = C.data_assert(run, m, d.info["port"], d.info["rule"], d.info["pred"],
+                                                what, self.needs, self.consts)
+                res.unjudged += unjudged
+            out += found
+        for info, pairs in self.resources:
+            out += C.resource(run, m, info, pairs, self.needs, self.consts)
+        out += self.judge_temporal(run, end, res)
+        out += monitor_errors(run, m)
+        return out
+
+    def judge_temporal(self, run, end, res):
+        out = []
+        for p in self.temporal:
+            if any(C.assumption_broken(run, p["port"], a) is not None for a in p.get("assumptions", [])):
+                res.outside += 1
+                continue
+            if p["port"] in self.triggered and p["outcome"] != "proved":
+                continue
+            v = C.temporal(run, p, end)
+            if v is None:
+                continue
+            steps, what = v
+            if p["outcome"] == "proved" or steps <= p["bound"]:
+                line = (p.get("location") or {}).get("line")
+                out.append(C.Breach("temporal", f"{p['kind']} property at line {line}: "
+                                    f"{p['outcome']} (bound {p['bound']})",
+                                    f"violated after {steps} decisions into {p['port']}: {what}"))
+        return out
+
+
+def const_env(spec):
+    """The spec's constants, evaluated in order as the constant folder does."""
+    from .values import evaluate
+    env = {}
+    for n, e in spec.consts:
+        try:
+            env[n] = evaluate(e, env)
+        except Exception:  # noqa: BLE001 - a constant with no value is left out
+            pass
+    return env
+
+
+def pair(s):
+    m = PAIR.match(s)
+    return (m.group(1), m.group(2), m.group(3) or "events") if m else None
+
+
+def trig(model, name):
+    for c in model.json["connections"]:
+        if c["name"] == name:
+            return c.get("trig_interval") is not None
+    return False
+
+
+def walk(v, bound, out):
+    if isinstance(v, list):
+        if len(v) > bound:
+            out.append(f"a list of {len(v)} elements (--list-bound {bound})")
+        for x in v:
+            walk(x, bound, out)
+    elif isinstance(v, dict):
+        for x in v.values():
+            walk(x, bound, out)
+    elif isinstance(v, bool):
+        return
+    elif isinstance(v, int) and abs(v) >= INT_EDGE:
+        out.append("an int near 2^63 (64-bit overflow)")
+    elif isinstance(v, float) and (abs(v) >= 1e300 or (v != 0 and abs(v) < 1e-300)):
+        out.append("a float at the edge of the doubles (rounding, overflow to infinity)")
+
+
+def monitor_errors(run, model):
+    """A generated monitor never fails (docs/language.md#expressions: an expression with no
+    value drops the message as `no-value`); only a hand-written `script` may raise."""
+    out = []
+    for d in run.decisions:
+        if d["reason"] in ("monitor-error", "quarantined"):
+            c = model.connections[d["conn"]]
+            if not c.opaque:
+                out.append(C.Breach("monitor-error", f"the generated monitor of '{c.name}'",
+                                    f"{d['reason']} at {d['t']} s: {d['detail']} "
+                                    f"(message {run.message(d['msg'])!r})"))
+    return out

@@ -1,0 +1,284 @@
+"""Message values: random ones of a type (edge values included) as JSON for `--inputs`, and an
+evaluator of expressions over values with the machine's arithmetic (Lua 5.4: 64-bit wrapping
+integers, IEEE doubles, `/` always a float, floored `%`), for the properties over a delivered
+value (`assert ... -> P(emitted)`, a resource's `when`).
+
+A value here is Python's: bool, int, float, str, dict (vec3 {"x","y","z"}, records), list.
+"""
+import math
+import struct
+
+from .spec import BOOL, INT, FLOAT, STRING, VEC3
+
+INT64_MAX = 2**63 - 1
+INT64_MIN = -2**63
+# Floats the inputs file cannot carry today (JSON has no NaN or infinities; issue 39 item 4).
+UNWRITABLE = "NaN and infinities (the inputs file has no form for them yet)"
+
+EDGE_INTS = [0, 1, -1, 2, 3, 5, 7, 10, 100, INT64_MAX, INT64_MIN, INT64_MAX - 1, INT64_MIN + 1,
+             2**53 + 1, -(2**62)]
+EDGE_FLOATS = [0.0, -0.0, 0.5, 0.1, 0.2, 0.3, 1.0, 1.5, 2.0, -1.0, 0.3333333333333333, 1e308,
+               -1e308, 5e-324, 1e-300, 0.49999999999999994, 0.7999999999999999, 3.75, 1e15 + 0.5,
+               math.nan, math.inf, -math.inf]  # drawn, then left out: see UNWRITABLE
+EDGE_STRINGS = ["", "a", "take", "é✓", "日本", 'a"b', "x\ny", "\\", "z" * 300, "idle", "e1"]
+
+
+class NoValue(Exception):
+    """An expression without a value (an index out of range, min_by of an empty list)."""
+
+
+def wrap(i):
+    """An integer as Lua 5.4 holds it: 64-bit two's complement."""
+    i &= (1 << 64) - 1
+    return i - (1 << 64) if i >= 1 << 63 else i
+
+
+def next_float(x, up=True):
+    if math.isnan(x) or math.isinf(x):
+        return x
+    bits = struct.unpack("<q", struct.pack("<d", x))[0]
+    if x == 0.0:
+        return 5e-324 if up else -5e-324
+    bits += 1 if (x > 0) == up else -1
+    return struct.unpack("<d", struct.pack("<q", bits))[0]
+
+
+class ValueGen:
+    """Random values of a type; `numbers` are the spec's own constants, so thresholds are hit
+    exactly and one ulp either side; `list_bound` is verify's --list-bound (longer lists too)."""
+
+    def __init__(self, rng, numbers=(), strings=(), list_bound=4, avoid=()):
+        self.rng = rng
+        self.avoid = set(avoid)
+        self.numbers = list(numbers)
+        self.strings = list(strings)
+        self.list_bound = list_bound
+
+    def value(self, ty, flags=()):
+        r = self.rng
+        if ty == BOOL:
+            return r.random() < 0.5
+        if ty == INT:
+            pool = EDGE_INTS + [int(n) for n in self.numbers if float(n).is_integer() and abs(n) < 2**62]
+            if "int-edge" in self.avoid:
+                pool = [v for v in pool if abs(v) < 2**31]
+            v = r.choice(pool) if r.random() < 0.6 else r.randint(-3, 12)
+            return v + r.choice([0, 0, 1, -1]) if abs(v) < 2**62 else v
+        if ty == FLOAT:
+            return self.float_value()
+        if ty == STRING:
+            return r.choice(EDGE_STRINGS + self.strings + list(flags))
+        if ty == VEC3:
+            return {"x": self.float_value(), "y": self.float_value(), "z": self.float_value()}
+        if ty[0] == "list":
+            return [self.value(ty[1], flags) for _ in range(self.length())]
+        if ty[0] == "record":
+            return {f: self.value(ft, flags) for f, ft in ty[1]}
+        raise ValueError(ty)
+
+    def float_value(self):
+        r = self.rng
+        roll = r.random()
+        if roll < 0.35 and self.numbers:
+            v = float(r.choice(self.numbers))
+            return r.choice([v, v, next_float(v), next_float(v, False), -v])
+        if roll < 0.7:
+            v = r.choice(EDGE_FLOATS)
+            return v if "float-edge" not in self.avoid or 1e-300 < abs(v) < 1e300 else 0.5
+        return round(r.uniform(-2, 2), r.choice([1, 2, 17]))
+
+    def length(self):
+        """Empty, within the bound, or longer than --list-bound (which the proof assumes away)."""
+        r = self.rng.random()
+        if r < 0.15:
+            return 0
+        if r < 0.8 or "long-lists" in self.avoid:
+            return self.rng.randint(1, self.list_bound)
+        return self.rng.randint(self.list_bound + 1, self.list_bound + 3)
+
+    def status(self, flags):
+        """A status message: some of the feed's flags, sometimes an unknown or repeated one."""
+        out = [f for f in flags if self.rng.random() < 0.5]
+        if self.rng.random() < 0.1:
+            out.append(self.rng.choice(["unknown", ""] + list(flags)))
+        return out
+
+
+def lua_mod(a, b):
+    if isinstance(a, int) and isinstance(b, int):
+        if b == 0:
+            raise ArithmeticError("attempt to perform 'n%%0'")
+        m = a - (a // b) * b  # Python's // floors, as Lua's integer % does
+        return wrap(m)
+    a, b = float(a), float(b)
+    if b == 0 or math.isinf(a) or math.isnan(a) or math.isnan(b):
+        return math.nan
+    if math.isinf(b):
+        return a if (a >= 0) == (b > 0) or a == 0 else b
+    m = math.fmod(a, b)
+    if m != 0 and (m > 0) != (b > 0):
+        m += b
+    return m
+
+
+def arith(op, a, b):
+    if isinstance(a, dict) or isinstance(b, dict):
+        return vec_arith(op, a, b)
+    if op == "+" and isinstance(a, str):
+        return a + b
+    if op == "/":
+        a, b = float(a), float(b)
+        if b == 0:
+            return math.nan if a == 0 or math.isnan(a) else math.copysign(math.inf, a) * \
+                math.copysign(1, b)
+        return a / b
+    if op == "%":
+        return lua_mod(a, b)
+    if isinstance(a, int) and isinstance(b, int):
+        return wrap({"+": a + b, "-": a - b, "*": a * b}[op])
+    a, b = float(a), float(b)
+    try:
+        return {"+": a + b, "-": a - b, "*": a * b}[op]
+    except OverflowError:
+        return math.inf
+
+
+def vec_arith(op, a, b):
+    if op in ("+", "-"):
+        return {k: arith(op, a[k], b[k]) for k in "xyz"}
+    if op == "*":
+        v, k = (a, b) if isinstance(a, dict) else (b, a)
+        return {c: arith("*", v[c], k) for c in "xyz"}
+    return {c: arith("/", a[c], b) for c in "xyz"}
+
+
+def equal(a, b):
+    if isinstance(a, dict):
+        return set(a) == set(b) and all(equal(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return len(a) == len(b) and all(equal(x, y) for x, y in zip(a, b))
+    return a == b
+
+
+def compare(op, a, b):
+    if isinstance(a, str):
+        a, b = a.encode(), b.encode()
+    return {"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b}[op]
+
+
+def lua_min_max(which, args):
+    best = args[0]
+    for x in args[1:]:
+        if (which == "min" and x < best) or (which == "max" and best < x):
+            best = x
+    return best
+
+
+def length(v):
+    return len(v.encode()) if isinstance(v, str) else len(v)
+
+
+def evaluate(e, env):
+    """The value of Expr `e` with names bound in `env`; NoValue where Lua has none."""
+    k = e.kind
+    if k == "lit":
+        return literal(e)
+    if k == "name":
+        return env[e.val]
+    if k == "field":
+        return evaluate(e.args[0], env)[e.val]
+    if k == "index":
+        xs, i = evaluate(e.args[0], env), evaluate(e.args[1], env)
+        if not 0 <= i < len(xs):
+            raise NoValue()
+        return xs[i]
+    if k == "neg":
+        v = evaluate(e.args[0], env)
+        if isinstance(v, dict):
+            return {c: -v[c] for c in "xyz"}
+        return wrap(-v) if isinstance(v, int) else -v
+    if k == "not":
+        return not evaluate(e.args[0], env)
+    if k == "bin":
+        return binary(e, env)
+    if k == "call":
+        return call(e, env)
+    if k == "record":
+        return {f: evaluate(a, env) for f, a in zip(e.val, e.args)}
+    if k == "list":
+        return [evaluate(a, env) for a in e.args]
+    raise ValueError(k)
+
+
+def binary(e, env):
+    op = e.val
+    if op == "and":
+        return evaluate(e.args[0], env) and evaluate(e.args[1], env)
+    if op == "or":
+        return evaluate(e.args[0], env) or evaluate(e.args[1], env)
+    a, b = evaluate(e.args[0], env), evaluate(e.args[1], env)
+    if op == "==":
+        return equal(a, b)
+    if op == "!=":
+        return not equal(a, b)
+    if op in ("<", "<=", ">", ">="):
+        return compare(op, a, b)
+    if op == "+" and isinstance(a, list):
+        return a + b
+    return arith(op, a, b)
+
+
+def call(e, env):
+    f = e.val
+    if f in ("min_by", "max_by"):
+        xs, lam = evaluate(e.args[0], env), e.args[1]
+        best = best_key = None
+        for x in xs:
+            key = evaluate(lam.args[0], {**env, lam.val: x})
+            if best is None or (key < best_key if f == "min_by" else key > best_key):
+                best, best_key = x, key
+        if best is None:
+            raise NoValue()
+        return best
+    args = [evaluate(a, env) for a in e.args]
+    if f == "len":
+        return length(args[0])
+    if f == "abs":
+        return wrap(abs(args[0])) if isinstance(args[0], int) else abs(args[0])
+    if f in ("min", "max"):
+        if len(args) == 1:
+            if not args[0]:
+                raise NoValue()
+            args = args[0]
+        return lua_min_max(f, args)
+    if f == "vec3":
+        return {"x": float(args[0]), "y": float(args[1]), "z": float(args[2])}
+    if f == "norm":
+        v = args[0]
+        return math.sqrt(arith("+", arith("+", v["x"] * v["x"], v["y"] * v["y"]), v["z"] * v["z"]))
+    if f == "dist":
+        d = vec_arith("-", args[0], args[1])
+        return math.sqrt(d["x"] * d["x"] + d["y"] * d["y"] + d["z"] * d["z"])
+    raise ValueError(f)
+
+
+def literal(e):
+    t = e.val
+    if e.ty == BOOL:
+        return t == "true"
+    if e.ty == STRING:
+        return bytes(t[1:-1], "utf-8").decode("unicode_escape").encode("latin-1").decode("utf-8")
+    for unit, scale in (("ms", 0.001), ("min", 60.0), ("s", 1.0)):
+        if t.endswith(unit) and not t[0].isalpha():
+            return float(t[: -len(unit)]) * scale
+    if "." in t or "e" in t:
+        return float(t)
+    v = int(t)
+    return wrap(v)
+
+
+def to_json(v):
+    """A value as the inputs file writes it; None when it has no JSON form (NaN, infinities)."""
+    if isinstance(v, float) and (math.isnan(v) or math.isinf(v)):
+        return None
+    return v
