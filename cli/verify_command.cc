@@ -178,6 +178,30 @@ bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>
   return false;
 }
 
+// Writes the reports as --format asks; the exit code of the whole command.
+int finish(const VerifyArgs& a, const std::vector<verify::InputReport>& reports, bool bad_input) {
+  print_internal_errors(reports);
+  if (!a.counterexamples.empty() && !write_counterexamples(reports, a.counterexamples))
+    return kExitRuntimeFailure;
+  std::string out;
+  if (a.format == "json") {
+    out = verify::format_json(reports, a.stats);
+  } else if (a.format == "sarif") {
+    out = verify::format_sarif(reports, ARBC_VERSION);
+  } else if (std::any_of(reports.begin(), reports.end(),
+                         [](const verify::InputReport& r) { return !r.bad_input(); })) {
+    SourceCache sources;
+    out = verify::format_text(reports, &sources, a.stats);
+  }
+  std::fputs(out.c_str(), stdout);
+
+  if (bad_input) return kExitBadInput;
+  for (const verify::InputReport& r : reports) {
+    if (r.report.verdict != verify::Verdict::Proved) return kExitRefuted;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int verify_command(std::span<char*> args) {
@@ -229,6 +253,13 @@ int verify_command(std::span<char*> args) {
     options.runner = &runner;
     RuntimeTestReplayer replayer(input);
     options.test_replayer = &replayer;
+    options.on_stuck = [&a, &reports, &app, &input, bad_input] {
+      std::vector<verify::InputReport> all = reports;  // what is done, and this input unknown
+      all.push_back({input, verify::stuck_report(*app, a.options.timeout_seconds)});
+      int code = finish(a, all, bad_input);
+      std::fflush(stdout);
+      std::_Exit(code);  // the main thread is inside Z3 and cannot be ended otherwise
+    };
     std::optional<verify::VerifyReport> report = verify::verify_app(*app, options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
@@ -239,26 +270,7 @@ int verify_command(std::span<char*> args) {
     reports.push_back({input, std::move(*report)});
   }
 
-  print_internal_errors(reports);
-  if (!a.counterexamples.empty() && !write_counterexamples(reports, a.counterexamples))
-    return kExitRuntimeFailure;
-  std::string out;
-  if (a.format == "json") {
-    out = verify::format_json(reports, a.stats);
-  } else if (a.format == "sarif") {
-    out = verify::format_sarif(reports, ARBC_VERSION);
-  } else if (std::any_of(reports.begin(), reports.end(),
-                         [](const verify::InputReport& r) { return !r.bad_input(); })) {
-    SourceCache sources;
-    out = verify::format_text(reports, &sources, a.stats);
-  }
-  std::fputs(out.c_str(), stdout);
-
-  if (bad_input) return kExitBadInput;
-  for (const verify::InputReport& r : reports) {
-    if (r.report.verdict != verify::Verdict::Proved) return kExitRefuted;
-  }
-  return kExitOk;
+  return finish(a, reports, bad_input);
 }
 
 }  // namespace arbc::cli

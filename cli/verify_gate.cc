@@ -1,6 +1,7 @@
 #include "cli/verify_gate.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "cli/build_summary.h"
 #include "cli/commands.h"
@@ -27,6 +28,12 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   options.runner = &runner;
   RuntimeTestReplayer replayer(input);  // and counterexamples over time
   options.test_replayer = &replayer;
+  options.on_stuck = [&app, &input, &refusal, command, &options] {
+    verify::VerifyReport stuck = verify::stuck_report(app, options.timeout_seconds);
+    std::fprintf(stderr, "%s: %s\n%s: verification unknown; %s\n", input.c_str(),
+                 stuck.app_findings[0].message.c_str(), command, refusal.c_str());
+    std::_Exit(kExitRefuted);  // the main thread is inside Z3 and cannot be ended otherwise
+  };
   std::string error;
   std::optional<verify::VerifyReport> verified = verify::verify_app(app, options, &error);
   if (!verified) {

@@ -120,10 +120,7 @@ Answer DataQuery::check(const z3::expr_vector& assumptions) {
   if (r == z3::sat) return Answer::Sat;
   if (r == z3::unsat) return Answer::Unsat;
   std::string why = solver_.reason_unknown();
-  unknown_reason_ =
-      why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
-          ? "timeout"
-          : "the solver gave up (" + why + ")";
+  unknown_reason_ = stopped_by_deadline(why) ? "timeout" : "the solver gave up (" + why + ")";
   return Answer::Unknown;
 }
 

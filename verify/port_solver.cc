@@ -55,10 +55,7 @@ Answer PortSolver::run(const z3::expr_vector& assumptions) {
         return last_ = Answer::Unsat;
       case z3::unknown: {
         std::string why = solver_.reason_unknown();
-        unknown_reason_ =
-            (why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos)
-                ? "timeout"
-                : "resource limit (" + why + ")";
+        unknown_reason_ = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
         return last_ = Answer::Unknown;
       }
     }

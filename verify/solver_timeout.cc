@@ -14,4 +14,10 @@ bool SolverTimeout::arm(z3::solver& solver) {
   return true;
 }
 
+bool stopped_by_deadline(const std::string& why) {
+  for (const char* word : {"timeout", "canceled", "interrupted"})
+    if (why.find(word) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace arbc::verify

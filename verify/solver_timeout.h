@@ -14,6 +14,7 @@
 #include <z3++.h>
 
 #include <chrono>
+#include <string>
 
 namespace arbc::verify {
 
@@ -31,5 +32,9 @@ class SolverTimeout {
   Clock::time_point deadline_;
   long long armed_ms_ = 0;  // the timeout last set; 0: none yet
 };
+
+// True when Z3's reason for `unknown` is the deadline: its own timeout ("timeout",
+// "canceled") or the watchdog's interrupt ("interrupted", verify/solver_watchdog.h).
+bool stopped_by_deadline(const std::string& reason_unknown);
 
 }  // namespace arbc::verify

@@ -1,8 +1,11 @@
 #include "verify/verify.h"
 
+#include <cstdio>
+
 #include "verify/port_checks.h"
 #include "verify/port_scope.h"
 #include "verify/resource_checks.h"
+#include "verify/solver_watchdog.h"
 #include "verify/structural_checks.h"
 #include "verify/temporal/confirm.h"
 #include "verify/temporal/property.h"
@@ -114,6 +117,7 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   run_structural_checks(app, options.strict, structural);
 
   z3::context ctx;  // one per run: creating a context costs tens of milliseconds
+  SolverWatchdog watchdog(ctx, deadline, options.on_stuck);  // where Z3's timeout is not kept
   DataQuery data(app, ctx, options.list_bound, deadline);
   for (const PortScope& scope : scopes) {
     PortResult result;
@@ -165,6 +169,37 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);
+  return report;
+}
+
+VerifyReport stuck_report(const model::App& app, double timeout_seconds) {
+  VerifyReport report;
+  report.app = app.name;
+  report.spec_file = app.spec_file;
+  report.verdict = Verdict::Unknown;
+  for (const model::ArbitratedPort& port : app.arbitrated_ports) {
+    PortResult r;  // listed, so the report does not read as an app without ports
+    r.port = port.port;
+    r.by_priority = port.by_priority;
+    r.loc = port.loc;
+    r.rules = port.rules;
+    r.verdict = Verdict::Unknown;
+    r.unknown_reason = "timeout";
+    report.ports.push_back(std::move(r));
+  }
+  Finding f;
+  f.check = kCheckUnknown;
+  f.severity = Severity::Error;
+  char limit[32];
+  std::snprintf(limit, sizeof limit, "%gs", timeout_seconds);
+  f.message = std::string("no verdict within the time limit (--timeout ") + limit +
+              "): the solver did not stop when interrupted, so the checks after that query "
+              "did not run (Z3 4.8 does not always stop inside nonlinear arithmetic)";
+  f.notes.push_back(
+      {"raise --timeout, or write the rule without multiplying, dividing or "
+       "taking norms of message fields; report the spec if it is small",
+       {}});
+  report.app_findings.push_back(std::move(f));
   return report;
 }
 

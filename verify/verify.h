@@ -4,6 +4,7 @@
 // verify app.json` give the same proof.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,10 @@ struct VerifyOptions {
   // Replays counterexamples over time; without one, a violation found in the model cannot be
   // confirmed and is reported as unknown.
   const TestReplayer* test_replayer = nullptr;
+  // Called once, on another thread, when a solver query has not returned 5 s after the
+  // deadline although interrupted (Z3 does not always stop: verify/solver_watchdog.h). The
+  // call inside Z3 cannot be ended; a command line ends the process with the verdict unknown.
+  std::function<void()> on_stuck;
 };
 
 // Verifies every arbitrated port of `app`. Never throws; solver trouble becomes an unknown
@@ -80,5 +85,10 @@ struct VerifyOptions {
 // names an unknown rule): a bad-input error, not a finding.
 std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOptions& options,
                                        std::string* err);
+
+// The report of an app whose verification could not be ended at the deadline (on_stuck): the
+// verdict unknown, every port unknown, one app finding saying why, and nothing else (the checks
+// after the stuck query never ran).
+VerifyReport stuck_report(const model::App& app, double timeout_seconds);
 
 }  // namespace arbc::verify

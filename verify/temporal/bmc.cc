@@ -23,10 +23,7 @@ z3::check_result run(z3::solver& solver, SolverTimeout& timeout, std::string* re
     z3::check_result r = solver.check();
     if (r == z3::unknown) {
       std::string why = solver.reason_unknown();
-      *reason =
-          why.find("timeout") != std::string::npos || why.find("canceled") != std::string::npos
-              ? "timeout"
-              : "resource limit (" + why + ")";
+      *reason = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
     }
     return r;
   } catch (const z3::exception& e) {

@@ -1,0 +1,49 @@
+#include "verify/solver_watchdog.h"
+
+#include <utility>
+
+namespace arbc::verify {
+
+SolverWatchdog::SolverWatchdog(z3::context& ctx, Clock::time_point deadline,
+                               std::function<void()> on_stuck, Clock::duration grace)
+    : ctx_(ctx),
+      deadline_(deadline),
+      on_stuck_(std::move(on_stuck)),
+      grace_(grace),
+      thread_([this] { watch(); }) {}
+
+SolverWatchdog::~SolverWatchdog() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+bool SolverWatchdog::fired() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return fired_;
+}
+
+void SolverWatchdog::watch() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (wake_.wait_until(lock, deadline_, [this] { return stop_; })) return;
+  // An interrupt reaches only the query in flight, so it is repeated: a query that started
+  // just before the deadline (SolverTimeout::arm let it) is stopped by the next one.
+  Clock::time_point give_up = Clock::now() + grace_;
+  while (!stop_) {
+    ctx_.interrupt();
+    fired_ = true;
+    if (on_stuck_ && Clock::now() >= give_up) {
+      std::function<void()> last_word = std::move(on_stuck_);
+      on_stuck_ = nullptr;
+      lock.unlock();  // the callback may end the process; nothing of ours is held meanwhile
+      last_word();
+      lock.lock();
+    }
+    wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return stop_; });
+  }
+}
+
+}  // namespace arbc::verify

@@ -1,0 +1,60 @@
+#include "verify/solver_watchdog.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+namespace arbc::verify {
+namespace {
+
+// Cubes: x^3 + y^3 = z^3 has no positive solution (Fermat, n = 3) and Z3's nonlinear integer
+// search does not find that out; it runs until stopped. Z3's own `timeout` parameter is not set
+// here, so only the watchdog can end the query.
+TEST(SolverWatchdogTest, AQueryZ3DoesNotStopIsInterruptedAtTheDeadline) {
+  z3::context ctx;
+  z3::solver s(ctx);
+  z3::expr x = ctx.int_const("x"), y = ctx.int_const("y"), z = ctx.int_const("z");
+  s.add(x > 0 && y > 0 && z > 0 && x * x * x + y * y * y == z * z * z);
+  SolverWatchdog watchdog(ctx, SolverWatchdog::Clock::now() + std::chrono::milliseconds(200));
+  EXPECT_EQ(s.check(), z3::unknown);
+  EXPECT_TRUE(watchdog.fired());
+  EXPECT_NE(s.reason_unknown().find("interrupted"), std::string::npos) << s.reason_unknown();
+}
+
+TEST(SolverWatchdogTest, ARunThatEndsBeforeTheDeadlineIsNotInterrupted) {
+  z3::context ctx;
+  z3::solver s(ctx);
+  {
+    SolverWatchdog watchdog(ctx, SolverWatchdog::Clock::now() + std::chrono::hours(1));
+    z3::expr x = ctx.int_const("x");
+    s.add(x * x == 49 && x < 0);
+    EXPECT_EQ(s.check(), z3::sat);
+    EXPECT_FALSE(watchdog.fired());
+  }                               // the destructor returns at once, long before the hour
+  EXPECT_EQ(s.check(), z3::sat);  // and a later query on the context still runs
+}
+
+// A query Z3 4.8.12 does not stop even when interrupted (found by tests/drt: the distance
+// between points built from an int field): the watchdog's last word, on_stuck, is called once the
+// grace is over. In a child process, as the thread inside Z3 cannot be ended; a Z3 that stops by
+// itself ends it too.
+TEST(SolverWatchdogDeathTest, AQueryThatIgnoresTheInterruptEndsThroughOnStuck) {
+  // r = |0.5 - p| for an int p: sat (p = 0), and Z3 4.8.12 searches forever.
+  const char* query =
+      "(declare-fun p () Int) (declare-fun r () Real)"
+      "(assert (and (>= r 0.0) (= (* r r) (* (- 0.5 (to_real p)) (- 0.5 (to_real p))))))";
+  EXPECT_EXIT(
+      {
+        z3::context ctx;
+        z3::solver s(ctx);
+        s.from_string(query);
+        SolverWatchdog watchdog(
+            ctx, SolverWatchdog::Clock::now() + std::chrono::milliseconds(100),
+            [] { std::_Exit(7); }, std::chrono::milliseconds(300));
+        std::_Exit(s.check() == z3::unknown ? 7 : 9);
+      },
+      testing::ExitedWithCode(7), "");
+}
+
+}  // namespace
+}  // namespace arbc::verify
