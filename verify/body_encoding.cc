@@ -262,6 +262,11 @@ Ev Encoder::mod(const SymValue& a, const SymValue& b) {
 }
 
 Ev Encoder::vec_op(const std::string& op, const Ev& a, const Ev& b) {
+  // The other side of a scaling must be a number: an operand the encoding could not read
+  // (bad(): a Bool placeholder) would reach Z3 as Real * Bool, which crashes it.
+  const Ev& other = a.v.kind == K::Vec3 ? b : a;
+  if (op != "neg" && other.v.kind != K::Vec3 && !other.v.numeric())
+    return bad("`" + op + "` of a vec3 and a value not encoded");
   SymValue v(K::Vec3, ctx_.bool_val(true));
   z3::expr ok = a.ok && b.ok;
   for (size_t k = 0; k < 3; ++k) {
