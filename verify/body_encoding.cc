@@ -16,6 +16,10 @@ using K = SymValue::Kind;
 struct Ev {
   SymValue v;
   z3::expr ok;
+  // bad(): the value could not be encoded and `v` is a Bool placeholder. Every expression
+  // over it is unread too, without touching Z3: the placeholder's sort and shape are not the
+  // operand's, and Z3 crashes on mismatched sorts (tests/drt: Real * Bool, a norm of a Bool).
+  bool unread = false;
 };
 
 // A numeral that is not zero: the only divisors `/` and `%` encode.
@@ -46,8 +50,10 @@ class Encoder {
   }
   Ev bad(const std::string& why) {
     opaque(why);
-    return {SymValue(ctx_), ctx_.bool_val(false)};
+    return {SymValue(ctx_), ctx_.bool_val(false), true};
   }
+  // An expression over an unread operand: the reason is given already.
+  Ev unread() { return {SymValue(ctx_), ctx_.bool_val(false), true}; }
   std::string fresh_name(const std::string& what) {
     return prefix_ + "." + what + "#" + std::to_string(counter_++);
   }
@@ -100,6 +106,7 @@ Ev Encoder::eval(const BodyExpr& e) {
     }
     case BodyExpr::Op::Field: {
       Ev base = eval(e.args[0]);
+      if (base.unread) return unread();
       if (base.v.kind == K::Vec3) {
         int k = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
         if (k < 0) return bad("vec3 has no field '" + e.text + "'");
@@ -109,16 +116,21 @@ Ev Encoder::eval(const BodyExpr& e) {
       if (!f) return bad("no field '" + e.text + "'");
       return {*f, base.ok};
     }
-    case BodyExpr::Op::Index:
-      return index(eval(e.args[0]), eval(e.args[1]));
+    case BodyExpr::Op::Index: {
+      Ev list = eval(e.args[0]), i = eval(e.args[1]);
+      if (list.unread || i.unread) return unread();
+      return index(list, i);
+    }
     case BodyExpr::Op::Neg: {
       Ev a = eval(e.args[0]);
+      if (a.unread) return unread();
       if (a.v.kind == K::Vec3) return vec_op("neg", a, a);
       if (!a.v.numeric()) return bad("`-` of a value that is not a number");
       return {{a.v.kind, -a.v.scalar}, a.ok};
     }
     case BodyExpr::Op::Not: {
       Ev a = eval(e.args[0]);
+      if (a.unread) return unread();
       return {{K::Bool, !a.v.scalar}, a.ok};
     }
     case BodyExpr::Op::Binary:
@@ -128,6 +140,7 @@ Ev Encoder::eval(const BodyExpr& e) {
       z3::expr ok = ctx_.bool_val(true);
       for (size_t i = 0; i < e.args.size(); ++i) {
         Ev f = eval(e.args[i]);
+        if (f.unread) return unread();
         ok = ok && f.ok;
         fields.emplace(e.names[i], f);
       }
@@ -143,6 +156,7 @@ Ev Encoder::eval(const BodyExpr& e) {
       z3::expr ok = ctx_.bool_val(true);
       for (const BodyExpr& a : e.args) {
         Ev x = eval(a);
+        if (x.unread) return unread();
         ok = ok && x.ok;
         l.items.push_back(x.v);
       }
@@ -176,12 +190,14 @@ Ev Encoder::binary(const BodyExpr& e) {
   if (op == "and" || op == "or") {
     // Lua evaluates the right side only when the left does not decide.
     Ev b = eval(e.args[1]);
+    if (a.unread || b.unread) return unread();
     bool is_and = op == "and";
     z3::expr value = is_and ? (a.v.scalar && b.v.scalar) : (a.v.scalar || b.v.scalar);
     z3::expr ok = a.ok && (is_and ? z3::implies(a.v.scalar, b.ok) : (a.v.scalar || b.ok));
     return {{K::Bool, value}, ok};
   }
   Ev b = eval(e.args[1]);
+  if (a.unread || b.unread) return unread();
   if (op == "==" || op == "!=") {
     std::optional<z3::expr> eq = sym_equal(a.v, b.v);
     if (!eq) return bad("`" + op + "` of values of different shapes");
@@ -309,6 +325,7 @@ Ev Encoder::call(const BodyExpr& e) {
   z3::expr ok = ctx_.bool_val(true);
   for (const BodyExpr& a : e.args) {
     args.push_back(eval(a));
+    if (args.back().unread) return unread();
     ok = ok && args.back().ok;
   }
   if (f == "len") {
@@ -327,6 +344,8 @@ Ev Encoder::call(const BodyExpr& e) {
     return {v, ok};
   }
   if ((f == "norm" && args.size() == 1) || (f == "dist" && args.size() == 2)) {
+    for (const Ev& a : args)
+      if (a.v.kind != K::Vec3) return bad(f + " of a value that is not a vec3");
     z3::expr square = ctx_.real_val(0);
     for (size_t k = 0; k < 3; ++k) {
       z3::expr d = args[0].v.items[k].scalar;
@@ -343,6 +362,7 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
   if (e.args.size() != 2 || e.args[1].op != BodyExpr::Op::Lambda)
     return bad(e.text + " without a lambda");
   Ev list = eval(e.args[0]);
+  if (list.unread) return unread();
   if (list.v.kind != K::List || list.v.items.empty()) return bad(e.text + " of an empty literal");
   const BodyExpr& lambda = e.args[1];
   z3::expr ok = list.ok && list.v.scalar > 0;
@@ -353,6 +373,7 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
     if (auto it = params_.find(lambda.text); it != params_.end()) saved = it->second;
     params_.insert_or_assign(lambda.text, list.v.items[k]);
     Ev key = eval(lambda.args[0]);
+    if (key.unread) return unread();
     if (saved)
       params_.insert_or_assign(lambda.text, *saved);
     else
@@ -381,6 +402,7 @@ Ev Encoder::min_max(const BodyExpr& e, bool min) {
   std::optional<z3::expr> len;
   for (const BodyExpr& a : e.args) {
     Ev x = eval(a);
+    if (x.unread) return unread();
     ok = ok && x.ok;
     if (x.v.kind == K::List && e.args.size() == 1) {
       len = x.v.scalar;
