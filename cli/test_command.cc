@@ -28,7 +28,6 @@
 #include "compiler/codegen/write_artifacts.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
-#include "compiler/lower/test_cases.h"
 #include "core/diagnostic.h"
 #include "core/join.h"
 #include "runtime/app_loader.h"
@@ -130,7 +129,7 @@ int prepare_spec(const std::string& spec, bool no_verify, Seen* seen, Scratch* s
     return kExitRuntimeFailure;
   }
   *app = std::move(*loaded);
-  *tests = lower_tests(*lowered.spec);
+  *tests = lowered.tests;
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/body_text.h"
+#include "core/body_types.h"
 #include "core/instant.h"
 #include "core/json_diagnostic.h"
 
@@ -418,6 +419,7 @@ std::optional<App> read_app(const Json& root, std::string* err) {
             read_array(root, r, "", "assumptions", false, &app.assumptions, read_assumption, err) &&
             read_array(root, r, "", "rates", false, &app.rates, read_rate, err);
   if (!ok) return std::nullopt;
+  type_bodies(app);  // the types the text leaves out, as lowering gives them (body_types.h)
   return app;
 }
 

@@ -1,15 +1,21 @@
-// A rule's monitor body in the core model (docs/app-json.md#bodies): what the verifier encodes
-// to reason about message data (docs/design.md#the-proof). Lowering writes it from the checked
-// AST with names resolved and constants folded; app.json stores it as text (body_text.h), so
-// `arbc verify app.json` proves what `arbc verify SPEC` proves without the compiler.
+// A rule's monitor body in the core model (docs/app-json.md#bodies): the one translation of a
+// body that both the verifier encodes (docs/design.md#the-proof) and the Lua generators write
+// (docs/lowering.md#the-generated-lua). Lowering writes it from the checked AST with names
+// resolved, constants folded and every int-to-float promotion explicit (`ToFloat`); app.json
+// stores it as text (body_text.h), so `arbc verify app.json` proves what `arbc verify SPEC`
+// proves without the compiler.
 //
-// Types are not stored: every node's type follows from the source port's type and the node's
-// operands, exactly as sema typed them (an `int` literal is Int, a `float` literal Float).
+// Static types are not in the text: core/body_types.h derives them from the message's type, the
+// one function both lowering and the app.json reader call, so a body has the same types
+// whichever way it was made (an `int` literal is Int, a `float` literal Float).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "core/builtins.h"
+#include "core/type.h"
 
 namespace arbc::model {
 
@@ -30,14 +36,22 @@ struct BodyExpr {
     Record,   // { names[i]: args[i] }
     List,     // [ args... ]
     Lambda,   // text => args[0]
-    Call,     // text(args...), text a builtin (len min_by max_by dist norm abs min max now vec3)
+    Call,     // text(args...): builtin says which (core/builtins.h), text is its name
+    ToFloat,  // args[0], an int, as a float: where the spec's type is float and the operand int
+              // (docs/design.md#numbers-at-run-time)
   };
   Op op = Op::Bool;
+  Builtin builtin = Builtin::None;  // Call; None: a name no builtin has (opaque to the proof)
   std::string text;
   double number = 0;
   bool boolean = false;
   std::vector<std::string> names;  // Record
   std::vector<BodyExpr> args;
+  TypePtr type;  // the static type (core/body_types.h); null for a lambda or an ill-typed node
+  // Int / Float / String / Bool that fold a named `const`: its name and where it is declared,
+  // so that generated Lua can define it once and name it. Not in app.json; no proof reads it.
+  std::string constant;
+  int constant_line = 0, constant_column = 0;
 };
 
 struct BodyStmt {

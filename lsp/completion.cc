@@ -1,11 +1,12 @@
 // Completion: after `X.`, the ports of module X or the fields of X's record (or vec3) type;
-// elsewhere the language's keywords and the names in scope: declarations, and the locals of
-// the rule being written. Works from the last text that parsed, since the text being typed
-// usually does not.
+// elsewhere the language's keywords, its builtin functions (core/builtins.h) and the names in
+// scope: declarations, and the locals of the rule being written. Works from the last text that
+// parsed, since the text being typed usually does not.
 #include <cctype>
 #include <set>
 
 #include "compiler/frontend/grammar_info.h"
+#include "core/builtins.h"
 #include "lsp/features.h"
 #include "lsp/lookup.h"
 
@@ -133,6 +134,11 @@ nlohmann::json completion(const Document& doc, Position p) {
   }
   for (const std::string& k : frontend::grammar_keywords())
     items.push_back({{"label", k}, {"kind", kKeyword}});
+  for (const BuiltinInfo& b : kBuiltins)
+    items.push_back({{"label", std::string(b.name)},
+                     {"kind", kFunction},
+                     {"detail", std::string(b.signature)},
+                     {"documentation", std::string(b.summary)}});
   if (ix) add_names(*ix, p.line + 1, items);
   return {{"isIncomplete", false}, {"items", items}};
 }

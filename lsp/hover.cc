@@ -1,11 +1,13 @@
 // Hover: what a name is, in Markdown. Events tell where their value comes from (a module's
 // status flag, a derived predicate, or the rules that set it); rules their effective guard
-// (docs/design.md#effective-guards) and their port's decision table, as `arbc docs` prints it.
+// (docs/design.md#effective-guards) and their port's decision table, as `arbc docs` prints it;
+// a builtin function its signature (core/builtins.h).
 #include <sstream>
 
 #include "compiler/docs/decision_table.h"
 #include "compiler/docs/markdown_docs.h"
 #include "compiler/frontend/type_rules.h"
+#include "core/builtins.h"
 #include "core/duration_literal.h"
 #include "core/effective_guard.h"
 #include "core/join.h"
@@ -147,6 +149,13 @@ void describe(const Document& doc, const SymbolIndex& ix, const Symbol& s,
   }
 }
 
+// The builtin whose name (in a call) is under the cursor; null otherwise.
+const BuiltinInfo* builtin_under(const ast::Expr* e, const Lookup& l) {
+  if (!e || e->kind != ast::Expr::Kind::Call || e->names.empty()) return nullptr;
+  if (!contains(e->names[0].loc, l.line, l.column)) return nullptr;
+  return find_builtin(e->text);
+}
+
 }  // namespace
 
 nlohmann::json hover(const Document& doc, Position p) {
@@ -163,6 +172,9 @@ nlohmann::json hover(const Document& doc, Position p) {
       out.str("");
       out << code(l.symbol->name) << ": " << code(type_text(*l.index, e->type));
     }
+  } else if (const BuiltinInfo* b = builtin_under(e, l)) {
+    out << "**builtin** " << code(std::string(b->signature)) << "\n\n" << b->summary;
+    at = e->names[0].loc;
   } else if (e && e->type) {
     out << code(source_text(doc, e->loc)) << ": " << code(type_text(*l.index, e->type));
     at = e->loc;

@@ -30,6 +30,9 @@ bool nonzero_numeral(const z3::expr& e) {
   return (s != zero).simplify().is_true();
 }
 
+// An int as a float (BodyExpr::Op::ToFloat); an unread operand stays unread.
+Ev to_float(const Ev& a) { return a.unread ? a : Ev{{K::Real, as_real(a.v)}, a.ok}; }
+
 class Encoder {
  public:
   Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out)
@@ -166,6 +169,8 @@ Ev Encoder::eval(const BodyExpr& e) {
       return bad("a lambda outside min_by / max_by");
     case BodyExpr::Op::Call:
       return call(e);
+    case BodyExpr::Op::ToFloat:
+      return to_float(eval(e.args[0]));
   }
   return bad("an unknown expression");
 }
@@ -312,14 +317,31 @@ SymValue Encoder::sqrt_of(const z3::expr& square) {
   return {K::Real, r};
 }
 
+// Dispatch on the builtin's id (core/builtins.h): a builtin added to the table without a case
+// here does not compile (-Wswitch), and verify's builtin_encoding_test encodes each one.
 Ev Encoder::call(const BodyExpr& e) {
   const std::string& f = e.text;
-  if (f == "min_by" || f == "max_by") return best_by(e, f == "min_by");
-  if (f == "now") {
-    SymValue t(K::Real, ctx_.real_const(fresh_name("now").c_str()));
-    out_.abstracted.push_back("now()");
-    out_.state.emplace_back("now()", t);
-    return {t, ctx_.bool_val(true)};
+  switch (e.builtin) {
+    case Builtin::MinBy:
+    case Builtin::MaxBy:
+      return best_by(e, e.builtin == Builtin::MinBy);
+    case Builtin::Now: {
+      SymValue t(K::Real, ctx_.real_const(fresh_name("now").c_str()));
+      out_.abstracted.push_back("now()");
+      out_.state.emplace_back("now()", t);
+      return {t, ctx_.bool_val(true)};
+    }
+    case Builtin::Min:
+    case Builtin::Max:
+      return min_max(e, e.builtin == Builtin::Min);
+    case Builtin::None:
+      return bad("the call " + f + "()");
+    case Builtin::Len:
+    case Builtin::Abs:
+    case Builtin::Vec3:
+    case Builtin::Norm:
+    case Builtin::Dist:
+      break;  // of their evaluated arguments, below
   }
   std::vector<Ev> args;
   z3::expr ok = ctx_.bool_val(true);
@@ -328,28 +350,28 @@ Ev Encoder::call(const BodyExpr& e) {
     if (args.back().unread) return unread();
     ok = ok && args.back().ok;
   }
-  if (f == "len") {
+  if (e.builtin == Builtin::Len) {
     if (args.size() != 1 || args[0].v.kind != K::List)
       return bad("len of a string (byte length is not encoded)");
     return {{K::Int, args[0].v.scalar}, ok};
   }
-  if (f == "min" || f == "max") return min_max(e, f == "min");
-  if (f == "abs" && args.size() == 1 && args[0].v.numeric()) {
+  if (e.builtin == Builtin::Abs && args.size() == 1 && args[0].v.numeric()) {
     const z3::expr& x = args[0].v.scalar;
     return {{args[0].v.kind, z3::ite(x < 0, -x, x)}, ok};
   }
-  if (f == "vec3" && args.size() == 3) {
+  if (e.builtin == Builtin::Vec3 && args.size() == 3) {
     SymValue v(K::Vec3, ctx_.bool_val(true));
     for (const Ev& a : args) v.items.push_back({K::Real, as_real(a.v)});
     return {v, ok};
   }
-  if ((f == "norm" && args.size() == 1) || (f == "dist" && args.size() == 2)) {
+  bool dist = e.builtin == Builtin::Dist;
+  if ((e.builtin == Builtin::Norm && args.size() == 1) || (dist && args.size() == 2)) {
     for (const Ev& a : args)
       if (a.v.kind != K::Vec3) return bad(f + " of a value that is not a vec3");
     z3::expr square = ctx_.real_val(0);
     for (size_t k = 0; k < 3; ++k) {
       z3::expr d = args[0].v.items[k].scalar;
-      if (f == "dist") d = d - args[1].v.items[k].scalar;
+      if (dist) d = d - args[1].v.items[k].scalar;
       square = square + d * d;
     }
     return {sqrt_of(square), ok};

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "core/builtins.h"
+
 namespace arbc::codegen {
 
 namespace {
@@ -148,7 +150,9 @@ constexpr std::array<std::string_view, 21> kLuaGlobals = {
 }  // namespace
 
 bool is_builtin(std::string_view name) {
-  return name.substr(0, 5) != "arbc_" && find_helper(name) != nullptr;
+  for (const BuiltinInfo& b : kBuiltins)
+    if (b.lua_helper == name) return true;
+  return false;
 }
 
 bool is_reserved_lua_name(std::string_view name) {

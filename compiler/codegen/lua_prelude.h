@@ -1,6 +1,6 @@
-// The spec language's builtins (len, min_by, max_by, dist, norm, abs, min, max, now) as plain Lua
-// 5.4 local functions, copied into each generated monitor that uses them, so every monitor is a
-// self-contained file that needs nothing but the PortMonitor API
+// The spec language's builtins (core/builtins.h: each row names its `lua_helper` here) as plain
+// Lua 5.4 local functions, copied into each generated monitor that uses them, so every monitor
+// is a self-contained file that needs nothing but the PortMonitor API
 // (docs/runtime.md#lua-monitors-the-portmonitor-api).
 //
 // "No value" (min_by of an empty list, an index out of range) calls PortMonitor.novalue(),
@@ -19,7 +19,7 @@ namespace arbc::codegen {
 inline constexpr std::string_view kNoValueHelper = "arbc_no_value";
 inline constexpr std::string_view kIndexHelper = "arbc_index";
 
-// True for the spec builtins this prelude implements.
+// True for the helper names of the builtins (core/builtins.h's `lua_helper`).
 bool is_builtin(std::string_view name);
 
 // Names a spec variable must not take in generated Lua: builtins, Lua's standard globals the

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/testing/lua_monitor_harness.h"
+#include "core/builtins.h"
 
 namespace arbc::codegen {
 namespace {
@@ -14,10 +16,9 @@ using testing::PortContainer;
 // Runs `expr` after the whole prelude, as the body of an update callback, and returns the
 // serialised result or the error.
 std::string eval(const std::string& expr) {
-  std::set<std::string> all = {"len",        "min_by",     "max_by",     "dist",      "norm",
-                               "abs",        "min",        "max",        "now",       "vec3",
-                               "arbc_index", "arbc_equal", "arbc_vadd",  "arbc_vsub", "arbc_vscale",
-                               "arbc_vdiv",  "arbc_vneg",  "arbc_concat"};
+  std::set<std::string> all = {"arbc_index",  "arbc_equal", "arbc_vadd", "arbc_vsub",
+                               "arbc_vscale", "arbc_vdiv",  "arbc_vneg", "arbc_concat"};
+  for (const BuiltinInfo& b : kBuiltins) all.emplace(b.lua_helper);
   std::string source =
       lua_prelude(all) + "PortMonitor.update = function(m) return " + expr + " end\n";
   PortContainer port;
@@ -47,8 +48,8 @@ TEST(LuaPreludeTest, NoValueIsASentinelNotAScriptError) {
 }
 
 TEST(LuaPreludeTest, NumbersAndVectors) {
-  EXPECT_EQ(eval("dist(vec3(1, 2, 3), vec3(4, 6, 3))"), "5");
-  EXPECT_EQ(eval("norm(vec3(3, 4, 0))"), "5");
+  EXPECT_EQ(eval("dist(vec3(1, 2, 3), vec3(4, 6, 3))"), "5.0");
+  EXPECT_EQ(eval("norm(vec3(3, 4, 0))"), "5.0");
   EXPECT_EQ(eval("abs(-2.5)"), "2.5");
   EXPECT_EQ(eval("min(3, 1.5, 2)"), "1.5");
   EXPECT_EQ(eval("max({3, 7, 2})"), "7");
@@ -71,6 +72,18 @@ TEST(LuaPreludeTest, OnlyWhatIsUsedAndWhatItNeeds) {
   EXPECT_FALSE(is_builtin("arbc_index"));
   EXPECT_TRUE(is_reserved_lua_name("math"));
   EXPECT_FALSE(is_reserved_lua_name("objects"));
+}
+
+// core/builtins.h names a Lua helper for each builtin: the prelude defines it (a builtin added
+// to the table without one fails here), and no spec name can shadow it.
+TEST(LuaPreludeTest, EveryBuiltinOfTheTableHasItsHelper) {
+  for (const BuiltinInfo& b : kBuiltins) {
+    std::string helper(b.lua_helper);
+    EXPECT_NE(lua_prelude({helper}).find("local function " + helper + "("), std::string::npos)
+        << b.name;
+    EXPECT_TRUE(is_builtin(helper)) << b.name;
+    EXPECT_NE(lua_local_name(helper), helper) << b.name;
+  }
 }
 
 }  // namespace

@@ -267,9 +267,9 @@ arbitrate Head.level {
   app.port("Head.level").set("a", "test", std::nullopt);
   auto& count = app.monitor("Head.level", "count");
   EXPECT_EQ(count.trig_interval(), 0.5);
-  EXPECT_EQ(count.deliver("2.0").value, "2");
+  EXPECT_EQ(count.deliver("2.0").value, "2.0");  // float * int is a float
   EXPECT_EQ(count.deliver("2.0").reason, "rejected");
-  EXPECT_EQ(count.deliver("2.0").value, "6");
+  EXPECT_EQ(count.deliver("2.0").value, "6.0");
   EXPECT_EQ(count.calls(), (V{"set e_seen 2", "set e_seen 2", "set e_seen 2"}));
   EXPECT_TRUE(count.trig().ok);
   EXPECT_EQ(count.calls().back(), "unset e_seen");
@@ -306,7 +306,7 @@ connect Looker.gaze -> Head.gaze { accept norm(gaze) > 0.5; emit gaze * 2.0; }
   ASSERT_EQ(app.error(), "");
   auto& c = app.monitor("Head.gaze", "from_Looker_gaze");
   EXPECT_EQ(c.constraint(), "true");  // not arbitrated: always selected
-  EXPECT_EQ(c.deliver("{x = 1, y = 0, z = 0}").value, "{x=2, y=0, z=0}");
+  EXPECT_EQ(c.deliver("{x = 1, y = 0, z = 0}").value, "{x=2.0, y=0.0, z=0.0}");
   EXPECT_EQ(c.deliver("{x = 0.1, y = 0, z = 0}").reason, "rejected");
 }
 
@@ -375,6 +375,30 @@ connect Src.q -> Dst.q { accept q == vec3(1, 2, 3); }
   auto& q = app.monitor("Dst.q", "from_Src_q");
   EXPECT_TRUE(q.deliver("{x = 1, y = 2, z = 3}").accepted);
   EXPECT_EQ(q.deliver("{x = 3, y = 2, z = 1}").reason, "rejected");
+}
+
+// Every Lua number a monitor computes has the subtype of its spec type
+// (docs/design.md#numbers-at-run-time): the harness prints a float with ".0" when integral.
+TEST(MonitorExecTest, NumbersKeepTheirSpecTypeAtRunTime) {
+  App app(R"(app t;
+module Src { out m: {i: int, f: float}; }
+module Dst { in cmd: {lo: float, hi: int, v: vec3, ys: list<float>, s: float, q: float}; }
+connect Src.m -> Dst.cmd {
+  accept m.i <= m.f;
+  emit { lo: min(m.i, 2.5), hi: max(m.i, 0), v: vec3(m.i, 0, 1.5), ys: [m.i, 2.5], s: m.i,
+         q: m.i / 2 };
+}
+)");
+  ASSERT_EQ(app.error(), "");
+  auto& c = app.monitor("Dst.cmd", "from_Src_m");
+  auto r = c.deliver("{i = 1, f = 1.5}");
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.accepted);
+  EXPECT_EQ(r.value,
+            "{hi=1, lo=1.0, q=0.5, s=1.0, v={x=1.0, y=0.0, z=1.5}, ys={[1]=1.0, [2]=2.5}}");
+  // Compared as floats: 2^53 + 1 is 2^53 as a float, so it is <= 2^53 (Lua would compare the
+  // integer exactly and say no).
+  EXPECT_TRUE(c.deliver("{i = 9007199254740993, f = 9007199254740992.0}").accepted);
 }
 
 }  // namespace

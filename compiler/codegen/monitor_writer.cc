@@ -74,14 +74,12 @@ class MonitorWriter {
       out.raw(prelude);
       out.blank();
     }
-    std::vector<const ast::ConstDecl*> constants = tr_.constants_used();
+    std::vector<LuaConstant> constants = tr_.constants_used();
     if (!constants.empty()) {
       out.line("-- Constants.");
-      for (const ast::ConstDecl* c : constants)
-        out.line("local " + lua_local_name(c->name) + " = " +
-                     LuaExprTranslator::constant_value(*c) + "  -- spec line " +
-                     std::to_string(c->loc.line),
-                 c->loc.line);
+      for (const LuaConstant& c : constants)
+        out.line("local " + c.name + " = " + c.value + "  -- spec line " + std::to_string(c.line),
+                 c.line);
       out.blank();
     }
     if (!state_.empty()) {
@@ -139,7 +137,7 @@ class MonitorWriter {
     w.line(style_.callbacks + ".create = function(options)");
     w.indent();
     w.line("PortMonitor.setTrigInterval(" + lua_float(*conn_.trig_interval) + ")",
-           every_ ? every_->loc.line : 0);
+           every_ ? every_->line : 0);
     w.line("return true");
     w.dedent();
     w.line("end");
@@ -154,7 +152,7 @@ class MonitorWriter {
     std::vector<bool> may_lack_value;
     for (const lower::DerivedFeed& d : plan_.derived) {
       quote(preds, d.loc.line);
-      std::string body = d.predicate ? tr_.expr(*d.predicate) : "false";
+      std::string body = tr_.expr(d.predicate);
       std::set<std::string> after = helper_closure(tr_.helpers_used());
       may_lack_value.push_back(after.count(std::string(kNoValueHelper)) > 0);
       preds.line("local function arbc_holds_" + d.event + "(" + msg_ + ")", d.loc.line);
@@ -216,29 +214,21 @@ class MonitorWriter {
     state_.emplace_back(std::move(text), spec_line);
   }
 
-  std::string var_name(const ast::Stmt& s) {
+  std::string var_name(const model::BodyStmt& s) {
     std::string base = lua_local_name(s.name), name = base;
     for (int i = 2; !var_names_.insert(name).second; ++i)
       name = "arbc_var_" + s.name + "_" + std::to_string(i);
     return name;
   }
 
-  void block(const ast::Block& b, LuaWriter& w, Mode mode) {
-    for (const auto& s : b) stmt(*s, w, mode);
+  void block(const std::vector<model::BodyStmt>& b, LuaWriter& w, Mode mode) {
+    for (const model::BodyStmt& s : b) stmt(s, w, mode);
   }
 
-  // A duration as Lua seconds: the constant's name when the spec named one, else the number.
-  std::string duration(const ast::Duration& d) {
-    const ast::Expr* e = d.expr.get();
-    if (e && e->kind == ast::Expr::Kind::Name && e->name_kind == ast::NameKind::Const)
-      return tr_.expr(*e);
-    return lua_float(d.seconds);
-  }
-
-  // `set e for D` passes D; plain `set e` passes none, and the runtime applies the event's
-  // declared lifetime from app.json (one source of truth, docs/runtime.md).
-  std::string set_event_call(const ast::Stmt& s) {
-    return set_call(s.name, s.duration ? duration(*s.duration) : "");
+  // `set e for D` passes D in seconds; plain `set e` passes none, and the runtime applies the
+  // event's declared lifetime from app.json (one source of truth, docs/runtime.md).
+  std::string set_event_call(const model::BodyStmt& s) {
+    return set_call(s.name, s.lifetime ? lua_float(*s.lifetime) : "");
   }
 
   // The host call that sets `event` (lifetime: Lua text, empty for the declared one).
@@ -253,16 +243,16 @@ class MonitorWriter {
     return "PortMonitor.unsetEvent(" + lua_string(event) + ")";
   }
 
-  void if_chain(const ast::Stmt& s, LuaWriter& w, Mode mode, bool elseif) {
-    w.line(std::string(elseif ? "elseif " : "if ") + tr_.expr(*s.expr) + " then", s.loc.line);
+  void if_chain(const model::BodyStmt& s, LuaWriter& w, Mode mode, bool elseif) {
+    w.line(std::string(elseif ? "elseif " : "if ") + tr_.expr(s.expr) + " then", s.line);
     w.indent();
-    block(s.body, w, mode);
+    block(s.then_body, w, mode);
     w.dedent();
-    if (s.else_body.size() == 1 && s.else_body[0]->kind == ast::Stmt::Kind::If) {
-      if_chain(*s.else_body[0], w, mode, true);
+    if (s.else_body.size() == 1 && s.else_body[0].kind == model::BodyStmt::Kind::If) {
+      if_chain(s.else_body[0], w, mode, true);
       return;
     }
-    if (s.has_else && !s.else_body.empty()) {
+    if (!s.else_body.empty()) {
       w.line("else");
       w.indent();
       block(s.else_body, w, mode);
@@ -271,32 +261,28 @@ class MonitorWriter {
     w.line("end");
   }
 
-  void stmt(const ast::Stmt& s, LuaWriter& w, Mode mode) {
-    using Kind = ast::Stmt::Kind;
-    int line = s.loc.line;
+  void stmt(const model::BodyStmt& s, LuaWriter& w, Mode mode) {
+    using Kind = model::BodyStmt::Kind;
+    int line = s.line;
     if (s.kind != Kind::Every) quote(w, line);
     switch (s.kind) {
-      case Kind::Let: {
-        std::string name = lua_local_name(s.name);
-        std::string value = tr_.expr(*s.expr);
-        tr_.bind(&s, name);
-        w.line("local " + name + " = " + value, line);
+      case Kind::Let:
+        w.line("local " + lua_local_name(s.name) + " = " + tr_.expr(s.expr), line);
         break;
-      }
       case Kind::Var: {
         std::string name = var_name(s);
-        tr_.bind(&s, name);
+        tr_.bind_var(s.name, name);
         declare_state("local " + name + " = nil  -- var " + s.name + " (spec line " +
                           std::to_string(line) + ")",
                       line);
-        w.line("if " + name + " == nil then " + name + " = " + tr_.expr(*s.expr) + " end", line);
+        w.line("if " + name + " == nil then " + name + " = " + tr_.expr(s.expr) + " end", line);
         break;
       }
       case Kind::Assign:
-        w.line(tr_.local_name(s.var_decl) + " = " + tr_.expr(*s.expr), line);
+        w.line(tr_.local_name(s.name) + " = " + tr_.expr(s.expr), line);
         break;
       case Kind::Accept:
-        w.line("if not (" + tr_.expr(*s.expr) + ") then return" +
+        w.line("if not (" + tr_.expr(s.expr) + ") then return" +
                    (mode == Mode::Message ? " false" : "") + " end",
                line);
         break;
@@ -311,7 +297,7 @@ class MonitorWriter {
         break;
       case Kind::Emit:
         if (mode == Mode::Message) {
-          w.line("arbc_emitted = " + tr_.expr(*s.expr), line);
+          w.line("arbc_emitted = " + tr_.expr(s.expr), line);
           emits_ = true;
         } else {
           w.line("-- (emit has no effect in `every`: trig() delivers nothing)", line);
@@ -321,19 +307,17 @@ class MonitorWriter {
         // The runtime enforces app.json's `throttle` after the constraint, counting only
         // deliveries (docs/runtime.md); the monitor has nothing to do.
         w.line("-- throttle: enforced by the runtime (app.json \"throttle\": " +
-                   lua_float(s.duration ? s.duration->seconds : 0) + " s), counting deliveries",
+                   lua_float(conn_.throttle.value_or(0)) + " s), counting deliveries",
                line);
         break;
       case Kind::Every:
         if (mode == Mode::Message) every_ = &s;  // runs from trig(), written below
         break;
-      case Kind::Script:
-        break;  // handled by script()
     }
   }
 
   void rule(LuaWriter& w) {
-    const ast::Block* body = plan_.body;
+    const std::optional<model::Body>& body = conn_.body;
     bool has_body = body && !body->empty();
     LuaWriter fn;
     if (has_body) {
@@ -349,10 +333,10 @@ class MonitorWriter {
     LuaWriter trig;
     if (every_) {
       last_quoted_ = 0;
-      quote(trig, every_->loc.line);
-      trig.line("local function arbc_every()", every_->loc.line);
+      quote(trig, every_->line);
+      trig.line("local function arbc_every()", every_->line);
       trig.indent();
-      block(every_->body, trig, Mode::Trig);
+      block(every_->then_body, trig, Mode::Trig);
       trig.dedent();
       trig.line("end");
       trig.blank();
@@ -466,7 +450,7 @@ class MonitorWriter {
   LuaExprTranslator tr_;
   std::vector<std::pair<std::string, int>> state_;
   std::set<std::string> var_names_;
-  const ast::Stmt* every_ = nullptr;
+  const model::BodyStmt* every_ = nullptr;
   int last_quoted_ = 0;
   bool emits_ = false;
 };

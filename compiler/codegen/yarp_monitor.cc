@@ -130,10 +130,6 @@ class YarpMonitorWriter {
         write_monitor(lowered_, lowered_.monitors[link_.parts[k]], lines_, style(k)).text;
     replace_all(text, "PortMonitor.novalue()", "arbc_novalue()");
     replace_all(text, "PortMonitor.now()", "yarp.now()");
-    if (text.find("PortMonitor.hasEvent") != std::string::npos)
-      diags_.push_back(unsupported(c,
-                                   "it reads an event in an expression, and YARP's Lua API "
-                                   "cannot read events; use the event in a `when`"));
     out += "do\n" + text + "end\n\n";
     return out;
   }

@@ -16,8 +16,9 @@
 
 namespace arbc::codegen {
 
-// The monitor of `link`; a part YARP cannot run (a `script` rule, an event read in an
-// expression, two rules on one pair) is reported in `diags` and the text is then not usable.
+// The monitor of `link`; a part YARP cannot run (a `script` rule, two rules on one pair) is
+// reported in `diags` and the text is then not usable. Bodies never read events (the IR has no
+// such node: the checker keeps events to constraints), which YARP's Lua API could not do.
 std::string write_yarp_monitor(const lower::LoweredApp& app, const YarpLink& link,
                                const YarpNames& names, const SpecLines& lines,
                                std::vector<Diagnostic>& diags);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/builtins.h"
 #include "core/constraint.h"
 #include "core/type.h"
 
@@ -69,7 +70,8 @@ struct Duration {
 // ---------------------------------------------------------------------------------------------
 // Expressions.
 
-enum class Builtin { None, Len, MinBy, MaxBy, Dist, Norm, Abs, Min, Max, Now, Vec3 };
+// The builtin a call names: core/builtins.h lists them once for every stage.
+using Builtin = arbc::Builtin;
 
 // What an identifier in an expression names (sema).
 enum class NameKind {

@@ -1,5 +1,6 @@
 #include "compiler/frontend/builtin_aliases.h"
 
+#include "core/builtins.h"
 #include "core/suggest.h"
 
 namespace arbc::frontend {
@@ -8,7 +9,7 @@ namespace {
 
 struct Alias {
   const char* name;  // as another language spells it
-  const char* builtin;
+  Builtin builtin;   // what it means here (core/builtins.h)
 };
 
 // Only names that are not builtins of their own here (the language has no `count` of items
@@ -16,8 +17,8 @@ struct Alias {
 // `xs.length`, C++'s and Java's `size()`, C#'s and SQL's `count`; `distance` and `magnitude`
 // from vector libraries.
 constexpr Alias kAliases[] = {
-    {"length", "len"},     {"size", "len"},      {"count", "len"},
-    {"magnitude", "norm"}, {"distance", "dist"},
+    {"length", Builtin::Len},     {"size", Builtin::Len},      {"count", Builtin::Len},
+    {"magnitude", Builtin::Norm}, {"distance", Builtin::Dist},
 };
 
 }  // namespace
@@ -36,9 +37,10 @@ std::optional<std::string> meant_builtin(std::string_view name,
     if (!typo) return std::nullopt;
     spelling = *typo;
   }
-  if (spelling == "length" && first_arg && first_arg->kind == Type::Kind::Vec3) return "norm";
+  if (spelling == "length" && first_arg && first_arg->kind == Type::Kind::Vec3)
+    return std::string(builtin_info(Builtin::Norm)->name);
   for (const Alias& a : kAliases)
-    if (spelling == a.name) return std::string(a.builtin);
+    if (spelling == a.name) return std::string(builtin_info(a.builtin)->name);
   return std::nullopt;
 }
 

@@ -12,8 +12,6 @@
 
 namespace arbc::frontend {
 
-struct BuiltinInfo;  // sema_expr.cc
-
 // One name visible in a monitor body or predicate.
 struct Binding {
   ast::NameKind kind = ast::NameKind::Unresolved;

@@ -13,15 +13,6 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-// A builtin function: its name, arity and signature (for messages).
-struct BuiltinInfo {
-  const char* name;
-  Builtin builtin;
-  int min_args;
-  int max_args;  // -1: any number
-  const char* signature;
-};
-
 namespace {
 
 const TypePtr kBool = Type::scalar(Type::Kind::Bool);
@@ -29,19 +20,6 @@ const TypePtr kInt = Type::scalar(Type::Kind::Int);
 const TypePtr kFloat = Type::scalar(Type::Kind::Float);
 const TypePtr kString = Type::scalar(Type::Kind::String);
 const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
-
-constexpr BuiltinInfo kBuiltins[] = {
-    {"len", Builtin::Len, 1, 1, "len(list or string) -> int"},
-    {"min_by", Builtin::MinBy, 2, 2, "min_by(list<T>, x => number) -> T"},
-    {"max_by", Builtin::MaxBy, 2, 2, "max_by(list<T>, x => number) -> T"},
-    {"dist", Builtin::Dist, 2, 2, "dist(vec3, vec3) -> float"},
-    {"norm", Builtin::Norm, 1, 1, "norm(vec3) -> float"},
-    {"abs", Builtin::Abs, 1, 1, "abs(number) -> number"},
-    {"min", Builtin::Min, 2, -1, "min(number, number, ...) -> number"},
-    {"max", Builtin::Max, 2, -1, "max(number, number, ...) -> number"},
-    {"now", Builtin::Now, 0, 0, "now() -> float (seconds)"},
-    {"vec3", Builtin::Vec3, 3, 3, "vec3(x, y, z) -> vec3"},
-};
 
 // The numeric type of combining a and b: int only if both are.
 TypePtr numeric_join(const TypePtr& a, const TypePtr& b) {
@@ -387,29 +365,24 @@ void Sema::check_list(Expr& e, Scope& scope) {
 // ---- builtins -----------------------------------------------------------------------------
 
 void Sema::check_call(Expr& e, Scope& scope) {
-  const BuiltinInfo* info = nullptr;
-  for (const BuiltinInfo& b : kBuiltins)
-    if (e.text == b.name) info = &b;
+  const BuiltinInfo* info = find_builtin(e.text);  // core/builtins.h, the one table
   const Loc& callee = e.names.empty() ? e.loc : e.names[0].loc;
   if (!info) {
     // The arguments first: `length(v)` of a vec3 means `norm`, of a list `len`.
     for (ExprPtr& arg : e.args)
       if (arg->kind != Expr::Kind::Lambda) check_expr(*arg, scope);
     std::vector<std::string> names;
-    for (const BuiltinInfo& b : kBuiltins) names.push_back(b.name);
+    for (const BuiltinInfo& b : kBuiltins) names.emplace_back(b.name);
     Diagnostic& d =
-        error(callee,
-              "unknown function '" + e.text +
-                  "': the builtins are len, min_by, max_by, dist, norm, abs, min, max, now, vec3",
+        error(callee, "unknown function '" + e.text + "': the builtins are " + builtin_names_text(),
               "unknown-function");
     if (auto meant = meant_builtin(e.text, names, e.args.empty() ? nullptr : e.args[0]->type))
       did_you_mean(d, *meant);
     return;
   }
-  e.builtin = info->builtin;
+  e.builtin = info->id;
   if (!check_arity(e, *info)) return;
-  if (info->builtin == Builtin::MinBy || info->builtin == Builtin::MaxBy)
-    return check_best_by(e, scope);
+  if (info->id == Builtin::MinBy || info->id == Builtin::MaxBy) return check_best_by(e, scope);
   for (ExprPtr& arg : e.args) check_expr(*arg, scope);
   for (ExprPtr& arg : e.args)
     if (!arg->type) return;
@@ -424,7 +397,7 @@ bool Sema::check_arity(Expr& e, const BuiltinInfo& info) {
             (info.max_args < 0 ? "at least " + std::to_string(info.min_args)
                                : std::to_string(info.min_args)) +
             (info.min_args == 1 && info.max_args == 1 ? " argument" : " arguments") + ", not " +
-            std::to_string(n) + ": " + info.signature,
+            std::to_string(n) + ": " + std::string(info.signature),
         "arity");
   return false;
 }
@@ -466,11 +439,11 @@ void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
     if (!ok)
       error(e.args[i]->loc,
             "argument " + std::to_string(i + 1) + " of '" + e.text + "' must be " + what +
-                ", not " + describe(e.args[i]->type) + " (" + info.signature + ")",
+                ", not " + describe(e.args[i]->type) + " (" + std::string(info.signature) + ")",
             "type-mismatch");
     return ok;
   };
-  switch (info.builtin) {
+  switch (info.id) {
     case Builtin::Len: {
       const TypePtr& t = e.args[0]->type;
       if (expect(0, is_kind(t, Type::Kind::List) || is_kind(t, Type::Kind::String),

@@ -1,5 +1,7 @@
 #include "compiler/lower/feeds.h"
 
+#include "compiler/lower/lower_body.h"
+
 namespace arbc::lower {
 
 namespace {
@@ -39,7 +41,10 @@ std::vector<FeedGroup> plan_feeds(const ast::Spec& spec, const std::set<std::str
       FeedGroup& g = group_for(sym);
       std::optional<double> life;
       if (decl->lifetime) life = decl->lifetime->seconds;
-      g.plan.derived.push_back({sym.name, decl->predicate.get(), life, sym.loc});
+      const ast::PortDecl* source = decl->source.port_decl;
+      g.plan.derived.push_back(
+          {sym.name, lower_expr(*decl->predicate, source ? source->type.resolved : nullptr), life,
+           sym.loc});
       g.sets.push_back(sym.name);
       if (!life) g.unsets.push_back(sym.name);
     }

@@ -9,6 +9,7 @@
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
 #include "compiler/lower/lower_body.h"
+#include "compiler/lower/test_cases.h"
 #include "core/effective_guard.h"
 
 namespace arbc::lower {
@@ -110,7 +111,8 @@ class Lowerer {
       model::Resource res;
       res.name = r.name;
       for (const ast::PortRef& p : r.ports) res.ports.push_back(p.qualified());
-      if (r.uses) res.uses = lower_expr(*r.uses);
+      if (r.uses && !r.ports.empty())
+        res.uses = lower_expr(*r.uses, port_type(r.ports.front().qualified()));
       res.loc = r.loc;
       app.resources.push_back(std::move(res));
     }
@@ -135,9 +137,16 @@ class Lowerer {
     for (const ast::EventSymbol& e : spec_.event_symbols) {
       model::Event event{e.name, e.lifetime, e.source, e.loc, std::nullopt};
       for (const ast::DerivedEventDecl& d : spec_.derived_events)
-        if (d.name == e.name && d.predicate) event.predicate = lower_expr(*d.predicate);
+        if (d.name == e.name && d.predicate)
+          event.predicate = lower_expr(*d.predicate, port_type(d.source.qualified()));
       out_.app.events.push_back(std::move(event));
     }
+  }
+
+  // The type of port "Module.port" (modules are lowered first); null if there is none.
+  TypePtr port_type(const std::string& port) const {
+    const model::Port* p = out_.app.find_port(port);
+    return p ? p->type : nullptr;
   }
 
   size_t add_connection(model::Connection c, MonitorPlan plan) {
@@ -183,7 +192,7 @@ class Lowerer {
       c.opaque = true;
       return true;
     }
-    c.body = lower_body(body);
+    c.body = lower_body(body, port_type(c.source), port_type(c.destination));
     return true;
   }
 
@@ -214,7 +223,6 @@ class Lowerer {
       MonitorPlan plan;
       plan.kind = MonitorPlan::Kind::Rule;
       plan.message_name = r.message_name.empty() ? r.source.port : r.message_name;
-      plan.body = &r.body;
       lower_body_options(r.body, c, plan);
       if (plan.script) {
         w.effects = script_effects(plan.script->text);
@@ -250,7 +258,7 @@ class Lowerer {
       connection(rules[k]).constraint = priority_constraint(rules, k, rules[k].rule->constraint);
     }
     for (const ast::AssertDecl& as : spec_.asserts)
-      if (as.port.qualified() == port) ap.asserts.push_back(lower_assert(as));
+      if (as.port.qualified() == port) ap.asserts.push_back(lower_assert(as, port_type(port)));
 
     // The effects first: `otherwise` reads them through the other rules' effective guards.
     for (RuleWork& w : rules) {
@@ -365,7 +373,6 @@ class Lowerer {
     MonitorPlan plan;
     plan.kind = MonitorPlan::Kind::Connect;
     plan.message_name = d.message_name.empty() ? d.source.port : d.message_name;
-    plan.body = &d.body;
     lower_body_options(d.body, c, plan);
     EventEffects effects = plan.script ? script_effects(plan.script->text) : body_effects(d.body);
     c.sets = sorted(effects.sets);
@@ -392,8 +399,8 @@ std::string activity_event_name(const std::string& rule) { return ast::activity_
 LowerResult lower_spec(std::shared_ptr<const ast::Spec> spec, const LowerOptions& options) {
   LowerResult result;
   auto lowered = std::make_shared<LoweredApp>();
-  lowered->spec = spec;
   Lowerer(*spec, options, *lowered, result.diagnostics).run();
+  lowered->tests = lower_tests(*spec);
   result.ok = true;
   for (const Diagnostic& d : result.diagnostics)
     if (d.severity == Severity::Error) result.ok = false;

@@ -1,26 +1,44 @@
 #include "compiler/lower/lower_body.h"
 
+#include "core/body_types.h"
+
 namespace arbc::lower {
 
 namespace {
 
 using model::BodyExpr;
 using model::BodyStmt;
+using TK = Type::Kind;
 
-// A constant's folded value as a literal of its type (as codegen writes it into Lua).
+bool is(const TypePtr& t, TK k) { return t && t->kind == k; }
+bool numeric(const TypePtr& t) { return is(t, TK::Int) || is(t, TK::Float); }
+
+const TypePtr& float_type() {
+  static const TypePtr f = Type::scalar(TK::Float);
+  return f;
+}
+
+BodyExpr to_float(BodyExpr x) {
+  BodyExpr c;
+  c.op = BodyExpr::Op::ToFloat;
+  c.args.push_back(std::move(x));
+  return c;
+}
+
+// A constant's folded value as a literal of its type, named after the constant.
 BodyExpr constant_literal(const ast::ConstDecl& c) {
   BodyExpr out;
-  Type::Kind k = c.value && c.value->type ? c.value->type->kind : Type::Kind::Float;
+  TK k = c.value && c.value->type ? c.value->type->kind : TK::Float;
   switch (k) {
-    case Type::Kind::Bool:
+    case TK::Bool:
       out.op = BodyExpr::Op::Bool;
       out.boolean = c.boolean;
       break;
-    case Type::Kind::String:
+    case TK::String:
       out.op = BodyExpr::Op::String;
       out.text = c.text;
       break;
-    case Type::Kind::Int:
+    case TK::Int:
       out.op = BodyExpr::Op::Int;
       out.number = c.number;
       break;
@@ -29,6 +47,9 @@ BodyExpr constant_literal(const ast::ConstDecl& c) {
       out.number = c.number;
       break;
   }
+  out.constant = c.name;
+  out.constant_line = c.loc.line;
+  out.constant_column = c.loc.column;
   return out;
 }
 
@@ -57,13 +78,79 @@ BodyExpr name_expr(const ast::Expr& e) {
   return out;
 }
 
+BodyExpr expr(const ast::Expr& e);
+BodyExpr coerce(const ast::Expr& e, const TypePtr& want);
+
+// A list literal whose items are wanted as `element` (null: as they are).
+BodyExpr list_of(const ast::Expr& e, const TypePtr& element) {
+  BodyExpr out;
+  out.op = BodyExpr::Op::List;
+  for (const ast::ExprPtr& item : e.args) out.args.push_back(coerce(*item, element));
+  return out;
+}
+
+// e as a value of type `want`: an int where a float is wanted is converted (docs/design.md
+// #numbers-at-run-time), and so, item by item, are the ints of a list or record literal whose
+// items or fields are wanted as floats. Without `want`, e as it is.
+BodyExpr coerce(const ast::Expr& e, const TypePtr& want) {
+  if (!want || !e.type) return expr(e);
+  if (is(e.type, TK::Int) && is(want, TK::Float)) return to_float(expr(e));
+  if (e.kind == ast::Expr::Kind::List && is(want, TK::List) && want->element)
+    return list_of(e, want->element);
+  if (e.kind == ast::Expr::Kind::Record && is(want, TK::Record)) {
+    BodyExpr out;
+    out.op = BodyExpr::Op::Record;
+    for (size_t i = 0; i < e.args.size(); ++i) {
+      const Field* f = want->field(e.names[i].name);
+      out.names.push_back(e.names[i].name);
+      out.args.push_back(coerce(*e.args[i], f ? f->type : nullptr));
+    }
+    return out;
+  }
+  return expr(e);
+}
+
+// `a op b`. Arithmetic whose type is float converts its int operands, so does a comparison of
+// an int with a float (Lua would compare them exactly, the spec compares them as floats), and a
+// vec3 scaled by an int.
+BodyExpr binary(const ast::Expr& e) {
+  BodyExpr out;
+  out.op = BodyExpr::Op::Binary;
+  out.text = std::string(e.op);
+  const ast::Expr& a = *e.args[0];
+  const ast::Expr& b = *e.args[1];
+  std::string_view op = e.op;
+  bool arith = op == "+" || op == "-" || op == "*" || op == "/" || op == "%";
+  bool compare = op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
+  TypePtr want;
+  if (arith && (is(e.type, TK::Float) || is(e.type, TK::Vec3))) want = float_type();
+  if (compare && numeric(a.type) && numeric(b.type) &&
+      !(is(a.type, TK::Int) && is(b.type, TK::Int)))
+    want = float_type();
+  out.args.push_back(coerce(a, want));
+  out.args.push_back(coerce(b, want));
+  return out;
+}
+
+// A builtin call: `min`/`max` of a float type and `vec3` take their int arguments as floats.
+BodyExpr call(const ast::Expr& e) {
+  BodyExpr out;
+  out.op = BodyExpr::Op::Call;
+  out.text = e.text;
+  out.builtin = e.builtin;
+  bool floats = e.builtin == Builtin::Vec3 ||
+                ((e.builtin == Builtin::Min || e.builtin == Builtin::Max) && is(e.type, TK::Float));
+  for (const ast::ExprPtr& a : e.args)
+    out.args.push_back(coerce(*a, floats ? float_type() : nullptr));
+  return out;
+}
+
 BodyExpr expr(const ast::Expr& e) {
   using Kind = ast::Expr::Kind;
   BodyExpr out;
   switch (e.kind) {
     case Kind::Number:
-      out.op = e.is_int && e.type && e.type->kind == Type::Kind::Int ? BodyExpr::Op::Int
-                                                                     : BodyExpr::Op::Float;
+      out.op = e.is_int && is(e.type, TK::Int) ? BodyExpr::Op::Int : BodyExpr::Op::Float;
       out.number = e.number;
       return out;
     case Kind::Duration:
@@ -80,6 +167,12 @@ BodyExpr expr(const ast::Expr& e) {
       return out;
     case Kind::Name:
       return name_expr(e);
+    case Kind::Binary:
+      return binary(e);
+    case Kind::Call:
+      return call(e);
+    case Kind::List:  // one element type: ints among floats become floats
+      return list_of(e, is(e.type, TK::List) ? e.type->element : nullptr);
     case Kind::Field:
       out.op = BodyExpr::Op::Field;
       out.text = e.text;
@@ -90,23 +183,12 @@ BodyExpr expr(const ast::Expr& e) {
     case Kind::Unary:
       out.op = e.op == "not" ? BodyExpr::Op::Not : BodyExpr::Op::Neg;
       break;
-    case Kind::Binary:
-      out.op = BodyExpr::Op::Binary;
-      out.text = std::string(e.op);
-      break;
     case Kind::Record:
       out.op = BodyExpr::Op::Record;
       for (const auto& field : e.names) out.names.push_back(field.name);
       break;
-    case Kind::List:
-      out.op = BodyExpr::Op::List;
-      break;
     case Kind::Lambda:
       out.op = BodyExpr::Op::Lambda;
-      out.text = e.text;
-      break;
-    case Kind::Call:
-      out.op = BodyExpr::Op::Call;
       out.text = e.text;
       break;
     case Kind::Otherwise:
@@ -117,10 +199,11 @@ BodyExpr expr(const ast::Expr& e) {
   return out;
 }
 
-bool block(const ast::Block& b, std::vector<BodyStmt>& out);
+bool block(const ast::Block& b, const TypePtr& destination, std::vector<BodyStmt>& out);
 
-// One statement; false for `script`, whose body is not analysed.
-bool stmt(const ast::Stmt& s, std::vector<BodyStmt>& out) {
+// One statement; false for `script`, whose body is not analysed. An `emit` is converted to the
+// destination's type, an assignment to the type of its `var`.
+bool stmt(const ast::Stmt& s, const TypePtr& destination, std::vector<BodyStmt>& out) {
   using Kind = ast::Stmt::Kind;
   BodyStmt o;
   o.line = s.loc.line;
@@ -148,7 +231,8 @@ bool stmt(const ast::Stmt& s, std::vector<BodyStmt>& out) {
       break;
     case Kind::If:
       o.kind = BodyStmt::Kind::If;
-      if (!block(s.body, o.then_body) || !block(s.else_body, o.else_body)) return false;
+      if (!block(s.body, destination, o.then_body) || !block(s.else_body, destination, o.else_body))
+        return false;
       break;
     case Kind::Emit:
       o.kind = BodyStmt::Kind::Emit;
@@ -158,39 +242,48 @@ bool stmt(const ast::Stmt& s, std::vector<BodyStmt>& out) {
       break;
     case Kind::Every:
       o.kind = BodyStmt::Kind::Every;
-      if (!block(s.body, o.then_body)) return false;
+      if (!block(s.body, destination, o.then_body)) return false;
       break;
     case Kind::Script:
       return false;
   }
-  if (s.expr) o.expr = expr(*s.expr);
+  TypePtr want;
+  if (s.kind == Kind::Emit) want = destination;
+  if (s.kind == Kind::Assign && s.var_decl && s.var_decl->expr) want = s.var_decl->expr->type;
+  if (s.expr) o.expr = coerce(*s.expr, want);
   out.push_back(std::move(o));
   return true;
 }
 
-bool block(const ast::Block& b, std::vector<BodyStmt>& out) {
+bool block(const ast::Block& b, const TypePtr& destination, std::vector<BodyStmt>& out) {
   for (const auto& s : b)
-    if (!stmt(*s, out)) return false;
+    if (!stmt(*s, destination, out)) return false;
   return true;
 }
 
 }  // namespace
 
-model::BodyExpr lower_expr(const ast::Expr& e) { return expr(e); }
-
-std::optional<model::Body> lower_body(const ast::Block& body) {
-  model::Body out;
-  if (!block(body, out)) return std::nullopt;
+model::BodyExpr lower_expr(const ast::Expr& e, const TypePtr& message) {
+  BodyExpr out = expr(e);
+  model::type_expr(out, message);
   return out;
 }
 
-model::Assertion lower_assert(const ast::AssertDecl& a) {
+std::optional<model::Body> lower_body(const ast::Block& body, const TypePtr& message,
+                                      const TypePtr& destination) {
+  model::Body out;
+  if (!block(body, destination, out)) return std::nullopt;
+  model::type_body(out, message);
+  return out;
+}
+
+model::Assertion lower_assert(const ast::AssertDecl& a, const TypePtr& delivered) {
   model::Assertion out;
   out.rule = a.rule;
   out.loc = a.loc;
   if (a.over_data) {
     out.property = Constraint::constant(true);
-    out.emitted = lower_expr(*a.property);
+    out.emitted = lower_expr(*a.property, delivered);
   } else {
     out.property = a.constraint;
   }

@@ -1,17 +1,18 @@
 // The result of lowering a checked spec (docs/lowering.md): the core model
 // (core/app_model.h) that app.json, the verifier and the runtime read, plus one monitor
-// plan per connection that code generation turns into Lua. Plans point into the checked AST,
-// which the LoweredApp keeps alive.
+// plan per connection that code generation turns into Lua. Nothing here points into the AST:
+// a rule's body is its connection's model::Body, the IR the proof encodes
+// (docs/design.md#pipeline), and a plan adds only what a feed needs besides.
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "compiler/frontend/ast.h"
 #include "core/app_model.h"
+#include "core/body.h"
 #include "core/constraint.h"
+#include "core/test_case.h"
 
 namespace arbc::lower {
 
@@ -26,7 +27,7 @@ struct StatusFlagFeed {
 // `event e = M.p : PRED [for D]`: a derived event recomputed on each message.
 struct DerivedFeed {
   std::string event;
-  const ast::Expr* predicate = nullptr;
+  model::BodyExpr predicate;       // over the message, typed (core/body_types.h)
   std::optional<double> lifetime;  // `for D`: set for D, never unset; none: unset when false
   model::SourceLocation loc;
 };
@@ -48,16 +49,16 @@ struct MonitorPlan {
   std::vector<StatusFlagFeed> status_flags;
   std::vector<DerivedFeed> derived;
 
-  // Rule / Connect
-  const ast::Block* body = nullptr;  // null or empty: accept everything, deliver unchanged
+  // Rule / Connect: the body is the connection's `body` (none or empty: accept everything,
+  // deliver unchanged), unless it is a hand-written script.
   std::optional<ScriptSource> script;
 };
 
 struct LoweredApp {
-  std::shared_ptr<const ast::Spec> spec;  // owns what the plans point into
-  std::string spec_text;                  // the spec's source, quoted in monitor comments
+  std::string spec_text;  // the spec's source, quoted in monitor comments
   model::App app;
-  std::vector<MonitorPlan> monitors;  // parallel to app.connections
+  std::vector<MonitorPlan> monitors;   // parallel to app.connections
+  std::vector<model::TestCase> tests;  // the spec's `test` declarations, for `arbc test`
 };
 
 }  // namespace arbc::lower

@@ -487,6 +487,12 @@ class Hover(Session):
         self.assertIn("**in port** `PickAndPlace.cmd`: `Cmd = {verb: string, pos: vec3}`",
                       self.hover("arbitrate PickAndPlace.cmd", 0, 23))
 
+    def test_a_builtin_shows_its_signature(self):
+        # From core/builtins.h, the table the checker reads.
+        text = self.hover("min_by(objects", 0, 2)
+        self.assertIn("**builtin** `min_by(list<T>, x => number) -> T`", text)
+        self.assertIn("smallest key", text)
+
     def test_nothing_under_a_comment(self):
         self.assertIsNone(self.c.request("textDocument/hover", self.at("// never take")))
 
@@ -516,6 +522,15 @@ class Editing(Session):
             "textDocument/completion", {"textDocument": {"uri": self.uri}, "position": p})["items"]}
         for expected in ("arbitrate", "when", "e_taken", "HAND_REACHABLE", "Object", "obj"):
             self.assertIn(expected, labels)
+
+    def test_completion_of_builtins_with_their_signatures(self):
+        p = position_of(self.text, "accept obj.dist <= HAND", 0, len("accept "))
+        items = self.c.request("textDocument/completion",
+                               {"textDocument": {"uri": self.uri}, "position": p})["items"]
+        builtins = {i["label"]: i["detail"] for i in items if i["kind"] == 3}
+        self.assertEqual(builtins["len"], "len(list or string) -> int")
+        self.assertEqual(builtins["vec3"], "vec3(x, y, z) -> vec3")
+        self.assertEqual(len([b for b in builtins if b in ("min", "max", "norm", "dist")]), 4)
 
     def test_a_did_you_mean_quick_fix(self):
         start = position_of(self.text, "e_arm_idle and e_pull_idle and not e_arm_pulling {")

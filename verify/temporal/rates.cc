@@ -10,7 +10,7 @@ namespace arbc::verify::temporal {
 namespace {
 
 // An expression that cannot make the monitor fail: the message, its fields, literals, locals
-// bound to such expressions, records and lists of them.
+// bound to such expressions, records and lists of them, ints of them converted to floats.
 bool cannot_fail(const model::BodyExpr& e) {
   using Op = model::BodyExpr::Op;
   switch (e.op) {
@@ -24,6 +24,7 @@ bool cannot_fail(const model::BodyExpr& e) {
     case Op::Field:
     case Op::Record:
     case Op::List:
+    case Op::ToFloat:
       for (const model::BodyExpr& a : e.args)
         if (!cannot_fail(a)) return false;
       return true;

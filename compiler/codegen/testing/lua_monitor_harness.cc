@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <lua.hpp>
 
 #include "core/constraint.h"
@@ -155,6 +156,8 @@ std::string LuaMonitorHarness::serialise(lua_State* L, int index) {
         std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(lua_tointeger(L, index)));
       else
         std::snprintf(buf, sizeof buf, "%.17g", lua_tonumber(L, index));
+      // A float keeps a mark of its subtype (docs/design.md#numbers-at-run-time): 1.0, not 1.
+      if (!lua_isinteger(L, index) && !std::strpbrk(buf, ".eni")) std::strcat(buf, ".0");
       return buf;
     }
     case LUA_TSTRING:

@@ -77,7 +77,8 @@ class LuaMonitorHarness {
   void clear_calls() { calls_.clear(); }
   bool has_callback(const std::string& name);
 
-  // Deterministic text of a Lua value: tables with sorted keys, floats with %.17g.
+  // Deterministic text of a Lua value: tables with sorted keys, floats with %.17g and a
+  // ".0" when integral, so that 1.0 and 1 read apart.
   static std::string serialise(lua_State* L, int index);
 
  private:
