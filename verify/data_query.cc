@@ -5,6 +5,7 @@
 
 #include "core/json_text.h"
 #include "verify/body_encoding.h"
+#include "verify/solver_watchdog.h"
 
 namespace arbc::verify {
 
@@ -112,6 +113,7 @@ Answer DataQuery::check(const z3::expr_vector& assumptions) {
   }
   z3::check_result r = z3::unknown;
   try {
+    QueryInFlight in_flight;
     r = solver_.check(assumptions);
   } catch (const z3::exception& e) {
     unknown_reason_ = std::string("solver error: ") + e.msg();
@@ -185,7 +187,13 @@ std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Val
   for (const z3::expr& x : e.side) s.add(x);
   for (const AcceptTracker& tr : e.trackers) s.add(tr.literal);
   s.add(e.accepts);
-  z3::check_result r = s.check();
+  z3::check_result r = z3::unknown;
+  try {
+    QueryInFlight in_flight;
+    r = s.check();
+  } catch (const z3::exception&) {
+    return std::nullopt;  // interrupted at the deadline
+  }
   if (r == z3::unknown) return std::nullopt;
   return r == z3::sat;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "verify/solver_watchdog.h"
 #include "verify/temporal/constraint_expr.h"
 
 namespace arbc::verify {
@@ -48,6 +49,7 @@ Answer PortSolver::run(const z3::expr_vector& assumptions) {
     return last_ = Answer::Unknown;
   }
   try {
+    QueryInFlight in_flight;
     switch (solver_.check(assumptions)) {
       case z3::sat:
         return last_ = Answer::Sat;

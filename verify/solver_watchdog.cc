@@ -4,6 +4,33 @@
 
 namespace arbc::verify {
 
+namespace {
+
+// The queries in flight in this process, under one lock with the watchdogs' interrupts, so an
+// interrupt is issued only between a query's start and its end.
+std::mutex g_flight_mutex;
+int g_in_flight = 0;
+
+// Interrupts `ctx` if a query is in flight; whether it did.
+bool interrupt_query(z3::context& ctx) {
+  std::lock_guard<std::mutex> lock(g_flight_mutex);
+  if (g_in_flight == 0) return false;
+  ctx.interrupt();
+  return true;
+}
+
+}  // namespace
+
+QueryInFlight::QueryInFlight() {
+  std::lock_guard<std::mutex> lock(g_flight_mutex);
+  ++g_in_flight;
+}
+
+QueryInFlight::~QueryInFlight() {
+  std::lock_guard<std::mutex> lock(g_flight_mutex);
+  --g_in_flight;
+}
+
 SolverWatchdog::SolverWatchdog(z3::context& ctx, Clock::time_point deadline,
                                std::function<void()> on_stuck, Clock::duration grace)
     : ctx_(ctx),
@@ -33,9 +60,9 @@ void SolverWatchdog::watch() {
   // just before the deadline (SolverTimeout::arm let it) is stopped by the next one.
   Clock::time_point give_up = Clock::now() + grace_;
   while (!stop_) {
-    ctx_.interrupt();
-    fired_ = true;
-    if (on_stuck_ && Clock::now() >= give_up) {
+    bool interrupted = interrupt_query(ctx_);
+    fired_ |= interrupted;
+    if (interrupted && on_stuck_ && Clock::now() >= give_up) {
       std::function<void()> last_word = std::move(on_stuck_);
       on_stuck_ = nullptr;
       lock.unlock();  // the callback may end the process; nothing of ours is held meanwhile

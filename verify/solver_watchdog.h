@@ -22,6 +22,18 @@
 
 namespace arbc::verify {
 
+// A solver query in flight, for the watchdog: it interrupts only while one is. An interrupt
+// reaches whatever interruptable Z3 call runs at that moment, and outside a query that is a
+// simplify or a model evaluation, which then throws "canceled" where no caller expects it (a
+// verify --timeout 1e-9 ended in an uncaught exception). Put one around every check() call.
+class QueryInFlight {
+ public:
+  QueryInFlight();
+  ~QueryInFlight();
+  QueryInFlight(const QueryInFlight&) = delete;
+  QueryInFlight& operator=(const QueryInFlight&) = delete;
+};
+
 class SolverWatchdog {
  public:
   using Clock = std::chrono::steady_clock;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "verify/solver_timeout.h"
+#include "verify/solver_watchdog.h"
 #include "verify/temporal/counterexample.h"
 
 namespace arbc::verify::temporal {
@@ -20,6 +21,7 @@ z3::check_result run(z3::solver& solver, SolverTimeout& timeout, std::string* re
     return z3::unknown;
   }
   try {
+    QueryInFlight in_flight;
     z3::check_result r = solver.check();
     if (r == z3::unknown) {
       std::string why = solver.reason_unknown();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "verify/solver_timeout.h"
+#include "verify/solver_watchdog.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -12,6 +13,7 @@ namespace {
 z3::check_result check(z3::solver& solver, SolverTimeout& timeout) {
   if (!timeout.arm(solver)) return z3::unknown;
   try {
+    QueryInFlight in_flight;
     return solver.check();
   } catch (const z3::exception&) {
     return z3::unknown;
