@@ -239,7 +239,8 @@ bool read_event(const Json& j, const std::string& p, Event* e, std::string* err)
   }
   return get_string(j, p, "name", &e->name, err) &&
          opt_duration(j, p, "lifetime", &e->lifetime, err) &&
-         opt_string(j, p, "source", &e->source, err) && read_location(j, p, &e->loc, err);
+         opt_string(j, p, "source", &e->source, err) && opt_string(j, p, "flag", &e->flag, err) &&
+         read_location(j, p, &e->loc, err);
 }
 
 bool read_kind(const Json& j, const std::string& p, ConnectionKind* kind, std::string* err) {

@@ -235,6 +235,7 @@ std::string to_app_json(const App& app) {
     write_optional(w, "lifetime", e.lifetime);
     w.member("source", e.source);
     if (e.predicate) w.member("predicate", body_expr_text(*e.predicate));
+    if (!e.flag.empty()) w.member("flag", e.flag);
     write_location(w, e.loc);
     w.end_object();
   }

@@ -64,6 +64,10 @@ struct Event {
   // what that port delivers. nullopt: not derived, or not recorded. The resource check reads
   // it (verify/resource_checks.h): which deliveries set the event.
   std::optional<BodyExpr> predicate = std::nullopt;
+  // A status event (`events from M.p { e, f = "flag" }`): the flag of `source`'s list that
+  // sets it ("flag" for f, "e" for e). Empty for every other event. Stand-in sources publish
+  // these, so a `--stub` run reaches the feeds (docs/cli.md, `--stub`).
+  std::string flag = "";
 };
 
 // One line of a generated monitor and the spec line it comes from, so a script error at

@@ -55,11 +55,12 @@ class StandIn : public Module {
     std::vector<std::string> flags;
   };
 
-  // The events a status port feeds: the flags a sample of it draws from.
+  // The flags a status port's feeds read (`e = "flag"` maps: the flag, not the event's
+  // name): what a sample of it draws from.
   static std::vector<std::string> flags_of(const model::App& app, const std::string& port) {
     std::vector<std::string> flags;
     for (const model::Event& e : app.events) {
-      if (e.source == port) flags.push_back(e.name);
+      if (e.source == port && !e.flag.empty()) flags.push_back(e.flag);
     }
     return flags;
   }

@@ -136,6 +136,7 @@ class Lowerer {
   void lower_events() {
     for (const ast::EventSymbol& e : spec_.event_symbols) {
       model::Event event{e.name, e.lifetime, e.source, e.loc, std::nullopt};
+      if (e.kind == ast::EventSymbol::Kind::Status) event.flag = e.flag.empty() ? e.name : e.flag;
       for (const ast::DerivedEventDecl& d : spec_.derived_events)
         if (d.name == e.name && d.predicate)
           event.predicate = lower_expr(*d.predicate, port_type(d.source.qualified()));

@@ -60,6 +60,27 @@ def case_run_line_fits_a_short_run(arbc, plugin):
     expect(code == 0 and "simulated time 500.0 ms" in out, f"exit {code}", out, err)
 
 
+def case_stub_publishes_the_flags_feeds_read(arbc, plugin):
+    """A stand-in status port publishes the flag a feed maps (`e_idle = "idle"`), not the event's
+    name, which no feed reads: before, nothing was delivered and the run said success (issue 39)."""
+    with tempfile.TemporaryDirectory() as d:
+        spec = os.path.join(d, "flag.spec")
+        with open(spec, "w") as f:
+            f.write('app stub_flag;\n'
+                    'module Arm { out status: list<string>; }\n'
+                    'module Planner { out cmd: float; }\n'
+                    'module Base { in cmd: float; }\n'
+                    'events from Arm.status { e_idle = "idle" } lifetime 500ms;\n'
+                    'arbitrate Base.cmd { go: from Planner.cmd when e_idle; }\n')
+        code, out, err = run(arbc, "run", spec, "--stub", "--duration", "3s")
+        row = next((ln.split() for ln in out.splitlines() if ln.startswith("go ")), None)
+        expect(code == 0 and row is not None, f"exit {code}, no row for go", out, err)
+        arrived, delivered = int(row[1]), int(row[2])
+        # Each flag holds in half of the samples (runtime/stand_in.cc), so with 10 Hz samples and a
+        # 500 ms lifetime nearly every command finds e_idle present: more than a third delivered.
+        expect(3 * delivered > arrived > 0, f"go delivered {delivered} of {arrived}", out, err)
+
+
 def case_duration_unit_unknown(arbc, plugin):
     expect_bad_input(run(arbc, "run", PINGPONG, "--plugin", plugin, "--duration", "3d"),
                      "--duration '3d' is not a positive duration with its unit: 'd' is not a "
