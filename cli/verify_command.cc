@@ -138,7 +138,7 @@ bool write_counterexamples(const std::vector<verify::InputReport>& reports,
       }
       fs::path path = fs::path(dir) / (r.report.app + "." + who + kind + ".test.spec");
       std::ofstream out(path);
-      out << verify::temporal::test_file_text(*t.replay_test, spec.generic_string());
+      out << verify::temporal::test_file_text(*t.replay_test, t.property, spec.generic_string());
       if (!out) {
         std::fprintf(stderr, "arbc verify: cannot write %s\n", path.string().c_str());
         return false;

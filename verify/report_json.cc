@@ -174,9 +174,9 @@ Json temporal_json(const TemporalResult& t) {
                           {"unset", s.unset}});
   }
   // The counterexample as a tests file beside the spec (`arbc test` replays it).
-  j["test"] = t.replayed
-                  ? Json(temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property)))
-                  : Json(nullptr);
+  j["test"] = t.replayed ? Json(temporal::test_file_text(*t.replay_test, t.property,
+                                                         temporal::spec_name(t.property)))
+                         : Json(nullptr);
   return j;
 }
 

@@ -153,7 +153,7 @@ std::optional<Json> temporal_result(const TemporalResult& t) {
   }
   if (violated && t.replay_test) {  // Violated means replayed (verify/temporal/confirm.h)
     r["properties"]["test"] =
-        temporal::test_file_text(*t.replay_test, temporal::spec_name(t.property));
+        temporal::test_file_text(*t.replay_test, t.property, temporal::spec_name(t.property));
   }
   return r;
 }

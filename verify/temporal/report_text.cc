@@ -195,13 +195,13 @@ std::string render(const TemporalResult& r, Reader reader) {
         out +=
             "replayed on the runtime in simulated time, which shows the violation; as a tests "
             "file (arbc verify --counterexamples DIR writes it):\n";
-        out += test_file_text(*r.replay_test, spec_name(r.property));
+        out += test_file_text(*r.replay_test, r.property, spec_name(r.property));
         break;
       }
       out +=
           "    replayed on the runtime in simulated time, which shows the violation; as a tests\n"
           "    file (--counterexamples DIR writes it):\n";
-      out += indent(test_file_text(*r.replay_test, spec_name(r.property)), "      ");
+      out += indent(test_file_text(*r.replay_test, r.property, spec_name(r.property)), "      ");
       break;
   }
   return out + assumptions(r, plain) + environment_text(r, plain);
