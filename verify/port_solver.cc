@@ -43,26 +43,14 @@ z3::expr PortSolver::encode(const Constraint& c) {
 
 Answer PortSolver::run(const z3::expr_vector& assumptions) {
   ++queries_;
-  if (!timeout_.arm(solver_)) {
-    unknown_reason_ = "timeout";
-    return last_ = Answer::Unknown;
+  switch (verify::check(solver_, timeout_, &unknown_reason_, &assumptions)) {
+    case z3::sat:
+      return last_ = Answer::Sat;
+    case z3::unsat:
+      return last_ = Answer::Unsat;
+    default:
+      return last_ = Answer::Unknown;
   }
-  try {
-    switch (solver_.check(assumptions)) {
-      case z3::sat:
-        return last_ = Answer::Sat;
-      case z3::unsat:
-        return last_ = Answer::Unsat;
-      case z3::unknown: {
-        std::string why = solver_.reason_unknown();
-        unknown_reason_ = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
-        return last_ = Answer::Unknown;
-      }
-    }
-  } catch (const z3::exception& e) {
-    unknown_reason_ = std::string("solver error: ") + e.msg();
-  }
-  return last_ = Answer::Unknown;
 }
 
 Answer PortSolver::at_least_two_hold() {

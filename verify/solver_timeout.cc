@@ -20,4 +20,21 @@ bool stopped_by_deadline(const std::string& why) {
   return false;
 }
 
+z3::check_result check(z3::solver& solver, SolverTimeout& timeout, std::string* reason,
+                       const z3::expr_vector* assumptions) {
+  if (!timeout.arm(solver)) {
+    *reason = "timeout";
+    return z3::unknown;
+  }
+  try {
+    z3::check_result r = assumptions ? solver.check(*assumptions) : solver.check();
+    if (r != z3::unknown) return r;
+    std::string why = solver.reason_unknown();
+    *reason = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
+  } catch (const z3::exception& e) {
+    *reason = std::string("solver error: ") + e.msg();
+  }
+  return z3::unknown;
+}
+
 }  // namespace arbc::verify
