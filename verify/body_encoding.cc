@@ -60,6 +60,8 @@ class Encoder {
 
   Ev eval(const BodyExpr& e);
   Ev binary(const BodyExpr& e);
+  Ev record(const BodyExpr& e);
+  Ev list(const BodyExpr& e);
   Ev arith(const std::string& op, const Ev& a, const Ev& b);
   Ev compare(const std::string& op, const Ev& a, const Ev& b);
   Ev call(const BodyExpr& e);
@@ -135,39 +137,47 @@ Ev Encoder::eval(const BodyExpr& e) {
     }
     case BodyExpr::Op::Binary:
       return binary(e);
-    case BodyExpr::Op::Record: {
-      std::map<std::string, Ev> fields;
-      z3::expr ok = ctx_.bool_val(true);
-      for (size_t i = 0; i < e.args.size(); ++i) {
-        Ev f = eval(e.args[i]);
-        if (f.unread) return unread();
-        ok = ok && f.ok;
-        fields.emplace(e.names[i], f);
-      }
-      SymValue r(K::Record, ctx_.bool_val(true));
-      for (auto& [name, f] : fields) {
-        r.names.push_back(name);
-        r.items.push_back(f.v);
-      }
-      return {r, ok};
-    }
-    case BodyExpr::Op::List: {
-      SymValue l(K::List, ctx_.int_val(static_cast<int>(e.args.size())));
-      z3::expr ok = ctx_.bool_val(true);
-      for (const BodyExpr& a : e.args) {
-        Ev x = eval(a);
-        if (x.unread) return unread();
-        ok = ok && x.ok;
-        l.items.push_back(x.v);
-      }
-      return {l, ok};
-    }
+    case BodyExpr::Op::Record:
+      return record(e);
+    case BodyExpr::Op::List:
+      return list(e);
     case BodyExpr::Op::Lambda:
       return bad("a lambda outside min_by / max_by");
     case BodyExpr::Op::Call:
       return call(e);
   }
   return bad("an unknown expression");
+}
+
+// A record literal: its fields, valid when every field is.
+Ev Encoder::record(const BodyExpr& e) {
+  std::map<std::string, Ev> fields;
+  z3::expr ok = ctx_.bool_val(true);
+  for (size_t i = 0; i < e.args.size(); ++i) {
+    Ev f = eval(e.args[i]);
+    if (f.unread) return unread();
+    ok = ok && f.ok;
+    fields.emplace(e.names[i], f);
+  }
+  SymValue r(K::Record, ctx_.bool_val(true));
+  for (auto& [name, f] : fields) {
+    r.names.push_back(name);
+    r.items.push_back(f.v);
+  }
+  return {r, ok};
+}
+
+// A list literal of known length: its elements, valid when every element is.
+Ev Encoder::list(const BodyExpr& e) {
+  SymValue l(K::List, ctx_.int_val(static_cast<int>(e.args.size())));
+  z3::expr ok = ctx_.bool_val(true);
+  for (const BodyExpr& a : e.args) {
+    Ev x = eval(a);
+    if (x.unread) return unread();
+    ok = ok && x.ok;
+    l.items.push_back(x.v);
+  }
+  return {l, ok};
 }
 
 Ev Encoder::index(const Ev& list, const Ev& i) {
