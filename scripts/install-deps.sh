@@ -21,6 +21,7 @@ if [[ "${1:-}" == "--bench" ]]; then
 fi
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
+             libxml2-utils                   # tests/artifacts: xmllint reads the XML and SVG arbc writes
              clang-format                    # tests/code_shape: code_format (scripts/format.sh)
              chromium                        # tests/report: the run report in headless Chromium
              neovim tmux                     # tests/lsp: Neovim's LSP client in a terminal
