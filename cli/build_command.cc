@@ -16,7 +16,6 @@
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
 #include "cli/parse_error.h"
-#include "cli/proof_record.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
@@ -27,6 +26,7 @@
 #include "core/diagnostic.h"
 #include "core/join.h"
 #include "core/suggest.h"
+#include "verify/proof_record.h"
 
 namespace arbc::cli {
 
@@ -34,20 +34,9 @@ namespace {
 
 std::string target_list() { return join(codegen::target_names()); }
 
-// The command line of `arbc build`.
-struct BuildArgs {
-  std::string spec;
-  std::string out_dir = "out";
-  std::string target_name{codegen::kDefaultTarget};
-  std::string deploy;
-  bool no_verify = false;
-  bool strict = false;
-  bool stats = false;
-};
-
 // Parses `arbc build`'s arguments into `a`; an exit code when the command ends here (--help,
 // a bad option).
-std::optional<int> parse_args(std::span<char*> args, BuildArgs& a) {
+std::optional<int> parse_args(std::span<char*> args, BuildRequest& a) {
   CLI::App cli{
       "Compile a behaviour spec, prove that each arbitrated port selects at most one rule, and "
       "write DIR/<app>/app.json and one Lua monitor per connection under DIR/<app>/monitors/\n"
@@ -141,14 +130,14 @@ UserModules keep_user_modules(std::vector<codegen::OutputFile>& files, const std
   return m;
 }
 
-// A proved app.json gets its proof recorded beside it (cli/proof_record.h), so that `arbc run`
+// A proved app.json gets its proof recorded beside it (verify/proof_record.h), so that `arbc run`
 // of the directory need not prove the same bytes again. Targets without an app.json (yarp) run
 // elsewhere and get none.
 void record_proof(std::vector<codegen::OutputFile>& files, const std::string& summary) {
   for (const codegen::OutputFile& f : files) {
     if (f.path != "app.json") continue;
-    std::string record = proof_record(f.content, summary);
-    if (!record.empty()) files.push_back({kProofRecordFile, std::move(record)});
+    std::string record = verify::proof_record(f.content, summary);
+    if (!record.empty()) files.push_back({verify::kProofRecordFile, std::move(record)});
     return;
   }
 }
@@ -156,8 +145,13 @@ void record_proof(std::vector<codegen::OutputFile>& files, const std::string& su
 }  // namespace
 
 int build_command(std::span<char*> args) {
-  BuildArgs a;
+  BuildRequest a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  std::string app_dir;
+  return build_spec(a, &app_dir);
+}
+
+int build_spec(const BuildRequest& a, std::string* app_dir) {
   const std::string& spec = a.spec;
   std::unique_ptr<codegen::Target> target = codegen::make_target(a.target_name);
   if (!target) {
@@ -206,6 +200,7 @@ int build_command(std::span<char*> args) {
     return kExitBadInput;
   }
   timer.phase("write");
+  *app_dir = a.out_dir + "/" + lowered.app.name;
   if (a.target_name == "yarp") {
     std::vector<std::string> paths;
     for (const codegen::OutputFile& f : generated.files) paths.push_back(f.path);

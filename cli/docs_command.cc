@@ -6,11 +6,11 @@
 #include <fstream>
 
 #include "cli/commands.h"
-#include "cli/model_loader.h"
 #include "cli/parse_error.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
 #include "core/join.h"
+#include "harness/model_loader.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -58,9 +58,9 @@ int docs_command(std::span<char*> args) {
     return exit_for_parse_error(cli, e);
   }
 
-  LoadNotes notes;
+  harness::LoadNotes notes;
   std::string load_error;
-  std::optional<model::App> app = load_model(input, &notes, &load_error);
+  std::optional<model::App> app = harness::load_model(input, &notes, &load_error);
   if (!notes.rendered.empty()) std::fputs(notes.rendered.c_str(), stderr);
   if (!app) {
     if (!load_error.empty()) std::fprintf(stderr, "%s\n", load_error.c_str());

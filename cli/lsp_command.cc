@@ -8,9 +8,9 @@
 
 #include "cli/commands.h"
 #include "cli/duration_option.h"
-#include "cli/monitor_runner.h"
 #include "cli/parse_error.h"
-#include "cli/test_replayer.h"
+#include "harness/monitor_runner.h"
+#include "harness/test_replayer.h"
 #include "lsp/server.h"
 
 namespace arbc::cli {
@@ -45,8 +45,8 @@ int lsp_command(std::span<char*> args) {
   // Counterexamples are replayed as `arbc verify` replays them, from the text being proved:
   // a violation over time is then confirmed on the runtime, not left unknown.
   options.make_replayers = [](std::shared_ptr<const lower::LoweredApp> lowered) {
-    return lsp::Replayers{std::make_unique<LuaMonitorRunner>(lowered),
-                          std::make_unique<RuntimeTestReplayer>(lowered)};
+    return lsp::Replayers{std::make_unique<harness::LuaMonitorRunner>(lowered),
+                          std::make_unique<harness::RuntimeTestReplayer>(lowered)};
   };
   // A client that goes away closes our stdout: writes then fail (the server sees it and
   // exits 1) instead of killing the process with SIGPIPE.

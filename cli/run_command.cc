@@ -10,7 +10,7 @@
 // report): a SPEC is built and verified into a temporary directory by `arbc build`, a DIR is
 // verified here; a refuted or unknown proof exits 1, and nothing runs. A DIR whose monitors
 // differ from the digests in its app.json is bad input. --report writes an HTML page about the
-// run (cli/report/run_report.h) from the trace records kept in memory. Ctrl-C and SIGTERM end
+// run (report/run_report.h) from the trace records kept in memory. Ctrl-C and SIGTERM end
 // the run within a second (cli/run_interrupt.h).
 #include <unistd.h>
 
@@ -26,8 +26,6 @@
 
 #include "cli/commands.h"
 #include "cli/parse_error.h"
-#include "cli/proof_record.h"
-#include "cli/report/report_file.h"
 #include "cli/run_end.h"
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
@@ -36,8 +34,10 @@
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
 #include "core/join.h"
+#include "report/report_file.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
+#include "verify/proof_record.h"
 
 namespace arbc::cli {
 
@@ -58,30 +58,21 @@ struct TempDir {
   }
 };
 
-// Builds (and, unless no_verify, verifies) a spec into `temp` with `arbc build`, and returns
-// the app directory it wrote. Returns the build's exit code on failure (1 refuted, 2 bad
+// Builds (and, unless no_verify, verifies) a spec into `temp` as `arbc build` does, and
+// returns the app directory it wrote. Returns the build's exit code on failure (1 refuted, 2 bad
 // input; its diagnostics are already printed).
-int build_spec(const std::string& spec, bool no_verify, TempDir* temp, std::string* dir) {
+int build_spec_into(const std::string& spec, bool no_verify, TempDir* temp, std::string* dir) {
   std::string pattern = (fs::temp_directory_path() / "arbc-run-XXXXXX").string();
   if (!mkdtemp(pattern.data())) {
     std::fprintf(stderr, "arbc run: error: cannot create a temporary directory for the build\n");
     return kExitRuntimeFailure;
   }
   temp->path = pattern;
-  std::vector<std::string> words = {"build", spec, "-o", temp->path};
-  if (no_verify) words.push_back("--no-verify");
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  int rc = build_command(std::span<char*>(argv.data(), argv.size()));
-  if (rc != kExitOk) return rc;
-  for (const fs::directory_entry& entry : fs::directory_iterator(temp->path)) {
-    if (fs::exists(entry.path() / "app.json")) {
-      *dir = entry.path().string();
-      return kExitOk;
-    }
-  }
-  std::fprintf(stderr, "arbc run: error: `arbc build %s` wrote no app directory\n", spec.c_str());
-  return kExitRuntimeFailure;
+  BuildRequest request;
+  request.spec = spec;
+  request.out_dir = temp->path;
+  request.no_verify = no_verify;
+  return build_spec(request, dir);
 }
 
 // Turns the command's input into a built app directory: a directory is used as is, a spec is
@@ -96,7 +87,7 @@ int prepare_app_dir(const std::string& input, bool no_verify, TempDir* temp, std
     if (dir->empty()) *dir = ".";
     return kExitOk;
   }
-  if (fs::path(input).extension() == ".spec") return build_spec(input, no_verify, temp, dir);
+  if (fs::path(input).extension() == ".spec") return build_spec_into(input, no_verify, temp, dir);
   std::fprintf(stderr,
                "arbc run: error: %s: not an app directory (one with app.json and monitors/, "
                "written by `arbc build`), its app.json, nor a .spec file\n",
@@ -122,7 +113,7 @@ std::string app_json_bytes(const std::string& dir) {
 }
 
 // Proves the app before it runs, as `arbc build` does (or finds that the build's proof of this
-// very app.json holds, cli/proof_record.h), and sets *proof to what the output and
+// very app.json holds, verify/proof_record.h), and sets *proof to what the output and
 // the report say about it (a spec was proved when it was built, and the build's summary said
 // so). Returns an exit code: kExitOk to run, else the proof's (1 refuted or unknown, 2 a
 // malformed model).
@@ -132,7 +123,8 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
     *proof = "not verified (--no-verify)";
   } else if (built_from_spec) {
     *proof = verified_summary(app.arbitrated_ports.size());
-  } else if (std::optional<std::string> recorded = recorded_proof(dir, app_json_bytes(dir))) {
+  } else if (std::optional<std::string> recorded =
+                 verify::recorded_proof(dir, app_json_bytes(dir))) {
     *proof = *recorded + " (by arbc build, for this very app.json)";
   } else {
     SourceCache sources;
@@ -251,7 +243,7 @@ int run_command(std::span<char*> args) {
   const model::App& app = *loaded;
   int placed = apply_transport(a.transport, app, &options);
   if (placed != kExitOk) return placed;
-  if (!stand_ins.prepare(app, &error)) {
+  if (!stand_ins.prepare(app, options.duration, &error)) {
     print_errors({error});
     return kExitBadInput;
   }

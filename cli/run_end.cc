@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cli/report/run_report.h"
 #include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/time_format.h"
+#include "report/run_report.h"
 
 namespace arbc::cli {
 

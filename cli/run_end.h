@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/report/report_file.h"
 #include "core/app_model.h"
+#include "report/report_file.h"
 #include "runtime/runtime.h"
 
 namespace arbc::cli {

@@ -7,8 +7,13 @@
 
 namespace arbc::cli {
 
-// --duration: "60s", "500ms", "2min", "3h" -> seconds (> 0), by parse_duration
-// (duration_option.h); a number without a unit is refused.
+// The longest run: 30 days. Times are seconds in a double, whose resolution is 0.5 ns at 30
+// days and passes the 1 ns tolerance of core/instant.h at 2^22 s (48 days); `--duration 1e12h`
+// was accepted and ran until killed.
+inline constexpr double kMaxRunSeconds = 30 * 24 * 3600.0;
+
+// --duration: "60s", "500ms", "2min", "3h" -> seconds (> 0, at most kMaxRunSeconds), by
+// parse_duration (duration_option.h); a number without a unit is refused.
 bool parse_run_duration(const std::string& text, double* seconds, std::string* err);
 
 // "0" .. "18446744073709551615" -> the seed. A sign, a fraction or an overflow is refused

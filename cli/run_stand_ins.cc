@@ -4,9 +4,9 @@
 #include <cstdlib>
 
 #include "cli/commands.h"
-#include "cli/out_port_hint.h"
-#include "cli/run_inputs.h"
-#include "cli/trace_diff.h"
+#include "harness/out_port_hint.h"
+#include "harness/run_inputs.h"
+#include "harness/trace_diff.h"
 
 namespace arbc::cli {
 
@@ -35,27 +35,64 @@ bool RunStandIns::parse_rates(std::string* err) {
                 ", without '" + end + "')";
       return false;
     }
+    if (hz > kMaxStubHz) {
+      *err = "--stub-rate " + r + ": at most 1000000 samples per second (one per microsecond, " +
+             "the shortest time arbc works with)";
+      return false;
+    }
     log_->stub.period_of_port[r.substr(0, eq)] = hz == 0 ? 0 : 1 / hz;
   }
   return true;
 }
 
-bool RunStandIns::prepare(const model::App& app, std::string* err) {
+// Every stand-in source samples for the whole run: refused beyond kMaxStubSamples, which a run
+// works through in minutes (`--stub-rate P=1e9` was accepted and ran until killed).
+bool RunStandIns::check_sample_budget(const model::App& app, double duration, std::string* err) {
+  double samples = 0;
+  std::string busiest;
+  double busiest_rate = 0;
+  for (const std::string& name : stand_ins_) {
+    const model::Module* m = app.find_module(name);
+    bool scripted = log_->inputs.count(name) > 0;
+    for (const model::Port& p : m ? m->ports : std::vector<model::Port>{}) {
+      std::string q = name + "." + p.name;
+      if (p.direction != model::Direction::Out || scripted) continue;
+      auto it = log_->stub.period_of_port.find(q);
+      double period =
+          it == log_->stub.period_of_port.end() ? log_->stub.default_period : it->second;
+      if (period <= 0) continue;
+      samples += duration / period;
+      if (1 / period > busiest_rate) busiest_rate = 1 / period, busiest = q;
+    }
+  }
+  if (samples <= kMaxStubSamples) return true;
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "--stub: the stand-ins would publish about %.3g samples in this run (%s at %g "
+                "per second the most); at most %.0f: ",
+                samples, busiest.c_str(), busiest_rate, kMaxStubSamples);
+  *err = std::string(text) + "shorten --duration or lower --stub-rate";
+  return false;
+}
+
+bool RunStandIns::prepare(const model::App& app, double duration, std::string* err) {
   registry_ = Registry::global();
   if (!rates_.empty() && !stub_) return *err = "--stub-rate needs --stub", false;
-  if (!diff_.empty() && !read_trace_file(diff_, &other_, err)) return false;
+  if (!diff_.empty() && !harness::read_trace_file(diff_, &other_, err)) return false;
   if (!active()) return true;
   log_->stub.enabled = stub_;
+  log_->keep_received = false;  // the summary needs the tallies only
   if (!parse_rates(err)) return false;
   for (const auto& [port, period] : log_->stub.period_of_port) {
     const model::Port* p = app.find_port(port);
     if (!p || p->direction != model::Direction::Out)
-      return *err = "--stub-rate: " + not_an_out_port(app, port), false;
+      return *err = "--stub-rate: " + harness::not_an_out_port(app, port), false;
   }
   registry_ = registry_with_stand_ins(app, Registry::global(), log_, &stand_ins_);
-  if (inputs_.empty()) return true;
-  InputsRead read;
-  if (!read_inputs(inputs_, app, stand_ins_, log_.get(), &read, err)) return false;
+  if (inputs_.empty()) return !stub_ || check_sample_budget(app, duration, err);
+  harness::InputsRead read;
+  if (!harness::read_inputs(inputs_, app, stand_ins_, log_.get(), &read, err)) return false;
+  if (stub_ && !check_sample_budget(app, duration, err)) return false;
   std::printf("inputs: %zu messages from %s%s", read.messages, inputs_.c_str(),
               read.from_trace ? " (a trace: its publications are replayed)" : "");
   if (read.skipped_provided)
@@ -71,7 +108,7 @@ std::string RunStandIns::summary(const model::App& app) const {
 int RunStandIns::diff(const model::App& app, const std::vector<TraceRecord>& records,
                       int run_exit) const {
   if (diff_.empty()) return run_exit;
-  std::string difference = first_difference(app, records, other_, diff_);
+  std::string difference = harness::first_difference(app, records, other_, diff_);
   if (difference.empty()) {
     std::printf("diff: every decision is the same as in %s\n", diff_.c_str());
     return run_exit;

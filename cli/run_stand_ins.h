@@ -15,6 +15,11 @@
 
 namespace arbc::cli {
 
+// The highest --stub-rate (a period of one microsecond), and the most samples the stand-ins may
+// publish in one run (a few minutes of work for the simulated executor).
+inline constexpr double kMaxStubHz = 1e6;
+inline constexpr double kMaxStubSamples = 1e8;
+
 class RunStandIns {
  public:
   void add_options(CLI::App& cli);
@@ -23,7 +28,8 @@ class RunStandIns {
   bool wants_records() const { return !diff_.empty(); }
   // The registry the run uses: the global one, plus stand-ins when active(). Reads and checks
   // the inputs file, and the other trace for --diff. False with *err (bad input).
-  bool prepare(const model::App& app, std::string* err);
+  // `duration` is the run's length in seconds, which bounds what --stub publishes.
+  bool prepare(const model::App& app, double duration, std::string* err);
   Registry& registry() { return registry_; }
   // What each stand-in received and published ("" when none ran).
   std::string summary(const model::App& app) const;
@@ -33,6 +39,7 @@ class RunStandIns {
 
  private:
   bool parse_rates(std::string* err);
+  bool check_sample_budget(const model::App& app, double duration, std::string* err);
   std::string inputs_, diff_;
   bool stub_ = false;
   std::vector<std::string> rates_;

@@ -19,10 +19,7 @@
 #include <thread>
 
 #include "cli/commands.h"
-#include "cli/junit.h"
 #include "cli/parse_error.h"
-#include "cli/test_filter.h"
-#include "cli/test_runner.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
@@ -30,6 +27,9 @@
 #include "compiler/lower/compile_spec.h"
 #include "core/diagnostic.h"
 #include "core/join.h"
+#include "harness/junit.h"
+#include "harness/test_filter.h"
+#include "harness/test_runner.h"
 #include "runtime/app_loader.h"
 
 namespace arbc::cli {
@@ -101,46 +101,43 @@ int prepare_spec(const std::string& spec, bool no_verify, Seen* seen, Scratch* s
     }
     if (verdict->second != kExitOk) return verdict->second;
   }
-  std::unique_ptr<codegen::Target> target = codegen::make_target(codegen::kDefaultTarget);
-  codegen::CodegenResult generated = target->generate(lowered);
   std::string pattern = (fs::temp_directory_path() / "arbc-test-XXXXXX").string();
-  std::string error;
-  if (!generated.ok || !mkdtemp(pattern.data())) {
+  if (!mkdtemp(pattern.data())) {
     std::fprintf(stderr, "arbc test: %s: cannot generate the monitors\n", spec.c_str());
     return kExitRuntimeFailure;
   }
   scratch->path = pattern;
-  if (!codegen::write_artifacts(pattern, lowered.app.name, generated.files, &error)) {
-    std::fprintf(stderr, "arbc test: %s\n", error.c_str());
+  harness::TestApp ready = harness::write_test_app(lowered, pattern);
+  if (ready.generate_failed) {
+    std::fprintf(stderr, "arbc test: %s: cannot generate the monitors\n", spec.c_str());
     return kExitRuntimeFailure;
   }
-  *app_dir = (fs::path(pattern) / lowered.app.name).string();
-  Diagnostic app_json_error;  // in app.json's text: rendered as a compiler's, line quoted
-  std::optional<model::App> loaded = load_app_dir(*app_dir, &error, &app_json_error);
-  if (!loaded && !app_json_error.loc.file.empty()) {
+  if (!ready.app_json.loc.file.empty()) {
     SourceCache sources;  // as `arbc run` and `arbc verify` show it
-    std::fputs(render(app_json_error, &sources).c_str(), stderr);
+    std::fputs(render(ready.app_json, &sources).c_str(), stderr);
     return kExitRuntimeFailure;
   }
-  if (!loaded || !write_test_harness(*app_dir, &error)) {
-    std::istringstream lines(error);
+  if (!ready.ok) {
+    std::istringstream lines(ready.error);
     for (std::string line; std::getline(lines, line);)
       std::fprintf(stderr, "arbc test: %s\n", line.c_str());
     return kExitRuntimeFailure;
   }
-  *app = std::move(*loaded);
+  *app_dir = ready.dir;
+  *app = std::move(ready.app);
   *tests = lowered.tests;
   return kExitOk;
 }
 
 // Runs `tests` on `jobs` threads (1: this one); outcomes in the tests' order.
-std::vector<TestOutcome> run_all(const model::App& app, const std::string& dir,
-                                 const std::vector<const model::TestCase*>& tests, unsigned jobs) {
-  std::vector<TestOutcome> out(tests.size());
+std::vector<harness::TestOutcome> run_all(const model::App& app, const std::string& dir,
+                                          const std::vector<const model::TestCase*>& tests,
+                                          unsigned jobs) {
+  std::vector<harness::TestOutcome> out(tests.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
     for (size_t i = next++; i < tests.size(); i = next++)
-      out[i] = run_test_case(app, dir, *tests[i]);
+      out[i] = harness::run_test_case(app, dir, *tests[i]);
   };
   std::vector<std::thread> threads;
   for (unsigned k = 1; k < jobs; ++k) threads.emplace_back(work);
@@ -174,9 +171,9 @@ std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
 }
 
 // Prints one line per test and each failure's details; returns how many failed.
-size_t print_outcomes(const std::string& spec, const std::vector<TestOutcome>& outcomes) {
+size_t print_outcomes(const std::string& spec, const std::vector<harness::TestOutcome>& outcomes) {
   size_t failed = 0;
-  for (const TestOutcome& t : outcomes) {
+  for (const harness::TestOutcome& t : outcomes) {
     std::printf("%s  %s: %s\n", t.passed ? "PASS" : "FAIL", spec.c_str(), t.name.c_str());
     if (!t.passed) {
       ++failed;
@@ -222,21 +219,22 @@ int test_command(std::span<char*> args) {
   for (const std::unique_ptr<PreparedSpec>& p : prepared) {
     for (const model::TestCase& t : p->tests) {
       declared.push_back(t.name);
-      any_chosen = any_chosen || filter_matches(a.filter, t.name);
+      any_chosen = any_chosen || harness::filter_matches(a.filter, t.name);
     }
   }
   if (!declared.empty() && !any_chosen) {
-    std::fprintf(stderr, "arbc test: error: %s\n", filter_matched_none(a.filter, declared).c_str());
+    std::fprintf(stderr, "arbc test: error: %s\n",
+                 harness::filter_matched_none(a.filter, declared).c_str());
     return kExitBadInput;
   }
-  std::vector<SuiteOutcome> suites;
+  std::vector<harness::SuiteOutcome> suites;
   size_t total = 0, failed = 0;
   for (const std::unique_ptr<PreparedSpec>& p : prepared) {
     std::vector<const model::TestCase*> chosen;
     for (const model::TestCase& t : p->tests) {
-      if (filter_matches(a.filter, t.name)) chosen.push_back(&t);
+      if (harness::filter_matches(a.filter, t.name)) chosen.push_back(&t);
     }
-    std::vector<TestOutcome> outcomes =
+    std::vector<harness::TestOutcome> outcomes =
         run_all(p->app, p->dir, chosen, jobs_for(chosen.size(), a.jobs));
     failed += print_outcomes(p->spec, outcomes);
     total += outcomes.size();
@@ -244,7 +242,7 @@ int test_command(std::span<char*> args) {
   }
   if (!a.junit.empty()) {
     std::ofstream out(a.junit);
-    out << junit_xml(suites);
+    out << harness::junit_xml(suites);
     if (!out) {
       std::fprintf(stderr, "arbc test: error: cannot write %s\n", a.junit.c_str());
       return kExitBadInput;

@@ -12,14 +12,14 @@
 
 #include "cli/commands.h"
 #include "cli/duration_option.h"
-#include "cli/model_loader.h"
-#include "cli/monitor_runner.h"
 #include "cli/parse_error.h"
-#include "cli/test_replayer.h"
-#include "cli/yarp_directory.h"
-#include "cli/yarp_verify.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
+#include "harness/model_loader.h"
+#include "harness/monitor_runner.h"
+#include "harness/test_replayer.h"
+#include "import/yarp/yarp_directory.h"
+#include "import/yarp/yarp_verify.h"
 #include "verify/report_format.h"
 #include "verify/temporal/counterexample.h"
 #include "verify/verify.h"
@@ -102,7 +102,8 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->capture_default_str();
   cli.add_option("--counterexamples", a.counterexamples,
                  "a folder to write each violated property over time into, as a tests file "
-                 "that `arbc test` replays (APP.RULE.test.spec)");
+                 "that states the property (APP.RULE.test.spec): `arbc test` of it fails until "
+                 "the app is fixed");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
@@ -165,7 +166,7 @@ void print_internal_errors(const std::vector<verify::InputReport>& reports) {
 // A directory without app.json: a --target yarp build stands for its application XML, and a
 // folder of yarpmanager XMLs is bad input that names them. False when `input` goes no further.
 bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>& reports) {
-  YarpDirectory dir = yarp_directory(input);
+  yarp::YarpDirectory dir = yarp::yarp_directory(input);
   if (dir.build_xml) input = *dir.build_xml;
   if (dir.build_xml || dir.xmls.empty()) return true;
   std::string xmls;
@@ -174,7 +175,8 @@ bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>
                       "; give the yarpmanager application XML itself (arbc verify " + dir.xmls[0] +
                       ")";
   std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
-  reports.push_back({input, {}, {file_error(input, error.substr(input.size() + 2), "io")}});
+  reports.push_back(
+      {input, {}, {harness::file_error(input, error.substr(input.size() + 2), "io")}});
   return false;
 }
 
@@ -202,21 +204,40 @@ int finish(const VerifyArgs& a, const std::vector<verify::InputReport>& reports,
   return kExitOk;
 }
 
+// --counterexamples names a folder, made if missing: a file there, or a folder that cannot be
+// made, is bad input, said before the proof runs (it said so after, with exit 3).
+bool counterexample_folder_ok(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+    std::fprintf(stderr,
+                 "arbc verify: --counterexamples %s: not a folder; give a folder to write the "
+                 "tests files into (it is made if missing)\n",
+                 dir.c_str());
+    return false;
+  }
+  if (!fs::create_directories(dir, ec) && ec) {
+    std::fprintf(stderr, "arbc verify: --counterexamples %s: cannot make the folder: %s\n",
+                 dir.c_str(), ec.message().c_str());
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int verify_command(std::span<char*> args) {
   VerifyArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
+  if (!a.counterexamples.empty() && !counterexample_folder_ok(a.counterexamples))
+    return kExitBadInput;
   std::vector<std::string>& inputs = a.inputs;
-  if (inputs.empty()) {
-    inputs = default_inputs();
-    if (inputs.empty()) {
-      std::fputs(
-          "arbc verify: no inputs, and no specs/*.spec in the current directory; give "
-          "specs or app.json files (arbc verify --help)\n",
-          stderr);
-      return kExitBadInput;
-    }
+  if (inputs.empty() && (inputs = default_inputs()).empty()) {
+    std::fputs(
+        "arbc verify: no inputs, and no specs/*.spec in the current directory; give "
+        "specs or app.json files (arbc verify --help)\n",
+        stderr);
+    return kExitBadInput;
   }
 
   bool bad_input = false;
@@ -226,32 +247,33 @@ int verify_command(std::span<char*> args) {
       bad_input = true;
       continue;
     }
-    if (is_yarp_application(input)) {
-      YarpVerify y = verify_yarp_application(input, a.options, a.yarp_paths);
+    if (yarp::is_yarp_application(input)) {
+      yarp::YarpVerify y = yarp::verify_yarp_application(input, a.options, a.yarp_paths);
       std::fputs(y.diagnostics.c_str(), stderr);
       bad_input |= !y.ok;
       if (y.ok) reports.push_back({input, std::move(y.report)});
       continue;
     }
-    LoadNotes notes;
+    harness::LoadNotes notes;
     std::string error;
-    std::optional<model::App> app = load_model(input, &notes, &error);
+    std::optional<model::App> app = harness::load_model(input, &notes, &error);
     std::fputs(notes.rendered.c_str(), stderr);
     if (!app) {
       std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
-      if (notes.errors.empty()) notes.errors.push_back(file_error(input, error, "app-json"));
+      if (notes.errors.empty())
+        notes.errors.push_back(harness::file_error(input, error, "app-json"));
       reports.push_back({input, {}, std::move(notes.errors)});
       bad_input = true;
       continue;
     }
-    if (!is_spec_path(input) && !monitors_match(input, *app)) {
+    if (!harness::is_spec_path(input) && !monitors_match(input, *app)) {
       bad_input = true;
       continue;
     }
-    LuaMonitorRunner runner(input, *app);
+    harness::LuaMonitorRunner runner(input, *app);
     verify::VerifyOptions options = a.options;
     options.runner = &runner;
-    RuntimeTestReplayer replayer(input);
+    harness::RuntimeTestReplayer replayer(input);
     options.test_replayer = &replayer;
     options.on_stuck = [&a, &reports, &app, &input, bad_input] {
       std::vector<verify::InputReport> all = reports;  // what is done, and this input unknown
@@ -263,7 +285,7 @@ int verify_command(std::span<char*> args) {
     std::optional<verify::VerifyReport> report = verify::verify_app(*app, options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
-      reports.push_back({input, {}, {file_error(input, error, "app-json")}});
+      reports.push_back({input, {}, {harness::file_error(input, error, "app-json")}});
       bad_input = true;
       continue;
     }

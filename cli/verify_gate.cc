@@ -5,8 +5,8 @@
 
 #include "cli/build_summary.h"
 #include "cli/commands.h"
-#include "cli/monitor_runner.h"
-#include "cli/test_replayer.h"
+#include "harness/monitor_runner.h"
+#include "harness/test_replayer.h"
 #include "verify/report_format.h"
 #include "verify/verify.h"
 
@@ -24,9 +24,10 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   VerifyGate gate;
   verify::VerifyOptions options;
   options.strict = strict;
-  LuaMonitorRunner runner(input, app);  // message counterexamples are replayed, as in verify
+  harness::LuaMonitorRunner runner(input,
+                                   app);  // message counterexamples are replayed, as in verify
   options.runner = &runner;
-  RuntimeTestReplayer replayer(input);  // and counterexamples over time
+  harness::RuntimeTestReplayer replayer(input);  // and counterexamples over time
   options.test_replayer = &replayer;
   options.on_stuck = [&app, &input, &refusal, command, &options] {
     verify::VerifyReport stuck = verify::stuck_report(app, options.timeout_seconds);

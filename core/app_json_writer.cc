@@ -1,6 +1,7 @@
 // to_app_json: the core model as app.json text (docs/app-json.md), written in one pass with
 // JsonWriter. Reading it back is app_json.cc's job.
 #include "core/app_json.h"
+#include "core/artifact_path.h"
 #include "core/body_text.h"
 #include "core/json_writer.h"
 
@@ -20,10 +21,15 @@ const char* kind_name(ConnectionKind k) {
   return "?";
 }
 
+// The paths of the app.json being written, as an artifact names them (core/artifact_path.h):
+// set by to_app_json for the duration of one call, so that the many writers of a location
+// need no extra parameter.
+thread_local ArtifactPaths* t_paths = nullptr;
+
 void write_location(JsonWriter& w, const SourceLocation& loc) {
   w.key("loc");
   w.begin_object();
-  w.member("file", loc.file);
+  w.member("file", (*t_paths)(loc.file));
   w.member("line", loc.line);
   w.member("column", loc.column);
   w.member("end_line", loc.end_line);
@@ -207,12 +213,14 @@ void write_assumptions(JsonWriter& w, const std::vector<Assumption>& assumptions
 }  // namespace
 
 std::string to_app_json(const App& app) {
+  ArtifactPaths paths;
+  t_paths = &paths;
   JsonWriter w;
   w.begin_object();
   w.member("schema_version", app.schema_version);
   w.member("name", app.name);
   w.member("description", app.description);
-  w.member("spec_file", app.spec_file);
+  w.member("spec_file", paths(app.spec_file));
   w.key("types");
   w.begin_array();
   for (const NamedType& t : app.types) {
@@ -271,6 +279,7 @@ std::string to_app_json(const App& app) {
   write_assumptions(w, app.assumptions);
   write_rates(w, app.rates);
   w.end_object();
+  t_paths = nullptr;
   return w.take() + "\n";
 }
 

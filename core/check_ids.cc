@@ -41,6 +41,9 @@ constexpr CheckId kIds[] = {
     {"invalid-utf8", kCheck, "the file is not valid UTF-8"},
     {"io", kCheck, "the file cannot be read (missing, a directory, unreadable)"},
     {"lambda", kCheck, "a lambda outside the function argument of min_by / max_by"},
+    {"line-endings", kCheck,
+     "a line ends in a carriage return alone (old Mac OS line endings), which arbc does not read "
+     "as a line end"},
     {"missing-app", kCheck, "the spec has no `app NAME;` declaration"},
     {"nesting-too-deep", kCheck,
      "brackets, operators or else-if chains nested deeper than the limit"},
@@ -52,7 +55,8 @@ constexpr CheckId kIds[] = {
     {"predicate-type", kCheck,
      "a derived event's predicate, a resource's `when` or an assert over `emitted` is not bool"},
     {"priority", kCheck,
-     "a declared event takes the name of a `by priority` activity event (act_<rule>)"},
+     "a declared event takes the name of a `by priority` activity event (act_<rule>), or a "
+     "`by priority` port has more rules than can be checked (1,000)"},
     {"resource", kVerify,
      "two ports of a `resource` can each receive a command that uses it, from one message or "
      "two"},

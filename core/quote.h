@@ -1,5 +1,5 @@
 // String literals for the languages arbc writes (JSON, Lua, Graphviz DOT): the one escaping
-// routine of the project. HTML and Markdown text are not literals; cli/report/html_text.h and
+// routine of the project. HTML and Markdown text are not literals; report/html_text.h and
 // compiler/docs/markdown_docs.h escape those.
 #pragma once
 

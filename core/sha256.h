@@ -1,7 +1,8 @@
 // SHA-256 (FIPS 180-4), for the digests app.json records of its monitor files
-// (docs/app-json.md, "Monitor digests"). Our own few lines rather than a crypto library: the
-// digest only has to notice that a file changed since `arbc build` wrote it, the core library
-// stays free of dependencies, and sha256_test.cc checks it against the FIPS test vectors.
+// (docs/app-json.md, "Monitor digests") and for the proof record: GNU Nettle's, a maintained
+// library Debian ships (nettle-dev), which uses the processor's SHA extensions where it has
+// them. It replaced arbc's own implementation, and is no slower:
+// docs/benchmarks.md#sha-256-from-nettle-issue-40. sha256_test.cc checks the FIPS vectors.
 #pragma once
 
 #include <array>
@@ -13,11 +14,7 @@ namespace arbc {
 
 using Sha256Digest = std::array<uint8_t, 32>;
 
-// Fastest: the processor's SHA extensions where it has them (sha256_blocks.h). Portable: plain
-// C++ everywhere; the two give the same digest, which sha256_test.cc checks.
-enum class Sha256Path { Fastest, Portable };
-
-Sha256Digest sha256(std::string_view bytes, Sha256Path path = Sha256Path::Fastest);
+Sha256Digest sha256(std::string_view bytes);
 
 // The digest as 64 lower-case hexadecimal digits (what `sha256sum` prints).
 std::string sha256_hex(std::string_view bytes);

@@ -5,8 +5,6 @@
 #include <string>
 #include <utility>
 
-#include "core/sha256_blocks.h"
-
 namespace arbc {
 namespace {
 
@@ -46,24 +44,6 @@ TEST(Sha256Test, LengthsAroundThePaddingBoundaries) {
       {128, "24da1b81d0b16df6428eee73c69fcb2a93c76bc6df706f0c6670fe6bfe800464"},
   };
   for (const auto& [n, hex] : cases) EXPECT_EQ(sha256_hex(std::string(n, 'x')), hex) << n;
-}
-
-// The SHA extensions' path (where the processor has them, as the CI machines do) and the
-// portable one agree on every length up to four blocks and on a megabyte of varied bytes.
-TEST(Sha256Test, BothPathsGiveTheSameDigests) {
-  if (!sha256_detail::sha_extensions_available())
-    GTEST_SKIP() << "this processor has no SHA extensions: only the portable path runs here";
-  std::string bytes;
-  uint32_t x = 12345;
-  for (size_t n = 0; n <= 1 << 20; n = n < 300 ? n + 1 : n * 3) {
-    while (bytes.size() < n) {
-      x = x * 1664525u + 1013904223u;  // any varied bytes will do
-      bytes.push_back(static_cast<char>(x >> 24));
-    }
-    std::string_view prefix(bytes.data(), n);
-    EXPECT_EQ(sha256(prefix, Sha256Path::Fastest), sha256(prefix, Sha256Path::Portable)) << n;
-  }
-  EXPECT_EQ(sha256("abc", Sha256Path::Portable), sha256("abc", Sha256Path::Fastest));
 }
 
 }  // namespace

@@ -59,6 +59,18 @@ TEST(XmlText, EscapesMarkupAndKeepsUtf8AndApostrophes) {
             "a&lt;b&gt; &amp; &quot;c&quot; it's \xc3\xa9");
 }
 
+TEST(XmlText, CommentTextHasNoDoubleHyphenAndNoFinalHyphen) {
+  EXPECT_EQ(xml_comment_text("arbc build --target yarp"), "arbc build - -target yarp");
+  EXPECT_EQ(xml_comment_text("a ---> b"), "a - - -> b");
+  EXPECT_EQ(xml_comment_text("ends-"), "ends- ");
+  EXPECT_EQ(xml_comment_text("<a & b>"), "<a & b>");  // no entities in a comment
+  EXPECT_EQ(xml_comment_text(std::string("a\x01"
+                                         "b",
+                                         3)),
+            "a\xEF\xBF\xBD"
+            "b");
+}
+
 TEST(XmlText, ControlCharactersXmlForbidsBecomeReplacementCharacters) {
   EXPECT_EQ(xml_escaped(std::string("a\x01"
                                     "b\0c\td\ne\rf",

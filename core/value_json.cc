@@ -1,6 +1,7 @@
 #include "core/value_json.h"
 
 #include <cmath>
+#include <limits>
 
 namespace arbc {
 
@@ -54,6 +55,32 @@ std::optional<Value> convert_vec3(const nlohmann::json& j, const std::string& pa
   return Value::vec3(xyz[0], xyz[1], xyz[2]);
 }
 
+// An int is 64 bits: a number outside their range would wrap (2^63 read as -2^63), so it is
+// refused, as is a fraction. JSON's parser reads an integer too long for 64 bits as a double,
+// which is exact only up to 2^53: a float-form int is taken up to there, and refused beyond
+// (-9223372036854775809 reads as exactly -2^63, a silent wrong answer).
+std::optional<Value> convert_int(const nlohmann::json& j, const std::string& path,
+                                 std::string* err) {
+  constexpr double kTwo53 = 9007199254740992.0;
+  const char* range =
+      "a 64-bit integer, written in digits from -9223372036854775808 to "
+      "9223372036854775807";
+  if (j.is_number_integer() && !j.is_number_unsigned()) return Value(j.get<int64_t>());
+  if (j.is_number_unsigned()) {
+    if (j.get<uint64_t>() <= static_cast<uint64_t>(std::numeric_limits<int64_t>::max()))
+      return Value(static_cast<int64_t>(j.get<uint64_t>()));
+    *err = at(path) + j.dump() + " is beyond the range of int, " + range;
+    return std::nullopt;
+  }
+  if (!j.is_number_float() || std::nearbyint(j.get<double>()) != j.get<double>())
+    return fail(path, "int", j, err), std::nullopt;
+  double d = j.get<double>();
+  if (d >= -kTwo53 && d <= kTwo53) return Value(static_cast<int64_t>(d));
+  *err = at(path) + j.dump() + " is not an exact int (a number read as a float beyond 2^53); an " +
+         "int is " + range;
+  return std::nullopt;
+}
+
 std::optional<Value> convert_record(const nlohmann::json& j, const Type& t, const std::string& path,
                                     std::string* err) {
   if (!j.is_object()) {
@@ -88,10 +115,7 @@ std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::
       if (!j.is_boolean()) return fail(path, "bool", j, err), std::nullopt;
       return Value(j.get<bool>());
     case Type::Kind::Int:
-      if (j.is_number_integer() || j.is_number_unsigned()) return Value(j.get<int64_t>());
-      if (j.is_number_float() && std::nearbyint(j.get<double>()) == j.get<double>())
-        return Value(static_cast<int64_t>(j.get<double>()));
-      return fail(path, "int", j, err), std::nullopt;
+      return convert_int(j, path, err);
     case Type::Kind::Float:
       if (!j.is_number()) return fail(path, "float", j, err), std::nullopt;
       return Value(j.get<double>());

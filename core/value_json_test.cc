@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace arbc {
 namespace {
 
@@ -35,6 +37,30 @@ TEST(ValueJsonTest, NamesTheFieldThatDoesNotFit) {
   EXPECT_EQ(err, "item 1: expected string, got int");
   read("2.5", "int", &err);
   EXPECT_EQ(err, "expected int, got float");
+}
+
+// 2^63 was read as -2^63 (issue 40): an int outside 64 bits is refused, whatever its spelling.
+TEST(ValueJsonTest, AnIntBeyond64BitsIsRefusedNotWrapped) {
+  std::string err;
+  EXPECT_EQ(read("9223372036854775807", "int", &err), Value(int64_t{9223372036854775807}));
+  EXPECT_EQ(read("-9223372036854775808", "int", &err), Value(std::numeric_limits<int64_t>::min()));
+  EXPECT_EQ(err, "");
+  for (const char* beyond : {"9223372036854775808", "18446744073709551615"}) {
+    err.clear();
+    EXPECT_FALSE(value_from_json(nlohmann::json::parse(beyond), *parse_type("int"), &err));
+    EXPECT_NE(err.find("is beyond the range of int, a 64-bit integer"), std::string::npos)
+        << beyond << ": " << err;
+  }
+  // Read as doubles by the JSON parser, so no longer exact: -9223372036854775809 is -2^63.
+  for (const char* inexact : {"99999999999999999999999", "-9223372036854775809", "1e19", "1e18"}) {
+    err.clear();
+    EXPECT_FALSE(value_from_json(nlohmann::json::parse(inexact), *parse_type("int"), &err));
+    EXPECT_NE(err.find("is not an exact int"), std::string::npos) << inexact << ": " << err;
+  }
+  EXPECT_EQ(read("1e15", "int", &err), Value(int64_t{1000000000000000}));
+  err.clear();
+  read(R"({"n": 9223372036854775808})", "{n: int}", &err);
+  EXPECT_EQ(err.rfind("field n: 9223372036854775808 is beyond", 0), 0u) << err;
 }
 
 }  // namespace

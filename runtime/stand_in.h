@@ -39,13 +39,24 @@ struct StubPlan {
   std::map<std::string, double> period_of_port;  // "Module.port" -> seconds; 0: silent
 };
 
+// What a stand-in sink received on one port, in constant space: what `arbc run` prints.
+struct ReceivedTally {
+  uint64_t count = 0;
+  double first = 0;
+  Received last;
+};
+
 // What every stand-in of one run shares: its inputs, and what it received. The runtime runs all
 // callbacks on one thread, so no lock is needed.
 struct StandInLog {
   std::map<std::string, std::vector<TimedValue>> inputs;  // by module name, in time order
   StubPlan stub;
-  std::vector<Received> received;             // in delivery order
-  std::map<std::string, uint64_t> published;  // "Module.port" -> messages published
+  // Every message, for `arbc test`'s expectations. A run sets it false: a sink that kept every
+  // value of a long run with --stub grew without bound, the tallies are what it prints.
+  bool keep_received = true;
+  std::vector<Received> received;              // in delivery order (keep_received)
+  std::map<std::string, ReceivedTally> tally;  // "Module.port" -> what reached it
+  std::map<std::string, uint64_t> published;   // "Module.port" -> messages published
 };
 
 // A sample of type t for `--stub`: drawn from rng; a `list<string>` port that feeds events

@@ -1,6 +1,7 @@
 // The run's trace: one JSON object per line, for every delivery, drop, event change and
-// error (docs/runtime.md, "Trace format"). Keys come in a fixed order and numbers print
-// deterministically, so the same seed gives a byte-identical trace.
+// error (docs/runtime.md, "Trace format", whose keys runtime/trace_format.h defines). Keys come
+// in a fixed order and numbers print deterministically, so the same seed gives a byte-identical
+// trace.
 #pragma once
 
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "core/value.h"
 #include "runtime/drop_reason.h"
+#include "runtime/trace_format.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
@@ -45,10 +47,7 @@ class Trace {
   void close();
 
  private:
-  void begin(double t, const char* type);
-  void field(const char* key, std::string_view value);
-  void end();
-  TraceRecord& record(double t, TraceKind kind);
+  void emit(const TraceLine& line);
   std::FILE* file_ = nullptr;
   std::vector<TraceRecord>* records_ = nullptr;
   std::string line_;

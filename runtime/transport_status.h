@@ -1,5 +1,5 @@
 // What a transport between processes (DDS) knows about its topics at the end of a run, as
-// data: `arbc run --report` draws a table from it (cli/report/run_report.h), and the DDS
+// data: `arbc run --report` draws a table from it (report/run_report.h), and the DDS
 // transport writes its end-of-run lines from it (Transport::summary), so the two never differ.
 // The in-process transport has none.
 #pragma once

@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-mapfile -t files < <(find bench cli compiler core dds examples fuzz import lsp runtime tests verify \
+mapfile -t files < <(find bench cli compiler core dds examples fuzz harness import lsp report runtime tests verify \
   -type f \( -name '*.cc' -o -name '*.h' \) | sort)
 if [ "${1:-}" = --check ]; then
   # One clang-format process for all files (one per file took a minute); it names each file

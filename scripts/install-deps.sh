@@ -9,6 +9,7 @@ packages=(
   antlr4 libantlr4-runtime-dev uuid-dev      # grammar tool + C++ runtime (its cmake targets link -luuid)
   liblua5.4-dev lua5.4                       # monitors; lua5.4 gives luac5.4 for `luac -p` checks
   libz3-dev                                  # the proof
+  nettle-dev                                 # SHA-256 of monitors and app.json (core/sha256.h)
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyxml2-dev                            # arbc verify APP.xml: yarpmanager applications
@@ -20,6 +21,7 @@ if [[ "${1:-}" == "--bench" ]]; then
 fi
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev python3 python3-jsonschema
+             libxml2-utils                   # tests/artifacts: xmllint reads the XML and SVG arbc writes
              clang-format                    # tests/code_shape: code_format (scripts/format.sh)
              chromium                        # tests/report: the run report in headless Chromium
              neovim tmux                     # tests/lsp: Neovim's LSP client in a terminal

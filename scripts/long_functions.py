@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Lists C++ functions longer than a limit (default 80 lines), and fails if any is not allowed.
+"""Lists C++ functions longer than a limit (default 80 lines) and source files longer than 600
+lines, and fails if any is not allowed.
 
 A function's length is counted from the line of its name to the line of its closing brace, both
 included. The scan strips comments, string and character literals (raw strings included) and
@@ -8,13 +9,16 @@ parameter list opens a function body (member functions defined in a class includ
 inside a body (blocks, lambdas, local classes) belong to that function.
 
 Usage:
-  scripts/long_functions.py [--limit N] [--all] [--allow FILE] [ROOT]
+  scripts/long_functions.py [--limit N] [--file-limit N] [--all] [--allow FILE] [ROOT]
 
-Without --all it scans the library and CLI code (core/ compiler/ verify/ runtime/ cli/), tests
-and test-support files excepted, and exits 1 if a function over the limit is not in the
-allow-list (scripts/long_functions.allow: `path function` per line), or if an allowed function is
-no longer long (so the list only shrinks). With --all it lists every long function in the
-repository (tests, benchmarks and fuzz targets included) and always exits 0.
+Without --all it scans every production folder (core/ compiler/ verify/ runtime/ cli/ lsp/ dds/
+import/ harness/ report/), test code excepted: files named *_test.cc or *_test.h, test utilities (*test_util*),
+and anything under a tests/, testing/ or testdata/ folder. A production file whose name merely
+starts with test_ (harness/test_runner.cc, the `arbc test` engine) is production. It exits 1 if a
+function over the limit or a file over the file limit is not in the allow-list
+(scripts/long_functions.allow: `path function` per line, or `path (file)` for a long file), or
+if an allowed one is no longer long (so the list only shrinks). With --all it lists every long
+function in the repository (tests, benchmarks and fuzz targets included) and always exits 0.
 """
 
 import argparse
@@ -22,19 +26,21 @@ import os
 import re
 import sys
 
-LIBRARY_DIRS = ["core", "compiler", "verify", "runtime", "cli"]
+LIBRARY_DIRS = ["core", "compiler", "verify", "runtime", "cli", "lsp", "dds", "import", "harness",
+                "report"]
+FILE_LIMIT = 600
 ALL_DIRS = LIBRARY_DIRS + ["bench", "fuzz", "tests", "grammar"]
 SOURCE_EXT = (".cc", ".cpp", ".h", ".hpp")
+FILE_MARK = "(file)"  # the allow-list's name for a whole file over the file limit
 
 
 def is_test_file(path):
-    """Tests and the code that only tests use (fixtures, test models, test utilities)."""
+    """Tests and the code that only tests use (test utilities, fixtures under testing/)."""
     name = os.path.basename(path)
     parts = path.split(os.sep)
     return (
-        name.endswith("_test.cc")
+        name.endswith(("_test.cc", "_test.h"))
         or "test_util" in name
-        or name.startswith("test_")
         or "testing" in parts
         or "testdata" in parts
         or "tests" in parts
@@ -254,6 +260,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("root", nargs="?", default=os.path.dirname(here))
     parser.add_argument("--limit", type=int, default=80)
+    parser.add_argument("--file-limit", type=int, default=FILE_LIMIT)
     parser.add_argument("--all", action="store_true", help="every directory, tests included")
     parser.add_argument("--allow", default=os.path.join(here, "long_functions.allow"))
     args = parser.parse_args()
@@ -261,9 +268,14 @@ def main():
     dirs = ALL_DIRS if args.all else LIBRARY_DIRS
     long = []
     for rel in source_files(args.root, dirs, with_tests=args.all):
-        for name, first, last in scan(os.path.join(args.root, rel)):
+        path = os.path.join(args.root, rel)
+        for name, first, last in scan(path):
             if last - first + 1 > args.limit:
                 long.append((last - first + 1, rel, name, first))
+        with open(path, encoding="utf-8", errors="replace") as f:
+            lines = sum(1 for _ in f)
+        if lines > args.file_limit and not args.all:
+            long.append((lines, rel, FILE_MARK, 1))
     long.sort(key=lambda x: (-x[0], x[1], x[3]))
     allowed = read_allow(args.allow)
     bad = 0
@@ -279,9 +291,11 @@ def main():
         print(f"{rel} {name} is allowed to be long but is not: remove it from {args.allow}")
         bad += 1
     if bad:
-        print(f"{bad} problem(s): split functions over {args.limit} lines by what they do")
+        print(f"{bad} problem(s): split functions over {args.limit} lines, and files over "
+              f"{args.file_limit}, by what they do")
         return 1
-    print(f"no function over {args.limit} lines outside the allow-list")
+    print(f"no function over {args.limit} lines and no file over {args.file_limit} outside the "
+          "allow-list")
     return 0
 
 

@@ -62,9 +62,9 @@ class Encoder {
   }
 
   Ev eval(const BodyExpr& e);
-  Ev record(const BodyExpr& e);  // a record literal
-  Ev list(const BodyExpr& e);    // a list literal
   Ev binary(const BodyExpr& e);
+  Ev record(const BodyExpr& e);
+  Ev list(const BodyExpr& e);
   Ev arith(const std::string& op, const Ev& a, const Ev& b);
   Ev compare(const std::string& op, const Ev& a, const Ev& b);
   Ev call(const BodyExpr& e);
@@ -154,6 +154,7 @@ Ev Encoder::eval(const BodyExpr& e) {
   return bad("an unknown expression");
 }
 
+// A record literal: its fields, valid when every field is.
 Ev Encoder::record(const BodyExpr& e) {
   std::map<std::string, Ev> fields;
   z3::expr ok = ctx_.bool_val(true);
@@ -171,6 +172,7 @@ Ev Encoder::record(const BodyExpr& e) {
   return {r, ok};
 }
 
+// A list literal of known length: its elements, valid when every element is.
 Ev Encoder::list(const BodyExpr& e) {
   SymValue l(K::List, ctx_.int_val(static_cast<int>(e.args.size())));
   z3::expr ok = ctx_.bool_val(true);

@@ -5,7 +5,6 @@
 
 #include "core/json_text.h"
 #include "verify/body_encoding.h"
-#include "verify/solver_watchdog.h"
 
 namespace arbc::verify {
 
@@ -34,7 +33,12 @@ struct DataQuery::Encoded {
 
 DataQuery::DataQuery(const model::App& app, z3::context& ctx, int list_bound,
                      Clock::time_point deadline)
-    : app_(app), ctx_(ctx), list_bound_(list_bound), solver_(ctx), timeout_(deadline) {}
+    : app_(app),
+      ctx_(ctx),
+      list_bound_(list_bound),
+      solver_(ctx),
+      deadline_(deadline),
+      timeout_(deadline) {}
 
 std::string DataQuery::opaque_reason(const model::Connection& c) {
   if (c.opaque) return "its monitor is a hand-written script";
@@ -107,23 +111,8 @@ std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
 
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
   ++queries_;
-  if (!timeout_.arm(solver_)) {
-    unknown_reason_ = "timeout";
-    return Answer::Unknown;
-  }
-  z3::check_result r = z3::unknown;
-  try {
-    QueryInFlight in_flight;
-    r = solver_.check(assumptions);
-  } catch (const z3::exception& e) {
-    unknown_reason_ = std::string("solver error: ") + e.msg();
-    return Answer::Unknown;
-  }
-  if (r == z3::sat) return Answer::Sat;
-  if (r == z3::unsat) return Answer::Unsat;
-  std::string why = solver_.reason_unknown();
-  unknown_reason_ = stopped_by_deadline(why) ? "timeout" : "the solver gave up (" + why + ")";
-  return Answer::Unknown;
+  z3::check_result r = verify::check(solver_, timeout_, &unknown_reason_, &assumptions);
+  return r == z3::sat ? Answer::Sat : r == z3::unsat ? Answer::Unsat : Answer::Unknown;
 }
 
 Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core) {
@@ -187,13 +176,9 @@ std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Val
   for (const z3::expr& x : e.side) s.add(x);
   for (const AcceptTracker& tr : e.trackers) s.add(tr.literal);
   s.add(e.accepts);
-  z3::check_result r = z3::unknown;
-  try {
-    QueryInFlight in_flight;
-    r = s.check();
-  } catch (const z3::exception&) {
-    return std::nullopt;  // interrupted at the deadline
-  }
+  SolverTimeout timeout(deadline_);  // its own solver, within the run's deadline
+  std::string unknown;
+  z3::check_result r = verify::check(s, timeout, &unknown);
   if (r == z3::unknown) return std::nullopt;
   return r == z3::sat;
 }

@@ -91,6 +91,7 @@ class DataQuery {
       predicates_;
   std::string unknown_reason_;
   int queries_ = 0;
+  Clock::time_point deadline_;  // of the whole run: holds() asks its own solver within it
   SolverTimeout timeout_;
 };
 

@@ -1,6 +1,8 @@
-// The JSON report (schema: docs/verify-json.md).
+// The JSON report (schema: docs/verify-json.md). Its paths are named as in artifacts
+// (core/artifact_path.h): the report is read by other tools, maybe on other machines.
 #include <nlohmann/json.hpp>
 
+#include "core/artifact_path.h"
 #include "verify/report_format.h"
 #include "verify/temporal/counterexample.h"
 #include "verify/temporal/report_text.h"
@@ -12,7 +14,7 @@ using Json = nlohmann::ordered_json;
 
 Json location_json(const model::SourceLocation& loc) {
   if (loc.file.empty() && loc.line == 0) return nullptr;
-  return Json{{"file", loc.file},
+  return Json{{"file", artifact_path(loc.file.str())},
               {"line", loc.line},
               {"column", loc.column},
               {"end_line", loc.end_line},
@@ -63,7 +65,7 @@ Json diagnostic_json(const Diagnostic& d) {
 // An input that was not verified: verdict "error", no ports, its diagnostics.
 Json bad_input_json(const InputReport& in) {
   Json j;
-  j["input"] = in.input;
+  j["input"] = artifact_path(in.input);
   j["app"] = "";
   j["spec_file"] = "";
   j["verdict"] = "error";
@@ -202,9 +204,9 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
     }
     const VerifyReport& r = in.report;
     Json j;
-    j["input"] = in.input;
+    j["input"] = artifact_path(in.input);
     j["app"] = r.app;
-    j["spec_file"] = r.spec_file;
+    j["spec_file"] = artifact_path(r.spec_file);
     j["verdict"] = verdict_name(r.verdict);
     j["ports"] = Json::array();
     for (const PortResult& p : r.ports) j["ports"].push_back(port_json(p, stats));

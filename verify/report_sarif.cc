@@ -1,8 +1,10 @@
 // SARIF 2.1.0 (docs/verify-json.md, "SARIF"): one result per finding, for code scanning.
+#include <cctype>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 
+#include "core/artifact_path.h"
 #include "core/check_ids.h"
 #include "verify/report_format.h"
 #include "verify/temporal/counterexample.h"
@@ -50,9 +52,30 @@ constexpr CheckDoc kChecks[] = {
     {kCheckTemporal, "A property over time is violated by a timed trace the runtime replays."},
 };
 
+// A file as a SARIF `uri`: a URI reference (RFC 3986) to the path as artifacts name it
+// (core/artifact_path.h). A byte that may not stand in a path segment as it is, a space or a
+// non-ASCII byte, is percent-encoded; so is ':', which would make the first segment a scheme.
+std::string uri_reference(const std::string& file) {
+  static const std::string kPlain = "-._~!$&'()*+,;=@/";
+  std::string out;
+  for (unsigned char c : artifact_path(file)) {
+    if (std::isalnum(c) && c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (kPlain.find(static_cast<char>(c)) != std::string::npos) {
+      out += static_cast<char>(c);
+    } else {
+      static const char kHex[] = "0123456789ABCDEF";
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
 Json sarif_location(const model::SourceLocation& loc) {
   Json phys;
-  phys["artifactLocation"] = {{"uri", loc.file}};
+  phys["artifactLocation"] = {{"uri", uri_reference(loc.file)}};
   if (loc.line > 0) {
     Json region{{"startLine", loc.line}};
     if (loc.column > 0) region["startColumn"] = loc.column;
@@ -161,9 +184,12 @@ std::optional<Json> temporal_result(const TemporalResult& t) {
 std::string format_sarif(const std::vector<InputReport>& inputs, const std::string& tool_version) {
   Json rules = Json::array();
   for (const CheckDoc& c : kChecks) {
-    rules.push_back({{"id", c.id},
-                     {"shortDescription", {{"text", c.text}}},
-                     {"helpUri", std::string("docs/checks.md#") + c.id}});
+    // Not `helpUri`: SARIF wants an absolute URI there, and the page is a file of arbc's
+    // repository, whose address arbc cannot know.
+    rules.push_back(
+        {{"id", c.id},
+         {"shortDescription", {{"text", c.text}}},
+         {"help", {{"text", std::string("docs/checks.md#") + c.id + " in arbc's documentation"}}}});
   }
   Json results = Json::array();
   auto add = [&](const Finding& f) {

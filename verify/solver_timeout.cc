@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "verify/solver_watchdog.h"
+
 namespace arbc::verify {
 
 bool SolverTimeout::arm(z3::solver& solver) {
@@ -18,6 +20,24 @@ bool stopped_by_deadline(const std::string& why) {
   for (const char* word : {"timeout", "canceled", "interrupted"})
     if (why.find(word) != std::string::npos) return true;
   return false;
+}
+
+z3::check_result check(z3::solver& solver, SolverTimeout& timeout, std::string* reason,
+                       const z3::expr_vector* assumptions) {
+  if (!timeout.arm(solver)) {
+    *reason = "timeout";
+    return z3::unknown;
+  }
+  try {
+    QueryInFlight in_flight;  // the watchdog may interrupt this query, and only this
+    z3::check_result r = assumptions ? solver.check(*assumptions) : solver.check();
+    if (r != z3::unknown) return r;
+    std::string why = solver.reason_unknown();
+    *reason = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
+  } catch (const z3::exception& e) {
+    *reason = stopped_by_deadline(e.msg()) ? "timeout" : std::string("solver error: ") + e.msg();
+  }
+  return z3::unknown;
 }
 
 }  // namespace arbc::verify

@@ -9,6 +9,9 @@
 // fallen below half of what was set: a query overruns the deadline by at most the time left
 // when it started, and a run far from its deadline (every run that ends in time, at the
 // default 60 s) sets it once per solver, its answers independent of how fast it runs.
+//
+// check() below is the one way verify/ asks Z3: with the time left, and an unknown answer
+// classified once ("timeout", "resource limit (...)", "solver error: ...").
 #pragma once
 
 #include <z3++.h>
@@ -36,5 +39,12 @@ class SolverTimeout {
 // True when Z3's reason for `unknown` is the deadline: its own timeout ("timeout",
 // "canceled") or the watchdog's interrupt ("interrupted", verify/solver_watchdog.h).
 bool stopped_by_deadline(const std::string& reason_unknown);
+
+// `solver`'s answer (under `assumptions`, when given) within the time `timeout` leaves. Unknown
+// when no time is left, when Z3 gives up or when it throws; *reason then says which: "timeout"
+// (the deadline, or Z3 stopped by its timeout), "resource limit (WHY)" (Z3's other reasons) or
+// "solver error: WHAT". An unknown never passes: the caller reports it as such.
+z3::check_result check(z3::solver& solver, SolverTimeout& timeout, std::string* reason,
+                       const z3::expr_vector* assumptions = nullptr);
 
 }  // namespace arbc::verify

@@ -97,6 +97,21 @@ Constraint parse(const std::string& text) {
   return p.constraint;
 }
 
+// table_clean's four arbitrated ports, with PickAndPlace.cmd's asserts.
+static void add_table_clean_ports(model::App& app) {
+  model::ArbitratedPort pick = arbitrated_port("PickAndPlace.cmd", {"take", "put"}, at(30, 11, 16));
+  pick.asserts = {{"take", parse("not e_taken"), at(67, 1, 6), {}},
+                  {"take", parse("e_pull_idle"), at(68, 1, 6), {}},
+                  {"put", parse("e_taken"), at(69, 1, 6), {}}};
+  app.arbitrated_ports.push_back(pick);
+  app.arbitrated_ports.push_back(arbitrated_port("PullObject.cmd", {"pull"}, at(42, 11, 14)));
+  model::ArbitratedPort head =
+      arbitrated_port("HeadControl.gaze", {"track", "search"}, at(52, 11, 16));
+  head.by_priority = true;
+  app.arbitrated_ports.push_back(head);
+  app.arbitrated_ports.push_back(arbitrated_port("Speak.text", {"ask"}, at(60, 11, 10)));
+}
+
 model::App table_clean_model() {
   using model::Direction;
   model::App app;
@@ -165,18 +180,7 @@ model::App table_clean_model() {
       feed("ObjectDetector.objects", "Speak.text", {"e_unreachable"}, at(27, 1, 5)));
   app.connections.push_back(
       feed("FaceDetector.face", "Speak.text", {"e_face_detected"}, at(28, 1, 5)));
-
-  model::ArbitratedPort pick = arbitrated_port("PickAndPlace.cmd", {"take", "put"}, at(30, 11, 16));
-  pick.asserts = {{"take", parse("not e_taken"), at(67, 1, 6), {}},
-                  {"take", parse("e_pull_idle"), at(68, 1, 6), {}},
-                  {"put", parse("e_taken"), at(69, 1, 6), {}}};
-  app.arbitrated_ports.push_back(pick);
-  app.arbitrated_ports.push_back(arbitrated_port("PullObject.cmd", {"pull"}, at(42, 11, 14)));
-  model::ArbitratedPort head =
-      arbitrated_port("HeadControl.gaze", {"track", "search"}, at(52, 11, 16));
-  head.by_priority = true;
-  app.arbitrated_ports.push_back(head);
-  app.arbitrated_ports.push_back(arbitrated_port("Speak.text", {"ask"}, at(60, 11, 10)));
+  add_table_clean_ports(app);
   return app;
 }
 

@@ -5,9 +5,11 @@
 #include <antlr4-runtime.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <thread>
 #include <tuple>
+#include <utility>
 
 #include "compiler/frontend/ast_builder.h"
 #include "compiler/frontend/lexed_text.h"
@@ -107,6 +109,23 @@ Diagnostic file_error(const std::string& file, int line, int column, std::string
   return d;
 }
 
+// The line and column (in code points) of the first carriage return that no line feed follows.
+// ANTLR, the diagnostics and editors count lines by LF, so a file with CR-only line endings is
+// one line to all of them: refused before anything reports places in it.
+std::optional<std::pair<int, int>> find_lone_carriage_return(std::string_view text) {
+  for (size_t at = text.find('\r'); at != std::string_view::npos; at = text.find('\r', at + 1)) {
+    if (at + 1 < text.size() && text[at + 1] == '\n') continue;
+    size_t start = text.rfind('\n', at);
+    start = start == std::string_view::npos ? 0 : start + 1;
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + start, '\n'));
+    int column = 1;
+    for (size_t i = start; i < at; ++i)
+      column += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;
+    return std::make_pair(line, column);
+  }
+  return std::nullopt;
+}
+
 // Placeholders for over-deep expressions would only cause follow-on type errors.
 void without_deep_placeholders(ParseResult& result) {
   for (const Diagnostic& d : result.diagnostics)
@@ -125,6 +144,17 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
                    "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
                        std::to_string(bad->offset) + "): save it as UTF-8 text",
                    "invalid-utf8"));
+    return result;
+  }
+
+  if (auto cr = find_lone_carriage_return(text)) {
+    result.diagnostics.push_back(file_error(
+        file, cr->first, cr->second,
+        "this line ends in a carriage return alone (the old Mac OS line ending), which does not "
+        "end a line here: the file would read as one line; save it with LF (or CR LF) line "
+        "endings, e.g. `tr '\\r' '\\n' < " +
+            file + " > fixed.spec`",
+        "line-endings"));
     return result;
   }
 

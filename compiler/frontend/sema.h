@@ -16,8 +16,12 @@ namespace arbc::frontend {
 // folder (and no script check for a spec that is not a file on disk).
 void check_spec(ast::Spec& spec, std::vector<Diagnostic>& out, const std::string& script_dir = "");
 
+// The most rules one `by priority` port may have (sema_priority.cc says why).
+inline constexpr size_t kMaxPriorityRules = 1000;
+
 // Rules above the lowest of a `by priority` port whose activity event (act_<rule>) is also a
-// declared event: one "priority" error each (sema_priority.cc). Reads sema's event symbols.
+// declared event, and ports with more than kMaxPriorityRules rules: one "priority" error each
+// (sema_priority.cc). Reads sema's event symbols.
 void check_activity_names(const ast::Spec& spec, std::vector<Diagnostic>& out);
 
 }  // namespace arbc::frontend

@@ -62,8 +62,14 @@ struct MonitorSite {
   ast::Loc loc;              // the rule or connect, for "delivers its input unchanged"
 };
 
+// What to do about a name declared twice (the two may mean different things, so not "delete"),
+// and where the first one is: "type 'T' is already defined at line 3: rename one of them".
+inline constexpr const char* kRenameOne = ": rename one of them";
+inline std::string where_defined(const ast::Loc& loc) { return "line " + std::to_string(loc.line); }
+
 // Checks one spec (check_spec's work). Only run() is public: the passes, the symbol tables and
-// the reporting helpers are its own business (sema_decls.cc, sema_body.cc, sema_expr.cc).
+// the reporting helpers are its own business (sema_decls.cc, sema_types.cc, sema_report.cc,
+// sema_body.cc, sema_expr.cc).
 class Sema {
  public:
   Sema(ast::Spec& spec, std::vector<Diagnostic>& out, std::string script_dir)

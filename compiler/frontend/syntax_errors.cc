@@ -4,199 +4,23 @@
 #include <antlr4-runtime.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
 #include "compiler/frontend/foreign_words.h"
+#include "compiler/frontend/syntax_words.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/unclosed_block.h"
 #include "compiler/frontend/unit_words.h"
+#include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/suggest.h"
 
 namespace arbc::frontend {
 
 using arbc_grammar::ArbcParser;
-
-namespace {
-
-// What the user was writing when the parser stopped, by grammar rule; rules not listed
-// (expressions, port references...) defer to the enclosing rule.
-const char* describe_rule(size_t rule) {
-  switch (rule) {
-    case ArbcParser::RuleAppDecl:
-      return "the app declaration";
-    case ArbcParser::RuleTypeDecl:
-      return "the type declaration";
-    case ArbcParser::RuleConstDecl:
-      return "the constant declaration";
-    case ArbcParser::RuleModuleDecl:
-      return "the module declaration";
-    case ArbcParser::RulePortDecl:
-      return "the port declaration";
-    case ArbcParser::RuleEventDecl:
-      return "the event declaration";
-    case ArbcParser::RuleDerivedEventDecl:
-      return "the derived event declaration";
-    case ArbcParser::RuleStatusEventsDecl:
-      return "the `events from` declaration";
-    case ArbcParser::RuleExclusiveDecl:
-      return "the `exclusive` declaration";
-    case ArbcParser::RuleInvariantDecl:
-      return "the invariant";
-    case ArbcParser::RuleArbitrateDecl:
-      return "the `arbitrate` block";
-    case ArbcParser::RuleRuleDecl:
-      return "the rule";
-    case ArbcParser::RuleConnectDecl:
-      return "the `connect` declaration";
-    case ArbcParser::RuleAssertDecl:
-      return "the assertion";
-    case ArbcParser::RuleNeverDecl:
-      return "the `never` property";
-    case ArbcParser::RuleOnlyAfterDecl:
-      return "the `only ... after` property";
-    case ArbcParser::RuleAssumeDecl:
-      return "the `assume` declaration";
-    case ArbcParser::RuleResourceDecl:
-      return "the `resource` declaration";
-    case ArbcParser::RuleResponseDecl:
-      return "the `after ... within` property";
-    case ArbcParser::RuleStableDecl:
-      return "the `stable` property";
-    case ArbcParser::RuleGivenDecl:
-      return "the rate (`given`)";
-    case ArbcParser::RuleStmt:
-      return "the statement";
-    case ArbcParser::RuleTestDecl:
-      return "the test";
-    case ArbcParser::RuleTestsForDecl:
-      return "the `tests for` declaration";
-    case ArbcParser::RuleTestStep:
-      return "the test step";
-    case ArbcParser::RuleFieldType:
-      return "the record field";
-    case ArbcParser::RuleFieldInit:
-      return "the record field";
-    default:
-      return nullptr;
-  }
-}
-
-std::string describe_context(antlr4::ParserRuleContext* ctx) {
-  for (; ctx; ctx = dynamic_cast<antlr4::ParserRuleContext*>(ctx->parent)) {
-    if (const char* d = describe_rule(ctx->getRuleIndex())) return d;
-  }
-  return "the spec";
-}
-
-antlr4::ParserRuleContext* enclosing(antlr4::ParserRuleContext* ctx, size_t rule) {
-  for (; ctx; ctx = dynamic_cast<antlr4::ParserRuleContext*>(ctx->parent))
-    if (ctx->getRuleIndex() == rule) return ctx;
-  return nullptr;
-}
-
-bool in_rule(antlr4::ParserRuleContext* ctx, size_t rule) { return enclosing(ctx, rule); }
-
-const std::set<std::string> kDeclKeywords = {
-    "app",       "type",      "const",   "module", "event", "events", "exclusive",
-    "invariant", "arbitrate", "connect", "assert", "test",  "tests",  "resource",
-    "never",     "only",      "assume",  "given",  "stable"};
-const std::set<std::string> kOperators = {".",  "[", "-",  "*",  "/",  "%",   "+", "<",
-                                          "<=", ">", ">=", "==", "!=", "and", "or"};
-
-// A token type as the user would name it.
-std::string token_name(const antlr4::dfa::Vocabulary& vocabulary, size_t type) {
-  switch (type) {
-    case antlr4::Token::EOF:
-      return "the end of the file";
-    case ArbcParser::ID:
-      return "a name";
-    case ArbcParser::NUMBER:
-      return "a number";
-    case ArbcParser::DURATION:
-      return "a duration such as 500ms";
-    case ArbcParser::STRING:
-      return "a string in double quotes";
-    default:
-      return vocabulary.getLiteralName(type);  // already quoted: 'when'
-  }
-}
-
-std::string found_text(const antlr4::Token* token) {
-  if (token->getType() == antlr4::Token::EOF) return "the end of the file";
-  std::string text = token->getText();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return "'" + text + "'";
-}
-
-bool is_keyword(const antlr4::dfa::Vocabulary& vocabulary, const antlr4::Token* token) {
-  std::string literal = vocabulary.getLiteralName(token->getType());
-  return literal.size() > 2 && std::isalpha(static_cast<unsigned char>(literal[1]));
-}
-
-const std::vector<std::string> kStatementKeywords = {"let", "var",  "accept",   "set",   "unset",
-                                                     "if",  "emit", "throttle", "every", "script"};
-
-// The tokens the parser would have accepted where it stopped.
-struct Expected {
-  std::set<std::string> literals;   // literal tokens, unquoted
-  std::set<size_t> kinds;           // token types
-  std::vector<std::string> wanted;  // as the user names them, minus operators that would only
-                                    // continue an expression
-  bool has(const char* literal) const { return literals.count(literal) > 0; }
-};
-
-Expected expected_tokens(antlr4::Parser* parser) {
-  const antlr4::dfa::Vocabulary& vocabulary = parser->getVocabulary();
-  Expected x;
-  for (size_t type : parser->getExpectedTokens().toList()) {
-    x.kinds.insert(type);
-    std::string literal = vocabulary.getLiteralName(type);
-    if (literal.size() >= 2) x.literals.insert(literal.substr(1, literal.size() - 2));
-  }
-  for (size_t type : x.kinds) {
-    std::string literal = vocabulary.getLiteralName(type);
-    if (literal.size() >= 2 && kOperators.count(literal.substr(1, literal.size() - 2))) continue;
-    x.wanted.push_back(token_name(vocabulary, type));
-  }
-  return x;
-}
-
-// A test step that starts well ('at' or 'expect') but fits none of its forms. ANTLR reports
-// this where its prediction failed, with the tokens that may start a step as the expected ones
-// ("expected 'at' or 'expect', found '-'" under the `at` the user wrote): say instead which
-// forms the step may take after the word it starts with.
-void describe_test_step(const antlr4::Token* start, const antlr4::Token* offending,
-                        const std::string& found, Diagnostic& d) {
-  Diagnostic note;
-  note.severity = Severity::Note;
-  if (start->getText() == "at") {
-    bool at_time = offending->getTokenIndex() == start->getTokenIndex() + 1;
-    if (at_time) {
-      d.message = "expected a time such as 100ms after 'at' in the test step, found " + found;
-      if (offending->getText() == "-")
-        d.message += " (times count from the start of the test: they cannot be negative)";
-    } else {
-      d.message =
-          "expected 'Module.port <- VALUE;', 'set EVENT;' or 'unset EVENT;' after the time in "
-          "the test step, found " +
-          found;
-    }
-    note.message =
-        "a timed step reads `at TIME Module.port <- VALUE;`, `at TIME set EVENT;` or `at TIME "
-        "unset EVENT;`";
-  } else {
-    d.message = "this `expect` fits none of its forms, at " + found;
-    note.message =
-        "an expectation reads `expect Module.port receives VALUE [WINDOW];` (or `receives "
-        "nothing`), `expect RULE drops [\"reason\"] [WINDOW];` or `expect CONDITION WINDOW;`, "
-        "where WINDOW is `at TIME` or `within T1..T2`";
-  }
-  d.notes.push_back(std::move(note));
-}
-
-}  // namespace
 
 class SyntaxErrorCollector : public antlr4::BaseErrorListener {
  public:
@@ -261,6 +85,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (describe_mistaken_operator(parser, offending, x, d)) return d;
     if (describe_keyword_after_declaring_word(parser, offending, d)) return d;
     if (describe_when_after_hold(parser, offending, d)) return d;
+    if (describe_negated_absence(parser, offending, d)) return d;
     if (!describe_set_of_a_port(parser, offending, x, d) &&
         !describe_construct(parser, offending, x, d))
       describe_by_position(parser, offending, x, d);
@@ -354,6 +179,29 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     return true;
   }
 
+  // `never nav while not e_ok;`: the absence property reads one event, present; a rule kept
+  // from delivering while an event is absent is what its `when` says.
+  static bool describe_negated_absence(antlr4::Parser* parser, const antlr4::Token* offending,
+                                       Diagnostic& d) {
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    antlr4::Token* before = tokens->LT(-1);
+    antlr4::Token* rule = tokens->LT(-2);
+    if (offending->getText() != "not" || !before || before->getText() != "while" || !rule ||
+        !enclosing(parser->getContext(), ArbcParser::RuleNeverDecl))
+      return false;
+    antlr4::Token* event = tokens->LT(2);
+    std::string name = event && event->getType() == ArbcParser::ID ? event->getText() : "EVENT";
+    d.message = "`never RULE while EVENT` takes one event, not its negation: it says that '" +
+                rule->getText() + "' never delivers while the event is present";
+    Diagnostic note;
+    note.severity = Severity::Note;
+    note.message = "to keep '" + rule->getText() + "' from delivering while " + name +
+                   " is absent, add `" + name + "` to its `when`: it is then never selected " +
+                   "without it, which `arbc verify` proves in every state";
+    d.notes.push_back(std::move(note));
+    return true;
+  }
+
   // What to do about a keyword written as a name.
   static void note_keyword_as_name(Diagnostic& d) {
     d.message += " (a keyword cannot be used as a name)";
@@ -404,6 +252,9 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
 
   // `lifetime 0.5 s;`: the unit, apart from its number, reads as a name, and the message says
   // only what the parser expected there. Whatever the construct, the fix is to join them.
+  // `hold 1e-3s` is the same parse (a number, then the unit as a name), though written without
+  // a space: a duration's number has no exponent. The note then gives the duration as it is
+  // written.
   void note_spaced_unit(antlr4::Parser* parser, const antlr4::Token* offending, Diagnostic& d) {
     antlr4::Token* previous = parser->getTokenStream()->LT(-1);
     if (!previous || previous->getType() != ArbcParser::NUMBER ||
@@ -413,7 +264,13 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (!unit) return;
     Diagnostic note;
     note.severity = Severity::Note;
-    note.message = "a duration is written without a space: " + previous->getText() + *unit;
+    std::string number = previous->getText();
+    if (number.find_first_of("eE") == std::string::npos) {
+      note.message = "a duration is written without a space: " + number + *unit;
+    } else {
+      note.message = "a duration's number is written without an exponent" +
+                     exponent_free_duration(number, *unit);
+    }
     d.notes.push_back(std::move(note));
   }
 

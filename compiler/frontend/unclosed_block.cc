@@ -38,6 +38,27 @@ std::string block_head(antlr4::TokenStream* tokens, size_t open) {
   return head.empty() ? "{" : head + " {";
 }
 
+// `stable: from M.p ...;` in an `arbitrate` block: a keyword that starts a declaration,
+// written as a rule's name. The parser takes it for the next declaration, so the block looks
+// unclosed; the name is the mistake.
+std::optional<Diagnostic> keyword_as_rule_name(antlr4::TokenStream* tokens,
+                                               const antlr4::Token* stop, const std::string& file) {
+  if (stop->getType() == antlr4::Token::EOF || stop->getTokenIndex() + 1 >= tokens->size() ||
+      tokens->get(stop->getTokenIndex() + 1)->getText() != ":")
+    return std::nullopt;
+  Diagnostic d;
+  d.id = "syntax";
+  d.loc = token_location(stop, file);
+  d.message = "'" + stop->getText() +
+              "' is a keyword, so it cannot name a rule: choose another name (such as '" +
+              stop->getText() + "_rule')";
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = "docs/language.md#lexical-structure lists the keywords";
+  d.notes.push_back(std::move(note));
+  return d;
+}
+
 }  // namespace
 
 std::optional<Diagnostic> describe_unclosed_block(antlr4::TokenStream* tokens,
@@ -66,6 +87,7 @@ std::optional<Diagnostic> describe_unclosed_block(antlr4::TokenStream* tokens,
     }
   }
   if (open.empty()) return std::nullopt;
+  if (auto named = keyword_as_rule_name(tokens, stop, file)) return named;
 
   const antlr4::Token* brace = tokens->get(open.back());
   bool at_end = stop->getType() == antlr4::Token::EOF;

@@ -26,7 +26,7 @@ python3 - "$scratch/a/$app/app.json" docs/app.schema.json <<'PY' || { echo "FAIL
 import json, sys, jsonschema
 jsonschema.Draft202012Validator(json.load(open(sys.argv[2]))).validate(json.load(open(sys.argv[1])))
 PY
-# The proof is recorded for app.json's bytes (cli/proof_record.h); the record names the arbc
+# The proof is recorded for app.json's bytes (verify/proof_record.h); the record names the arbc
 # binary, so it is checked here and left out of the golden.
 record=$scratch/a/$app/proof.json
 [ -f "$record" ] || { echo "FAIL: no proof.json beside app.json"; exit 1; }

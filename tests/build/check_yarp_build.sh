@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # check_yarp_build.sh ARBC LUAC SPEC APP SCRATCH [GOLDEN]: `arbc build --target yarp` twice;
-# byte-identical output, every monitor compiles with luac5.4 and loads YARP's bindings, every
-# monitor the XML names exists, `arbc verify APP.xml` (the YARP importer) proves the generated
-# application, and with GOLDEN the files match the reviewed ones there
-# (ARBC_UPDATE_GOLDEN=1 rewrites them). docs/yarp.md#deploying-a-spec-on-yarp-step-by-step
+# byte-identical output, the XML well-formed (xmllint and Python's parser), every monitor
+# compiles with luac5.4 and loads YARP's bindings, every monitor the XML names exists,
+# `arbc verify APP.xml` (the YARP importer) proves the generated application, and with GOLDEN
+# the files match the reviewed ones there (ARBC_UPDATE_GOLDEN=1 rewrites them).
+# docs/yarp.md#deploying-a-spec-on-yarp-step-by-step
 set -euo pipefail
 arbc=$1 luac=$2 spec=$3 app=$4 scratch=$5 golden=${6:-}
 rm -rf "$scratch" && mkdir -p "$scratch"
@@ -12,6 +13,10 @@ rm -rf "$scratch" && mkdir -p "$scratch"
 diff -r "$scratch/a/$app" "$scratch/b/$app" || { echo "FAIL: two builds differ"; exit 1; }
 out=$scratch/a/$app
 [ -f "$out/$app.xml" ] || { echo "FAIL: no $app.xml"; exit 1; }
+# Well-formed XML for any reader, not only YARP's tolerant one (a comment holding "--" was not).
+xmllint --noout "$out/$app.xml" || { echo "FAIL: xmllint refuses $app.xml"; exit 1; }
+python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' "$out/$app.xml" ||
+  { echo "FAIL: Python's XML parser refuses $app.xml"; exit 1; }
 count=0
 for f in "$out"/contexts/"$app"/*.lua; do
   "$luac" -p "$f" || { echo "FAIL: luac5.4 -p rejects $f"; exit 1; }

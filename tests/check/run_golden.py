@@ -28,7 +28,7 @@ def main():
     if not args:
         sys.exit(__doc__)
     arbc = os.path.abspath(args[0])
-    update = "--update" in args
+    update = "--update" in args or bool(os.environ.get("ARBC_UPDATE_GOLDEN"))  # scripts/golden.py --bless
     only = [a for a in args[1:] if a != "--update"]
     cases = sorted(d for d in os.listdir(HERE)
                    if os.path.exists(os.path.join(HERE, d, d + ".spec")))

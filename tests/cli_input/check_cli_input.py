@@ -282,6 +282,57 @@ def case_misspelt_option(arbc, plugin):
     expect("did you mean" not in err, "a suggestion for a word close to no option", out, err)
 
 
+def case_duration_beyond_a_run(arbc, plugin):
+    # `--duration 1e12h` ran until killed (issue 40): beyond 30 days the clock is too coarse.
+    expect_bad_input(run(arbc, "run", "specs/face_filter.spec", "--stub", "--duration", "1e12h"),
+                     "--duration '1e12h' is longer than a run can be: at most 720h (30 days)")
+    code, out, err = run(arbc, "run", "specs/face_filter.spec", "--stub", "--duration", "721h")
+    expect(code == 2, f"721h: exit {code}", out, err)
+
+
+def case_stub_rate_beyond_a_run(arbc, plugin):
+    # `--stub-rate P=1e9` ran until killed (issue 40): a rate beyond one sample per microsecond,
+    # and more samples than a run works through, are refused before the run.
+    spec = "specs/face_filter.spec"
+    expect_bad_input(run(arbc, "run", spec, "--stub", "--stub-rate", "FaceDetector.face=1e9"),
+                     "--stub-rate FaceDetector.face=1e9: at most 1000000 samples per second")
+    expect_bad_input(run(arbc, "run", spec, "--stub", "--stub-rate", "FaceDetector.face=1000000",
+                         "--duration", "1h"),
+                     "--stub: the stand-ins would publish about 3.6e+09 samples in this run",
+                     "shorten --duration or lower --stub-rate")
+
+
+def case_inputs_int_beyond_int64(arbc, plugin):
+    # 2^63 became -2^63 (issue 40): refused at the line and column of the value.
+    with tempfile.TemporaryDirectory() as tmp:
+        spec = os.path.join(tmp, "count.spec")
+        with open(spec, "w", encoding="utf-8") as f:
+            f.write('app count "x";\nmodule Counter { out n: int; }\nmodule Show { in n: int; }\n'
+                    "connect Counter.n -> Show.n;\n")
+        inputs = os.path.join(tmp, "in.jsonl")
+        with open(inputs, "w", encoding="utf-8") as f:
+            f.write('{"t": 0, "port": "Counter.n", "value": 1}\n'
+                    '{"t": 1, "port": "Counter.n", "value": 9223372036854775808}\n')
+        expect_bad_input(run(arbc, "run", spec, "--inputs", inputs),
+                         f"{inputs}:2:40: field 'value': 9223372036854775808 is beyond the range "
+                         "of int, a 64-bit integer")
+
+
+def case_inputs_directory(arbc, plugin):
+    # A folder was read as zero messages, exit 0 (issue 40).
+    with tempfile.TemporaryDirectory() as tmp:
+        expect_bad_input(run(arbc, "run", "specs/face_filter.spec", "--inputs", tmp),
+                         f"{tmp}: a directory; --inputs takes a file of JSON lines (or a trace)")
+
+
+def case_counterexamples_file(arbc, plugin):
+    # docs/cli.md: exit 2 for bad input; a file given as the folder gave 3, after the proof.
+    with tempfile.NamedTemporaryFile() as f:
+        expect_bad_input(run(arbc, "verify", "tests/verify/table_clean_hold_mutant.spec",
+                             "--counterexamples", f.name),
+                         f"--counterexamples {f.name}: not a folder")
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":

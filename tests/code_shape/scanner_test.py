@@ -21,3 +21,18 @@ if found != expected:
     print("found:   ", found)
     sys.exit(1)
 print(f"{len(found)} functions found as expected")
+
+# Which files are test code: production files named test_* (harness/test_runner.cc, the `arbc test`
+# engine) are judged as production; tests, test utilities and testing/ folders are not.
+for path, test in [("harness/test_runner.cc", False), ("compiler/lower/test_cases.h", False),
+                   ("verify/checks_test.cc", True), ("runtime/runtime_test_util.h", True),
+                   ("compiler/codegen/testing/lua_monitor_harness.cc", True),
+                   ("tests/check/robustness_test.cc", True), ("lsp/server.cc", False)]:
+    if long_functions.is_test_file(path) != test:
+        print(f"is_test_file({path!r}) is {not test}, expected {test}")
+        sys.exit(1)
+for folder in ("lsp", "dds", "import"):
+    if folder not in long_functions.LIBRARY_DIRS:
+        print(f"{folder}/ is not scanned")
+        sys.exit(1)
+print("test files and scanned folders as expected")

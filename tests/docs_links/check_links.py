@@ -80,15 +80,24 @@ def tracked_files(root):
         for folder, dirs, names in os.walk(root):
             # Not ours (a copy without .git, as scripts/mutate.sh makes): hidden folders, build
             # trees, and the editor extension's npm packages.
-            dirs[:] = [d for d in dirs if not d.startswith((".", "build")) and d != "node_modules"]
+            dirs[:] = [d for d in dirs if not d.startswith((".", "build"))
+                       and d not in ("node_modules", "out")]
             files += [os.path.relpath(os.path.join(folder, n), root) for n in names]
         return sorted(files)
 
 
 class Checker:
-    def __init__(self, root):
+    def __init__(self, root, files):
         self.root = root
         self.errors = []
+        # The repository's folders are those that hold tracked files: a folder a command wrote
+        # into the checkout (scripts/demo.sh's out/, a build tree) is an output, not a folder
+        # of the repository, even though it exists on disk.
+        self.folders = {""}
+        for rel in files:
+            parts = rel.split("/")[:-1]
+            for n in range(1, len(parts) + 1):
+                self.folders.add("/".join(parts[:n]))
 
     def fail(self, where, line, what):
         self.errors.append(f"{where}:{line}: {what}")
@@ -131,7 +140,7 @@ class Checker:
         if first in (".", ".."):
             return True
         here = os.path.dirname(rel)
-        return any(os.path.isdir(os.path.join(self.root, d, first)) for d in ("", here))
+        return any(os.path.normpath(os.path.join(d, first)) in self.folders for d in ("", here))
 
     def check_target(self, rel, number, page, anchor, link):
         if page and self.outside(rel, page, link):
@@ -212,9 +221,14 @@ def self_test():
         write("bad4.cc", "// docs/design.md#not-a-heading\n")
         write("output.cc", "// writes out/app/index.md and %s/index.md, then index.md\n")
         write("docs/bad5.md", "[x](design.md#nope) and [y](#nowhere) and [z](gone.md)\n")
-        files = ["good.cc", "output.cc", "docs/design.md", "docs/other.md", "bad1.cc", "bad2.cc", "bad3.cc",
-                 "bad4.cc", "docs/bad5.md"]
-        errors = Checker(root).run(files)
+        # An output folder in the checkout (scripts/demo.sh writes out/), holding files but none
+        # tracked: a path into it names an output, not a page (docs/tutorial.md cites
+        # out/step3-docs/index.md before or after the demo has run).
+        write("out/app/app.json", "{}\n")
+        write("docs/outputs.md", "`arbc docs` writes out/step3-docs/index.md and out/app/index.md\n")
+        files = ["good.cc", "output.cc", "docs/design.md", "docs/other.md", "docs/outputs.md",
+                 "bad1.cc", "bad2.cc", "bad3.cc", "bad4.cc", "docs/bad5.md"]
+        errors = Checker(root, files).run(files)
         expected = {"bad1.cc:1": "original design", "bad2.cc:1": "section by number",
                     "bad3.cc:1": "docs/missing.md, which does not exist",
                     "bad4.cc:1": "no heading with the anchor 'not-a-heading'"}
@@ -226,7 +240,8 @@ def self_test():
         if len(bad5) != 3:
             problems.append(f"docs/bad5.md: expected 3 errors, got {bad5}")
         for e in errors:
-            if e.startswith(("good.cc", "output.cc", "docs/design.md", "docs/other.md")):
+            if e.startswith(("good.cc", "output.cc", "docs/design.md", "docs/other.md",
+                             "docs/outputs.md")):
                 problems.append(f"false alarm: {e}")
         for p in problems:
             print("FAIL", p)
@@ -242,7 +257,7 @@ def main():
         sys.exit(__doc__)
     root = os.path.abspath(args[0])
     files = tracked_files(root)
-    errors = Checker(root).run(files)
+    errors = Checker(root, files).run(files)
     for e in errors:
         print(e)
     print(f"{len(files)} files, {len(errors)} bad citations")

@@ -123,7 +123,8 @@ def check_file_block(where, note, body):
 
 def main():
     args = [a for a in sys.argv[1:] if a not in ("--keep", "--update")]
-    keep, update = "--keep" in sys.argv, "--update" in sys.argv
+    keep = "--keep" in sys.argv
+    update = "--update" in sys.argv or bool(os.environ.get("ARBC_UPDATE_GOLDEN"))  # golden.py --bless
     if not args:
         sys.exit(__doc__)
     build_dir = args[0]

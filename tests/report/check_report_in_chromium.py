@@ -28,7 +28,7 @@ import zlib
 
 MAX_REPORT_BYTES = 2 * 1024 * 1024
 WINDOW = (1400, 1000)
-DELIVERY_RGB = (0x00, 0x9E, 0x73)  # kDeliveryColor in cli/report/svg_timeline.h
+DELIVERY_RGB = (0x00, 0x9E, 0x73)  # kDeliveryColor in report/svg_timeline.h
 
 
 class CheckFailed(Exception):

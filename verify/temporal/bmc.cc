@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "verify/solver_timeout.h"
-#include "verify/solver_watchdog.h"
 #include "verify/temporal/counterexample.h"
 
 namespace arbc::verify::temporal {
@@ -14,24 +13,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Runs `solver` with the time left; z3::unknown (with *reason) when none is left or it gave up.
+// Runs `solver` with the time left; z3::unknown (with *reason) when none is left or it gave up
+// (verify::check, the one wrapper for Z3 calls).
 z3::check_result run(z3::solver& solver, SolverTimeout& timeout, std::string* reason) {
-  if (!timeout.arm(solver)) {
-    *reason = "timeout";
-    return z3::unknown;
-  }
-  try {
-    QueryInFlight in_flight;
-    z3::check_result r = solver.check();
-    if (r == z3::unknown) {
-      std::string why = solver.reason_unknown();
-      *reason = stopped_by_deadline(why) ? "timeout" : "resource limit (" + why + ")";
-    }
-    return r;
-  } catch (const z3::exception& e) {
-    *reason = std::string("solver error: ") + e.msg();
-    return z3::unknown;
-  }
+  return check(solver, timeout, reason);
 }
 
 // Whether every step of `n` in model `m` falls on a multiple of 1/`per_second` seconds.

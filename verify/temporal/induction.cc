@@ -4,20 +4,15 @@
 #include <string>
 
 #include "verify/solver_timeout.h"
-#include "verify/solver_watchdog.h"
 
 namespace arbc::verify::temporal {
 namespace {
 
-// Z3's answer with the time left; unknown when none is left, the solver gives up or throws.
+// Z3's answer with the time left (verify::check); unknown when none is left, the solver gives
+// up or throws: the induction then proves nothing.
 z3::check_result check(z3::solver& solver, SolverTimeout& timeout) {
-  if (!timeout.arm(solver)) return z3::unknown;
-  try {
-    QueryInFlight in_flight;
-    return solver.check();
-  } catch (const z3::exception&) {
-    return z3::unknown;
-  }
+  std::string unknown;
+  return verify::check(solver, timeout, &unknown);
 }
 
 }  // namespace

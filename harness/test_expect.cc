@@ -1,0 +1,202 @@
+#include "harness/test_expect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "core/duration_literal.h"
+#include "harness/value_spec_text.h"
+#include "report/run_timeline.h"
+
+namespace arbc::harness {
+
+namespace {
+
+// Times as the spec writes durations, like the expectations the failures quote.
+std::string seconds(double t) { return duration_literal(t); }
+
+// A received value as a spec literal, fields in the order of the port's type, as the
+// expectation it is compared with is written.
+std::string text_of(const Value& v, const std::string& port, const TestRun& run) {
+  const model::Port* p = run.app ? run.app->find_port(port) : nullptr;
+  return value_spec_text(v, p && p->type ? p->type.get() : nullptr);
+}
+
+bool in_window(double t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
+
+std::string window(const model::Expectation& e) {
+  if (std::isinf(e.to)) return e.from == 0 ? "during the test" : "from " + seconds(e.from);
+  if (e.from == e.to) return "at " + seconds(e.from);
+  return "between " + seconds(e.from) + " and " + seconds(e.to);
+}
+
+// When nothing reached the port in the window: the value it received closest in time outside
+// it, if any, so that an expectation with the wrong time (or the wrong value at another time)
+// says what to change rather than leaving the reader to search the trace.
+std::string nearest_outside(const model::Expectation& e, const TestRun& run) {
+  const Received* best = nullptr;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (const Received& r : run.received) {
+    if (r.port != e.port) continue;
+    double gap = r.t < e.from ? e.from - r.t : r.t - e.to;
+    // Prefer the expected value over a closer other one: it is the likelier mistake.
+    bool wanted = !e.value || near_equal(*e.value, r.value);
+    bool best_wanted = best && (!e.value || near_equal(*e.value, best->value));
+    if (!best || (wanted && !best_wanted) || (wanted == best_wanted && gap < best_gap)) {
+      best = &r;
+      best_gap = gap;
+    }
+  }
+  if (!best) return "";
+  if (!e.value || near_equal(*e.value, best->value))
+    return "; it received that value at " + seconds(best->t);
+  return "; the nearest it received was " + text_of(best->value, e.port, run) + " at " +
+         seconds(best->t);
+}
+
+std::string check_receives(const model::Expectation& e, const TestRun& run) {
+  std::vector<const Received*> got;
+  for (const Received& r : run.received) {
+    if (r.port == e.port && in_window(r.t, e)) got.push_back(&r);
+  }
+  if (e.kind == model::Expectation::Kind::Nothing) {
+    if (got.empty()) return "";
+    return "but " + e.port + " received " + text_of(got.front()->value, e.port, run) + " at " +
+           seconds(got.front()->t) + " (from " + got.front()->connection + ")";
+  }
+  for (const Received* r : got) {
+    if (!e.value || near_equal(*e.value, r->value)) return "";
+  }
+  if (got.empty())
+    return "but nothing reached " + e.port + " " + window(e) + nearest_outside(e, run);
+  std::string out = "but " + e.port + " received other values " + window(e) + ":";
+  for (size_t i = 0; i < got.size() && i < 5; ++i)
+    out += "\n    " + seconds(got[i]->t) + " " + text_of(got[i]->value, e.port, run);
+  return out;
+}
+
+std::string check_drops(const model::Expectation& e, const TestRun& run) {
+  std::string seen;
+  size_t count = 0;
+  for (const TraceRecord& r : run.records) {
+    if (r.connection != e.connection || !in_window(r.t, e)) continue;
+    if (r.kind == TraceKind::Drop) {
+      if (e.reason.empty() || e.reason == drop_reason_name(r.reason)) return "";
+      if (count++ < 5)
+        seen += ", dropped (" + std::string(drop_reason_name(r.reason)) + ") at " + seconds(r.t);
+    } else if (r.kind == TraceKind::Deliver && count++ < 5) {
+      seen += ", delivered at " + seconds(r.t);
+    }
+  }
+  if (seen.empty()) return "but no message reached " + e.connection + " " + window(e);
+  return "but " + e.connection + " " + seen.substr(2);
+}
+
+// The events present at t in any container (after the messages of that instant).
+std::set<std::string> present_at(const TestRun& run, double t) {
+  report::RunTimeline timeline =
+      report::build_run_timeline({}, run.records, std::numeric_limits<double>::infinity());
+  std::set<std::string> out;
+  for (const report::EventLane& lane : timeline.events) {
+    for (const report::Interval& i : lane.present) {
+      if (i.begin <= t && t < i.end) out.insert(lane.event);
+    }
+  }
+  return out;
+}
+
+std::string check_state(const model::Expectation& e, const TestRun& run) {
+  std::set<std::string> present = present_at(run, e.from);
+  if (evaluate(e.state, present)) return "";
+  std::string list;
+  for (const std::string& name : present) list += (list.empty() ? "" : ", ") + name;
+  return "but the events present at " + seconds(e.from) + " are: " + (list.empty() ? "none" : list);
+}
+
+std::string describe(const TraceRecord& r) {
+  switch (r.kind) {
+    case TraceKind::Publish:
+      return "publish " + r.port;
+    case TraceKind::Deliver:
+      return "deliver " + r.connection + " -> " + r.port;
+    case TraceKind::Drop:
+      return "drop " + r.connection + " (" + drop_reason_name(r.reason) + ")" +
+             (r.text.empty() ? "" : ": " + r.text);
+    case TraceKind::Event:
+      return "event " + r.op + " " + r.event + " at " + r.port + " by " + r.owner;
+    case TraceKind::Error:
+      return "error " + r.connection + ": " + r.text;
+    default:
+      return r.connection + " " + r.text;
+  }
+}
+
+}  // namespace
+
+bool near_equal(const Value& a, const Value& b) {
+  if (a.is_number() && b.is_number()) {
+    double x = a.as_float(), y = b.as_float();
+    return std::abs(x - y) <= 1e-9 * std::max({1.0, std::abs(x), std::abs(y)});
+  }
+  if (a.kind() != b.kind()) return false;
+  switch (a.kind()) {
+    case Value::Kind::Vec3:
+      for (int i = 0; i < 3; ++i) {
+        if (!near_equal(Value(a.as_vec3()[i]), Value(b.as_vec3()[i]))) return false;
+      }
+      return true;
+    case Value::Kind::List:
+      if (a.size() != b.size()) return false;
+      for (size_t i = 0; i < a.size(); ++i) {
+        if (!near_equal(a[i], b[i])) return false;
+      }
+      return true;
+    case Value::Kind::Record:
+      if (a.size() != b.size()) return false;
+      for (const auto& [name, v] : a.as_record()) {
+        if (!b.has(name) || !near_equal(v, b[name])) return false;
+      }
+      return true;
+    default:
+      return a == b;
+  }
+}
+
+std::string check_expectation(const model::Expectation& e, const TestRun& run) {
+  switch (e.kind) {
+    case model::Expectation::Kind::Receives:
+    case model::Expectation::Kind::Nothing:
+      return check_receives(e, run);
+    case model::Expectation::Kind::Drops:
+      return check_drops(e, run);
+    case model::Expectation::Kind::State:
+      return check_state(e, run);
+  }
+  return "";
+}
+
+std::string trace_around(const TestRun& run, double from, double to) {
+  double lo = from - 0.5, hi = (std::isinf(to) ? run.end : to) + 0.5;
+  // The runtime notices an expiry when it next looks at the container, so the trace records
+  // it late, stamped with the time it happened: in time order the excerpt reads as it ran.
+  std::vector<const TraceRecord*> window;
+  for (const TraceRecord& r : run.records) {
+    if (r.t >= lo && r.t <= hi) window.push_back(&r);
+  }
+  std::stable_sort(window.begin(), window.end(),
+                   [](const TraceRecord* a, const TraceRecord* b) { return a->t < b->t; });
+  size_t shown = std::min<size_t>(window.size(), 20), more = window.size() - shown;
+  // The times in a column as wide as the widest (they read "0s", "100ms", "1.2s").
+  size_t width = 0;
+  for (size_t i = 0; i < shown; ++i) width = std::max(width, seconds(window[i]->t).size());
+  std::string out;
+  for (size_t i = 0; i < shown; ++i) {
+    std::string t = seconds(window[i]->t);
+    out += "    " + t + std::string(width - t.size() + 2, ' ') + describe(*window[i]) + "\n";
+  }
+  if (more) out += "    ... " + std::to_string(more) + " more\n";
+  return out.empty() ? "    (no trace records then)\n" : out;
+}
+
+}  // namespace arbc::harness

@@ -1,0 +1,32 @@
+// The expectations of `arbc test` (docs/testing.md#tests-in-the-spec), checked against one run:
+// what the stand-ins received and the trace records.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/app_model.h"
+#include "core/test_case.h"
+#include "runtime/stand_in.h"
+#include "runtime/trace_record.h"
+
+namespace arbc::harness {
+
+struct TestRun {
+  const std::vector<Received>& received;    // what reached the stand-ins' in-ports
+  const std::vector<TraceRecord>& records;  // the trace
+  double end = 0;                           // the last instant the run reached
+  const model::App* app = nullptr;          // for the ports' types, in values it quotes
+};
+
+// "" when `e` holds in `run`; else what happened instead, in a line or a few.
+std::string check_expectation(const model::Expectation& e, const TestRun& run);
+
+// The trace records from `from` - 0.5 s to `to` + 0.5 s (at most 20 lines, the first ones),
+// indented, one per line.
+std::string trace_around(const TestRun& run, double from, double to);
+
+// Values equal up to floating-point rounding (1e-9, relative): what `receives VALUE` compares.
+bool near_equal(const Value& a, const Value& b);
+
+}  // namespace arbc::harness

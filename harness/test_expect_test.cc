@@ -1,0 +1,77 @@
+// harness/test_expect.h: each kind of expectation, against a run given as data.
+#include "harness/test_expect.h"
+
+#include <gtest/gtest.h>
+
+namespace arbc::harness {
+namespace {
+
+model::Expectation receives(const std::string& port, std::optional<Value> value, double from,
+                            double to) {
+  model::Expectation e;
+  e.port = port;
+  e.value = std::move(value);
+  e.from = from;
+  e.to = to;
+  e.text = "HeadControl.gaze receives ...";
+  return e;
+}
+
+TraceRecord drop(double t, const std::string& connection, DropReason why) {
+  TraceRecord r;
+  r.t = t;
+  r.kind = TraceKind::Drop;
+  r.connection = connection;
+  r.reason = why;
+  return r;
+}
+
+TEST(TestExpectTest, ReceivesHoldsOnlyForTheValueInTheWindow) {
+  std::vector<Received> got = {{0.1, "HeadControl.gaze", "search", Value::vec3(1, 0, 0)}};
+  std::vector<TraceRecord> records;
+  TestRun run{got, records, 1.0, nullptr};
+  EXPECT_EQ(check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 0.1, 0.1), run),
+            "");
+  EXPECT_EQ(check_expectation(receives("HeadControl.gaze", std::nullopt, 0, 1), run), "");
+  std::string late =
+      check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 0.2, 0.2), run);
+  EXPECT_NE(late.find("it received that value at 100ms"), std::string::npos) << late;
+  std::string other =
+      check_expectation(receives("HeadControl.gaze", Value::vec3(0, 1, 0), 0.1, 0.1), run);
+  EXPECT_NE(other.find("received other values at 100ms:\n    100ms vec3(1.0, 0.0, 0.0)"),
+            std::string::npos)
+      << other;
+  // Up to rounding: what `receives VALUE` compares.
+  EXPECT_EQ(
+      check_expectation(receives("HeadControl.gaze", Value::vec3(1 + 1e-12, 0, 0), 0.1, 0.1), run),
+      "");
+}
+
+TEST(TestExpectTest, NothingAndDropsReadTheRun) {
+  std::vector<Received> got;
+  std::vector<TraceRecord> records = {drop(0.5, "search", DropReason::NotSelected)};
+  TestRun run{got, records, 1.0, nullptr};
+  model::Expectation nothing = receives("HeadControl.gaze", std::nullopt, 0, 1);
+  nothing.kind = model::Expectation::Kind::Nothing;
+  EXPECT_EQ(check_expectation(nothing, run), "");
+  model::Expectation drops;
+  drops.kind = model::Expectation::Kind::Drops;
+  drops.connection = "search";
+  drops.reason = "not-selected";
+  drops.from = drops.to = 0.5;
+  EXPECT_EQ(check_expectation(drops, run), "");
+  drops.reason = "throttled";
+  EXPECT_NE(check_expectation(drops, run), "");
+  drops.reason = "";
+  drops.from = drops.to = 0.7;
+  EXPECT_NE(check_expectation(drops, run), "");
+}
+
+TEST(TestExpectTest, NearEqualIsRelativeToTheValues) {
+  EXPECT_TRUE(near_equal(Value(1e9), Value(1e9 + 0.5)));
+  EXPECT_FALSE(near_equal(Value(1.0), Value(1.001)));
+  EXPECT_FALSE(near_equal(Value("a"), Value("b")));
+}
+
+}  // namespace
+}  // namespace arbc::harness
