@@ -169,23 +169,27 @@ class Oracle:
             res.breaches.append((b, inputs))
 
     def replay(self, work, res):
-        """The counterexample tests `verify --counterexamples` wrote: each replays on the
-        runtime as `arbc test` runs it and must pass (today they assert the violation the
-        report shows, docs/checks.md#temporal)."""
+        """The counterexample tests `verify --counterexamples` wrote, each run as `arbc test` runs
+        it. A file that states the property ("kept as a regression" in its header) must fail on
+        this app, its expectation unmet: the violation is real. A file that states what the
+        broken app does must pass (docs/checks.md#temporal)."""
         cex = os.path.join(work, "cex")
         if not os.path.isdir(cex):
             return
         files = sorted(os.path.join(cex, f) for f in os.listdir(cex) if f.endswith(".test.spec"))
-        if not files:
-            return
-        rc, out, err = self.arbc(["test", "--no-verify"] + files, cwd=work)
-        b = process_breach("arbc test (counterexamples)", rc, out, err, ok=(0,))
-        if b and b.claim == "crash" and rc == 1:
-            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote fails under "
-                         "`arbc test` (it should show the violation again, docs/checks.md#temporal)",
-                         "\n".join(ln for ln in out.splitlines() if ln.startswith(("FAIL", "  ")))[:800])
-        elif b and b.claim == "crash" and rc == 2:
-            b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote is refused "
-                         "by `arbc test`", (out + err).strip().splitlines()[0][:600])
-        if b:
-            res.breaches.append((b, None))
+        for path in files:
+            with open(path) as f:
+                regression = "kept as a regression" in f.read()
+            rc, out, err = self.arbc(["test", "--no-verify", path], cwd=work)
+            b = process_breach("arbc test (counterexample)", rc, out, err, ok=(0, 1, 2))
+            if not b and rc == 2:
+                b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote is "
+                             "refused by `arbc test`", (out + err).strip().splitlines()[0][:600])
+            elif not b and rc != (1 if regression else 0):
+                what = ("passes on the app it came from (the violation did not show again)"
+                        if regression else "fails under `arbc test` (it should show the violation)")
+                b = C.Breach("replay", "a counterexample `verify --counterexamples` wrote " + what,
+                             "\n".join(ln for ln in out.splitlines()
+                                       if ln.startswith(("FAIL", "PASS", "  ")))[:800])
+            if b:
+                res.breaches.append((b, None))
