@@ -25,13 +25,17 @@ struct TestStep {
 };
 
 struct Expectation {
-  enum class Kind { Receives, Nothing, Drops, State };
+  // Delivers, DeliversNothing: the rule delivers (nothing) in the window, whatever it drops.
+  // Property: the property over time holds over the whole run (its windows that end after the
+  // run are not judged).
+  enum class Kind { Receives, Nothing, Drops, Delivers, DeliversNothing, Property, State };
   Kind kind = Kind::Receives;
-  std::string port;            // Receives, Nothing: "Module.port", an in-port
-  std::optional<Value> value;  // Receives: none means any value
-  std::string connection;      // Drops: the rule
-  std::string reason;          // Drops: empty means any reason
-  Constraint state;            // State
+  std::string port;                          // Receives, Nothing: "Module.port", an in-port
+  std::optional<Value> value;                // Receives: none means any value
+  std::string connection;                    // Drops, Delivers, DeliversNothing: the rule
+  std::string reason;                        // Drops: empty means any reason
+  Constraint state;                          // State
+  std::optional<TemporalProperty> property;  // Property (none: sema reported its port)
   // The window, both ends included; without one, the whole test.
   double from = 0, to = std::numeric_limits<double>::infinity();
   std::string text;  // the expectation as written, for failure messages

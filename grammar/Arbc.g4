@@ -92,6 +92,8 @@ testStep
   | 'at' duration op=('set' | 'unset') ID ';'                            # testEvent
   | 'expect' portRef 'receives' (nothing='nothing' | expr)? testWindow? ';' # expectReceives
   | 'expect' ID 'drops' STRING? testWindow? ';'                          # expectDrops
+  | 'expect' ID 'delivers' nothing='nothing'? testWindow? ';'            # expectDelivers
+  | 'expect' (neverDecl | onlyAfterDecl | responseDecl | stableDecl)     # expectProperty
   | 'expect' expr testWindow ';'                                         # expectState
   ;
 testWindow : 'at' duration | 'within' duration '..' duration ;

@@ -8,6 +8,7 @@
 #include "core/duration_literal.h"
 #include "harness/value_spec_text.h"
 #include "report/run_timeline.h"
+#include "runtime/property_watch.h"
 
 namespace arbc::harness {
 
@@ -93,6 +94,40 @@ std::string check_drops(const model::Expectation& e, const TestRun& run) {
   return "but " + e.connection + " " + seen.substr(2);
 }
 
+// `RULE delivers [nothing]`: only the rule's deliveries count, not its drops, so a drop of
+// another message at the same instant (the rule not selected for it) cannot stand in for the
+// one the expectation is about, as it can for `drops` without a reason.
+std::string check_delivers(const model::Expectation& e, const TraceRecord* first,
+                           const TestRun& run) {
+  if (e.kind == model::Expectation::Kind::DeliversNothing) {
+    if (!first) return "";
+    return "but " + e.connection + " delivered at " + seconds(first->t) + " to " + first->port;
+  }
+  if (first) return "";
+  double nearest = std::numeric_limits<double>::quiet_NaN(), gap = 0;
+  for (const TraceRecord& r : run.records) {
+    if (r.connection != e.connection || r.kind != TraceKind::Deliver) continue;
+    double d = r.t < e.from ? e.from - r.t : r.t - e.to;
+    if (std::isnan(nearest) || d < gap) nearest = r.t, gap = d;
+  }
+  std::string out = "but " + e.connection + " delivered nothing " + window(e);
+  if (!std::isnan(nearest)) out += "; it delivered at " + seconds(nearest);
+  return out;
+}
+
+std::string check_delivers(const model::Expectation& e, const TestRun& run) {
+  for (const TraceRecord& r : run.records) {
+    if (r.connection == e.connection && r.kind == TraceKind::Deliver && in_window(r.t, e))
+      return check_delivers(e, &r, run);
+  }
+  return check_delivers(e, nullptr, run);
+}
+
+std::string check_property(const model::Expectation& e, const TestRun& run) {
+  std::optional<PropertyBreach> b = property_breach(e, run);
+  return b ? "but " + b->what : "";
+}
+
 // The events present at t in any container (after the messages of that instant).
 std::set<std::string> present_at(const TestRun& run, double t) {
   report::RunTimeline timeline =
@@ -163,6 +198,22 @@ bool near_equal(const Value& a, const Value& b) {
   }
 }
 
+// `expect PROPERTY;`: the property over the whole run, judged as the runtime checks would.
+std::optional<PropertyBreach> property_breach(const model::Expectation& e, const TestRun& run) {
+  if (!e.property || !run.app) return std::nullopt;  // sema reported the property's port
+  PropertyWatch watch(*e.property, rules_into(*run.app, e.property->port));
+  for (const TraceRecord& r : run.records) watch.observe(r);
+  watch.finish(run.end);
+  return watch.breach();
+}
+
+std::pair<double, double> failure_window(const model::Expectation& e, const TestRun& run) {
+  if (e.kind == model::Expectation::Kind::Property) {
+    if (std::optional<PropertyBreach> b = property_breach(e, run)) return {b->from, b->t};
+  }
+  return {e.from, e.to};
+}
+
 std::string check_expectation(const model::Expectation& e, const TestRun& run) {
   switch (e.kind) {
     case model::Expectation::Kind::Receives:
@@ -170,6 +221,11 @@ std::string check_expectation(const model::Expectation& e, const TestRun& run) {
       return check_receives(e, run);
     case model::Expectation::Kind::Drops:
       return check_drops(e, run);
+    case model::Expectation::Kind::Delivers:
+    case model::Expectation::Kind::DeliversNothing:
+      return check_delivers(e, run);
+    case model::Expectation::Kind::Property:
+      return check_property(e, run);
     case model::Expectation::Kind::State:
       return check_state(e, run);
   }

@@ -2,11 +2,14 @@
 // what the stand-ins received and the trace records.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/app_model.h"
 #include "core/test_case.h"
+#include "runtime/property_watch.h"
 #include "runtime/stand_in.h"
 #include "runtime/trace_record.h"
 
@@ -21,6 +24,13 @@ struct TestRun {
 
 // "" when `e` holds in `run`; else what happened instead, in a line or a few.
 std::string check_expectation(const model::Expectation& e, const TestRun& run);
+
+// `expect PROPERTY;`: how the run broke the property; nullopt when it holds.
+std::optional<PropertyBreach> property_breach(const model::Expectation& e, const TestRun& run);
+
+// The time range a failure's trace excerpt shows: the expectation's window; for a property,
+// from the first instant the breach involves to the one that broke it.
+std::pair<double, double> failure_window(const model::Expectation& e, const TestRun& run);
 
 // The trace records from `from` - 0.5 s to `to` + 0.5 s (at most 20 lines, the first ones),
 // indented, one per line.

@@ -67,6 +67,36 @@ TEST(TestExpectTest, NothingAndDropsReadTheRun) {
   EXPECT_NE(check_expectation(drops, run), "");
 }
 
+// The case `drops` cannot tell apart (drt seed 4242 spec 780): at one instant the rule is
+// not selected for one message and delivers the next. `delivers nothing` sees the delivery.
+TEST(TestExpectTest, DeliversCountsOnlyTheRulesDeliveries) {
+  std::vector<Received> got;
+  std::vector<TraceRecord> records = {drop(0.2, "r1", DropReason::NotSelected)};
+  TraceRecord deliver;
+  deliver.kind = TraceKind::Deliver;
+  deliver.t = 0.2;
+  deliver.connection = "r1";
+  deliver.port = "D.q";
+  records.push_back(deliver);
+  TestRun run{got, records, 1.0, nullptr};
+  model::Expectation drops;
+  drops.kind = model::Expectation::Kind::Drops;
+  drops.connection = "r1";
+  drops.from = drops.to = 0.2;
+  EXPECT_EQ(check_expectation(drops, run), "");  // met by the other message's drop
+  model::Expectation none = drops;
+  none.kind = model::Expectation::Kind::DeliversNothing;
+  EXPECT_EQ(check_expectation(none, run), "but r1 delivered at 200ms to D.q");
+  model::Expectation some = drops;
+  some.kind = model::Expectation::Kind::Delivers;
+  EXPECT_EQ(check_expectation(some, run), "");
+  some.from = some.to = 0.5;
+  EXPECT_EQ(check_expectation(some, run),
+            "but r1 delivered nothing at 500ms; it delivered at 200ms");
+  none.from = none.to = 0.5;
+  EXPECT_EQ(check_expectation(none, run), "");
+}
+
 TEST(TestExpectTest, NearEqualIsRelativeToTheValues) {
   EXPECT_TRUE(near_equal(Value(1e9), Value(1e9 + 0.5)));
   EXPECT_FALSE(near_equal(Value(1.0), Value(1.001)));

@@ -82,9 +82,14 @@ void add_harness(model::App& app) {
 double test_end(const model::TestCase& test) {
   double end = 0;
   for (const model::TestStep& s : test.steps) end = std::max(end, s.t);
+  double last_step = end;
   for (const model::Expectation& e : test.expectations) {
     end = std::max(end, e.from);
     if (std::isfinite(e.to)) end = std::max(end, e.to);
+    // A response's last trigger may come at the last step: the run goes on for its window, so
+    // that an answer that never comes is judged (a window past the end is not).
+    if (e.property && e.property->kind == model::TemporalProperty::Kind::Response)
+      end = std::max(end, last_step + e.property->window);
   }
   return end;
 }
@@ -138,7 +143,8 @@ std::string failures(const model::TestCase& test, const TestRun& run,
     std::string where = e.loc.file + ":" + std::to_string(e.loc.line);
     if (e.loc.column > 0) where += ":" + std::to_string(e.loc.column);
     out += "  " + where + ": expected " + e.text + "\n";
-    out += "  " + why + "\n  trace:\n" + trace_around(run, e.from, e.to);
+    auto [from, to] = failure_window(e, run);
+    out += "  " + why + "\n  trace:\n" + trace_around(run, from, to);
   }
   if (!out.empty()) {
     for (const std::string& r : reports) out += "  runtime: " + r + "\n";

@@ -199,7 +199,7 @@ class Builder {
       }
     }
     for (const ast::TestExpect& x : t.expects) {
-      if (x.kind == ast::TestExpect::Kind::Drops && x.rule_decl)
+      if (x.rule_decl)  // Drops, Delivers, DeliversNothing
         ix_.add_occurrence(rule_key(x.rule_decl), name_loc(x.rule_loc, x.rule));
       if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing)
         port_ref(x.port);

@@ -407,15 +407,18 @@ struct TestStep {
 
 struct TestExpect {
   enum class Kind {
-    Receives,  // `expect M.p receives [VALUE] [window];`
-    Nothing,   // `expect M.p receives nothing [window];`
-    Drops,     // `expect RULE drops ["reason"] [window];`
-    State,     // `expect CONSTRAINT at D;`
+    Receives,         // `expect M.p receives [VALUE] [window];`
+    Nothing,          // `expect M.p receives nothing [window];`
+    Drops,            // `expect RULE drops ["reason"] [window];`
+    Delivers,         // `expect RULE delivers [window];`
+    DeliversNothing,  // `expect RULE delivers nothing [window];`
+    Property,         // `expect never two take within 1s;` (any property over time): the whole run
+    State,            // `expect CONSTRAINT at D;`
   };
   Kind kind = Kind::Receives;
   PortRef port;      // Receives, Nothing
   ExprPtr value;     // Receives: null means any value; State: the constraint
-  std::string rule;  // Drops
+  std::string rule;  // Drops, Delivers, DeliversNothing
   Loc rule_loc;
   std::string reason;  // Drops: empty means any reason
   Loc reason_loc;
@@ -423,8 +426,9 @@ struct TestExpect {
   std::string text;  // as written (without `expect` and `;`), for failure messages
   Loc loc;
   // sema:
-  const Rule* rule_decl = nullptr;  // Drops
-  Constraint constraint;            // State
+  const Rule* rule_decl = nullptr;         // Drops, Delivers, DeliversNothing
+  Constraint constraint;                   // State
+  std::shared_ptr<TemporalDecl> property;  // Property
 };
 
 // `test "name" [on RULE] { steps and expectations }`

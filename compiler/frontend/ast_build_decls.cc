@@ -54,12 +54,7 @@ void Builder::add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
   } else if (auto* c = ctx->responseDecl()) {
     spec.temporal.push_back(response_decl(c));
   } else if (auto* c = ctx->stableDecl()) {
-    TemporalDecl n;
-    n.kind = TemporalDecl::Kind::Stability;
-    n.loc = loc(c->getStart());
-    n.port = port_ref(c->portRef());
-    n.window = duration(c->duration());
-    spec.temporal.push_back(std::move(n));
+    spec.temporal.push_back(stable_decl(c));
   } else if (auto* c = ctx->givenDecl()) {
     spec.rates.push_back({port_ref(c->portRef()), duration(c->duration()), loc(c->getStart())});
   } else if (auto* c = ctx->resourceDecl()) {
@@ -293,6 +288,16 @@ TemporalDecl Builder::response_decl(ArbcParser::ResponseDeclContext* c) {
   return n;
 }
 
+// stableDecl : 'stable' portRef 'for' duration ';' ;
+TemporalDecl Builder::stable_decl(ArbcParser::StableDeclContext* c) {
+  TemporalDecl n;
+  n.kind = TemporalDecl::Kind::Stability;
+  n.loc = loc(c->getStart());
+  n.port = port_ref(c->portRef());
+  n.window = duration(c->duration());
+  return n;
+}
+
 // testsForDecl : 'tests' 'for' STRING ';' ;   at most one per file
 void Builder::add_tests_for(Spec& spec, ArbcParser::TestsForDeclContext* c) {
   TestsFor f{decode_string(c->STRING()), loc(c->STRING())};
@@ -362,6 +367,19 @@ TestExpect Builder::test_expect(ArbcParser::TestStepContext* step) {
       e.reason_loc = loc(c->STRING());
     }
     window = c->testWindow();
+  } else if (auto* c = as<ArbcParser::ExpectDeliversContext>(step)) {
+    e.kind = c->nothing ? TestExpect::Kind::DeliversNothing : TestExpect::Kind::Delivers;
+    e.rule = tx(c->ID());
+    e.rule_loc = loc(c->ID());
+    window = c->testWindow();
+  } else if (auto* c = as<ArbcParser::ExpectPropertyContext>(step)) {
+    e.kind = TestExpect::Kind::Property;
+    if (c->neverDecl()) e.property = std::make_shared<TemporalDecl>(never_decl(c->neverDecl()));
+    if (c->onlyAfterDecl())
+      e.property = std::make_shared<TemporalDecl>(only_after_decl(c->onlyAfterDecl()));
+    if (c->responseDecl())
+      e.property = std::make_shared<TemporalDecl>(response_decl(c->responseDecl()));
+    if (c->stableDecl()) e.property = std::make_shared<TemporalDecl>(stable_decl(c->stableDecl()));
   } else if (auto* c = as<ArbcParser::ExpectStateContext>(step)) {
     e.kind = TestExpect::Kind::State;
     e.value = expr(c->expr(), 0);

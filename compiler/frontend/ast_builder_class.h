@@ -107,6 +107,7 @@ class Builder {
   ast::TemporalDecl only_after_decl(ArbcParser::OnlyAfterDeclContext* c);
   ast::AssumeDecl assume_decl(ArbcParser::AssumeDeclContext* c);
   ast::TemporalDecl response_decl(ArbcParser::ResponseDeclContext* c);
+  ast::TemporalDecl stable_decl(ArbcParser::StableDeclContext* c);
   void add_tests_for(ast::Spec& spec, ArbcParser::TestsForDeclContext* c);
   ast::TestDecl test_decl(ArbcParser::TestDeclContext* c);
   void add_test_step(ast::TestDecl& t, ArbcParser::TestStepContext* step);

@@ -65,10 +65,12 @@ void Sema::report_expects_nothing(const TestDecl& t) {
   Diagnostic note;
   note.severity = Severity::Note;
   std::string hint = expectation_hint(t, spec_);
-  note.message = (hint.empty() ? "" : "for example `" + hint + "`. ") +
-                 std::string(
-                     "A test can expect that a port receives a value (or nothing), that "
-                     "a rule drops a message, or that events hold at a time");
+  note.message =
+      (hint.empty() ? "" : "for example `" + hint + "`. ") +
+      std::string(
+          "A test can expect that a port receives a value (or nothing), that "
+          "a rule drops a message or delivers (or not), that a property over time holds, or that "
+          "events hold at a time");
   d.notes.push_back(std::move(note));
 }
 
@@ -217,6 +219,16 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       } else if (!e.reason.empty() && e.rule_decl) {
         check_reason_possible(*e.rule_decl, e);
       }
+      break;
+    case TestExpect::Kind::Delivers:
+    case TestExpect::Kind::DeliversNothing:
+      e.rule_decl = find_test_rule(e.rule, e.rule_loc);
+      if (t.on_rule && e.rule_decl && e.rule_decl != t.on_rule) {
+        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", "test-port");
+      }
+      break;
+    case TestExpect::Kind::Property:
+      check_temporal(*e.property);
       break;
     case TestExpect::Kind::State:
       e.constraint = check_constraint(*e.value, "an expectation", false);

@@ -176,7 +176,8 @@ void describe_test_step(const antlr4::Token* start, const antlr4::Token* offendi
     d.message = "this `expect` fits none of its forms, at " + found;
     note.message =
         "an expectation reads `expect Module.port receives VALUE [WINDOW];` (or `receives "
-        "nothing`), `expect RULE drops [\"reason\"] [WINDOW];` or `expect CONDITION WINDOW;`, "
+        "nothing`), `expect RULE drops [\"reason\"] [WINDOW];`, `expect RULE delivers [nothing] "
+        "[WINDOW];`, `expect PROPERTY;` (a property over time) or `expect CONDITION WINDOW;`, "
         "where WINDOW is `at TIME` or `within T1..T2`";
   }
   d.notes.push_back(std::move(note));

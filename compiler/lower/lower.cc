@@ -9,6 +9,7 @@
 #include "compiler/lower/event_effects.h"
 #include "compiler/lower/feeds.h"
 #include "compiler/lower/lower_body.h"
+#include "compiler/lower/temporal.h"
 #include "compiler/lower/test_cases.h"
 #include "core/effective_guard.h"
 
@@ -83,21 +84,8 @@ class Lowerer {
     }
     for (const ast::InvariantDecl& inv : spec_.invariants)
       app.invariants.push_back({inv.constraint, inv.loc});
-    for (const ast::TemporalDecl& n : spec_.temporal) {
-      const ast::ArbitrateDecl* port = n.rule_decl ? n.rule_decl->port : n.port_decl;
-      if (!port) continue;  // sema reported it
-      model::TemporalProperty t;
-      t.kind = static_cast<model::TemporalProperty::Kind>(n.kind);  // the same five, in order
-      t.port = port->port.qualified();
-      t.rule = n.rule;
-      t.window = n.window.seconds;
-      t.event = n.event;
-      t.other = n.other;
-      t.stops = n.stops;
-      t.condition = n.condition_sema;
-      t.loc = n.loc;
-      app.temporal.push_back(std::move(t));
-    }
+    for (const ast::TemporalDecl& n : spec_.temporal)
+      if (auto t = lower_temporal(n)) app.temporal.push_back(std::move(*t));
     for (const ast::AssumeDecl& a : spec_.assumptions) {
       if (!a.after_decl) continue;  // sema reported it
       std::optional<double> absent_for;

@@ -1,6 +1,7 @@
 #include "compiler/lower/test_cases.h"
 
 #include "compiler/frontend/literal_value.h"
+#include "compiler/lower/temporal.h"
 
 namespace arbc {
 
@@ -54,6 +55,18 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
       out.kind = model::Expectation::Kind::Drops;
       out.connection = e.rule;
       out.reason = e.reason;
+      break;
+    case ast::TestExpect::Kind::Delivers:
+      out.kind = model::Expectation::Kind::Delivers;
+      out.connection = e.rule;
+      break;
+    case ast::TestExpect::Kind::DeliversNothing:
+      out.kind = model::Expectation::Kind::DeliversNothing;
+      out.connection = e.rule;
+      break;
+    case ast::TestExpect::Kind::Property:
+      out.kind = model::Expectation::Kind::Property;
+      out.property = lower_temporal(*e.property);
       break;
     case ast::TestExpect::Kind::State:
       out.kind = model::Expectation::Kind::State;

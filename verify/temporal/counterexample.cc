@@ -150,7 +150,7 @@ class Builder {
       e.port = c.destination;
       e.value = w->emitted[0];
       e.from = e.to = t;
-      e.connection = c.name;  // read by property_expectation; a `receives` ignores it
+      e.connection = c.name;  // the rule that delivered it; a `receives` ignores it
       e.text = c.destination + " receives " + spec_value_text(w->emitted[0]) + " at " +
                duration_literal(t);
       test.expectations.push_back(std::move(e));
@@ -183,79 +183,13 @@ std::optional<model::TestCase> counterexample_test(const PortShape& shape, const
   return std::move(b.test);
 }
 
-namespace {
-
-using Kind = model::TemporalProperty::Kind;
-
-// The replay's last delivery by `rule` (any rule: empty); null if none.
-const model::Expectation* last_delivery(const model::TestCase& replay, const std::string& rule) {
-  const model::Expectation* last = nullptr;
-  for (const model::Expectation& e : replay.expectations)
-    if (rule.empty() || e.connection == rule) last = &e;
-  return last;
-}
-
-// A response: the first trigger (a delivery of `other`; its last one for `stops`) with no
-// delivery of the rule within the window after it, as the port's `receives` in that window.
-std::optional<model::Expectation> unanswered(const model::TestCase& replay,
-                                             const model::TemporalProperty& p) {
-  if (p.other.empty()) return std::nullopt;  // an event's trigger: the replay gives no instant
-  std::vector<double> triggers;
-  for (const model::Expectation& e : replay.expectations)
-    if (e.connection == p.other) triggers.push_back(e.from);
-  if (p.stops && !triggers.empty()) triggers = {triggers.back()};
-  for (double t : triggers) {
-    bool answered = false;
-    for (const model::Expectation& e : replay.expectations)
-      answered |= e.connection != p.other && (p.rule.empty() || e.connection == p.rule) &&
-                  e.from > t && e.from <= t + p.window;
-    if (answered) continue;
-    model::Expectation x;
-    x.kind = model::Expectation::Kind::Receives;
-    x.port = p.port;
-    x.from = t + 1e-6;  // after the trigger's own delivery (replayed times are whole microseconds)
-    x.to = t + p.window;
-    x.text =
-        p.port + " receives within " + duration_literal(x.from) + ".." + duration_literal(x.to);
-    return x;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<model::Expectation> property_expectation(const model::TestCase& replay,
-                                                       const model::TemporalProperty& p) {
-  if (p.kind == Kind::Response) return unanswered(replay, p);
-  // The delivery that breaks the property is the replay's last one of the rule (of any rule
-  // for a stability: the switch too many).
-  const model::Expectation* bad = last_delivery(replay, p.rule);
-  if (!bad) return std::nullopt;
-  model::Expectation x;
-  x.kind = model::Expectation::Kind::Drops;
-  x.connection = bad->connection;
-  x.from = x.to = bad->from;
-  x.text = bad->connection + " drops at " + duration_literal(bad->from);
-  return x;
-}
-
 std::string test_file_text(const model::TestCase& replay, const model::TemporalProperty& p,
                            const std::string& spec_path) {
-  std::optional<model::Expectation> stated = property_expectation(replay, p);
   std::string out =
-      stated
-          ? "// A counterexample `arbc verify` found and replayed on the runtime, kept as a "
-            "regression\n"
-            "// test: it expects what the property demands at the instant the app broke it, "
-            "so `arbc test\n"
-            "// --no-verify FILE` fails on that app and passes once it is fixed. Events the "
-            "app's feeds\n"
-            "// set are given directly (`set`/`unset`).\n"
-          : "// A counterexample `arbc verify` found and replayed on the runtime. It expects "
-            "what the\n"
-            "// broken app does (the replay shows no instant where the property demands "
-            "something), so it\n"
-            "// passes while the app is broken. Events the app's feeds set are given directly.\n";
+      "// A counterexample `arbc verify` found and replayed on the runtime, kept as a regression\n"
+      "// test: it expects the property itself over these inputs, so `arbc test --no-verify FILE`\n"
+      "// fails on that app and passes once it is fixed. Events the app's feeds set are given\n"
+      "// directly (`set`/`unset`).\n";
   out += "tests for \"" + spec_path + "\";\n\ntest \"" + replay.name + "\" {\n";
   for (const model::TestStep& s : replay.steps) {
     out += "  at " + duration_literal(s.t) + " ";
@@ -271,11 +205,7 @@ std::string test_file_text(const model::TestCase& replay, const model::TemporalP
         break;
     }
   }
-  if (stated) {
-    out += "  expect " + stated->text + ";\n";
-  } else {
-    for (const model::Expectation& e : replay.expectations) out += "  expect " + e.text + ";\n";
-  }
+  out += "  expect " + property_words(p) + ";\n";
   return out + "}\n";
 }
 

@@ -24,18 +24,10 @@ std::optional<model::TestCase> counterexample_test(const PortShape& shape, const
                                                    const model::TemporalProperty& p,
                                                    DataQuery& data, std::string* why_not);
 
-// The expectation that states `p` where the counterexample `replay` broke it: the delivery that
-// breaks a spacing, an absence, a precedence or a stability is expected to be dropped (`expect
-// take drops at 1.2s`), and a response's port to receive within the window of the trigger that
-// went unanswered. A test with it fails on the app the counterexample came from and passes once
-// the app no longer breaks `p` there (issue 39: a kept counterexample is a regression test).
-// nullopt when the replay shows no such instant (a response whose trigger it does not show).
-std::optional<model::Expectation> property_expectation(const model::TestCase& replay,
-                                                       const model::TemporalProperty& p);
-
 // The counterexample as the text of a tests file for the spec at `spec_path` (relative to the
-// file): the replay's steps and property_expectation; without one, the replay's own
-// expectations (what the broken app does), and the header says so.
+// file): the replay's steps, then `expect PROPERTY;` (runtime/property_watch.h judges it), so
+// the file fails on the app the counterexample came from and passes once the app no longer
+// breaks `p` on those inputs (issue 39: a kept counterexample is a regression test).
 std::string test_file_text(const model::TestCase& replay, const model::TemporalProperty& p,
                            const std::string& spec_path);
 

@@ -43,7 +43,7 @@ def main(argv=None):
     out_dir = args.out or os.path.join(work, "found")
     started = time.monotonic()
     deadline = started + args.seconds
-    totals = {"specs": 0, "steps": 0, "rejected": 0, "timeouts": 0, "outside": 0, "unjudged": 0,
+    totals = {"specs": 0, "steps": 0, "rejected": 0, "timeouts": 0, "outside": 0, "unjudged": 0, "beyond_bound": 0,
               "skipped": 0, "disagreements": 0, "runs": 0}
     verdicts, rejected_ids, kinds = {}, {}, {}
     index = 0
@@ -63,6 +63,7 @@ def main(argv=None):
         totals["timeouts"] += res.timeouts
         totals["outside"] += res.outside
         totals["unjudged"] += res.unjudged
+        totals["beyond_bound"] += res.beyond_bound
         totals["skipped"] += res.skipped_values
         if res.rejected:
             totals["rejected"] += 1
@@ -80,7 +81,8 @@ def main(argv=None):
     print(f"drt: rejected by arbc check: {totals['rejected']}"
           + (f" ({', '.join(f'{k} {v}' for k, v in sorted(rejected_ids.items()))})" if rejected_ids else ""))
     print(f"drt: timeouts: {totals['timeouts']}; decisions outside the claims' premises: "
-          f"{totals['outside']}; deliveries not judged (NaN or infinity in the trace): "
+          f"{totals['outside']}; breaches by lists longer than a bounded verdict claims: "
+          f"{totals['beyond_bound']}; deliveries not judged (NaN or infinity in the trace): "
           f"{totals['unjudged']}; input values left out (no JSON form for NaN, infinities): "
           f"{totals['skipped']}")
     if kinds:

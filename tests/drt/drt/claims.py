@@ -21,7 +21,9 @@ Common ground, for every claim:
   The data assumptions the report prints (lists of at most --list-bound elements, finite
   floats, no 64-bit overflow) are NOT premises: issue 38 requires that the runtime enforce
   them or that the verdict say "up to N"; a breach that needs one is still a breach, labelled
-  with the assumption it needs (`Breach.needs`).
+  with the assumption it needs (`Breach.needs`). The one exception: a verdict that says "for
+  lists of at most N elements" (list_bound in the JSON) claims nothing about longer lists, so
+  report_claims.py counts a breach that needs only longer lists as beyond the bound.
 """
 from dataclasses import dataclass
 

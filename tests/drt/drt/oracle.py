@@ -40,6 +40,7 @@ class Result:
         self.runs = 0
         self.outside = 0         # decisions not judged: outside the claims' premises
         self.unjudged = 0        # deliveries whose value the trace cannot write
+        self.beyond_bound = 0    # breaches by lists longer than a bounded verdict claims
         self.skipped_values = 0  # values the inputs file cannot carry
         self.timeouts = 0
         self.verdict = ""

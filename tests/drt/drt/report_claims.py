@@ -29,6 +29,10 @@ class Claims:
                 self.data_pairs[p["port"]] = [pair(s)[:2] for s in p.get("exclusive_by_data", [])
                                               if pair(s)]
         known = {p["port"]: p for p in inp.get("ports", [])}
+        # A verdict that says "for lists of at most N elements" claims nothing about longer
+        # lists (issue 38 item 3 allows that, said in its first line): its breaches by a longer
+        # list are counted as beyond the bound, not as disagreements.
+        self.bounded = {p["port"] for p in inp.get("ports", []) if p.get("list_bound")}
         self.asserts = []
         for d in spec.decls:
             kind = getattr(d, "kind", None)
@@ -46,7 +50,7 @@ class Claims:
                 continue
             pairs = [pair(s)[:2] + ("events",) for s in r.get("exclusive_by_events", []) if pair(s)]
             pairs += [pair(s) for s in r.get("exclusive_by_data", []) if pair(s)]
-            self.resources.append((specs[r["name"]], pairs))
+            self.resources.append((specs[r["name"]], pairs, bool(r.get("list_bound"))))
         self.temporal = [t for t in inp.get("temporal", [])
                          if t["outcome"] in ("proved", "holds-up-to-bound")]
         for t in self.temporal:
@@ -60,6 +64,15 @@ class Claims:
         walk(value, self.list_bound, out)
         return "; ".join(sorted(set(out)))
 
+    def beyond_bound(self, found, bounded, res):
+        """The breaches a bounded verdict does not claim (each needs only longer lists)."""
+        if not bounded:
+            return found
+        kept = [b for b in found if not b.needs or any(
+            "--list-bound" not in n for n in b.needs.split("; "))]
+        res.beyond_bound += len(found) - len(kept)
+        return kept
+
     def judge(self, run, end, res):
         m = self.model
         out = C.selection(run, m)
@@ -68,7 +81,8 @@ class Claims:
             found, outside = C.exclusive_by_events(run, m, port, pairs)
             out += found
             res.outside += outside
-            out += C.exclusive_by_data(run, pairs, port, self.needs)
+            out += self.beyond_bound(C.exclusive_by_data(run, pairs, port, self.needs),
+                                     port in self.bounded, res)
         for d, what in self.asserts:
             if d.kind == "assert":
                 found, outside = C.event_assert(run, m, d.info["port"], d.info["rule"],
@@ -78,9 +92,10 @@ class Claims:
                 found, unjudged = C.data_assert(run, m, d.info["port"], d.info["rule"], d.info["pred"],
                                                 what, self.needs, self.consts)
                 res.unjudged += unjudged
-            out += found
-        for info, pairs in self.resources:
-            out += C.resource(run, m, info, pairs, self.needs, self.consts)
+            out += self.beyond_bound(found, d.info["port"] in self.bounded, res)
+        for info, pairs, bounded in self.resources:
+            out += self.beyond_bound(C.resource(run, m, info, pairs, self.needs, self.consts),
+                                     bounded, res)
         out += self.judge_temporal(run, end, res)
         out += monitor_errors(run, m)
         return out

@@ -1,0 +1,149 @@
+#include "runtime/property_watch.h"
+
+#include <limits>
+
+#include "core/constraint.h"
+#include "core/duration_literal.h"
+#include "core/instant.h"
+
+namespace arbc {
+
+namespace {
+
+using Kind = model::TemporalProperty::Kind;
+
+std::string at(double t) { return duration_literal(t); }
+
+}  // namespace
+
+std::set<std::string> rules_into(const model::App& app, const std::string& port) {
+  std::set<std::string> out;
+  for (const model::Connection* c : app.connections_into(port))
+    if (c->kind == model::ConnectionKind::Rule) out.insert(c->name);
+  return out;
+}
+
+PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules)
+    : p_(std::move(p)), rules_(std::move(port_rules)) {}
+
+// The container's entries at t: an entry set with a lifetime is present before its expiry (the
+// `expire` record comes later, when the runtime next reads the container).
+std::set<std::string> PropertyWatch::present(double t) const {
+  std::set<std::string> out;
+  for (const auto& [key, expiry] : entries_)
+    if (!reached(t, expiry)) out.insert(key.first);
+  return out;
+}
+
+void PropertyWatch::broken(double from, double t, std::string what) {
+  if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
+}
+
+void PropertyWatch::observe(const TraceRecord& r) {
+  if (breach_) return;
+  if (r.kind == TraceKind::Event && r.port == p_.port) {
+    container(r);
+  } else if ((r.kind == TraceKind::Deliver && r.port == p_.port) ||
+             (r.kind == TraceKind::Drop && rules_.count(r.connection))) {
+    decision(r);
+  }
+}
+
+// An event record of the port; for a response triggered by an event, its becoming present.
+void PropertyWatch::container(const TraceRecord& r) {
+  bool was = p_.kind == Kind::Response && !p_.event.empty() && present(r.t).count(p_.event);
+  auto key = std::make_pair(r.event, r.owner);
+  if (r.op == "set") {
+    entries_[key] = r.expiry >= 0 ? r.expiry : std::numeric_limits<double>::infinity();
+  } else if (r.op == "unset") {
+    entries_.erase(key);
+  }
+  if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
+  close_windows_before(r.t);
+  if (!was && present(r.t).count(p_.event)) pending_.push_back({r.t, r.t + p_.window});
+}
+
+void PropertyWatch::decision(const TraceRecord& r) {
+  if (p_.kind == Kind::Response) {
+    close_windows_before(r.t);
+    if (breach_) return;
+    respond(r, present(r.t));
+    bool trigger = p_.event.empty() && r.kind == TraceKind::Deliver && r.connection == p_.other;
+    if (trigger) pending_.push_back({r.t, r.t + p_.window});
+    return;
+  }
+  if (r.kind == TraceKind::Deliver) delivery(r);
+}
+
+// Spacing, absence, precedence and stability read the port's deliveries.
+void PropertyWatch::delivery(const TraceRecord& r) {
+  const std::string& who = r.connection;
+  double t = r.t;
+  if (p_.kind == Kind::Spacing && who == p_.rule) {
+    const std::string& before = p_.other.empty() ? p_.rule : p_.other;
+    auto it = last_.find(before);
+    if (it != last_.end() && !reached(t, it->second + p_.window)) {
+      broken(it->second, t,
+             p_.other.empty() ? "'" + who + "' delivered at " + at(it->second) + " and at " + at(t)
+                              : "'" + who + "' delivered at " + at(t) + ", '" + before + "' at " +
+                                    at(it->second));
+    }
+  }
+  if (p_.kind == Kind::Absence && who == p_.rule && present(t).count(p_.event))
+    broken(t, t, "'" + who + "' delivered at " + at(t) + " with " + p_.event + " present");
+  if (p_.kind == Kind::Precedence && who == p_.other) armed_ = true;
+  if (p_.kind == Kind::Precedence && who == p_.rule) {
+    if (!armed_)
+      broken(t, t,
+             "'" + who + "' delivered at " + at(t) + " with no delivery of '" + p_.other +
+                 "' since its last");
+    armed_ = false;
+  }
+  if (p_.kind == Kind::Stability && last_rule_ && who != *last_rule_) {
+    if (last_switch_ && !reached(t, *last_switch_ + p_.window))
+      broken(*last_switch_, t,
+             "the deliverer switched at " + at(*last_switch_) + " and at " + at(t));
+    last_switch_ = t;
+  }
+  last_rule_ = who;
+  last_[who] = t;
+}
+
+// A decision in a pending trigger's window: a delivery of the rule (of any rule of the port,
+// when the port answers) answers it; with `stops`, OTHER delivering again releases it; so does
+// the `while` condition false at a decision of the rule.
+void PropertyWatch::respond(const TraceRecord& r, const std::set<std::string>& state) {
+  const std::string& who = r.connection;
+  bool deliver = r.kind == TraceKind::Deliver;
+  if (p_.stops && deliver && who == p_.other) {
+    pending_.clear();
+    return;
+  }
+  bool answers = p_.rule.empty() ? rules_.count(who) > 0 : who == p_.rule;
+  if (!answers) return;
+  if (deliver || !evaluate(p_.condition, state)) pending_.clear();
+}
+
+void PropertyWatch::close_windows_before(double t) {
+  for (const Trigger& g : pending_) {
+    if (t > g.horizon) {
+      broken(g.t, g.horizon,
+             "triggered at " + at(g.t) + ", no delivery of " +
+                 (p_.rule.empty() ? p_.port : "'" + p_.rule + "'") + " by " + at(g.horizon));
+      return;
+    }
+  }
+}
+
+void PropertyWatch::finish(double end) {
+  if (breach_ || p_.kind != Kind::Response) return;
+  // A window that ends after the run is not judged: the answer might still have come.
+  for (const Trigger& g : pending_) {
+    if (g.horizon <= end) {
+      close_windows_before(std::numeric_limits<double>::infinity());
+      return;
+    }
+  }
+}
+
+}  // namespace arbc

@@ -1,0 +1,72 @@
+// What a property over time (core/app_model.h, TemporalProperty; docs/language.md#properties-
+// over-time) means for one run, judged on the trace records in the order the runtime made them.
+// `arbc test`'s `expect PROPERTY;` reads it, so a kept counterexample states the property
+// itself; the runtime checks of issue 39 are to read it too. tests/drt/drt/claims.py (temporal)
+// is the differential test's statement of the same meaning.
+//
+// Which records count: deliveries into the property's port, decisions (deliveries and drops) of
+// the port's rules, and the port's own container (event records at that port): a property
+// reads the container of its port, never another's (docs/design.md#events-and-lifetimes).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/app_model.h"
+#include "runtime/trace_record.h"
+
+namespace arbc {
+
+struct PropertyBreach {
+  double from = 0;   // the first instant the breach involves (an earlier delivery, a trigger)
+  double t = 0;      // the instant the run broke the property
+  std::string what;  // what happened, in words ("'ask' delivered at 0s and at 250ms")
+};
+
+class PropertyWatch {
+ public:
+  // `port_rules`: the names of the rules into p.port (a response answered by the port, and the
+  // decisions whose state a response's `while` reads).
+  PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules);
+
+  // One record of the run, in order. Once broken, later records change nothing.
+  void observe(const TraceRecord& r);
+  // The run was observed up to `end`: a response trigger whose window closed by then and got no
+  // answer breaks the property; one whose window ends later is not judged.
+  void finish(double end);
+
+  const std::optional<PropertyBreach>& breach() const { return breach_; }
+
+ private:
+  struct Trigger {
+    double t;
+    double horizon;
+  };
+
+  std::set<std::string> present(double t) const;
+  void container(const TraceRecord& r);
+  void decision(const TraceRecord& r);
+  void delivery(const TraceRecord& r);
+  void respond(const TraceRecord& r, const std::set<std::string>& state);
+  void close_windows_before(double t);
+  void broken(double from, double t, std::string what);
+
+  model::TemporalProperty p_;
+  std::set<std::string> rules_;
+  std::map<std::pair<std::string, std::string>, double> entries_;  // (event, owner) -> expiry
+  std::map<std::string, double> last_;                             // rule -> its last delivery
+  bool armed_ = false;                                             // precedence
+  std::optional<std::string> last_rule_;                           // stability
+  std::optional<double> last_switch_;
+  std::vector<Trigger> pending_;  // response triggers not yet answered
+  std::optional<PropertyBreach> breach_;
+};
+
+// The rules into `port` in `app` (its arbitrated connections), for PropertyWatch.
+std::set<std::string> rules_into(const model::App& app, const std::string& port);
+
+}  // namespace arbc
