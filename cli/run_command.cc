@@ -145,8 +145,9 @@ struct RunArgs {
   bool no_verify = false;
   RunOptions options;
   std::string report_path;
-  TransportFlags transport;  // --transport, --host, --mediate, ... (cli/run_transport.h)
-  RunStandIns stand_ins;     // --inputs, --stub, --stub-rate, --diff
+  std::string runtime_checks = "warn";  // --runtime-checks: fail, warn or off
+  TransportFlags transport;             // --transport, --host, --mediate, ... (cli/run_transport.h)
+  RunStandIns stand_ins;                // --inputs, --stub, --stub-rate, --diff
 };
 
 // Parses `arbc run`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -169,6 +170,10 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--seed", seed_text, "seed of every random generator (default 1)")
       ->type_name("UINT");
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
+  cli.add_option("--runtime-checks", a.runtime_checks,
+                 "what a run that breaks a proved property or an assumption of the proof does: "
+                 "fail (exit 3), warn (default: said, verdict kept) or off")
+      ->check(CLI::IsMember({"fail", "warn", "off"}));
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
   add_transport_options(cli, &a.transport);
@@ -217,6 +222,22 @@ void print_stand_in_hint(const model::App& app, const Registry& registry, const 
 
 }  // namespace
 
+// The app of `dir`; nullopt after printing why it does not load (an error in app.json's text
+// rendered as a compiler's, its line quoted).
+std::optional<model::App> load_app_or_say_why(const std::string& dir) {
+  std::string load_error;
+  Diagnostic app_json_error;
+  std::optional<model::App> loaded = load_app_dir(dir, &load_error, &app_json_error);
+  if (loaded) return loaded;
+  if (app_json_error.loc.file.empty()) {
+    print_errors(load_error);
+  } else {
+    SourceCache sources;
+    std::fputs(render(app_json_error, &sources).c_str(), stderr);
+  }
+  return std::nullopt;
+}
+
 int run_command(std::span<char*> args) {
   RunArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
@@ -228,18 +249,8 @@ int run_command(std::span<char*> args) {
   TempDir temp;
   int prepared = prepare_app_dir(a.input, a.no_verify, &temp, &dir);
   if (prepared != kExitOk) return prepared;
-  std::string load_error;
-  Diagnostic app_json_error;  // in app.json's text: rendered as a compiler's, line quoted
-  std::optional<model::App> loaded = load_app_dir(dir, &load_error, &app_json_error);
-  if (!loaded) {
-    if (app_json_error.loc.file.empty()) {
-      print_errors(load_error);
-    } else {
-      SourceCache sources;
-      std::fputs(render(app_json_error, &sources).c_str(), stderr);
-    }
-    return kExitBadInput;
-  }
+  std::optional<model::App> loaded = load_app_or_say_why(dir);
+  if (!loaded) return kExitBadInput;
   const model::App& app = *loaded;
   int placed = apply_transport(a.transport, app, &options);
   if (placed != kExitOk) return placed;
@@ -259,6 +270,9 @@ int run_command(std::span<char*> args) {
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
+  ClaimWatch claims(app);  // what the proof proved and assumed, checked on every record
+  bool watching = !claims.empty() && a.runtime_checks != "off";
+  if (watching) options.trace_watch = [&claims](const TraceRecord& r) { claims.observe(r); };
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,
@@ -282,6 +296,8 @@ int run_command(std::span<char*> args) {
   RunEnd end{app,           *runtime,    options, records,
              a.report_path, report_file, proof,   describe_transport(a.transport, options)};
   if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(app); };
+  if (watching) end.claims = &claims;
+  end.claims_fail = a.runtime_checks == "fail";
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;

@@ -91,6 +91,32 @@ bool write_report(const RunEnd& end, const report::RunReportInput& input) {
   return true;
 }
 
+// The runtime checks' lines; a violation makes the run a failure, named in the verdict (what
+// the proof no longer covers, and from when).
+void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
+  if (!end.claims) return;
+  end.claims->finish(end.runtime.now());
+  const std::vector<ClaimViolation>& broken = end.claims->violations();
+  if (broken.empty()) {
+    std::printf("runtime checks: %zu claims and assumptions of the proof watched, none broken\n",
+                end.claims->size());
+    return;
+  }
+  std::printf("runtime checks: %zu of %zu broken; the proof does not cover the run from %s%s:\n",
+              broken.size(), end.claims->size(), duration_literal(broken.front().t).c_str(),
+              end.claims_fail ? "" : " (--runtime-checks fail makes this a failure)");
+  std::vector<std::string> names;
+  for (const ClaimViolation& v : broken) {
+    std::string claim = (v.assumption ? "assumption " : "") + v.claim;
+    std::printf("  %s  %s: %s\n", duration_literal(v.t).c_str(), claim.c_str(), v.what.c_str());
+    names.push_back(claim + " at " + duration_literal(v.t));
+  }
+  if (!end.claims_fail) return;
+  *success = false;
+  *verdict = "failure (runtime checks: " + join(names, "; ") + " broken" +
+             (verdict->rfind("success", 0) == 0 ? "" : "; " + *verdict) + ")";
+}
+
 }  // namespace
 
 int finish_run(const RunEnd& end, const std::string& signal) {
@@ -118,6 +144,7 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     std::fputs(received.c_str(), stdout);
     summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
   }
+  judge_claims(end, &success, &verdict);
   std::printf("result: %s\n", verdict.c_str());
   report::RunReportInput input = report_input(end, success, verdict, summary);
   input.header.stop_reason = stop;

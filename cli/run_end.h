@@ -9,6 +9,7 @@
 
 #include "core/app_model.h"
 #include "report/report_file.h"
+#include "runtime/claim_watch.h"
 #include "runtime/runtime.h"
 
 namespace arbc::cli {
@@ -25,6 +26,9 @@ struct RunEnd {
   // Not empty: what the stand-ins received (cli/run_stand_ins.h), printed after the
   // environment's summary and shown with it in the report.
   std::function<std::string()> stand_ins = {};
+  // Not null: the runtime checks that watched the run (runtime/claim_watch.h).
+  ClaimWatch* claims = nullptr;
+  bool claims_fail = false;  // --runtime-checks fail: a violation fails the run (exit 3)
 };
 
 // After runtime.run() returned: prints everything and writes the report. `signal` names the

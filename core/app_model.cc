@@ -1,6 +1,31 @@
 #include "core/app_model.h"
 
+#include "core/duration_literal.h"
+
 namespace arbc::model {
+
+std::string temporal_property_text(const TemporalProperty& p) {
+  switch (p.kind) {
+    case TemporalProperty::Kind::Spacing:
+      if (!p.other.empty())
+        return "never " + p.rule + " within " + duration_literal(p.window) + " after " + p.other;
+      return "never two " + p.rule + " within " + duration_literal(p.window);
+    case TemporalProperty::Kind::Absence:
+      return "never " + p.rule + " while " + p.event;
+    case TemporalProperty::Kind::Precedence:
+      return "only " + p.rule + " after " + p.other;
+    case TemporalProperty::Kind::Response: {
+      std::string words = "after " + (p.event.empty() ? p.other : p.event) +
+                          (p.stops ? " stops, " : ", ") + (p.rule.empty() ? p.port : p.rule) +
+                          " within " + duration_literal(p.window);
+      if (p.condition.op != Constraint::Op::True) words += " while " + p.condition.to_string();
+      return words;
+    }
+    case TemporalProperty::Kind::Stability:
+      return "stable " + p.port + " for " + duration_literal(p.window);
+  }
+  return p.rule;
+}
 
 const char* temporal_kind_name(TemporalProperty::Kind k) {
   switch (k) {

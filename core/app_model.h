@@ -184,6 +184,10 @@ struct SourceRate {
 // JSON.
 const char* temporal_kind_name(TemporalProperty::Kind k);
 
+// The property as a spec writes it, without `;` ("never two take within 1s"), for verify's
+// verdicts, the tests it writes and the runtime's checks.
+std::string temporal_property_text(const TemporalProperty& p);
+
 // An environment assumption (docs/language.md#environment-assumptions) about EVENT, an event
 // only feeds set, at every decision of a message into `port`:
 //   `assume EVENT only after AFTER [until UNTIL];`  the port's container holds EVENT only if

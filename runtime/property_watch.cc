@@ -26,15 +26,6 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
 PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules)
     : p_(std::move(p)), rules_(std::move(port_rules)) {}
 
-// The container's entries at t: an entry set with a lifetime is present before its expiry (the
-// `expire` record comes later, when the runtime next reads the container).
-std::set<std::string> PropertyWatch::present(double t) const {
-  std::set<std::string> out;
-  for (const auto& [key, expiry] : entries_)
-    if (!reached(t, expiry)) out.insert(key.first);
-  return out;
-}
-
 void PropertyWatch::broken(double from, double t, std::string what) {
   if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
 }
@@ -51,23 +42,18 @@ void PropertyWatch::observe(const TraceRecord& r) {
 
 // An event record of the port; for a response triggered by an event, its becoming present.
 void PropertyWatch::container(const TraceRecord& r) {
-  bool was = p_.kind == Kind::Response && !p_.event.empty() && present(r.t).count(p_.event);
-  auto key = std::make_pair(r.event, r.owner);
-  if (r.op == "set") {
-    entries_[key] = r.expiry >= 0 ? r.expiry : std::numeric_limits<double>::infinity();
-  } else if (r.op == "unset") {
-    entries_.erase(key);
-  }
+  bool was = p_.kind == Kind::Response && !p_.event.empty() && box_.present(r.t).count(p_.event);
+  box_.apply(r);
   if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
   close_windows_before(r.t);
-  if (!was && present(r.t).count(p_.event)) pending_.push_back({r.t, r.t + p_.window});
+  if (!was && box_.present(r.t).count(p_.event)) pending_.push_back({r.t, r.t + p_.window});
 }
 
 void PropertyWatch::decision(const TraceRecord& r) {
   if (p_.kind == Kind::Response) {
     close_windows_before(r.t);
     if (breach_) return;
-    respond(r, present(r.t));
+    respond(r, box_.present(r.t));
     bool trigger = p_.event.empty() && r.kind == TraceKind::Deliver && r.connection == p_.other;
     if (trigger) pending_.push_back({r.t, r.t + p_.window});
     return;
@@ -89,7 +75,7 @@ void PropertyWatch::delivery(const TraceRecord& r) {
                                     at(it->second));
     }
   }
-  if (p_.kind == Kind::Absence && who == p_.rule && present(t).count(p_.event))
+  if (p_.kind == Kind::Absence && who == p_.rule && box_.present(t).count(p_.event))
     broken(t, t, "'" + who + "' delivered at " + at(t) + " with " + p_.event + " present");
   if (p_.kind == Kind::Precedence && who == p_.other) armed_ = true;
   if (p_.kind == Kind::Precedence && who == p_.rule) {

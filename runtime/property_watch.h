@@ -1,8 +1,8 @@
-// What a property over time (core/app_model.h, TemporalProperty; docs/language.md#properties-
-// over-time) means for one run, judged on the trace records in the order the runtime made them.
-// `arbc test`'s `expect PROPERTY;` reads it, so a kept counterexample states the property
-// itself; the runtime checks of issue 39 are to read it too. tests/drt/drt/claims.py (temporal)
-// is the differential test's statement of the same meaning.
+// What a property over time (core/app_model.h, TemporalProperty;
+// docs/language.md#properties-over-time) means for one run, judged on the trace records in the
+// order the runtime made them. `arbc test`'s `expect PROPERTY;` reads it, so a kept counterexample
+// states the property itself; the runtime checks of issue 39 are to read it too.
+// tests/drt/drt/claims.py (temporal) is the differential test's statement of the same meaning.
 //
 // Which records count: deliveries into the property's port, decisions (deliveries and drops) of
 // the port's rules, and the port's own container (event records at that port): a property
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "runtime/trace_container.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
@@ -47,7 +48,6 @@ class PropertyWatch {
     double horizon;
   };
 
-  std::set<std::string> present(double t) const;
   void container(const TraceRecord& r);
   void decision(const TraceRecord& r);
   void delivery(const TraceRecord& r);
@@ -57,10 +57,10 @@ class PropertyWatch {
 
   model::TemporalProperty p_;
   std::set<std::string> rules_;
-  std::map<std::pair<std::string, std::string>, double> entries_;  // (event, owner) -> expiry
-  std::map<std::string, double> last_;                             // rule -> its last delivery
-  bool armed_ = false;                                             // precedence
-  std::optional<std::string> last_rule_;                           // stability
+  TraceContainer box_;                    // the port's container
+  std::map<std::string, double> last_;    // rule -> its last delivery
+  bool armed_ = false;                    // precedence
+  std::optional<std::string> last_rule_;  // stability
   std::optional<double> last_switch_;
   std::vector<Trigger> pending_;  // response triggers not yet answered
   std::optional<PropertyBreach> breach_;

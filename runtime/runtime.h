@@ -76,6 +76,9 @@ struct RunOptions {
   // Not null: every trace record is also appended here (for `arbc run --report`); the
   // vector must outlive the run.
   std::vector<TraceRecord>* trace_records = nullptr;
+  // Not empty: every trace record is also given to it, on the thread that makes it (the runtime
+  // checks of `arbc run`, runtime/claim_watch.h).
+  std::function<void(const TraceRecord&)> trace_watch;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks

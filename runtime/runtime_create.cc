@@ -311,6 +311,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
 
 bool Runtime::open_trace(std::string* error) {
   trace_.record_to(options_.trace_records);
+  if (options_.trace_watch) trace_.watch_with(options_.trace_watch);
   if (options_.trace_path.empty()) return true;
   return trace_.open(options_.trace_path, error);
 }

@@ -24,7 +24,11 @@ void Trace::close() {
 
 // Every record goes through here: the line in memory for --report and --diff, and on file.
 void Trace::emit(const TraceLine& line) {
-  if (records_) records_->push_back(to_trace_record(line));
+  if (watch_ || records_) {
+    TraceRecord r = to_trace_record(line);
+    if (watch_) watch_(r);
+    if (records_) records_->push_back(std::move(r));
+  }
   if (!file_) return;
   line_.clear();
   append_trace_line(line_, line);

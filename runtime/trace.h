@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,7 +26,9 @@ class Trace {
   // Also appends every record to *records (nullptr: stop); independent of the file.
   // The caller keeps *records alive while the trace is written.
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }
-  bool enabled() const { return file_ != nullptr || records_ != nullptr; }
+  // Also gives every record to `watch` (the runtime checks, runtime/claim_watch.h); empty: stop.
+  void watch_with(std::function<void(const TraceRecord&)> watch) { watch_ = std::move(watch); }
+  bool enabled() const { return file_ != nullptr || records_ != nullptr || watch_ != nullptr; }
 
   // A module published v on its out-port `port` ("Module.port"); written before the message
   // enters the connections from the port, so a replay of the trace can publish it again.
@@ -50,6 +53,7 @@ class Trace {
   void emit(const TraceLine& line);
   std::FILE* file_ = nullptr;
   std::vector<TraceRecord>* records_ = nullptr;
+  std::function<void(const TraceRecord&)> watch_;
   std::string line_;
 };
 

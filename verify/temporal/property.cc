@@ -32,26 +32,7 @@ std::optional<TemporalResult> check_property(const model::App& app,
 }
 
 std::string property_words(const model::TemporalProperty& p) {
-  switch (p.kind) {
-    case model::TemporalProperty::Kind::Spacing:
-      if (!p.other.empty())
-        return "never " + p.rule + " within " + duration_literal(p.window) + " after " + p.other;
-      return "never two " + p.rule + " within " + duration_literal(p.window);
-    case model::TemporalProperty::Kind::Absence:
-      return "never " + p.rule + " while " + p.event;
-    case model::TemporalProperty::Kind::Precedence:
-      return "only " + p.rule + " after " + p.other;
-    case model::TemporalProperty::Kind::Response: {
-      std::string words = "after " + (p.event.empty() ? p.other : p.event) +
-                          (p.stops ? " stops, " : ", ") + (p.rule.empty() ? p.port : p.rule) +
-                          " within " + duration_literal(p.window);
-      if (p.condition.op != Constraint::Op::True) words += " while " + p.condition.to_string();
-      return words;
-    }
-    case model::TemporalProperty::Kind::Stability:
-      return "stable " + p.port + " for " + duration_literal(p.window);
-  }
-  return p.rule;
+  return model::temporal_property_text(p);
 }
 
 }  // namespace arbc::verify::temporal

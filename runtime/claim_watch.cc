@@ -1,0 +1,143 @@
+#include "runtime/claim_watch.h"
+
+#include "core/constraint.h"
+#include "core/duration_literal.h"
+#include "core/instant.h"
+#include "core/join.h"
+
+namespace arbc {
+
+namespace {
+
+std::string group_text(const model::ExclusiveGroup& g) {
+  return "exclusive { " + join(g.events, ", ") + " }";
+}
+
+std::string assumption_text(const model::Assumption& a) {
+  if (a.absent_for)
+    return "assume not " + a.event + " for " + duration_literal(*a.absent_for) + " after " +
+           a.after;
+  return "assume " + a.event + " only after " + a.after +
+         (a.until.empty() ? "" : " until " + a.until);
+}
+
+std::string state_text(const std::set<std::string>& state) {
+  return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
+}
+
+}  // namespace
+
+ClaimWatch::ClaimWatch(const model::App& app) : app_(app) {
+  for (const model::Connection& c : app.connections)
+    if (c.kind == model::ConnectionKind::Rule) rule_port_[c.name] = c.destination;
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) boxes_[p.port];
+  for (const model::TemporalProperty& p : app.temporal) {
+    properties_.push_back(std::make_unique<PropertyWatch>(p, rules_into(app, p.port)));
+    property_text_.push_back(model::temporal_property_text(p));
+  }
+  for (const model::Assumption& a : app.assumptions) assumed_.push_back({&a, false, std::nullopt});
+  for (const model::SourceRate& r : app.rates) rates_.push_back({&r, 0});
+}
+
+bool ClaimWatch::empty() const { return size() == 0; }
+
+size_t ClaimWatch::size() const {
+  return properties_.size() + assumed_.size() + rates_.size() + app_.exclusive_groups.size() +
+         app_.invariants.size();
+}
+
+void ClaimWatch::violated(const std::string& claim, double t, std::string what, bool assumption) {
+  if (!reported_.insert(claim).second) return;
+  violations_.push_back({t, claim, std::move(what), assumption});
+}
+
+void ClaimWatch::observe(const TraceRecord& r) {
+  rate_gaps(r.t);
+  if (r.kind == TraceKind::Publish) {
+    for (Rate& rate : rates_)
+      if (rate.r->port == r.port) rate.last = r.t;
+  } else if (r.kind == TraceKind::Event) {
+    auto box = boxes_.find(r.port);
+    if (box != boxes_.end()) box->second.apply(r);
+  } else if (r.kind == TraceKind::Deliver || r.kind == TraceKind::Drop) {
+    auto rule = rule_port_.find(r.connection);
+    if (rule != rule_port_.end()) {
+      const std::set<std::string> state = boxes_[rule->second].present(r.t);
+      decision(rule->second, r.t, state);
+      for (Assumed& s : assumed_)
+        if (s.a->port == rule->second) assumption(s, rule->second, r, state);
+    }
+  }
+  for (size_t i = 0; i < properties_.size(); ++i) {
+    properties_[i]->observe(r);
+    if (const auto& b = properties_[i]->breach()) violated(property_text_[i], b->t, b->what, false);
+  }
+}
+
+// The assumptions over the state of the port at a rule's decision: exclusive groups and
+// invariants (the proof reads every state as satisfying them).
+void ClaimWatch::decision(const std::string& port, double t, const std::set<std::string>& state) {
+  for (const model::ExclusiveGroup& g : app_.exclusive_groups) {
+    std::vector<std::string> both;
+    for (const std::string& e : g.events)
+      if (state.count(e)) both.push_back(e);
+    if (both.size() > 1)
+      violated(
+          group_text(g), t,
+          join(both, ", ", " and ") + " present together in " + port + " at " + duration_literal(t),
+          true);
+  }
+  for (const model::Invariant& inv : app_.invariants) {
+    if (!evaluate(inv.formula, state))
+      violated("invariant " + inv.formula.to_string(), t,
+               "false in " + port + " at " + duration_literal(t) +
+                   " (events present: " + state_text(state) + ")",
+               true);
+  }
+}
+
+// `assume E only after A [until U]` and `assume not E for D after A`, at each decision into the
+// port, as docs/language.md#environment-assumptions states them.
+void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceRecord& r,
+                            const std::set<std::string>& state) {
+  const model::Assumption& a = *s.a;
+  bool present = state.count(a.event) > 0;
+  std::string at = " in " + port + " at " + duration_literal(r.t);
+  if (a.absent_for) {
+    if (present && s.last_after && !reached(r.t, *s.last_after + *a.absent_for))
+      violated(assumption_text(a), r.t,
+               a.event + " present" + at + ", " + duration_literal(r.t - *s.last_after) +
+                   " after '" + a.after + "' delivered",
+               true);
+  } else if (present && !s.armed) {
+    violated(assumption_text(a), r.t,
+             a.event + " present" + at + " with no delivery of '" + a.after + "'" +
+                 (a.until.empty() ? "" : " since the last of '" + a.until + "'"),
+             true);
+  }
+  if (r.kind != TraceKind::Deliver) return;
+  if (r.connection == a.after) s.armed = true, s.last_after = r.t;
+  if (!a.until.empty() && r.connection == a.until) s.armed = false;
+}
+
+// `given M.p every D`: nothing from M.p for more than D (from the start) breaks it.
+void ClaimWatch::rate_gaps(double t) {
+  for (Rate& rate : rates_) {
+    double deadline = rate.last + rate.r->period;
+    if (t > deadline + kSameInstant)
+      violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
+               "nothing from " + rate.r->port + " between " + duration_literal(rate.last) +
+                   " and " + duration_literal(t),
+               true);
+  }
+}
+
+void ClaimWatch::finish(double end) {
+  rate_gaps(end);
+  for (size_t i = 0; i < properties_.size(); ++i) {
+    properties_[i]->finish(end);
+    if (const auto& b = properties_[i]->breach()) violated(property_text_[i], b->t, b->what, false);
+  }
+}
+
+}  // namespace arbc

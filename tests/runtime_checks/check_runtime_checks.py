@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""`arbc run` checks what the proof proved and assumed (issue 39, runtime/claim_watch.h): a run
+that breaks a property over time, an `exclusive` group, an environment assumption or a source
+rate ends in failure (exit 3) naming it and the instant; a run that keeps them says so.
+
+usage: check_runtime_checks.py ARBC CASE        (run from the repository root)
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+GRIPS = """app grips "two grips that the proof keeps apart through an exclusive group";
+module Arm { out status: list<string>; }
+module Planner { out left: float; out right: float; }
+module Hand { in cmd: float; }
+events from Arm.status { e_left = "left", e_right = "right" } lifetime 1s;
+exclusive { e_left, e_right };
+arbitrate Hand.cmd {
+  left: from Planner.left when e_left;
+  right: from Planner.right when e_right;
+}
+"""
+
+
+def run(arbc, spec_text, inputs, *options, checks="fail"):
+    with tempfile.TemporaryDirectory() as d:
+        spec = os.path.join(d, "app.spec")
+        with open(spec, "w", encoding="utf-8") as f:
+            f.write(spec_text)
+        path = os.path.join(d, "in.jsonl")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("\n".join(inputs) + "\n")
+        proc = subprocess.run([arbc, "run", spec, "--inputs", path, *options] +
+                              (["--runtime-checks", checks] if checks else []),
+                              capture_output=True, text=True, timeout=120)
+        return proc.returncode, proc.stdout, proc.stderr
+
+
+def expect(cond, what, out="", err=""):
+    if not cond:
+        sys.exit(f"FAIL: {what}\n--- stdout\n{out}\n--- stderr\n{err}")
+
+
+def case_exclusive_group_broken(arbc):
+    # The issue's case: a status listing both flags of an exclusive group made both grips deliver
+    # and the run said success.
+    code, out, err = run(arbc, GRIPS, [
+        '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
+        '{"t": 0.1, "port": "Planner.left", "value": 1.0}',
+        '{"t": 0.1, "port": "Planner.right", "value": 2.0}'])
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("runtime checks: 1 of 1 broken; the proof does not cover the run from 100ms:" in out,
+           "no runtime-check line", out, err)
+    expect("100ms  assumption exclusive { e_left, e_right }: e_left and e_right present together "
+           "in Hand.cmd at 100ms" in out, "the violation is not named with its instant", out, err)
+    expect("result: failure (runtime checks: assumption exclusive { e_left, e_right } at 100ms "
+           "broken)" in out, "the verdict does not name it", out, err)
+
+
+def case_warn_by_default(arbc):
+    # Without --runtime-checks the breach is said and the verdict kept (docs/runtime.md).
+    code, out, err = run(arbc, GRIPS, [
+        '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
+        '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], checks=None)
+    expect(code == 0, f"exit {code}, expected 0", out, err)
+    expect("runtime checks: 1 of 1 broken; the proof does not cover the run from 100ms "
+           "(--runtime-checks fail makes this a failure):" in out, "the breach is not said", out, err)
+    code, out, err = run(arbc, GRIPS, [
+        '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
+        '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], checks="off")
+    expect(code == 0 and "runtime checks" not in out, f"exit {code}; off still checks", out, err)
+
+
+def case_exclusive_group_kept(arbc):
+    code, out, err = run(arbc, GRIPS, [
+        '{"t": 0, "port": "Arm.status", "value": ["left"]}',
+        '{"t": 0.1, "port": "Planner.left", "value": 1.0}',
+        '{"t": 0.1, "port": "Planner.right", "value": 2.0}'])
+    expect(code == 0, f"exit {code}, expected 0", out, err)
+    expect("runtime checks: 1 claims and assumptions of the proof watched, none broken" in out,
+           "no line saying what was watched", out, err)
+
+
+SPACED = """app spaced "a spacing the rule does not enforce";
+module Planner { out cmd: float; }
+module Base { in cmd: float; }
+arbitrate Base.cmd { go: from Planner.cmd; }
+never two go within 1s;
+"""
+
+
+def case_property_broken(arbc):
+    # --no-verify runs an app whose property the proof refutes: the run says where it breaks.
+    code, out, err = run(arbc, SPACED, [
+        '{"t": 0, "port": "Planner.cmd", "value": 1.0}',
+        '{"t": 0.25, "port": "Planner.cmd", "value": 2.0}'], "--no-verify")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("250ms  never two go within 1s: 'go' delivered at 0s and at 250ms" in out,
+           "the property's breach is not named", out, err)
+    code, out, err = run(arbc, SPACED, [
+        '{"t": 0, "port": "Planner.cmd", "value": 1.0}',
+        '{"t": 1.5, "port": "Planner.cmd", "value": 2.0}'], "--no-verify")
+    expect(code == 0 and "none broken" in out, f"exit {code} on a run that keeps it", out, err)
+
+
+RATED = """app rated "a response that relies on its source's rate";
+module Scan { out range: float; }
+module Base { in cmd: float; }
+arbitrate Base.cmd { go: from Scan.range; }
+given Scan.range every 100ms;
+"""
+
+
+def case_rate_broken(arbc):
+    code, out, err = run(arbc, RATED, [
+        '{"t": 0, "port": "Scan.range", "value": 1.0}',
+        '{"t": 0.1, "port": "Scan.range", "value": 1.0}',
+        '{"t": 0.5, "port": "Scan.range", "value": 1.0}'], "--duration", "500ms")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("200ms  assumption given Scan.range every 100ms: nothing from Scan.range between 100ms "
+           "and 500ms" in out, "the rate's gap is not named", out, err)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    globals()["case_" + sys.argv[2]](os.path.abspath(sys.argv[1]))
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
