@@ -1,7 +1,5 @@
 #include "runtime/property_watch.h"
 
-#include <limits>
-
 #include "core/constraint.h"
 #include "core/duration_literal.h"
 #include "core/instant.h"
@@ -12,7 +10,7 @@ namespace {
 
 using Kind = model::TemporalProperty::Kind;
 
-std::string at(double t) { return duration_literal(t); }
+std::string at(Nanos t) { return duration_literal(t); }
 
 }  // namespace
 
@@ -26,16 +24,17 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
 PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules)
     : p_(std::move(p)), rules_(std::move(port_rules)) {}
 
-// The container's entries at t: an entry set with a lifetime is present before its expiry (the
-// `expire` record comes later, when the runtime next reads the container).
-std::set<std::string> PropertyWatch::present(double t) const {
+// The container's entries at t: an entry set with a lifetime is present before its expiry,
+// compared exactly as the runtime does (core/instant.h; the `expire` record comes later, when
+// the runtime next reads the container).
+std::set<std::string> PropertyWatch::present(Nanos t) const {
   std::set<std::string> out;
   for (const auto& [key, expiry] : entries_)
-    if (!reached(t, expiry)) out.insert(key.first);
+    if (t < expiry) out.insert(key.first);
   return out;
 }
 
-void PropertyWatch::broken(double from, double t, std::string what) {
+void PropertyWatch::broken(Nanos from, Nanos t, std::string what) {
   if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
 }
 
@@ -54,13 +53,13 @@ void PropertyWatch::container(const TraceRecord& r) {
   bool was = p_.kind == Kind::Response && !p_.event.empty() && present(r.t).count(p_.event);
   auto key = std::make_pair(r.event, r.owner);
   if (r.op == "set") {
-    entries_[key] = r.expiry >= 0 ? r.expiry : std::numeric_limits<double>::infinity();
+    entries_[key] = r.expiry;  // kNever: no lifetime
   } else if (r.op == "unset") {
     entries_.erase(key);
   }
   if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
   close_windows_before(r.t);
-  if (!was && present(r.t).count(p_.event)) pending_.push_back({r.t, r.t + p_.window});
+  if (!was && present(r.t).count(p_.event)) pending_.push_back({r.t, later(r.t, p_.window)});
 }
 
 void PropertyWatch::decision(const TraceRecord& r) {
@@ -69,7 +68,7 @@ void PropertyWatch::decision(const TraceRecord& r) {
     if (breach_) return;
     respond(r, present(r.t));
     bool trigger = p_.event.empty() && r.kind == TraceKind::Deliver && r.connection == p_.other;
-    if (trigger) pending_.push_back({r.t, r.t + p_.window});
+    if (trigger) pending_.push_back({r.t, later(r.t, p_.window)});
     return;
   }
   if (r.kind == TraceKind::Deliver) delivery(r);
@@ -78,11 +77,11 @@ void PropertyWatch::decision(const TraceRecord& r) {
 // Spacing, absence, precedence and stability read the port's deliveries.
 void PropertyWatch::delivery(const TraceRecord& r) {
   const std::string& who = r.connection;
-  double t = r.t;
+  Nanos t = r.t;
   if (p_.kind == Kind::Spacing && who == p_.rule) {
     const std::string& before = p_.other.empty() ? p_.rule : p_.other;
     auto it = last_.find(before);
-    if (it != last_.end() && !reached(t, it->second + p_.window)) {
+    if (it != last_.end() && t < later(it->second, p_.window)) {
       broken(it->second, t,
              p_.other.empty() ? "'" + who + "' delivered at " + at(it->second) + " and at " + at(t)
                               : "'" + who + "' delivered at " + at(t) + ", '" + before + "' at " +
@@ -100,7 +99,7 @@ void PropertyWatch::delivery(const TraceRecord& r) {
     armed_ = false;
   }
   if (p_.kind == Kind::Stability && last_rule_ && who != *last_rule_) {
-    if (last_switch_ && !reached(t, *last_switch_ + p_.window))
+    if (last_switch_ && t < later(*last_switch_, p_.window))
       broken(*last_switch_, t,
              "the deliverer switched at " + at(*last_switch_) + " and at " + at(t));
     last_switch_ = t;
@@ -124,7 +123,7 @@ void PropertyWatch::respond(const TraceRecord& r, const std::set<std::string>& s
   if (deliver || !evaluate(p_.condition, state)) pending_.clear();
 }
 
-void PropertyWatch::close_windows_before(double t) {
+void PropertyWatch::close_windows_before(Nanos t) {
   for (const Trigger& g : pending_) {
     if (t > g.horizon) {
       broken(g.t, g.horizon,
@@ -135,12 +134,12 @@ void PropertyWatch::close_windows_before(double t) {
   }
 }
 
-void PropertyWatch::finish(double end) {
+void PropertyWatch::finish(Nanos end) {
   if (breach_ || p_.kind != Kind::Response) return;
   // A window that ends after the run is not judged: the answer might still have come.
   for (const Trigger& g : pending_) {
     if (g.horizon <= end) {
-      close_windows_before(std::numeric_limits<double>::infinity());
+      close_windows_before(kNever);
       return;
     }
   }

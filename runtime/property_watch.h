@@ -17,13 +17,14 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/instant.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
 
 struct PropertyBreach {
-  double from = 0;   // the first instant the breach involves (an earlier delivery, a trigger)
-  double t = 0;      // the instant the run broke the property
+  Nanos from{0};     // the first instant the breach involves (an earlier delivery, a trigger)
+  Nanos t{0};        // the instant the run broke the property
   std::string what;  // what happened, in words ("'ask' delivered at 0s and at 250ms")
 };
 
@@ -37,31 +38,31 @@ class PropertyWatch {
   void observe(const TraceRecord& r);
   // The run was observed up to `end`: a response trigger whose window closed by then and got no
   // answer breaks the property; one whose window ends later is not judged.
-  void finish(double end);
+  void finish(Nanos end);
 
   const std::optional<PropertyBreach>& breach() const { return breach_; }
 
  private:
   struct Trigger {
-    double t;
-    double horizon;
+    Nanos t;
+    Nanos horizon;
   };
 
-  std::set<std::string> present(double t) const;
+  std::set<std::string> present(Nanos t) const;
   void container(const TraceRecord& r);
   void decision(const TraceRecord& r);
   void delivery(const TraceRecord& r);
   void respond(const TraceRecord& r, const std::set<std::string>& state);
-  void close_windows_before(double t);
-  void broken(double from, double t, std::string what);
+  void close_windows_before(Nanos t);
+  void broken(Nanos from, Nanos t, std::string what);
 
   model::TemporalProperty p_;
   std::set<std::string> rules_;
-  std::map<std::pair<std::string, std::string>, double> entries_;  // (event, owner) -> expiry
-  std::map<std::string, double> last_;                             // rule -> its last delivery
-  bool armed_ = false;                                             // precedence
-  std::optional<std::string> last_rule_;                           // stability
-  std::optional<double> last_switch_;
+  std::map<std::pair<std::string, std::string>, Nanos> entries_;  // (event, owner) -> expiry
+  std::map<std::string, Nanos> last_;                             // rule -> its last delivery
+  bool armed_ = false;                                            // precedence
+  std::optional<std::string> last_rule_;                          // stability
+  std::optional<Nanos> last_switch_;
   std::vector<Trigger> pending_;  // response triggers not yet answered
   std::optional<PropertyBreach> breach_;
 };

@@ -51,6 +51,9 @@ golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 golden missing.txt repo 2 tests/verify/no_such_app.json
 golden bad_format.txt specs 2 --format xml tests/verify/table_clean.app.json
+# A duration between two nanoseconds (ten digits after the point) is refused at its place: the
+# runtime counts whole nanoseconds and the proof reads the same integer (docs/app-json.md).
+golden ten_digit_duration.txt repo 2 tests/verify/ten_digit_duration.app.json
 # Specs go through the compiler (front end + lowering).
 golden spec_proved.txt repo 0 specs/table_clean.spec specs/search_and_track.spec
 golden spec_refuted.txt repo 1 tests/verify/table_clean_take_mutant.spec

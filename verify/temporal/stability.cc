@@ -31,7 +31,7 @@ std::vector<z3::expr> switches(const Unrolling& u, const std::vector<int>& rules
 // The last of `n` steps is a switch less than `window` after an earlier switch, under the
 // rates up to that step.
 z3::expr violation(const Unrolling& u, const std::vector<int>& rules, const Rates& rates, int n,
-                   double window, z3::context& ctx) {
+                   Nanos window, z3::context& ctx) {
   z3::expr w = seconds(ctx, window);
   std::vector<z3::expr> sw = switches(u, rules, n, ctx);
   z3::expr_vector earlier(ctx);

@@ -5,7 +5,6 @@
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
-#include "verify/temporal/decimal_text.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -36,7 +35,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
   e.event = event;
   e.owner = owner;
   const model::Event* declared = app.find_event(event);
-  std::optional<double> lifetime = declared ? declared->lifetime : std::nullopt;
+  std::optional<Nanos> lifetime = declared ? declared->lifetime : std::nullopt;
   if (event == c.activity_event) {
     e.activity = true;
     e.lifetime = lifetime;  // the rule's hold
@@ -61,7 +60,9 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 
 }  // namespace
 
-z3::expr seconds(z3::context& ctx, double v) { return ctx.real_val(shortest_decimal(v).c_str()); }
+z3::expr seconds(z3::context& ctx, Nanos d) {
+  return ctx.real_val(std::to_string(d.count()).c_str()) / ctx.real_val(1000000000);
+}
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err) {
@@ -257,15 +258,20 @@ bool sets_into(const PortShape& shape, const std::string& event) {
 
 namespace {
 
-// A real in `m` as a double (a trailing '?' marks a rounded decimal, which strtod ignores).
-double real_value(const z3::model& m, const z3::expr& e) {
-  std::string text = m.eval(e, true).get_decimal_string(9);
-  return std::strtod(text.c_str(), nullptr);
+// A time in `m` to the nearest nanosecond (halves up), kNever beyond 64 bits (a free expiry
+// the solver put far away).
+Nanos real_value(const z3::model& m, const z3::expr& e) {
+  z3::context& ctx = e.ctx();
+  z3::expr scaled = e * ctx.real_val(1000000000) + ctx.real_val(1, 2);
+  z3::expr ns = m.eval(z3::expr(ctx, Z3_mk_real2int(ctx, scaled)), true);  // the floor
+  int64_t n = 0;
+  if (ns.is_numeral_i64(n)) return Nanos(n);
+  return ns.is_numeral() && ns.as_double() < 0 ? -kNever : kNever;
 }
 
 }  // namespace
 
-double Unrolling::time_value(const z3::model& m, int k) const { return real_value(m, t_[k]); }
+Nanos Unrolling::time_value(const z3::model& m, int k) const { return real_value(m, t_[k]); }
 
 int Unrolling::connection(const z3::model& m, int k) const {
   return m.eval(run_[k], true).get_numeral_int();

@@ -21,10 +21,10 @@ namespace arbc::verify::temporal {
 // One entry of the container: `event` as set by connection `owner`.
 struct Entry {
   std::string event;
-  int owner = 0;                   // index into PortSteps::connections
-  bool activity = false;           // the owner's `by priority` activity event
-  std::optional<double> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
-  bool free_lifetime = false;      // `set e for D` in rule code: D is not in the model
+  int owner = 0;                  // index into PortSteps::connections
+  bool activity = false;          // the owner's `by priority` activity event
+  std::optional<Nanos> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
+  bool free_lifetime = false;     // `set e for D` in rule code: D is not in the model
   // A feed's derived event whose predicate is the constant true or false (PortShape::faithful).
   std::optional<bool> constant_predicate;
 };
@@ -61,13 +61,12 @@ bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* 
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
-// `v` seconds (a lifetime, hold, throttle, window or rate period) as an exact Z3 real: the
-// shortest decimal that reads back as the same double, the duration the spec wrote (0.2, not
-// 0.20000000000000001). Every duration of the model goes through here, so that a hold of 0.2 s
-// set at 0 lapses exactly when a message at 0.2 s decides, as in the runtime, which takes
-// times that close as one instant (core/instant.h); five rate periods of 0.20000000000000001
-// would also stretch past a 1 s hold.
-z3::expr seconds(z3::context& ctx, double v);
+// `d` (a lifetime, hold, throttle, window or rate period) in seconds as an exact Z3 real, its
+// nanoseconds over 1e9: the integer the runtime counts with (core/instant.h). Every duration of
+// the model goes through here, so that a hold of 0.2 s set at 0 lapses exactly when a message
+// at 0.2 s decides, as in the runtime; an earlier reading of the double's 17 digits
+// (0.20000000000000001) kept it a hair longer.
+z3::expr seconds(z3::context& ctx, Nanos d);
 
 // Whether some connection into the port can set `event` (else it is never present there).
 bool sets_into(const PortShape& shape, const std::string& event);
@@ -111,13 +110,15 @@ class Unrolling {
   TraceStep trace_step(const z3::model& m, int k) const;
 
   // Values in model `m`: step k's time, the index of its connection, whether it accepted.
-  double time_value(const z3::model& m, int k) const;
+  // Times are to the nearest nanosecond: exact on the runtime's grid, which
+  // verify/temporal/bmc.cc asks the solver for.
+  Nanos time_value(const z3::model& m, int k) const;
   int connection(const z3::model& m, int k) const;
   bool accepted(const z3::model& m, int k) const;
   // Entry q in state s (0: before step 1, k+1: after step k) in model `m`.
   struct EntryValue {
     bool has = false, forever = false;
-    double expiry = 0;
+    Nanos expiry{0};
   };
   EntryValue entry(const z3::model& m, int state, size_t q) const;
   // Whether step k set or removed entry q.
