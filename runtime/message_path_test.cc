@@ -280,7 +280,9 @@ TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
 // Trig k runs at k * interval from when the interval was set, not at the previous trig plus the
 // interval: 20,000 additions of 1 ms drift off the instants the spec's `every 1ms` names, and an
 // event a trig sets then outlives the instant its lifetime ends at (tests/drt: the random
-// differential test saw it 1.2e-12 s late after 608 trigs of 200 ms).
+// differential test saw it 1.2e-12 s late after 608 trigs of 200 ms). PortMonitor.now() is the
+// double nearest the instant's nanoseconds over 1e9, which for k ms is k / 1000 (k * 0.001 is
+// not always that double).
 TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
   TestApp t;
   t.module("Src", {"out x: int"});
@@ -289,11 +291,11 @@ TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
             "k, late = 0, 0\n"
             "PortMonitor.create = function(o) PortMonitor.setTrigInterval(0.001) return true end\n"
             "PortMonitor.trig = function() k = k + 1\n"
-            "  if PortMonitor.now() ~= k * 0.001 then late = late + 1 end end\n"
+            "  if PortMonitor.now() ~= k / 1000 then late = late + 1 end end\n"
             "PortMonitor.accept = function(m) return k > 19000 and late == 0 end\n");
   auto rt = t.start();
   TestApp::publish_at(*rt, 19.9995, "Src", "x", Value(0));
-  rt->advance(20);
+  rt->advance(20s);
   auto s = TestApp::stats_of(rt->stats(), "c");
   EXPECT_EQ(s.errors, 0u) << (t.reports.empty() ? "" : t.reports[0]);
   EXPECT_EQ(s.delivered, 1u);

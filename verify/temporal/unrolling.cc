@@ -16,11 +16,11 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 // The lifetimes the `set event` statements of a body give: `for D`, or the event's declared
 // lifetime (none: until unset). False when a statement of `event` is not in `body`'s reach
 // (never: the caller checks); `out` collects one entry per distinct lifetime.
-void set_lifetimes(const model::Body& body, const std::string& event,
-                   std::optional<double> declared, std::vector<std::optional<double>>& out) {
+void set_lifetimes(const model::Body& body, const std::string& event, std::optional<Nanos> declared,
+                   std::vector<std::optional<Nanos>>& out) {
   for (const model::BodyStmt& s : body) {
     if (s.kind == model::BodyStmt::Kind::Set && s.name == event) {
-      std::optional<double> life = s.lifetime ? s.lifetime : declared;
+      std::optional<Nanos> life = s.lifetime ? s.lifetime : declared;
       if (std::find(out.begin(), out.end(), life) == out.end()) out.push_back(life);
     }
     set_lifetimes(s.then_body, event, declared, out);
@@ -47,7 +47,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
     // `set e [for D]` in the rule's body: the lifetime every such statement gives, as the
     // runtime applies it. Without the body (a script), or with statements that differ, any
     // lifetime: more behaviours, and a counterexample that needs one is replayed to be sure.
-    std::vector<std::optional<double>> lifetimes;
+    std::vector<std::optional<Nanos>> lifetimes;
     if (c.body && !c.opaque) set_lifetimes(*c.body, event, lifetime, lifetimes);
     if (lifetimes.size() == 1) {
       e.lifetime = lifetimes[0];
