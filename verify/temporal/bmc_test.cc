@@ -1,7 +1,7 @@
 // The bounded search's traces (verify/temporal/bmc.h): a violation is reported with its steps
-// on the runtime's whole nanoseconds, the instants a replay can have (core/instant.h), and on
-// whole microseconds whenever one is there, which reads better; a violation that no whole
-// nanosecond has is none the runtime can produce.
+// on the runtime's whole nanoseconds, the instants a replay can have (core/instant.h; the
+// unrolling counts in them), and on whole microseconds whenever one is there, which reads
+// better; a violation that no whole nanosecond has is none the runtime can produce.
 #include "verify/temporal/bmc.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@ using namespace std::chrono_literals;
 using Outcome = TemporalResult::Outcome;
 
 // A "violation" at the last of up to `bound` messages into HeadControl.gaze whose time lies in
-// [low, high).
+// [low, high), nanoseconds as exact rationals ("1000000000/3": a third of a second).
 TemporalResult violated_between(const std::string& low, const std::string& high, int bound = 1) {
   model::App app = testing::table_clean_model();
   std::string err;
@@ -32,7 +32,8 @@ TemporalResult violated_between(const std::string& low, const std::string& high,
                             false,
                             {}};
   ViolationAt at = [&](const Unrolling& u, int n) {
-    return u.time(n - 1) >= ctx.real_val(low.c_str()) && u.time(n - 1) < ctx.real_val(high.c_str());
+    z3::expr t = z3::to_real(u.time(n - 1));
+    return t >= ctx.real_val(low.c_str()) && t < ctx.real_val(high.c_str());
   };
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   return bounded_search(*shape, p, 1, bound, at, ctx, nullptr, deadline);
@@ -43,7 +44,7 @@ bool on_microseconds(Nanos t) { return t.count() % 1000 == 0; }
 TEST(BoundedSearch, AViolationIsReportedOnWholeMicrosecondsWhenOneIsThere) {
   // From a third of a second (where the solver's first answer lies) to a millisecond later:
   // both ends off the grid, points on it inside.
-  TemporalResult r = violated_between("1/3", "1001/3000");
+  TemporalResult r = violated_between("1000000000/3", "1001000000/3");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 1u);
   EXPECT_TRUE(on_microseconds(r.trace[0].time)) << r.trace[0].time.count();
@@ -54,7 +55,7 @@ TEST(BoundedSearch, AViolationIsReportedOnWholeMicrosecondsWhenOneIsThere) {
 TEST(BoundedSearch, OnWholeNanosecondsWhenNoMicrosecondViolates) {
   // A tenth of a microsecond wide, between two microseconds: violated at a whole nanosecond in
   // it, the runtime's instants (core/instant.h), so the tests file can write it exactly.
-  TemporalResult r = violated_between("3333333/10000000", "3333334/10000000");
+  TemporalResult r = violated_between("333333300", "333333400");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 1u);
   EXPECT_FALSE(on_microseconds(r.trace[0].time)) << r.trace[0].time.count();
@@ -63,10 +64,10 @@ TEST(BoundedSearch, OnWholeNanosecondsWhenNoMicrosecondViolates) {
 }
 
 TEST(BoundedSearch, AViolationBetweenTwoNanosecondsIsNoneTheRuntimeHas) {
-  // A tenth of a nanosecond wide: real times violate, no instant of the runtime does. Not
-  // "violated" (its replay could never show it); the search goes on over whole nanoseconds.
+  // A tenth of a nanosecond wide: real times would violate, no instant of the runtime does.
+  // Not "violated" (its replay could never show it).
   for (int bound : {1, 3}) {
-    TemporalResult r = violated_between("3333333331/10000000000", "3333333332/10000000000", bound);
+    TemporalResult r = violated_between("3333333331/10", "3333333332/10", bound);
     EXPECT_EQ(r.outcome, Outcome::HoldsToBound) << "bound " << bound;
     EXPECT_EQ(r.bound, bound);
     EXPECT_TRUE(r.trace.empty());

@@ -41,7 +41,7 @@ Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : 
     if (accepts_every_message(*shape.connections[c])) always_accept_.push_back(static_cast<int>(c));
     const model::SourceRate* r = app.find_rate(shape.connections[c]->source);
     if (!r) continue;
-    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period), r->period});
+    rated_.push_back({static_cast<int>(c), nanos_term(ctx_, r->period), r->period});
     bool listed = false;
     for (const model::SourceRate& u : used_) listed |= u.port == r->port;
     if (!listed) used_.push_back(*r);

@@ -23,7 +23,7 @@ std::string throttle_proof(const model::Connection& c, Nanos window) {
 // The last of `n` steps is a delivery of rule r less than `window` after an earlier delivery
 // of rule `first` (r itself for `never two r within W`).
 z3::expr violation(const Unrolling& u, int first, int r, int n, Nanos window, z3::context& ctx) {
-  z3::expr w = seconds(ctx, window);
+  z3::expr w = nanos_term(ctx, window);
   z3::expr_vector earlier(ctx);
   for (int i = 0; i < n - 1; ++i)
     earlier.push_back(u.delivers(first, i) && u.time(n - 1) - u.time(i) < w);

@@ -1,4 +1,4 @@
-// N steps of one arbitrated port over real-valued time, as Z3 terms: the encoding of
+// N steps of one arbitrated port over the runtime's instants, as Z3 terms: the encoding of
 // docs/design.md#properties-over-time. Step k is one message that one connection into the port
 // (a rule or a feed) handles at time t_k; the container holds one entry per (event, owner) with
 // its expiry; message data is abstract, so which connection runs, whether its `accept` accepts,
@@ -61,12 +61,16 @@ bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* 
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
-// `d` (a lifetime, hold, throttle, window or rate period) in seconds as an exact Z3 real, its
-// nanoseconds over 1e9: the integer the runtime counts with (core/instant.h). Every duration of
-// the model goes through here, so that a hold of 0.2 s set at 0 lapses exactly when a message
-// at 0.2 s decides, as in the runtime; an earlier reading of the double's 17 digits
-// (0.20000000000000001) kept it a hair longer.
-z3::expr seconds(z3::context& ctx, Nanos d);
+// `d` (a lifetime, hold, throttle, window or rate period) as a Z3 integer of nanoseconds, the
+// unit every time of the unrolling is counted in: the runtime's instants are whole nanoseconds
+// compared exactly (core/instant.h), so a model over integers is a run the runtime can have,
+// and a proof over them covers every pair of its instants (a hold of 1 s lapses at exactly
+// 1000000000, not a hair later). Times were reals once: a violation strictly between two
+// nanoseconds then needed a second, mixed integer-real query to move onto the runtime's grid,
+// which Z3 answered slowly or not at all with durations like 0.999999999 s (--temporal-bound 6
+// on tests/verify/temporal_ns_slow.spec ran into --timeout). Every constraint on times is a
+// difference of two times against such a constant: integer difference logic.
+z3::expr nanos_term(z3::context& ctx, Nanos d);
 
 // Whether some connection into the port can set `event` (else it is never present there).
 bool sets_into(const PortShape& shape, const std::string& event);
@@ -109,9 +113,8 @@ class Unrolling {
   // Step k's trace line in model `m`.
   TraceStep trace_step(const z3::model& m, int k) const;
 
-  // Values in model `m`: step k's time, the index of its connection, whether it accepted.
-  // Times are to the nearest nanosecond: exact on the runtime's grid, which
-  // verify/temporal/bmc.cc asks the solver for.
+  // Values in model `m`: step k's time (kNever beyond 64 bits), the index of its connection,
+  // whether it accepted.
   Nanos time_value(const z3::model& m, int k) const;
   int connection(const z3::model& m, int k) const;
   bool accepted(const z3::model& m, int k) const;
