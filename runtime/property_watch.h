@@ -1,5 +1,6 @@
-// What a property over time (core/app_model.h, TemporalProperty; docs/language.md#properties-
-// over-time) means for one run, judged on the trace records in the order the runtime made them.
+// What a property over time (core/app_model.h, TemporalProperty;
+// docs/language.md#properties-over-time) means for one run, judged on the trace records in the
+// order the runtime made them.
 // `arbc test`'s `expect PROPERTY;` reads it, so a kept counterexample states the property
 // itself; the runtime checks of issue 39 are to read it too. tests/drt/drt/claims.py (temporal)
 // is the differential test's statement of the same meaning.
