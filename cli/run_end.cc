@@ -26,7 +26,7 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
   h.seed = end.options.seed;
   h.realtime = end.options.realtime;
   h.requested = end.options.duration;
-  h.end = end.runtime.now();
+  h.end = seconds_of(end.runtime.now());
   h.stop_reason = end.runtime.stop_reason();
   h.success = success;
   h.verdict = verdict;
@@ -66,7 +66,8 @@ std::string judge_without_environment(const Runtime& runtime, bool* success) {
 }
 
 void print_run_line(const RunEnd& end, const std::string& stop_reason) {
-  double run = end.runtime.now();  // in the unit of the run's length, as the report writes it
+  double run =
+      seconds_of(end.runtime.now());  // in the unit of the run's length, as the report writes it
   std::printf(
       "app %s, scenario %s, seed %llu, %s time %s%s%s\n", end.app.name.c_str(),
       end.runtime.scenario().c_str(), static_cast<unsigned long long>(end.options.seed),

@@ -8,6 +8,7 @@
 
 #include "core/body_text.h"
 #include "core/body_types.h"
+#include "core/decimal_text.h"
 #include "core/instant.h"
 #include "core/json_diagnostic.h"
 
@@ -53,21 +54,38 @@ bool opt_string(const Json& j, const std::string& path, const char* key, std::st
   return !j.contains(key) || get_string(j, path, key, out, err);
 }
 
-bool opt_number(const Json& j, const std::string& path, const char* key, std::optional<double>* out,
-                std::string* err) {
+// A lifetime, hold, throttle, period or window in seconds (docs/app-json.md#durations): a
+// positive whole number of nanoseconds, at most 100 years (core/instant.h). The runtime counts
+// time in nanoseconds and the proof reads the same integer, so a hand-edited 0.1234567891 (or
+// 0, or 1e-10) is refused rather than rounded into something neither was told.
+bool opt_duration(const Json& j, const std::string& path, const char* key,
+                  std::optional<Nanos>* out, std::string* err) {
   if (!j.contains(key) || j[key].is_null()) return true;
-  if (!j[key].is_number()) return fail(path + "." + key + ": expected a number or null", err);
-  *out = j[key].get<double>();
+  const Json& v = j[key];
+  std::string where = path + "." + key;
+  if (!v.is_number()) return fail(where + ": expected a number of seconds or null", err);
+  double s = v.get<double>();
+  if (!(s > 0)) return fail(where + ": expected a positive number of seconds", err);
+  if (s > seconds_of(kLongestDuration))
+    return fail(
+        where + ": expected at most " + decimal_seconds(kLongestDuration) + " seconds (100 years)",
+        err);
+  *out = whole_nanos(s);
+  if (!*out)
+    return fail(where + ": " + shortest_decimal(s) +
+                    " seconds is not a whole number of nanoseconds: write at most 9 digits "
+                    "after the point",
+                err);
   return true;
 }
 
-// A lifetime, hold, throttle or period: absent, or at least core/instant.h's kShortestDuration
-// (a hand-edited 0 or 1e-10 would run other than the proof reads it).
-bool opt_duration(const Json& j, const std::string& path, const char* key,
-                  std::optional<double>* out, std::string* err) {
-  if (!opt_number(j, path, key, out, err)) return false;
-  if (*out && !(**out >= kShortestDuration && std::isfinite(**out)))
-    return fail(path + "." + key + ": expected a number of seconds of at least 0.000001", err);
+// The same for a duration that must be there.
+bool get_duration(const Json& j, const std::string& path, const char* key, Nanos* out,
+                  std::string* err) {
+  std::optional<Nanos> d;
+  if (!opt_duration(j, path, key, &d, err)) return false;
+  if (!d) return fail(path + "." + key + ": expected a positive number of seconds", err);
+  *out = *d;
   return true;
 }
 
@@ -332,12 +350,7 @@ bool read_response(const Json& j, const std::string& p, TemporalProperty* t, std
 // `{"port": "M.p", "every": seconds}`: a source's rate.
 bool read_rate(const Json& j, const std::string& p, SourceRate* r, std::string* err) {
   if (!get_string(j, p, "port", &r->port, err)) return false;
-  std::optional<double> every;
-  if (!opt_number(j, p, "every", &every, err)) return false;
-  if (!every || !(*every >= kShortestDuration))
-    return fail(p + ".every: expected a positive number of seconds, at least 0.000001", err);
-  r->period = *every;
-  return read_location(j, p, &r->loc, err);
+  return get_duration(j, p, "every", &r->period, err) && read_location(j, p, &r->loc, err);
 }
 
 // `{"kind": "spacing", "port": .., "rule": .., "window": seconds, "after": OTHER}` ("after"
@@ -359,11 +372,7 @@ bool read_temporal(const Json& j, const std::string& p, TemporalProperty* t, std
   if (t->kind != K::Stability && t->kind != K::Response && !get_string(j, p, "rule", &t->rule, err))
     return false;
   if (t->kind == K::Spacing || t->kind == K::Response || t->kind == K::Stability) {
-    std::optional<double> window;
-    if (!opt_number(j, p, "window", &window, err)) return false;
-    if (!window || !(*window >= kShortestDuration))
-      return fail(p + ".window: expected a positive number of seconds, at least 0.000001", err);
-    t->window = *window;
+    if (!get_duration(j, p, "window", &t->window, err)) return false;
   }
   if (t->kind == K::Spacing && !opt_string(j, p, "after", &t->other, err)) return false;
   if (t->kind == K::Absence && !get_string(j, p, "event", &t->event, err)) return false;
@@ -380,9 +389,7 @@ bool read_assumption(const Json& j, const std::string& p, Assumption* a, std::st
       !get_string(j, p, "after", &a->after, err))
     return false;
   if (!opt_string(j, p, "until", &a->until, err)) return false;
-  if (!opt_number(j, p, "absent_for", &a->absent_for, err)) return false;
-  if (a->absent_for && !(*a->absent_for >= kShortestDuration))
-    return fail(p + ".absent_for: expected a positive number of seconds, at least 0.000001", err);
+  if (!opt_duration(j, p, "absent_for", &a->absent_for, err)) return false;
   if (a->absent_for && !a->until.empty())
     return fail(p + ": an assumption has \"until\" or \"absent_for\", not both", err);
   return read_location(j, p, &a->loc, err);

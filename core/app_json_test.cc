@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 namespace arbc::model {
+
+using namespace std::chrono_literals;
 namespace {
 
 App small_app() {
@@ -19,14 +21,14 @@ App small_app() {
            {"demo.spec", 3, 1}};
   Module h{"H", "", {{"gaze", Direction::In, parse_type("vec3"), {}}}, {}};
   app.modules = {a, h};
-  app.events.push_back({"e_face", 1.0, "", {"demo.spec", 5, 7}});
+  app.events.push_back({"e_face", 1s, "", {"demo.spec", 5, 7}});
   Connection c;
   c.name = "track";
   c.source = "A.out";
   c.destination = "H.gaze";
   c.constraint = parse_constraint("not e_face or e_face_2").constraint;
   c.must_set = {"e_face"};
-  c.trig_interval = 0.5;
+  c.trig_interval = 500ms;
   c.monitor = "monitors/H.gaze__track.lua";
   c.monitor_sha256 = std::string(64, 'a');
   c.sets = {"act_track", "e_face"};
@@ -58,7 +60,7 @@ TEST(AppJsonTest, RoundTripsByteForByte) {
   EXPECT_TRUE(err.empty());
   EXPECT_EQ(to_app_json(*app), text);
   EXPECT_EQ(app->connections[0].constraint.to_string(), "not e_face or e_face_2");
-  EXPECT_EQ(*app->connections[0].trig_interval, 0.5);
+  EXPECT_EQ(*app->connections[0].trig_interval, 500ms);
   EXPECT_EQ(app->modules[0].loc.line, 3);
   EXPECT_EQ(app->connections[0].source_map, (std::vector<SourceMapEntry>{{12, 7}, {13, 8}}));
   EXPECT_EQ(app->connections[0].activity_event, "act_track");
@@ -73,17 +75,17 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   app.temporal.push_back({TemporalProperty::Kind::Spacing,
                           "H.gaze",
                           "track",
-                          1.5,
+                          1500ms,
                           {"demo.spec", 11, 1},
                           "",
                           "",
                           false,
                           {}});
   TemporalProperty absence{
-      TemporalProperty::Kind::Absence, "H.gaze", "search", 0, {}, "", "", false, {}};
+      TemporalProperty::Kind::Absence, "H.gaze", "search", 0s, {}, "", "", false, {}};
   absence.event = "act_track";
   TemporalProperty precedence{
-      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0, {}, "", "", false, {}};
+      TemporalProperty::Kind::Precedence, "H.gaze", "search", 0s, {}, "", "", false, {}};
   precedence.other = "track";
   app.temporal.push_back(absence);
   app.temporal.push_back(precedence);
@@ -93,7 +95,7 @@ TEST(AppJsonTest, TemporalPropertiesRoundTripAndAreOmittedWhenNone) {
   ASSERT_TRUE(back) << err;
   ASSERT_EQ(back->temporal.size(), 3u);
   EXPECT_EQ(back->temporal[0].rule, "track");
-  EXPECT_EQ(back->temporal[0].window, 1.5);
+  EXPECT_EQ(back->temporal[0].window, 1500ms);
   EXPECT_EQ(back->temporal[1].kind, TemporalProperty::Kind::Absence);
   EXPECT_EQ(back->temporal[1].event, "act_track");
   EXPECT_EQ(back->temporal[2].kind, TemporalProperty::Kind::Precedence);
@@ -118,7 +120,7 @@ TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
       {"e_face", "H.gaze", "track", "search", {"demo.spec", 12, 1}, std::nullopt});
   app.assumptions.push_back(
       {"e_face_2", "H.gaze", "track", "", {"demo.spec", 13, 1}, std::nullopt});
-  app.assumptions.push_back({"e_idle", "H.gaze", "track", "", {"demo.spec", 14, 1}, 1.5});
+  app.assumptions.push_back({"e_idle", "H.gaze", "track", "", {"demo.spec", 14, 1}, 1500ms});
   std::string text = to_app_json(app);
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
@@ -130,7 +132,7 @@ TEST(AppJsonTest, AssumptionsRoundTripAndAreOmittedWhenNone) {
   EXPECT_FALSE(back->assumptions[0].absent_for);
   EXPECT_EQ(back->assumptions[1].until, "");
   EXPECT_EQ(back->assumptions[1].loc.line, 13);
-  EXPECT_EQ(back->assumptions[2].absent_for, 1.5);
+  EXPECT_EQ(back->assumptions[2].absent_for, 1500ms);
   EXPECT_EQ(to_app_json(*back), text);
   std::string bad = text;
   bad.replace(bad.find("\"after\""), 7, "\"later\"");
@@ -153,12 +155,12 @@ TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
   App app = small_app();
   EXPECT_EQ(to_app_json(app).find("\"rates\""), std::string::npos);
   TemporalProperty response{
-      TemporalProperty::Kind::Response, "H.gaze", "search", 1.2, {}, "", "track", true, {}};
+      TemporalProperty::Kind::Response, "H.gaze", "search", 1200ms, {}, "", "track", true, {}};
   response.condition = parse_constraint("e_idle and not e_busy").constraint;
   TemporalProperty stability{
-      TemporalProperty::Kind::Stability, "H.gaze", "", 0.5, {}, "", "", false, {}};
+      TemporalProperty::Kind::Stability, "H.gaze", "", 500ms, {}, "", "", false, {}};
   app.temporal = {response, stability};
-  app.rates.push_back({"L.gaze", 0.2, {"demo.spec", 4, 1}});
+  app.rates.push_back({"L.gaze", 200ms, {"demo.spec", 4, 1}});
   std::string text = to_app_json(app);
   std::string err;
   std::optional<App> back = from_app_json(text, &err);
@@ -167,14 +169,14 @@ TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
   EXPECT_EQ(back->temporal[0].kind, TemporalProperty::Kind::Response);
   EXPECT_EQ(back->temporal[0].other, "track");
   EXPECT_TRUE(back->temporal[0].stops);
-  EXPECT_EQ(back->temporal[0].window, 1.2);
+  EXPECT_EQ(back->temporal[0].window, 1200ms);
   EXPECT_EQ(back->temporal[0].condition.to_string(), "e_idle and not e_busy");
   EXPECT_EQ(back->temporal[1].kind, TemporalProperty::Kind::Stability);
-  EXPECT_EQ(back->temporal[1].window, 0.5);
+  EXPECT_EQ(back->temporal[1].window, 500ms);
   EXPECT_TRUE(back->temporal[1].rule.empty());
   ASSERT_EQ(back->rates.size(), 1u);
   EXPECT_EQ(back->rates[0].port, "L.gaze");
-  EXPECT_EQ(back->rates[0].period, 0.2);
+  EXPECT_EQ(back->rates[0].period, 200ms);
   EXPECT_EQ(back->rates[0].loc.line, 4);
   ASSERT_NE(back->find_rate("L.gaze"), nullptr);
   EXPECT_EQ(back->find_rate("H.gaze"), nullptr);
@@ -191,7 +193,7 @@ TEST(AppJsonTest, ResponseStabilityAndRatesRoundTrip) {
 TEST(AppJsonTest, AResponseToAnEventAnsweredByThePortRoundTrips) {
   App app = small_app();
   TemporalProperty response{
-      TemporalProperty::Kind::Response, "H.gaze", "", 0.1, {}, "e_lost", "", false, {}};
+      TemporalProperty::Kind::Response, "H.gaze", "", 100ms, {}, "e_lost", "", false, {}};
   app.temporal = {response};
   std::string text = to_app_json(app);
   std::string err;
@@ -275,12 +277,23 @@ TEST(AppJsonTest, EverySectionNamesThePathOfItsBadValue) {
   EXPECT_EQ(with("/modules/0/ports/0/direction", "up"),
             "modules[0].ports[0].direction: expected \"in\" or \"out\"");
   EXPECT_EQ(with("/modules/0/loc/line", "3"), "modules[0].loc.line: expected an integer");
-  EXPECT_EQ(with("/events/0/lifetime", true), "events[0].lifetime: expected a number or null");
-  // A lifetime the runtime takes as over the instant it is set (core/instant.h).
+  EXPECT_EQ(with("/events/0/lifetime", true),
+            "events[0].lifetime: expected a number of seconds or null");
+  // Not a whole number of nanoseconds, the runtime's and the proof's unit (core/instant.h), or
+  // no time at all, or longer than 100 years: refused, never rounded.
   EXPECT_EQ(with("/events/0/lifetime", 1e-10),
-            "events[0].lifetime: expected a number of seconds of at least 0.000001");
+            "events[0].lifetime: 0.0000000001 seconds is not a whole number of nanoseconds: write "
+            "at most 9 digits after the point");
+  EXPECT_EQ(with("/events/0/lifetime", 0.1234567891),
+            "events[0].lifetime: 0.1234567891 seconds is not a whole number of nanoseconds: write "
+            "at most 9 digits after the point");
+  EXPECT_EQ(with("/connections/0/throttle", 1.0000000001),
+            "connections[0].throttle: 1.0000000001 seconds is not a whole number of nanoseconds: "
+            "write at most 9 digits after the point");
   EXPECT_EQ(with("/events/0/lifetime", 0),
-            "events[0].lifetime: expected a number of seconds of at least 0.000001");
+            "events[0].lifetime: expected a positive number of seconds");
+  EXPECT_EQ(with("/connections/0/trig_interval", 4e9),
+            "connections[0].trig_interval: expected at most 3155760000 seconds (100 years)");
   EXPECT_EQ(with("/connections/0/kind", "rul"),
             "connections[0].kind: expected \"rule\", \"feed\" or \"connect\"");
   EXPECT_EQ(with("/connections/0/opaque", 0), "connections[0].opaque: expected true or false");
@@ -362,6 +375,15 @@ TEST(AppJsonTest, AFilesErrorsAreAtTheirPlace) {
   bad.erase("connections");
   text = bad.dump(2);
   EXPECT_EQ(placed_error(text), "1:1: missing \"connections\"");
+
+  // A duration with ten digits after the point, at its value (docs/app-json.md#durations).
+  text = to_app_json(small_app());
+  const std::string interval = "\"trig_interval\": 0.5";
+  text.replace(text.find(interval), interval.size(), "\"trig_interval\": 0.5000000001");
+  EXPECT_EQ(placed_error(text), place_of(text, "0.5000000001") +
+                                    ": connections[0].trig_interval: 0.5000000001 seconds is not "
+                                    "a whole number of nanoseconds: write at most 9 digits after "
+                                    "the point");
 
   text = to_app_json(small_app());  // the app's "name" twice
   std::string first = place_of(text, "\"name\"");

@@ -3,6 +3,7 @@
 #include "core/app_json.h"
 #include "core/artifact_path.h"
 #include "core/body_text.h"
+#include "core/json_text.h"
 #include "core/json_writer.h"
 
 namespace arbc::model {
@@ -42,11 +43,19 @@ void write_constraint(JsonWriter& w, const char* key, const Constraint& c) {
   w.member(key, c.to_string());
 }
 
-void write_optional(JsonWriter& w, const char* key, const std::optional<double>& v) {
+// A duration as the exact decimal of its seconds: app.json never holds a rounded one.
+void write_seconds(JsonWriter& w, const char* key, Nanos d) {
   w.key(key);
+  std::string text;
+  append_json_seconds(text, d);
+  w.number_text(text);
+}
+
+void write_optional(JsonWriter& w, const char* key, const std::optional<Nanos>& v) {
   if (v) {
-    w.value(*v);
+    write_seconds(w, key, *v);
   } else {
+    w.key(key);
     w.null();
   }
 }
@@ -153,7 +162,7 @@ void write_rates(JsonWriter& w, const std::vector<SourceRate>& rates) {
   for (const SourceRate& r : rates) {
     w.begin_object();
     w.member("port", r.port);
-    w.member("every", r.period);
+    write_seconds(w, "every", r.period);
     write_location(w, r.loc);
     w.end_object();
   }
@@ -173,7 +182,7 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
       w.member("port", t.port);
       if (!t.rule.empty()) w.member("rule", t.rule);
       if (t.kind == TemporalProperty::Kind::Spacing || t.kind == TemporalProperty::Kind::Stability)
-        w.member("window", t.window);
+        write_seconds(w, "window", t.window);
       // Written only when there is one: a spacing of one rule reads as it did before `after`.
       if (t.kind == TemporalProperty::Kind::Spacing && !t.other.empty()) w.member("after", t.other);
       if (t.kind == TemporalProperty::Kind::Absence) w.member("event", t.event);
@@ -182,7 +191,7 @@ void write_temporal(JsonWriter& w, const std::vector<TemporalProperty>& temporal
         if (t.event.empty()) w.member("after", t.other);
         if (!t.event.empty()) w.member("event", t.event);
         w.member("stops", t.stops);
-        w.member("window", t.window);
+        write_seconds(w, "window", t.window);
         write_constraint(w, "while", t.condition);
       }
       write_location(w, t.loc);
@@ -203,7 +212,7 @@ void write_assumptions(JsonWriter& w, const std::vector<Assumption>& assumptions
     w.member("port", a.port);
     w.member("after", a.after);
     if (!a.until.empty()) w.member("until", a.until);
-    if (a.absent_for) w.member("absent_for", *a.absent_for);
+    if (a.absent_for) write_seconds(w, "absent_for", *a.absent_for);
     write_location(w, a.loc);
     w.end_object();
   }

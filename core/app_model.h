@@ -12,6 +12,7 @@
 #include "core/body.h"
 #include "core/constraint.h"
 #include "core/file_name.h"
+#include "core/instant.h"
 #include "core/type.h"
 
 namespace arbc::model {
@@ -56,7 +57,7 @@ struct Module {
 // (`events from`, derived events) and empty for events set by hand-written monitor code.
 struct Event {
   std::string name;
-  std::optional<double> lifetime;  // seconds; none: until unset
+  std::optional<Nanos> lifetime;  // none: until unset
   std::string source;
   SourceLocation loc;
   // A derived event's predicate over its source's message (BodyExpr::Op::Message); for a
@@ -104,9 +105,9 @@ struct Connection {
   // The generated monitor's body, for proofs over message data (core/body.h). nullopt: not
   // recorded (a script, a feed, an app.json written before bodies were): opaque for data.
   std::optional<Body> body;
-  std::optional<double> trig_interval;  // seconds, from `every`
-  std::optional<double> throttle;       // seconds, from `throttle`
-  std::string monitor;                  // Lua file relative to the app directory; empty: none
+  std::optional<Nanos> trig_interval;  // from `every`
+  std::optional<Nanos> throttle;       // from `throttle`
+  std::string monitor;                 // Lua file relative to the app directory; empty: none
   // SHA-256 of the monitor file as `arbc build` wrote it (64 hex digits); readers of an app
   // directory refuse a monitor whose bytes differ (core/monitor_digests.h). Empty in models
   // built in code, which are not read from a directory.
@@ -162,9 +163,9 @@ struct Invariant {
 struct TemporalProperty {
   enum class Kind { Spacing, Absence, Precedence, Response, Stability };
   Kind kind = Kind::Spacing;
-  std::string port;   // "Module.port"
-  std::string rule;   // empty: Stability; a Response answered by any rule of the port
-  double window = 0;  // seconds; Spacing, Response, Stability
+  std::string port;  // "Module.port"
+  std::string rule;  // empty: Stability; a Response answered by any rule of the port
+  Nanos window{0};   // Spacing, Response, Stability
   SourceLocation loc;
   std::string event;     // Absence; Response: the trigger is EVENT becoming present (other empty)
   std::string other;     // Precedence, Response (the trigger), Spacing (empty: RULE itself)
@@ -176,7 +177,7 @@ struct TemporalProperty {
 // seconds from the start; response properties rely on it (docs/design.md#properties-over-time).
 struct SourceRate {
   std::string port;  // "Module.port", an out port
-  double period = 0;
+  Nanos period{0};
   SourceLocation loc;
 };
 
@@ -202,7 +203,7 @@ struct Assumption {
   std::string after;
   std::string until;  // empty: EVENT may stay once `after` has delivered
   SourceLocation loc;
-  std::optional<double> absent_for;  // seconds; the timed form (then `until` is empty)
+  std::optional<Nanos> absent_for;  // the timed form (then `until` is empty)
 };
 
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that

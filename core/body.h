@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/builtins.h"
+#include "core/instant.h"
 #include "core/type.h"
 
 namespace arbc::model {
@@ -72,10 +73,9 @@ struct BodyStmt {
   std::string name;
   BodyExpr expr;
   std::vector<BodyStmt> then_body, else_body;
-  // Set: the lifetime `for D` gives, in seconds; none: the event's declared lifetime, else
-  // until unset. Not used by the proofs (they read effects from the connection); `arbc docs`
-  // names it.
-  std::optional<double> lifetime;
+  // Set: the lifetime `for D` gives; none: the event's declared lifetime, else until unset.
+  // Not used by the proofs (they read effects from the connection); `arbc docs` names it.
+  std::optional<Nanos> lifetime;
 };
 
 using Body = std::vector<BodyStmt>;

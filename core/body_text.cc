@@ -140,7 +140,7 @@ void append_stmt(std::string& out, const BodyStmt& s) {
       out += ' ' + s.name;
       if (s.lifetime) {
         out += ' ';
-        append_json_double(out, *s.lifetime);
+        append_json_seconds(out, *s.lifetime);  // exact (core/instant.h)
       }
       break;
     case Kind::If:
@@ -385,9 +385,11 @@ bool Reader::stmt(BodyStmt& s, int depth) {
       s.name = word();
       ok = !s.name.empty();
       if (ok && s.kind == Kind::Set && !at(')')) {  // `(set LINE NAME SECONDS)`
+        // Whole nanoseconds, as every duration of app.json (core/instant.h).
         BodyExpr seconds;
-        ok = number(word(), seconds) && seconds.number >= 0;
-        s.lifetime = seconds.number;
+        ok = number(word(), seconds) && seconds.number > 0;
+        if (ok) s.lifetime = whole_nanos(seconds.number);
+        ok = ok && s.lifetime.has_value();
       }
       break;
     case Kind::If:

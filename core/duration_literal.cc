@@ -22,6 +22,14 @@ std::string trimmed(double value, int decimals) {
 
 }  // namespace
 
+std::string duration_literal(Nanos t) {
+  if (t == Nanos(0)) return "0s";
+  if (t >= std::chrono::seconds(1) || t <= -std::chrono::seconds(1))
+    return decimal_seconds(t) + "s";
+  // decimal_seconds of a thousand times t, read as milliseconds: exact, with the same trimming.
+  return decimal_seconds(t * 1000) + "ms";
+}
+
 std::string duration_literal(double seconds) {
   if (!std::isfinite(seconds)) return trimmed(seconds, 0) + "s";
   // Rounded to the microsecond first, so that 0.9999999 reads 1s, not 1000ms, and the sums of

@@ -5,10 +5,18 @@
 
 #include <string>
 
+#include "core/instant.h"
+
 namespace arbc {
 
-// `seconds` to the microsecond: in ms below a second, in s from a second on (trailing zeros
-// dropped); 0 is "0s", as tests write their start.
+// `t` exactly: in ms below a second, in s from a second on (trailing zeros dropped), so
+// "0.000001ms" is a nanosecond and "1.000000001s" a nanosecond past a second; 0 is "0s", as tests
+// write their start. An instant of a run or a duration of the model, which are whole
+// nanoseconds (core/instant.h), reads back as the same integer.
+std::string duration_literal(Nanos t);
+
+// A time that is not one of a run's instants (a wall-clock budget, a wait measured on the host)
+// to the microsecond, in the same form.
 std::string duration_literal(double seconds);
 
 }  // namespace arbc

@@ -24,5 +24,18 @@ TEST(DurationLiteral, RoundsToTheMicrosecond) {
   EXPECT_EQ(duration_literal(2.0000001), "2s");
 }
 
+// Instants and durations of a run are whole nanoseconds, written exactly (core/instant.h).
+TEST(DurationLiteral, NanosecondsAreExact) {
+  using std::chrono::milliseconds;
+  EXPECT_EQ(duration_literal(Nanos(0)), "0s");
+  EXPECT_EQ(duration_literal(milliseconds(100)), "100ms");
+  EXPECT_EQ(duration_literal(Nanos(1)), "0.000001ms");
+  EXPECT_EQ(duration_literal(Nanos(999'999'999)), "999.999999ms");
+  EXPECT_EQ(duration_literal(Nanos(1'000'000'000)), "1s");
+  EXPECT_EQ(duration_literal(Nanos(1'000'000'001)), "1.000000001s");
+  EXPECT_EQ(duration_literal(milliseconds(1200)), "1.2s");
+  EXPECT_EQ(duration_literal(milliseconds(-250)), "-250ms");
+}
+
 }  // namespace
 }  // namespace arbc

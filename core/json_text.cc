@@ -24,6 +24,12 @@ void append_json_double(std::string& out, double d) {
   if (std::string_view(buf).find_first_of(".eEn") == std::string_view::npos) out += ".0";
 }
 
+void append_json_seconds(std::string& out, Nanos t) {
+  std::string text = decimal_seconds(t);
+  out += text;
+  if (text.find('.') == std::string::npos) out += ".0";
+}
+
 void append_json_string(std::string& out, std::string_view s) {
   append_quoted(out, s, QuoteStyle::Json);
 }

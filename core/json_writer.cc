@@ -65,6 +65,11 @@ void JsonWriter::value(double d) {
   append_json_double(out_, d);
 }
 
+void JsonWriter::number_text(std::string_view literal) {
+  before_value();
+  out_ += literal;
+}
+
 void JsonWriter::null() {
   before_value();
   out_ += "null";

@@ -28,6 +28,8 @@ class JsonWriter {
   void value(int i) { value(static_cast<int64_t>(i)); }
   void value(int64_t i);
   void value(double d);
+  // A number already written as JSON text ("0.000000001": exact where a double is not).
+  void number_text(std::string_view literal);
   void null();
   void value(const std::vector<std::string>& strings);
 

@@ -3,13 +3,13 @@
 // times resolved. `arbc test` runs these on the embedded runtime in simulated time.
 #pragma once
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/app_model.h"
 #include "core/constraint.h"
+#include "core/instant.h"
 #include "core/value.h"
 
 namespace arbc::model {
@@ -17,7 +17,7 @@ namespace arbc::model {
 struct TestStep {
   enum class Kind { Input, Set, Unset };
   Kind kind = Kind::Input;
-  double t = 0;
+  Nanos t{0};
   std::string port;   // Input: "Module.port", an out-port
   Value value;        // Input
   std::string event;  // Set, Unset
@@ -37,7 +37,7 @@ struct Expectation {
   Constraint state;                          // State
   std::optional<TemporalProperty> property;  // Property (none: sema reported its port)
   // The window, both ends included; without one, the whole test.
-  double from = 0, to = std::numeric_limits<double>::infinity();
+  Nanos from{0}, to = kNever;
   std::string text;  // the expectation as written, for failure messages
   SourceLocation loc;
 };

@@ -278,9 +278,10 @@ void DdsTransport::post_unmatched_report(int k) {
   if (!(options_.unmatched_after > 0)) return;  // no reports
   Executor& ex = sink_->executor();
   double wait = no_peer_report_at(k, options_.unmatched_after) - wall_seconds_since_start();
-  ex.post(ex.now() + std::max(0.0, wait) * options_.time_scale, [this, k] {
-    if (!closing_) report_unmatched(k);
-  });
+  ex.post(later(ex.now(), nanos_from_seconds(std::max(0.0, wait) * options_.time_scale)),
+          [this, k] {
+            if (!closing_) report_unmatched(k);
+          });
 }
 
 // Waits (wall clock) until every topic that expects a peer has one, so that the first

@@ -250,7 +250,8 @@ void TopicReader::hand(const Buffered& b) {
   if (input) {
     // Before the module sees it: what it publishes from now on answers this sample.
     transport_->received(b.identity);
-    sink.to_module(port.index, Delivery{port.port, b.value, topic, topic, sink.executor().now()});
+    sink.to_module(port.index,
+                   Delivery{port.port, b.value, topic, topic, seconds_of(sink.executor().now())});
   } else {
     sink.from_source(port.index, b.value, b.answered);
   }

@@ -14,7 +14,7 @@ std::unique_ptr<Transport> make_dds_transport(const model::App& app, DdsOptions 
 DdsTransport::DdsTransport(const model::App& app, DdsOptions options)
     : app_(app), options_(std::move(options)) {
   for (const model::Event& e : app_.events) {
-    if (e.lifetime) longest_lifetime_ = std::max(longest_lifetime_, *e.lifetime);
+    if (e.lifetime) longest_lifetime_ = std::max(longest_lifetime_, seconds_of(*e.lifetime));
   }
 }
 

@@ -17,13 +17,13 @@ namespace {
 class ReplayHost : public MonitorHost {
  public:
   explicit ReplayHost(std::string constraint) : constraint_(std::move(constraint)) {}
-  double now() override { return 0; }
-  void set_event(std::string_view, std::optional<double>) override {}
+  Nanos now() override { return Nanos(0); }
+  void set_event(std::string_view, std::optional<Nanos>) override {}
   void unset_event(std::string_view) override {}
   bool has_event(std::string_view) override { return false; }
   bool set_constraint(std::string_view, std::string*) override { return true; }
   std::string get_constraint() override { return constraint_; }
-  void set_trig_interval(double) override {}
+  void set_trig_interval(Nanos) override {}
   void print(const std::string&) override {}
 
  private:

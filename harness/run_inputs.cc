@@ -92,7 +92,9 @@ bool read_line(const Json& j, const LineRef& at, const model::App& app,
   if (!v)
     return *err = at.field("value", why + " (port " + port + " is " + p->type->to_string() + ")"),
            false;
-  log->inputs[module].push_back({j["t"].get<double>(), port, std::move(*v)});
+  // To the nearest nanosecond, the runtime's instants (core/instant.h): a trace's times, which
+  // it writes exactly, read back as the instants they were.
+  log->inputs[module].push_back({nanos_from_seconds(j["t"].get<double>()), port, std::move(*v)});
   ++read->messages;
   return true;
 }

@@ -36,7 +36,7 @@ TEST(RunInputsTest, LinesAndTracePublicationsBecomeInputsInTimeOrder) {
   EXPECT_EQ(r.read.messages, 2u);
   EXPECT_FALSE(r.read.from_trace);
   ASSERT_EQ(r.log.inputs["LookAround"].size(), 2u);
-  EXPECT_EQ(r.log.inputs["LookAround"][0].t, 0.2);
+  EXPECT_EQ(r.log.inputs["LookAround"][0].t, std::chrono::milliseconds(200));
   Read trace = read_lines(
       "{\"t\":0.0,\"type\":\"publish\",\"port\":\"LookAround.gaze\",\"value\":{\"x\":1.0,"
       "\"y\":0.0,\"z\":0.0}}\n"

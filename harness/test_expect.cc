@@ -15,7 +15,7 @@ namespace arbc::harness {
 namespace {
 
 // Times as the spec writes durations, like the expectations the failures quote.
-std::string seconds(double t) { return duration_literal(t); }
+std::string seconds(Nanos t) { return duration_literal(t); }
 
 // A received value as a spec literal, fields in the order of the port's type, as the
 // expectation it is compared with is written.
@@ -24,10 +24,10 @@ std::string text_of(const Value& v, const std::string& port, const TestRun& run)
   return value_spec_text(v, p && p->type ? p->type.get() : nullptr);
 }
 
-bool in_window(double t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
+bool in_window(Nanos t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
 
 std::string window(const model::Expectation& e) {
-  if (std::isinf(e.to)) return e.from == 0 ? "during the test" : "from " + seconds(e.from);
+  if (e.to == kNever) return e.from == Nanos(0) ? "during the test" : "from " + seconds(e.from);
   if (e.from == e.to) return "at " + seconds(e.from);
   return "between " + seconds(e.from) + " and " + seconds(e.to);
 }
@@ -37,10 +37,10 @@ std::string window(const model::Expectation& e) {
 // says what to change rather than leaving the reader to search the trace.
 std::string nearest_outside(const model::Expectation& e, const TestRun& run) {
   const Received* best = nullptr;
-  double best_gap = std::numeric_limits<double>::infinity();
+  Nanos best_gap = kNever;
   for (const Received& r : run.received) {
     if (r.port != e.port) continue;
-    double gap = r.t < e.from ? e.from - r.t : r.t - e.to;
+    Nanos gap = r.t < e.from ? e.from - r.t : r.t - e.to;
     // Prefer the expected value over a closer other one: it is the likelier mistake.
     bool wanted = !e.value || near_equal(*e.value, r.value);
     bool best_wanted = best && (!e.value || near_equal(*e.value, best->value));
@@ -104,14 +104,15 @@ std::string check_delivers(const model::Expectation& e, const TraceRecord* first
     return "but " + e.connection + " delivered at " + seconds(first->t) + " to " + first->port;
   }
   if (first) return "";
-  double nearest = std::numeric_limits<double>::quiet_NaN(), gap = 0;
+  std::optional<Nanos> nearest;
+  Nanos gap{0};
   for (const TraceRecord& r : run.records) {
     if (r.connection != e.connection || r.kind != TraceKind::Deliver) continue;
-    double d = r.t < e.from ? e.from - r.t : r.t - e.to;
-    if (std::isnan(nearest) || d < gap) nearest = r.t, gap = d;
+    Nanos d = r.t < e.from ? e.from - r.t : r.t - e.to;
+    if (!nearest || d < gap) nearest = r.t, gap = d;
   }
   std::string out = "but " + e.connection + " delivered nothing " + window(e);
-  if (!std::isnan(nearest)) out += "; it delivered at " + seconds(nearest);
+  if (nearest) out += "; it delivered at " + seconds(*nearest);
   return out;
 }
 
@@ -128,8 +129,10 @@ std::string check_property(const model::Expectation& e, const TestRun& run) {
   return b ? "but " + b->what : "";
 }
 
-// The events present at t in any container (after the messages of that instant).
-std::set<std::string> present_at(const TestRun& run, double t) {
+// The events present at t in any container (after the messages of that instant), read off the
+// run report's timelines, which are in seconds (exact for instants under 2^22 s).
+std::set<std::string> present_at(const TestRun& run, Nanos instant) {
+  double t = seconds_of(instant);
   report::RunTimeline timeline =
       report::build_run_timeline({}, run.records, std::numeric_limits<double>::infinity());
   std::set<std::string> out;
@@ -207,7 +210,7 @@ std::optional<PropertyBreach> property_breach(const model::Expectation& e, const
   return watch.breach();
 }
 
-std::pair<double, double> failure_window(const model::Expectation& e, const TestRun& run) {
+std::pair<Nanos, Nanos> failure_window(const model::Expectation& e, const TestRun& run) {
   if (e.kind == model::Expectation::Kind::Property) {
     if (std::optional<PropertyBreach> b = property_breach(e, run)) return {b->from, b->t};
   }
@@ -232,8 +235,9 @@ std::string check_expectation(const model::Expectation& e, const TestRun& run) {
   return "";
 }
 
-std::string trace_around(const TestRun& run, double from, double to) {
-  double lo = from - 0.5, hi = (std::isinf(to) ? run.end : to) + 0.5;
+std::string trace_around(const TestRun& run, Nanos from, Nanos to) {
+  const Nanos half_second = std::chrono::milliseconds(500);
+  Nanos lo = from - half_second, hi = (to == kNever ? run.end : to) + half_second;
   // The runtime notices an expiry when it next looks at the container, so the trace records
   // it late, stamped with the time it happened: in time order the excerpt reads as it ran.
   std::vector<const TraceRecord*> window;

@@ -18,7 +18,7 @@ namespace arbc::harness {
 struct TestRun {
   const std::vector<Received>& received;    // what reached the stand-ins' in-ports
   const std::vector<TraceRecord>& records;  // the trace
-  double end = 0;                           // the last instant the run reached
+  Nanos end{0};                             // the last instant the run reached
   const model::App* app = nullptr;          // for the ports' types, in values it quotes
 };
 
@@ -30,11 +30,11 @@ std::optional<PropertyBreach> property_breach(const model::Expectation& e, const
 
 // The time range a failure's trace excerpt shows: the expectation's window; for a property,
 // from the first instant the breach involves to the one that broke it.
-std::pair<double, double> failure_window(const model::Expectation& e, const TestRun& run);
+std::pair<Nanos, Nanos> failure_window(const model::Expectation& e, const TestRun& run);
 
 // The trace records from `from` - 0.5 s to `to` + 0.5 s (at most 20 lines, the first ones),
 // indented, one per line.
-std::string trace_around(const TestRun& run, double from, double to);
+std::string trace_around(const TestRun& run, Nanos from, Nanos to);
 
 // Values equal up to floating-point rounding (1e-9, relative): what `receives VALUE` compares.
 bool near_equal(const Value& a, const Value& b);

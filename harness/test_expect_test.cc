@@ -6,8 +6,10 @@
 namespace arbc::harness {
 namespace {
 
-model::Expectation receives(const std::string& port, std::optional<Value> value, double from,
-                            double to) {
+using namespace std::chrono_literals;
+
+model::Expectation receives(const std::string& port, std::optional<Value> value, Nanos from,
+                            Nanos to) {
   model::Expectation e;
   e.port = port;
   e.value = std::move(value);
@@ -17,7 +19,7 @@ model::Expectation receives(const std::string& port, std::optional<Value> value,
   return e;
 }
 
-TraceRecord drop(double t, const std::string& connection, DropReason why) {
+TraceRecord drop(Nanos t, const std::string& connection, DropReason why) {
   TraceRecord r;
   r.t = t;
   r.kind = TraceKind::Drop;
@@ -27,43 +29,43 @@ TraceRecord drop(double t, const std::string& connection, DropReason why) {
 }
 
 TEST(TestExpectTest, ReceivesHoldsOnlyForTheValueInTheWindow) {
-  std::vector<Received> got = {{0.1, "HeadControl.gaze", "search", Value::vec3(1, 0, 0)}};
+  std::vector<Received> got = {{100ms, "HeadControl.gaze", "search", Value::vec3(1, 0, 0)}};
   std::vector<TraceRecord> records;
-  TestRun run{got, records, 1.0, nullptr};
-  EXPECT_EQ(check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 0.1, 0.1), run),
-            "");
-  EXPECT_EQ(check_expectation(receives("HeadControl.gaze", std::nullopt, 0, 1), run), "");
+  TestRun run{got, records, 1s, nullptr};
+  EXPECT_EQ(
+      check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 100ms, 100ms), run), "");
+  EXPECT_EQ(check_expectation(receives("HeadControl.gaze", std::nullopt, 0s, 1s), run), "");
   std::string late =
-      check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 0.2, 0.2), run);
+      check_expectation(receives("HeadControl.gaze", Value::vec3(1, 0, 0), 200ms, 200ms), run);
   EXPECT_NE(late.find("it received that value at 100ms"), std::string::npos) << late;
   std::string other =
-      check_expectation(receives("HeadControl.gaze", Value::vec3(0, 1, 0), 0.1, 0.1), run);
+      check_expectation(receives("HeadControl.gaze", Value::vec3(0, 1, 0), 100ms, 100ms), run);
   EXPECT_NE(other.find("received other values at 100ms:\n    100ms vec3(1.0, 0.0, 0.0)"),
             std::string::npos)
       << other;
   // Up to rounding: what `receives VALUE` compares.
-  EXPECT_EQ(
-      check_expectation(receives("HeadControl.gaze", Value::vec3(1 + 1e-12, 0, 0), 0.1, 0.1), run),
-      "");
+  EXPECT_EQ(check_expectation(
+                receives("HeadControl.gaze", Value::vec3(1 + 1e-12, 0, 0), 100ms, 100ms), run),
+            "");
 }
 
 TEST(TestExpectTest, NothingAndDropsReadTheRun) {
   std::vector<Received> got;
-  std::vector<TraceRecord> records = {drop(0.5, "search", DropReason::NotSelected)};
-  TestRun run{got, records, 1.0, nullptr};
-  model::Expectation nothing = receives("HeadControl.gaze", std::nullopt, 0, 1);
+  std::vector<TraceRecord> records = {drop(500ms, "search", DropReason::NotSelected)};
+  TestRun run{got, records, 1s, nullptr};
+  model::Expectation nothing = receives("HeadControl.gaze", std::nullopt, 0s, 1s);
   nothing.kind = model::Expectation::Kind::Nothing;
   EXPECT_EQ(check_expectation(nothing, run), "");
   model::Expectation drops;
   drops.kind = model::Expectation::Kind::Drops;
   drops.connection = "search";
   drops.reason = "not-selected";
-  drops.from = drops.to = 0.5;
+  drops.from = drops.to = 500ms;
   EXPECT_EQ(check_expectation(drops, run), "");
   drops.reason = "throttled";
   EXPECT_NE(check_expectation(drops, run), "");
   drops.reason = "";
-  drops.from = drops.to = 0.7;
+  drops.from = drops.to = 700ms;
   EXPECT_NE(check_expectation(drops, run), "");
 }
 
@@ -71,18 +73,18 @@ TEST(TestExpectTest, NothingAndDropsReadTheRun) {
 // not selected for one message and delivers the next. `delivers nothing` sees the delivery.
 TEST(TestExpectTest, DeliversCountsOnlyTheRulesDeliveries) {
   std::vector<Received> got;
-  std::vector<TraceRecord> records = {drop(0.2, "r1", DropReason::NotSelected)};
+  std::vector<TraceRecord> records = {drop(200ms, "r1", DropReason::NotSelected)};
   TraceRecord deliver;
   deliver.kind = TraceKind::Deliver;
-  deliver.t = 0.2;
+  deliver.t = 200ms;
   deliver.connection = "r1";
   deliver.port = "D.q";
   records.push_back(deliver);
-  TestRun run{got, records, 1.0, nullptr};
+  TestRun run{got, records, 1s, nullptr};
   model::Expectation drops;
   drops.kind = model::Expectation::Kind::Drops;
   drops.connection = "r1";
-  drops.from = drops.to = 0.2;
+  drops.from = drops.to = 200ms;
   EXPECT_EQ(check_expectation(drops, run), "");  // met by the other message's drop
   model::Expectation none = drops;
   none.kind = model::Expectation::Kind::DeliversNothing;
@@ -90,10 +92,10 @@ TEST(TestExpectTest, DeliversCountsOnlyTheRulesDeliveries) {
   model::Expectation some = drops;
   some.kind = model::Expectation::Kind::Delivers;
   EXPECT_EQ(check_expectation(some, run), "");
-  some.from = some.to = 0.5;
+  some.from = some.to = 500ms;
   EXPECT_EQ(check_expectation(some, run),
             "but r1 delivered nothing at 500ms; it delivered at 200ms");
-  none.from = none.to = 0.5;
+  none.from = none.to = 500ms;
   EXPECT_EQ(check_expectation(none, run), "");
 }
 

@@ -81,12 +81,12 @@ std::optional<std::vector<verify::ReplayRecord>> RuntimeTestReplayer::replay(
     if (c->kind == model::ConnectionKind::Rule) rules.insert(c->name);
   for (const TraceRecord& r : trace.records) {
     if (r.kind == TraceKind::Drop && rules.count(r.connection)) {
-      out.push_back({K::Drop, r.t, r.connection, "", -1});
+      out.push_back({K::Drop, r.t, r.connection, "", kNever});
       continue;
     }
     if (r.port != port) continue;
     if (r.kind == TraceKind::Deliver) {
-      out.push_back({K::Deliver, r.t, r.connection, "", -1});
+      out.push_back({K::Deliver, r.t, r.connection, "", kNever});
     } else if (r.kind == TraceKind::Event) {
       // "set", "unset" or "expire" (the entry lapsed at r.t, its expiry)
       out.push_back({r.op == "set" ? K::Set : K::Remove, r.t, r.owner, r.event, r.expiry});

@@ -79,17 +79,17 @@ void add_harness(model::App& app) {
 }
 
 // The last instant a test looks at: its last step, window start or finite window end.
-double test_end(const model::TestCase& test) {
-  double end = 0;
+Nanos test_end(const model::TestCase& test) {
+  Nanos end{0};
   for (const model::TestStep& s : test.steps) end = std::max(end, s.t);
-  double last_step = end;
+  Nanos last_step = end;
   for (const model::Expectation& e : test.expectations) {
     end = std::max(end, e.from);
-    if (std::isfinite(e.to)) end = std::max(end, e.to);
+    if (e.to != kNever) end = std::max(end, e.to);
     // A response's last trigger may come at the last step: the run goes on for its window, so
     // that an answer that never comes is judged (a window past the end is not).
     if (e.property && e.property->kind == model::TemporalProperty::Kind::Response)
-      end = std::max(end, last_step + e.property->window);
+      end = std::max(end, later(last_step, e.property->window));
   }
   return end;
 }

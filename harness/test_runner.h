@@ -46,7 +46,7 @@ struct TestTrace {
   std::vector<TraceRecord> records;
   std::vector<Received> received;
   std::vector<std::string> reports;
-  double end = 0;  // the last instant the run reached
+  Nanos end{0};  // the last instant the run reached
 };
 
 // Runs `test` as run_test_case does and keeps what happened; false and *err when the app did

@@ -49,8 +49,9 @@ bool same(const TraceRecord* a, const TraceRecord* b) {
 
 // The events present in `port`'s container just before records[index] (at time t).
 std::string events_before(const std::vector<TraceRecord>& records, size_t index,
-                          const std::string& port, double t) {
+                          const std::string& port, Nanos instant) {
   std::vector<TraceRecord> before(records.begin(), records.begin() + index);
+  double t = seconds_of(instant);  // the timelines' seconds
   report::RunTimeline timeline =
       report::build_run_timeline({}, before, t + std::numeric_limits<double>::epsilon() * (1 + t));
   std::string out;
@@ -64,7 +65,7 @@ std::string events_before(const std::vector<TraceRecord>& records, size_t index,
 }
 
 // As a test writes a time (`at 1.2s`): a diverging record is where a test would pin the run.
-std::string seconds(double t) { return duration_literal(t); }
+std::string seconds(Nanos t) { return duration_literal(t); }
 
 }  // namespace
 
@@ -95,7 +96,7 @@ std::string first_difference(const model::App& app, const std::vector<TraceRecor
                              const std::string& before_name) {
   auto a = decisions(now), b = decisions(before);
   for (const auto& [name, list] : b) a[name];  // connections only the other run has
-  double best_t = std::numeric_limits<double>::infinity();
+  Nanos best_t = kNever;
   std::string best_name;
   size_t best_k = 0;
   for (const auto& [name, list] : a) {
@@ -104,7 +105,7 @@ std::string first_difference(const model::App& app, const std::vector<TraceRecor
       const TraceRecord* x = k < list.size() ? list[k].record : nullptr;
       const TraceRecord* y = k < other.size() ? other[k].record : nullptr;
       if (same(x, y)) continue;
-      double t = std::min(x ? x->t : best_t, y ? y->t : best_t);
+      Nanos t = std::min(x ? x->t : best_t, y ? y->t : best_t);
       if (t < best_t) best_t = t, best_name = name, best_k = k;
       break;
     }

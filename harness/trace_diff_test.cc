@@ -10,7 +10,9 @@
 namespace arbc::harness {
 namespace {
 
-TraceRecord decision(double t, const std::string& connection, bool delivered) {
+using namespace std::chrono_literals;
+
+TraceRecord decision(Nanos t, const std::string& connection, bool delivered) {
   TraceRecord r;
   r.t = t;
   r.kind = delivered ? TraceKind::Deliver : TraceKind::Drop;
@@ -28,9 +30,9 @@ TEST(TraceDiffTest, ATraceFileReadsBackAsItsRecords) {
     std::string err;
     ASSERT_TRUE(trace.open(path, &err)) << err;
     trace.record_to(&written);
-    trace.delivery(0.5, "search", "HeadControl.gaze", Value::vec3(1, 0, 0));
-    trace.drop(0.7, "search", DropReason::NotSelected, "");
-    trace.event(0.7, "HeadControl.gaze", "set", "e_face", "feed", 1.2);
+    trace.delivery(500ms, "search", "HeadControl.gaze", Value::vec3(1, 0, 0));
+    trace.drop(700ms, "search", DropReason::NotSelected, "");
+    trace.event(700ms, "HeadControl.gaze", "set", "e_face", "feed", 1200ms);
   }
   std::vector<TraceRecord> read;
   std::string err;
@@ -48,8 +50,8 @@ TEST(TraceDiffTest, ATraceFileReadsBackAsItsRecords) {
 
 TEST(TraceDiffTest, TheFirstDifferingDecisionIsNamed) {
   auto lowered = testing::compiled(testing::kGaze);
-  std::vector<TraceRecord> a = {decision(0.1, "search", true), decision(0.2, "search", true)};
-  std::vector<TraceRecord> b = {decision(0.1, "search", true), decision(0.2, "search", false)};
+  std::vector<TraceRecord> a = {decision(100ms, "search", true), decision(200ms, "search", true)};
+  std::vector<TraceRecord> b = {decision(100ms, "search", true), decision(200ms, "search", false)};
   EXPECT_EQ(first_difference(lowered->app, a, a, "other.trace"), "");
   std::string d = first_difference(lowered->app, a, b, "other.trace");
   EXPECT_NE(d.find("first difference: connection search into HeadControl.gaze, its message 2, "

@@ -85,7 +85,7 @@ void describe_rule(const Document& doc, const Symbol& s, std::ostringstream& out
   out << " from " << code(r->source.qualified());
   // As written: with errors in the text, sema's constraint tree may be incomplete.
   out << "\n\nwhen: " << code(r->when ? source_text(doc, r->when->loc) : "true");
-  if (r->hold) out << "; hold " << duration_literal(r->hold->seconds);
+  if (r->hold) out << "; hold " << duration_literal(r->hold->nanos);
   const model::App* app = lowered_app(doc, out);
   if (!app) return;
   for (const model::Connection& c : app->connections)

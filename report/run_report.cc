@@ -306,13 +306,15 @@ void append_messages(std::string& out, const std::vector<TraceRecord>& records, 
         break;
       case TraceKind::Log:
         if (log_count++ < kMaxListed) {
-          log += format.text(r.t) + "  " + escaped(r.connection) + ": " + escaped(r.text) + "\n";
+          log += format.text(seconds_of(r.t)) + "  " + escaped(r.connection) + ": " +
+                 escaped(r.text) + "\n";
         }
         continue;
       default:
         continue;
     }
-    if (problem_count++ < kMaxListed) problems += format.text(r.t) + "  " + escaped(line) + "\n";
+    if (problem_count++ < kMaxListed)
+      problems += format.text(seconds_of(r.t)) + "  " + escaped(line) + "\n";
   }
   auto more = [](size_t count) {
     return count > kMaxListed ? "… and " + std::to_string(count - kMaxListed) + " more\n"

@@ -7,6 +7,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc::report {
+
+using namespace std::chrono_literals;
 namespace {
 
 using arbc::testing::TestApp;
@@ -38,7 +40,7 @@ ReportedRun run_and_report(double duration) {
   o.seed = 3;
   o.trace_records = &run.records;
   auto rt = t.start(o);
-  rt->advance(duration);
+  rt->advance(nanos_from_seconds(duration));
   rt->shutdown();
   run.stats = rt->stats();
 
@@ -48,7 +50,7 @@ ReportedRun run_and_report(double duration) {
   input.header.scenario = "s<1>";
   input.header.seed = 3;
   input.header.requested = duration;
-  input.header.end = rt->now();
+  input.header.end = seconds_of(rt->now());
   input.header.success = true;
   input.header.verdict = "success";
   input.header.proof = "not verified (--no-verify)";
@@ -276,14 +278,14 @@ TEST(RunReportShortRunTest, TimesFitTheRunsLength) {
   auto rt = t.start(o);
   for (int k = 0; k < 20; ++k)
     arbc::testing::TestApp::publish_at(*rt, 1e-4 * k, "Src", "x", Value(k));
-  rt->advance(0.002);
+  rt->advance(2ms);
   rt->shutdown();
   std::vector<ConnectionStats> stats = rt->stats();
   ASSERT_EQ(stats[0].delivered, 20u);
 
   RunReportInput input;
   input.header.app = "fast";
-  input.header.end = rt->now();
+  input.header.end = seconds_of(rt->now());
   input.header.requested = 0.002;
   input.connections.push_back({stats[0], false, "true"});
   input.records = &records;
@@ -304,11 +306,11 @@ TEST(RunReportShortRunTest, TimesFitTheRunsLength) {
 // "0.002 s of 0.002 s requested", and its log lines are not all "0.000" to "0.002".
 TEST(RunReportShortRunTest, TheHeaderAndTheLogFitTheRunsLengthToo) {
   std::vector<TraceRecord> records(2);
-  records[0].t = 0.00125;
+  records[0].t = 1250us;
   records[0].kind = TraceKind::Log;
   records[0].connection = "environment";
   records[0].text = "half way";
-  records[1].t = 0.0015;
+  records[1].t = 1500us;
   records[1].kind = TraceKind::Error;
   records[1].connection = "fast";
   records[1].text = "boom";
@@ -339,14 +341,14 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   for (int k = 0; k < 8; ++k) {
     arbc::testing::TestApp::publish_at(*rt, 1 + k * 0.5, "Src", "x", Value(k));
   }
-  rt->advance(6);
+  rt->advance(6s);
   rt->shutdown();
   std::vector<ConnectionStats> stats = rt->stats();
   ASSERT_TRUE(stats[0].quarantined);
 
   RunReportInput input;
   input.header.app = "failing";
-  input.header.end = rt->now();
+  input.header.end = seconds_of(rt->now());
   input.header.requested = 6;
   input.header.verdict =
       "failure (no environment; judged by quarantined connections and messages of the wrong type)";
@@ -395,12 +397,12 @@ TEST(RunReportFailureTest, PluginErrorsAreListed) {
   RunOptions o;
   o.trace_records = &records;
   auto rt = t.start(o);
-  rt->advance(3.5);
+  rt->advance(3500ms);
   rt->shutdown();
 
   RunReportInput input;
   input.header.app = "jammed";
-  input.header.end = rt->now();
+  input.header.end = seconds_of(rt->now());
   input.header.requested = 3.5;
   input.connections.push_back({rt->stats()[0], false, "true"});
   input.records = &records;

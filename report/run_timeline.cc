@@ -80,22 +80,26 @@ RunTimeline build_run_timeline(const std::vector<std::string>& connections,
 
   std::map<std::pair<std::string, std::string>, EventHistory> histories;
   for (const TraceRecord& r : records) {
+    // The runtime's nanoseconds as the seconds the timelines are drawn in: the nearest doubles,
+    // which keep the order and the equalities of instants under 2^22 s.
+    double t = seconds_of(r.t);
     switch (r.kind) {
       case TraceKind::Deliver:
-        lane(r.connection).deliveries.push_back(r.t);
+        lane(r.connection).deliveries.push_back(t);
         break;
       case TraceKind::Drop:
-        lane(r.connection).drops.push_back({r.t, r.reason});
+        lane(r.connection).drops.push_back({t, r.reason});
         break;
       case TraceKind::Quarantine: {
         ConnectionLane& l = lane(r.connection);
-        if (!l.quarantined_at) l.quarantined_at = r.t;
+        if (!l.quarantined_at) l.quarantined_at = t;
         break;
       }
       case TraceKind::Event: {
         EventHistory& h = histories[{r.port, r.event}];
-        if (r.op == "set") h.set(r.owner, r.t, r.expiry < 0 ? kNever : r.expiry);
-        if (r.op == "unset") h.unset(r.owner, r.t);
+        if (r.op == "set")
+          h.set(r.owner, t, r.expiry == arbc::kNever ? kNever : seconds_of(r.expiry));
+        if (r.op == "unset") h.unset(r.owner, t);
         break;
       }
       default:

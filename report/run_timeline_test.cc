@@ -5,17 +5,20 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc::report {
+
+using namespace std::chrono_literals;
 namespace {
 
+// Times in seconds; an expiry below 0: none.
 TraceRecord set(double t, const std::string& event, const std::string& owner, double expiry) {
   TraceRecord r;
-  r.t = t;
+  r.t = nanos_from_seconds(t);
   r.kind = TraceKind::Event;
   r.port = "P.in";
   r.op = "set";
   r.event = event;
   r.owner = owner;
-  r.expiry = expiry;
+  r.expiry = expiry < 0 ? kNever : nanos_from_seconds(expiry);
   return r;
 }
 
@@ -64,7 +67,7 @@ TEST(RunTimelineTest, OpenEntriesEndAtTheEndOfTheRun) {
 
 TEST(RunTimelineTest, LanesFollowTheGivenOrderAndUnknownConnectionsAreAppended) {
   TraceRecord d;
-  d.t = 2;
+  d.t = 2s;
   d.kind = TraceKind::Deliver;
   d.connection = "b";
   TraceRecord x = d;
@@ -73,7 +76,7 @@ TEST(RunTimelineTest, LanesFollowTheGivenOrderAndUnknownConnectionsAreAppended) 
   x.reason = DropReason::Throttled;
   TraceRecord q = x;
   q.kind = TraceKind::Quarantine;
-  q.t = 3;
+  q.t = 3s;
   RunTimeline t = build_run_timeline({"a", "b"}, {d, x, q}, 5);
   ASSERT_EQ(t.connections.size(), 3u);
   EXPECT_EQ(t.connections[0].name, "a");
@@ -111,7 +114,7 @@ TEST(RunTimelineTest, PresenceAgreesWithTheRuntimesConstraintEvaluation) {
   for (int k = 0; k < 400; ++k) {
     arbc::testing::TestApp::publish_at(*rt, 0.005 + k * 0.01, "Src", "probe", Value(k));
   }
-  rt->advance(5);
+  rt->advance(5s);
   rt->shutdown();
   RunTimeline t = build_run_timeline({"feed", "rule"}, records, 5);
   EXPECT_EQ(spans(t, "e"), (Spans{{1.0, 1.4}, {2.0, 2.35}, {3.0, 3.1}}));

@@ -33,7 +33,7 @@ void Runtime::collect_feedback_events() {
   }
 }
 
-bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
+bool Runtime::answered_events_of(Connection& c, Nanos t, std::string* why) {
   for (const Connection::UnknownEvent& u : c.feedback) {
     // Answered: the feed processed a message published after the delivery was received, or
     // the message judged now was published after that (its process had it by then).
@@ -55,7 +55,7 @@ bool Runtime::answered_events_of(Connection& c, double t, std::string* why) {
 // Whether delivery `s` can no longer hide anything at `t`: every feed has answered it, or has
 // been silent for longer than any lifetime since it (see answered_events_of).
 static bool settled(const Runtime::RemoteModule::Sent& s, const Runtime::RemoteModule& m,
-                    double longest_lifetime, double t) {
+                    Nanos longest_lifetime, Nanos t) {
   for (const Runtime::Connection* feed : m.feeds) {
     if (s.number > feed->answered && std::max(s.time, feed->last_fed_at) + longest_lifetime >= t)
       return false;
@@ -63,7 +63,7 @@ static bool settled(const Runtime::RemoteModule::Sent& s, const Runtime::RemoteM
   return true;
 }
 
-void Runtime::delivered_to_remote(RemoteModule& m, double t, uint64_t message) {
+void Runtime::delivered_to_remote(RemoteModule& m, Nanos t, uint64_t message) {
   m.recent.push_back({++remote_sent_, t, message});
   while (!m.recent.empty() && settled(m.recent.front(), m, longest_lifetime_, t))
     m.recent.pop_front();

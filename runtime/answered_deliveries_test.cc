@@ -8,6 +8,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -46,7 +48,7 @@ struct ArmMediator {
   ArmMediator() {
     t.module("Src", {"out objects: int"});
     t.module("Arm", {"in cmd: int", "out status: bool"});
-    t.app.events.push_back({"e_idle", 0.5, "Arm.status", {}});
+    t.app.events.push_back({"e_idle", 500ms, "Arm.status", {}});
     t.connect("take", "Src.objects", "Arm.cmd", "e_idle");
     model::Connection& feed = t.connect(
         "status_feed", "Arm.status", "Arm.cmd", "false",
@@ -63,7 +65,9 @@ struct ArmMediator {
     o.transport = transport;
     rt = t.start(o);
   }
-  void at(double time, std::function<void()> f) { rt->executor().post(time, std::move(f)); }
+  void at(double time, std::function<void()> f) {
+    rt->executor().post(nanos_from_seconds(time), std::move(f));
+  }
   // Object lists and statuses from the other process, which had received `answered` commands.
   void objects(double time, uint64_t answered) {
     at(time, [this, answered] { transport->arrive("Src.objects", Value(int64_t{1}), answered); });
@@ -83,7 +87,7 @@ TEST(AnsweredDeliveries, ARuleWaitsForTheRemoteModuleToAnswerItsDelivery) {
   m.objects(0.35, 1);       // not: busy
   m.status(0.4, true, 1);   // idle again
   m.objects(0.45, 1);       // delivered
-  m.rt->advance(1.0);
+  m.rt->advance(1s);
   EXPECT_EQ(m.transport->delivered, (std::vector<double>{0.1, 0.45}));
 }
 
@@ -101,7 +105,7 @@ TEST(AnsweredDeliveries, AStaleStatusArrivingLateDoesNotEndTheWait) {
   m.objects(1.05, 0);      // the stale entry lapsed: e_idle absent
   m.status(1.1, true, 1);  // the answer: idle
   m.objects(1.15, 1);      // delivered
-  m.rt->advance(2.0);
+  m.rt->advance(2s);
   EXPECT_EQ(m.transport->delivered, (std::vector<double>{0.1, 1.15}));
 }
 
@@ -116,7 +120,7 @@ TEST(AnsweredDeliveries, ASilentModuleStopsBlockingOnceItsEntriesLapse) {
   m.objects(0.7, 0);  // past the lifetime; e_idle lapsed at 0.5 anyway
   m.status(0.8, true, 1);
   m.objects(0.85, 1);
-  m.rt->advance(1.0);
+  m.rt->advance(1s);
   EXPECT_EQ(m.transport->delivered, (std::vector<double>{0.1, 0.85}));
 }
 

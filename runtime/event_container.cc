@@ -4,7 +4,7 @@
 
 namespace arbc {
 
-void EventContainer::set(int event, int owner, double expiry) {
+void EventContainer::set(int event, int owner, Nanos expiry) {
   if (static_cast<int>(entries_.size()) <= event) entries_.resize(static_cast<size_t>(event) + 1);
   std::vector<Entry>& list = entries_[static_cast<size_t>(event)];
   auto it =
@@ -29,17 +29,17 @@ bool EventContainer::unset(int event, int owner) {
   return true;
 }
 
-bool EventContainer::has(std::string_view name, double now) {
+bool EventContainer::has(std::string_view name, Nanos now) {
   int id = index_.find(name);
   return id >= 0 && has(id, now);
 }
 
-void EventContainer::expire(double now) {
-  double next = kNever;
+void EventContainer::expire(Nanos now) {
+  Nanos next = kNever;
   for (size_t event = 0; event < entries_.size(); ++event) {
     std::vector<Entry>& list = entries_[event];
     for (size_t i = 0; i < list.size();) {
-      if (reached(now, list[i].expiry)) {
+      if (now >= list[i].expiry && list[i].expiry != kNever) {  // kNever: until unset
         Entry gone = list[i];
         list.erase(list.begin() + static_cast<long>(i));
         if (on_expiry_) on_expiry_(static_cast<int>(event), gone.owner, gone.expiry);

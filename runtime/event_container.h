@@ -1,6 +1,6 @@
 // The event container of one input port (docs/design.md#events-and-lifetimes): entries (event,
-// owner connection, expiry). An event is present at time t iff some owner's entry has t < expiry
-// (instants within core/instant.h's kSameInstant of the expiry count as the expiry).
+// owner connection, expiry). An event is present at time t iff some owner's entry has t < expiry,
+// both whole nanoseconds (core/instant.h): at the expiry instant itself it is absent.
 //
 // Presence is kept as a bit mask so that a compiled constraint decides in nanoseconds; the
 // earliest expiry is kept too, so that checking for lapsed entries costs one comparison
@@ -8,7 +8,6 @@
 #pragma once
 
 #include <functional>
-#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -17,42 +16,40 @@
 
 namespace arbc {
 
-inline constexpr double kNever = std::numeric_limits<double>::infinity();
-
 class EventContainer {
  public:
   // Called for each entry that lapses: (event id, owner, expiry time).
-  using ExpiryObserver = std::function<void(int event, int owner, double expiry)>;
+  using ExpiryObserver = std::function<void(int event, int owner, Nanos expiry)>;
 
   EventIndex& index() { return index_; }
   const EventIndex& index() const { return index_; }
   void on_expiry(ExpiryObserver observer) { on_expiry_ = std::move(observer); }
 
   // Inserts or refreshes owner's entry for event; expiry kNever: until unset.
-  void set(int event, int owner, double expiry);
+  void set(int event, int owner, Nanos expiry);
   // Removes owner's own entry for event; returns whether there was one. Other owners'
   // entries stay, so the event may still be present.
   bool unset(int event, int owner);
 
   // The present events at time now (drops lapsed entries first). `now` must not go back.
-  const EventMask& present(double now) {
-    if (reached(now, next_expiry_)) expire(now);
+  const EventMask& present(Nanos now) {
+    if (now >= next_expiry_) expire(now);
     return present_;
   }
-  bool has(int event, double now) { return present(now).test(event); }
-  bool has(std::string_view name, double now);
+  bool has(int event, Nanos now) { return present(now).test(event); }
+  bool has(std::string_view name, Nanos now);
 
  private:
   struct Entry {
     int owner;
-    double expiry;
+    Nanos expiry;
   };
-  void expire(double now);
+  void expire(Nanos now);
 
   EventIndex index_;
   std::vector<std::vector<Entry>> entries_;  // by event id
   EventMask present_;
-  double next_expiry_ = kNever;
+  Nanos next_expiry_ = kNever;
   ExpiryObserver on_expiry_;
 };
 

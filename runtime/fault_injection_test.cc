@@ -18,6 +18,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::Sink;
@@ -103,7 +105,7 @@ FaultRun run(const Fault& fault) {
   for (int i = 1; i <= 3; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
   for (double at : {1.25, 1.75, 3.25, 4.0}) TestApp::publish_at(*rt, at, "Src2", "y", Value(7));
   if (fault.inject) fault.inject(*rt);
-  rt->advance(5);
+  rt->advance(5s);
   rt->shutdown();
   for (const ConnectionStats& s : rt->stats()) r.stats[s.name] = s;
   r.plugins = rt->plugin_stats();
@@ -258,8 +260,9 @@ TEST(FaultInjectionTest, HelperMisuseInAcceptDropsTheMessage) {
       {"PortMonitor.unsetEvent()", "bad argument #1 to 'unsetEvent'"},
       {"PortMonitor.hasEvent(nil)", "bad argument #1 to 'hasEvent'"},
       {"PortMonitor.setConstraint('e and (')", "setConstraint: "},
-      {"PortMonitor.setTrigInterval(0)", "interval must be > 0"},
-      {"PortMonitor.setTrigInterval(0/0)", "interval must be > 0"},
+      {"PortMonitor.setTrigInterval(0)", "interval must be at least 0.000000001 seconds"},
+      {"PortMonitor.setTrigInterval(0/0)", "interval must be at least 0.000000001 seconds"},
+      {"PortMonitor.setTrigInterval(4e-10)", "interval must be at least 0.000000001 seconds"},
       {"print(1, setmetatable({}, {__tostring = function() error('no text') end}))", "no text"},
       {"print(setmetatable({}, {__tostring = function() while true do end end}))",
        "instruction budget"},
@@ -453,7 +456,7 @@ TEST(FaultInjectionTest, BurstOverflowsOnlyItsOwnQueue) {
   f.source = "Src2.w";
   f.options.queue_capacity = 16;
   f.inject = [](Runtime& rt) {
-    rt.executor().post(2.0, [&rt] {
+    rt.executor().post(2s, [&rt] {
       for (int i = 0; i < 1000; ++i) rt.publish("Src2", "w", Value(i));
     });
   };

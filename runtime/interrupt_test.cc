@@ -10,6 +10,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -109,7 +111,7 @@ TEST(InterruptTest, BusyNamesTheMonitorAndItsCallbackFromAnotherThread) {
     seen = true;
   });
   TestApp::publish_at(*rt, 1, "Src", "x", Value(7));
-  rt->advance(2);
+  rt->advance(2s);
   watchdog.join();
   EXPECT_EQ(described, "the monitor of connection 'chatty', in accept");
   EXPECT_EQ(Runtime::describe(rt->busy()), "");

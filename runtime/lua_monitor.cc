@@ -12,13 +12,15 @@ MonitorHost* host_of(lua_State* L) {
   return static_cast<MonitorHost*>(lua_touserdata(L, lua_upvalueindex(1)));
 }
 
+// Lua's seconds to the runtime's nanoseconds: the nearest one (core/instant.h), so a lifetime
+// of 0.1 is 100 ms exactly and two times that round to the same nanosecond are one instant.
 int api_set_event(lua_State* L) {
   const char* name = luaL_checkstring(L, 1);
-  std::optional<double> lifetime;
+  std::optional<Nanos> lifetime;
   if (!lua_isnoneornil(L, 2)) {
     double s = luaL_checknumber(L, 2);
     if (!(s >= 0)) return luaL_error(L, "setEvent: lifetime must be >= 0 seconds, got %f", s);
-    lifetime = s;
+    lifetime = nanos_from_seconds(s);
   }
   host_of(L)->set_event(name, lifetime);
   return 0;
@@ -79,13 +81,16 @@ int api_get_constraint(lua_State* L) {
 
 int api_set_trig_interval(lua_State* L) {
   double s = luaL_checknumber(L, 1);
-  if (!(s > 0)) return luaL_error(L, "setTrigInterval: interval must be > 0 seconds");
-  host_of(L)->set_trig_interval(s);
+  // Under half a nanosecond would be no interval at all: trig again and again at one instant.
+  Nanos interval = nanos_from_seconds(s);
+  if (!(interval > Nanos(0)))
+    return luaL_error(L, "setTrigInterval: interval must be at least 0.000000001 seconds (1 ns)");
+  host_of(L)->set_trig_interval(interval);
   return 0;
 }
 
 int api_now(lua_State* L) {
-  lua_pushnumber(L, host_of(L)->now());
+  lua_pushnumber(L, seconds_of(host_of(L)->now()));
   return 1;
 }
 

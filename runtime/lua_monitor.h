@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/instant.h"
 #include "core/script_lines.h"
 #include "core/type.h"
 #include "core/value.h"
@@ -27,18 +28,20 @@
 namespace arbc {
 
 // What a monitor's PortMonitor calls act on: its connection and the destination's container.
+// Times and lifetimes are the runtime's whole nanoseconds (core/instant.h); the Lua API's
+// seconds are converted in lua_monitor.cc, with nanos_from_seconds.
 class MonitorHost {
  public:
   virtual ~MonitorHost() = default;
-  virtual double now() = 0;
-  virtual void set_event(std::string_view name, std::optional<double> lifetime) = 0;
+  virtual Nanos now() = 0;
+  virtual void set_event(std::string_view name, std::optional<Nanos> lifetime) = 0;
   virtual void unset_event(std::string_view name) = 0;
   virtual bool has_event(std::string_view name) = 0;
   // The constraint is the model's (app.json), installed by the runtime: this only checks that
   // text is the same formula. False and *err on a syntax error or another constraint.
   virtual bool set_constraint(std::string_view text, std::string* err) = 0;
   virtual std::string get_constraint() = 0;
-  virtual void set_trig_interval(double seconds) = 0;
+  virtual void set_trig_interval(Nanos interval) = 0;
   virtual void print(const std::string& line) = 0;
 };
 

@@ -1,8 +1,6 @@
 // The message path of docs/design.md#the-message-path: queueing, accept, constraint, throttle,
 // update, delivery (which sets a `by priority` rule's activity event); drops, script failures
 // and quarantine; the PortMonitor calls of a connection.
-#include <cmath>
-
 #include "core/instant.h"
 #include "runtime/runtime_internal.h"
 
@@ -148,7 +146,7 @@ void Runtime::drain(Connection& c) {
 struct Runtime::Passing {
   Runtime* runtime;
   Connection* connection;
-  double t;
+  Nanos t;
   bool refused = false;  // accepted, then not selected or throttled: `reason`, `detail`
   DropReason reason = DropReason::NotSelected;
   std::string detail;
@@ -174,7 +172,7 @@ bool Runtime::after_accept(void* passing, bool accepted) {
 // Steps 2 and 3 of the path: the constraint, on the container as accept left it, never on
 // events not known yet; then the throttle, which counts deliveries, so only selected messages
 // are throttled. False with the drop's reason and detail when the message goes no further.
-bool Runtime::selected(Connection& c, double t, DropReason* reason, std::string* detail) {
+bool Runtime::selected(Connection& c, Nanos t, DropReason* reason, std::string* detail) {
   *reason = DropReason::NotSelected;
   if (!c.unknown.empty() && !knows_events_of(c, t, detail)) return false;
   if (!c.feedback.empty() && !answered_events_of(c, t, detail)) return false;
@@ -182,7 +180,7 @@ bool Runtime::selected(Connection& c, double t, DropReason* reason, std::string*
     if (c.is_feed) *reason = DropReason::Feed;
     return false;
   }
-  if (c.throttle && !reached(t, c.last_delivery + *c.throttle)) {
+  if (c.throttle && t < c.last_delivery + *c.throttle) {  // exact: t and the period are integers
     *reason = DropReason::Throttled;
     return false;
   }
@@ -206,7 +204,7 @@ void Runtime::rejected(Connection& c, const std::string& reason) {
 // The path: 1. accept, 2. the constraint, 3. the throttle, 4. update, then delivery. With a
 // monitor, steps 1 to 4 run in one protected call into its script (LuaMonitor::pass).
 void Runtime::process(Connection& c, const Value& msg) {
-  double t = now();
+  Nanos t = now();
   if (!c.monitor || !(c.has_accept || c.has_update)) {
     DropReason reason;
     std::string detail;
@@ -248,7 +246,7 @@ void Runtime::process(Connection& c, const Value& msg) {
   deliver(c, t, passage.updated ? passage.output : msg);
 }
 
-void Runtime::deliver(Connection& c, double t, const Value& delivered) {
+void Runtime::deliver(Connection& c, Nanos t, const Value& delivered) {
   c.consecutive_errors = 0;
   c.last_delivery = t;
   ++c.stats.delivered;
@@ -263,7 +261,7 @@ void Runtime::deliver(Connection& c, double t, const Value& delivered) {
     f->message = c.message;
     process(*f, delivered);
   }
-  Delivery d{c.destination->port, delivered, c.name, c.model->source, t};
+  Delivery d{c.destination->port, delivered, c.name, c.model->source, seconds_of(t)};
   if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
   if (loops_back_) {
     to_module(*c.destination, d);
@@ -314,7 +312,11 @@ void Runtime::schedule_trig(Connection& c, bool restart) {
     c.trig_runs = 0;
   }
   ++c.trig_runs;
-  double at = c.trig_start + static_cast<double>(c.trig_runs) * c.trig_interval;
+  // trig_runs intervals on, exactly; kNever once that would pass it (never reached in a run).
+  uint64_t most = static_cast<uint64_t>((kNever - c.trig_start) / c.trig_interval);
+  Nanos at = c.trig_runs > most
+                 ? kNever
+                 : c.trig_start + c.trig_interval * static_cast<int64_t>(c.trig_runs);
   c.trig_task = executor_->post(at, [this, &c] {
     c.trig_task = 0;
     if (c.quarantined || !c.monitor) return;
@@ -334,25 +336,25 @@ void Runtime::schedule_trig(Connection& c, bool restart) {
 
 // --- PortMonitor calls -------------------------------------------------------------------
 
-double Runtime::Connection::now() { return runtime->now(); }
+Nanos Runtime::Connection::now() { return runtime->now(); }
 
 // Without a lifetime, the one app.json declares for the event (none: until unset).
-void Runtime::Connection::set_event(std::string_view event, std::optional<double> lifetime) {
+void Runtime::Connection::set_event(std::string_view event, std::optional<Nanos> lifetime) {
   if (!lifetime) lifetime = runtime->declared_lifetime(event);
-  double t = runtime->now();
+  Nanos t = runtime->now();
   EventContainer& box = destination->container;
   int id = box.index().intern(event);
-  double expiry = lifetime ? t + *lifetime : kNever;
+  Nanos expiry = lifetime ? later(t, *lifetime) : kNever;
   box.set(id, index, expiry);
-  runtime->trace_.event(t, destination->qualified, "set", event, name, lifetime ? expiry : -1);
+  runtime->trace_.event(t, destination->qualified, "set", event, name, expiry);
 }
 
 void Runtime::Connection::unset_event(std::string_view event) {
-  double t = runtime->now();
+  Nanos t = runtime->now();
   EventContainer& box = destination->container;
   box.present(t);  // lapse expired entries first, so the trace shows expiry before unset
   if (box.unset(box.index().find(event), index)) {
-    runtime->trace_.event(t, destination->qualified, "unset", event, name, -1);
+    runtime->trace_.event(t, destination->qualified, "unset", event, name, kNever);
   }
 }
 
@@ -380,8 +382,8 @@ bool Runtime::Connection::set_constraint(std::string_view text, std::string* err
   return false;
 }
 
-void Runtime::Connection::set_trig_interval(double seconds) {
-  trig_interval = seconds;
+void Runtime::Connection::set_trig_interval(Nanos interval) {
+  trig_interval = interval;
   if (!quarantined && has_trig && runtime->started_) runtime->schedule_trig(*this, true);
 }
 

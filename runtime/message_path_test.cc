@@ -4,6 +4,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -17,11 +19,11 @@ TEST(MessagePathTest, OrderIsKeptPerConnection) {
             "PortMonitor.update = function(m) return m * 2 end\n");
   auto rt = t.start();
   // Interleave bursts published in one callback with single messages at other times.
-  rt->executor().post(1.0, [&] {
+  rt->executor().post(1s, [&] {
     for (int i = 0; i < 50; ++i) rt->publish("Src", "x", Value(i));
   });
   for (int i = 50; i < 100; ++i) TestApp::publish_at(*rt, 1.0 + i * 0.01, "Src", "x", Value(i));
-  rt->advance(10);
+  rt->advance(10s);
   std::vector<int64_t> seen;
   for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
   std::vector<int64_t> expected;
@@ -43,10 +45,10 @@ TEST(MessagePathTest, QueueBoundDropsTheExcessAndCountsIt) {
   RunOptions o;
   o.queue_capacity = 10;
   auto rt = t.start(o);
-  rt->executor().post(0.5, [&] {
+  rt->executor().post(500ms, [&] {
     for (int i = 0; i < 25; ++i) rt->publish("Src", "x", Value(i));
   });
-  rt->advance(1);
+  rt->advance(1s);
   auto& got = TestApp::sink(*rt).got;
   ASSERT_EQ(got.size(), 10u);
   for (int i = 0; i < 10; ++i) EXPECT_EQ(got[i].value.as_int(), i);
@@ -69,7 +71,7 @@ TEST(MessagePathTest, EventExpiresExactlyAtItsLifetime) {
   TestApp::publish_at(*rt, 1.4999999, "Src", "x", Value(3));
   TestApp::publish_at(*rt, 1.5, "Src", "x", Value(4));  // t == expiry: absent
   TestApp::publish_at(*rt, 2.0, "Src", "x", Value(5));
-  rt->advance(3);
+  rt->advance(3s);
   std::vector<int64_t> seen;
   for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
   EXPECT_EQ(seen, (std::vector<int64_t>{2, 3}));
@@ -98,7 +100,7 @@ TEST(MessagePathTest, UnsetRemovesOnlyTheCallersOwnEntry) {
   TestApp::publish_at(*rt, 5, "Src", "x", Value(2));      // delivered
   TestApp::publish_at(*rt, 6, "Src", "b", Value(false));  // the last entry goes
   TestApp::publish_at(*rt, 7, "Src", "x", Value(3));      // not selected
-  rt->advance(8);
+  rt->advance(8s);
   std::vector<int64_t> seen;
   for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
   EXPECT_EQ(seen, (std::vector<int64_t>{1, 2}));
@@ -118,7 +120,7 @@ TEST(MessagePathTest, ConstraintIsReadAfterAccept) {
   TestApp::publish_at(*rt, 1, "Src", "x", Value(1));  // sets its own event: delivered
   TestApp::publish_at(*rt, 1, "Src", "x", Value(0));  // unsets it first: not selected
   TestApp::publish_at(*rt, 2, "Src", "x", Value(5));
-  rt->advance(3);
+  rt->advance(3s);
   std::vector<int64_t> seen;
   for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
   EXPECT_EQ(seen, (std::vector<int64_t>{1, 5}));
@@ -135,7 +137,7 @@ TEST(MessagePathTest, FeedsNeverDeliver) {
             model::ConnectionKind::Feed);
   auto rt = t.start();
   for (int i = 0; i < 20; ++i) TestApp::publish_at(*rt, i * 0.1, "Src", "x", Value(i));
-  rt->advance(5);
+  rt->advance(5s);
   EXPECT_TRUE(TestApp::sink(*rt).got.empty());
   auto s = TestApp::stats_of(rt->stats(), "feed");
   EXPECT_EQ(s.delivered, 0u);
@@ -153,7 +155,7 @@ TEST(MessagePathTest, FeedWhoseAcceptReturnsFalseCountsAsFeed) {
   t.connect("rule", "Src.x", "Sink.x", "e");
   auto rt = t.start();
   for (int i = 0; i < 5; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
-  rt->advance(6);
+  rt->advance(6s);
   EXPECT_EQ(TestApp::stats_of(rt->stats(), "feed").drops(DropReason::Feed), 5u);
   EXPECT_EQ(TestApp::stats_of(rt->stats(), "feed").drops(DropReason::Rejected), 0u);
   EXPECT_EQ(TestApp::stats_of(rt->stats(), "rule").delivered, 5u);
@@ -169,7 +171,7 @@ TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
             "  return true\n"
             "end\n",
             model::ConnectionKind::Feed);
-  t.connect("rule", "Src.x", "Sink.x", "e").throttle = 1.0;
+  t.connect("rule", "Src.x", "Sink.x", "e").throttle = 1s;
   auto rt = t.start();
   TestApp::publish_at(*rt, 0.0, "Src", "x", Value(0));  // not selected (e absent)
   TestApp::publish_at(*rt, 0.05, "Src", "f", Value(true));
@@ -181,7 +183,7 @@ TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
   TestApp::publish_at(*rt, 1.25, "Src", "x", Value(4));  // delivered (1.15 did not count)
   TestApp::publish_at(*rt, 2.0, "Src", "x", Value(5));   // throttled: 0.75 s after 4
   TestApp::publish_at(*rt, 2.25, "Src", "x", Value(6));  // delivered: exactly 1 s after
-  rt->advance(3);
+  rt->advance(3s);
   std::vector<int64_t> seen;
   for (const auto& g : TestApp::sink(*rt).got) seen.push_back(g.value.as_int());
   EXPECT_EQ(seen, (std::vector<int64_t>{1, 4, 6}));
@@ -191,16 +193,16 @@ TEST(MessagePathTest, ThrottleCountsDeliveriesNotArrivals) {
 }
 
 // In doubles 0.2 + 0.1 > 0.3; the proof's reals say a 0.1 s throttle after a delivery at
-// 0.2 s has ended at 0.3 s, and so must the runtime (core/instant.h).
+// 0.2 s has ended at 0.3 s, and so does the runtime, in nanoseconds (core/instant.h).
 TEST(MessagePathTest, AThrottlePeriodEndsAtItsEndDespiteRounding) {
   TestApp t;
   t.module("Src", {"out x: int"});
   t.module("Sink", {"in x: int"});
-  t.connect("rule", "Src.x", "Sink.x", "true").throttle = 0.1;
+  t.connect("rule", "Src.x", "Sink.x", "true").throttle = 100ms;
   auto rt = t.start();
   TestApp::publish_at(*rt, 0.2, "Src", "x", Value(1));
   TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));
-  rt->advance(1);
+  rt->advance(1s);
   EXPECT_EQ(TestApp::sink(*rt).got.size(), 2u);
 }
 
@@ -216,7 +218,7 @@ TEST(MessagePathTest, NoValueIsADropNotAnError) {
   auto rt = t.start();
   for (int i = 0; i < 8; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value::list({}));
   TestApp::publish_at(*rt, 9, "Src", "x", Value::list({7, 8}));
-  rt->advance(10);
+  rt->advance(10s);
   auto s = TestApp::stats_of(rt->stats(), "first");
   EXPECT_EQ(s.drops(DropReason::NoValue), 8u);
   EXPECT_EQ(s.errors, 0u);
@@ -237,7 +239,7 @@ TEST(MessagePathTest, AcceptMayGiveTheDropReason) {
             "end\n");
   auto rt = t.start();
   for (int i = 0; i < 4; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
-  rt->advance(5);
+  rt->advance(5s);
   auto s = TestApp::stats_of(rt->stats(), "c");
   EXPECT_EQ(s.delivered, 1u);
   EXPECT_EQ(s.drops(DropReason::NoValue), 1u);
@@ -268,7 +270,7 @@ TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
   auto rt = t.start();
   TestApp::publish_at(*rt, 0.9, "Src", "x", Value(0));  // accepted, e_ball absent: not selected
   TestApp::publish_at(*rt, 1.1, "Src", "x", Value(1));  // 4th trig at 1.0 set e_ball
-  rt->advance(2);
+  rt->advance(2s);
   auto s = TestApp::stats_of(rt->stats(), "c");
   EXPECT_EQ(s.errors, 0u) << (t.reports.empty() ? "" : t.reports[0]);
   EXPECT_EQ(s.drops(DropReason::NotSelected), 1u);
@@ -278,7 +280,9 @@ TEST(MessagePathTest, SetConstraintAndHasEventAndTrig) {
 // Trig k runs at k * interval from when the interval was set, not at the previous trig plus the
 // interval: 20,000 additions of 1 ms drift off the instants the spec's `every 1ms` names, and an
 // event a trig sets then outlives the instant its lifetime ends at (tests/drt: the random
-// differential test saw it 1.2e-12 s late after 608 trigs of 200 ms).
+// differential test saw it 1.2e-12 s late after 608 trigs of 200 ms). PortMonitor.now() is the
+// double nearest the instant's nanoseconds over 1e9, which for k ms is k / 1000 (k * 0.001 is
+// not always that double).
 TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
   TestApp t;
   t.module("Src", {"out x: int"});
@@ -287,11 +291,11 @@ TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
             "k, late = 0, 0\n"
             "PortMonitor.create = function(o) PortMonitor.setTrigInterval(0.001) return true end\n"
             "PortMonitor.trig = function() k = k + 1\n"
-            "  if PortMonitor.now() ~= k * 0.001 then late = late + 1 end end\n"
+            "  if PortMonitor.now() ~= k / 1000 then late = late + 1 end end\n"
             "PortMonitor.accept = function(m) return k > 19000 and late == 0 end\n");
   auto rt = t.start();
   TestApp::publish_at(*rt, 19.9995, "Src", "x", Value(0));
-  rt->advance(20);
+  rt->advance(20s);
   auto s = TestApp::stats_of(rt->stats(), "c");
   EXPECT_EQ(s.errors, 0u) << (t.reports.empty() ? "" : t.reports[0]);
   EXPECT_EQ(s.delivered, 1u);

@@ -7,6 +7,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -52,13 +54,13 @@ TEST(PlacementTest, ModuleSetContainsWhatItNames) {
 // generously for a loaded machine, far less than the 2 s an unscaled clock takes.
 TEST(PlacementTest, ScaledRealtimeExecutorRunsFasterThanTheWallClock) {
   RealtimeExecutor ex(20);
-  double ran_at = -1;
-  ex.post(1.5, [&] { ran_at = ex.now(); });
+  Nanos ran_at{-1};
+  ex.post(1500ms, [&] { ran_at = ex.now(); });
   auto begin = std::chrono::steady_clock::now();
-  ex.run(2.0);
+  ex.run(2s);
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  EXPECT_GE(ran_at, 1.5);
-  EXPECT_GE(ex.now(), 2.0);
+  EXPECT_GE(ran_at, 1500ms);
+  EXPECT_GE(ex.now(), 2s);
   EXPECT_GE(wall, 0.1 - 1e-3);
   EXPECT_LT(wall, 1.5) << "2 s at scale 20 took " << wall << " s of wall time";
 }

@@ -31,7 +31,7 @@ TEST(PluginTest, LoadsAPluginAndRunsTheAppToSuccess) {
   EXPECT_EQ(rt->stop_reason(), "enough commands");
   ASSERT_TRUE(rt->environment());
   EXPECT_TRUE(rt->environment()->success()) << rt->environment()->summary();
-  EXPECT_LT(rt->now(), 60);
+  EXPECT_LT(rt->now(), std::chrono::seconds(60));
 }
 
 TEST(PluginTest, MissingLibraryIsAClearError) {

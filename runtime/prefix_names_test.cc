@@ -6,6 +6,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 const char* kNames[] = {"e", "e_ball", "e1", "e10", "a"};
@@ -58,7 +60,7 @@ TEST(PrefixNamesTest, RuntimeSelectsByWholeNames) {
   t.connect("r_ball", "Src.x", "Sink.x", "e_ball and e10 and not e and not e1 and not a");
   auto rt = t.start();
   testing::TestApp::publish_at(*rt, 1, "Src", "x", Value(1));
-  rt->advance(2);
+  rt->advance(2s);
   auto stats = rt->stats();
   EXPECT_EQ(testing::TestApp::stats_of(stats, "r_e").delivered, 0u);
   EXPECT_EQ(testing::TestApp::stats_of(stats, "r_e1").delivered, 0u);

@@ -1,7 +1,5 @@
 #include "runtime/property_watch.h"
 
-#include <limits>
-
 #include "core/constraint.h"
 #include "core/duration_literal.h"
 #include "core/instant.h"
@@ -12,7 +10,7 @@ namespace {
 
 using Kind = model::TemporalProperty::Kind;
 
-std::string at(double t) { return duration_literal(t); }
+std::string at(Nanos t) { return duration_literal(t); }
 
 }  // namespace
 
@@ -26,7 +24,7 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
 PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules)
     : p_(std::move(p)), rules_(std::move(port_rules)) {}
 
-void PropertyWatch::broken(double from, double t, std::string what) {
+void PropertyWatch::broken(Nanos from, Nanos t, std::string what) {
   if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
 }
 
@@ -46,7 +44,7 @@ void PropertyWatch::container(const TraceRecord& r) {
   box_.apply(r);
   if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
   close_windows_before(r.t);
-  if (!was && box_.present(r.t).count(p_.event)) pending_.push_back({r.t, r.t + p_.window});
+  if (!was && box_.present(r.t).count(p_.event)) pending_.push_back({r.t, later(r.t, p_.window)});
 }
 
 void PropertyWatch::decision(const TraceRecord& r) {
@@ -55,7 +53,7 @@ void PropertyWatch::decision(const TraceRecord& r) {
     if (breach_) return;
     respond(r, box_.present(r.t));
     bool trigger = p_.event.empty() && r.kind == TraceKind::Deliver && r.connection == p_.other;
-    if (trigger) pending_.push_back({r.t, r.t + p_.window});
+    if (trigger) pending_.push_back({r.t, later(r.t, p_.window)});
     return;
   }
   if (r.kind == TraceKind::Deliver) delivery(r);
@@ -64,11 +62,11 @@ void PropertyWatch::decision(const TraceRecord& r) {
 // Spacing, absence, precedence and stability read the port's deliveries.
 void PropertyWatch::delivery(const TraceRecord& r) {
   const std::string& who = r.connection;
-  double t = r.t;
+  Nanos t = r.t;
   if (p_.kind == Kind::Spacing && who == p_.rule) {
     const std::string& before = p_.other.empty() ? p_.rule : p_.other;
     auto it = last_.find(before);
-    if (it != last_.end() && !reached(t, it->second + p_.window)) {
+    if (it != last_.end() && t < later(it->second, p_.window)) {
       broken(it->second, t,
              p_.other.empty() ? "'" + who + "' delivered at " + at(it->second) + " and at " + at(t)
                               : "'" + who + "' delivered at " + at(t) + ", '" + before + "' at " +
@@ -86,7 +84,7 @@ void PropertyWatch::delivery(const TraceRecord& r) {
     armed_ = false;
   }
   if (p_.kind == Kind::Stability && last_rule_ && who != *last_rule_) {
-    if (last_switch_ && !reached(t, *last_switch_ + p_.window))
+    if (last_switch_ && t < later(*last_switch_, p_.window))
       broken(*last_switch_, t,
              "the deliverer switched at " + at(*last_switch_) + " and at " + at(t));
     last_switch_ = t;
@@ -110,7 +108,7 @@ void PropertyWatch::respond(const TraceRecord& r, const std::set<std::string>& s
   if (deliver || !evaluate(p_.condition, state)) pending_.clear();
 }
 
-void PropertyWatch::close_windows_before(double t) {
+void PropertyWatch::close_windows_before(Nanos t) {
   for (const Trigger& g : pending_) {
     if (t > g.horizon) {
       broken(g.t, g.horizon,
@@ -121,12 +119,12 @@ void PropertyWatch::close_windows_before(double t) {
   }
 }
 
-void PropertyWatch::finish(double end) {
+void PropertyWatch::finish(Nanos end) {
   if (breach_ || p_.kind != Kind::Response) return;
   // A window that ends after the run is not judged: the answer might still have come.
   for (const Trigger& g : pending_) {
     if (g.horizon <= end) {
-      close_windows_before(std::numeric_limits<double>::infinity());
+      close_windows_before(kNever);
       return;
     }
   }

@@ -17,14 +17,15 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/instant.h"
 #include "runtime/trace_container.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
 
 struct PropertyBreach {
-  double from = 0;   // the first instant the breach involves (an earlier delivery, a trigger)
-  double t = 0;      // the instant the run broke the property
+  Nanos from{0};     // the first instant the breach involves (an earlier delivery, a trigger)
+  Nanos t{0};        // the instant the run broke the property
   std::string what;  // what happened, in words ("'ask' delivered at 0s and at 250ms")
 };
 
@@ -38,30 +39,30 @@ class PropertyWatch {
   void observe(const TraceRecord& r);
   // The run was observed up to `end`: a response trigger whose window closed by then and got no
   // answer breaks the property; one whose window ends later is not judged.
-  void finish(double end);
+  void finish(Nanos end);
 
   const std::optional<PropertyBreach>& breach() const { return breach_; }
 
  private:
   struct Trigger {
-    double t;
-    double horizon;
+    Nanos t;
+    Nanos horizon;
   };
 
   void container(const TraceRecord& r);
   void decision(const TraceRecord& r);
   void delivery(const TraceRecord& r);
   void respond(const TraceRecord& r, const std::set<std::string>& state);
-  void close_windows_before(double t);
-  void broken(double from, double t, std::string what);
+  void close_windows_before(Nanos t);
+  void broken(Nanos from, Nanos t, std::string what);
 
   model::TemporalProperty p_;
   std::set<std::string> rules_;
   TraceContainer box_;                    // the port's container
-  std::map<std::string, double> last_;    // rule -> its last delivery
+  std::map<std::string, Nanos> last_;     // rule -> its last delivery
   bool armed_ = false;                    // precedence
   std::optional<std::string> last_rule_;  // stability
-  std::optional<double> last_switch_;
+  std::optional<Nanos> last_switch_;
   std::vector<Trigger> pending_;  // response triggers not yet answered
   std::optional<PropertyBreach> breach_;
 };

@@ -7,10 +7,13 @@ namespace {
 
 using Kind = model::TemporalProperty::Kind;
 
+// The tests write times in seconds; the watch reads the runtime's nanoseconds.
+Nanos ns(double seconds) { return nanos_from_seconds(seconds); }
+
 TraceRecord deliver(double t, const std::string& rule, const std::string& port = "D.q") {
   TraceRecord r;
   r.kind = TraceKind::Deliver;
-  r.t = t;
+  r.t = ns(t);
   r.connection = rule;
   r.port = port;
   return r;
@@ -19,7 +22,7 @@ TraceRecord deliver(double t, const std::string& rule, const std::string& port =
 TraceRecord drop(double t, const std::string& rule) {
   TraceRecord r;
   r.kind = TraceKind::Drop;
-  r.t = t;
+  r.t = ns(t);
   r.connection = rule;
   r.reason = DropReason::NotSelected;
   return r;
@@ -29,12 +32,12 @@ TraceRecord event(double t, const std::string& op, const std::string& name,
                   const std::string& port = "D.q", double expiry = -1) {
   TraceRecord r;
   r.kind = TraceKind::Event;
-  r.t = t;
+  r.t = ns(t);
   r.op = op;
   r.event = name;
   r.owner = "feed";
   r.port = port;
-  r.expiry = expiry;
+  r.expiry = expiry < 0 ? kNever : ns(expiry);
   return r;
 }
 
@@ -43,7 +46,7 @@ model::TemporalProperty property(Kind kind, const std::string& rule, double wind
   p.kind = kind;
   p.port = "D.q";
   p.rule = rule;
-  p.window = window;
+  p.window = ns(window);
   p.condition = Constraint::constant(true);
   return p;
 }
@@ -53,7 +56,7 @@ std::string judge(const model::TemporalProperty& p, const std::vector<TraceRecor
                   double end = 100) {
   PropertyWatch w(p, {"a", "b"});
   for (const TraceRecord& r : records) w.observe(r);
-  w.finish(end);
+  w.finish(ns(end));
   return w.breach() ? w.breach()->what : "";
 }
 

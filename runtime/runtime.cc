@@ -26,8 +26,12 @@ std::mt19937_64 seeded_generator(uint64_t seed, std::string_view who) {
 
 // --- contexts ---------------------------------------------------------------------------
 
+// The module API's delays are seconds (runtime/module.h): to the nearest nanosecond
+// (core/instant.h), so that a delay of 0.1 after 0.2 s runs at 0.3 s exactly.
+static Nanos delay_of(double seconds) { return nanos_from_seconds(std::max(0.0, seconds)); }
+
 TimerId Runtime::ModuleSlot::schedule(double delay, std::function<void()> fn) {
-  return runtime->executor_->post(runtime->now() + std::max(0.0, delay),
+  return runtime->executor_->post(later(runtime->now(), delay_of(delay)),
                                   [this, fn = std::move(fn)] { guarded("timer", fn); });
 }
 
@@ -37,7 +41,7 @@ void Runtime::ModuleSlot::log(std::string_view message) {
 }
 
 TimerId Runtime::EnvironmentSlot::schedule(double delay, std::function<void()> fn) {
-  return runtime->executor_->post(runtime->now() + std::max(0.0, delay),
+  return runtime->executor_->post(later(runtime->now(), delay_of(delay)),
                                   [this, fn = std::move(fn)] { guarded("timer", fn); });
 }
 
@@ -52,7 +56,7 @@ void Runtime::EnvironmentSlot::log(std::string_view message) {
   runtime->report("environment: " + std::string(message));
 }
 
-std::optional<double> Runtime::declared_lifetime(std::string_view event) const {
+std::optional<Nanos> Runtime::declared_lifetime(std::string_view event) const {
   auto it = lifetimes_.find(event);
   return it == lifetimes_.end() ? std::nullopt : it->second;
 }
@@ -78,9 +82,9 @@ void Runtime::plugin_failed(PluginGuard& who, const char* callback, const std::s
   }
 }
 
-std::string Runtime::run_time_text(double t) const {
+std::string Runtime::run_time_text(Nanos t) const {
   // The run's end is not known yet, only the duration asked for.
-  return TimeFormat::for_run(options_.duration).text(t);
+  return TimeFormat::for_run(options_.duration).text(seconds_of(t));
 }
 
 void Runtime::report(const std::string& line) {
@@ -100,7 +104,7 @@ void Runtime::start() {
   start_time_ = now();
   if (options_.unknown_until_fed) collect_unknown_events();
   collect_feedback_events();
-  if (options_.report_silent_lapses) watch_lapses(0.1);
+  if (options_.report_silent_lapses) watch_lapses(std::chrono::milliseconds(100));
   if (environment_) {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
@@ -122,33 +126,38 @@ void Runtime::start() {
       quarantine(c, "create failed: " + c.create_failure, false);
       continue;
     }
-    if (c.trig_interval == 0 && c.model->trig_interval && *c.model->trig_interval > 0) {
+    if (c.trig_interval == Nanos(0) && c.model->trig_interval &&
+        *c.model->trig_interval > Nanos(0)) {
       c.trig_interval = *c.model->trig_interval;
     }
-    if (c.trig_interval > 0 && c.has_trig && c.trig_task == 0) schedule_trig(c, true);
+    if (c.trig_interval > Nanos(0) && c.has_trig && c.trig_task == 0) schedule_trig(c, true);
   }
   for (auto& m : modules_) m->guarded("start", [&] { m->module->start(); });
   for (auto& m : modules_) {
     double period = 0;
     m->guarded("tick_period", [&] { period = m->module->tick_period(); });
-    if (period > 0) schedule_tick(*m, now(), period, 1);
+    // At least a nanosecond: a period that rounds to none would tick at one instant forever.
+    if (period > 0) schedule_tick(*m, now(), std::max(Nanos(1), delay_of(period)), 1);
   }
 }
 
-// Tick k runs at origin + k * period (no drift from adding the period up).
-void Runtime::schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k) {
-  m.tick_task =
-      executor_->post(origin + static_cast<double>(k) * period, [this, &m, origin, period, k] {
-        m.guarded("tick", [&] { m.module->tick(); });  // a failing tick still ticks again
-        schedule_tick(m, origin, period, k + 1);
-      });
+// Tick k runs at origin + k * period (no drift from adding the period up; kNever past 64 bits).
+void Runtime::schedule_tick(ModuleSlot& m, Nanos origin, Nanos period, uint64_t k) {
+  auto n = static_cast<int64_t>(k);
+  Nanos at = period.count() > (kNever - origin).count() / n ? kNever : origin + n * period;
+  m.tick_task = executor_->post(at, [this, &m, origin, period, k] {
+    m.guarded("tick", [&] { m.module->tick(); });  // a failing tick still ticks again
+    schedule_tick(m, origin, period, k + 1);
+  });
 }
 
-void Runtime::advance(double until) { executor_->run(until); }
+void Runtime::advance(Nanos until) { executor_->run(until); }
 
 void Runtime::run() {
   start();
-  if (stop_reason_.empty()) advance(options_.duration);
+  // The run's length in the runtime's nanoseconds, at most kLongestDuration (core/instant.h).
+  if (stop_reason_.empty())
+    advance(std::min(nanos_from_seconds(options_.duration), kLongestDuration));
   if (options_.interrupt && options_.interrupt->load() && stop_reason_.empty()) {
     stop_reason_ = "interrupted";
     trace_.log(now(), "runtime", "stop: interrupted");
@@ -193,7 +202,7 @@ void Runtime::shutdown() {
     }
   }
   // Let the trace show every lapse up to the end of the run, and what was left queued.
-  double end = now();
+  Nanos end = now();
   for (auto& cp : connections_) {
     if (!cp->queue.empty()) trace_.pending(end, cp->name, cp->queue.size());
   }

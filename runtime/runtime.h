@@ -131,14 +131,14 @@ class Runtime {
   // Sets up the environment, creates monitors, starts modules and their ticks.
   void start();
   // Runs the executor until time `until` or a stop request.
-  void advance(double until);
+  void advance(Nanos until);
   // Stops modules, destroys monitors, finishes the environment, closes the trace.
   void shutdown();
 
   // Injects a message as if module.port (an output port) had published it.
   void publish(std::string_view module, std::string_view port, Value v);
 
-  double now() const { return executor_->now(); }
+  Nanos now() const { return executor_->now(); }
   Executor& executor() { return *executor_; }
   Module* module(std::string_view name);
   Environment* environment() { return environment_.get(); }
@@ -204,27 +204,27 @@ class Runtime {
   // The unknown-after-start rule: which feed-provided events each rule's constraint reads.
   void collect_unknown_events();
   // Removes what is known by now from c.unknown; false (with *why) while something is not.
-  bool knows_events_of(Connection& c, double t, std::string* why);
+  bool knows_events_of(Connection& c, Nanos t, std::string* why);
   // The deliveries-not-yet-answered rule (answered_deliveries.cc): which events each rule reads
   // from feeds of modules hosted elsewhere; whether all are answered at t (else *why); and the
   // bookkeeping of a delivery into a module hosted elsewhere.
   void collect_feedback_events();
-  bool answered_events_of(Connection& c, double t, std::string* why);
-  void delivered_to_remote(RemoteModule& m, double t, uint64_t message);
+  bool answered_events_of(Connection& c, Nanos t, std::string* why);
+  void delivered_to_remote(RemoteModule& m, Nanos t, uint64_t message);
   // An event entry lapsed in `in`'s container; reports it when its source went silent.
-  void lapsed(InPort& in, int event, int owner, double expiry);
+  void lapsed(InPort& in, int event, int owner, Nanos expiry);
   // Looks at every mediated container each `period` s, so that lapses are seen (and reported)
   // when they happen even when no message arrives any more.
-  void watch_lapses(double period);
+  void watch_lapses(Nanos period);
   void report(const std::string& line);
   // An instant of this run as its reports write it: in the unit of the run's duration, as
   // `arbc run`'s last line and the run report do (core/time_format.h).
-  std::string run_time_text(double t) const;
+  std::string run_time_text(Nanos t) const;
   struct Passing;
   static bool after_accept(void* passing, bool accepted);
-  bool selected(Connection& c, double t, DropReason* reason, std::string* detail);
+  bool selected(Connection& c, Nanos t, DropReason* reason, std::string* detail);
   void rejected(Connection& c, const std::string& reason);
-  void deliver(Connection& c, double t, const Value& delivered);
+  void deliver(Connection& c, Nanos t, const Value& delivered);
   void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
   void post_drain(Connection& c);  // one drain task per message, posted now
@@ -239,7 +239,7 @@ class Runtime {
   void plugin_failed(PluginGuard& who, const char* callback, const std::string& what);
   // The next trig of c; `restart`: the interval was (re)set now, so trig 1 is one interval on.
   void schedule_trig(Connection& c, bool restart);
-  void schedule_tick(ModuleSlot& m, double origin, double period, uint64_t k);
+  void schedule_tick(ModuleSlot& m, Nanos origin, Nanos period, uint64_t k);
   void publish_from(ModuleSlot& m, std::string_view port, Value&& v);
   // Loads c's monitor script (whose bytes must match the model's digest) and runs its create;
   // false with *error on bad input (a script that does not load, another constraint).
@@ -251,11 +251,11 @@ class Runtime {
   // A monitor's file as the user finds it: under the app directory.
   std::string monitor_path(const model::Connection& mc) const;
   // The lifetime app.json declares for `event` (none: until unset, also for unknown names).
-  std::optional<double> declared_lifetime(std::string_view event) const;
+  std::optional<Nanos> declared_lifetime(std::string_view event) const;
 
   model::App app_;
   std::string app_dir_;  // where the monitors are, as create() was given it
-  std::map<std::string, std::optional<double>, std::less<>> lifetimes_;  // app.json's events
+  std::map<std::string, std::optional<Nanos>, std::less<>> lifetimes_;  // app.json's events
   std::string scenario_;
   RunOptions options_;
   std::unique_ptr<Executor> executor_;
@@ -269,16 +269,16 @@ class Runtime {
   std::map<std::string, InPort*, std::less<>> inputs_by_name_;
   std::map<std::string, OutPort*, std::less<>> outputs_by_name_;
   std::map<std::string, RemoteModule, std::less<>> remote_modules_;  // by name; stable addresses
-  uint64_t arrivals_ = 0;        // messages from sources so far (each from_source call)
-  uint64_t remote_sent_ = 0;     // deliveries into modules hosted elsewhere so far
-  double longest_lifetime_ = 0;  // of app.json's events: how long delivery times matter
+  uint64_t arrivals_ = 0;      // messages from sources so far (each from_source call)
+  uint64_t remote_sent_ = 0;   // deliveries into modules hosted elsewhere so far
+  Nanos longest_lifetime_{0};  // of app.json's events: how long delivery times matter
   ModuleSet host_, mediate_;
   std::unique_ptr<TransportLink> link_;
   std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor
   bool loops_back_ = false;               // transport_->loops_back()
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
-  double start_time_ = 0;
+  Nanos start_time_{0};
   bool started_ = false, shut_down_ = false;
   BusyMarker busy_;
 };

@@ -201,7 +201,7 @@ void Runtime::create_ports(const model::Module& m, ModuleSlot* slot) {
       in->stats.port = qualified;
       InPort* raw = in.get();
       in->container.on_expiry(
-          [this, raw](int event, int owner, double expiry) { lapsed(*raw, event, owner, expiry); });
+          [this, raw](int event, int owner, Nanos expiry) { lapsed(*raw, event, owner, expiry); });
       inputs_by_name_.emplace(qualified, raw);
       in_ports_.push_back(std::move(in));
     } else {

@@ -2,7 +2,6 @@
 // and runtime_stats.cc. Not part of the public API.
 #pragma once
 
-#include <limits>
 #include <random>
 
 #include "runtime/ring_queue.h"
@@ -21,7 +20,7 @@ struct Runtime::RemoteModule {
   std::string name;
   struct Sent {
     uint64_t number = 0;  // among all deliveries into modules hosted elsewhere (1, 2, ...)
-    double time = 0;
+    Nanos time{0};
     uint64_t message = 0;  // the arrival it answered (Runtime::arrivals_)
   };
   std::deque<Sent> recent;
@@ -88,14 +87,14 @@ struct Runtime::Connection : MonitorHost {
   };
   RingQueue<Queued> queue;
   bool drain_posted = false;
-  std::optional<double> throttle;
-  double last_delivery = -std::numeric_limits<double>::infinity();
-  double trig_interval = 0;
+  std::optional<Nanos> throttle;
+  Nanos last_delivery = -kNever;  // none yet: no throttle period runs
+  Nanos trig_interval{0};
   Executor::TaskId trig_task = 0;
   // Trig k runs at trig_start + k * trig_interval (as module ticks do): adding the interval to
   // the last run's time drifts (600 runs of 0.2 s land 1.2e-12 s late), and an event a trig
   // sets then outlives the instant its lifetime ends at (tests/drt/cases/selection-trig-drift).
-  double trig_start = 0;
+  Nanos trig_start{0};
   uint64_t trig_runs = 0;
 
   // The unknown-after-start rule (RunOptions::unknown_until_fed): the feed-provided events the
@@ -104,7 +103,7 @@ struct Runtime::Connection : MonitorHost {
   struct UnknownEvent {
     std::string event;
     const Connection* feed = nullptr;
-    std::optional<double> lifetime;
+    std::optional<Nanos> lifetime;
   };
   std::vector<UnknownEvent> unknown;
   // The deliveries-not-yet-answered rule: the events the constraint reads that a feed from a
@@ -113,10 +112,10 @@ struct Runtime::Connection : MonitorHost {
   // How many deliveries into modules hosted elsewhere the messages processed answer: the most
   // of any message so far (a feed), and the message being processed.
   uint64_t answered = 0, incoming_answered = 0;
-  double last_fed_at = -std::numeric_limits<double>::infinity();  // a feed's last accepted message
-  uint64_t message = 0;  // the arrival number of the message being processed
+  Nanos last_fed_at = -kNever;  // a feed's last accepted message (-kNever: none)
+  uint64_t message = 0;         // the arrival number of the message being processed
   bool fed = false;
-  double last_arrival = -std::numeric_limits<double>::infinity();
+  Nanos last_arrival = -kNever;            // none yet
   std::set<std::string> silence_reported;  // events reported lapsed since the last arrival
 
   int consecutive_errors = 0;
@@ -125,13 +124,13 @@ struct Runtime::Connection : MonitorHost {
   ConnectionStats stats;
 
   // MonitorHost: PortMonitor calls from this connection's script.
-  double now() override;
-  void set_event(std::string_view event, std::optional<double> lifetime) override;
+  Nanos now() override;
+  void set_event(std::string_view event, std::optional<Nanos> lifetime) override;
   void unset_event(std::string_view event) override;
   bool has_event(std::string_view event) override;
   bool set_constraint(std::string_view text, std::string* err) override;
   std::string get_constraint() override { return constraint_text; }
-  void set_trig_interval(double seconds) override;
+  void set_trig_interval(Nanos interval) override;
   void print(const std::string& line) override;
 };
 
@@ -198,7 +197,8 @@ class Runtime::ModuleSlot : public ModuleContext, public PluginGuard {
   Executor::TaskId tick_task = 0;
   std::set<std::string> reported;  // publish errors already reported
 
-  double now() const override { return runtime->now(); }
+  // The module API's seconds (runtime/module.h); the runtime's instants are nanoseconds.
+  double now() const override { return seconds_of(runtime->now()); }
   void publish(std::string_view port, Value v) override {
     runtime->publish_from(*this, port, std::move(v));
   }
@@ -216,7 +216,7 @@ class Runtime::EnvironmentSlot : public EnvironmentContext, public PluginGuard {
  public:
   std::mt19937_64 random;
 
-  double now() const override { return runtime->now(); }
+  double now() const override { return seconds_of(runtime->now()); }
   TimerId schedule(double delay, std::function<void()> fn) override;
   void cancel(TimerId id) override { runtime->executor_->cancel(id); }
   std::mt19937_64& rng() override { return random; }

@@ -99,9 +99,14 @@ class TestApp {
   }
 
   // Publishes v from module.port at time t (by posting on the executor).
-  static void publish_at(Runtime& rt, double t, const std::string& module, const std::string& port,
+  static void publish_at(Runtime& rt, Nanos t, const std::string& module, const std::string& port,
                          Value v) {
     rt.executor().post(t, [&rt, module, port, v] { rt.publish(module, port, v); });
+  }
+  // The same at t seconds, to the nearest nanosecond as the module API takes them.
+  static void publish_at(Runtime& rt, double t, const std::string& module, const std::string& port,
+                         Value v) {
+    publish_at(rt, nanos_from_seconds(t), module, port, std::move(v));
   }
 
   static const ConnectionStats& stats_of(const std::vector<ConnectionStats>& all,

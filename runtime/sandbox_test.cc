@@ -9,6 +9,8 @@
 #include "tests/support/tree_paths.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -30,7 +32,7 @@ Outcome run_with(const std::string& script, RunOptions options = {}) {
             "PortMonitor.update = function(m) return m + 1 end\n");
   auto rt = t.start(options);
   for (int i = 0; i < 3; ++i) TestApp::publish_at(*rt, 1 + i, "Src", "x", Value(i));
-  rt->advance(5);
+  rt->advance(5s);
   rt->shutdown();
   Outcome o;
   o.bad = TestApp::stats_of(rt->stats(), "bad");
@@ -113,7 +115,7 @@ TEST(SandboxTest, CatastrophicPatternIsCountedAndQuarantined) {
   auto start = std::chrono::steady_clock::now();
   auto rt = t.start();
   for (int i = 0; i < 7; ++i) TestApp::publish_at(*rt, 1 + i, "Src", "x", Value(i));
-  rt->advance(10);
+  rt->advance(10s);
   rt->shutdown();
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ConnectionStats bad = TestApp::stats_of(rt->stats(), "bad");
@@ -162,7 +164,7 @@ TEST(SandboxTest, UpdateResultIsReadWithoutRunningItsMetamethods) {
             "PortMonitor.update = function(m) return setmetatable({verb = 'go'}, boom) end\n");
   auto rt = t.start();
   for (int i = 0; i < 3; ++i) TestApp::publish_at(*rt, 1 + i, "Src", "x", Value(i));
-  rt->advance(5);
+  rt->advance(5s);
   rt->shutdown();
   ConnectionStats c = TestApp::stats_of(rt->stats(), "c");
   EXPECT_EQ(c.drops(DropReason::MonitorError), 3u);
@@ -261,7 +263,7 @@ TEST(SandboxTest, RepeatedFailuresQuarantineTheConnection) {
   auto rt = t.start(o);
   for (int i = 0; i < 10; ++i) TestApp::publish_at(*rt, i, "Src", "x", Value(i));
   TestApp::publish_at(*rt, 20, "Src", "x", Value(500));
-  rt->advance(30);
+  rt->advance(30s);
   auto s = TestApp::stats_of(rt->stats(), "bad");
   EXPECT_TRUE(s.quarantined);
   EXPECT_EQ(s.errors, 4u);

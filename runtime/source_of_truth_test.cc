@@ -9,6 +9,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -78,7 +80,7 @@ TEST(SourceOfTruthTest, TheSameConstraintIsAcceptedAndTheModelsRuns) {
   TestApp::publish_at(*rt, 1, "Src", "x", Value(1));
   TestApp::publish_at(*rt, 2, "Src", "x", Value(2));
   TestApp::publish_at(*rt, 3, "Src", "x", Value(3));
-  rt->advance(4);
+  rt->advance(4s);
   auto s = TestApp::stats_of(rt->stats(), "c");
   // `e` is never present: nothing is selected, the refused call is the message's error.
   EXPECT_EQ(s.delivered, 0u);
@@ -105,7 +107,7 @@ TEST(SourceOfTruthTest, SetEventWithoutALifetimeGetsTheOneAppJsonDeclares) {
   TestApp t;
   t.module("Src", {"out x: int"});
   t.module("Sink", {"in x: int"});
-  t.app.events.push_back({"e", 0.5, "", {}});
+  t.app.events.push_back({"e", 500ms, "", {}});
   t.connect("c", "Src.x", "Sink.x", "true",
             "PortMonitor.accept = function(m)\n"
             "  PortMonitor.setEvent('e')\n"
@@ -118,13 +120,13 @@ TEST(SourceOfTruthTest, SetEventWithoutALifetimeGetsTheOneAppJsonDeclares) {
   o.trace_records = &records;
   auto rt = t.start(o);
   TestApp::publish_at(*rt, 1, "Src", "x", Value(1));
-  rt->advance(2);
-  std::map<std::string, double> expiry;
+  rt->advance(2s);
+  std::map<std::string, Nanos> expiry;
   for (const TraceRecord& r : records)
     if (r.kind == TraceKind::Event && r.op == "set") expiry[r.event] = r.expiry;
-  EXPECT_EQ(expiry["e"], 1.5);
-  EXPECT_EQ(expiry["undeclared"], -1);  // no lifetime anywhere: until unset
-  EXPECT_EQ(expiry["e_short"], 1.25);   // an explicit lifetime still wins
+  EXPECT_EQ(expiry["e"], 1500ms);
+  EXPECT_EQ(expiry["undeclared"], kNever);  // no lifetime anywhere: until unset
+  EXPECT_EQ(expiry["e_short"], 1250ms);     // an explicit lifetime still wins
 }
 
 // hi (activity event act_hi, lifetime 1 s, throttle 0.5 s) outranks lo (`not act_hi`). Only
@@ -135,12 +137,12 @@ TEST(SourceOfTruthTest, TheActivityEventIsSetOnlyWhenTheRuleDelivers) {
   t.module("Src", {"out x: int"});
   t.module("Src2", {"out y: int", "out w: int"});
   t.module("Sink", {"in a: int"});
-  t.app.events.push_back({"act_hi", 1.0, "", {}});
+  t.app.events.push_back({"act_hi", 1s, "", {}});
   model::Connection& hi = t.connect("hi", "Src.x", "Sink.a", "not e_stop",
                                     "PortMonitor.accept = function(m) return m > 0 end\n");
   hi.activity_event = "act_hi";
   hi.sets = {"act_hi"};
-  hi.throttle = 0.5;
+  hi.throttle = 500ms;
   t.connect("lo", "Src2.y", "Sink.a", "not act_hi");
   t.connect("stop", "Src2.w", "Sink.a", "false",
             "PortMonitor.accept = function(m)\n"
@@ -160,7 +162,7 @@ TEST(SourceOfTruthTest, TheActivityEventIsSetOnlyWhenTheRuleDelivers) {
   TestApp::publish_at(*rt, 0.4, "Src", "x", Value(1));    // hi throttled: act_hi not refreshed
   TestApp::publish_at(*rt, 1.25, "Src2", "y", Value(0));  // lo not selected
   TestApp::publish_at(*rt, 1.35, "Src2", "y", Value(0));  // lo delivered (would not at 1.4)
-  rt->advance(2);
+  rt->advance(2s);
   auto stats = rt->stats();
   auto h = TestApp::stats_of(stats, "hi");
   EXPECT_EQ(h.drops(DropReason::Rejected), 1u);

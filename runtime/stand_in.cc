@@ -30,7 +30,7 @@ class StandIn : public Module {
     if (it != log_->inputs.end()) {
       for (const TimedValue& v : it->second) {
         scripted.insert(v.port);
-        schedule(std::max(0.0, v.t - now()), [this, &v] { send(v.port, v.value); });
+        schedule(seconds_of(v.t - now_nanos()), [this, &v] { send(v.port, v.value); });
       }
     }
     if (!log_->stub.enabled) return;
@@ -40,12 +40,12 @@ class StandIn : public Module {
       auto rate = log_->stub.period_of_port.find(qualified);
       double period =
           rate == log_->stub.period_of_port.end() ? log_->stub.default_period : rate->second;
-      if (period > 0) sample(o, now(), period, 0);
+      if (period > 0) sample(o, now_nanos(), period, 0);
     }
   }
 
   void on_delivery(const Delivery& d) override {
-    Received r{d.time, name_ + "." + d.port, d.connection, d.value};
+    Received r{nanos_from_seconds(d.time), name_ + "." + d.port, d.connection, d.value};
     ReceivedTally& tally = log_->tally[r.port];
     if (tally.count++ == 0) tally.first = r.t;
     if (log_->keep_received) log_->received.push_back(r);
@@ -74,11 +74,16 @@ class StandIn : public Module {
     publish(qualified.substr(name_.size() + 1), v);
   }
 
-  // Publishes sample k on `o` now, at origin + k * period, and schedules the next (no drift).
-  void sample(const OutPort& o, double origin, double period, uint64_t k) {
+  // The module API's seconds as the runtime's instant (exact under 2^21 s).
+  Nanos now_nanos() const { return nanos_from_seconds(now()); }
+
+  // Publishes sample k on `o` now, at origin + k * period (to the nanosecond), and schedules
+  // the next (no drift).
+  void sample(const OutPort& o, Nanos origin, double period, uint64_t k) {
     send(name_ + "." + o.name, sample_value(*o.type, rng(), o.flags));
-    double next = origin + static_cast<double>(k + 1) * period;
-    schedule(next - now(), [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
+    Nanos next = later(origin, nanos_from_seconds(static_cast<double>(k + 1) * period));
+    schedule(seconds_of(next - now_nanos()),
+             [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
   }
 
   std::string name_;

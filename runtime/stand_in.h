@@ -3,7 +3,8 @@
 // module, publishes the timed values it is given (an `arbc run --inputs` file, the inputs of an
 // `arbc test`) and, with `--stub`, typed sample values at a rate per port; it records every
 // message delivered to it. It uses only the module API (runtime/module.h): the runtime cannot
-// tell it from a plugin's module.
+// tell it from a plugin's module. Its times are the runtime's whole nanoseconds (core/instant.h),
+// through the module API's seconds, which carry them exactly for runs under 2^21 s (24 days).
 #pragma once
 
 #include <map>
@@ -18,14 +19,14 @@ namespace arbc {
 
 // A value to publish on an out-port of a stand-in at time t.
 struct TimedValue {
-  double t = 0;
+  Nanos t{0};
   std::string port;  // "Module.port"
   Value value;
 };
 
 // A message delivered to a stand-in.
 struct Received {
-  double t = 0;
+  Nanos t{0};
   std::string port;  // "Module.port"
   std::string connection;
   Value value;
@@ -42,7 +43,7 @@ struct StubPlan {
 // What a stand-in sink received on one port, in constant space: what `arbc run` prints.
 struct ReceivedTally {
   uint64_t count = 0;
-  double first = 0;
+  Nanos first{0};
   Received last;
 };
 

@@ -49,7 +49,7 @@ TEST(StandInTest, ASinkCountsWhatReachesItAndKeepsValuesOnlyWhenAsked) {
   EXPECT_EQ(all.kept, all.published);
   EXPECT_EQ(counted.kept, 0u);  // a run's sink keeps nothing per message
   EXPECT_EQ(counted.tally.count, all.tally.count);
-  EXPECT_EQ(counted.tally.first, 0.0);
+  EXPECT_EQ(counted.tally.first, Nanos(0));
   EXPECT_EQ(counted.tally.last.connection, "show");
   EXPECT_NE(counted.summary.find("Screen.x (stand-in sink): received " +
                                  std::to_string(all.published) + ", first at 0s, last at "),

@@ -4,7 +4,7 @@
 
 namespace arbc {
 
-TaskQueue::TaskId TaskQueue::push(double at, Task task) {
+TaskQueue::TaskId TaskQueue::push(Nanos at, Task task) {
   uint32_t slot;
   if (free_.empty()) {
     slot = static_cast<uint32_t>(slots_.size());
@@ -22,11 +22,11 @@ TaskQueue::TaskId TaskQueue::push(double at, Task task) {
   return id;
 }
 
-void TaskQueue::push_plain(double at, void (*fn)(void*), void* argument) {
+void TaskQueue::push_plain(Nanos at, void (*fn)(void*), void* argument) {
   add(at, 0, fn, argument);
 }
 
-void TaskQueue::add(double at, TaskId id, void (*plain)(void*), void* argument) {
+void TaskQueue::add(Nanos at, TaskId id, void (*plain)(void*), void* argument) {
   heap_.emplace_back(at, next_seq_++, id, plain, argument);
   // Most tasks are posted in time order (the message path's at the current time), and such a
   // task already sits where the heap wants it: no sift.

@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/instant.h"
+
 namespace arbc {
 
 // What an executor runs: a plain function and its argument, or any callable. The message path
@@ -68,11 +70,11 @@ class Task {
 class TaskQueue {
  public:
   using TaskId = uint64_t;
-  TaskId push(double at, Task task);
-  void push_plain(double at, void (*fn)(void*), void* argument);
+  TaskId push(Nanos at, Task task);
+  void push_plain(Nanos at, void (*fn)(void*), void* argument);
   void cancel(TaskId id);
   bool empty() const { return heap_.empty(); }
-  double next_time() const { return heap_.front().at; }
+  Nanos next_time() const { return heap_.front().at; }
   Task pop();
   // Tasks waiting (cancelled ones no longer count).
   size_t size() const { return heap_.size() - dead_; }
@@ -84,9 +86,9 @@ class TaskQueue {
     // Built in place in the heap (emplace_back): an entry built on the stack and then copied was
     // written with 8-byte stores and read back with 16-byte loads, which the processor cannot
     // forward, a stall of a dozen cycles on every post.
-    Entry(double at, uint64_t seq, TaskId id, void (*plain)(void*), void* argument)
+    Entry(Nanos at, uint64_t seq, TaskId id, void (*plain)(void*), void* argument)
         : at(at), seq(seq), id(id), plain(plain), argument(argument) {}
-    double at;
+    Nanos at;
     uint64_t seq;  // posting order, the tie-break between equal times
     TaskId id;     // its slot; 0 for a plain task, which is `plain` and `argument`
     void (*plain)(void*);
@@ -104,7 +106,7 @@ class TaskQueue {
     }
   };
   bool stale(const Entry& e) const;
-  void add(double at, TaskId id, void (*plain)(void*), void* argument);
+  void add(Nanos at, TaskId id, void (*plain)(void*), void* argument);
   void release(uint32_t slot);
   void drop_dead_top();
   std::vector<Entry> heap_;

@@ -35,14 +35,14 @@ void Trace::emit(const TraceLine& line) {
   std::fwrite(line_.data(), 1, line_.size(), file_);
 }
 
-void Trace::publish(double t, std::string_view port, const Value& v) {
+void Trace::publish(Nanos t, std::string_view port, const Value& v) {
   TraceLine l{t, TraceKind::Publish};
   l.port = port;
   l.value = &v;
   emit(l);
 }
 
-void Trace::delivery(double t, std::string_view connection, std::string_view port, const Value& v) {
+void Trace::delivery(Nanos t, std::string_view connection, std::string_view port, const Value& v) {
   TraceLine l{t, TraceKind::Deliver};
   l.connection = connection;
   l.port = port;
@@ -50,8 +50,7 @@ void Trace::delivery(double t, std::string_view connection, std::string_view por
   emit(l);
 }
 
-void Trace::drop(double t, std::string_view connection, DropReason reason,
-                 std::string_view detail) {
+void Trace::drop(Nanos t, std::string_view connection, DropReason reason, std::string_view detail) {
   TraceLine l{t, TraceKind::Drop};
   l.connection = connection;
   l.reason = reason;
@@ -59,8 +58,8 @@ void Trace::drop(double t, std::string_view connection, DropReason reason,
   emit(l);
 }
 
-void Trace::event(double t, std::string_view port, std::string_view kind, std::string_view event,
-                  std::string_view owner, double expiry) {
+void Trace::event(Nanos t, std::string_view port, std::string_view kind, std::string_view event,
+                  std::string_view owner, Nanos expiry) {
   TraceLine l{t, TraceKind::Event};
   l.port = port;
   l.op = kind;
@@ -70,35 +69,35 @@ void Trace::event(double t, std::string_view port, std::string_view kind, std::s
   emit(l);
 }
 
-void Trace::error(double t, std::string_view connection, std::string_view message) {
+void Trace::error(Nanos t, std::string_view connection, std::string_view message) {
   TraceLine l{t, TraceKind::Error};
   l.connection = connection;
   l.text = message;
   emit(l);
 }
 
-void Trace::quarantine(double t, std::string_view connection, std::string_view why) {
+void Trace::quarantine(Nanos t, std::string_view connection, std::string_view why) {
   TraceLine l{t, TraceKind::Quarantine};
   l.connection = connection;
   l.text = why;
   emit(l);
 }
 
-void Trace::log(double t, std::string_view who, std::string_view message) {
+void Trace::log(Nanos t, std::string_view who, std::string_view message) {
   TraceLine l{t, TraceKind::Log};
   l.connection = who;
   l.text = message;
   emit(l);
 }
 
-void Trace::publish_error(double t, std::string_view port, std::string_view message) {
+void Trace::publish_error(Nanos t, std::string_view port, std::string_view message) {
   TraceLine l{t, TraceKind::PublishError};
   l.port = port;
   l.text = message;
   emit(l);
 }
 
-void Trace::plugin_error(double t, std::string_view who, std::string_view callback,
+void Trace::plugin_error(Nanos t, std::string_view who, std::string_view callback,
                          std::string_view message) {
   TraceLine l{t, TraceKind::PluginError};
   l.connection = who;
@@ -107,7 +106,7 @@ void Trace::plugin_error(double t, std::string_view who, std::string_view callba
   emit(l);
 }
 
-void Trace::pending(double t, std::string_view connection, size_t count) {
+void Trace::pending(Nanos t, std::string_view connection, size_t count) {
   TraceLine l{t, TraceKind::Pending};
   l.connection = connection;
   l.count = count;

@@ -1,7 +1,8 @@
 // The run's trace: one JSON object per line, for every delivery, drop, event change and
 // error (docs/runtime.md, "Trace format", whose keys runtime/trace_format.h defines). Keys come
 // in a fixed order and numbers print deterministically, so the same seed gives a byte-identical
-// trace.
+// trace. Times are the runtime's whole nanoseconds (core/instant.h), written as exact decimals of
+// seconds.
 #pragma once
 
 #include <cstdio>
@@ -32,21 +33,21 @@ class Trace {
 
   // A module published v on its out-port `port` ("Module.port"); written before the message
   // enters the connections from the port, so a replay of the trace can publish it again.
-  void publish(double t, std::string_view port, const Value& v);
-  void delivery(double t, std::string_view connection, std::string_view port, const Value& v);
-  void drop(double t, std::string_view connection, DropReason reason, std::string_view detail);
-  // kind: "set", "unset" or "expire"; expiry < 0 means none.
-  void event(double t, std::string_view port, std::string_view kind, std::string_view event,
-             std::string_view owner, double expiry);
-  void error(double t, std::string_view connection, std::string_view message);
-  void quarantine(double t, std::string_view connection, std::string_view why);
-  void log(double t, std::string_view who, std::string_view message);
-  void publish_error(double t, std::string_view port, std::string_view message);
+  void publish(Nanos t, std::string_view port, const Value& v);
+  void delivery(Nanos t, std::string_view connection, std::string_view port, const Value& v);
+  void drop(Nanos t, std::string_view connection, DropReason reason, std::string_view detail);
+  // kind: "set", "unset" or "expire"; expiry kNever means none.
+  void event(Nanos t, std::string_view port, std::string_view kind, std::string_view event,
+             std::string_view owner, Nanos expiry);
+  void error(Nanos t, std::string_view connection, std::string_view message);
+  void quarantine(Nanos t, std::string_view connection, std::string_view why);
+  void log(Nanos t, std::string_view who, std::string_view message);
+  void publish_error(Nanos t, std::string_view port, std::string_view message);
   // An exception escaped plugin code: `who` is a module's name or "environment".
-  void plugin_error(double t, std::string_view who, std::string_view callback,
+  void plugin_error(Nanos t, std::string_view who, std::string_view callback,
                     std::string_view message);
   // Messages still queued on a connection when the run ended.
-  void pending(double t, std::string_view connection, size_t count);
+  void pending(Nanos t, std::string_view connection, size_t count);
   void close();
 
  private:

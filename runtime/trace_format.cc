@@ -131,7 +131,7 @@ bool read_key(const nlohmann::json& j, const Key& key, TraceRecord* r, nlohmann:
   switch (key.slot) {
     case Slot::Expiry:
       if (!it->is_number()) return false;
-      r->expiry = it->get<double>();
+      r->expiry = nanos_from_seconds(it->get<double>());  // as written, to the nanosecond
       return true;
     case Slot::Count:
       if (!it->is_number_unsigned()) return false;
@@ -162,19 +162,19 @@ std::optional<TraceKind> trace_kind_named(std::string_view name) {
 void append_trace_line(std::string& out, const TraceLine& line) {
   const KindFormat& f = format_of(line.kind);
   out += "{\"t\":";
-  append_json_double(out, line.t);
+  append_json_seconds(out, line.t);
   out += ",\"type\":\"";
   out += f.name;
   out += '"';
   for (const Key& key : f.keys) {
     if (!key.name) break;
-    if (key.optional && key.slot == Slot::Expiry && line.expiry < 0) continue;
+    if (key.optional && key.slot == Slot::Expiry && line.expiry == kNever) continue;
     if (key.optional && key.slot == Slot::Text && line.text.empty()) continue;
     out += ",\"";
     out += key.name;
     out += "\":";
     if (key.slot == Slot::Expiry) {
-      append_json_double(out, line.expiry);
+      append_json_seconds(out, line.expiry);
     } else if (key.slot == Slot::Count) {
       out += std::to_string(line.count);
     } else if (key.slot == Slot::Value) {
@@ -210,7 +210,7 @@ bool read_trace_line(const nlohmann::json& j, TraceRecord* record, nlohmann::jso
   std::optional<TraceKind> kind = trace_kind_named(type->get<std::string>());
   if (!kind) return false;
   TraceRecord r;
-  r.t = j["t"].get<double>();
+  r.t = nanos_from_seconds(j["t"].get<double>());  // as the runtime wrote it, to the nanosecond
   r.kind = *kind;
   if (value) *value = nullptr;
   for (const Key& key : format_of(*kind).keys) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/instant.h"
 #include "core/value.h"
 #include "runtime/trace_record.h"
 
@@ -22,12 +23,12 @@ std::optional<TraceKind> trace_kind_named(std::string_view name);
 // One line's fields without owning them: what Trace fills on the message path (no allocation)
 // and writes. A field the kind does not have is left empty.
 struct TraceLine {
-  TraceLine(double time, TraceKind what) : t(time), kind(what) {}
-  double t = 0;
+  TraceLine(Nanos time, TraceKind what) : t(time), kind(what) {}
+  Nanos t{0};  // the runtime's instant (core/instant.h)
   TraceKind kind = TraceKind::Log;
   std::string_view connection, port, op, event, owner, text, callback;
   DropReason reason = DropReason::Rejected;
-  double expiry = -1;
+  Nanos expiry = kNever;  // Event: kNever when the entry has no lifetime
   uint64_t count = 0;
   const Value* value = nullptr;  // Deliver, Publish
 };

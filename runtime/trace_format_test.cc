@@ -10,6 +10,8 @@
 namespace arbc {
 namespace {
 
+using namespace std::chrono_literals;
+
 constexpr TraceKind kAll[] = {TraceKind::Deliver,      TraceKind::Drop,        TraceKind::Event,
                               TraceKind::Error,        TraceKind::Quarantine,  TraceKind::Log,
                               TraceKind::PublishError, TraceKind::PluginError, TraceKind::Pending,
@@ -27,7 +29,7 @@ TEST(TraceFormatTest, EveryKindHasItsOwnNameAndIsFoundByIt) {
 
 // A line with every field its kind has, filled with distinct text.
 TraceLine full_line(TraceKind kind, const Value& value) {
-  TraceLine l(2.5, kind);
+  TraceLine l(2500ms, kind);
   l.connection = "take";
   l.port = "PickAndPlace.cmd";
   l.op = "set";
@@ -36,7 +38,7 @@ TraceLine full_line(TraceKind kind, const Value& value) {
   l.text = "monitors/take.lua:3: boom";
   l.callback = "tick";
   l.reason = DropReason::NotSelected;
-  l.expiry = 3.25;
+  l.expiry = 3250ms;
   l.count = 7;
   l.value = &value;
   return l;
@@ -71,7 +73,7 @@ TEST(TraceFormatTest, EveryLineReadsBackAsTheRecordItWasWrittenFrom) {
     append_trace_line(again, back);
     EXPECT_EQ(again, text);
     EXPECT_EQ(read.kind, k);
-    EXPECT_EQ(read.t, 2.5);
+    EXPECT_EQ(read.t, 2500ms);
     bool has_value = k == TraceKind::Deliver || k == TraceKind::Publish;
     EXPECT_EQ(!read_value.is_null(), has_value) << text;
     if (has_value) {
@@ -81,7 +83,7 @@ TEST(TraceFormatTest, EveryLineReadsBackAsTheRecordItWasWrittenFrom) {
 }
 
 TEST(TraceFormatTest, OptionalKeysAreLeftOutAndLinesMissingKeysAreRefused) {
-  TraceLine drop(1, TraceKind::Drop);
+  TraceLine drop(1s, TraceKind::Drop);
   drop.connection = "put";
   drop.reason = DropReason::Feed;
   std::string text;

@@ -1,12 +1,13 @@
 // One line of the run's trace as a value, for consumers that read the trace in memory
 // (`arbc run --report` builds its HTML report from these) instead of parsing the JSON lines.
 // The fields mirror the JSON keys of docs/runtime.md, "Trace format"; a field a kind does not
-// have stays empty (or -1 / 0).
+// have stays empty (or 0, kNever).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
+#include "core/instant.h"
 #include "runtime/drop_reason.h"
 
 namespace arbc {
@@ -25,7 +26,7 @@ enum class TraceKind {
 };
 
 struct TraceRecord {
-  double t = 0;
+  Nanos t{0};  // the runtime's instant (core/instant.h)
   TraceKind kind = TraceKind::Log;
   // Deliver, Drop, Error, Quarantine, Pending: the connection; Log: who logged ("from");
   // PluginError: the module or environment whose callback threw ("from").
@@ -36,7 +37,7 @@ struct TraceRecord {
   DropReason reason = DropReason::Rejected;  // Drop only
   std::string op;                            // Event: "set", "unset" or "expire"
   std::string event, owner;                  // Event: the event and the owning connection
-  double expiry = -1;                        // Event: set/expire with a lifetime; -1: none
+  Nanos expiry = kNever;                     // Event: set/expire with a lifetime; kNever: none
   std::string text;      // Drop: detail; Error, Quarantine, Log, PluginError: message
   std::string callback;  // PluginError: the callback that threw, e.g. "tick"
   uint64_t count = 0;    // Pending: messages left queued

@@ -9,6 +9,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -28,7 +30,7 @@ std::string run_traced(uint64_t seed, const std::string& name,
   o.trace_path = t.dir + "/" + name + ".jsonl";
   o.trace_records = records;
   auto rt = t.start(o);
-  rt->advance(o.duration);
+  rt->advance(20s);
   rt->shutdown();
   std::ifstream in(o.trace_path);
   std::stringstream text;
@@ -65,7 +67,7 @@ TEST(TraceTest, RecordsInMemoryMatchTheFileLineForLine) {
     std::string type = "\"type\":\"" + std::string(kTypes[static_cast<int>(r.kind)]) + "\"";
     EXPECT_NE(line.find(type), std::string::npos) << line;
     std::string t;
-    append_json_double(t, r.t);
+    append_json_seconds(t, r.t);
     EXPECT_EQ(line.rfind("{\"t\":" + t + ",", 0), 0u) << line;
     if (r.kind == TraceKind::Drop) {
       EXPECT_NE(line.find(std::string("\"reason\":\"") + drop_reason_name(r.reason) + "\""),
@@ -86,10 +88,10 @@ TEST(TraceTest, PluginErrorsAreRecordedInMemoryToo) {
   std::vector<TraceRecord> records;
   Trace trace;
   trace.record_to(&records);
-  trace.plugin_error(4.5, "PickAndPlace", "tick", "std::runtime_error: arm jammed");
+  trace.plugin_error(4500ms, "PickAndPlace", "tick", "std::runtime_error: arm jammed");
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].kind, TraceKind::PluginError);
-  EXPECT_EQ(records[0].t, 4.5);
+  EXPECT_EQ(records[0].t, 4500ms);
   EXPECT_EQ(records[0].connection, "PickAndPlace");
   EXPECT_EQ(records[0].callback, "tick");
   EXPECT_EQ(records[0].text, "std::runtime_error: arm jammed");
@@ -102,11 +104,11 @@ TEST(TraceTest, LineFormat) {
   std::string path = t.dir + "/t.jsonl";
   std::string err;
   ASSERT_TRUE(trace.open(path, &err)) << err;
-  trace.publish(1.5, "ObjectDetector.objects", Value::list({Value::record({{"dist", 0.3}})}));
-  trace.delivery(1.5, "take", "PickAndPlace.cmd", Value::record({{"verb", "take"}}));
-  trace.drop(2, "put", DropReason::NotSelected, "");
-  trace.event(2.25, "Speak.text", "set", "e_face", "feed_face", 3.25);
-  trace.error(3, "ask", "monitors/ask.lua:3: boom");
+  trace.publish(1500ms, "ObjectDetector.objects", Value::list({Value::record({{"dist", 0.3}})}));
+  trace.delivery(1500ms, "take", "PickAndPlace.cmd", Value::record({{"verb", "take"}}));
+  trace.drop(2s, "put", DropReason::NotSelected, "");
+  trace.event(2250ms, "Speak.text", "set", "e_face", "feed_face", 3250ms);
+  trace.error(3s + 1ns, "ask", "monitors/ask.lua:3: boom");
   trace.close();
   std::ifstream in(path);
   std::stringstream text;
@@ -119,7 +121,7 @@ TEST(TraceTest, LineFormat) {
             "{\"t\":2.0,\"type\":\"drop\",\"connection\":\"put\",\"reason\":\"not-selected\"}\n"
             "{\"t\":2.25,\"type\":\"event\",\"port\":\"Speak.text\",\"op\":\"set\",\"event\":"
             "\"e_face\",\"owner\":\"feed_face\",\"expiry\":3.25}\n"
-            "{\"t\":3.0,\"type\":\"error\",\"connection\":\"ask\",\"message\":"
+            "{\"t\":3.000000001,\"type\":\"error\",\"connection\":\"ask\",\"message\":"
             "\"monitors/ask.lua:3: boom\"}\n");
 }
 

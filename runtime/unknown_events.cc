@@ -30,7 +30,7 @@ void Runtime::collect_unknown_events() {
   }
 }
 
-bool Runtime::knows_events_of(Connection& c, double t, std::string* why) {
+bool Runtime::knows_events_of(Connection& c, Nanos t, std::string* why) {
   std::erase_if(c.unknown, [&](const Connection::UnknownEvent& u) {
     return u.feed->fed || (u.lifetime && t >= start_time_ + *u.lifetime);
   });
@@ -40,16 +40,16 @@ bool Runtime::knows_events_of(Connection& c, double t, std::string* why) {
   return false;
 }
 
-void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
+void Runtime::lapsed(InPort& in, int event, int owner, Nanos expiry) {
   Connection& c = *connections_[static_cast<size_t>(owner)];
   const std::string& name = in.container.index().name(event);
   trace_.event(expiry, in.qualified, "expire", name, c.name, expiry);
   // A delivery event lapses when its port has delivered nothing for its lifetime: no source
   // is silent then.
   if (!options_.report_silent_lapses || c.delivered_from) return;
-  std::optional<double> lifetime = declared_lifetime(name);
-  double silent = expiry - c.last_arrival;
-  if (!lifetime || silent + 1e-9 < *lifetime) return;  // its source spoke; the entry just ended
+  std::optional<Nanos> lifetime = declared_lifetime(name);
+  // Silent for the whole lifetime before the expiry, or its source spoke and the entry just ended.
+  if (!lifetime || c.last_arrival > expiry - *lifetime) return;
   if (!c.silence_reported.insert(name).second) return;
   // The lifetime as the spec declares it (`for 500ms`), not as a run's instants read.
   std::string lifetime_text = duration_literal(*lifetime);
@@ -57,7 +57,7 @@ void Runtime::lapsed(InPort& in, int event, int owner, double expiry) {
          ": nothing from " + c.model->source + " for " + lifetime_text);
 }
 
-void Runtime::watch_lapses(double period) {
+void Runtime::watch_lapses(Nanos period) {
   executor_->post(now() + period, [this, period] {
     for (auto& in : in_ports_) {
       if (in->mediated) in->container.present(now());

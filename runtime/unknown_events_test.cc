@@ -5,6 +5,8 @@
 #include "runtime/runtime_test_util.h"
 
 namespace arbc {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::TestApp;
@@ -13,7 +15,7 @@ using testing::TestApp;
 void feed_app(TestApp& t, const std::string& rule_constraint) {
   t.module("Src", {"out x: int", "out f: bool"});
   t.module("Sink", {"in x: int"});
-  t.app.events.push_back({"e", 0.5, "Src.f", {}});
+  t.app.events.push_back({"e", 500ms, "Src.f", {}});
   t.connect("feed", "Src.f", "Sink.x", "false",
             "PortMonitor.accept = function(on)\n"
             "  if on then PortMonitor.setEvent('e') else PortMonitor.unsetEvent('e') end\n"
@@ -40,7 +42,7 @@ TEST(UnknownEventsTest, ARuleWaitsForItsFeedAfterStart) {
   TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));      // unknown: not selected
   TestApp::publish_at(*rt, 0.2, "Src", "f", Value(false));  // the feed speaks: e is absent
   TestApp::publish_at(*rt, 0.3, "Src", "x", Value(2));      // selected
-  rt->advance(1);
+  rt->advance(1s);
   EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.3});
   auto s = TestApp::stats_of(rt->stats(), "r");
   EXPECT_EQ(s.drops(DropReason::NotSelected), 1u);
@@ -54,7 +56,7 @@ TEST(UnknownEventsTest, TheLifetimeEndsTheUnknown) {
   o.unknown_until_fed = true;
   auto rt = t.start(o);
   for (double at : {0.1, 0.4, 0.49, 0.5, 0.7}) TestApp::publish_at(*rt, at, "Src", "x", Value(1));
-  rt->advance(1);
+  rt->advance(1s);
   EXPECT_EQ(delivery_times(*rt), (std::vector<double>{0.5, 0.7}));
 }
 
@@ -64,7 +66,7 @@ TEST(UnknownEventsTest, OffByDefault) {
   feed_app(t, "not e");
   auto rt = t.start();
   TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));
-  rt->advance(1);
+  rt->advance(1s);
   EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.1});
 }
 
@@ -76,7 +78,7 @@ TEST(UnknownEventsTest, RulesWithoutFedEventsAreUnaffected) {
   o.unknown_until_fed = true;
   auto rt = t.start(o);
   TestApp::publish_at(*rt, 0.1, "Src", "x", Value(1));
-  rt->advance(1);
+  rt->advance(1s);
   EXPECT_EQ(delivery_times(*rt), std::vector<double>{0.1});
 }
 
@@ -93,11 +95,11 @@ TEST(UnknownEventsTest, ASilentSourcesLapseIsReportedOnce) {
   TestApp::publish_at(*rt, 1.2, "Src", "f", Value(true));
   TestApp::publish_at(*rt, 3.0, "Src", "f", Value(true));
   TestApp::publish_at(*rt, 3.1, "Src", "f", Value(false));
-  rt->advance(2.5);
+  rt->advance(2500ms);
   bool reported_by_then = false;
   for (const std::string& r : t.reports) reported_by_then |= r.find("lapsed") != std::string::npos;
   EXPECT_TRUE(reported_by_then) << "the lapse at 1.7 was not reported by 2.5";
-  rt->advance(5);
+  rt->advance(5s);
   std::vector<std::string> lapses;
   for (const std::string& r : t.reports) {
     if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
@@ -116,7 +118,7 @@ TEST(UnknownEventsTest, ALapseOfAShortRunIsInMilliseconds) {
   o.duration = 0.9;
   auto rt = t.start(o);
   TestApp::publish_at(*rt, 0.1, "Src", "f", Value(true));
-  rt->advance(0.9);
+  rt->advance(900ms);
   std::vector<std::string> lapses;
   for (const std::string& r : t.reports) {
     if (r.find("lapsed") != std::string::npos) lapses.push_back(r);

@@ -8,6 +8,8 @@
 #include "verify/verify.h"
 
 namespace arbc::verify {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::arbitrated;
@@ -259,7 +261,7 @@ TEST(Checks, UnusedWhenAFeedCarriesAnEventNobodyReads) {
 
 TEST(Checks, UnusedWhenADeclaredStreamEventIsNeverRead) {
   model::App app = testing::table_clean_model();
-  app.events.push_back({"e_extra", 0.5, "PickAndPlace.status", {}});
+  app.events.push_back({"e_extra", 500ms, "PickAndPlace.status", {}});
   VerifyReport report = run(app);  // findings() points into the report: keep it alive
   auto unused = findings(report, "unused");
   ASSERT_EQ(unused.size(), 1u);

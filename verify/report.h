@@ -116,7 +116,7 @@ struct PortResult {
 // One step of a timed counterexample (docs/design.md#properties-over-time): one message that
 // one connection into the port handled.
 struct TraceStep {
-  double time = 0;                      // seconds from the start of the run
+  Nanos time{0};                        // since the start of the run
   std::string connection;               // the rule or feed that ran
   std::string source;                   // "Module.port" that published the message
   bool feed = false;                    // a generated feed: it sets events, never delivers
@@ -161,7 +161,7 @@ struct TemporalResult {
   std::vector<model::SourceRate> rates;
   // HoldsToBound with rates: the shortest run they fill with more than `bound` messages
   // (Rates::span), so the search saw only shorter runs; 0 otherwise.
-  double rated_span = 0;
+  Nanos rated_span{0};
   // A response with rates: the fewest messages into the port of a run in which a window
   // closes (the rated sources' messages due by its length, and the trigger when its source
   // has no rate). A bound below it cannot show a violation; 0 otherwise.

@@ -116,7 +116,7 @@ Json temporal_json(const TemporalResult& t) {
   j["rule"] = t.property.rule;  // "" for a stability and a response answered by a port
   switch (t.property.kind) {
     case model::TemporalProperty::Kind::Spacing:
-      j["window"] = t.property.window;
+      j["window"] = seconds_of(t.property.window);
       if (!t.property.other.empty()) j["after"] = t.property.other;
       break;
     case model::TemporalProperty::Kind::Absence:
@@ -129,11 +129,11 @@ Json temporal_json(const TemporalResult& t) {
       if (t.property.event.empty()) j["after"] = t.property.other;
       if (!t.property.event.empty()) j["event"] = t.property.event;
       j["stops"] = t.property.stops;
-      j["window"] = t.property.window;
+      j["window"] = seconds_of(t.property.window);
       j["while"] = t.property.condition.to_string();
       break;
     case model::TemporalProperty::Kind::Stability:
-      j["window"] = t.property.window;
+      j["window"] = seconds_of(t.property.window);
       break;
   }
   j["location"] = location_json(t.property.loc);
@@ -145,11 +145,12 @@ Json temporal_json(const TemporalResult& t) {
   // The environment assumptions the verdict is under (docs/language.md#environment-assumptions).
   j["assumptions"] = Json::array();
   for (const model::Assumption& a : t.assumptions) {
-    j["assumptions"].push_back({{"event", a.event},
-                                {"after", a.after},
-                                {"until", a.until.empty() ? Json(nullptr) : Json(a.until)},
-                                {"absent_for", a.absent_for ? Json(*a.absent_for) : Json(nullptr)},
-                                {"location", location_json(a.loc)}});
+    j["assumptions"].push_back(
+        {{"event", a.event},
+         {"after", a.after},
+         {"until", a.until.empty() ? Json(nullptr) : Json(a.until)},
+         {"absent_for", a.absent_for ? Json(seconds_of(*a.absent_for)) : Json(nullptr)},
+         {"location", location_json(a.loc)}});
   }
   j["replayed"] = t.replayed;
   j["unknown_reason"] = t.unknown_reason.empty() ? Json(nullptr) : Json(t.unknown_reason);
@@ -159,14 +160,14 @@ Json temporal_json(const TemporalResult& t) {
     j["rates"] = Json::array();
     for (const model::SourceRate& r : t.rates)
       j["rates"].push_back(
-          {{"port", r.port}, {"every", r.period}, {"location", location_json(r.loc)}});
+          {{"port", r.port}, {"every", seconds_of(r.period)}, {"location", location_json(r.loc)}});
     j["explanation"] = t.explanation.empty() ? Json(nullptr) : Json(t.explanation);
-    j["rated_span"] = t.rated_span > 0 ? Json(t.rated_span) : Json(nullptr);
+    j["rated_span"] = t.rated_span > Nanos(0) ? Json(seconds_of(t.rated_span)) : Json(nullptr);
     j["window_bound"] = t.window_bound > 0 ? Json(t.window_bound) : Json(nullptr);
   }
   j["trace"] = Json::array();
   for (const TraceStep& s : t.trace) {
-    j["trace"].push_back({{"t", s.time},
+    j["trace"].push_back({{"t", seconds_of(s.time)},
                           {"source", s.source},
                           {"connection", s.connection},
                           {"feed", s.feed},

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 namespace arbc::verify::testing {
+using namespace std::chrono_literals;
+
 namespace {
 
 model::SourceLocation at(int line, int column, int length) {
@@ -57,11 +59,11 @@ model::Connection feed(const std::string& from, const std::string& to,
   return c;
 }
 
-model::Event event(const std::string& name, double lifetime, const std::string& source,
-                   model::SourceLocation loc) {
+model::Event event(const std::string& name, std::chrono::milliseconds lifetime,
+                   const std::string& source, model::SourceLocation loc) {
   model::Event e;
   e.name = name;
-  if (lifetime > 0) e.lifetime = lifetime;
+  if (lifetime > Nanos(0)) e.lifetime = lifetime;
   e.source = source;
   e.loc = std::move(loc);
   return e;
@@ -133,12 +135,12 @@ model::App table_clean_model() {
       module("Speak", {port("text", Direction::In, "string")}),
   };
   app.events = {
-      event("e_taken", 0.5, "PickAndPlace.status", at(23, 35, 7)),
-      event("e_arm_idle", 0.5, "PickAndPlace.status", at(23, 44, 10)),
-      event("e_pull_idle", 0.5, "PullObject.status", at(24, 35, 11)),
-      event("e_unreachable", 0, "ObjectDetector.objects", at(27, 7, 13)),
-      event("e_face_detected", 1.0, "FaceDetector.face", at(28, 7, 15)),
-      event("act_track", 1.0, "", at(53, 3, 5)),
+      event("e_taken", 500ms, "PickAndPlace.status", at(23, 35, 7)),
+      event("e_arm_idle", 500ms, "PickAndPlace.status", at(23, 44, 10)),
+      event("e_pull_idle", 500ms, "PullObject.status", at(24, 35, 11)),
+      event("e_unreachable", 0ms, "ObjectDetector.objects", at(27, 7, 13)),
+      event("e_face_detected", 1000ms, "FaceDetector.face", at(28, 7, 15)),
+      event("act_track", 1000ms, "", at(53, 3, 5)),
   };
 
   // PickAndPlace.cmd
@@ -174,7 +176,7 @@ model::App table_clean_model() {
   // Speak.text
   model::Connection ask = rule("ask", "FaceDetector.face", "Speak.text",
                                "e_unreachable and e_face_detected", at(61, 3, 3));
-  ask.throttle = 5.0;
+  ask.throttle = 5s;
   app.connections.push_back(ask);
   app.connections.push_back(
       feed("ObjectDetector.objects", "Speak.text", {"e_unreachable"}, at(27, 1, 5)));
@@ -211,7 +213,7 @@ model::App search_and_track_model() {
       module("LookAround", {port("gaze", Direction::Out, "vec3")}),
       module("HeadControl", {port("gaze", Direction::In, "vec3")}),
   };
-  app.events = {event("e_face_detected", 1.0, "", {})};
+  app.events = {event("e_face_detected", 1000ms, "", {})};
   // The paper's pair: track's own monitor sets e_face_detected whenever it accepts, so at its
   // decision the event is present and search (`not e_face_detected`) cannot hold.
   model::Connection track = rule("track", "FaceDetector.face", "HeadControl.gaze", "true",

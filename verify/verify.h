@@ -41,10 +41,10 @@ class MonitorRunner {
 struct ReplayRecord {
   enum class Kind { Deliver, Drop, Set, Remove };
   Kind kind = Kind::Deliver;
-  double t = 0;
+  Nanos t{0};
   std::string connection;  // Deliver, Drop: the rule; Set, Remove: the entry's owner
   std::string event;       // Set, Remove
-  double expiry = -1;      // Set: the entry's expiry; -1: none (until removed)
+  Nanos expiry = kNever;   // Set: the entry's expiry; kNever: none (until removed)
 };
 
 // Runs a test of the app on the runtime in simulated time, as `arbc test` does; the CLI

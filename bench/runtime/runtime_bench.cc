@@ -35,6 +35,8 @@
 
 namespace {
 
+using namespace std::chrono_literals;
+
 using namespace arbc;
 
 // Instructions per message, a figure the other jobs on the shared machine cannot disturb. Run
@@ -71,9 +73,9 @@ const char* kEvents[] = {"e_taken", "e_arm_idle", "e_pull_idle", "e_unreachable"
 void BM_ConstraintDecision(benchmark::State& state) {
   EventContainer box;
   for (const char* e : kEvents) box.index().intern(e);
-  box.set(box.index().find("e_arm_idle"), 0, 1e9);
-  box.set(box.index().find("e_pull_idle"), 0, 1e9);
-  box.set(box.index().find("e_unreachable"), 1, 1e9);
+  box.set(box.index().find("e_arm_idle"), 0, 1'000'000'000s);
+  box.set(box.index().find("e_pull_idle"), 0, 1'000'000'000s);
+  box.set(box.index().find("e_unreachable"), 1, 1'000'000'000s);
   CompiledConstraint c =
       CompiledConstraint::compile(parse_constraint(kConstraint).constraint, box.index());
   // Time moves on every decision, so the container's expiry check runs each time. It is
@@ -82,7 +84,7 @@ void BM_ConstraintDecision(benchmark::State& state) {
   // t out of the vector registers) that cost more than the decision itself.
   uint64_t step = 0;
   for (auto _ : state) {
-    double t = 1.0 + static_cast<double>(++step) * 1e-9;
+    Nanos t = 1s + Nanos(static_cast<int64_t>(++step));
     bool selected = c.evaluate(box.present(t));
     benchmark::DoNotOptimize(selected);
   }
@@ -187,11 +189,11 @@ void delivery(benchmark::State& state, bool monitored, InstructionWindow& window
   rt->start();
   Value msg = monitored ? Value::record({{"pos", Value::vec3(0.1, 0.2, 0.9)}, {"certainty", 0.93}})
                         : Value::vec3(0.1, 0.2, 0.9);
-  double t = 0;
+  Nanos t{0};
   uint64_t messages = 0;
   for (auto _ : state) {
     rt->publish("FaceDetector", "face", msg);
-    t += 1e-6;
+    t += 1us;
     rt->advance(t);
     window.after(++messages);
   }
@@ -405,7 +407,7 @@ void BM_MonitorMemory(benchmark::State& state) {
   for (auto _ : state) {
     rt->publish("FaceDetector", "face",
                 Value::record({{"pos", Value::vec3(0.1, 0.2, 0.9)}, {"certainty", 0.93}}));
-    rt->advance(rt->now() + 0.01);
+    rt->advance(rt->now() + 10ms);
   }
   state.counters["bytes"] = static_cast<double>(rt->monitor_memory().at("track"));
 }

@@ -27,6 +27,8 @@
 
 namespace {
 
+using namespace std::chrono_literals;
+
 using namespace arbc;
 
 // Resident set size of this process, in bytes (/proc/self/statm, second field, in pages).
@@ -156,8 +158,8 @@ int main(int argc, char** argv) {
   const double rss_before = resident_bytes();
 
   // Warm-up: the first 1% (allocator pools, Lua states, queues reach their working size).
-  double t = 0;
-  while (arrived(*rt) < target / 100) rt->advance(t += 1);
+  Nanos t{0};
+  while (arrived(*rt) < target / 100) rt->advance(t += 1s);
   const double rss_start = resident_bytes();
   const size_t lua_start = lua_bytes(*rt);
   const uint64_t counted_from = arrived(*rt);
@@ -166,7 +168,7 @@ int main(int argc, char** argv) {
   double rss_peak = rss_start;
   uint64_t next_sample = counted_from + target / 10;
   while (arrived(*rt) < target) {
-    rt->advance(t += 1);
+    rt->advance(t += 1s);
     if (arrived(*rt) >= next_sample) {
       rss_peak = std::max(rss_peak, resident_bytes());
       next_sample += target / 10;
@@ -192,7 +194,7 @@ int main(int argc, char** argv) {
   figure("soak_delivered", static_cast<double>(delivered), "messages");
   figure("soak_dropped", static_cast<double>(dropped), "messages");
   figure("soak_script_errors", static_cast<double>(errors), "errors");
-  figure("soak_simulated_time", t, "s");
+  figure("soak_simulated_time", seconds_of(t), "s");
   figure("soak_wall_time", wall, "s");
   figure("soak_cpu_time", cpu, "s");
   // Per CPU second: what the runtime sustains; the wall rate depends on the other jobs.

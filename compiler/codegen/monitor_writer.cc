@@ -137,7 +137,7 @@ class MonitorWriter {
     if (!conn_.trig_interval || !style_.trig_in_create) return;
     w.line(style_.callbacks + ".create = function(options)");
     w.indent();
-    w.line("PortMonitor.setTrigInterval(" + lua_float(*conn_.trig_interval) + ")",
+    w.line("PortMonitor.setTrigInterval(" + lua_float(seconds_of(*conn_.trig_interval)) + ")",
            every_ ? every_->line : 0);
     w.line("return true");
     w.dedent();
@@ -229,7 +229,7 @@ class MonitorWriter {
   // `set e for D` passes D in seconds; plain `set e` passes none, and the runtime applies the
   // event's declared lifetime from app.json (one source of truth, docs/runtime.md).
   std::string set_event_call(const model::BodyStmt& s) {
-    return set_call(s.name, s.lifetime ? lua_float(*s.lifetime) : "");
+    return set_call(s.name, s.lifetime ? lua_float(seconds_of(*s.lifetime)) : "");
   }
 
   // The host call that sets `event` (lifetime: Lua text, empty for the declared one).
@@ -308,7 +308,8 @@ class MonitorWriter {
         // The runtime enforces app.json's `throttle` after the constraint, counting only
         // deliveries (docs/runtime.md); the monitor has nothing to do.
         w.line("-- throttle: enforced by the runtime (app.json \"throttle\": " +
-                   lua_float(conn_.throttle.value_or(0)) + " s), counting deliveries",
+                   lua_float(seconds_of(conn_.throttle.value_or(Nanos{0}))) +
+                   " s), counting deliveries",
                line);
         break;
       case Kind::Every:

@@ -23,9 +23,11 @@ using testing::PortContainer;
 class Host : public MonitorHost {
  public:
   Host(PortContainer* port, std::string owner) : port_(port), owner_(std::move(owner)) {}
-  double now() override { return port_->now(); }
-  void set_event(std::string_view name, std::optional<double> life) override {
-    port_->set(std::string(name), owner_, life);
+  // The harness keeps seconds; the runtime's host interface is in nanoseconds.
+  Nanos now() override { return nanos_from_seconds(port_->now()); }
+  void set_event(std::string_view name, std::optional<Nanos> life) override {
+    port_->set(std::string(name), owner_,
+               life ? std::optional<double>(seconds_of(*life)) : std::nullopt);
   }
   void unset_event(std::string_view name) override { port_->unset(std::string(name), owner_); }
   bool has_event(std::string_view name) override { return port_->has(std::string(name)); }
@@ -34,7 +36,7 @@ class Host : public MonitorHost {
     return true;
   }
   std::string get_constraint() override { return constraint; }
-  void set_trig_interval(double) override {}
+  void set_trig_interval(Nanos) override {}
   void print(const std::string&) override {}
   std::string constraint;
 

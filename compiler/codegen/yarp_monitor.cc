@@ -29,7 +29,7 @@ Diagnostic unsupported(const model::Connection& c, const std::string& what) {
 // The event's declared lifetime as Lua text; empty when it has none (YARP: forever).
 std::string declared_lifetime(const model::App& app, const std::string& event) {
   const model::Event* e = app.find_event(event);
-  return e && e->lifetime ? lua_float(*e->lifetime) : std::string();
+  return e && e->lifetime ? lua_float(seconds_of(*e->lifetime)) : std::string();
 }
 
 class YarpMonitorWriter {
@@ -213,7 +213,7 @@ std::string YarpMonitorWriter::accept_function() const {
     }
     if (c.throttle)
       out += "  if arbc_last_delivery ~= nil and yarp.now() - arbc_last_delivery < " +
-             lua_float(*c.throttle) + " then return false end  -- throttled\n";
+             lua_float(seconds_of(*c.throttle)) + " then return false end  -- throttled\n";
     if (has_code) {
       out += "  local ok_value, value = pcall(" + table(k) + ".update, msg)\n";
       out += "  if not ok_value or value == nil then return false end\n";
@@ -237,7 +237,7 @@ std::string YarpMonitorWriter::every_due() const {
   for (size_t k = 0; k < link_.parts.size(); ++k) {
     const model::Connection& c = conn(k);
     if (!c.trig_interval || c.monitor.empty()) continue;
-    std::string i = std::to_string(k + 1), d = lua_float(*c.trig_interval);
+    std::string i = std::to_string(k + 1), d = lua_float(seconds_of(*c.trig_interval));
     body += "  if arbc_every_next[" + i + "] ~= nil and now >= arbc_every_next[" + i + "] then\n";
     body += "    pcall(" + table(k) + ".trig)\n";
     body += "    arbc_every_next[" + i + "] = arbc_every_next[" + i + "] + " + d + "\n";
@@ -264,7 +264,7 @@ std::string YarpMonitorWriter::create() const {
     const model::Connection& c = conn(k);
     if (c.trig_interval && !c.monitor.empty())
       out += "  arbc_every_next[" + std::to_string(k + 1) + "] = yarp.now() + " +
-             lua_float(*c.trig_interval) + "\n";
+             lua_float(seconds_of(*c.trig_interval)) + "\n";
   }
   return out + "  return true\nend\n\n";
 }

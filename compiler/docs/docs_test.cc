@@ -8,6 +8,8 @@
 #include "compiler/docs/monitor_summary.h"
 
 namespace arbc::docs {
+
+using namespace std::chrono_literals;
 namespace {
 
 using model::Connection;
@@ -25,7 +27,7 @@ model::App search_and_track() {
        {}},
       {"LookAround", "", {{"gaze", model::Direction::Out, parse_type("vec3"), {}}}, {}},
       {"HeadControl", "", {{"gaze", model::Direction::In, parse_type("vec3"), {}}}, {}}};
-  app.events.push_back({"e_face_detected", 1.0, "", {}});
+  app.events.push_back({"e_face_detected", 1s, "", {}});
   Connection track;
   track.name = "track";
   track.source = "FaceDetector.face";
@@ -167,7 +169,7 @@ TEST(MarkdownDocsTest, AnEventLivesAsLongAsItsSetsSay) {
   model::BodyStmt set_for;
   set_for.kind = model::BodyStmt::Kind::Set;
   set_for.name = "e_face_detected";
-  set_for.lifetime = 1.0;  // `set e_face_detected for 1s;`
+  set_for.lifetime = 1s;  // `set e_face_detected for 1s;`
   app.connections[0].body = model::Body{set_for};
   auto row = [&] {
     std::string md = render_index_markdown({&app, {}, "app.svg", ""});
@@ -199,7 +201,7 @@ model::App priority_app() {
   app.connections[0].sets = {"act_track", "e_face_detected"};
   app.connections[1].constraint =
       parse_constraint("not e_face_detected and not act_track").constraint;
-  app.events.push_back({"act_track", 0.5, "", {}});
+  app.events.push_back({"act_track", 500ms, "", {}});
   return app;
 }
 

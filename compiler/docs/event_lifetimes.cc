@@ -12,7 +12,7 @@ namespace arbc::docs {
 namespace {
 
 // As the spec writes the lifetime (`set e for 1s`).
-std::string seconds_text(double s) { return duration_literal(s); }
+std::string seconds_text(Nanos d) { return duration_literal(d); }
 
 // The lifetime of each `set EVENT` in `body`, nested blocks included.
 void collect_sets(const model::Body& body, const std::string& event, const std::string& fallback,

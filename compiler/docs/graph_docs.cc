@@ -68,7 +68,7 @@ std::vector<std::string> wrap(const std::string& text) {
 }
 
 // As the spec writes the time (`hold 1s`, `throttle 500ms`).
-std::string seconds(double s) { return duration_literal(s); }
+std::string seconds(Nanos d) { return duration_literal(d); }
 
 // One line of an arbitrator's rule list: "take: when ...", "1 track: when ..., hold 1 s".
 std::string rule_line(const PortSummary& p, size_t k) {

@@ -16,8 +16,8 @@ namespace arbc::docs {
 
 struct RuleSummary {
   const model::Connection* connection = nullptr;
-  std::string when;            // constraint text without the priority terms; "true" if none
-  std::optional<double> hold;  // seconds, for a `by priority` rule that has one
+  std::string when;           // constraint text without the priority terms; "true" if none
+  std::optional<Nanos> hold;  // for a `by priority` rule that has one
   // Events its monitor sets on every accepting path (activity events aside): they count in
   // its effective guard, so they explain why it does not overlap a rule that reads them.
   std::vector<std::string> sets;

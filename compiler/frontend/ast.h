@@ -4,7 +4,7 @@
 // fills the fields marked "sema:" so that lowering never resolves a name or infers a type
 // again: every expression knows its type, every name knows what it refers to, every port
 // reference knows its module and port, every constraint is already a runtime Constraint tree,
-// and every duration is already a number of seconds.
+// and every duration is already a whole number of nanoseconds.
 //
 // Ownership: a Spec owns everything. Declarations live in per-kind vectors; sema links them with
 // plain pointers, so a Spec is movable (vector buffers move with it) but not copyable.
@@ -64,7 +64,7 @@ struct PortRef {
 // a duration literal (`500ms`, `0.5s`, `2min`) or a constant holding one.
 struct Duration {
   ExprPtr expr;
-  double seconds = 0;  // sema: the constant value in seconds
+  Nanos nanos{0};  // sema: the value, a whole number of nanoseconds (core/instant.h)
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -87,7 +87,7 @@ enum class NameKind {
 struct Expr {
   enum class Kind {
     Number,     // number; is_int says whether it was written without a fraction or exponent
-    Duration,   // `500ms`: number holds seconds
+    Duration,   // `500ms`: number holds seconds, text the literal as written
     String,     // text holds the decoded string
     Bool,       // boolean
     Name,       // text holds the identifier
@@ -376,9 +376,9 @@ struct EventSymbol {
   enum class Kind { Manual, Status, Derived };
   Kind kind = Kind::Manual;
   std::string name;
-  std::optional<double> lifetime;  // seconds
-  std::string source;              // "Module.port" for Status and Derived
-  std::string flag;                // Status: the module's flag name
+  std::optional<Nanos> lifetime;
+  std::string source;  // "Module.port" for Status and Derived
+  std::string flag;    // Status: the module's flag name
   Loc loc;
 };
 

@@ -107,7 +107,8 @@ ExprPtr Builder::primary(ArbcParser::PrimaryContext* ctx, int depth) {
   }
   if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
     auto e = make(Expr::Kind::Duration, std::move(where));
-    e->number = seconds_of_duration(tx(child<antlr4::tree::TerminalNode>(c, 0)));
+    e->text = tx(child<antlr4::tree::TerminalNode>(c, 0));
+    e->number = seconds_of_duration(e->text);
     return e;
   }
   if (auto* c = as<ArbcParser::StringLitContext>(ctx)) {
@@ -160,7 +161,8 @@ Duration Builder::duration(ArbcParser::DurationContext* ctx) {
   Loc where = loc(ctx);
   if (ctx->DURATION()) {
     d.expr = make(Expr::Kind::Duration, where);
-    d.expr->number = seconds_of_duration(tx(ctx->DURATION()));
+    d.expr->text = tx(ctx->DURATION());
+    d.expr->number = seconds_of_duration(d.expr->text);
   } else if (ctx->NUMBER()) {
     d.expr = make(Expr::Kind::Number, where);
     std::string text = tx(ctx->NUMBER());

@@ -25,7 +25,7 @@ std::string expectation_hint(const ast::TestDecl& test, const ast::Spec& spec) {
   for (auto s = test.steps.rbegin(); s != test.steps.rend(); ++s) {
     if (s->kind != ast::TestStep::Kind::Input) continue;
     if (const ast::PortRef* to = destination_of(s->port, test, spec))
-      return "expect " + to->qualified() + " receives at " + duration_literal(s->at.seconds) + ";";
+      return "expect " + to->qualified() + " receives at " + duration_literal(s->at.nanos) + ";";
   }
   return "";
 }

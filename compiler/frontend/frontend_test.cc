@@ -9,6 +9,8 @@
 #include "tests/support/tree_paths.h"
 
 namespace arbc::frontend {
+
+using namespace std::chrono_literals;
 namespace {
 
 using ast::Expr;
@@ -37,11 +39,11 @@ TEST(Frontend, TableCleanChecksAndIsAnnotated) {
   EXPECT_EQ(taken->kind, ast::EventSymbol::Kind::Status);
   EXPECT_EQ(taken->source, "PickAndPlace.status");
   EXPECT_EQ(taken->flag, "e_taken");
-  EXPECT_DOUBLE_EQ(*taken->lifetime, 0.5);
+  EXPECT_EQ(*taken->lifetime, 500ms);
   const ast::EventSymbol* face = spec.find_event("e_face_detected");
   ASSERT_TRUE(face);
   EXPECT_EQ(face->kind, ast::EventSymbol::Kind::Derived);
-  EXPECT_DOUBLE_EQ(*face->lifetime, 1.0);
+  EXPECT_EQ(*face->lifetime, 1s);
   const ast::EventSymbol* unreachable = spec.find_event("e_unreachable");
   ASSERT_TRUE(unreachable);
   EXPECT_FALSE(unreachable->lifetime);
@@ -60,7 +62,7 @@ TEST(Frontend, TableCleanChecksAndIsAnnotated) {
   ASSERT_TRUE(head);
   EXPECT_TRUE(head->by_priority);
   ASSERT_TRUE(head->rules[0].hold);
-  EXPECT_DOUBLE_EQ(head->rules[0].hold->seconds, 1.0);
+  EXPECT_EQ(head->rules[0].hold->nanos, 1s);
   EXPECT_FALSE(head->rules[1].hold);
   EXPECT_FALSE(head->rules[1].has_body);
 
@@ -100,7 +102,7 @@ TEST(Frontend, TableCleanChecksAndIsAnnotated) {
   ASSERT_TRUE(speak);
   const Stmt& throttle = *speak->rules[0].body[0];
   ASSERT_EQ(throttle.kind, Stmt::Kind::Throttle);
-  EXPECT_DOUBLE_EQ(throttle.duration->seconds, 5.0);
+  EXPECT_EQ(throttle.duration->nanos, 5s);
 
   // Asserts point at their rule.
   EXPECT_EQ(spec.asserts[0].rule_decl, &pick->rules[0]);
@@ -174,7 +176,7 @@ TEST(Frontend, SearchAndTrackAndFaceFilterCheckClean) {
   const ast::Rule& track = r.spec->arbitrations[0].rules[0];
   EXPECT_EQ(track.constraint.to_string(), "true");
   ASSERT_EQ(track.body[0]->kind, Stmt::Kind::Set);
-  EXPECT_DOUBLE_EQ(track.body[0]->duration->seconds, 1.0);
+  EXPECT_EQ(track.body[0]->duration->nanos, 1s);
   EXPECT_EQ(r.spec->arbitrations[0].rules[1].constraint.to_string(), "not e_face_detected");
 }
 
@@ -196,7 +198,7 @@ TEST(Frontend, StatusFlagsMapToEvents) {
   ASSERT_TRUE(r.ok()) << render_diagnostics(r.diagnostics, nullptr);
   EXPECT_EQ(r.spec->find_event("e_taken")->flag, "taken");
   EXPECT_EQ(r.spec->find_event("e_idle")->flag, "e_idle");
-  EXPECT_DOUBLE_EQ(*r.spec->find_event("e_idle")->lifetime, 0.5);
+  EXPECT_EQ(*r.spec->find_event("e_idle")->lifetime, 500ms);
 }
 
 TEST(Frontend, IntWidensToFloatButNotTheOtherWay) {

@@ -204,8 +204,11 @@ class Sema {
   void check_list(ast::Expr& e, Scope& scope);
   // A condition (`accept`, `if`, a derived event's predicate): reports non-bool with `id`.
   void check_condition(ast::Expr& e, Scope& scope, const std::string& what, const char* id);
-  // Resolves a duration position to seconds; `what` names it ("the lifetime").
+  // Resolves a duration position to whole nanoseconds; `what` names it ("the lifetime").
   void check_duration(ast::Duration& d, const std::string& what);
+  // The whole nanoseconds of `e`, a positive duration literal or constant; nullopt, with the
+  // error reported, when it is not a whole number of them or longer than 100 years.
+  std::optional<Nanos> duration_nanos(const ast::Expr& e, const std::string& what);
   // Turns a constraint expression into a Constraint; `otherwise_ok` allows a whole `otherwise`
   // (the caller records it). Reports anything but events, true, false, not, and, or.
   Constraint check_constraint(ast::Expr& e, const std::string& where, bool otherwise_ok);

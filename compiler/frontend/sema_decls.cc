@@ -127,7 +127,7 @@ void Sema::declare_events() {
     s.source = e.source.qualified();
     if (e.lifetime) {
       check_duration(*e.lifetime, "the `for` lifetime");
-      s.lifetime = e.lifetime->seconds;
+      s.lifetime = e.lifetime->nanos;
     }
     add_event(std::move(s));
   }
@@ -154,7 +154,7 @@ void Sema::declare_manual_events(EventDecl& e) {
     s.kind = EventSymbol::Kind::Manual;
     s.name = n.name;
     s.loc = n.loc;
-    if (e.lifetime) s.lifetime = e.lifetime->seconds;
+    if (e.lifetime) s.lifetime = e.lifetime->nanos;
     add_event(std::move(s));
   }
 }
@@ -186,7 +186,7 @@ void Sema::declare_status_events(StatusEventDecl& e) {
     s.loc = entry.loc;
     s.source = e.source.qualified();
     s.flag = entry.flag;
-    if (e.lifetime) s.lifetime = e.lifetime->seconds;
+    if (e.lifetime) s.lifetime = e.lifetime->nanos;
     add_event(std::move(s));
   }
 }

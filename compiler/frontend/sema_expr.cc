@@ -1,12 +1,12 @@
-// Semantic analysis of expressions: name resolution, types, durations, constants and
-// constraints. Every checked Expr records its type and what its names refer to (ast.h).
+// Semantic analysis of expressions: name resolution, types, constants and constraints
+// (durations: sema_duration.cc). Every checked Expr records its type and what its names refer to
+// (ast.h).
 #include <cmath>
 #include <cstdio>
 
 #include "compiler/frontend/builtin_aliases.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
-#include "core/instant.h"
 #include "core/join.h"
 
 namespace arbc::frontend {
@@ -497,39 +497,7 @@ void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, const
     error(e.loc, what + " must be a bool, not " + describe(e.type), id);
 }
 
-// ---- durations and constants ----------------------------------------------------------------
-
-void Sema::check_duration(Duration& d, const std::string& what) {
-  Expr& e = *d.expr;
-  if (e.kind == Expr::Kind::Number) {
-    char n_text[32];
-    std::snprintf(n_text, sizeof n_text, "%g", e.number);
-    std::string n = n_text;
-    error(e.loc, what + " needs a unit: write e.g. " + n + "s, " + n + "ms or " + n + "min",
-          "duration");
-    return;
-  }
-  Scope empty;
-  check_expr(e, empty);
-  if (!e.type) return;
-  if (e.kind == Expr::Kind::Name && !e.is_duration) {
-    error(e.loc,
-          "constant '" + e.text + "' is " + describe(e.type) + ", but " + what +
-              " must be a duration such as 500ms or 1s",
-          "duration");
-    return;
-  }
-  d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
-  if (!(d.seconds > 0) || !std::isfinite(d.seconds)) {
-    error(e.loc, what + " must be a positive duration, such as 500ms or 1s", "duration");
-  } else if (d.seconds < kShortestDuration) {
-    error(e.loc,
-          what +
-              " must be at least 0.001ms: the runtime takes instants less than a nanosecond "
-              "apart as one, so a shorter duration would not mean what the proof reads",
-          "duration");
-  }
-}
+// ---- constants (durations: sema_duration.cc) -------------------------------------------------
 
 bool Sema::fold_const(const Expr& e, ConstDecl& into) {
   switch (e.kind) {

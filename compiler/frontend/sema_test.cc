@@ -114,11 +114,14 @@ void Sema::check_test_time(Duration& d, const std::string& what) {
   Scope empty;
   check_expr(e, empty);
   if (!e.type) return;
-  d.seconds = e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
+  double seconds =
+      e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
   if (!e.is_duration && e.kind != Expr::Kind::Duration) {
     error(e.loc, what + " must be a time such as 1.5s or 200ms", "duration");
-  } else if (!(d.seconds >= 0) || !std::isfinite(d.seconds)) {
+  } else if (!(seconds >= 0) || !std::isfinite(seconds)) {
     error(e.loc, what + " must be a time >= 0s", "duration");
+  } else if (std::optional<Nanos> n = duration_nanos(e, what)) {
+    d.nanos = *n;  // an instant of the run, which counts whole nanoseconds
   }
 }
 
@@ -168,7 +171,7 @@ void Sema::check_test_window(TestWindow& w, bool instant_only) {
     return;
   }
   check_test_time(w.to, "the end of a window");
-  if (w.to.seconds < w.from.seconds) {
+  if (w.to.nanos < w.from.nanos) {
     error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`", "test-window");
   }
 }

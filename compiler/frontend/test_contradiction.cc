@@ -1,20 +1,18 @@
 #include "compiler/frontend/test_contradiction.h"
 
-#include <limits>
-
 namespace arbc::frontend {
 
 namespace {
 
 struct Span {
-  double from, to;
+  Nanos from, to;
 };
 
 // A window's instants; without one, the whole test.
 Span span_of(const ast::TestWindow& w) {
-  if (!w.present) return {0, std::numeric_limits<double>::infinity()};
-  if (!w.to.expr) return {w.from.seconds, w.from.seconds};
-  return {w.from.seconds, w.to.seconds};
+  if (!w.present) return {Nanos(0), kNever};
+  if (!w.to.expr) return {w.from.nanos, w.from.nanos};
+  return {w.from.nanos, w.to.nanos};
 }
 
 }  // namespace

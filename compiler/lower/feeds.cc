@@ -39,8 +39,8 @@ std::vector<FeedGroup> plan_feeds(const ast::Spec& spec, const std::set<std::str
       const ast::DerivedEventDecl* decl = find_derived(spec, sym.name);
       if (!decl) continue;  // sema guarantees one; nothing to generate otherwise
       FeedGroup& g = group_for(sym);
-      std::optional<double> life;
-      if (decl->lifetime) life = decl->lifetime->seconds;
+      std::optional<Nanos> life;
+      if (decl->lifetime) life = decl->lifetime->nanos;
       const ast::PortDecl* source = decl->source.port_decl;
       g.plan.derived.push_back(
           {sym.name, lower_expr(*decl->predicate, source ? source->type.resolved : nullptr), life,

@@ -88,13 +88,13 @@ class Lowerer {
       if (auto t = lower_temporal(n)) app.temporal.push_back(std::move(*t));
     for (const ast::AssumeDecl& a : spec_.assumptions) {
       if (!a.after_decl) continue;  // sema reported it
-      std::optional<double> absent_for;
-      if (a.absent_for.expr) absent_for = a.absent_for.seconds;
+      std::optional<Nanos> absent_for;
+      if (a.absent_for.expr) absent_for = a.absent_for.nanos;
       app.assumptions.push_back(
           {a.event, a.after_decl->port->port.qualified(), a.after, a.until, a.loc, absent_for});
     }
     for (const ast::RateDecl& r : spec_.rates)
-      if (r.port.port_decl) app.rates.push_back({r.port.qualified(), r.period.seconds, r.loc});
+      if (r.port.port_decl) app.rates.push_back({r.port.qualified(), r.period.nanos, r.loc});
     for (const ast::ResourceDecl& r : spec_.resources) {
       model::Resource res;
       res.name = r.name;
@@ -171,8 +171,8 @@ class Lowerer {
     const ast::Stmt* script = nullptr;
     for_each_stmt(body, [&](const ast::Stmt& s) {
       if (s.kind == ast::Stmt::Kind::Throttle && !c.throttle && s.duration)
-        c.throttle = s.duration->seconds;
-      if (s.kind == ast::Stmt::Kind::Every && s.duration) c.trig_interval = s.duration->seconds;
+        c.throttle = s.duration->nanos;
+      if (s.kind == ast::Stmt::Kind::Every && s.duration) c.trig_interval = s.duration->nanos;
       if (s.kind == ast::Stmt::Kind::Script) script = &s;
     });
     if (script) {
@@ -226,8 +226,8 @@ class Lowerer {
       w.connection = add_connection(std::move(c), std::move(plan));
       ap.rules.push_back(r.name);
       if (!w.activity.empty()) {
-        std::optional<double> hold;
-        if (r.hold) hold = r.hold->seconds;
+        std::optional<Nanos> hold;
+        if (r.hold) hold = r.hold->nanos;
         out_.app.events.push_back({w.activity, hold, "", r.loc});
       }
       rules.push_back(std::move(w));

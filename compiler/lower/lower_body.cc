@@ -224,7 +224,7 @@ bool stmt(const ast::Stmt& s, const TypePtr& destination, std::vector<BodyStmt>&
       break;
     case Kind::Set:
       o.kind = BodyStmt::Kind::Set;
-      if (s.duration) o.lifetime = s.duration->seconds;
+      if (s.duration) o.lifetime = s.duration->nanos;
       break;
     case Kind::Unset:
       o.kind = BodyStmt::Kind::Unset;

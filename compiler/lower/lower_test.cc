@@ -11,6 +11,8 @@
 #include "tests/support/tree_paths.h"
 
 namespace arbc::lower {
+
+using namespace std::chrono_literals;
 namespace {
 
 using testing::compile_ok;
@@ -127,7 +129,7 @@ never two track within 1s;
   EXPECT_EQ(app.temporal[2].other, "track");
   EXPECT_EQ(app.temporal[2].port, "Head.gaze");
   EXPECT_EQ(app.temporal[3].kind, K::Spacing);
-  EXPECT_EQ(app.temporal[3].window, 1.0);
+  EXPECT_EQ(app.temporal[3].window, 1s);
 }
 
 TEST(LowerTest, DerivedEventsWithForAreNeverUnsetWithoutForThey) {
@@ -142,7 +144,7 @@ TEST(LowerTest, DerivedEventsWithForAreNeverUnsetWithoutForThey) {
   EXPECT_EQ(unreachable->unsets, (V{"e_unreachable"}));
   EXPECT_EQ(face->sets, (V{"e_face_detected"}));
   EXPECT_TRUE(face->unsets.empty());
-  EXPECT_EQ(app.find_event("e_face_detected")->lifetime, 1.0);
+  EXPECT_EQ(app.find_event("e_face_detected")->lifetime, 1s);
   EXPECT_EQ(app.find_event("e_face_detected")->source, "FaceDetector.face");
 }
 
@@ -158,7 +160,7 @@ arbitrate Head.gaze { a: from Looker.gaze when e_held and e_idle; }
   EXPECT_EQ(feed.status_flags[0].event, "e_held");
   EXPECT_EQ(feed.status_flags[0].flag, "holding");
   EXPECT_EQ(feed.status_flags[1].flag, "e_idle");
-  EXPECT_EQ(feed.status_flags[0].lifetime, 0.5);
+  EXPECT_EQ(feed.status_flags[0].lifetime, 500ms);
   EXPECT_EQ(feed.message_name, "status");
 }
 
@@ -189,7 +191,7 @@ arbitrate Head.gaze by priority {
   EXPECT_EQ(find_connection(app, "Head.gaze", "third")->activity_event, "");
   EXPECT_EQ(model::effective_guard(app, "Head.gaze", *first).to_string(), "a and act_first");
   ASSERT_NE(app.find_event("act_second"), nullptr);
-  EXPECT_EQ(app.find_event("act_second")->lifetime, 0.3);
+  EXPECT_EQ(app.find_event("act_second")->lifetime, 300ms);
   EXPECT_EQ(app.find_event("act_third"), nullptr);  // the lowest rule has none
 }
 
@@ -320,8 +322,8 @@ arbitrate Mouth.text {
 )"));
   ASSERT_TRUE(c.ok);
   const model::Connection* ask = find_connection(c.lowered->app, "Mouth.text", "ask");
-  EXPECT_EQ(ask->throttle, 5.0);
-  EXPECT_EQ(ask->trig_interval, 0.25);
+  EXPECT_EQ(ask->throttle, 5s);
+  EXPECT_EQ(ask->trig_interval, 250ms);
   EXPECT_EQ(ask->unsets, (V{"tick_seen"}));
   EXPECT_TRUE(ask->must_unset.empty());  // `every` runs from trig, not on the message path
 }

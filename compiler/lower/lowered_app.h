@@ -19,16 +19,16 @@ namespace arbc::lower {
 // `events from M.p { e = "flag" }`: one status flag copied into a port's container.
 struct StatusFlagFeed {
   std::string event;
-  std::string flag;                // the module's own flag name
-  std::optional<double> lifetime;  // seconds; none: until a message lacks the flag
-  model::SourceLocation loc;       // the `events from` entry
+  std::string flag;               // the module's own flag name
+  std::optional<Nanos> lifetime;  // none: until a message lacks the flag
+  model::SourceLocation loc;      // the `events from` entry
 };
 
 // `event e = M.p : PRED [for D]`: a derived event recomputed on each message.
 struct DerivedFeed {
   std::string event;
-  model::BodyExpr predicate;       // over the message, typed (core/body_types.h)
-  std::optional<double> lifetime;  // `for D`: set for D, never unset; none: unset when false
+  model::BodyExpr predicate;      // over the message, typed (core/body_types.h)
+  std::optional<Nanos> lifetime;  // `for D`: set for D, never unset; none: unset when false
   model::SourceLocation loc;
 };
 

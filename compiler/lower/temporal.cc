@@ -9,7 +9,7 @@ std::optional<model::TemporalProperty> lower_temporal(const ast::TemporalDecl& n
   t.kind = static_cast<model::TemporalProperty::Kind>(n.kind);  // the same five, in order
   t.port = port->port.qualified();
   t.rule = n.rule;
-  t.window = n.window.seconds;
+  t.window = n.window.nanos;
   t.event = n.event;
   t.other = n.other;
   t.stops = n.stops;

@@ -15,7 +15,7 @@ Value value_for(const ast::Expr& e, const ast::PortRef& port) {
 
 model::TestStep lower_step(const ast::TestStep& s) {
   model::TestStep out;
-  out.t = s.at.seconds;
+  out.t = s.at.nanos;
   out.loc = s.loc;
   switch (s.kind) {
     case ast::TestStep::Kind::Input:
@@ -38,8 +38,8 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
   out.text = e.text;
   out.loc = e.loc;
   if (e.window.present) {
-    out.from = e.window.from.seconds;
-    out.to = e.window.to.expr ? e.window.to.seconds : out.from;
+    out.from = e.window.from.nanos;
+    out.to = e.window.to.expr ? e.window.to.nanos : out.from;
   }
   switch (e.kind) {
     case ast::TestExpect::Kind::Receives:

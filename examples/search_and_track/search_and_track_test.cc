@@ -9,6 +9,8 @@
 #include "runtime/runtime.h"
 
 namespace arbc::table_clean {
+
+using namespace std::chrono_literals;
 namespace {
 
 model::App paper_search_and_track(const std::string& search_constraint) {
@@ -29,7 +31,7 @@ model::App paper_search_and_track(const std::string& search_constraint) {
   app.modules.push_back({"HeadControl", "", {port("gaze", model::Direction::In, "vec3")}, {}});
   model::Event e;
   e.name = "e_face_detected";
-  e.lifetime = 1.0;
+  e.lifetime = 1s;
   app.events.push_back(e);
   model::Connection track;
   track.name = "track";

@@ -3,6 +3,8 @@
 #include <utility>
 
 namespace arbc::table_clean {
+
+using namespace std::chrono_literals;
 namespace {
 
 using model::ConnectionKind;
@@ -38,7 +40,7 @@ model::Connection connection(std::string name, std::string from, std::string to,
   return c;
 }
 
-model::Event event(std::string name, std::optional<double> lifetime, std::string source) {
+model::Event event(std::string name, std::optional<Nanos> lifetime, std::string source) {
   model::Event e;
   e.name = std::move(name);
   e.lifetime = lifetime;
@@ -68,12 +70,12 @@ model::App paper_app() {
       module("Speak", {port("text", In, "string")}),
   };
   app.events = {
-      event("e_taken", 0.5, "PickAndPlace.status"),
-      event("e_arm_idle", 0.5, "PickAndPlace.status"),
-      event("e_pull_idle", 0.5, "PullObject.status"),
+      event("e_taken", 500ms, "PickAndPlace.status"),
+      event("e_arm_idle", 500ms, "PickAndPlace.status"),
+      event("e_pull_idle", 500ms, "PullObject.status"),
       event("e_unreachable", std::nullopt, "ObjectDetector.objects"),
-      event("e_face_detected", 1.0, "FaceDetector.face"),
-      event("act_track", 1.0, ""),
+      event("e_face_detected", 1s, "FaceDetector.face"),
+      event("act_track", 1s, ""),
   };
   const auto Rule = ConnectionKind::Rule;
   const auto Feed = ConnectionKind::Feed;
@@ -108,7 +110,7 @@ model::App paper_app() {
                  "face_feed.lua"),
   };
   for (model::Connection& c : app.connections) {
-    if (c.name == "ask") c.throttle = 5.0;
+    if (c.name == "ask") c.throttle = 5s;
     if (c.name == "track") {  // by priority: each delivery holds search off for 1 s
       c.activity_event = "act_track";
       c.sets = {"act_track"};

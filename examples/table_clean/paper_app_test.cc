@@ -37,7 +37,7 @@ Outcome run(const model::App& app, const std::string& scenario, uint64_t seed) {
   runtime->run();
   out.success = runtime->environment()->success();
   out.summary = runtime->environment()->summary();
-  out.end = runtime->now();
+  out.end = seconds_of(runtime->now());
   World* world = dynamic_cast<WorldEnvironment&>(*runtime->environment()).world();
   out.slips = world->arm().slips();
   out.cancels = world->rake().cancels_honoured();

@@ -15,11 +15,7 @@ std::string qualified(const std::map<std::string, SpecPort>& ports, const std::s
   return p.module + "." + p.port;
 }
 
-std::string duration(double seconds) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%gs", seconds);
-  return buf;
-}
+std::string duration(Nanos d) { return decimal_seconds(d) + "s"; }
 
 std::string modules_text(const std::map<std::string, SpecPort>& ports) {
   std::map<std::string, std::vector<std::string>> by_module;

@@ -162,7 +162,7 @@ void arbitrated_ports(YarpImport& im) {
 
 // The events the app names, with a lifetime when every setEvent of it gives the same one.
 void collect_events(YarpImport& im) {
-  std::map<std::string, std::set<double>> lifetimes;
+  std::map<std::string, std::set<Nanos>> lifetimes;
   std::set<std::string> forever, names;
   for (size_t i = 0; i < im.connections.size(); ++i) {
     const model::Connection& c = im.app.connections[i];
@@ -175,7 +175,9 @@ void collect_events(YarpImport& im) {
     for (const MonitorCall& call : im.connections[i].monitor->facts.calls) {
       if (call.function != "setEvent" || !call.text) continue;
       if (call.number && *call.number > 0) {
-        lifetimes[*call.text].insert(*call.number);
+        // To the nanosecond, the runtime's unit (core/instant.h), and no longer than a spec
+        // may write.
+        lifetimes[*call.text].insert(std::min(nanos_from_seconds(*call.number), kLongestDuration));
       } else {
         forever.insert(*call.text);
       }

@@ -242,13 +242,13 @@ class Gen {
 
 class NullHost : public MonitorHost {
  public:
-  double now() override { return 0; }
-  void set_event(std::string_view, std::optional<double>) override {}
+  Nanos now() override { return Nanos(0); }
+  void set_event(std::string_view, std::optional<Nanos>) override {}
   void unset_event(std::string_view) override {}
   bool has_event(std::string_view) override { return false; }
   bool set_constraint(std::string_view, std::string*) override { return true; }
   std::string get_constraint() override { return "true"; }
-  void set_trig_interval(double) override {}
+  void set_trig_interval(Nanos) override {}
   void print(const std::string&) override {}
 };
 

@@ -51,6 +51,12 @@ golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 golden missing.txt repo 2 tests/verify/no_such_app.json
 golden bad_format.txt specs 2 --format xml tests/verify/table_clean.app.json
+# A duration between two nanoseconds (ten digits after the point) is refused at its place: the
+# runtime counts whole nanoseconds and the proof reads the same integer (docs/app-json.md).
+golden ten_digit_duration.txt repo 2 tests/verify/ten_digit_duration.app.json
+# Durations a nanosecond apart (0.999999999s, 1.000000001s): violated at whole nanoseconds and
+# replayed; with the unrolling's times as reals this ran into the timeout and said unknown.
+golden temporal_ns_slow.txt repo 1 --temporal-bound 6 tests/verify/temporal_ns_slow.spec
 # Specs go through the compiler (front end + lowering).
 golden spec_proved.txt repo 0 specs/table_clean.spec specs/search_and_track.spec
 golden spec_refuted.txt repo 1 tests/verify/table_clean_take_mutant.spec

@@ -20,13 +20,21 @@ verdicts under assumptions and (in 500 runs or more) proofs by k-induction. A
 counterexample whose replay disagrees with the checker (an internal error, never a verdict)
 fails the test too.
 
+Times are the runtime's whole nanoseconds (docs/design.md#events-and-lifetimes), judged exactly
+(the trace's decimals read as integers, no tolerance). Half the messages come a nanosecond
+before, at, or a nanosecond after an earlier message's time plus one of the app's durations
+(a throttle, a hold, a lifetime, a window, a rate), where a throttle or a hold ends, an event
+lapses or a window closes; some durations are themselves a nanosecond off a round value.
+
 usage: temporal_differential.py ARBC CASES [SEED] [--keep]   (CASES: runs in all; exit 0 when
 none contradicts the checker, 1 otherwise; the work directory is kept when a case contradicts
 or with --keep)
 """
+import decimal
 import json
 import os
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -34,6 +42,24 @@ import tempfile
 
 BOUND = 6          # --temporal-bound: messages into the port the checker explores
 RUNS_PER_APP = 4   # random input timings per app
+NS = 10 ** 9       # nanoseconds in a second
+MS = 10 ** 6       # in a millisecond
+
+
+def ns_of(seconds):
+    """Whole nanoseconds of a duration or a time written in seconds ("0.5", 1, a Decimal)."""
+    return int(decimal.Decimal(str(seconds)) * NS)
+
+
+def seconds_text(ns):
+    """`ns` as the exact decimal of its seconds, as the runtime writes times."""
+    text = f"{ns // NS}.{ns % NS:09d}".rstrip("0")
+    return text + "0" if text.endswith(".") else text
+
+
+def durations_of(spec_text):
+    """Every duration the spec states, in nanoseconds: where deadlines fall after an instant."""
+    return sorted({ns_of(d) for d in re.findall(r"(\d+(?:\.\d+)?)s\b", spec_text)})
 
 
 def rule_body(rng, name, source, holds):
@@ -41,10 +67,10 @@ def rule_body(rng, name, source, holds):
     guard = rng.choice(["", "e1", "not e1", "e2", "e1 and not e2", "e1 or e2", "not e2"])
     head = f"  {name}: from {source}.x" + (f" when {guard}" if guard else "")
     if holds:
-        head += f" hold {rng.choice([0.2, 0.5, 1])}s"
+        head += f" hold {rng.choice([0.2, 0.5, 1, '0.999999999', '1.000000001'])}s"
     lines = []
     if rng.random() < 0.6:
-        lines.append(f"throttle {rng.choice([0.1, 0.3, 0.5, 1, 2])}s;")
+        lines.append(f"throttle {rng.choice([0.1, 0.3, 0.5, 1, 2, '0.999999999', '1.000000001'])}s;")
     if rng.random() < 0.3:
         lines.append("accept x > 2;")
     lines.append("emit x;")
@@ -55,7 +81,7 @@ def random_app(rng, index):
     """The spec text, the sources of its messages and the property (shape, rule, argument)."""
     n_rules = rng.randint(1, 3)
     by_priority = n_rules > 1 and rng.random() < 0.5
-    lifetime = rng.choice([0.2, 0.5, 1.0])
+    lifetime = rng.choice([0.2, 0.5, 1.0, "0.500000001"])
     sources = [f"S{k}" for k in range(1, n_rules + 1)]
     lines = [f'app diff{index} "a random app of the differential test";',
              "type Status = list<string>;",
@@ -72,19 +98,21 @@ def random_app(rng, index):
     shape = rng.choice(["spacing", "spacing", "absence", "stability", "response"] +
                        (["precedence", "response", "spacing_after"] if n_rules > 1 else []))
     if shape == "stability":
-        window = rng.choice([0.1, 0.3, 0.6, 1.0])
+        window = rng.choice(["0.1", "0.3", "0.6", "1", "0.999999999"])
         lines.append(f"stable Dst.y for {window}s;")
-        return "\n".join(lines) + "\n", sources, ("stability", rule, window), None
+        return "\n".join(lines) + "\n", sources, ("stability", rule, ns_of(window)), None
     if shape == "response":
         prop = response_prop(rng, lines, n_rules, k)
         return "\n".join(lines) + "\n", sources, prop, None
     if shape == "spacing":
-        prop = ("spacing", rule, rng.choice([0.1, 0.25, 0.5, 1.0, 2.0]))
-        lines.append(f"never two {rule} within {prop[2]}s;")
+        window = rng.choice(["0.1", "0.25", "0.5", "1", "2", "1.000000001", "0.999999999"])
+        prop = ("spacing", rule, ns_of(window))
+        lines.append(f"never two {rule} within {window}s;")
     elif shape == "spacing_after":
         other = f"r{rng.choice([j for j in range(1, n_rules + 1) if j != k])}"
-        prop = ("spacing_after", rule, (other, rng.choice([0.1, 0.25, 0.5, 1.0])))
-        lines.append(f"never {rule} within {prop[2][1]}s after {other};")
+        window = rng.choice(["0.1", "0.25", "0.5", "1", "1.000000001"])
+        prop = ("spacing_after", rule, (other, ns_of(window)))
+        lines.append(f"never {rule} within {window}s after {other};")
     elif shape == "absence":
         events = ["e1", "e2"] + ([f"act_r{j}" for j in range(1, n_rules)] if by_priority else [])
         prop = ("absence", rule, rng.choice(events))
@@ -98,8 +126,8 @@ def random_app(rng, index):
         # explores only such environments, and the runs are made to keep it (keep_assumption).
         after, until = rng.sample([f"r{j}" for j in range(1, n_rules + 1)], 2)
         if rng.random() < 0.5:
-            absent_for = rng.choice([0.2, 0.5, 1.0])
-            assumption = ("e1", after, None, absent_for)
+            absent_for = rng.choice(["0.2", "0.5", "1", "1.000000001"])
+            assumption = ("e1", after, None, ns_of(absent_for))
             lines.append(f"assume not e1 for {absent_for}s after {after};")
         else:
             until = until if rng.random() < 0.7 else None
@@ -118,53 +146,71 @@ def response_prop(rng, lines, n_rules, k):
     else:
         trigger, stops = rng.choice(["e1", "e2"]), False
     answer = f"r{k}" if rng.random() < 0.6 else "Dst.y"
-    window = rng.choice([0.3, 0.6, 1.0, 1.5])
+    window = rng.choice(["0.3", "0.6", "1", "1.5", "0.999999999"])
     condition = rng.choice(["", "", "e1", "not e2", "e1 and e2"])
-    period = rng.choice([None, 0.2, 0.4, 0.7])
+    period = rng.choice([None, "0.2", "0.4", "0.7"])
     if period is not None:
         lines.append(f"given S{k}.x every {period}s;")
     lines.append(f"after {trigger}{' stops' if stops else ''}, {answer} within {window}s"
                  + (f" while {condition}" if condition else "") + ";")
-    return ("response", answer, (trigger, stops, window, condition, period, f"S{k}"))
+    period = None if period is None else ns_of(period)
+    return ("response", answer, (trigger, stops, ns_of(window), condition, period, f"S{k}"))
 
 
-def rated_times(rng, period, end_ms, taken):
-    """Times (ms) of a source publishing at least every `period` from 0 to `end_ms`, avoiding
-    the times in `taken` (so that the order into the port is the order of time)."""
+def rated_times(rng, period, end, taken):
+    """Times (ns, on whole milliseconds) of a source publishing at least every `period` ns from
+    0 to `end`, avoiding the times in `taken` (so that the order into the port is the order of
+    time)."""
     out, last = [], 0
-    p = int(period * 1000)
-    while last + p <= end_ms or not out:
+    p = period // MS
+    while (last + p) * MS <= end or not out:
         t = rng.randint(last + 1, last + p)
-        while t in taken and t > last + 1:
+        while t * MS in taken and t > last + 1:
             t -= 1
-        if t in taken:
+        if t * MS in taken:
             break
-        out.append(t)
-        taken.add(t)
+        out.append(t * MS)
+        taken.add(t * MS)
         last = t
     return out
 
 
-def random_inputs(rng, sources, rule_source, period=None):
-    """As random_other_inputs; with a `period`, the rule's source also publishes at that rate
-    up to the end of the run (the last message plus the longest window)."""
+def random_inputs(rng, sources, rule_source, durations, period=None):
+    """As random_other_inputs; with a `period` (ns), the rule's source also publishes at that
+    rate up to the end of the run (the last message plus the longest window)."""
     if period is None:
-        return random_other_inputs(rng, sources, rule_source)
-    others = random_other_inputs(rng, [s for s in sources if s != rule_source], None)
-    taken = {int(round(m["t"] * 1000)) for m in others}
-    end = max(taken) + 1500 if taken else 1500
-    rated = [{"t": ms / 1000, "port": f"{rule_source}.x", "value": rng.randint(0, 5)}
-             for ms in rated_times(rng, period, end, taken)]
+        return random_other_inputs(rng, sources, rule_source, durations)
+    others = random_other_inputs(rng, [s for s in sources if s != rule_source], None, durations)
+    taken = {m["t"] for m in others}
+    end = max(taken) + 1500 * MS if taken else 1500 * MS
+    rated = [{"t": t, "port": f"{rule_source}.x", "value": rng.randint(0, 5)}
+             for t in rated_times(rng, period, end, taken)]
     return sorted(others + rated, key=lambda m: m["t"])
 
 
-def random_other_inputs(rng, sources, rule_source):
-    """Messages at distinct random times (so the order into the port is the order of time),
-    half of them from the property's rule's source."""
+def near_deadlines(rng, times, durations):
+    """`times` (ns, distinct, sorted) with about half of them moved to a nanosecond before, at,
+    or a nanosecond after an earlier time plus one of `durations`: where a throttle or a hold
+    that began at that earlier message ends, an event it set lapses, or a window closes."""
+    times = list(times)
+    for i in range(1, len(times)):
+        if not durations or rng.random() < 0.5:
+            continue
+        moved = times[rng.randrange(i)] + rng.choice(durations) + rng.choice([-1, 0, 1])
+        if moved not in times:
+            times[i] = moved
+    return sorted(times)
+
+
+def random_other_inputs(rng, sources, rule_source, durations):
+    """Messages at distinct times (so the order into the port is the order of time), many of
+    them on a deadline's last nanosecond or just past it (near_deadlines), half of them from the
+    property's rule's source."""
     n = rng.randint(2, BOUND + 2)
-    times = sorted(rng.sample(range(1, 1500), n))
+    times = near_deadlines(rng, [ms * MS for ms in sorted(rng.sample(range(1, 1500), n))],
+                           durations)
     out = []
-    for ms in times:
+    for t in times:
         if rule_source and rng.random() < 0.5:
             port = f"{rule_source}.x"
         else:
@@ -173,7 +219,7 @@ def random_other_inputs(rng, sources, rule_source):
             value = [e for e in ("e1", "e2") if rng.random() < 0.6]
         else:
             value = rng.randint(0, 5)
-        out.append({"t": ms / 1000, "port": port, "value": value})
+        out.append({"t": t, "port": port, "value": value})
     return out
 
 
@@ -189,7 +235,7 @@ def decisions(steps):
                 entries.pop(s["owner"], None)
         elif s.get("type") in ("deliver", "drop") and (
                 s["connection"].startswith("r") or s["connection"].startswith("feed_")):
-            present = any(e < 0 or s["t"] + 1e-9 < e for e in entries.values())
+            present = any(e < 0 or s["t"] < e for e in entries.values())
             yield s["t"], s["connection"], s["type"] == "deliver", present
 
 
@@ -202,7 +248,7 @@ def broken_at(steps, assumption):
         if absent_for is None and present and not armed:
             return t
         if (absent_for is not None and present and last_after is not None
-                and t - last_after < absent_for - 1e-9):
+                and t - last_after < absent_for):
             return t
         if delivered and who == after:
             armed = True
@@ -222,7 +268,7 @@ def keep_assumption(arbc, app_dir, inputs, assumption, work):
         if at is None:
             return steps
         reported = [m for m in inputs if m["port"] == "Status.s" and "e1" in m["value"]
-                    and m["t"] <= at + 1e-9]
+                    and m["t"] <= at]
         if not reported:
             raise RuntimeError(f"{app_dir}: e1 present at {at} with no status reporting it")
         reported[-1]["value"].remove("e1")
@@ -261,7 +307,7 @@ def first_violation(steps, prop):
         t, who = s["t"], s["connection"]
         if kind == "stability":  # two switches of the delivering rule less than arg apart
             if last_who is not None and who != last_who:
-                if last_switch is not None and t - last_switch < arg - 1e-9:
+                if last_switch is not None and t - last_switch < arg:
                     return t
                 last_switch = t
             last_who = who
@@ -270,7 +316,7 @@ def first_violation(steps, prop):
             other, window = arg
             if who == other:
                 last = t
-            elif who == rule and last is not None and t - last < window - 1e-9:
+            elif who == rule and last is not None and t - last < window:
                 return t
             continue
         if kind == "precedence" and who == arg:
@@ -278,11 +324,11 @@ def first_violation(steps, prop):
         if who != rule:
             continue
         if kind == "spacing":
-            if last is not None and t - last < arg - 1e-9:
+            if last is not None and t - last < arg:
                 return t
             last = t
         elif kind == "absence":
-            if any(e < 0 or t + 1e-9 < e for e in entries.values()):
+            if any(e < 0 or t < e for e in entries.values()):
                 return t
         else:
             if not armed:
@@ -310,7 +356,7 @@ def response_violation(steps, prop, inputs):
     rated_times = [m["t"] for m in inputs if m["port"] == rated + ".x"]
     # The observed run: while the rate holds (to its last message plus the period), or, with no
     # rate, to the end of the run.
-    end = (rated_times[-1] + period) if period is not None and rated_times else inputs[-1]["t"] + 1
+    end = (rated_times[-1] + period) if period is not None and rated_times else inputs[-1]["t"] + NS
     history = []  # (t, event, owner, expiry or None for an unset)
     delivers = []
     for s in steps:
@@ -323,13 +369,13 @@ def response_violation(steps, prop, inputs):
     def present_at(d):
         entries = {}
         for t, event, owner, expiry in history:
-            if t > d + 1e-9:
+            if t > d:
                 break
             if expiry is None:
                 entries.pop((event, owner), None)
             else:
                 entries[event, owner] = expiry
-        return {ev for (ev, _), x in entries.items() if x < 0 or d + 1e-9 < x}
+        return {ev for (ev, _), x in entries.items() if x < 0 or d < x}
 
     def onsets(event):
         """The times `event` becomes present in the port: absent before a record, present after."""
@@ -337,26 +383,41 @@ def response_violation(steps, prop, inputs):
         for t, ev, owner, expiry in history:
             if ev != event:
                 continue
-            before = any(x < 0 or t + 1e-9 < x for x in entries.values())
+            before = any(x < 0 or t < x for x in entries.values())
             if expiry is None:
                 entries.pop(owner, None)
             else:
                 entries[owner] = expiry
-            if not before and any(x < 0 or t + 1e-9 < x for x in entries.values()):
+            if not before and any(x < 0 or t < x for x in entries.values()):
                 out.append(t)
         return out
 
     triggers = onsets(other) if other.startswith("e") else [t for t, w in delivers if w == other]
     for t in triggers:
-        if t + window > end + 1e-9:
+        if t + window > end:
             continue
-        answered = any(t < u <= t + window + 1e-9 and (w == rule or port or (stops and w == other))
+        answered = any(t < u <= t + window and (w == rule or port or (stops and w == other))
                        for u, w in delivers)
-        lapsed = any(t < d <= t + window + 1e-9 and not holds(condition, present_at(d))
+        lapsed = any(t < d <= t + window and not holds(condition, present_at(d))
                      for d in decision_times)
         if not answered and not lapsed:
             return t + window
     return None
+
+
+def input_line(m):
+    """One line of an inputs file, its time the exact decimal of its nanoseconds."""
+    return (f'{{"t": {seconds_text(m["t"])}, "port": {json.dumps(m["port"])}, '
+            f'"value": {json.dumps(m["value"])}}}\n')
+
+
+def trace_record(line):
+    """A trace line with its times (exact decimals of nanoseconds) as whole nanoseconds."""
+    r = json.loads(line, parse_float=decimal.Decimal)
+    for key in ("t", "expiry"):
+        if key in r:
+            r[key] = ns_of(r[key])
+    return r
 
 
 def run_trace(arbc, app_dir, inputs, work):
@@ -364,15 +425,15 @@ def run_trace(arbc, app_dir, inputs, work):
     inputs_file = os.path.join(work, "inputs.jsonl")
     trace_file = os.path.join(work, "trace.jsonl")
     with open(inputs_file, "w") as f:
-        f.writelines(json.dumps(m) + "\n" for m in inputs)
-    duration = inputs[-1]["t"] + 1
+        f.writelines(input_line(m) for m in inputs)
+    duration = seconds_text(inputs[-1]["t"] + NS)
     r = subprocess.run([arbc, "run", app_dir, "--no-verify", "--inputs", inputs_file, "--duration",
                         f"{duration}s", "--trace", trace_file],
                        capture_output=True, text=True, timeout=120)
     if r.returncode != 0:
         raise RuntimeError(f"arbc run exited {r.returncode}: {r.stderr}")
     with open(trace_file) as f:
-        return [json.loads(line) for line in f]
+        return [trace_record(line) for line in f]
 
 
 def violation(steps, inputs, prop):
@@ -380,7 +441,7 @@ def violation(steps, inputs, prop):
     `prop`; None when it does not."""
     at = response_violation(steps, prop, inputs) if prop[0] == "response" else \
         first_violation(steps, prop)
-    return None if at is None else sum(1 for m in inputs if m["t"] <= at + 1e-9)
+    return None if at is None else sum(1 for m in inputs if m["t"] <= at)
 
 
 def main():
@@ -424,7 +485,7 @@ def main():
         for _ in range(RUNS_PER_APP):
             period = prop[2][4] if prop[0] == "response" else None
             rated = prop[2][5] if prop[0] == "response" else "S" + rule[1:]
-            inputs = random_inputs(rng, sources, rated, period)
+            inputs = random_inputs(rng, sources, rated, durations_of(spec_text), period)
             counts["runs"] += 1
             built = os.path.join(app_dir, f"diff{index}")
             if assumption:
@@ -440,7 +501,7 @@ def main():
             if outcome == "proved" or (outcome == "holds-up-to-bound" and steps <= bound):
                 kept = os.path.join(work, f"contradiction{len(contradictions) + 1}.jsonl")
                 with open(kept, "w") as f:
-                    f.writelines(json.dumps(m) + "\n" for m in inputs)
+                    f.writelines(input_line(m) for m in inputs)
                 contradictions.append(f"{spec}: {outcome} (bound {bound}), but the run violates "
                                       f"{prop[0]} after {steps} messages ({kept})")
     print(f"{counts['apps']} apps, {counts['runs']} runs ({counts['runs under an assumption']} "

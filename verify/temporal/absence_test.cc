@@ -10,6 +10,8 @@
 #include "verify/test_models.h"
 
 namespace arbc::verify::temporal {
+
+using namespace std::chrono_literals;
 namespace {
 
 using Outcome = TemporalResult::Outcome;
@@ -19,7 +21,7 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
-      model::TemporalProperty::Kind::Absence, port, rule, 0, {}, "", "", false, {}};
+      model::TemporalProperty::Kind::Absence, port, rule, 0s, {}, "", "", false, {}};
   p.event = event;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   std::optional<TemporalResult> r = check_absence(app, p, bound, ctx, nullptr, deadline, &error);
@@ -43,13 +45,13 @@ TEST(Absence, WithoutTheHoldsTermSearchDeliversInsideTracksHold) {
   // Three feeds make both rules' events present, track delivers, search delivers.
   ASSERT_EQ(r.bound, 5);
   ASSERT_EQ(r.trace.size(), 5u);
-  double track_at = -1;
+  Nanos track_at{-1};
   for (const TraceStep& s : r.trace)
     if (s.delivered && s.connection == "track") track_at = s.time;
-  ASSERT_GE(track_at, 0);
+  ASSERT_GE(track_at, 0s);
   EXPECT_EQ(r.trace.back().connection, "search");
   EXPECT_TRUE(r.trace.back().delivered);
-  EXPECT_LT(r.trace.back().time, track_at + 1.0);  // inside the 1 s hold
+  EXPECT_LT(r.trace.back().time, track_at + 1s);  // inside the 1 s hold
 }
 
 TEST(Absence, AGuardThatNeedsTheEventIsRefutedInTwoMessages) {
@@ -94,24 +96,38 @@ TEST(Absence, WhatOnlyTimeKeepsIsProvedByKInductionNotAtOneDecision) {
   // Without its events (the status feeds' flags lapse after 0.5 s, which would need more
   // messages to refresh them than the bound gives).
   testing::connection(app, "track").constraint = testing::parse("true");
-  testing::connection(app, "track").throttle = 1.0;
+  testing::connection(app, "track").throttle = 1s;
   TemporalResult proved = check(app, "HeadControl.gaze", "track", "act_track");
   EXPECT_EQ(proved.outcome, Outcome::Proved);
   EXPECT_EQ(proved.induction_k, 1);
   EXPECT_NE(proved.proof.find("k-induction with k = 1"), std::string::npos) << proved.proof;
-  testing::connection(app, "track").throttle = 0.5;
+  testing::connection(app, "track").throttle = 500ms;
   TemporalResult r = check(app, "HeadControl.gaze", "track", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);  // track, then track again 0.5 s later, inside the hold
-  EXPECT_GE(r.trace[1].time - r.trace[0].time, 0.5);
-  EXPECT_LT(r.trace[1].time - r.trace[0].time, 1.0);
+  EXPECT_GE(r.trace[1].time - r.trace[0].time, 500ms);
+  EXPECT_LT(r.trace[1].time - r.trace[0].time, 1s);
+  // A throttle one nanosecond short of the hold: the second track at its hold's last
+  // nanosecond (core/instant.h), still inside it.
+  testing::connection(app, "track").throttle = 1s - 1ns;
+  r = check(app, "HeadControl.gaze", "track", "act_track");
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  ASSERT_EQ(r.trace.size(), 2u);
+  EXPECT_EQ(r.trace[1].time - r.trace[0].time, 1s - 1ns);
 }
 
 TEST(Absence, UnknownRuleIsBadInputNotAVerdict) {
   z3::context ctx;
   std::string error;
-  model::TemporalProperty p{
-      model::TemporalProperty::Kind::Absence, "PickAndPlace.cmd", "pull", 0, {}, "", "", false, {}};
+  model::TemporalProperty p{model::TemporalProperty::Kind::Absence,
+                            "PickAndPlace.cmd",
+                            "pull",
+                            0s,
+                            {},
+                            "",
+                            "",
+                            false,
+                            {}};
   p.event = "e_taken";
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   EXPECT_FALSE(check_absence(testing::table_clean_model(), p, 4, ctx, nullptr, deadline, &error));

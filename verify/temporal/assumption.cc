@@ -65,7 +65,7 @@ void Unrolling::add_assumptions(int k) {
       solver_.add(z3::implies(!armed_before(a.after, a.until, k), absent));
       continue;
     }
-    z3::expr d = seconds(ctx_, *a.assumption.absent_for);
+    z3::expr d = nanos_term(ctx_, *a.assumption.absent_for);
     for (int i = 0; i < k; ++i)
       solver_.add(z3::implies(del_[i][static_cast<size_t>(a.after)] && t_[k] - t_[i] < d, absent));
     solver_.add(z3::implies(

@@ -19,32 +19,25 @@ z3::check_result run(z3::solver& solver, SolverTimeout& timeout, std::string* re
   return check(solver, timeout, reason);
 }
 
-// Whether every step of `n` in model `m` falls on a multiple of 1/`per_second` seconds.
-bool on_grid(const Unrolling& u, const z3::model& m, int n, int per_second, z3::context& ctx) {
-  for (int k = 0; k < n; ++k) {
-    z3::expr ticks = m.eval(u.time(k) * ctx.real_val(per_second), true);
-    // Compared as text: a denominator beyond 64 bits would make get_numeral_int64 throw.
-    if (!ticks.is_numeral() || ticks.denominator().to_string() != "1") return false;
-  }
+// Whether every step of `n` in model `m` falls on a multiple of `grid` nanoseconds.
+bool on_grid(const Unrolling& u, const z3::model& m, int n, int64_t grid) {
+  for (int k = 0; k < n; ++k)
+    if (u.time_value(m, k).count() % grid != 0) return false;
   return true;
 }
 
 // A model of the violation whose steps fall on a readable grid, when there is one: multiples
-// of 50 ms, else of 1 ms, else of 1 us. A tests file writes times to the microsecond
-// (core/time_text.h), so a trace off that grid (a step a third of a second in, a hair inside a
-// window's edge) may not replay, and a trace at 0.000001 s replays but reads badly. The solver
-// is asked again per grid, with at most 2 s in all; the first model stays when none answers.
+// of 50 ms, else of 1 ms, else of 1 us. Every model is on the runtime's instants already (the
+// unrolling counts whole nanoseconds), but a trace at 0.333333334 s reads badly in a tests
+// file. The solver is asked again per grid, with at most 2 s in all; the first model stays
+// when none answers.
 z3::model prefer_readable_times(z3::solver& solver, const Unrolling& u, int n, z3::model m,
                                 z3::context& ctx, Clock::time_point deadline) {
   SolverTimeout at_most(std::min(deadline, Clock::now() + std::chrono::seconds(2)));
-  for (int per_second : {20, 1000, 1000000}) {
-    if (on_grid(u, m, n, per_second, ctx)) return m;
+  for (int64_t grid : {50'000'000, 1'000'000, 1'000}) {
+    if (on_grid(u, m, n, grid)) return m;
     solver.push();
-    for (int k = 0; k < n; ++k) {
-      z3::expr ticks =
-          ctx.int_const(("ticks!" + std::to_string(per_second) + "!" + std::to_string(k)).c_str());
-      solver.add(u.time(k) * ctx.real_val(per_second) == z3::to_real(ticks));
-    }
+    for (int k = 0; k < n; ++k) solver.add(z3::mod(u.time(k), ctx.int_val(grid)) == 0);
     std::string why;
     bool found = run(solver, at_most, &why) == z3::sat;
     if (found) m = solver.get_model();

@@ -22,7 +22,8 @@ class FixedReplayer : public TestReplayer {
       return std::nullopt;
     }
     std::vector<ReplayRecord> out;
-    for (double t : *times_) out.push_back({ReplayRecord::Kind::Deliver, t, "take", "", -1});
+    for (double t : *times_)
+      out.push_back({ReplayRecord::Kind::Deliver, nanos_from_seconds(t), "take", "", kNever});
     return out;
   }
 
@@ -35,7 +36,7 @@ TemporalResult violated() {
   r.property = {model::TemporalProperty::Kind::Spacing,
                 "PickAndPlace.cmd",
                 "take",
-                1.0,
+                std::chrono::seconds(1),
                 {},
                 "",
                 "",

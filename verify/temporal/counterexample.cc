@@ -1,22 +1,16 @@
 #include "verify/temporal/counterexample.h"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
 
 #include "core/duration_literal.h"
 #include "core/join.h"
-#include "core/time_text.h"
 #include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
 namespace {
-
-// Times to the microsecond, as a tests file writes them (core/time_text.h): the test arbc runs
-// is the one the file holds.
-double micro(double t) { return std::round(t * 1e6) / 1e6; }
 
 class Builder {
  public:
@@ -46,7 +40,7 @@ class Builder {
   }
 
   // Whether the feeds' entries make `event` present in state s at time t.
-  bool fed(const std::string& event, int s, double t) const {
+  bool fed(const std::string& event, int s, Nanos t) const {
     for (size_t q = 0; q < shape_.entries.size(); ++q) {
       const Entry& e = shape_.entries[q];
       if (e.event != event || !is_feed(e.owner)) continue;
@@ -56,10 +50,10 @@ class Builder {
     return false;
   }
 
-  void event_step(model::TestStep::Kind kind, double t, const std::string& event) {
+  void event_step(model::TestStep::Kind kind, Nanos t, const std::string& event) {
     model::TestStep s;
     s.kind = kind;
-    s.t = micro(t);
+    s.t = t;
     s.event = event;
     test.steps.push_back(std::move(s));
   }
@@ -67,11 +61,11 @@ class Builder {
   // Feed entries that lapsed between step k-1 and step k: unset when the last one expired,
   // in time order (the harness's `set` lasts until unset).
   void lapses_before(int k) {
-    double t = u_.time_value(m_, k);
-    std::vector<std::pair<double, std::string>> lapsed;
+    Nanos t = u_.time_value(m_, k);
+    std::vector<std::pair<Nanos, std::string>> lapsed;
     for (auto& [event, present] : harness_) {
       if (!present || fed(event, k, t)) continue;
-      double last = 0;
+      Nanos last{0};
       for (size_t q = 0; q < shape_.entries.size(); ++q) {
         const Entry& e = shape_.entries[q];
         Unrolling::EntryValue v = u_.entry(m_, k, q);
@@ -87,7 +81,7 @@ class Builder {
 
   // A feed's step: the events whose presence it changed, set or unset by the test.
   void feed_step(int k) {
-    double t = u_.time_value(m_, k);
+    Nanos t = u_.time_value(m_, k);
     for (auto& [event, present] : harness_) {
       bool now = fed(event, k + 1, t);
       if (now == present) continue;
@@ -135,7 +129,7 @@ class Builder {
     }
     const DataWitness* w = witness(c);
     if (!w) return false;
-    double t = micro(u_.time_value(m_, k));
+    Nanos t = u_.time_value(m_, k);
     model::TestStep s;
     s.t = t;
     s.port = c.source;

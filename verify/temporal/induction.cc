@@ -23,8 +23,8 @@ z3::expr Unrolling::delivered_before_start(int c) const {
 }
 
 z3::expr Unrolling::last_delivery_before_start(int c) const {
-  if (start_ == Start::Empty) return ctx_.real_val(0);
-  return ctx_.real_const(("last0!" + std::to_string(c)).c_str());
+  if (start_ == Start::Empty) return ctx_.int_val(0);
+  return ctx_.int_const(("last0!" + std::to_string(c)).c_str());
 }
 
 // Entry q of any state: free, except what every reachable state satisfies. An activity entry
@@ -36,12 +36,12 @@ void Unrolling::add_any_start_entry(size_t q) {
   std::string n = "!" + std::to_string(q) + "!start";
   z3::expr has = ctx_.bool_const(("has" + n).c_str());
   z3::expr forever = ctx_.bool_const(("forever" + n).c_str());
-  z3::expr expiry = ctx_.real_const(("expiry" + n).c_str());
+  z3::expr expiry = ctx_.int_const(("expiry" + n).c_str());
   if (e.activity) {
     solver_.add(has == delivered_before_start(e.owner));
     if (e.lifetime) {
       solver_.add(!forever &&
-                  expiry == last_delivery_before_start(e.owner) + seconds(ctx_, *e.lifetime));
+                  expiry == last_delivery_before_start(e.owner) + nanos_term(ctx_, *e.lifetime));
     } else {
       solver_.add(forever);
     }
@@ -63,7 +63,7 @@ void Unrolling::constrain_any_start() {
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     const Entry& e = shape_.entries[q];
     if (e.activity || e.free_lifetime || !e.lifetime) continue;
-    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + seconds(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + nanos_term(ctx_, *e.lifetime)));
   }
 }
 

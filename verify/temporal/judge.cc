@@ -7,7 +7,6 @@
 #include "core/duration_literal.h"
 #include "core/instant.h"
 #include "core/join.h"
-#include "core/time_text.h"
 #include "verify/temporal/judge_response.h"
 #include "verify/temporal/presence.h"
 
@@ -16,15 +15,15 @@ namespace {
 
 using Kind = ReplayRecord::Kind;
 
-std::string at_times(const std::vector<double>& times) {
+std::string at_times(const std::vector<Nanos>& times) {
   std::vector<std::string> at;
-  for (double t : times) at.push_back(duration_literal(t));
+  for (Nanos t : times) at.push_back(duration_literal(t));
   return at.empty() ? std::string("no time") : join(at);
 }
 
 bool spacing(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
              std::string* seen) {
-  std::vector<double> times;
+  std::vector<Nanos> times;
   for (const ReplayRecord& r : records)
     if (r.kind == Kind::Deliver && r.connection == p.rule) times.push_back(r.t);
   if (spaced_less_than(times, p.window)) return true;
@@ -35,15 +34,15 @@ bool spacing(const model::TemporalProperty& p, const std::vector<ReplayRecord>& 
 // `never RULE within W after OTHER;`: a delivery of RULE less than W after OTHER's last one.
 bool spacing_after(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
                    std::string* seen) {
-  std::optional<double> last_other;
-  std::vector<double> times, other_times;
+  std::optional<Nanos> last_other;
+  std::vector<Nanos> times, other_times;
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) continue;
     if (r.connection == p.other) {
       last_other = r.t;
       other_times.push_back(r.t);
     } else if (r.connection == p.rule) {
-      if (last_other && !reached(r.t - *last_other, p.window)) return true;
+      if (last_other && r.t - *last_other < p.window) return true;
       times.push_back(r.t);
     }
   }
@@ -57,7 +56,7 @@ bool spacing_after(const model::TemporalProperty& p, const std::vector<ReplayRec
 bool absence(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
              std::string* seen) {
   Presence event;
-  std::vector<double> times;
+  std::vector<Nanos> times;
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) {
       if (r.event == p.event) event.apply(r);
@@ -95,7 +94,7 @@ bool precedence(const model::TemporalProperty& p, const std::vector<ReplayRecord
 bool stability(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
                std::string* seen) {
   std::string last;
-  std::vector<double> switches;
+  std::vector<Nanos> switches;
   std::vector<std::string> order;
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) continue;
@@ -117,14 +116,14 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
                      std::string* broken) {
   Presence event;
   bool armed = false;
-  std::optional<double> last_after;  // the timed form: the last delivery of a.after
+  std::optional<Nanos> last_after;  // the timed form: the last delivery of a.after
   for (const ReplayRecord& r : records) {
     if (r.kind != Kind::Deliver) {
       if (r.event == a.event) event.apply(r);
       continue;
     }
     if (a.absent_for) {
-      if (last_after && !reached(r.t - *last_after, *a.absent_for) && event.present(r.t)) {
+      if (last_after && r.t - *last_after < *a.absent_for && event.present(r.t)) {
         *broken = a.event + " was present when '" + r.connection + "' delivered at " +
                   duration_literal(r.t) + ", less than " + duration_literal(*a.absent_for) +
                   " after " + a.after + " delivered at " + duration_literal(*last_after);
@@ -145,9 +144,9 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
   return true;
 }
 
-bool spaced_less_than(const std::vector<double>& times, double window) {
+bool spaced_less_than(const std::vector<Nanos>& times, Nanos window) {
   for (size_t i = 1; i < times.size(); ++i)
-    if (!reached(times[i] - times[i - 1], window)) return true;
+    if (times[i] - times[i - 1] < window) return true;
   return false;
 }
 

@@ -22,6 +22,6 @@ bool replay_respects(const model::Assumption& a, const std::vector<ReplayRecord>
                      std::string* broken);
 
 // Whether two of `times` (ascending) are less than `window` apart.
-bool spaced_less_than(const std::vector<double>& times, double window);
+bool spaced_less_than(const std::vector<Nanos>& times, Nanos window);
 
 }  // namespace arbc::verify::temporal

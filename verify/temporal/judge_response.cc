@@ -4,9 +4,7 @@
 #include <set>
 
 #include "core/duration_literal.h"
-#include "core/instant.h"
 #include "core/join.h"
-#include "core/time_text.h"
 #include "verify/temporal/presence.h"
 
 namespace arbc::verify::temporal {
@@ -16,7 +14,7 @@ using Kind = ReplayRecord::Kind;
 
 // Whether p's condition holds at time t, with the records before index `upto` applied.
 bool condition_at(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
-                  size_t upto, double t) {
+                  size_t upto, Nanos t) {
   std::set<std::string> events;
   p.condition.collect_events(events);
   std::map<std::string, Presence> state;
@@ -34,10 +32,10 @@ bool condition_at(const model::TemporalProperty& p, const std::vector<ReplayReco
 // The records are in the order the runtime did them, as the model's steps are.
 bool unanswered(const model::TemporalProperty& p, const std::vector<ReplayRecord>& records,
                 size_t i) {
-  double end = records[i].t + p.window;
+  Nanos end = records[i].t + p.window;
   for (size_t j = i + 1; j < records.size(); ++j) {
     const ReplayRecord& r = records[j];
-    if (!reached(end, r.t)) break;  // past the window (a delivery at its end is in time)
+    if (r.t > end) break;  // past the window (a delivery at its end is in time)
     if (r.kind != Kind::Deliver && r.kind != Kind::Drop) continue;
     if (p.stops && r.kind == Kind::Deliver && r.connection == p.other) return false;
     if (r.connection != p.rule && !p.rule.empty()) continue;

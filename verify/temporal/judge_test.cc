@@ -8,25 +8,32 @@
 namespace arbc::verify::temporal {
 namespace {
 
+using namespace std::chrono_literals;
+
 using K = ReplayRecord::Kind;
 using P = model::TemporalProperty;
 
-ReplayRecord deliver(double t, const std::string& rule) { return {K::Deliver, t, rule, "", -1}; }
+// Records at times in seconds (to the nanosecond, core/instant.h); an expiry below 0: none.
+Nanos at(double t) { return nanos_from_seconds(t); }
+Nanos until(double t) { return t < 0 ? kNever : nanos_from_seconds(t); }
+ReplayRecord deliver(double t, const std::string& rule) {
+  return {K::Deliver, at(t), rule, "", kNever};
+}
 ReplayRecord set(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Set, t, owner, e, expiry};
+  return {K::Set, at(t), owner, e, until(expiry)};
 }
 ReplayRecord remove(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Remove, t, owner, e, expiry};
+  return {K::Remove, at(t), owner, e, until(expiry)};
 }
 
 P absence() {
-  P p{P::Kind::Absence, "HeadControl.gaze", "search", 0, {}, "", "", false, {}};
+  P p{P::Kind::Absence, "HeadControl.gaze", "search", 0s, {}, "", "", false, {}};
   p.event = "act_track";
   return p;
 }
 
 P precedence() {
-  P p{P::Kind::Precedence, "PickAndPlace.cmd", "put", 0, {}, "", "", false, {}};
+  P p{P::Kind::Precedence, "PickAndPlace.cmd", "put", 0s, {}, "", "", false, {}};
   p.other = "take";
   return p;
 }
@@ -81,7 +88,7 @@ TEST(Judge, PrecedenceNeedsAFreshDeliveryOfTheOtherRuleBeforeEach) {
 
 TEST(Judge, SpacingLooksOnlyAtTheRulesDeliveries) {
   std::string seen;
-  P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1.0, {}, "", "", false, {}};
+  P p{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1s, {}, "", "", false, {}};
   EXPECT_TRUE(replay_violates(p, {deliver(0, "take"), deliver(0.999, "take")}, &seen));
   EXPECT_FALSE(
       replay_violates(p, {deliver(0, "take"), deliver(0.5, "put"), deliver(1, "take")}, &seen));
@@ -114,7 +121,7 @@ TEST(Judge, AReplayMustKeepTheAssumptionAtEachDelivery) {
 }
 
 TEST(Judge, ASpacingAfterAnotherRuleMeasuresFromItsLastDelivery) {
-  P p{P::Kind::Spacing, "HeadControl.gaze", "search", 1.0, {}, "", "track", false, {}};
+  P p{P::Kind::Spacing, "HeadControl.gaze", "search", 1s, {}, "", "track", false, {}};
   std::string seen;
   EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), deliver(0.6, "search")}, &seen));
   // At the window's end, and before any track, search may deliver; two searches are no matter.
@@ -130,7 +137,7 @@ TEST(Judge, ASpacingAfterAnotherRuleMeasuresFromItsLastDelivery) {
 }
 
 TEST(Judge, AReplayMustKeepTheTimedAssumptionForItsWindow) {
-  model::Assumption a{"e_arm_idle", "PickAndPlace.cmd", "take", "", {}, 1.0};
+  model::Assumption a{"e_arm_idle", "PickAndPlace.cmd", "take", "", {}, 1s};
   std::string broken;
   // Withdrawn at the take, reported again a second later: kept.
   EXPECT_TRUE(replay_respects(
@@ -147,6 +154,37 @@ TEST(Judge, AReplayMustKeepTheTimedAssumptionForItsWindow) {
       << broken;
   // Present before any take: the timed form says nothing there.
   EXPECT_TRUE(replay_respects(a, {set(0, "h", "e_arm_idle", -1), deliver(0.5, "put")}, &broken));
+  // Its window ends exactly a second after the take: present at 1 s is kept, a nanosecond
+  // before is not.
+  EXPECT_TRUE(replay_respects(
+      a, {set(0, "h", "e_arm_idle", -1), deliver(0, "take"), deliver(1, "put")}, &broken));
+  EXPECT_FALSE(replay_respects(
+      a, {set(0, "h", "e_arm_idle", -1), deliver(0, "take"), deliver(0.999999999, "put")},
+      &broken));
+}
+
+// The runtime's instants are whole nanoseconds and so is every judgement of them
+// (core/instant.h): a spacing, an absence and a spacing after another rule each at the last
+// nanosecond of their window and at its end. The old tolerance took deliveries 0.9999999995 s
+// apart as 1 s apart.
+TEST(Judge, EachShapeIsJudgedToTheNanosecond) {
+  std::string seen;
+  P spacing{P::Kind::Spacing, "PickAndPlace.cmd", "take", 1s, {}, "", "", false, {}};
+  EXPECT_TRUE(
+      replay_violates(spacing, {deliver(0.5, "take"), deliver(1.499999999, "take")}, &seen));
+  EXPECT_FALSE(replay_violates(spacing, {deliver(0.5, "take"), deliver(1.5, "take")}, &seen));
+  EXPECT_TRUE(spaced_less_than({Nanos(0), 1s - 1ns}, 1s));
+  EXPECT_FALSE(spaced_less_than({Nanos(0), 1s}, 1s));
+  P after{P::Kind::Spacing, "HeadControl.gaze", "search", 1s, {}, "", "track", false, {}};
+  EXPECT_TRUE(
+      replay_violates(after, {deliver(0.2, "track"), deliver(1.199999999, "search")}, &seen));
+  EXPECT_FALSE(replay_violates(after, {deliver(0.2, "track"), deliver(1.2, "search")}, &seen));
+  // An entry set at 0.2 s until 0.3 s (0.2 + 0.1 in doubles is past 0.3): absent at 0.3 s.
+  P absent = absence();
+  EXPECT_TRUE(replay_violates(
+      absent, {set(0.2, "track", "act_track", 0.3), deliver(0.299999999, "search")}, &seen));
+  EXPECT_FALSE(replay_violates(
+      absent, {set(0.2, "track", "act_track", 0.3), deliver(0.1 + 0.2, "search")}, &seen));
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 namespace arbc::verify::temporal {
 namespace {
 
+using namespace std::chrono_literals;
+
 using Outcome = TemporalResult::Outcome;
 
 TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
@@ -22,7 +24,7 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
-      model::TemporalProperty::Kind::Precedence, port, rule, 0, {}, "", "", false, {}};
+      model::TemporalProperty::Kind::Precedence, port, rule, 0s, {}, "", "", false, {}};
   p.other = other;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   std::optional<TemporalResult> r = check_precedence(app, p, bound, ctx, nullptr, deadline, &error);
@@ -60,7 +62,7 @@ TEST(Precedence, PutWithoutETakenIsRefutedWithoutTheFeedReportingIt) {
 // HeadControl.gaze edited so that track needs nothing, search needs track's hold (act_track
 // present) and is throttled to the hold: each search then needs a track less than 1 s before it,
 // hence after the previous search.
-model::App search_after_track(std::optional<double> throttle) {
+model::App search_after_track(std::optional<Nanos> throttle) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "track").constraint = testing::parse("true");
   testing::connection(app, "search").constraint = testing::parse("act_track");
@@ -69,7 +71,7 @@ model::App search_after_track(std::optional<double> throttle) {
 }
 
 TEST(Precedence, HoldsToTheBoundWhereTimeLinksTheRules) {
-  TemporalResult r = check(search_after_track(1.0), "HeadControl.gaze", "search", "track");
+  TemporalResult r = check(search_after_track(1s), "HeadControl.gaze", "search", "track");
   // Not proved: k-induction's any state does not link the monitor to the hold's timing (a
   // state "search delivered after the last track, inside its hold" is not reachable with the
   // throttle, but the step case cannot see that), so the verdict stays bounded.
@@ -126,7 +128,7 @@ TEST(Precedence, AnAssumptionNamingARuleThePortLacksIsBadInput) {
   model::TemporalProperty p{model::TemporalProperty::Kind::Precedence,
                             "PickAndPlace.cmd",
                             "put",
-                            0,
+                            0s,
                             {},
                             "",
                             "take",
@@ -145,7 +147,7 @@ TEST(Precedence, EitherRuleMissingIsBadInput) {
   model::TemporalProperty p{model::TemporalProperty::Kind::Precedence,
                             "PickAndPlace.cmd",
                             "put",
-                            0,
+                            0s,
                             {},
                             "",
                             "",

@@ -1,6 +1,6 @@
 // One event's entries in a port's container as a replay's records leave them
-// (docs/design.md#events-and-lifetimes): owner -> expiry (-1: none). The event is present at t
-// when an entry has no expiry or t has not reached its expiry (core/instant.h).
+// (docs/design.md#events-and-lifetimes): owner -> expiry (kNever: none). The event is present at
+// t when some entry has t < expiry, exactly, as in the runtime (core/instant.h).
 #pragma once
 
 #include <map>
@@ -18,18 +18,19 @@ class Presence {
       entries_[r.connection] = r.expiry;
     } else if (r.kind == ReplayRecord::Kind::Remove) {
       auto it = entries_.find(r.connection);
-      // A lapse (it has its expiry) removes only the entry that lapsed, not a later refresh.
-      if (it != entries_.end() && (r.expiry < 0 || it->second <= r.expiry)) entries_.erase(it);
+      // A lapse (it has its expiry) removes only the entry that lapsed, not a later refresh; an
+      // unset (expiry kNever) removes whatever is there.
+      if (it != entries_.end() && it->second <= r.expiry) entries_.erase(it);
     }
   }
-  bool present(double t) const {
+  bool present(Nanos t) const {
     for (const auto& [owner, expiry] : entries_)
-      if (expiry < 0 || !reached(t, expiry)) return true;
+      if (t < expiry) return true;
     return false;
   }
 
  private:
-  std::map<std::string, double> entries_;
+  std::map<std::string, Nanos> entries_;
 };
 
 }  // namespace arbc::verify::temporal

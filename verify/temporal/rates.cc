@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/duration_literal.h"
 #include "core/time_text.h"
@@ -40,7 +41,7 @@ Rates::Rates(const model::App& app, const PortShape& shape, z3::context& ctx) : 
     if (accepts_every_message(*shape.connections[c])) always_accept_.push_back(static_cast<int>(c));
     const model::SourceRate* r = app.find_rate(shape.connections[c]->source);
     if (!r) continue;
-    rated_.push_back({static_cast<int>(c), seconds(ctx_, r->period), r->period});
+    rated_.push_back({static_cast<int>(c), nanos_term(ctx_, r->period), r->period});
     bool listed = false;
     for (const model::SourceRate& u : used_) listed |= u.port == r->port;
     if (!listed) used_.push_back(*r);
@@ -69,24 +70,22 @@ z3::expr Rates::up_to(const Unrolling& u, int n, const z3::expr& horizon, Horizo
   return z3::mk_and(all);
 }
 
-double Rates::span(int messages) const {
-  if (rated_.empty()) return 0;
-  // The multiples of the periods, in time order, until more than `messages` are due. A
-  // period's k-th multiple is computed as k * period (not summed) so that two periods'
-  // coinciding multiples compare equal, and are counted at the same instant.
-  std::vector<double> due;
+Nanos Rates::span(int messages) const {
+  if (rated_.empty()) return Nanos(0);
+  // The multiples of the periods, in time order, until more than `messages` are due (in whole
+  // nanoseconds, so two periods' coinciding multiples are one instant; kNever past 64 bits).
+  std::vector<Nanos> due;
   for (const Rated& r : rated_)
-    for (int k = 1; k <= messages + 1; ++k) due.push_back(k * r.seconds);
+    for (int64_t k = 1; k <= messages + 1; ++k)
+      due.push_back(r.nanos.count() > kNever.count() / k ? kNever : k * r.nanos);
   std::sort(due.begin(), due.end());
-  return std::round(due[static_cast<size_t>(messages)] * 1e9) / 1e9;  // 6 * 0.2 is 1.2
+  return due[static_cast<size_t>(messages)];
 }
 
-int Rates::due_by(double t) const {
-  int n = 0;
-  // A multiple equal to t counts: t is a sum of spec durations and k * period may round a hair
-  // above it (6 * 0.2 > 1.2 in doubles), where Z3 compares the exact decimals.
-  for (const Rated& r : rated_) n += static_cast<int>(std::floor(t * (1 + 1e-12) / r.seconds));
-  return n;
+int Rates::due_by(Nanos t) const {
+  int64_t n = 0;  // a multiple equal to t counts
+  for (const Rated& r : rated_) n += t / r.nanos;
+  return static_cast<int>(std::min<int64_t>(n, std::numeric_limits<int>::max()));
 }
 
 bool Rates::rated(int c) const {

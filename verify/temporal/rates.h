@@ -38,10 +38,10 @@ class Rates {
   // with no rate): a search of `messages` steps sees only runs up to this long (shorter, for
   // a response's Included horizon), so a violation that needs a longer run is beyond it. Each
   // rated connection has a message by every multiple of its period.
-  double span(int messages) const;
+  Nanos span(int messages) const;
   // How many messages the rated connections have by time t at the least (each one by every
   // multiple of its period up to t).
-  int due_by(double t) const;
+  int due_by(Nanos t) const;
   // Whether connection c of the port's shape has a rate.
   bool rated(int c) const;
 
@@ -58,7 +58,7 @@ class Rates {
   struct Rated {
     int connection;
     z3::expr period;
-    double seconds;
+    Nanos nanos;
   };
   z3::context& ctx_;
   std::vector<Rated> rated_;

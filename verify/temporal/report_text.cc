@@ -161,7 +161,7 @@ std::string render(const TemporalResult& r, Reader reader) {
         out += paragraph("with the rates given, no window closes within " + messages + " into " +
                              port + ", so this says nothing (temporal-bound, above)",
                          plain);
-      } else if (r.rated_span > 0) {
+      } else if (r.rated_span > Nanos(0)) {
         out += paragraph("with the rates given, the runs searched (" + messages + " into " + port +
                              ") last at most " + duration_literal(r.rated_span) +
                              ": a violation that needs a longer run is not searched "

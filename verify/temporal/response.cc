@@ -47,12 +47,13 @@ z3::expr unanswered_from(const Unrolling& u, const Pieces& w, int i, int n, z3::
 
 // Violated over the first n steps: some trigger i left unanswered until the horizon
 // t_i + D, which no step passes, under the rates up to the horizon. The horizon is a fresh
-// real per n (the formula lives inside bounded_search's push/pop).
+// integer per n (the formula lives inside bounded_search's push/pop).
 z3::expr violation(const Unrolling& u, const Pieces& w, int n, z3::context& ctx) {
-  z3::expr horizon = ctx.real_const(("horizon!" + std::to_string(n)).c_str());
+  z3::expr horizon = ctx.int_const(("horizon!" + std::to_string(n)).c_str());
   z3::expr_vector some(ctx);
   for (int i = 0; i < n; ++i)
-    some.push_back(trigger_step(ctx, n) == i && horizon == u.time(i) + seconds(ctx, w.p.window) &&
+    some.push_back(trigger_step(ctx, n) == i &&
+                   horizon == u.time(i) + nanos_term(ctx, w.p.window) &&
                    unanswered_from(u, w, i, n, ctx));
   z3::expr_vector all(ctx);
   all.push_back(z3::mk_or(some));

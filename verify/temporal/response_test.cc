@@ -18,11 +18,21 @@
 namespace arbc::verify::temporal {
 namespace {
 
+using namespace std::chrono_literals;
+
 using Outcome = TemporalResult::Outcome;
 using P = model::TemporalProperty;
 
 P search_resumes(double window) {
-  P p{P::Kind::Response, "HeadControl.gaze", "search", window, {}, "", "track", true, {}};
+  P p{P::Kind::Response,
+      "HeadControl.gaze",
+      "search",
+      nanos_from_seconds(window),
+      {},
+      "",
+      "track",
+      true,
+      {}};
   p.condition = parse_constraint("e_unreachable and e_arm_idle and e_pull_idle").constraint;
   return p;
 }
@@ -32,7 +42,7 @@ P search_resumes(double window) {
 model::App with_rate(double period) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "search").body = model::Body{};
-  app.rates.push_back({"LookAround.gaze", period, {"t.spec", 3, 1}});
+  app.rates.push_back({"LookAround.gaze", nanos_from_seconds(period), {"t.spec", 3, 1}});
   return app;
 }
 
@@ -48,14 +58,14 @@ TemporalResult check(const model::App& app, const P& p, int bound) {
 }
 
 // Every gap between LookAround.gaze messages in `trace` (from 0, and to `end`) is at most `period`.
-void expect_rate_kept(const std::vector<TraceStep>& trace, double period, double end) {
-  double last = 0;
+void expect_rate_kept(const std::vector<TraceStep>& trace, Nanos period, Nanos end) {
+  Nanos last{0};
   for (const TraceStep& s : trace) {
     if (s.source != "LookAround.gaze") continue;
-    EXPECT_LE(s.time - last, period + 1e-9) << "a gap before " << s.time;
+    EXPECT_LE(s.time - last, period) << "a gap before " << s.time.count() << " ns";
     last = s.time;
   }
-  EXPECT_LE(end - last, period + 1e-9) << "a gap before the end " << end;
+  EXPECT_LE(end - last, period) << "a gap before the end " << end.count() << " ns";
 }
 
 TEST(Response, WithoutARateSilenceViolatesItAndTheReportSaysSo) {
@@ -82,16 +92,16 @@ TEST(Response, AWindowShorterThanTheHoldPlusThePeriodIsRefutedUnderTheRate) {
   ASSERT_EQ(r.outcome, Outcome::Violated);
   // Three feeds, track, five searches held back, two refreshes of the 0.5 s status events.
   EXPECT_EQ(r.bound, 11);
-  double trigger = -1;
+  Nanos trigger{-1};
   for (const TraceStep& s : r.trace)
     if (s.connection == "track" && s.delivered) trigger = s.time;
-  ASSERT_GE(trigger, 0);
+  ASSERT_GE(trigger, 0s);
   for (const TraceStep& s : r.trace) {
     if (s.connection == "search") {
-      EXPECT_FALSE(s.delivered) << s.time;
+      EXPECT_FALSE(s.delivered) << s.time.count();
     }
   }
-  expect_rate_kept(r.trace, 0.2, trigger + 1.1);
+  expect_rate_kept(r.trace, 200ms, trigger + 1100ms);
   EXPECT_EQ(r.explanation.find("no rate"), std::string::npos) << r.explanation;
 }
 
@@ -101,7 +111,7 @@ TEST(Response, AWindowShorterThanTheHoldPlusThePeriodIsRefutedUnderTheRate) {
 TEST(Response, TheReportSaysHowLongARunTheBoundCoversAndWhatAWindowNeeds) {
   TemporalResult r = check(with_rate(0.2), search_resumes(1.2), 8);
   ASSERT_EQ(r.outcome, Outcome::HoldsToBound);
-  EXPECT_DOUBLE_EQ(r.rated_span, 1.8);
+  EXPECT_EQ(r.rated_span, 1800ms);
   EXPECT_EQ(r.window_bound, 7);
   EXPECT_FALSE(short_bound_finding(r, false));
 }
@@ -111,7 +121,7 @@ TEST(Response, TheReportSaysHowLongARunTheBoundCoversAndWhatAWindowNeeds) {
 TEST(Response, ABoundTooSmallForAnyWindowIsAWarningNotAVerdict) {
   TemporalResult r = check(with_rate(0.2), search_resumes(1.2), 6);
   ASSERT_EQ(r.outcome, Outcome::HoldsToBound);
-  EXPECT_DOUBLE_EQ(r.rated_span, 1.4);
+  EXPECT_EQ(r.rated_span, 1400ms);
   std::optional<Finding> f = short_bound_finding(r, false);
   ASSERT_TRUE(f);
   EXPECT_EQ(f->check, kCheckTemporalBound);
@@ -126,14 +136,14 @@ TEST(Response, ABoundTooSmallForAnyWindowIsAWarningNotAVerdict) {
   TemporalResult refuted = check(with_rate(0.2), search_resumes(1.1), 12);
   ASSERT_EQ(refuted.outcome, Outcome::Violated);
   EXPECT_FALSE(short_bound_finding(refuted, false));
-  EXPECT_EQ(refuted.rated_span, 0);
+  EXPECT_EQ(refuted.rated_span, 0s);
 }
 
 // Without a rate a source may publish at any times, so no run is too long for the bound.
 TEST(Response, WithoutARateNoBoundIsTooShort) {
   TemporalResult r = check(testing::table_clean_model(), search_resumes(1.2), 3);
   EXPECT_EQ(r.window_bound, 0);
-  EXPECT_EQ(r.rated_span, 0);
+  EXPECT_EQ(r.rated_span, 0s);
   EXPECT_FALSE(short_bound_finding(r, false));
 }
 
@@ -150,7 +160,15 @@ TEST(Response, AnUnknownRuleIsBadInputNotAVerdict) {
 // `after e_unreachable, HeadControl.gaze within D while ...`: the object goes out of reach and
 // the head must move (track or search) within D, as long as the arm and the rake stay idle.
 P head_moves(double window) {
-  P p{P::Kind::Response, "HeadControl.gaze", "", window, {}, "e_unreachable", "", false, {}};
+  P p{P::Kind::Response,
+      "HeadControl.gaze",
+      "",
+      nanos_from_seconds(window),
+      {},
+      "e_unreachable",
+      "",
+      false,
+      {}};
   p.condition = parse_constraint("e_unreachable and e_arm_idle and e_pull_idle").constraint;
   return p;
 }
@@ -195,26 +213,26 @@ TEST(Response, ATriggerEventNothingSetsIntoThePortIsVacuousNotProved) {
 }
 
 TEST(Stability, TheHeadSwitchesBackAndForthWithinTheHold) {
-  P p{P::Kind::Stability, "HeadControl.gaze", "", 1.5, {}, "", "", false, {}};
+  P p{P::Kind::Stability, "HeadControl.gaze", "", 1500ms, {}, "", "", false, {}};
   // Under the rate the shortest violation takes 12 messages: the three feeds, then LookAround's
   // messages every 200 ms around track's deliveries (arbc verify --temporal-bound 12 finds it).
   TemporalResult r = check(with_rate(0.2), p, 12);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   EXPECT_EQ(r.bound, 12);
-  std::vector<std::pair<double, std::string>> delivered;
+  std::vector<std::pair<Nanos, std::string>> delivered;
   for (const TraceStep& s : r.trace)
     if (s.delivered) delivered.emplace_back(s.time, s.connection);
   ASSERT_GE(delivered.size(), 3u);
-  std::vector<double> switches;
+  std::vector<Nanos> switches;
   for (size_t i = 1; i < delivered.size(); ++i)
     if (delivered[i].second != delivered[i - 1].second) switches.push_back(delivered[i].first);
   ASSERT_GE(switches.size(), 2u);
-  EXPECT_LT(switches.back() - switches[switches.size() - 2], 1.5);
-  expect_rate_kept(r.trace, 0.2, r.trace.back().time);
+  EXPECT_LT(switches.back() - switches[switches.size() - 2], 1500ms);
+  expect_rate_kept(r.trace, 200ms, r.trace.back().time);
 }
 
 TEST(Stability, AOneRulePortNeverSwitches) {
-  P p{P::Kind::Stability, "Speak.text", "", 10, {}, "", "", false, {}};
+  P p{P::Kind::Stability, "Speak.text", "", 10s, {}, "", "", false, {}};
   EXPECT_EQ(check(testing::table_clean_model(), p, 5).outcome, Outcome::HoldsToBound);
 }
 
@@ -244,16 +262,21 @@ TEST(Rates, OnlyRulesThatCannotFailAcceptEveryMessage) {
   EXPECT_FALSE(accepts_every_message(c));
 }
 
+// Records at times in seconds (to the nanosecond); an expiry below 0: none.
 using K = ReplayRecord::Kind;
-ReplayRecord deliver(double t, const std::string& rule) { return {K::Deliver, t, rule, "", -1}; }
+Nanos at(double t) { return nanos_from_seconds(t); }
+Nanos until(double t) { return t < 0 ? kNever : nanos_from_seconds(t); }
+ReplayRecord deliver(double t, const std::string& rule) {
+  return {K::Deliver, at(t), rule, "", kNever};
+}
 ReplayRecord set(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Set, t, owner, e, expiry};
+  return {K::Set, at(t), owner, e, until(expiry)};
 }
 
-ReplayRecord drop(double t, const std::string& rule) { return {K::Drop, t, rule, "", -1}; }
+ReplayRecord drop(double t, const std::string& rule) { return {K::Drop, at(t), rule, "", kNever}; }
 
 TEST(JudgeResponse, AnUnansweredTriggerViolatesAndADeliveryAtTheWindowsEndAnswers) {
-  P p{P::Kind::Response, "HeadControl.gaze", "search", 1.0, {}, "", "track", true, {}};
+  P p{P::Kind::Response, "HeadControl.gaze", "search", 1s, {}, "", "track", true, {}};
   std::string seen;
   EXPECT_TRUE(replay_violates(p, {deliver(0, "track"), drop(0.5, "search")}, &seen));
   EXPECT_FALSE(replay_violates(p, {deliver(0, "track"), deliver(1.0, "search")}, &seen));
@@ -265,7 +288,7 @@ TEST(JudgeResponse, AnUnansweredTriggerViolatesAndADeliveryAtTheWindowsEndAnswer
 }
 
 TEST(JudgeResponse, TheConditionFalseWhenTheRuleDecidesDischargesTheWindow) {
-  P p{P::Kind::Response, "HeadControl.gaze", "search", 1.0, {}, "", "track", true, {}};
+  P p{P::Kind::Response, "HeadControl.gaze", "search", 1s, {}, "", "track", true, {}};
   p.condition = Constraint::event_ref("e_idle");
   std::string seen;
   // e_idle until 0.5: false when search decides at 0.8, so search owed nothing.
@@ -286,11 +309,11 @@ TEST(JudgeResponse, TheConditionFalseWhenTheRuleDecidesDischargesTheWindow) {
 }
 
 ReplayRecord lapse(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Remove, t, owner, e, expiry};
+  return {K::Remove, at(t), owner, e, until(expiry)};
 }
 
 TEST(JudgeResponse, AnEventsOnsetOpensAWindowThatAnyRuleOfThePortAnswers) {
-  P p{P::Kind::Response, "HeadControl.gaze", "", 1.0, {}, "e_lost", "", false, {}};
+  P p{P::Kind::Response, "HeadControl.gaze", "", 1s, {}, "e_lost", "", false, {}};
   std::string seen;
   EXPECT_TRUE(replay_violates(p, {set(0, "feed", "e_lost", 5)}, &seen));
   EXPECT_FALSE(replay_violates(p, {set(0, "feed", "e_lost", 5), deliver(0.9, "search")}, &seen));
@@ -305,7 +328,7 @@ TEST(JudgeResponse, AnEventsOnsetOpensAWindowThatAnyRuleOfThePortAnswers) {
                               &seen));
   EXPECT_NE(seen.find("e_lost present at 0s"), std::string::npos) << seen;
   // A trigger rule of the port does not answer its own delivery, only a later one.
-  P after_track{P::Kind::Response, "HeadControl.gaze", "", 1.0, {}, "", "track", false, {}};
+  P after_track{P::Kind::Response, "HeadControl.gaze", "", 1s, {}, "", "track", false, {}};
   EXPECT_TRUE(replay_violates(after_track, {deliver(0, "track")}, &seen));
   EXPECT_FALSE(replay_violates(after_track, {deliver(0, "track"), deliver(0.5, "search")}, &seen));
   // Its next delivery answers the first window and opens another.
@@ -316,13 +339,27 @@ TEST(JudgeResponse, AnEventsOnsetOpensAWindowThatAnyRuleOfThePortAnswers) {
 }
 
 TEST(JudgeStability, TwoSwitchesWithinTheWindowViolate) {
-  P p{P::Kind::Stability, "HeadControl.gaze", "", 1.0, {}, "", "", false, {}};
+  P p{P::Kind::Stability, "HeadControl.gaze", "", 1s, {}, "", "", false, {}};
   std::string seen;
   EXPECT_TRUE(replay_violates(
       p, {deliver(0, "search"), deliver(0.2, "track"), deliver(1.1, "search")}, &seen));
   EXPECT_FALSE(replay_violates(
       p, {deliver(0, "search"), deliver(0.2, "track"), deliver(1.2, "search")}, &seen));
   EXPECT_FALSE(replay_violates(p, {deliver(0, "search"), deliver(0.1, "search")}, &seen));
+  // Exactly, to the nanosecond: switches the window apart are fine, a nanosecond less is not.
+  EXPECT_FALSE(replay_violates(
+      p, {deliver(0, "search"), deliver(0.2, "track"), deliver(1.2, "search")}, &seen));
+  EXPECT_TRUE(replay_violates(
+      p, {deliver(0, "search"), deliver(0.2, "track"), deliver(1.199999999, "search")}, &seen));
+}
+
+// A response's window ends at its last nanosecond: an answer exactly the window after the
+// trigger is in time, one a nanosecond later is not (docs/design.md#properties-over-time).
+TEST(JudgeResponse, TheWindowEndsExactlyAtItsLastNanosecond) {
+  P p{P::Kind::Response, "HeadControl.gaze", "search", 1s, {}, "", "track", false, {}};
+  std::string seen;
+  EXPECT_FALSE(replay_violates(p, {deliver(0.3, "track"), deliver(1.3, "search")}, &seen));
+  EXPECT_TRUE(replay_violates(p, {deliver(0.3, "track"), deliver(1.300000001, "search")}, &seen));
 }
 
 }  // namespace

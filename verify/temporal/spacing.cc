@@ -12,7 +12,7 @@ namespace {
 // A throttle on the rule at least the window proves the property for every run: the runtime
 // drops a delivery less than the period after the previous one (runtime/message_path.cc), so
 // any two are at least the period, hence the window, apart. Empty when it does not apply.
-std::string throttle_proof(const model::Connection& c, double window) {
+std::string throttle_proof(const model::Connection& c, Nanos window) {
   if (!c.throttle || *c.throttle < window) return "";
   std::string period = duration_literal(*c.throttle);
   return "'" + c.name + "' has `throttle " + period +
@@ -22,8 +22,8 @@ std::string throttle_proof(const model::Connection& c, double window) {
 
 // The last of `n` steps is a delivery of rule r less than `window` after an earlier delivery
 // of rule `first` (r itself for `never two r within W`).
-z3::expr violation(const Unrolling& u, int first, int r, int n, double window, z3::context& ctx) {
-  z3::expr w = seconds(ctx, window);
+z3::expr violation(const Unrolling& u, int first, int r, int n, Nanos window, z3::context& ctx) {
+  z3::expr w = nanos_term(ctx, window);
   z3::expr_vector earlier(ctx);
   for (int i = 0; i < n - 1; ++i)
     earlier.push_back(u.delivers(first, i) && u.time(n - 1) - u.time(i) < w);

@@ -9,12 +9,14 @@
 #include "verify/test_models.h"
 
 namespace arbc::verify::temporal {
+
+using namespace std::chrono_literals;
 namespace {
 
 using Outcome = TemporalResult::Outcome;
 
 TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
-                     double window, int bound = 6) {
+                     Nanos window, int bound = 6) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
@@ -26,22 +28,22 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
 }
 
 // The deliveries of `rule` in `trace`, by time.
-std::vector<double> deliveries(const std::vector<TraceStep>& trace, const std::string& rule) {
-  std::vector<double> out;
+std::vector<Nanos> deliveries(const std::vector<TraceStep>& trace, const std::string& rule) {
+  std::vector<Nanos> out;
   for (const TraceStep& s : trace)
     if (s.delivered && s.connection == rule) out.push_back(s.time);
   return out;
 }
 
 TEST(Spacing, TakeWithoutThrottleIsRefutedByTheShortestTrace) {
-  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "take", 1.0);
+  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "take", 1s);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   // The two status feeds make the arm and the rake idle, then two objects arrive.
   ASSERT_EQ(r.bound, 4);
   ASSERT_EQ(r.trace.size(), 4u);
-  std::vector<double> takes = deliveries(r.trace, "take");
+  std::vector<Nanos> takes = deliveries(r.trace, "take");
   ASSERT_EQ(takes.size(), 2u);
-  EXPECT_LT(takes[1] - takes[0], 1.0);
+  EXPECT_LT(takes[1] - takes[0], 1s);
   EXPECT_TRUE(r.trace.back().delivered);
   for (size_t k = 1; k < r.trace.size(); ++k) EXPECT_GE(r.trace[k].time, r.trace[k - 1].time);
   int feeds_setting = 0;
@@ -52,10 +54,10 @@ TEST(Spacing, TakeWithoutThrottleIsRefutedByTheShortestTrace) {
 TEST(Spacing, ThrottleAtLeastTheWindowIsProvedAfterTheSearchFindsNothing) {
   model::App app = testing::table_clean_model();
   ASSERT_TRUE(testing::connection(app, "ask").throttle);
-  double period = *testing::connection(app, "ask").throttle;
-  for (double window : {period, period / 2}) {
+  Nanos period = *testing::connection(app, "ask").throttle;
+  for (Nanos window : {period, period / 2, period - 1ns}) {
     TemporalResult r = check(app, "Speak.text", "ask", window);
-    EXPECT_EQ(r.outcome, Outcome::Proved) << window;
+    EXPECT_EQ(r.outcome, Outcome::Proved) << window.count();
     EXPECT_NE(r.proof.find("`throttle 5s;`"), std::string::npos) << r.proof;
     EXPECT_EQ(r.bound, 6);  // the search ran to the bound as well
     EXPECT_TRUE(r.trace.empty());
@@ -64,18 +66,31 @@ TEST(Spacing, ThrottleAtLeastTheWindowIsProvedAfterTheSearchFindsNothing) {
 
 TEST(Spacing, AWindowLongerThanTheThrottleIsRefutedAtThePeriod) {
   model::App app = testing::table_clean_model();
-  double period = *testing::connection(app, "ask").throttle;
-  TemporalResult r = check(app, "Speak.text", "ask", period + 0.5);
+  Nanos period = *testing::connection(app, "ask").throttle;
+  TemporalResult r = check(app, "Speak.text", "ask", period + 500ms);
   ASSERT_EQ(r.outcome, Outcome::Violated);
-  std::vector<double> asks = deliveries(r.trace, "ask");
+  std::vector<Nanos> asks = deliveries(r.trace, "ask");
   ASSERT_EQ(asks.size(), 2u);
   EXPECT_GE(asks[1] - asks[0], period);  // the throttle still holds in the trace
-  EXPECT_LT(asks[1] - asks[0], period + 0.5);
+  EXPECT_LT(asks[1] - asks[0], period + 500ms);
+}
+
+// The throttle's own period is read exactly, in nanoseconds (core/instant.h): a window one
+// nanosecond longer is violated by two deliveries exactly the period apart, which the runtime
+// lets through (it drops only those less than the period apart).
+TEST(Spacing, AWindowOneNanosecondLongerThanTheThrottleIsRefutedExactlyAtThePeriod) {
+  model::App app = testing::table_clean_model();
+  Nanos period = *testing::connection(app, "ask").throttle;
+  TemporalResult r = check(app, "Speak.text", "ask", period + 1ns);
+  ASSERT_EQ(r.outcome, Outcome::Violated);
+  std::vector<Nanos> asks = deliveries(r.trace, "ask");
+  ASSERT_EQ(asks.size(), 2u);
+  EXPECT_EQ(asks[1] - asks[0], period);
 }
 
 TEST(Spacing, RemovingTheThrottleRefutesIt) {
   model::App app = testing::table_clean_model();
-  double period = *testing::connection(app, "ask").throttle;
+  Nanos period = *testing::connection(app, "ask").throttle;
   testing::connection(app, "ask").throttle.reset();
   EXPECT_EQ(check(app, "Speak.text", "ask", period).outcome, Outcome::Violated);
 }
@@ -86,21 +101,27 @@ TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "track").constraint = testing::parse("not act_track");
   // Not a throttle: k-induction proves it (any state's hold ends one hold after the last track).
-  TemporalResult proved = check(app, "HeadControl.gaze", "track", 1.0);
+  TemporalResult proved = check(app, "HeadControl.gaze", "track", 1s);
   EXPECT_EQ(proved.outcome, Outcome::Proved);
   EXPECT_EQ(proved.induction_k, 1);
-  TemporalResult r = check(app, "HeadControl.gaze", "track", 1.25);
+  TemporalResult r = check(app, "HeadControl.gaze", "track", 1250ms);
   ASSERT_EQ(r.outcome, Outcome::Violated);
-  std::vector<double> tracks = deliveries(r.trace, "track");
+  std::vector<Nanos> tracks = deliveries(r.trace, "track");
   ASSERT_EQ(tracks.size(), 2u);
-  EXPECT_GE(tracks[1] - tracks[0], 1.0);
+  EXPECT_GE(tracks[1] - tracks[0], 1s);
+  // A window a nanosecond past the hold: two tracks exactly the hold apart.
+  TemporalResult edge = check(app, "HeadControl.gaze", "track", 1s + 1ns);
+  ASSERT_EQ(edge.outcome, Outcome::Violated);
+  tracks = deliveries(edge.trace, "track");
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[1] - tracks[0], 1s);
   // Without the hold's effect (the rule reads nothing), two deliveries may share an instant.
   testing::connection(app, "track").constraint = testing::parse("true");
-  EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1.0).outcome, Outcome::Violated);
+  EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1s).outcome, Outcome::Violated);
 }
 
 TemporalResult check_after(const model::App& app, const std::string& rule, const std::string& other,
-                           double window) {
+                           Nanos window) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{model::TemporalProperty::Kind::Spacing,
@@ -123,15 +144,15 @@ TemporalResult check_after(const model::App& app, const std::string& rule, const
 TEST(Spacing, AfterAnotherRuleTheHoldKeepsTheLowerRuleOutForItsLength) {
   // `never search within W after track;`: track's 1 s hold keeps search out for 1 s.
   model::App app = testing::table_clean_model();
-  EXPECT_NE(check_after(app, "search", "track", 1.0).outcome, Outcome::Violated);
-  TemporalResult r = check_after(app, "search", "track", 1.25);
+  EXPECT_NE(check_after(app, "search", "track", 1s).outcome, Outcome::Violated);
+  TemporalResult r = check_after(app, "search", "track", 1250ms);
   ASSERT_EQ(r.outcome, Outcome::Violated);
-  std::vector<double> tracks = deliveries(r.trace, "track");
-  std::vector<double> searches = deliveries(r.trace, "search");
+  std::vector<Nanos> tracks = deliveries(r.trace, "track");
+  std::vector<Nanos> searches = deliveries(r.trace, "search");
   ASSERT_EQ(tracks.size(), 1u);
   ASSERT_EQ(searches.size(), 1u);
-  EXPECT_GE(searches[0] - tracks[0], 1.0);
-  EXPECT_LT(searches[0] - tracks[0], 1.25);
+  EXPECT_GE(searches[0] - tracks[0], 1s);
+  EXPECT_LT(searches[0] - tracks[0], 1250ms);
   EXPECT_TRUE(r.trace.back().delivered);
   EXPECT_EQ(r.trace.back().connection, "search");
 }
@@ -139,18 +160,18 @@ TEST(Spacing, AfterAnotherRuleTheHoldKeepsTheLowerRuleOutForItsLength) {
 TEST(Spacing, AfterAnotherRuleAShorterHoldIsRefuted) {
   model::App app = testing::table_clean_model();
   for (model::Event& e : app.events)
-    if (e.name == "act_track") e.lifetime = 0.5;
-  TemporalResult r = check_after(app, "search", "track", 1.0);
+    if (e.name == "act_track") e.lifetime = 500ms;
+  TemporalResult r = check_after(app, "search", "track", 1s);
   ASSERT_EQ(r.outcome, Outcome::Violated);
-  std::vector<double> tracks = deliveries(r.trace, "track");
-  std::vector<double> searches = deliveries(r.trace, "search");
+  std::vector<Nanos> tracks = deliveries(r.trace, "track");
+  std::vector<Nanos> searches = deliveries(r.trace, "search");
   ASSERT_EQ(searches.size(), 1u);
   ASSERT_FALSE(tracks.empty());
-  EXPECT_GE(searches[0] - tracks.back(), 0.5);
-  EXPECT_LT(searches[0] - tracks.back(), 1.0);
+  EXPECT_GE(searches[0] - tracks.back(), 500ms);
+  EXPECT_LT(searches[0] - tracks.back(), 1s);
   // The other way round nothing keeps them apart: track, first by priority, may follow search
   // at once.
-  EXPECT_EQ(check_after(app, "track", "search", 1.0).outcome, Outcome::Violated);
+  EXPECT_EQ(check_after(app, "track", "search", 1s).outcome, Outcome::Violated);
 }
 
 TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
@@ -159,7 +180,7 @@ TEST(Spacing, UnknownRuleIsBadInputNotAVerdict) {
   model::TemporalProperty p{model::TemporalProperty::Kind::Spacing,
                             "PickAndPlace.cmd",
                             "pull",
-                            1.0,
+                            1s,
                             {},
                             "",
                             "",

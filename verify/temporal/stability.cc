@@ -31,8 +31,8 @@ std::vector<z3::expr> switches(const Unrolling& u, const std::vector<int>& rules
 // The last of `n` steps is a switch less than `window` after an earlier switch, under the
 // rates up to that step.
 z3::expr violation(const Unrolling& u, const std::vector<int>& rules, const Rates& rates, int n,
-                   double window, z3::context& ctx) {
-  z3::expr w = seconds(ctx, window);
+                   Nanos window, z3::context& ctx) {
+  z3::expr w = nanos_term(ctx, window);
   std::vector<z3::expr> sw = switches(u, rules, n, ctx);
   z3::expr_vector earlier(ctx);
   for (int j = 0; j < n - 1; ++j) earlier.push_back(sw[j] && u.time(n - 1) - u.time(j) < w);

@@ -5,7 +5,6 @@
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
-#include "verify/temporal/decimal_text.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -17,11 +16,11 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 // The lifetimes the `set event` statements of a body give: `for D`, or the event's declared
 // lifetime (none: until unset). False when a statement of `event` is not in `body`'s reach
 // (never: the caller checks); `out` collects one entry per distinct lifetime.
-void set_lifetimes(const model::Body& body, const std::string& event,
-                   std::optional<double> declared, std::vector<std::optional<double>>& out) {
+void set_lifetimes(const model::Body& body, const std::string& event, std::optional<Nanos> declared,
+                   std::vector<std::optional<Nanos>>& out) {
   for (const model::BodyStmt& s : body) {
     if (s.kind == model::BodyStmt::Kind::Set && s.name == event) {
-      std::optional<double> life = s.lifetime ? s.lifetime : declared;
+      std::optional<Nanos> life = s.lifetime ? s.lifetime : declared;
       if (std::find(out.begin(), out.end(), life) == out.end()) out.push_back(life);
     }
     set_lifetimes(s.then_body, event, declared, out);
@@ -36,7 +35,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
   e.event = event;
   e.owner = owner;
   const model::Event* declared = app.find_event(event);
-  std::optional<double> lifetime = declared ? declared->lifetime : std::nullopt;
+  std::optional<Nanos> lifetime = declared ? declared->lifetime : std::nullopt;
   if (event == c.activity_event) {
     e.activity = true;
     e.lifetime = lifetime;  // the rule's hold
@@ -48,7 +47,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
     // `set e [for D]` in the rule's body: the lifetime every such statement gives, as the
     // runtime applies it. Without the body (a script), or with statements that differ, any
     // lifetime: more behaviours, and a counterexample that needs one is replayed to be sure.
-    std::vector<std::optional<double>> lifetimes;
+    std::vector<std::optional<Nanos>> lifetimes;
     if (c.body && !c.opaque) set_lifetimes(*c.body, event, lifetime, lifetimes);
     if (lifetimes.size() == 1) {
       e.lifetime = lifetimes[0];
@@ -61,7 +60,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 
 }  // namespace
 
-z3::expr seconds(z3::context& ctx, double v) { return ctx.real_val(shortest_decimal(v).c_str()); }
+z3::expr nanos_term(z3::context& ctx, Nanos d) { return ctx.int_val(int64_t{d.count()}); }
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
                                     std::string* err) {
@@ -117,14 +116,14 @@ void Unrolling::start_state() {
     }
     has_[0].push_back(ctx_.bool_val(false));
     forever_[0].push_back(ctx_.bool_val(false));
-    expiry_[0].push_back(ctx_.real_val(0));
+    expiry_[0].push_back(ctx_.int_val(0));
   }
 }
 
 // Step k: its time, connection and accept outcome; the entries it changes; the deliveries.
 void Unrolling::add_step(int k) {
   std::string s = "!" + std::to_string(k);
-  t_.push_back(ctx_.real_const(("t" + s).c_str()));
+  t_.push_back(ctx_.int_const(("t" + s).c_str()));
   solver_.add(k == 0 ? t_[k] >= 0 : t_[k] >= t_[k - 1]);
   if (k == 0 && start_ == Start::AnyState) constrain_any_start();
   run_.push_back(ctx_.int_const(("run" + s).c_str()));
@@ -139,7 +138,7 @@ void Unrolling::add_step(int k) {
     std::string e = "!" + std::to_string(q) + s;
     has_[k + 1].push_back(ctx_.bool_const(("has" + e).c_str()));
     forever_[k + 1].push_back(ctx_.bool_const(("forever" + e).c_str()));
-    expiry_[k + 1].push_back(ctx_.real_const(("expiry" + e).c_str()));
+    expiry_[k + 1].push_back(ctx_.int_const(("expiry" + e).c_str()));
     set_[k].push_back(ctx_.bool_const(("set" + e).c_str()));
     unset_[k].push_back(ctx_.bool_const(("unset" + e).c_str()));
   }
@@ -153,7 +152,7 @@ void Unrolling::add_step(int k) {
     z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
     if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
     if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
-      z3::expr period = seconds(ctx_, *conn.throttle);
+      z3::expr period = nanos_term(ctx_, *conn.throttle);
       for (int i = 0; i < k; ++i)
         selected = selected && z3::implies(del_[i][c], t_[k] - t_[i] >= period);
       if (start_ == Start::AnyState)
@@ -191,7 +190,7 @@ void Unrolling::add_entry_step(size_t q, int k) {
   if (e.free_lifetime) {
     solver_.add(z3::implies(set, x1 > t_[k]));  // any lifetime, or none (f1 free)
   } else if (e.lifetime) {
-    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + seconds(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(set, !f1 && x1 == t_[k] + nanos_term(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(set, f1 && x1 == t_[k]));
   }
@@ -207,7 +206,7 @@ void Unrolling::add_activity_step(size_t q, int k) {
   solver_.add(h1 == (d || h0));
   solver_.add(z3::implies(!d, f1 == f0 && x1 == x0));
   if (e.lifetime) {
-    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + seconds(ctx_, *e.lifetime)));
+    solver_.add(z3::implies(d, !f1 && x1 == t_[k] + nanos_term(ctx_, *e.lifetime)));
   } else {
     solver_.add(z3::implies(d, f1 && x1 == t_[k]));
   }
@@ -257,15 +256,17 @@ bool sets_into(const PortShape& shape, const std::string& event) {
 
 namespace {
 
-// A real in `m` as a double (a trailing '?' marks a rounded decimal, which strtod ignores).
-double real_value(const z3::model& m, const z3::expr& e) {
-  std::string text = m.eval(e, true).get_decimal_string(9);
-  return std::strtod(text.c_str(), nullptr);
+// A time in `m`, kNever beyond 64 bits (a free expiry the solver put far away).
+Nanos time_in(const z3::model& m, const z3::expr& e) {
+  z3::expr ns = m.eval(e, true);
+  int64_t n = 0;
+  if (ns.is_numeral_i64(n)) return Nanos(n);
+  return ns.is_numeral() && ns.as_double() < 0 ? -kNever : kNever;
 }
 
 }  // namespace
 
-double Unrolling::time_value(const z3::model& m, int k) const { return real_value(m, t_[k]); }
+Nanos Unrolling::time_value(const z3::model& m, int k) const { return time_in(m, t_[k]); }
 
 int Unrolling::connection(const z3::model& m, int k) const {
   return m.eval(run_[k], true).get_numeral_int();
@@ -278,7 +279,7 @@ bool Unrolling::accepted(const z3::model& m, int k) const {
 Unrolling::EntryValue Unrolling::entry(const z3::model& m, int state, size_t q) const {
   size_t s = static_cast<size_t>(state);
   return {m.eval(has_[s][q], true).is_true(), m.eval(forever_[s][q], true).is_true(),
-          real_value(m, expiry_[s][q])};
+          time_in(m, expiry_[s][q])};
 }
 
 bool Unrolling::changes(const z3::model& m, int k, size_t q) const {

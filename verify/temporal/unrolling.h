@@ -1,4 +1,4 @@
-// N steps of one arbitrated port over real-valued time, as Z3 terms: the encoding of
+// N steps of one arbitrated port over the runtime's instants, as Z3 terms: the encoding of
 // docs/design.md#properties-over-time. Step k is one message that one connection into the port
 // (a rule or a feed) handles at time t_k; the container holds one entry per (event, owner) with
 // its expiry; message data is abstract, so which connection runs, whether its `accept` accepts,
@@ -21,10 +21,10 @@ namespace arbc::verify::temporal {
 // One entry of the container: `event` as set by connection `owner`.
 struct Entry {
   std::string event;
-  int owner = 0;                   // index into PortSteps::connections
-  bool activity = false;           // the owner's `by priority` activity event
-  std::optional<double> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
-  bool free_lifetime = false;      // `set e for D` in rule code: D is not in the model
+  int owner = 0;                  // index into PortSteps::connections
+  bool activity = false;          // the owner's `by priority` activity event
+  std::optional<Nanos> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
+  bool free_lifetime = false;     // `set e for D` in rule code: D is not in the model
   // A feed's derived event whose predicate is the constant true or false (PortShape::faithful).
   std::optional<bool> constant_predicate;
 };
@@ -61,13 +61,16 @@ bool add_port_assumptions(const model::App& app, PortShape& shape, std::string* 
 
 // The index of rule `rule` among the shape's connections; -1 when the port has no such rule.
 int rule_index(const PortShape& shape, const std::string& rule);
-// `v` seconds (a lifetime, hold, throttle, window or rate period) as an exact Z3 real: the
-// shortest decimal that reads back as the same double, the duration the spec wrote (0.2, not
-// 0.20000000000000001). Every duration of the model goes through here, so that a hold of 0.2 s
-// set at 0 lapses exactly when a message at 0.2 s decides, as in the runtime, which takes
-// times that close as one instant (core/instant.h); five rate periods of 0.20000000000000001
-// would also stretch past a 1 s hold.
-z3::expr seconds(z3::context& ctx, double v);
+// `d` (a lifetime, hold, throttle, window or rate period) as a Z3 integer of nanoseconds, the
+// unit every time of the unrolling is counted in: the runtime's instants are whole nanoseconds
+// compared exactly (core/instant.h), so a model over integers is a run the runtime can have,
+// and a proof over them covers every pair of its instants (a hold of 1 s lapses at exactly
+// 1000000000, not a hair later). Times were reals once: a violation strictly between two
+// nanoseconds then needed a second, mixed integer-real query to move onto the runtime's grid,
+// which Z3 answered slowly or not at all with durations like 0.999999999 s (--temporal-bound 6
+// on tests/verify/temporal_ns_slow.spec ran into --timeout). Every constraint on times is a
+// difference of two times against such a constant: integer difference logic.
+z3::expr nanos_term(z3::context& ctx, Nanos d);
 
 // Whether some connection into the port can set `event` (else it is never present there).
 bool sets_into(const PortShape& shape, const std::string& event);
@@ -110,14 +113,15 @@ class Unrolling {
   // Step k's trace line in model `m`.
   TraceStep trace_step(const z3::model& m, int k) const;
 
-  // Values in model `m`: step k's time, the index of its connection, whether it accepted.
-  double time_value(const z3::model& m, int k) const;
+  // Values in model `m`: step k's time (kNever beyond 64 bits), the index of its connection,
+  // whether it accepted.
+  Nanos time_value(const z3::model& m, int k) const;
   int connection(const z3::model& m, int k) const;
   bool accepted(const z3::model& m, int k) const;
   // Entry q in state s (0: before step 1, k+1: after step k) in model `m`.
   struct EntryValue {
     bool has = false, forever = false;
-    double expiry = 0;
+    Nanos expiry{0};
   };
   EntryValue entry(const z3::model& m, int state, size_t q) const;
   // Whether step k set or removed entry q.

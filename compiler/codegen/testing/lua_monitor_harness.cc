@@ -234,9 +234,13 @@ CallResult LuaMonitorHarness::trig() { return call("trig", "", false); }
 
 void LuaMonitorHarness::use_model(const model::App& app, const model::Connection& c) {
   constraint_ = c.constraint.to_string();
-  throttle_ = c.throttle;
+  // The model's durations are whole nanoseconds (core/instant.h); this harness keeps seconds.
+  auto seconds = [](const std::optional<Nanos>& d) {
+    return d ? std::optional<double>(seconds_of(*d)) : std::nullopt;
+  };
+  throttle_ = seconds(c.throttle);
   activity_ = c.activity_event;
-  for (const model::Event& e : app.events) lifetimes_[e.name] = e.lifetime;
+  for (const model::Event& e : app.events) lifetimes_[e.name] = seconds(e.lifetime);
 }
 
 CallResult LuaMonitorHarness::deliver(const std::string& message_lua) {

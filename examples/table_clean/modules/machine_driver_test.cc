@@ -9,6 +9,8 @@
 #include "runtime/runtime.h"
 
 namespace arbc::table_clean {
+
+using namespace std::chrono_literals;
 namespace {
 
 // Test-only modules: a command source and a recorder of status messages.
@@ -73,13 +75,13 @@ TEST(PickAndPlaceModule, PublishesEachStatusChangeAtItsInstantAndAt10Hz) {
   auto runtime = Runtime::create(app(), ".", options, &error);
   ASSERT_TRUE(runtime) << error;
   runtime->start();
-  runtime->advance(0.95);
+  runtime->advance(950ms);
   World* world = dynamic_cast<WorldEnvironment&>(*runtime->environment()).world();
   const Vec3 target = world->objects()[0].pos;
   recorded.clear();
   runtime->publish("TestCmdSource", "cmd",
                    arbc::Value::record({{"verb", "take"}, {"pos", arbc::Value(target)}}));
-  runtime->advance(0.95 + Arm::kTakeDuration + 0.05);
+  runtime->advance(nanos_from_seconds(0.95 + Arm::kTakeDuration + 0.05));
   runtime->shutdown();
   g_recorded = nullptr;
 

@@ -63,8 +63,8 @@ def with_act(d, model):
 def selection(run, model):
     """Selection (docs/design.md#the-message-path, step 2): a rule delivers only when its
     constraint holds on the decision state, and a rule dropped `not-selected` only when it does
-    not. Every claim below assumes it; the runtime's instant rule breaks it within 1 ns of an
-    expiry."""
+    not. Every claim below assumes it; it holds to the nanosecond, since the runtime's instants
+    are whole nanoseconds compared exactly (core/instant.h)."""
     out = []
     for d in run.decisions:
         c = model.connections[d["conn"]]

@@ -1,9 +1,9 @@
-#include "verify/temporal/decimal_text.h"
+#include "core/decimal_text.h"
 
 #include <cstdio>
 #include <cstdlib>
 
-namespace arbc::verify::temporal {
+namespace arbc {
 
 std::string shortest_decimal(double v) {
   // Scientific form with the fewest significant digits that reads back as v.
@@ -35,4 +35,4 @@ std::string shortest_decimal(double v) {
   return digits == "0" ? "0" : sign + out;
 }
 
-}  // namespace arbc::verify::temporal
+}  // namespace arbc
