@@ -10,6 +10,7 @@
 // whichever way it was made (an `int` literal is Int, a `float` literal Float).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +24,7 @@ namespace arbc::model {
 struct BodyExpr {
   enum class Op {
     Message,  // the incoming message
-    Int,      // number holds an integer literal (a folded int constant)
+    Int,      // integer holds an int literal (a folded int constant), exactly
     Float,    // number holds a float literal (a folded float or duration constant)
     String,   // text
     Bool,     // boolean
@@ -44,7 +45,8 @@ struct BodyExpr {
   Op op = Op::Bool;
   Builtin builtin = Builtin::None;  // Call; None: a name no builtin has (opaque to the proof)
   std::string text;
-  double number = 0;
+  double number = 0;    // Float
+  int64_t integer = 0;  // Int
   bool boolean = false;
   std::vector<std::string> names;  // Record
   std::vector<BodyExpr> args;

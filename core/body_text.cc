@@ -1,5 +1,6 @@
 #include "core/body_text.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,9 +22,7 @@ bool is_binary_op(std::string_view s) {
 
 void append_number(std::string& out, const BodyExpr& e) {
   if (e.op == BodyExpr::Op::Int) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(std::llround(e.number)));
-    out += buf;
+    out += std::to_string(e.integer);
   } else if (!std::isfinite(e.number)) {
     out += std::isnan(e.number) ? "nan" : (e.number > 0 ? "inf" : "-inf");
   } else {
@@ -267,6 +266,11 @@ bool Reader::number(const std::string& w, BodyExpr& e) {
   bool is_float = w.find_first_of(".eEna") != std::string::npos;
   e.op = is_float ? BodyExpr::Op::Float : BodyExpr::Op::Int;
   e.number = v;
+  if (!is_float) {  // an int exactly: the double rounds above 2^53
+    auto [last, ec] = std::from_chars(w.data(), w.data() + w.size(), e.integer);
+    if (ec != std::errc() || last != w.data() + w.size())
+      return fail("the int '" + w + "' does not fit in 64 bits");
+  }
   return true;
 }
 

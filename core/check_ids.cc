@@ -27,6 +27,7 @@ constexpr CheckId kIds[] = {
     {"connect-into-arbitrated", kCheck, "a `connect` into a port that has an `arbitrate` block"},
     {"constraint-term", kCheck, "a constraint mentions something other than events, true, false"},
     {"dead", kVerify, "a rule can never be selected (warning; an error with --strict)"},
+    {"division-by-zero", kCheck, "`/` or `%` by a constant zero"},
     {"duplicate", kCheck, "a name defined twice in the same scope"},
     {"duration", kCheck, "a duration position holds something that is not a positive duration"},
     {"emit-type", kCheck, "a delivered value's type differs from the destination port's type"},
@@ -37,6 +38,9 @@ constexpr CheckId kIds[] = {
     {"hold-missing", kCheck, "a rule of a `by priority` port other than the lowest has no `hold`"},
     {"hold-on-lowest", kCheck, "the lowest rule of a `by priority` port has a `hold`"},
     {"hold-without-priority", kCheck, "`hold` on a rule of a port that is not `by priority`"},
+    {"int-overflow", kCheck,
+     "a constant int expression, or an int literal, outside the 64-bit range (a monitor would "
+     "wrap it)"},
     {"internal", kInternal, "Z3 and the runtime's constraint evaluator disagree: a bug in arbc"},
     {"invalid-utf8", kCheck, "the file is not valid UTF-8"},
     {"io", kCheck, "the file cannot be read (missing, a directory, unreadable)"},

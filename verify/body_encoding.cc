@@ -93,7 +93,7 @@ Ev Encoder::eval(const BodyExpr& e) {
     case BodyExpr::Op::Message:
       return {msg_, ctx_.bool_val(true)};
     case BodyExpr::Op::Int:
-      return {{K::Int, ctx_.int_val(static_cast<int64_t>(e.number))}, ctx_.bool_val(true)};
+      return {{K::Int, ctx_.int_val(e.integer)}, ctx_.bool_val(true)};
     case BodyExpr::Op::Float: {
       if (!std::isfinite(e.number)) return bad("a constant that is not a finite number");
       return {{K::Real, exact_real(ctx_, e.number)}, ctx_.bool_val(true)};

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "compiler/codegen/lua_prelude.h"
 #include "compiler/codegen/lua_text.h"
@@ -20,10 +21,10 @@ bool is_structured(const BodyExpr& e) {
          has_kind(e, Type::Kind::Record);
 }
 
-std::string integer_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(std::llround(v)));
-  return buf;
+// An int literal in Lua: INT64_MIN has no literal (its digits without the sign read as a float).
+std::string integer_text(int64_t v) {
+  if (v == std::numeric_limits<int64_t>::min()) return "math.mininteger";
+  return std::to_string(v);
 }
 
 }  // namespace
@@ -50,7 +51,7 @@ std::vector<LuaConstant> LuaExprTranslator::constants_used() const {
 std::string LuaExprTranslator::literal(const BodyExpr& e) {
   switch (e.op) {
     case Op::Int:
-      return integer_text(e.number);
+      return integer_text(e.integer);
     case Op::String:
       return lua_string(e.text);
     case Op::Bool:
@@ -77,7 +78,7 @@ std::string LuaExprTranslator::arith_operand(const BodyExpr& e, bool paren) {
 
 std::string LuaExprTranslator::to_float(const BodyExpr& e) {
   const BodyExpr& x = e.args[0];
-  if (x.op == Op::Int && x.constant.empty()) return lua_float(x.number);
+  if (x.op == Op::Int && x.constant.empty()) return lua_float(static_cast<double>(x.integer));
   return "(" + operand(x) + " + 0.0)";
 }
 

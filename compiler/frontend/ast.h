@@ -116,10 +116,12 @@ struct Expr {
   bool is_int = false;
   bool boolean = false;
   bool is_duration = false;  // sema: a float that came from a duration literal or constant
+  bool int_too_big = false;  // Number, is_int: the digits do not fit in 64 bits (sema says so)
   Loc loc;
   std::string_view op;  // one of the grammar's operator spellings (static storage)
   std::string text;
   double number = 0;
+  int64_t integer = 0;  // Number, is_int: the exact value (number holds it rounded to a double)
   std::vector<NameAt> names;  // Record: each field; Call: [0] the callee; Lambda: [0] the parameter
   std::vector<ExprPtr> args;
 
@@ -182,8 +184,9 @@ struct ConstDecl {
   ExprPtr value;
   Loc loc;  // the name
   // sema: value->type / value->is_duration give the constant's type; the folded value:
-  double number = 0;  // numbers (durations in seconds)
-  std::string text;   // strings
+  double number = 0;    // floats (durations in seconds)
+  int64_t integer = 0;  // ints
+  std::string text;     // strings
   bool boolean = false;
 };
 

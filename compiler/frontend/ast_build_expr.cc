@@ -1,8 +1,21 @@
+#include <charconv>
+
 #include "compiler/frontend/ast_builder_class.h"
 
 namespace arbc::frontend {
 
 using namespace ast;
+
+namespace {
+
+// An int literal's exact value (the double in `number` rounds above 2^53); digits that do not
+// fit in 64 bits are marked for sema to report.
+void set_integer(Expr& e, const std::string& digits) {
+  auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), e.integer);
+  e.int_too_big = ec != std::errc() || end != digits.data() + digits.size();
+}
+
+}  // namespace
 
 // Copies `where` into the node: each copy of a location allocates the file name, and a
 // 10,000-rule spec has ~200,000 expression nodes (docs/benchmarks.md).
@@ -103,6 +116,7 @@ ExprPtr Builder::primary(ArbcParser::PrimaryContext* ctx, int depth) {
     std::string text = tx(child<antlr4::tree::TerminalNode>(c, 0));
     e->number = std::strtod(text.c_str(), nullptr);
     e->is_int = text.find_first_of(".eE") == std::string::npos;
+    if (e->is_int) set_integer(*e, text);
     return e;
   }
   if (auto* c = as<ArbcParser::DurationLitContext>(ctx)) {
@@ -168,6 +182,7 @@ Duration Builder::duration(ArbcParser::DurationContext* ctx) {
     std::string text = tx(ctx->NUMBER());
     d.expr->number = std::strtod(text.c_str(), nullptr);
     d.expr->is_int = text.find_first_of(".eE") == std::string::npos;
+    if (d.expr->is_int) set_integer(*d.expr, text);
   } else {
     d.expr = make(Expr::Kind::Name, where);
     d.expr->text = tx(ctx->ID());

@@ -1,6 +1,9 @@
 #include "compiler/frontend/literal_value.h"
 
 #include <cmath>
+#include <limits>
+
+#include "compiler/frontend/const_fold.h"
 
 namespace arbc::frontend {
 
@@ -13,35 +16,40 @@ std::optional<Value> not_constant(const Expr& e, std::string* err) {
   return std::nullopt;
 }
 
-// A number as the wanted kind: a float where a float is wanted, else as computed.
-Value number(double d, bool is_int, const Type& want) {
-  if (want.kind == Type::Kind::Float || !is_int) return Value(d);
-  return Value(static_cast<int64_t>(d));
+// A number as the wanted kind: a float where a float is wanted (an int converted as Lua
+// converts it), else as computed.
+Value number(const ConstValue& v, const Type& want) {
+  if (v.kind == Type::Kind::Int)
+    return want.kind == Type::Kind::Float ? Value(static_cast<double>(v.integer))
+                                          : Value(v.integer);
+  return Value(v.number);
 }
 
-std::optional<double> number_of(const Expr& e, std::string* err) {
-  Type any_float;
-  any_float.kind = Type::Kind::Float;
-  std::optional<Value> v = literal_value(e, any_float, err);
+std::optional<ConstValue> number_of(const Expr& e, std::string* err) {
+  Type any;
+  any.kind = e.type && e.type->kind == Type::Kind::Int ? Type::Kind::Int : Type::Kind::Float;
+  std::optional<Value> v = literal_value(e, any, err);
   if (!v) return std::nullopt;
   if (!v->is_number()) {
     *err = "not a number";
     return std::nullopt;
   }
-  return v->as_float();
+  ConstValue c;
+  c.kind = v->is_int() ? Type::Kind::Int : Type::Kind::Float;
+  c.integer = v->is_int() ? v->as_int() : 0;
+  c.number = v->as_float();
+  return c;
 }
 
+// Arithmetic as the monitor's Lua computes it (const_fold.h): an overflow or a division by
+// zero is an error, as in any constant.
 std::optional<Value> arithmetic(const Expr& e, const Type& want, std::string* err) {
-  std::optional<double> a = number_of(*e.args[0], err);
-  std::optional<double> b = a ? number_of(*e.args[1], err) : std::nullopt;
+  std::optional<ConstValue> a = number_of(*e.args[0], err);
+  std::optional<ConstValue> b = a ? number_of(*e.args[1], err) : std::nullopt;
   if (!b) return std::nullopt;
-  bool ints = e.type && e.type->kind == Type::Kind::Int;
-  if (e.op == "+") return number(*a + *b, ints, want);
-  if (e.op == "-") return number(*a - *b, ints, want);
-  if (e.op == "*") return number(*a * *b, ints, want);
-  if (e.op == "/" && *b != 0) return number(*a / *b, false, want);
-  if (e.op == "%" && *b != 0) return number(std::fmod(*a, *b), ints, want);
-  return not_constant(e, err);
+  std::optional<ConstValue> r = fold_binary(e.op, *a, *b, err);
+  if (!r) return std::nullopt;
+  return number(*r, want);
 }
 
 std::optional<Value> constant(const Expr& e, const Type& want, std::string* err) {
@@ -53,8 +61,13 @@ std::optional<Value> constant(const Expr& e, const Type& want, std::string* err)
     case Type::Kind::String:
       return Value(k->text);
     case Type::Kind::Int:
-    case Type::Kind::Float:
-      return number(k->number, k->value->type->kind == Type::Kind::Int, want);
+    case Type::Kind::Float: {
+      ConstValue c;
+      c.kind = k->value->type->kind;
+      c.integer = k->integer;
+      c.number = k->number;
+      return number(c, want);
+    }
     default:
       return not_constant(e, err);
   }
@@ -87,9 +100,9 @@ std::optional<Value> list(const Expr& e, const Type& want, std::string* err) {
 std::optional<Value> vec3(const Expr& e, std::string* err) {
   double xyz[3];
   for (size_t i = 0; i < 3; ++i) {
-    std::optional<double> d = number_of(*e.args[i], err);
+    std::optional<ConstValue> d = number_of(*e.args[i], err);
     if (!d) return std::nullopt;
-    xyz[i] = *d;
+    xyz[i] = d->kind == Type::Kind::Int ? static_cast<double>(d->integer) : d->number;
   }
   return Value::vec3(xyz[0], xyz[1], xyz[2]);
 }
@@ -97,7 +110,13 @@ std::optional<Value> vec3(const Expr& e, std::string* err) {
 std::optional<Value> negate(const Expr& e, const Type& want, std::string* err) {
   std::optional<Value> v = literal_value(*e.args[0], want, err);
   if (!v) return std::nullopt;
-  if (v->is_int()) return Value(-v->as_int());
+  if (v->is_int()) {
+    if (v->as_int() == std::numeric_limits<int64_t>::min()) {
+      *err = "-(-9223372036854775808) overflows 64 bits";
+      return std::nullopt;
+    }
+    return Value(-v->as_int());
+  }
   if (v->is_float()) return Value(-v->as_float());
   if (v->is_vec3()) return Value(Eigen::Vector3d(-v->as_vec3()));
   return not_constant(e, err);
@@ -108,8 +127,13 @@ std::optional<Value> negate(const Expr& e, const Type& want, std::string* err) {
 std::optional<Value> literal_value(const Expr& e, const Type& want, std::string* err) {
   if (!e.type) return not_constant(e, err);
   switch (e.kind) {
-    case Expr::Kind::Number:
-      return number(e.number, e.is_int, want);
+    case Expr::Kind::Number: {
+      ConstValue c;
+      c.kind = e.is_int && e.type->kind == Type::Kind::Int ? Type::Kind::Int : Type::Kind::Float;
+      c.integer = e.integer;
+      c.number = e.number;
+      return number(c, want);
+    }
     case Expr::Kind::Duration:
       return Value(e.number);
     case Expr::Kind::String:

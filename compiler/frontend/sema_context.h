@@ -3,11 +3,14 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "compiler/frontend/ast.h"
+#include "compiler/frontend/const_fold.h"
 #include "core/diagnostic.h"
 
 namespace arbc::frontend {
@@ -220,7 +223,14 @@ class Sema {
   void check_best_by(ast::Expr& e, Scope& scope);
   // The argument types of the other builtins (all typed already) and the call's type.
   void check_builtin_args(ast::Expr& e, const BuiltinInfo& info);
-  bool fold_const(const ast::Expr& e, ast::ConstDecl& into);
+
+  // ---- constants (sema_const.cc) ----
+  // The value of a constant expression (literals, constants and operators on them), folded as
+  // the monitor's Lua computes it (const_fold.h); nullopt for anything else.
+  std::optional<ConstValue> constant_of(const ast::Expr& e) const;
+  // After an operator is typed: folds it if its operands are constants, and reports a
+  // constant that overflows 64 bits or a division by a constant zero (its type is then unset).
+  void fold_operator(ast::Expr& e);
 
   // ---- bodies (sema_body.cc) ----
   // The statements of a body in a scope of their own; `ctx` says where the body runs.
@@ -246,6 +256,9 @@ class Sema {
   std::set<const ast::TypeDecl*> types_active_, types_done_;  // resolve_type_decl's progress
   std::map<std::string, size_t> consts_;
   std::vector<int> const_state_;  // 0 unchecked, 1 checking, 2 done
+  // The values of operators whose operands are constants (fold_operator): a constant
+  // expression costs one fold per operator, however deep.
+  std::unordered_map<const ast::Expr*, ConstValue> folded_;
   std::map<const Type*, std::string> type_names_;
   std::map<std::string, size_t> events_;                   // name -> index in spec_.event_symbols
   std::map<std::string, const ast::ModuleDecl*> modules_;  // the first declaration of each

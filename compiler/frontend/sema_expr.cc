@@ -3,6 +3,7 @@
 // (ast.h).
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "compiler/frontend/builtin_aliases.h"
 #include "compiler/frontend/sema_context.h"
@@ -58,6 +59,14 @@ const char* kind_word(Expr::Kind kind) {
 void Sema::check_expr(Expr& e, Scope& scope) {
   switch (e.kind) {
     case Expr::Kind::Number:
+      if (e.is_int && e.int_too_big) {
+        error(e.loc,
+              "this int does not fit in 64 bits (-9223372036854775808 to "
+              "9223372036854775807): write it as a float (with a decimal point) or use a "
+              "smaller value",
+              "int-overflow");
+        return;
+      }
       e.type = e.is_int ? kInt : kFloat;
       return;
     case Expr::Kind::Duration:
@@ -126,6 +135,15 @@ void Sema::check_name(Expr& e, Scope& scope) {
       e.type = c.value->type;
       e.is_duration = c.value->is_duration;
     }
+    return;
+  }
+  if (e.text == "nan" || e.text == "inf") {
+    // The floats without a decimal form, as counterexamples print them (docs/language.md).
+    e.kind = Expr::Kind::Number;
+    e.number = e.text == "nan" ? std::numeric_limits<double>::quiet_NaN()
+                               : std::numeric_limits<double>::infinity();
+    e.is_int = false;
+    e.type = kFloat;
     return;
   }
   if (events_.count(e.text)) {
@@ -262,6 +280,7 @@ void Sema::check_unary(Expr& e, Scope& scope) {
       return;
     }
     e.type = kBool;
+    fold_operator(e);
     return;
   }
   if (!is_numeric(operand.type) && operand.type->kind != Type::Kind::Vec3) {
@@ -271,6 +290,7 @@ void Sema::check_unary(Expr& e, Scope& scope) {
   }
   e.type = operand.type;
   e.is_duration = operand.is_duration;
+  fold_operator(e);
 }
 
 // The type of `a op b` by the operand types; durations stay durations where the units do.
@@ -318,6 +338,7 @@ void Sema::check_binary(Expr& e, Scope& scope) {
   } else {
     mismatch();
   }
+  fold_operator(e);
 }
 
 // `{ name: value, ... }`: a record type of its fields, each named once.
@@ -498,99 +519,6 @@ void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, const
 }
 
 // ---- constants (durations: sema_duration.cc) -------------------------------------------------
-
-bool Sema::fold_const(const Expr& e, ConstDecl& into) {
-  switch (e.kind) {
-    case Expr::Kind::Number:
-    case Expr::Kind::Duration:
-      into.number = e.number;
-      return true;
-    case Expr::Kind::String:
-      into.text = e.text;
-      return true;
-    case Expr::Kind::Bool:
-      into.boolean = e.boolean;
-      return true;
-    case Expr::Kind::Name:
-      if (!e.constant) return false;
-      into.number = e.constant->number;
-      into.text = e.constant->text;
-      into.boolean = e.constant->boolean;
-      return true;
-    case Expr::Kind::Unary: {
-      ConstDecl x;
-      if (!fold_const(*e.args[0], x)) return false;
-      if (e.op == "-")
-        into.number = -x.number;
-      else
-        into.boolean = !x.boolean;
-      return true;
-    }
-    case Expr::Kind::Binary: {
-      ConstDecl a, b;
-      if (!fold_const(*e.args[0], a) || !fold_const(*e.args[1], b)) return false;
-      std::string_view op = e.op;
-      bool strings = is_kind(e.args[0]->type, Type::Kind::String);
-      if (op == "+") {
-        if (strings)
-          into.text = a.text + b.text;
-        else
-          into.number = a.number + b.number;
-      } else if (op == "-")
-        into.number = a.number - b.number;
-      else if (op == "*")
-        into.number = a.number * b.number;
-      else if (op == "/")
-        into.number = a.number / b.number;
-      else if (op == "%")
-        into.number = std::fmod(a.number, b.number);
-      else if (op == "and")
-        into.boolean = a.boolean && b.boolean;
-      else if (op == "or")
-        into.boolean = a.boolean || b.boolean;
-      else if (op == "<")
-        into.boolean = strings ? a.text < b.text : a.number < b.number;
-      else if (op == "<=")
-        into.boolean = strings ? a.text <= b.text : a.number <= b.number;
-      else if (op == ">")
-        into.boolean = strings ? a.text > b.text : a.number > b.number;
-      else if (op == ">=")
-        into.boolean = strings ? a.text >= b.text : a.number >= b.number;
-      else if (op == "==")
-        into.boolean = a.number == b.number && a.text == b.text && a.boolean == b.boolean;
-      else if (op == "!=")
-        into.boolean = !(a.number == b.number && a.text == b.text && a.boolean == b.boolean);
-      return true;
-    }
-    default:
-      return false;
-  }
-}
-
-void Sema::check_const(size_t index) {
-  if (const_state_[index] == 2) return;
-  ConstDecl& c = spec_.consts[index];
-  if (const_state_[index] == 1) {
-    error(c.loc,
-          "constant '" + c.name +
-              "' is defined in terms of itself: compute it from literals and other constants",
-          "not-constant");
-    const_state_[index] = 2;
-    return;
-  }
-  const_state_[index] = 1;
-  Scope empty;
-  check_expr(*c.value, empty);
-  const_state_[index] = 2;
-  if (!c.value->type) return;
-  if (!fold_const(*c.value, c)) {
-    error(c.value->loc,
-          "the value of constant '" + c.name +
-              "' must be computed from literals and other constants with operators",
-          "not-constant");
-    c.value->type = nullptr;
-  }
-}
 
 // ---- constraints --------------------------------------------------------------------------
 

@@ -40,7 +40,7 @@ BodyExpr constant_literal(const ast::ConstDecl& c) {
       break;
     case TK::Int:
       out.op = BodyExpr::Op::Int;
-      out.number = c.number;
+      out.integer = c.integer;
       break;
     default:
       out.op = BodyExpr::Op::Float;
@@ -152,6 +152,7 @@ BodyExpr expr(const ast::Expr& e) {
     case Kind::Number:
       out.op = e.is_int && is(e.type, TK::Int) ? BodyExpr::Op::Int : BodyExpr::Op::Float;
       out.number = e.number;
+      out.integer = e.integer;
       return out;
     case Kind::Duration:
       out.op = BodyExpr::Op::Float;
