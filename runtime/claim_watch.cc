@@ -36,7 +36,7 @@ ClaimWatch::ClaimWatch(const model::App& app) : app_(app) {
     property_text_.push_back(model::temporal_property_text(p));
   }
   for (const model::Assumption& a : app.assumptions) assumed_.push_back({&a, false, std::nullopt});
-  for (const model::SourceRate& r : app.rates) rates_.push_back({&r, 0});
+  for (const model::SourceRate& r : app.rates) rates_.push_back({&r, Nanos{0}});
 }
 
 bool ClaimWatch::empty() const { return size() == 0; }
@@ -46,7 +46,7 @@ size_t ClaimWatch::size() const {
          app_.invariants.size();
 }
 
-void ClaimWatch::violated(const std::string& claim, double t, std::string what, bool assumption) {
+void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, bool assumption) {
   if (!reported_.insert(claim).second) return;
   violations_.push_back({t, claim, std::move(what), assumption});
 }
@@ -76,7 +76,7 @@ void ClaimWatch::observe(const TraceRecord& r) {
 
 // The assumptions over the state of the port at a rule's decision: exclusive groups and
 // invariants (the proof reads every state as satisfying them).
-void ClaimWatch::decision(const std::string& port, double t, const std::set<std::string>& state) {
+void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::string>& state) {
   for (const model::ExclusiveGroup& g : app_.exclusive_groups) {
     std::vector<std::string> both;
     for (const std::string& e : g.events)
@@ -104,7 +104,7 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
   bool present = state.count(a.event) > 0;
   std::string at = " in " + port + " at " + duration_literal(r.t);
   if (a.absent_for) {
-    if (present && s.last_after && !reached(r.t, *s.last_after + *a.absent_for))
+    if (present && s.last_after && r.t < later(*s.last_after, *a.absent_for))
       violated(assumption_text(a), r.t,
                a.event + " present" + at + ", " + duration_literal(r.t - *s.last_after) +
                    " after '" + a.after + "' delivered",
@@ -121,10 +121,10 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
 }
 
 // `given M.p every D`: nothing from M.p for more than D (from the start) breaks it.
-void ClaimWatch::rate_gaps(double t) {
+void ClaimWatch::rate_gaps(Nanos t) {
   for (Rate& rate : rates_) {
-    double deadline = rate.last + rate.r->period;
-    if (t > deadline + kSameInstant)
+    Nanos deadline = later(rate.last, rate.r->period);
+    if (t > deadline)
       violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
                "nothing from " + rate.r->port + " between " + duration_literal(rate.last) +
                    " and " + duration_literal(t),
@@ -132,7 +132,7 @@ void ClaimWatch::rate_gaps(double t) {
   }
 }
 
-void ClaimWatch::finish(double end) {
+void ClaimWatch::finish(Nanos end) {
   rate_gaps(end);
   for (size_t i = 0; i < properties_.size(); ++i) {
     properties_[i]->finish(end);

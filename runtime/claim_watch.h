@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/instant.h"
 #include "runtime/property_watch.h"
 #include "runtime/trace_container.h"
 #include "runtime/trace_record.h"
@@ -25,7 +26,7 @@
 namespace arbc {
 
 struct ClaimViolation {
-  double t = 0;
+  Nanos t{0};
   std::string claim;  // as the spec writes it: "never two take within 1s", "exclusive { a, b }"
   std::string what;   // what the run did
   bool assumption = false;  // an assumption broke (not a claim)
@@ -41,7 +42,7 @@ class ClaimWatch {
   size_t size() const;
   void observe(const TraceRecord& r);
   // The run ended at `end` (response windows and rates up to there are judged).
-  void finish(double end);
+  void finish(Nanos end);
   // The first violation of each claim and assumption, in the order they happened.
   const std::vector<ClaimViolation>& violations() const { return violations_; }
 
@@ -49,18 +50,18 @@ class ClaimWatch {
   struct Assumed {
     const model::Assumption* a;
     bool armed = false;
-    std::optional<double> last_after;
+    std::optional<Nanos> last_after;
   };
   struct Rate {
     const model::SourceRate* r;
-    double last = 0;  // the start counts: `given` says "from the start"
+    Nanos last{0};  // the start counts: `given` says "from the start"
   };
 
-  void decision(const std::string& port, double t, const std::set<std::string>& state);
+  void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
-  void rate_gaps(double t);
-  void violated(const std::string& claim, double t, std::string what, bool assumption);
+  void rate_gaps(Nanos t);
+  void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
   std::vector<std::unique_ptr<PropertyWatch>> properties_;

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/instant.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
@@ -19,10 +20,10 @@ class TraceContainer {
   // the container, so presence is judged by the expiry instants themselves).
   void apply(const TraceRecord& r);
   // The events present at t.
-  std::set<std::string> present(double t) const;
+  std::set<std::string> present(Nanos t) const;
 
  private:
-  std::map<std::pair<std::string, std::string>, double> entries_;  // (event, owner) -> expiry
+  std::map<std::pair<std::string, std::string>, Nanos> entries_;  // (event, owner) -> expiry
 };
 
 }  // namespace arbc
