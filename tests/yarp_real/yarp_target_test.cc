@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/app_json.h"
+#include "core/instant.h"
 #include "tests/yarp_real/bottle_layout.h"
 #include "tests/yarp_real/replay_trace.h"
 #include "tests/yarp_real/yarp_fixture.h"
@@ -141,7 +142,7 @@ class YarpTargetTest : public YarpTest {
     std::map<std::string, double> throttle;
     for (const model::Connection& conn : app_.connections) {
       destination[conn.name] = conn.destination;
-      if (conn.throttle) throttle[conn.name] = *conn.throttle;
+      if (conn.throttle) throttle[conn.name] = seconds_of(*conn.throttle);
     }
     RecordedRun run;
     std::string err;
