@@ -272,7 +272,8 @@ int run_command(std::span<char*> args) {
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   ClaimWatch claims(app);  // what the proof proved and assumed, checked on every record
   bool watching = !claims.empty() && a.runtime_checks != "off";
-  if (watching) options.trace_watch = [&claims](const TraceRecord& r) { claims.observe(r); };
+  if (watching)
+    options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,

@@ -99,8 +99,9 @@ void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
   end.claims->finish(end.runtime.now());
   const std::vector<ClaimViolation>& broken = end.claims->violations();
   if (broken.empty()) {
-    std::printf("runtime checks: %zu claims and assumptions of the proof watched, none broken\n",
-                end.claims->size());
+    size_t n = end.claims->size();
+    std::printf("runtime checks: %zu %s of the proof watched, none broken\n", n,
+                n == 1 ? "claim or assumption" : "claims and assumptions");
     return;
   }
   std::printf("runtime checks: %zu of %zu broken; the proof does not cover the run from %s%s:\n",

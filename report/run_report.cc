@@ -151,7 +151,9 @@ void append_legend(std::string& out) {
     out += "<span class=\"item\">" + swatch(drop_reason_color(reason)) + drop_reason_name(reason) +
            "</span>";
   }
-  out += "<span class=\"item\">" + swatch("#ff0000") + "moment of quarantine</span></p>\n";
+  out += "<span class=\"item\">" + swatch("#ff0000") + "moment of quarantine</span>";
+  out += "<span class=\"item\">" + swatch(kBreachColor) +
+         "a claim of the proof found broken (runtime checks)</span></p>\n";
 }
 
 void append_timelines(std::string& out, const RunReportInput& input) {
@@ -297,6 +299,9 @@ void append_messages(std::string& out, const std::vector<TraceRecord>& records, 
         break;
       case TraceKind::Quarantine:
         line = "quarantined " + r.connection + ": " + r.text;
+        break;
+      case TraceKind::Breach:
+        line = "runtime check: " + r.connection + " " + r.text;
         break;
       case TraceKind::PublishError:
         line = "publish error on " + r.port + ": " + r.text;

@@ -95,6 +95,9 @@ RunTimeline build_run_timeline(const std::vector<std::string>& connections,
         if (!l.quarantined_at) l.quarantined_at = t;
         break;
       }
+      case TraceKind::Breach:
+        timeline.breaches.push_back({t, r.connection, r.text});
+        break;
       case TraceKind::Event: {
         EventHistory& h = histories[{r.port, r.event}];
         if (r.op == "set")

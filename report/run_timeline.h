@@ -35,10 +35,17 @@ struct EventLane {
   std::vector<Interval> present;  // sorted, disjoint, non-empty
 };
 
+// A claim or assumption of the proof a runtime check found broken (a trace `breach` line).
+struct Breach {
+  double t = 0;  // when the run showed it
+  std::string claim, what;
+};
+
 struct RunTimeline {
   double end = 0;  // the run's last instant (the simulated or wall time it stopped at)
   std::vector<ConnectionLane> connections;
   std::vector<EventLane> events;  // sorted by port, then event
+  std::vector<Breach> breaches;   // in trace order
 };
 
 // Builds the timeline of a run that ended at `end`: one lane per name in `connections`, in that

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "report/svg_timeline.h"
 #include "runtime/runtime_test_util.h"
 
 namespace arbc::report {
@@ -85,6 +86,21 @@ TEST(RunTimelineTest, LanesFollowTheGivenOrderAndUnknownConnectionsAreAppended) 
   ASSERT_EQ(t.connections[2].drops.size(), 1u);
   EXPECT_EQ(t.connections[2].drops[0].reason, DropReason::Throttled);
   EXPECT_EQ(t.connections[2].quarantined_at, 3);
+}
+
+TEST(RunTimelineTest, ABreachLineIsKeptWithItsClaimAndMarkedAcrossTheLanes) {
+  TraceRecord b;
+  b.t = 2500ms;
+  b.kind = TraceKind::Breach;
+  b.connection = "never two take within 1s";
+  b.text = "broken at 2.5s: 'take' delivered at 2s and at 2.5s";
+  RunTimeline t = build_run_timeline({"take"}, {b}, 5);
+  ASSERT_EQ(t.breaches.size(), 1u);
+  EXPECT_EQ(t.breaches[0].t, 2.5);
+  EXPECT_EQ(t.breaches[0].claim, "never two take within 1s");
+  std::string svg = connection_timeline_svg(t, 1);
+  EXPECT_NE(svg.find("never two take within 1s broken (seen at 2.5"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(kBreachColor), std::string::npos);
 }
 
 // The reconstruction agrees with the runtime's own evaluator: a rule whose constraint is

@@ -242,6 +242,12 @@ std::string connection_timeline_svg(const RunTimeline& timeline, size_t first_fe
     append_connection_lane(out, timeline.connections[i], y, scale, layout);
     y += kLaneHeight;
   }
+  // A broken claim marks every lane: from there the proof no longer covers the run.
+  for (const Breach& b : timeline.breaches) {
+    double x = scale.x(b.t);
+    append_rect(out, x - 1, kAxisHeight, 3, y - kAxisHeight, kBreachColor,
+                b.claim + " broken (seen at " + scale.format().text(b.t) + "): " + b.what);
+  }
   out += "</svg>\n";
   return out;
 }

@@ -16,6 +16,8 @@ namespace arbc::report {
 const char* drop_reason_color(DropReason reason);
 inline constexpr const char* kDeliveryColor = "#009e73";
 inline constexpr const char* kPresenceColor = "#3a6fb0";
+// A runtime check found a claim of the proof broken: a mark across every lane.
+inline constexpr const char* kBreachColor = "#000000";
 
 // Geometry shared by both timelines, so their time axes line up on the page.
 struct TimelineLayout {

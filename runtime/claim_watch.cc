@@ -32,8 +32,10 @@ ClaimWatch::ClaimWatch(const model::App& app) : app_(app) {
     if (c.kind == model::ConnectionKind::Rule) rule_port_[c.name] = c.destination;
   for (const model::ArbitratedPort& p : app.arbitrated_ports) boxes_[p.port];
   for (const model::TemporalProperty& p : app.temporal) {
+    properties_of_port_[p.port].push_back(properties_.size());
     properties_.push_back(std::make_unique<PropertyWatch>(p, rules_into(app, p.port)));
     property_text_.push_back(model::temporal_property_text(p));
+    property_broken_.push_back(false);
   }
   for (const model::Assumption& a : app.assumptions) assumed_.push_back({&a, false, std::nullopt});
   for (const model::SourceRate& r : app.rates) rates_.push_back({&r, Nanos{0}});
@@ -51,27 +53,51 @@ void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, b
   violations_.push_back({t, claim, std::move(what), assumption});
 }
 
+void ClaimWatch::watch(const TraceRecord& r, Trace& trace) {
+  size_t known = violations_.size();
+  observe(r);
+  for (size_t i = known; i < violations_.size(); ++i) {
+    const ClaimViolation& v = violations_[i];
+    trace.breach(r.t, (v.assumption ? "assumption " : "") + v.claim,
+                 "broken at " + duration_literal(v.t) + ": " + v.what);
+  }
+}
+
 void ClaimWatch::observe(const TraceRecord& r) {
   rate_gaps(r.t);
+  const std::string* port = nullptr;  // the arbitrated port the record is about, if any
   if (r.kind == TraceKind::Publish) {
     for (Rate& rate : rates_)
       if (rate.r->port == r.port) rate.last = r.t;
   } else if (r.kind == TraceKind::Event) {
     auto box = boxes_.find(r.port);
-    if (box != boxes_.end()) box->second.apply(r);
-  } else if (r.kind == TraceKind::Deliver || r.kind == TraceKind::Drop) {
+    if (box != boxes_.end()) box->second.apply(r), port = &box->first;
+  } else if (r.kind == TraceKind::Deliver ||
+             (r.kind == TraceKind::Drop && r.reason != DropReason::Feed)) {  // feeds: no rule
     auto rule = rule_port_.find(r.connection);
     if (rule != rule_port_.end()) {
-      const std::set<std::string> state = boxes_[rule->second].present(r.t);
+      port = &rule->second;
+      const std::set<std::string>& state = boxes_[rule->second].present(r.t);
       decision(rule->second, r.t, state);
       for (Assumed& s : assumed_)
         if (s.a->port == rule->second) assumption(s, rule->second, r, state);
     }
   }
-  for (size_t i = 0; i < properties_.size(); ++i) {
+  // A property reads only its port's events, deliveries and drops (runtime/property_watch.h).
+  auto props = port ? properties_of_port_.find(*port) : properties_of_port_.end();
+  if (props == properties_of_port_.end()) return;
+  for (size_t i : props->second) {
+    if (property_broken_[i]) continue;
     properties_[i]->observe(r);
-    if (const auto& b = properties_[i]->breach()) violated(property_text_[i], b->t, b->what, false);
+    property_breached(i);
   }
+}
+
+void ClaimWatch::property_breached(size_t i) {
+  const auto& b = properties_[i]->breach();
+  if (!b) return;
+  property_broken_[i] = true;
+  violated(property_text_[i], b->t, b->what, false);
 }
 
 // The assumptions over the state of the port at a rule's decision: exclusive groups and
@@ -102,16 +128,16 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
                             const std::set<std::string>& state) {
   const model::Assumption& a = *s.a;
   bool present = state.count(a.event) > 0;
-  std::string at = " in " + port + " at " + duration_literal(r.t);
+  auto at = [&] { return " in " + port + " at " + duration_literal(r.t); };  // only to report
   if (a.absent_for) {
     if (present && s.last_after && r.t < later(*s.last_after, *a.absent_for))
       violated(assumption_text(a), r.t,
-               a.event + " present" + at + ", " + duration_literal(r.t - *s.last_after) +
+               a.event + " present" + at() + ", " + duration_literal(r.t - *s.last_after) +
                    " after '" + a.after + "' delivered",
                true);
   } else if (present && !s.armed) {
     violated(assumption_text(a), r.t,
-             a.event + " present" + at + " with no delivery of '" + a.after + "'" +
+             a.event + " present" + at() + " with no delivery of '" + a.after + "'" +
                  (a.until.empty() ? "" : " since the last of '" + a.until + "'"),
              true);
   }
@@ -124,19 +150,21 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
 void ClaimWatch::rate_gaps(Nanos t) {
   for (Rate& rate : rates_) {
     Nanos deadline = later(rate.last, rate.r->period);
-    if (t > deadline)
-      violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
-               "nothing from " + rate.r->port + " between " + duration_literal(rate.last) +
-                   " and " + duration_literal(t),
-               true);
+    if (t <= deadline || rate.broken) continue;
+    rate.broken = true;
+    violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
+             "nothing from " + rate.r->port + " between " + duration_literal(rate.last) + " and " +
+                 duration_literal(t),
+             true);
   }
 }
 
 void ClaimWatch::finish(Nanos end) {
   rate_gaps(end);
   for (size_t i = 0; i < properties_.size(); ++i) {
+    if (property_broken_[i]) continue;
     properties_[i]->finish(end);
-    if (const auto& b = properties_[i]->breach()) violated(property_text_[i], b->t, b->what, false);
+    property_breached(i);
   }
 }
 

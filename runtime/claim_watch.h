@@ -15,11 +15,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/app_model.h"
 #include "core/instant.h"
 #include "runtime/property_watch.h"
+#include "runtime/trace.h"
 #include "runtime/trace_container.h"
 #include "runtime/trace_record.h"
 
@@ -41,6 +43,8 @@ class ClaimWatch {
   // How many claims and assumptions it watches.
   size_t size() const;
   void observe(const TraceRecord& r);
+  // observe(r), and a breach line in `trace` for each claim r showed broken (Trace::Watch).
+  void watch(const TraceRecord& r, Trace& trace);
   // The run ended at `end` (response windows and rates up to there are judged).
   void finish(Nanos end);
   // The first violation of each claim and assumption, in the order they happened.
@@ -54,22 +58,27 @@ class ClaimWatch {
   };
   struct Rate {
     const model::SourceRate* r;
-    Nanos last{0};  // the start counts: `given` says "from the start"
+    Nanos last{0};        // the start counts: `given` says "from the start"
+    bool broken = false;  // reported: no longer judged (a run breaks a claim once)
   };
 
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
   void rate_gaps(Nanos t);
+  void property_breached(size_t i);
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;
+  std::vector<bool> property_broken_;  // reported: that property is no longer observed
+  std::unordered_map<std::string, std::vector<size_t>> properties_of_port_;  // port -> its own
   std::vector<Assumed> assumed_;
   std::vector<Rate> rates_;
-  std::map<std::string, std::string> rule_port_;  // rule -> its arbitrated port
-  std::map<std::string, TraceContainer> boxes_;   // arbitrated port -> its container
+  // Looked up on every record: hashed.
+  std::unordered_map<std::string, std::string> rule_port_;  // rule -> its arbitrated port
+  std::unordered_map<std::string, TraceContainer> boxes_;   // arbitrated port -> its container
   std::set<std::string> reported_;
   std::vector<ClaimViolation> violations_;
 };

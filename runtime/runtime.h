@@ -78,7 +78,7 @@ struct RunOptions {
   std::vector<TraceRecord>* trace_records = nullptr;
   // Not empty: every trace record is also given to it, on the thread that makes it (the runtime
   // checks of `arbc run`, runtime/claim_watch.h).
-  std::function<void(const TraceRecord&)> trace_watch;
+  Trace::Watch trace_watch;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks

@@ -23,16 +23,22 @@ void Trace::close() {
 }
 
 // Every record goes through here: the line in memory for --report and --diff, and on file.
+// The watch comes last, so that a breach line it writes follows the record that showed it.
 void Trace::emit(const TraceLine& line) {
-  if (watch_ || records_) {
-    TraceRecord r = to_trace_record(line);
-    if (watch_) watch_(r);
-    if (records_) records_->push_back(std::move(r));
+  if (file_) {
+    line_.clear();
+    append_trace_line(line_, line);
+    std::fwrite(line_.data(), 1, line_.size(), file_);
   }
-  if (!file_) return;
-  line_.clear();
-  append_trace_line(line_, line);
-  std::fwrite(line_.data(), 1, line_.size(), file_);
+  if (records_) records_->push_back(to_trace_record(line));
+  if (!watch_ || line.kind == TraceKind::Breach) return;
+  // A feed's drop says only that the feed consumed its message (its event records say what it
+  // did), and feeds are most of the records: the watch does without them.
+  if (line.kind == TraceKind::Drop && line.reason == DropReason::Feed) return;
+  // The watch reads the record and keeps nothing of it: one record, its strings' storage reused
+  // from line to line (the runtime checks' cost is measured in bench/figures/runtime_checks.sh).
+  fill_trace_record(line, &watched_);
+  watch_(watched_, *this);
 }
 
 void Trace::publish(Nanos t, std::string_view port, const Value& v) {
@@ -66,6 +72,13 @@ void Trace::event(Nanos t, std::string_view port, std::string_view kind, std::st
   l.event = event;
   l.owner = owner;
   l.expiry = expiry;
+  emit(l);
+}
+
+void Trace::breach(Nanos t, std::string_view claim, std::string_view what) {
+  TraceLine l{t, TraceKind::Breach};
+  l.connection = claim;
+  l.text = what;
   emit(l);
 }
 

@@ -27,8 +27,10 @@ class Trace {
   // Also appends every record to *records (nullptr: stop); independent of the file.
   // The caller keeps *records alive while the trace is written.
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }
-  // Also gives every record to `watch` (the runtime checks, runtime/claim_watch.h); empty: stop.
-  void watch_with(std::function<void(const TraceRecord&)> watch) { watch_ = std::move(watch); }
+  // Also gives every record but a feed's drop, once written, to `watch` (the runtime checks,
+  // runtime/claim_watch.h), which may write breach lines in turn; empty: stop.
+  using Watch = std::function<void(const TraceRecord&, Trace&)>;
+  void watch_with(Watch watch) { watch_ = std::move(watch); }
   bool enabled() const { return file_ != nullptr || records_ != nullptr || watch_ != nullptr; }
 
   // A module published v on its out-port `port` ("Module.port"); written before the message
@@ -46,6 +48,9 @@ class Trace {
   // An exception escaped plugin code: `who` is a module's name or "environment".
   void plugin_error(Nanos t, std::string_view who, std::string_view callback,
                     std::string_view message);
+  // A runtime check found `claim` broken (at the instant of the record that showed it; `what`
+  // says when it broke and how).
+  void breach(Nanos t, std::string_view claim, std::string_view what);
   // Messages still queued on a connection when the run ended.
   void pending(Nanos t, std::string_view connection, size_t count);
   void close();
@@ -54,7 +59,8 @@ class Trace {
   void emit(const TraceLine& line);
   std::FILE* file_ = nullptr;
   std::vector<TraceRecord>* records_ = nullptr;
-  std::function<void(const TraceRecord&)> watch_;
+  Watch watch_;
+  TraceRecord watched_;  // what watch_ is given, refilled in place
   std::string line_;
 };
 

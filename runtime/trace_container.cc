@@ -1,23 +1,41 @@
 #include "runtime/trace_container.h"
 
-#include "core/instant.h"
-
 namespace arbc {
 
 void TraceContainer::apply(const TraceRecord& r) {
-  auto key = std::make_pair(r.event, r.owner);
   if (r.op == "set") {
-    entries_[key] = r.expiry;  // kNever: no lifetime
+    auto event = entries_.find(r.event);
+    if (event == entries_.end()) event = entries_.emplace(r.event, Owners{}).first;
+    auto owner = event->second.find(r.owner);
+    if (owner == event->second.end())
+      event->second.emplace(r.owner, r.expiry);
+    else
+      owner->second = r.expiry;
   } else if (r.op == "unset") {
-    entries_.erase(key);
+    auto event = entries_.find(r.event);
+    if (event != entries_.end()) event->second.erase(r.owner);
+  } else {
+    return;  // "expire" changes nothing: the expiry instant already did
   }
+  cached_ = false;
 }
 
-std::set<std::string> TraceContainer::present(Nanos t) const {
-  std::set<std::string> out;
-  for (const auto& [key, expiry] : entries_)
-    if (t < expiry) out.insert(key.first);  // exact, as the runtime compares (core/instant.h)
-  return out;
+const std::set<std::string>& TraceContainer::present(Nanos t) const {
+  if (cached_ && t >= cached_from_ && t < cached_until_) return present_;
+  present_.clear();
+  cached_from_ = t;
+  cached_until_ = kNever;
+  for (const auto& [event, owners] : entries_) {
+    for (const auto& [owner, expiry] : owners) {
+      // Exact, as the runtime compares (core/instant.h); the answer changes at the next expiry.
+      if (t < expiry) {
+        present_.insert(event);
+        if (expiry < cached_until_) cached_until_ = expiry;
+      }
+    }
+  }
+  cached_ = true;
+  return present_;
 }
 
 }  // namespace arbc

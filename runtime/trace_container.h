@@ -4,10 +4,10 @@
 // proof does (docs/design.md#events-and-lifetimes).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
-#include <utility>
 
 #include "core/instant.h"
 #include "runtime/trace_record.h"
@@ -19,11 +19,17 @@ class TraceContainer {
   // An event record ("set", "unset"; an "expire" record comes late, when the runtime next reads
   // the container, so presence is judged by the expiry instants themselves).
   void apply(const TraceRecord& r);
-  // The events present at t.
-  std::set<std::string> present(Nanos t) const;
+  // The events present at t; valid until the next apply() or present() call.
+  const std::set<std::string>& present(Nanos t) const;
 
  private:
-  std::map<std::pair<std::string, std::string>, Nanos> entries_;  // (event, owner) -> expiry
+  using Owners = std::map<std::string, Nanos, std::less<>>;  // owner -> expiry (kNever: none)
+  std::map<std::string, Owners, std::less<>> entries_;       // event -> its entries
+  // The last answer of present(), still right for any t before the next expiry after it, as
+  // long as nothing was applied: a port decides many times between two changes.
+  mutable std::set<std::string> present_;
+  mutable bool cached_ = false;
+  mutable Nanos cached_from_{0}, cached_until_{0};
 };
 
 }  // namespace arbc

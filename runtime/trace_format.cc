@@ -62,6 +62,7 @@ constexpr KindFormat kFormats[] = {
      {{{"from", Slot::Connection}, {"callback", Slot::Callback}, {"message", Slot::Text}}}},
     {TraceKind::Pending, "pending", {{{"connection", Slot::Connection}, {"count", Slot::Count}}}},
     {TraceKind::Publish, "publish", {{{"port", Slot::Port}, {"value", Slot::Value}}}},
+    {TraceKind::Breach, "breach", {{{"claim", Slot::Connection}, {"message", Slot::Text}}}},
 };
 
 const KindFormat& format_of(TraceKind kind) {
@@ -186,20 +187,24 @@ void append_trace_line(std::string& out, const TraceLine& line) {
   out += "}\n";
 }
 
+void fill_trace_record(const TraceLine& line, TraceRecord* r) {
+  r->t = line.t;
+  r->kind = line.kind;
+  r->connection.assign(line.connection);
+  r->port.assign(line.port);
+  r->reason = line.reason;
+  r->op.assign(line.op);
+  r->event.assign(line.event);
+  r->owner.assign(line.owner);
+  r->expiry = line.expiry;
+  r->text.assign(line.text);
+  r->callback.assign(line.callback);
+  r->count = line.count;
+}
+
 TraceRecord to_trace_record(const TraceLine& line) {
   TraceRecord r;
-  r.t = line.t;
-  r.kind = line.kind;
-  r.connection = line.connection;
-  r.port = line.port;
-  r.reason = line.reason;
-  r.op = line.op;
-  r.event = line.event;
-  r.owner = line.owner;
-  r.expiry = line.expiry;
-  r.text = line.text;
-  r.callback = line.callback;
-  r.count = line.count;
+  fill_trace_record(line, &r);
   return r;
 }
 

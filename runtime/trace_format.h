@@ -39,6 +39,8 @@ void append_trace_line(std::string& out, const TraceLine& line);
 
 // The line as a record (what --report and --diff keep in memory).
 TraceRecord to_trace_record(const TraceLine& line);
+// The same into *r, reusing its strings' storage.
+void fill_trace_record(const TraceLine& line, TraceRecord* r);
 
 // A parsed line as a record; false when it is not a trace line of a known kind with the keys
 // that kind must have. `value` (may be null) is set to the line's "value" for Deliver and

@@ -15,7 +15,7 @@ using namespace std::chrono_literals;
 constexpr TraceKind kAll[] = {TraceKind::Deliver,      TraceKind::Drop,        TraceKind::Event,
                               TraceKind::Error,        TraceKind::Quarantine,  TraceKind::Log,
                               TraceKind::PublishError, TraceKind::PluginError, TraceKind::Pending,
-                              TraceKind::Publish};
+                              TraceKind::Publish,      TraceKind::Breach};
 
 TEST(TraceFormatTest, EveryKindHasItsOwnNameAndIsFoundByIt) {
   std::set<std::string> names;

@@ -22,7 +22,8 @@ enum class TraceKind {
   PublishError,
   PluginError,
   Pending,
-  Publish  // a value a module published on an out-port (what `arbc run --inputs` replays)
+  Publish,  // a value a module published on an out-port (what `arbc run --inputs` replays)
+  Breach    // a runtime check found a claim or assumption of the proof broken (claim_watch.h)
 };
 
 struct TraceRecord {

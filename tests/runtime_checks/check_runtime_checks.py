@@ -5,6 +5,7 @@ rate ends in failure (exit 3) naming it and the instant; a run that keeps them s
 
 usage: check_runtime_checks.py ARBC CASE        (run from the repository root)
 """
+import json
 import os
 import subprocess
 import sys
@@ -78,7 +79,7 @@ def case_exclusive_group_kept(arbc):
         '{"t": 0.1, "port": "Planner.left", "value": 1.0}',
         '{"t": 0.1, "port": "Planner.right", "value": 2.0}'])
     expect(code == 0, f"exit {code}, expected 0", out, err)
-    expect("runtime checks: 1 claims and assumptions of the proof watched, none broken" in out,
+    expect("runtime checks: 1 claim or assumption of the proof watched, none broken" in out,
            "no line saying what was watched", out, err)
 
 
@@ -102,6 +103,33 @@ def case_property_broken(arbc):
         '{"t": 0, "port": "Planner.cmd", "value": 1.0}',
         '{"t": 1.5, "port": "Planner.cmd", "value": 2.0}'], "--no-verify")
     expect(code == 0 and "none broken" in out, f"exit {code} on a run that keeps it", out, err)
+
+
+def case_breach_in_trace_and_report(arbc):
+    # A breach is also a trace line right after the record that showed it, and a mark in the
+    # run report's timeline (docs/runtime.md#runtime-checks).
+    with tempfile.TemporaryDirectory() as d:
+        trace, report = os.path.join(d, "t.jsonl"), os.path.join(d, "r.html")
+        code, out, err = run(arbc, SPACED, [
+            '{"t": 0, "port": "Planner.cmd", "value": 1.0}',
+            '{"t": 0.25, "port": "Planner.cmd", "value": 2.0}'], "--no-verify", "--trace", trace,
+            "--report", report, checks="warn")
+        expect(code == 0, f"exit {code}, expected 0 (warn)", out, err)
+        with open(trace, encoding="utf-8") as f:
+            lines = [json.loads(line) for line in f]
+        kinds = [line["type"] for line in lines]
+        expect(kinds.count("breach") == 1, f"{kinds.count('breach')} breach lines", out, err)
+        i = kinds.index("breach")
+        expect(lines[i - 1]["type"] == "deliver" and lines[i - 1]["t"] == 0.25,
+               f"the breach does not follow the delivery that showed it: {lines[i - 1]}")
+        expect(lines[i] == {"t": 0.25, "type": "breach", "claim": "never two go within 1s",
+                            "message": "broken at 250ms: 'go' delivered at 0s and at 250ms"},
+               f"breach line {lines[i]}")
+        with open(report, encoding="utf-8") as f:
+            html = f.read()
+        expect("never two go within 1s broken (seen at" in html, "no mark in the report", out, err)
+        expect("runtime check: never two go within 1s broken at 250ms" in html,
+               "not listed in the report", out, err)
 
 
 RATED = """app rated "a response that relies on its source's rate";
