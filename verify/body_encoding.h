@@ -1,10 +1,10 @@
 // A rule's body as a Z3 formula over one input message (docs/design.md#the-proof): whether
 // the generated monitor accepts the message, and the value it delivers.
 //
-// Exact for lists of at most the list bound, `int` arithmetic that does not overflow 64 bits
-// and finite floats read as reals (the assumptions the report prints). What cannot be
-// encoded exactly (string order and length, division or `%` by something other than a nonzero
-// constant, a list-valued `var`) makes the rule *opaque* for data: `opaque` says why, and no
+// Exact for lists of at most the list bound (the assumption the report prints), in the
+// machine's arithmetic (verify/lua_number.h: IEEE doubles, 64-bit ints that wrap). What cannot
+// be encoded exactly (string order and length, `%` on floats of the message, a list-valued
+// `var`) makes the rule *opaque* for data: `opaque` says why, and no
 // data question is asked about the rule. Monitor state is abstracted soundly: a `var` holds an
 // unknown value of its type on each message (any value earlier messages could have left),
 // `now()` is an unknown time; `set`, `unset`, `throttle` and `every` do not change what is

@@ -5,6 +5,7 @@
 
 #include "core/json_text.h"
 #include "verify/body_encoding.h"
+#include "verify/nice_model.h"
 
 namespace arbc::verify {
 
@@ -146,25 +147,35 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
     }
     for (auto& lines : core->accept_lines) std::sort(lines.begin(), lines.end());
   }
-  if (a == Answer::Sat && witness) {
-    z3::model model = solver_.get_model();
-    for (const DataSide& s : sides) {
-      const std::string& src = s.connection->source;
-      if (std::find(witness->message_sources.begin(), witness->message_sources.end(), src) !=
-          witness->message_sources.end())
-        continue;
-      witness->messages.push_back(concrete(model, message(src)));
-      witness->message_sources.push_back(src);
-    }
-    for (const DataSide& s : sides) {
-      const Encoded& e = encoded(*s.connection);
-      witness->emitted.push_back(e.body.emitted ? concrete(model, *e.body.emitted) : Value());
-      std::vector<std::string> state;
-      for (const auto& st : e.body.state) state.push_back(state_text(model, st));
-      witness->assumed_state.push_back(std::move(state));
-    }
-  }
+  if (a == Answer::Sat && witness) fill_witness(sides, assumptions, *witness);
   return a;
+}
+
+// The messages (and assumed monitor state) of a satisfiable question, each value as simple as
+// the question allows (verify/nice_model.h).
+void DataQuery::fill_witness(const std::vector<DataSide>& sides, const z3::expr_vector& assumptions,
+                             DataWitness& witness) {
+  std::vector<const SymValue*> values;
+  for (const DataSide& s : sides) {
+    const std::string& src = s.connection->source;
+    if (std::find(witness.message_sources.begin(), witness.message_sources.end(), src) !=
+        witness.message_sources.end())
+      continue;
+    witness.message_sources.push_back(src);
+    values.push_back(&message(src));
+  }
+  for (const DataSide& s : sides)
+    for (const auto& st : encoded(*s.connection).body.state) values.push_back(&st.second);
+  z3::model model = nicer_model(solver_, assumptions, values, solver_.get_model(), timeout_);
+  for (const std::string& src : witness.message_sources)
+    witness.messages.push_back(concrete(model, message(src)));
+  for (const DataSide& s : sides) {
+    const Encoded& e = encoded(*s.connection);
+    witness.emitted.push_back(e.body.emitted ? concrete(model, *e.body.emitted) : Value());
+    std::vector<std::string> state;
+    for (const auto& st : e.body.state) state.push_back(state_text(model, st));
+    witness.assumed_state.push_back(std::move(state));
+  }
 }
 
 std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Value& value,
@@ -193,8 +204,9 @@ std::string spec_value_text(const Value& v) {
     case Value::Kind::Int:
       return std::to_string(v.as_int());
     case Value::Kind::Float:
-      append_json_double(out, v.as_float());
-      if (out.size() > 2 && out.compare(out.size() - 2, 2, ".0") == 0) out.resize(out.size() - 2);
+      out = float_spec_text(v.as_float());
+      if (out.size() > 2 && out.compare(out.size() - 2, 2, ".0") == 0 && out != "-0.0")
+        out.resize(out.size() - 2);
       return out;
     case Value::Kind::String:
       append_json_string(out, v.as_string());

@@ -80,6 +80,8 @@ class DataQuery {
   const SymValue& message(const std::string& source);
   z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
   Answer check(const z3::expr_vector& assumptions);
+  void fill_witness(const std::vector<DataSide>& sides, const z3::expr_vector& assumptions,
+                    DataWitness& witness);
 
   const model::App& app_;
   z3::context& ctx_;
