@@ -1,5 +1,6 @@
 #include "verify/body_encoding.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -31,8 +32,13 @@ Ev to_float(const Ev& a) {
 
 class Encoder {
  public:
-  Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out)
-      : ctx_(ctx), msg_(msg), prefix_(std::move(prefix)), out_(out) {}
+  Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out,
+          bool abstract_lengths)
+      : ctx_(ctx),
+        msg_(msg),
+        prefix_(std::move(prefix)),
+        out_(out),
+        abstract_lengths_(abstract_lengths) {}
 
   void run(const model::Body& body) {
     z3::expr alive = ctx_.bool_val(true);
@@ -78,6 +84,7 @@ class Encoder {
   const SymValue& msg_;
   std::string prefix_;
   EncodedBody& out_;
+  bool abstract_lengths_;
   std::map<std::string, SymValue> locals_;
   std::map<std::string, SymValue> params_;
   int counter_ = 0;
@@ -358,14 +365,21 @@ Ev Encoder::call(const BodyExpr& e) {
 // norm(v) and dist(a, b) in the prelude's order: math.sqrt(x * x + y * y + z * z), the sum from
 // the left, each operation rounded; dist first takes the differences a.x - b.x, ...
 Ev Encoder::length(bool dist, const std::vector<Ev>& args, const z3::expr& ok) {
-  std::optional<SymValue> sum;
+  std::vector<SymValue> d;
   for (size_t k = 0; k < 3; ++k) {
-    SymValue d = args[0].v.items[k];
-    if (dist) d = lua::arith('-', d, args[1].v.items[k]);
-    SymValue square = lua::arith('*', d, d);
-    sum = sum ? lua::arith('+', *sum, square) : square;
+    d.push_back(args[0].v.items[k]);
+    if (dist) d.back() = lua::arith('-', d.back(), args[1].v.items[k]);
   }
-  return {lua::sqrt(*sum), ok};
+  SymValue exact = lua::norm(d[0], d[1], d[2]);
+  bool floats =
+      std::all_of(d.begin(), d.end(), [](const SymValue& c) { return c.kind == K::Float; });
+  if (!abstract_lengths_ || !floats) return {exact, ok};
+  z3::sort f = lua::float_sort(ctx_);
+  z3::func_decl norm = ctx_.function("arbc_norm", f, f, f, f);
+  z3::expr r = norm(d[0].scalar, d[1].scalar, d[2].scalar);
+  out_.side.push_back(lua::norm_facts(r, d[0].scalar, d[1].scalar, d[2].scalar));
+  out_.lengths.push_back({r, exact.scalar, {d[0].scalar, d[1].scalar, d[2].scalar}});
+  return {{K::Float, r}, ok};
 }
 
 // min_by / max_by: arbc_best_by, the first element whose key is better than every earlier
@@ -527,10 +541,10 @@ void Encoder::exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue
 }  // namespace
 
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
-                        const std::string& prefix) {
+                        const std::string& prefix, bool abstract_lengths) {
   EncodedBody out(ctx);
   try {
-    Encoder(ctx, msg, prefix, out).run(body);
+    Encoder(ctx, msg, prefix, out, abstract_lengths).run(body);
   } catch (const z3::exception& e) {
     out.opaque = std::string("the solver rejected the encoding: ") + e.msg();
   }

@@ -137,6 +137,34 @@ SymValue sqrt(const SymValue& a) {
   return {K::Float, wrap(ctx, Z3_mk_fpa_sqrt(ctx, rne(ctx), to_float(a)))};
 }
 
+SymValue norm(const SymValue& x, const SymValue& y, const SymValue& z) {
+  SymValue sum = arith('+', arith('+', arith('*', x, x), arith('*', y, y)), arith('*', z, z));
+  return sqrt(sum);
+}
+
+z3::expr norm_facts(const z3::expr& r, const z3::expr& x, const z3::expr& y, const z3::expr& z) {
+  return is_nan(r) == (is_nan(x) || is_nan(y) || is_nan(z)) && (is_nan(r) || !is_negative(r));
+}
+
+z3::expr float_abs(const z3::expr& a) { return wrap(a.ctx(), Z3_mk_fpa_abs(a.ctx(), a)); }
+
+z3::expr norm_monotone(const z3::expr& r, const std::vector<z3::expr>& c,
+                       const std::vector<z3::expr>& p_abs, const z3::expr& n) {
+  z3::context& ctx = r.ctx();
+  z3::expr any_nan = ctx.bool_val(false), below = ctx.bool_val(true), above = ctx.bool_val(true);
+  for (size_t k = 0; k < c.size(); ++k) {
+    any_nan = any_nan || is_nan(c[k]);
+    below = below && float_leq(float_abs(c[k]), p_abs[k]);
+    above = above && float_leq(p_abs[k], float_abs(c[k]));
+  }
+  return z3::implies(!any_nan && below, float_leq(r, n)) &&
+         z3::implies(!any_nan && above, float_leq(n, r));
+}
+
+bool same_numeral(const z3::expr& a, const z3::expr& b) {
+  return wrap(a.ctx(), Z3_mk_eq(a.ctx(), a, b)).simplify().is_true();
+}
+
 // An int i against a double f, exactly: with lo and hi the doubles nearest i from below and
 // above (both i when i is a double), i < f iff lo < f, since no double lies strictly between
 // lo and i; i <= f iff hi <= f; f < i iff f < hi; f <= i iff f <= lo; i == f iff lo == f == hi.

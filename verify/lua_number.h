@@ -16,6 +16,7 @@
 #include <z3++.h>
 
 #include <cstdint>
+#include <vector>
 
 #include "verify/sym_value.h"
 
@@ -45,6 +46,23 @@ SymValue abs(const SymValue& a);
 SymValue fmod(const SymValue& a, const SymValue& b, z3::expr* raises);
 // math.sqrt(a): a float.
 SymValue sqrt(const SymValue& a);
+// The prelude's norm of (x, y, z): math.sqrt(x * x + y * y + z * z), the sum from the left,
+// each operation rounded.
+SymValue norm(const SymValue& x, const SymValue& y, const SymValue& z);
+// What every norm of three floats is, whatever they are: NaN exactly when a component is NaN
+// (no sum of squares is inf - inf), else not negative (never -0.0). For `r` standing for the
+// norm without its circuit (verify/body_encoding.h, EncodedBody::lengths).
+z3::expr norm_facts(const z3::expr& r, const z3::expr& x, const z3::expr& y, const z3::expr& z);
+// What monotonicity gives from one point: with `p_abs` the absolute values of a point's
+// components and `n` its norm (numerals), the norm `r` of components `c` that are not NaN is at
+// most n when each |c_k| <= p_abs[k], at least n when each |c_k| >= p_abs[k]. (Each step is
+// monotone in |c_k|: squaring, a sum of squares, the square root, and rounding to nearest.)
+z3::expr norm_monotone(const z3::expr& r, const std::vector<z3::expr>& c,
+                       const std::vector<z3::expr>& p_abs, const z3::expr& n);
+// |a| of a float.
+z3::expr float_abs(const z3::expr& a);
+// Whether the numerals a and b are the same value (NaN is one value; 0.0 and -0.0 are two).
+bool same_numeral(const z3::expr& a, const z3::expr& b);
 
 // a < b, a <= b and a == b on the mathematical values (false when either is NaN).
 z3::expr less(const SymValue& a, const SymValue& b);

@@ -1,7 +1,6 @@
 #include "verify/nice_model.h"
 
 #include "verify/lua_number.h"
-#include "verify/solver_watchdog.h"
 
 namespace arbc::verify {
 
@@ -51,8 +50,12 @@ std::vector<z3::expr> candidates(const SymValue& leaf, const z3::model& m) {
 class Simplifier {
  public:
   Simplifier(z3::solver& solver, const z3::expr_vector& assumptions, z3::model model,
-             SolverTimeout& timeout)
-      : solver_(solver), assumptions_(assumptions), model_(std::move(model)), timeout_(timeout) {}
+             SolverTimeout& timeout, const SettleModel& settle)
+      : solver_(solver),
+        assumptions_(assumptions),
+        model_(std::move(model)),
+        timeout_(timeout),
+        settle_(settle) {}
 
   // A list's length first (then pinned), then only the elements the message has.
   void value(const SymValue& v) {
@@ -79,20 +82,25 @@ class Simplifier {
     }
   }
 
-  // Whether the question stays satisfiable with c (then the model is the new one).
+  // Whether the question stays satisfiable with c, in a model the caller accepts (then the
+  // model is the new one).
   bool holds_with(const z3::expr& c) {
-    if (!timeout_.arm(solver_)) return false;
-    solver_.push();
-    solver_.add(c);
     bool sat = false;
     try {
-      QueryInFlight in_flight;  // the watchdog interrupts only queries (solver_watchdog.h)
-      sat = solver_.check(assumptions_) == z3::sat;
+      solver_.push();
+      solver_.add(c);
+      std::string unknown;  // a candidate the solver cannot settle is not taken
+      sat = check(solver_, timeout_, &unknown, &assumptions_) == z3::sat;
+      if (sat) {
+        std::optional<z3::model> m = solver_.get_model();
+        if (settle_) m = settle_(*m);
+        sat = m.has_value();
+        if (sat) model_ = *m;
+      }
+      solver_.pop();
     } catch (const z3::exception&) {
-      sat = false;  // a candidate the solver cannot settle is not taken
+      return false;  // push or pop interrupted past the deadline: keep the model it has
     }
-    if (sat) model_ = solver_.get_model();
-    solver_.pop();
     return sat;
   }
 
@@ -100,15 +108,16 @@ class Simplifier {
   const z3::expr_vector& assumptions_;
   z3::model model_;
   SolverTimeout& timeout_;
+  const SettleModel& settle_;
 };
 
 }  // namespace
 
 z3::model nicer_model(z3::solver& solver, const z3::expr_vector& assumptions,
                       const std::vector<const SymValue*>& values, z3::model model,
-                      SolverTimeout& timeout) {
+                      SolverTimeout& timeout, const SettleModel& settle) {
   solver.push();
-  Simplifier s(solver, assumptions, std::move(model), timeout);
+  Simplifier s(solver, assumptions, std::move(model), timeout, settle);
   for (const SymValue* v : values) s.value(*v);
   z3::model out = s.model();
   solver.pop();

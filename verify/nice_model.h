@@ -11,6 +11,8 @@
 
 #include <z3++.h>
 
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "verify/solver_timeout.h"
@@ -21,8 +23,11 @@ namespace arbc::verify {
 // A model of `solver` under `assumptions` (the solver's last answer was sat, `model` its model)
 // in which the leaves of `values` are as simple as the question allows. The solver is left as
 // it was (every constraint added here is popped).
+// A caller whose encoding abstracts something gives `settle`: the model it turns the solver's
+// into (one that agrees with what is abstracted), or none; a candidate is taken only then.
+using SettleModel = std::function<std::optional<z3::model>(const z3::model&)>;
 z3::model nicer_model(z3::solver& solver, const z3::expr_vector& assumptions,
                       const std::vector<const SymValue*>& values, z3::model model,
-                      SolverTimeout& timeout);
+                      SolverTimeout& timeout, const SettleModel& settle = nullptr);
 
 }  // namespace arbc::verify
