@@ -261,8 +261,8 @@ Ev Encoder::arith(const std::string& op, const Ev& a, const Ev& b) {
   z3::expr ok = a.ok && b.ok;
   if (op == "/") return {lua::divide(a.v, b.v), ok};
   if (op == "%") {
-    // The generated Lua calls math.fmod, which raises on an int divided by int 0: the
-    // monitor drops the message (monitor-error), so the value does not exist there.
+    // The generated Lua's arbc_fmod has no value for an int divided by int 0 (math.fmod
+    // would raise): the monitor drops the message (no-value), so the value does not exist.
     z3::expr raises = ctx_.bool_val(false);
     SymValue m = lua::fmod(a.v, b.v, &raises);
     if (m.kind == K::Float) {
