@@ -30,6 +30,24 @@ void append_json_seconds(std::string& out, Nanos t) {
   if (text.find('.') == std::string::npos) out += ".0";
 }
 
+void append_json_float(std::string& out, double d) {
+  if (std::isnan(d)) {
+    out += "\"nan\"";
+  } else if (std::isinf(d)) {
+    out += d > 0 ? "\"inf\"" : "\"-inf\"";
+  } else {
+    append_json_double(out, d);
+  }
+}
+
+std::string float_spec_text(double d) {
+  if (std::isnan(d)) return "nan";
+  if (std::isinf(d)) return d > 0 ? "inf" : "-inf";
+  std::string out;
+  append_json_double(out, d);
+  return out;
+}
+
 void append_json_string(std::string& out, std::string_view s) {
   append_quoted(out, s, QuoteStyle::Json);
 }

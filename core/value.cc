@@ -32,7 +32,7 @@ void append_json(std::string& out, const Value& v) {
       out += std::to_string(v.as_int());
       break;
     case Value::Kind::Float:
-      append_json_double(out, v.as_float());
+      append_json_float(out, v.as_float());
       break;
     case Value::Kind::String:
       append_json_string(out, v.as_string());
@@ -40,11 +40,11 @@ void append_json(std::string& out, const Value& v) {
     case Value::Kind::Vec3: {
       const Eigen::Vector3d& p = v.as_vec3();
       out += "{\"x\":";
-      append_json_double(out, p.x());
+      append_json_float(out, p.x());
       out += ",\"y\":";
-      append_json_double(out, p.y());
+      append_json_float(out, p.y());
       out += ",\"z\":";
-      append_json_double(out, p.z());
+      append_json_float(out, p.z());
       out += '}';
       break;
     }

@@ -46,11 +46,12 @@ std::optional<Value> convert_vec3(const nlohmann::json& j, const std::string& pa
       fail(path, "vec3 ({\"x\":..,\"y\":..,\"z\":..} or [x, y, z])", j, err);
       return std::nullopt;
     }
-    if (!c->is_number()) {
+    std::optional<double> d = json_float(*c);
+    if (!d) {
       fail(child(path, names[i]), "float", *c, err);
       return std::nullopt;
     }
-    xyz[i] = c->get<double>();
+    xyz[i] = *d;
   }
   return Value::vec3(xyz[0], xyz[1], xyz[2]);
 }
@@ -116,9 +117,11 @@ std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::
       return Value(j.get<bool>());
     case Type::Kind::Int:
       return convert_int(j, path, err);
-    case Type::Kind::Float:
-      if (!j.is_number()) return fail(path, "float", j, err), std::nullopt;
-      return Value(j.get<double>());
+    case Type::Kind::Float: {
+      std::optional<double> d = json_float(j);
+      if (!d) return fail(path, "float", j, err), std::nullopt;
+      return Value(*d);
+    }
     case Type::Kind::String:
       if (!j.is_string()) return fail(path, "string", j, err), std::nullopt;
       return Value(j.get<std::string>());
@@ -142,6 +145,16 @@ std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::
 }
 
 }  // namespace
+
+std::optional<double> json_float(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  if (!j.is_string()) return std::nullopt;
+  const std::string& s = j.get_ref<const std::string&>();
+  if (s == "nan") return std::numeric_limits<double>::quiet_NaN();
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
 
 std::optional<Value> value_from_json(const nlohmann::json& j, const Type& t, std::string* err) {
   return convert(j, t, "", err);

@@ -174,7 +174,13 @@ std::string describe(const TraceRecord& r) {
 
 bool near_equal(const Value& a, const Value& b) {
   if (a.is_number() && b.is_number()) {
+    // Two ints exactly (a double holds only 53 bits of them); a NaN matches only a NaN and an
+    // infinity only the same infinity (within 1e-9 of inf is every number, and NaN != NaN).
+    if (a.kind() == Value::Kind::Int && b.kind() == Value::Kind::Int)
+      return a.as_int() == b.as_int();
     double x = a.as_float(), y = b.as_float();
+    if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y);
+    if (std::isinf(x) || std::isinf(y)) return x == y;
     return std::abs(x - y) <= 1e-9 * std::max({1.0, std::abs(x), std::abs(y)});
   }
   if (a.kind() != b.kind()) return false;

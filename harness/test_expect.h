@@ -37,6 +37,7 @@ std::pair<Nanos, Nanos> failure_window(const model::Expectation& e, const TestRu
 std::string trace_around(const TestRun& run, Nanos from, Nanos to);
 
 // Values equal up to floating-point rounding (1e-9, relative): what `receives VALUE` compares.
+// Two ints compare exactly, a NaN equals only a NaN and an infinity only the same infinity.
 bool near_equal(const Value& a, const Value& b);
 
 }  // namespace arbc::harness

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace arbc::harness {
 namespace {
 
@@ -103,6 +105,32 @@ TEST(TestExpectTest, NearEqualIsRelativeToTheValues) {
   EXPECT_TRUE(near_equal(Value(1e9), Value(1e9 + 0.5)));
   EXPECT_FALSE(near_equal(Value(1.0), Value(1.001)));
   EXPECT_FALSE(near_equal(Value("a"), Value("b")));
+}
+
+// issue 39: within 1e-9 of an infinity was every number, and NaN never matched even a NaN, so
+// a witness with NaN in its expected value could not pass.
+TEST(TestExpectTest, NanMatchesOnlyNanAndInfinityOnlyTheSameInfinity) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(near_equal(Value(nan), Value(nan)));
+  EXPECT_FALSE(near_equal(Value(nan), Value(0.0)));
+  EXPECT_FALSE(near_equal(Value(1.0), Value(nan)));
+  EXPECT_FALSE(near_equal(Value(nan), Value(inf)));
+  EXPECT_TRUE(near_equal(Value(inf), Value(inf)));
+  EXPECT_TRUE(near_equal(Value(-inf), Value(-inf)));
+  EXPECT_FALSE(near_equal(Value(inf), Value(-inf)));
+  EXPECT_FALSE(near_equal(Value(inf), Value(1e308)));
+  EXPECT_FALSE(near_equal(Value(5.0), Value(-inf)));
+  EXPECT_TRUE(near_equal(Value::vec3(nan, inf, 1.0), Value::vec3(nan, inf, 1.0)));
+  EXPECT_FALSE(near_equal(Value::vec3(nan, inf, 1.0), Value::vec3(nan, -inf, 1.0)));
+}
+
+// Ints compare exactly: as doubles, 2^63 - 1 and 2^63 - 2 are the same number.
+TEST(TestExpectTest, IntsCompareExactly) {
+  const int64_t max = std::numeric_limits<int64_t>::max();
+  EXPECT_TRUE(near_equal(Value(max), Value(max)));
+  EXPECT_FALSE(near_equal(Value(max), Value(max - 1)));
+  EXPECT_TRUE(near_equal(Value(int64_t{3}), Value(3.0)));
 }
 
 }  // namespace

@@ -6,11 +6,8 @@ namespace arbc::harness {
 
 namespace {
 
-std::string number(double d) {
-  std::string out;
-  append_json_double(out, d);  // shortest text that reads back as d, "1.0" for integral ones
-  return out;
-}
+// The shortest text that reads back as d, "1.0" for integral ones; nan, inf, -inf.
+std::string number(double d) { return float_spec_text(d); }
 
 const Type* element_of(const Type* t) { return t && t->element ? t->element.get() : nullptr; }
 

@@ -1,7 +1,10 @@
 #include "verify/body_encoding.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+
+#include "verify/lua_number.h"
 
 namespace arbc::verify {
 
@@ -22,21 +25,20 @@ struct Ev {
   bool unread = false;
 };
 
-// A numeral that is not zero: the only divisors `/` and `%` encode.
-bool nonzero_numeral(const z3::expr& e) {
-  z3::expr s = e.simplify();
-  if (!s.is_numeral()) return false;
-  z3::expr zero = s.is_int() ? s.ctx().int_val(0) : s.ctx().real_val(0);
-  return (s != zero).simplify().is_true();
+// An int as a float (BodyExpr::Op::ToFloat, Lua's conversion); an unread operand stays unread.
+Ev to_float(const Ev& a) {
+  return a.unread || a.v.kind != K::Int ? a : Ev{{K::Float, lua::to_float(a.v)}, a.ok};
 }
-
-// An int as a float (BodyExpr::Op::ToFloat); an unread operand stays unread.
-Ev to_float(const Ev& a) { return a.unread ? a : Ev{{K::Real, as_real(a.v)}, a.ok}; }
 
 class Encoder {
  public:
-  Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out)
-      : ctx_(ctx), msg_(msg), prefix_(std::move(prefix)), out_(out) {}
+  Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out,
+          bool abstract_lengths)
+      : ctx_(ctx),
+        msg_(msg),
+        prefix_(std::move(prefix)),
+        out_(out),
+        abstract_lengths_(abstract_lengths) {}
 
   void run(const model::Body& body) {
     z3::expr alive = ctx_.bool_val(true);
@@ -72,8 +74,7 @@ class Encoder {
   Ev min_max(const BodyExpr& e, bool min);
   Ev index(const Ev& list, const Ev& i);
   Ev vec_op(const std::string& op, const Ev& a, const Ev& b);
-  SymValue sqrt_of(const z3::expr& square);
-  Ev mod(const SymValue& a, const SymValue& b);
+  Ev length(bool dist, const std::vector<Ev>& args, const z3::expr& ok);
 
   void exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue& emitted);
   void exec_if(const BodyStmt& s, z3::expr& alive, SymValue& emitted);
@@ -83,6 +84,7 @@ class Encoder {
   const SymValue& msg_;
   std::string prefix_;
   EncodedBody& out_;
+  bool abstract_lengths_;
   std::map<std::string, SymValue> locals_;
   std::map<std::string, SymValue> params_;
   int counter_ = 0;
@@ -93,11 +95,9 @@ Ev Encoder::eval(const BodyExpr& e) {
     case BodyExpr::Op::Message:
       return {msg_, ctx_.bool_val(true)};
     case BodyExpr::Op::Int:
-      return {{K::Int, ctx_.int_val(e.integer)}, ctx_.bool_val(true)};
-    case BodyExpr::Op::Float: {
-      if (!std::isfinite(e.number)) return bad("a constant that is not a finite number");
-      return {{K::Real, exact_real(ctx_, e.number)}, ctx_.bool_val(true)};
-    }
+      return {{K::Int, lua::int_val(ctx_, e.integer)}, ctx_.bool_val(true)};
+    case BodyExpr::Op::Float:
+      return {{K::Float, lua::float_val(ctx_, e.number)}, ctx_.bool_val(true)};
     case BodyExpr::Op::String:
       return {{K::String, byte_string(ctx_, e.text)}, ctx_.bool_val(true)};
     case BodyExpr::Op::Bool:
@@ -131,7 +131,7 @@ Ev Encoder::eval(const BodyExpr& e) {
       if (a.unread) return unread();
       if (a.v.kind == K::Vec3) return vec_op("neg", a, a);
       if (!a.v.numeric()) return bad("`-` of a value that is not a number");
-      return {{a.v.kind, -a.v.scalar}, a.ok};
+      return {lua::negate(a.v), a.ok};
     }
     case BodyExpr::Op::Not: {
       Ev a = eval(e.args[0]);
@@ -174,7 +174,7 @@ Ev Encoder::record(const BodyExpr& e) {
 
 // A list literal of known length: its elements, valid when every element is.
 Ev Encoder::list(const BodyExpr& e) {
-  SymValue l(K::List, ctx_.int_val(static_cast<int>(e.args.size())));
+  SymValue l(K::List, lua::int_val(ctx_, static_cast<int64_t>(e.args.size())));
   z3::expr ok = ctx_.bool_val(true);
   for (const BodyExpr& a : e.args) {
     Ev x = eval(a);
@@ -248,50 +248,37 @@ Ev Encoder::binary(const BodyExpr& e) {
 Ev Encoder::compare(const std::string& op, const Ev& a, const Ev& b) {
   if (!a.v.numeric() || !b.v.numeric())
     return bad("`" + op + "` on strings (byte order is not encoded)");
-  bool ints = a.v.kind == K::Int && b.v.kind == K::Int;
-  z3::expr x = ints ? a.v.scalar : as_real(a.v);
-  z3::expr y = ints ? b.v.scalar : as_real(b.v);
-  z3::expr r = op == "<" ? x < y : op == "<=" ? x <= y : op == ">" ? x > y : x >= y;
+  // Lua evaluates a > b as b < a and a >= b as b <= a.
+  z3::expr r = op == "<"    ? lua::less(a.v, b.v)
+               : op == "<=" ? lua::less_equal(a.v, b.v)
+               : op == ">"  ? lua::less(b.v, a.v)
+                            : lua::less_equal(b.v, a.v);
   return {{K::Bool, r}, a.ok && b.ok};
 }
 
 Ev Encoder::arith(const std::string& op, const Ev& a, const Ev& b) {
   if (!a.v.numeric() || !b.v.numeric()) return bad("`" + op + "` on values that are not numbers");
   z3::expr ok = a.ok && b.ok;
-  if (op == "/") {
-    if (!nonzero_numeral(b.v.scalar)) return bad("`/` by a value that is not a nonzero constant");
-    return {{K::Real, as_real(a.v) / as_real(b.v)}, ok};
-  }
+  if (op == "/") return {lua::divide(a.v, b.v), ok};
   if (op == "%") {
-    if (!nonzero_numeral(b.v.scalar)) return bad("`%` by a value that is not a nonzero constant");
-    Ev m = mod(a.v, b.v);
-    return {m.v, ok};
+    // The generated Lua's arbc_fmod has no value for an int divided by int 0 (math.fmod
+    // would raise): the monitor drops the message (no-value), so the value does not exist.
+    z3::expr raises = ctx_.bool_val(false);
+    SymValue m = lua::fmod(a.v, b.v, &raises);
+    if (m.kind == K::Float) {
+      m.scalar = m.scalar.simplify();
+      if (!lua::is_float_numeral(m.scalar))
+        return bad(
+            "`%` on floats of the message (C's fmod of doubles is exact, but too large "
+            "for the solver)");
+    }
+    return {m, ok && !raises};
   }
-  bool ints = a.v.kind == K::Int && b.v.kind == K::Int;
-  z3::expr x = ints ? a.v.scalar : as_real(a.v);
-  z3::expr y = ints ? b.v.scalar : as_real(b.v);
-  z3::expr r = op == "+" ? x + y : op == "-" ? x - y : x * y;
   if (op != "+" && op != "-" && op != "*") return bad("the operator `" + op + "`");
-  return {{ints ? K::Int : K::Real, r}, ok};
+  return {lua::arith(op[0], a.v, b.v), ok};
 }
 
-// math.fmod(a, b) with b a nonzero constant: a - b * trunc(a / b), the sign of a.
-Ev Encoder::mod(const SymValue& a, const SymValue& b) {
-  if (a.kind == K::Int && b.kind == K::Int) {
-    z3::expr babs = z3::ite(b.scalar < 0, -b.scalar, b.scalar);
-    z3::expr qabs = z3::ite(a.scalar >= 0, a.scalar / babs, -((-a.scalar) / babs));
-    z3::expr q = z3::ite(b.scalar < 0, -qabs, qabs);
-    return {{K::Int, a.scalar - b.scalar * q}, ctx_.bool_val(true)};
-  }
-  z3::expr x = as_real(a), y = as_real(b);
-  z3::expr ratio = x / y;
-  // floor(r) as an Int (Z3's to_int; the C++ API of Z3 4.8 has no wrapper).
-  auto floor_of = [&](const z3::expr& r) { return z3::expr(ctx_, Z3_mk_real2int(ctx_, r)); };
-  z3::expr trunc =
-      z3::ite(ratio >= 0, z3::to_real(floor_of(ratio)), -z3::to_real(floor_of(-ratio)));
-  return {{K::Real, x - y * trunc}, ctx_.bool_val(true)};
-}
-
+// The arbc_v* helpers of the Lua prelude, component by component.
 Ev Encoder::vec_op(const std::string& op, const Ev& a, const Ev& b) {
   // The other side of a scaling must be a number: an operand the encoding could not read
   // (bad(): a Bool placeholder) would reach Z3 as Real * Bool, which crashes it.
@@ -302,29 +289,20 @@ Ev Encoder::vec_op(const std::string& op, const Ev& a, const Ev& b) {
   z3::expr ok = a.ok && b.ok;
   for (size_t k = 0; k < 3; ++k) {
     if (op == "neg") {
-      v.items.push_back({K::Real, -a.v.items[k].scalar});
+      v.items.push_back(lua::negate(a.v.items[k]));
     } else if ((op == "+" || op == "-") && a.v.kind == K::Vec3 && b.v.kind == K::Vec3) {
-      const z3::expr &x = a.v.items[k].scalar, &y = b.v.items[k].scalar;
-      v.items.push_back({K::Real, op == "+" ? x + y : x - y});
+      v.items.push_back(lua::arith(op[0], a.v.items[k], b.v.items[k]));
     } else if (op == "*" && (a.v.kind == K::Vec3) != (b.v.kind == K::Vec3)) {
       const SymValue& vec = a.v.kind == K::Vec3 ? a.v : b.v;
       const SymValue& num = a.v.kind == K::Vec3 ? b.v : a.v;
-      v.items.push_back({K::Real, vec.items[k].scalar * as_real(num)});
+      v.items.push_back(lua::arith('*', vec.items[k], num));  // arbc_vscale: a.x * b
     } else if (op == "/" && a.v.kind == K::Vec3 && b.v.numeric()) {
-      if (!nonzero_numeral(b.v.scalar)) return bad("`/` by a value that is not a nonzero constant");
-      v.items.push_back({K::Real, a.v.items[k].scalar / as_real(b.v)});
+      v.items.push_back(lua::divide(a.v.items[k], b.v));
     } else {
       return bad("`" + op + "` on vec3");
     }
   }
   return {v, ok};
-}
-
-// A fresh r with r >= 0 and r * r = square: the real square root (nonlinear).
-SymValue Encoder::sqrt_of(const z3::expr& square) {
-  z3::expr r = ctx_.real_const(fresh_name("sqrt").c_str());
-  out_.side.push_back(r >= 0 && r * r == square);
-  return {K::Real, r};
 }
 
 // Dispatch on the builtin's id (core/builtins.h): a builtin added to the table without a case
@@ -336,7 +314,10 @@ Ev Encoder::call(const BodyExpr& e) {
     case Builtin::MaxBy:
       return best_by(e, e.builtin == Builtin::MinBy);
     case Builtin::Now: {
-      SymValue t(K::Real, ctx_.real_const(fresh_name("now").c_str()));
+      // PortMonitor.now(): the runtime's clock in seconds, a finite time that is not negative.
+      SymValue t(K::Float, lua::float_const(ctx_, fresh_name("now")));
+      out_.side.push_back(lua::less_equal({K::Float, lua::float_val(ctx_, 0.0)}, t) &&
+                          lua::less(t, {K::Float, lua::float_val(ctx_, HUGE_VAL)}));
       out_.abstracted.push_back("now()");
       out_.state.emplace_back("now()", t);
       return {t, ctx_.bool_val(true)};
@@ -365,31 +346,45 @@ Ev Encoder::call(const BodyExpr& e) {
       return bad("len of a string (byte length is not encoded)");
     return {{K::Int, args[0].v.scalar}, ok};
   }
-  if (e.builtin == Builtin::Abs && args.size() == 1 && args[0].v.numeric()) {
-    const z3::expr& x = args[0].v.scalar;
-    return {{args[0].v.kind, z3::ite(x < 0, -x, x)}, ok};
-  }
+  if (e.builtin == Builtin::Abs && args.size() == 1 && args[0].v.numeric())
+    return {lua::abs(args[0].v), ok};
   if (e.builtin == Builtin::Vec3 && args.size() == 3) {
     SymValue v(K::Vec3, ctx_.bool_val(true));
-    for (const Ev& a : args) v.items.push_back({K::Real, as_real(a.v)});
+    for (const Ev& a : args) v.items.push_back(a.v);
     return {v, ok};
   }
   bool dist = e.builtin == Builtin::Dist;
   if ((e.builtin == Builtin::Norm && args.size() == 1) || (dist && args.size() == 2)) {
     for (const Ev& a : args)
       if (a.v.kind != K::Vec3) return bad(f + " of a value that is not a vec3");
-    z3::expr square = ctx_.real_val(0);
-    for (size_t k = 0; k < 3; ++k) {
-      z3::expr d = args[0].v.items[k].scalar;
-      if (dist) d = d - args[1].v.items[k].scalar;
-      square = square + d * d;
-    }
-    return {sqrt_of(square), ok};
+    return length(dist, args, ok);
   }
   return bad("the call " + f + "()");
 }
 
-// min_by / max_by: the first element with the smallest / largest key; none of an empty list.
+// norm(v) and dist(a, b) in the prelude's order: math.sqrt(x * x + y * y + z * z), the sum from
+// the left, each operation rounded; dist first takes the differences a.x - b.x, ...
+Ev Encoder::length(bool dist, const std::vector<Ev>& args, const z3::expr& ok) {
+  std::vector<SymValue> d;
+  for (size_t k = 0; k < 3; ++k) {
+    d.push_back(args[0].v.items[k]);
+    if (dist) d.back() = lua::arith('-', d.back(), args[1].v.items[k]);
+  }
+  SymValue exact = lua::norm(d[0], d[1], d[2]);
+  bool floats =
+      std::all_of(d.begin(), d.end(), [](const SymValue& c) { return c.kind == K::Float; });
+  if (!abstract_lengths_ || !floats) return {exact, ok};
+  z3::sort f = lua::float_sort(ctx_);
+  z3::func_decl norm = ctx_.function("arbc_norm", f, f, f, f);
+  z3::expr r = norm(d[0].scalar, d[1].scalar, d[2].scalar);
+  out_.side.push_back(lua::norm_facts(r, d[0].scalar, d[1].scalar, d[2].scalar));
+  out_.lengths.push_back({r, exact.scalar, {d[0].scalar, d[1].scalar, d[2].scalar}});
+  return {{K::Float, r}, ok};
+}
+
+// min_by / max_by: arbc_best_by, the first element whose key is better than every earlier
+// best key (`k < best` or `k > best` as Lua compares: a NaN key never wins, and a NaN first
+// key is never beaten); none of an empty list.
 Ev Encoder::best_by(const BodyExpr& e, bool min) {
   if (e.args.size() != 2 || e.args[1].op != BodyExpr::Op::Lambda)
     return bad(e.text + " without a lambda");
@@ -398,8 +393,7 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
   if (list.v.kind != K::List || list.v.items.empty()) return bad(e.text + " of an empty literal");
   const BodyExpr& lambda = e.args[1];
   z3::expr ok = list.ok && list.v.scalar > 0;
-  std::optional<SymValue> best;
-  std::optional<z3::expr> best_key;
+  std::optional<SymValue> best, best_key;
   for (size_t k = 0; k < list.v.items.size(); ++k) {
     std::optional<SymValue> saved;
     if (auto it = params_.find(lambda.text); it != params_.end()) saved = it->second;
@@ -413,21 +407,22 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
     if (!key.v.numeric()) return bad(e.text + " with a key that is not a number");
     z3::expr in = list.v.scalar > static_cast<int>(k);
     ok = ok && z3::implies(in, key.ok);
-    z3::expr kv = as_real(key.v);
     if (!best) {
       best = list.v.items[k];
-      best_key = kv;
+      best_key = key.v;
       continue;
     }
-    z3::expr better = in && (min ? kv < *best_key : kv > *best_key);
+    z3::expr better = in && (min ? lua::less(key.v, *best_key) : lua::less(*best_key, key.v));
     best = merge(better, list.v.items[k], *best);
     if (!best) return bad("a list whose elements differ in shape");
-    best_key = z3::ite(better, kv, *best_key);
+    best_key = merge(better, key.v, *best_key);
   }
   return {*best, ok};
 }
 
-// min / max of numbers, or of one list (none of an empty list).
+// min / max of numbers, or of one list (none of an empty list): math.min keeps the first
+// argument and takes a later one only if it is less than the kept one (math.max: greater), so
+// with NaNs the result depends on their order, as in Lua.
 Ev Encoder::min_max(const BodyExpr& e, bool min) {
   std::vector<SymValue> xs;
   z3::expr ok = ctx_.bool_val(true);
@@ -444,20 +439,16 @@ Ev Encoder::min_max(const BodyExpr& e, bool min) {
     }
   }
   if (xs.empty()) return bad(e.text + " of an empty literal");
-  bool ints = true;
-  for (const SymValue& x : xs) {
+  for (const SymValue& x : xs)
     if (!x.numeric()) return bad(e.text + " of values that are not numbers");
-    ints = ints && x.kind == K::Int;
-  }
   if (len) ok = ok && *len > 0;
-  z3::expr best = ints ? xs[0].scalar : as_real(xs[0]);
+  SymValue best = xs[0];
   for (size_t k = 1; k < xs.size(); ++k) {
-    z3::expr x = ints ? xs[k].scalar : as_real(xs[k]);
-    z3::expr better = min ? x < best : x > best;
+    z3::expr better = min ? lua::less(xs[k], best) : lua::less(best, xs[k]);
     if (len) better = better && *len > static_cast<int>(k);
-    best = z3::ite(better, x, best);
+    best = *merge(better, xs[k], best);  // numbers always merge
   }
-  return {{ints ? K::Int : K::Real, best}, ok};
+  return {best, ok};
 }
 
 void Encoder::exec_var(const BodyStmt& s, z3::expr& alive) {
@@ -550,10 +541,10 @@ void Encoder::exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue
 }  // namespace
 
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
-                        const std::string& prefix) {
+                        const std::string& prefix, bool abstract_lengths) {
   EncodedBody out(ctx);
   try {
-    Encoder(ctx, msg, prefix, out).run(body);
+    Encoder(ctx, msg, prefix, out, abstract_lengths).run(body);
   } catch (const z3::exception& e) {
     out.opaque = std::string("the solver rejected the encoding: ") + e.msg();
   }

@@ -1,10 +1,10 @@
 // A rule's body as a Z3 formula over one input message (docs/design.md#the-proof): whether
 // the generated monitor accepts the message, and the value it delivers.
 //
-// Exact for lists of at most the list bound, `int` arithmetic that does not overflow 64 bits
-// and finite floats read as reals (the assumptions the report prints). What cannot be
-// encoded exactly (string order and length, division or `%` by something other than a nonzero
-// constant, a list-valued `var`) makes the rule *opaque* for data: `opaque` says why, and no
+// Exact for lists of at most the list bound (the assumption the report prints), in the
+// machine's arithmetic (verify/lua_number.h: IEEE doubles, 64-bit ints that wrap). What cannot
+// be encoded exactly (string order and length, `%` on floats of the message, a list-valued
+// `var`) makes the rule *opaque* for data: `opaque` says why, and no
 // data question is asked about the rule. Monitor state is abstracted soundly: a `var` holds an
 // unknown value of its type on each message (any value earlier messages could have left),
 // `now()` is an unknown time; `set`, `unset`, `throttle` and `every` do not change what is
@@ -28,6 +28,18 @@ struct AcceptTracker {
   int line = 0;
 };
 
+// A norm (or dist) left abstract (encode_body's abstract_lengths): `result` is the
+// uninterpreted arbc_norm of the three components, with only lua::norm_facts about it; `exact`
+// is what the monitor computes, lua::norm's circuit, which is large (a multiplication, an
+// addition and a square root of doubles, each rounded, bit by bit). A caller adds
+// `result == exact` only where a model needs it (DataQuery::check): a question the facts
+// already answer is then answered without the circuit.
+struct AbstractLength {
+  z3::expr result;
+  z3::expr exact;
+  std::vector<z3::expr> components;  // the three floats whose norm it is
+};
+
 struct EncodedBody {
   std::string opaque;               // non-empty: why the body is opaque for data; the rest is unset
   z3::expr accepts;                 // the monitor accepts: no `accept` fails and every value exists
@@ -38,13 +50,16 @@ struct EncodedBody {
   std::vector<AcceptTracker> trackers;
   std::vector<std::string> abstracted;                  // state read: "var x", "now()"
   std::vector<std::pair<std::string, SymValue>> state;  // the abstracted values, by name
+  std::vector<AbstractLength> lengths;                  // with abstract_lengths only
 
   explicit EncodedBody(z3::context& ctx) : accepts(ctx.bool_val(false)) {}
 };
 
 // Encodes `body` on the message `msg`; fresh constants are named after `prefix` (unique per
-// rule and message).
+// rule and message). With `abstract_lengths`, the norm of floats is left abstract (`lengths`):
+// the encoding then over-approximates the body (an unsat answer holds for the machine, a
+// model holds only once every length in it agrees with its `exact`).
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
-                        const std::string& prefix);
+                        const std::string& prefix, bool abstract_lengths = false);
 
 }  // namespace arbc::verify

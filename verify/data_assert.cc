@@ -29,7 +29,11 @@ bool replay_violation(const model::Connection& c, const model::Assertion& a, con
   std::string err;
   runner->run(c, w.messages[0], &run, &err);
   std::optional<bool> holds = data.holds(*a.emitted, run.delivered, type);
-  if (holds && !*holds) {
+  if (!holds) {  // undecided (the deadline passed): neither confirms nor contradicts Z3
+    why->clear();
+    return false;
+  }
+  if (!*holds) {
     ex.replay.push_back("the property is false on what it delivers");
     return true;
   }
@@ -99,7 +103,13 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   } else if (runner) {
     std::string why;
     const model::Port* port = data.app().find_port(scope.port->port);
-    if (!port || !replay_violation(c, a, *port->type, w, data, runner, ex, &why)) {
+    bool replayed = port && replay_violation(c, a, *port->type, w, data, runner, ex, &why);
+    if (!replayed && port && why.empty()) {  // the replayed value's verdict was not decided
+      out.unknown = "the assert on '" + a.rule + "'";
+      out.unknown_reason = "timeout";
+      return out;
+    }
+    if (!replayed) {
       out.finding =
           internal_data_error(scope.port->port, a.loc, port ? why : "the port's type is unknown");
       return out;

@@ -5,6 +5,8 @@
 
 #include "core/json_text.h"
 #include "verify/body_encoding.h"
+#include "verify/lua_number.h"
+#include "verify/nice_model.h"
 
 namespace arbc::verify {
 
@@ -65,11 +67,13 @@ const SymValue& DataQuery::message(const std::string& source) {
 const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   auto it = rules_.find(&c);
   if (it != rules_.end()) return *it->second;
-  EncodedBody b = encode_body(ctx_, *c.body, message(c.source), c.destination + "/" + c.name);
+  EncodedBody b = encode_body(ctx_, *c.body, message(c.source), c.destination + "/" + c.name,
+                              /*abstract_lengths=*/true);
   z3::expr lit = ctx_.bool_const(("accepts!" + c.destination + "/" + c.name).c_str());
   if (b.opaque.empty()) {
     solver_.add(z3::implies(lit, b.accepts));
     for (const z3::expr& x : b.side) solver_.add(x);
+    lengths_.insert(lengths_.end(), b.lengths.begin(), b.lengths.end());
   }
   auto e = std::make_shared<Encoded>(std::move(b), lit);
   return *rules_.emplace(&c, e).first->second;
@@ -88,13 +92,15 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
   // Each predicate's own prefix: two predicates on one rule must not share fresh constants.
   EncodedBody pe =
       encode_body(ctx_, predicate_body(p), *e.body.emitted,
-                  c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()));
+                  c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()),
+                  /*abstract_lengths=*/true);
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
   if (pe.opaque.empty()) {
     solver_.add(z3::implies(lit, negate ? !pe.accepts : pe.accepts));
     for (const z3::expr& x : pe.side) solver_.add(x);
     for (const AcceptTracker& t : pe.trackers) solver_.add(t.literal);
+    lengths_.insert(lengths_.end(), pe.lengths.begin(), pe.lengths.end());
   }
   return predicates_.emplace(key, lit).first->second;
 }
@@ -109,10 +115,105 @@ std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
   return pred.empty() ? "" : "the property uses " + pred;
 }
 
+// Norms are abstract (EncodedBody::lengths) until a model needs one: unsat over the abstraction
+// is unsat for the machine, and a model in which each norm has the value the monitor computes
+// from its components is a model of the machine. A model with a norm that does not is excluded
+// by what monotonicity gives from that point (cheap bounds, for every norm) for a few rounds,
+// then by the norm's exact circuit, for good. Each later round adds at least one circuit, so
+// it ends, at worst with every circuit (the question as precise as it can be).
 Answer DataQuery::check(const z3::expr_vector& assumptions) {
-  ++queries_;
-  z3::check_result r = verify::check(solver_, timeout_, &unknown_reason_, &assumptions);
-  return r == z3::sat ? Answer::Sat : r == z3::unsat ? Answer::Unsat : Answer::Unknown;
+  constexpr int kBoundRounds = 32;
+  repaired_model_.reset();
+  for (int round = 0;; ++round) {
+    ++queries_;
+    z3::check_result r = verify::check(solver_, timeout_, &unknown_reason_, &assumptions);
+    if (r != z3::sat) return r == z3::unsat ? Answer::Unsat : Answer::Unknown;
+    z3::model m = solver_.get_model();
+    if (lengths_agree(m) || repaired(assumptions, m)) return Answer::Sat;  // repaired_model_
+    refine_lengths(m, round < kBoundRounds);
+  }
+}
+
+// Whether the model's components with each norm as the monitor computes it still answer the
+// question; then the solver's model is that one. Cheap: with its components fixed, each circuit
+// folds to a constant.
+bool DataQuery::repaired(const z3::expr_vector& assumptions, const z3::model& m) {
+  bool sat = false;
+  try {
+    solver_.push();
+    for (const AbstractLength& l : lengths_) {
+      for (const z3::expr& c : l.components)
+        solver_.add(z3::expr(ctx_, Z3_mk_eq(ctx_, c, m.eval(c, true))));
+      solver_.add(z3::expr(ctx_, Z3_mk_eq(ctx_, l.result, m.eval(l.exact, true))));
+    }
+    std::string unknown;
+    sat = verify::check(solver_, timeout_, &unknown, &assumptions) == z3::sat &&
+          lengths_agree(solver_.get_model());
+    if (sat) repaired_model_ = solver_.get_model();
+    solver_.pop();
+  } catch (const z3::exception&) {
+    return false;  // interrupted past the deadline: the next check says unknown
+  }
+  return sat;
+}
+
+std::optional<z3::model> DataQuery::settled(const z3::expr_vector& assumptions,
+                                            const z3::model& m) {
+  if (lengths_agree(m)) return m;
+  if (repaired(assumptions, m)) return repaired_model_;
+  return std::nullopt;
+}
+
+// Points whose norms bound l's from the model's: the point itself (|components|), each
+// component alone (the others 0: a norm is at least that one's) and the largest in all three
+// (a norm is at most that one's); each with its norm as the monitor computes it.
+std::vector<std::pair<std::vector<z3::expr>, z3::expr>> DataQuery::bound_points(
+    const z3::model& m, const AbstractLength& l) {
+  std::vector<z3::expr> at;
+  for (const z3::expr& c : l.components) at.push_back(m.eval(lua::float_abs(c), true));
+  z3::expr zero = lua::float_val(ctx_, 0.0);
+  z3::expr largest = at[0];
+  for (const z3::expr& a : at)
+    if (lua::float_of(a) > lua::float_of(largest)) largest = a;
+  std::vector<std::vector<z3::expr>> points = {at, {largest, largest, largest}};
+  for (size_t k = 0; k < at.size(); ++k) {
+    std::vector<z3::expr> alone(at.size(), zero);
+    alone[k] = at[k];
+    points.push_back(alone);
+  }
+  std::vector<std::pair<std::vector<z3::expr>, z3::expr>> out;
+  for (const std::vector<z3::expr>& p : points) {
+    SymValue n = lua::norm({SymValue::Kind::Float, p[0]}, {SymValue::Kind::Float, p[1]},
+                           {SymValue::Kind::Float, p[2]});
+    out.emplace_back(p, m.eval(n.scalar, true));
+  }
+  return out;
+}
+
+bool DataQuery::lengths_agree(const z3::model& m) const {
+  for (const AbstractLength& l : lengths_)
+    if (!lua::same_numeral(m.eval(l.result, true), m.eval(l.exact, true))) return false;
+  return true;
+}
+
+void DataQuery::refine_lengths(const z3::model& m, bool bounds) {
+  for (size_t i = 0; i < lengths_.size();) {
+    const AbstractLength& l = lengths_[i];
+    z3::expr want = m.eval(l.exact, true);
+    if (lua::same_numeral(m.eval(l.result, true), want)) {
+      ++i;
+      continue;
+    }
+    if (bounds) {
+      for (const auto& [point, norm] : bound_points(m, l))
+        for (const AbstractLength& t : lengths_)
+          solver_.add(lua::norm_monotone(t.result, t.components, point, norm));
+      ++i;
+      continue;
+    }
+    solver_.add(z3::expr(ctx_, Z3_mk_eq(ctx_, l.result, l.exact)));
+    lengths_.erase(lengths_.begin() + static_cast<std::ptrdiff_t>(i));  // exact from now on
+  }
 }
 
 Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core) {
@@ -146,25 +247,39 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
     }
     for (auto& lines : core->accept_lines) std::sort(lines.begin(), lines.end());
   }
-  if (a == Answer::Sat && witness) {
-    z3::model model = solver_.get_model();
-    for (const DataSide& s : sides) {
-      const std::string& src = s.connection->source;
-      if (std::find(witness->message_sources.begin(), witness->message_sources.end(), src) !=
-          witness->message_sources.end())
-        continue;
-      witness->messages.push_back(concrete(model, message(src)));
-      witness->message_sources.push_back(src);
-    }
-    for (const DataSide& s : sides) {
-      const Encoded& e = encoded(*s.connection);
-      witness->emitted.push_back(e.body.emitted ? concrete(model, *e.body.emitted) : Value());
-      std::vector<std::string> state;
-      for (const auto& st : e.body.state) state.push_back(state_text(model, st));
-      witness->assumed_state.push_back(std::move(state));
-    }
-  }
+  if (a == Answer::Sat && witness) fill_witness(sides, assumptions, *witness);
   return a;
+}
+
+// The messages (and assumed monitor state) of a satisfiable question, each value as simple as
+// the question allows (verify/nice_model.h).
+void DataQuery::fill_witness(const std::vector<DataSide>& sides, const z3::expr_vector& assumptions,
+                             DataWitness& witness) {
+  std::vector<const SymValue*> values;
+  for (const DataSide& s : sides) {
+    const std::string& src = s.connection->source;
+    if (std::find(witness.message_sources.begin(), witness.message_sources.end(), src) !=
+        witness.message_sources.end())
+      continue;
+    witness.message_sources.push_back(src);
+    values.push_back(&message(src));
+  }
+  for (const DataSide& s : sides)
+    for (const auto& st : encoded(*s.connection).body.state) values.push_back(&st.second);
+  // A simpler model must still be one of the machine: its norms as the monitor computes them.
+  // (The simplifier's own constraints are in the solver when settled() repairs a model.)
+  z3::model found = repaired_model_ ? *repaired_model_ : solver_.get_model();
+  z3::model model = nicer_model(solver_, assumptions, values, found, timeout_,
+                                [&](const z3::model& m) { return settled(assumptions, m); });
+  for (const std::string& src : witness.message_sources)
+    witness.messages.push_back(concrete(model, message(src)));
+  for (const DataSide& s : sides) {
+    const Encoded& e = encoded(*s.connection);
+    witness.emitted.push_back(e.body.emitted ? concrete(model, *e.body.emitted) : Value());
+    std::vector<std::string> state;
+    for (const auto& st : e.body.state) state.push_back(state_text(model, st));
+    witness.assumed_state.push_back(std::move(state));
+  }
 }
 
 std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Value& value,
@@ -172,10 +287,16 @@ std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Val
   SymValue v = constant_value(ctx_, value, t, list_bound_);
   EncodedBody e = encode_body(ctx_, predicate_body(predicate), v, "holds");
   if (!e.opaque.empty()) return std::nullopt;
+  z3::expr all = e.accepts;
+  for (const z3::expr& x : e.side) all = all && x;
+  for (const AcceptTracker& tr : e.trackers) all = all && tr.literal;
+  // A constant predicate on a constant value mostly folds to true or false (IEEE operations on
+  // numerals included): no solver, so no deadline can leave a replay undecided.
+  z3::expr folded = all.simplify();
+  if (folded.is_true()) return true;
+  if (folded.is_false()) return false;
   z3::solver s(ctx_);
-  for (const z3::expr& x : e.side) s.add(x);
-  for (const AcceptTracker& tr : e.trackers) s.add(tr.literal);
-  s.add(e.accepts);
+  s.add(all);
   SolverTimeout timeout(deadline_);  // its own solver, within the run's deadline
   std::string unknown;
   z3::check_result r = verify::check(s, timeout, &unknown);
@@ -193,8 +314,9 @@ std::string spec_value_text(const Value& v) {
     case Value::Kind::Int:
       return std::to_string(v.as_int());
     case Value::Kind::Float:
-      append_json_double(out, v.as_float());
-      if (out.size() > 2 && out.compare(out.size() - 2, 2, ".0") == 0) out.resize(out.size() - 2);
+      out = float_spec_text(v.as_float());
+      if (out.size() > 2 && out.compare(out.size() - 2, 2, ".0") == 0 && out != "-0.0")
+        out.resize(out.size() - 2);
       return out;
     case Value::Kind::String:
       append_json_string(out, v.as_string());

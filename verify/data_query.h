@@ -1,7 +1,7 @@
 // Questions about message data (docs/checks.md#message-data): can these rules accept the same
 // message (or independent messages), with what they emit satisfying given predicates? One Z3 query
-// over the encoded bodies (verify/body_encoding.h), in the theories of the data (linear and
-// nonlinear real and integer arithmetic, strings, bounded lists).
+// over the encoded bodies (verify/body_encoding.h), in the theories of the data (IEEE doubles,
+// 64-bit bit-vectors, strings, bounded lists), norms abstract until a model needs them.
 #pragma once
 
 #include <z3++.h>
@@ -15,6 +15,7 @@
 
 #include "core/app_model.h"
 #include "core/value.h"
+#include "verify/body_encoding.h"
 #include "verify/port_solver.h"
 #include "verify/solver_timeout.h"
 #include "verify/sym_value.h"
@@ -80,6 +81,14 @@ class DataQuery {
   const SymValue& message(const std::string& source);
   z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
   Answer check(const z3::expr_vector& assumptions);
+  void fill_witness(const std::vector<DataSide>& sides, const z3::expr_vector& assumptions,
+                    DataWitness& witness);
+  bool lengths_agree(const z3::model& m) const;
+  void refine_lengths(const z3::model& m, bool bounds);
+  bool repaired(const z3::expr_vector& assumptions, const z3::model& m);
+  std::optional<z3::model> settled(const z3::expr_vector& assumptions, const z3::model& m);
+  std::vector<std::pair<std::vector<z3::expr>, z3::expr>> bound_points(const z3::model& m,
+                                                                       const AbstractLength& l);
 
   const model::App& app_;
   z3::context& ctx_;
@@ -89,6 +98,8 @@ class DataQuery {
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
   std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>
       predicates_;
+  std::vector<AbstractLength> lengths_;      // norms still abstract (check)
+  std::optional<z3::model> repaired_model_;  // the last check's model, when a repair found it
   std::string unknown_reason_;
   int queries_ = 0;
   Clock::time_point deadline_;  // of the whole run: holds() asks its own solver within it

@@ -284,7 +284,13 @@ bool ResourceChecker::replay(const Order& o, const std::vector<Value>& messages,
     std::string err;
     options_.runner->run(*rules[s], messages[static_cast<size_t>(s)], &run, &err);
     std::optional<bool> used = data_.holds(*res_.uses, run.delivered, *p->type);
-    if (!used || !*used) {
+    // Undecided (the run's deadline passed, or the predicate is opaque): the replay neither
+    // confirms nor contradicts Z3, so the pair is unknown, not an internal disagreement.
+    if (!used) {
+      why->clear();
+      return false;
+    }
+    if (!*used) {
       *why = "Z3 says '" + rules[s]->name + "' delivers a command that uses '" + res_.name +
              "', but its Lua monitor delivers " + spec_value_text(run.delivered) +
              ", which does not";
@@ -336,7 +342,11 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
     MessageExample ex;
     std::string why;
     if (!replay(o, messages, ex, &why)) {
-      out_.findings.push_back(internal_data_error("", res_.loc, why));
+      if (why.empty())
+        unknown("whether the replayed commands use it",
+                Clock::now() >= deadline_ ? "timeout" : "its predicate is not modelled");
+      else
+        out_.findings.push_back(internal_data_error("", res_.loc, why));
       return;
     }
     f.messages.back().replay = ex.replay;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "verify/lua_number.h"
+
 namespace arbc::verify {
 
 const SymValue* SymValue::field(const std::string& name) const {
@@ -19,19 +21,19 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
     case Type::Kind::Bool:
       return {K::Bool, ctx.bool_const(prefix.c_str())};
     case Type::Kind::Int:
-      return {K::Int, ctx.int_const(prefix.c_str())};
+      return {K::Int, lua::int_const(ctx, prefix)};
     case Type::Kind::Float:
-      return {K::Real, ctx.real_const(prefix.c_str())};
+      return {K::Float, lua::float_const(ctx, prefix)};
     case Type::Kind::String:
       return {K::String, ctx.constant(prefix.c_str(), ctx.string_sort())};
     case Type::Kind::Vec3: {
       SymValue v(K::Vec3, ctx.bool_val(true));
       for (const char* c : {"x", "y", "z"})
-        v.items.push_back({K::Real, ctx.real_const((prefix + "." + c).c_str())});
+        v.items.push_back({K::Float, lua::float_const(ctx, prefix + "." + c)});
       return v;
     }
     case Type::Kind::List: {
-      z3::expr len = ctx.int_const((prefix + ".len").c_str());
+      z3::expr len = lua::int_const(ctx, prefix + ".len");
       domain.push_back(len >= 0 && len <= bound);
       SymValue v(K::List, len);
       for (int i = 0; i < bound; ++i)
@@ -60,20 +62,20 @@ SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bou
     case Type::Kind::Bool:
       return {K::Bool, ctx.bool_val(v.as_bool())};
     case Type::Kind::Int:
-      return {K::Int, ctx.int_val(v.as_int())};
+      return {K::Int, lua::int_val(ctx, v.as_int())};
     case Type::Kind::Float:
-      return {K::Real, exact_real(ctx, v.as_float())};
+      return {K::Float, lua::float_val(ctx, v.as_float())};
     case Type::Kind::String:
       return {K::String, byte_string(ctx, v.as_string())};
     case Type::Kind::Vec3: {
       SymValue out(K::Vec3, ctx.bool_val(true));
       Eigen::Vector3d p = v.is_vec3() ? v.as_vec3() : Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) out.items.push_back({K::Real, exact_real(ctx, p[k])});
+      for (int k = 0; k < 3; ++k) out.items.push_back({K::Float, lua::float_val(ctx, p[k])});
       return out;
     }
     case Type::Kind::List: {
       const ValueList& items = v.as_list();
-      SymValue out(K::List, ctx.int_val(static_cast<int>(items.size())));
+      SymValue out(K::List, lua::int_val(ctx, static_cast<int64_t>(items.size())));
       for (int i = 0; i < bound || i < static_cast<int>(items.size()); ++i)
         out.items.push_back(constant_value(
             ctx, i < static_cast<int>(items.size()) ? items[static_cast<size_t>(i)] : Value(),
@@ -103,16 +105,16 @@ SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& pref
       out.scalar = ctx.bool_const(prefix.c_str());
       break;
     case K::Int:
-      out.scalar = ctx.int_const(prefix.c_str());
+      out.scalar = lua::int_const(ctx, prefix);
       break;
-    case K::Real:
-      out.scalar = ctx.real_const(prefix.c_str());
+    case K::Float:
+      out.scalar = lua::float_const(ctx, prefix);
       break;
     case K::String:
       out.scalar = ctx.constant(prefix.c_str(), ctx.string_sort());
       break;
     case K::List:
-      out.scalar = ctx.int_const((prefix + ".len").c_str());
+      out.scalar = lua::int_const(ctx, prefix + ".len");
       [[fallthrough]];
     case K::Vec3:
     case K::Record:
@@ -123,48 +125,10 @@ SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& pref
   return out;
 }
 
-namespace {
-
-// 2^k in decimal (k <= 1100): the denominator of a double's exact value.
-std::string pow2_text(int k) {
-  std::string digits = "1";  // least significant first
-  for (int i = 0; i < k; ++i) {
-    int carry = 0;
-    for (char& c : digits) {
-      int v = (c - '0') * 2 + carry;
-      c = static_cast<char>('0' + v % 10);
-      carry = v / 10;
-    }
-    if (carry) digits += static_cast<char>('0' + carry);
-  }
-  return std::string(digits.rbegin(), digits.rend());
-}
-
-}  // namespace
-
 z3::expr byte_string(z3::context& ctx, const std::string& s) {
   Z3_ast r = Z3_mk_lstring(ctx, static_cast<unsigned>(s.size()), s.data());
   ctx.check_error();
   return z3::expr(ctx, r);
-}
-
-z3::expr exact_real(z3::context& ctx, double d) {
-  int exp = 0;
-  double m = std::frexp(d, &exp);  // d = m * 2^exp, 0.5 <= |m| < 1
-  auto mantissa = static_cast<int64_t>(std::ldexp(m, 53));
-  exp -= 53;
-  while (exp < 0 && mantissa % 2 == 0 && mantissa != 0) {
-    mantissa /= 2;
-    ++exp;
-  }
-  if (mantissa == 0) return ctx.real_val(0);
-  std::string num = std::to_string(mantissa);
-  if (exp >= 0) return ctx.real_val((num + "/1").c_str()) * ctx.real_val(pow2_text(exp).c_str());
-  return ctx.real_val((num + "/" + pow2_text(-exp)).c_str());
-}
-
-z3::expr as_real(const SymValue& v) {
-  return v.kind == SymValue::Kind::Int ? z3::to_real(v.scalar) : v.scalar;
 }
 
 namespace {
@@ -191,7 +155,9 @@ std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymVal
   if (!same_shape(a, b)) return std::nullopt;
   if (a.numeric()) {
     if (a.kind == b.kind) return SymValue(a.kind, z3::ite(c, a.scalar, b.scalar));
-    return SymValue(K::Real, z3::ite(c, as_real(a), as_real(b)));
+    // An int and a float: the float kind, the int converted. Lua keeps the int's subtype;
+    // explicit conversions in model::Body (issue 38, item 1) make both agree.
+    return SymValue(K::Float, z3::ite(c, lua::to_float(a), lua::to_float(b)));
   }
   SymValue out = a;
   out.scalar = z3::ite(c, a.scalar, b.scalar);
@@ -219,10 +185,7 @@ std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymVal
 std::optional<z3::expr> sym_equal(const SymValue& a, const SymValue& b) {
   using K = SymValue::Kind;
   if (!same_shape(a, b)) return std::nullopt;
-  if (a.numeric()) {
-    if (a.kind == b.kind) return a.scalar == b.scalar;
-    return as_real(a) == as_real(b);
-  }
+  if (a.numeric()) return lua::equal(a, b);  // Lua's ==: NaN ~= NaN, 0.0 == -0.0
   if (a.kind == K::Bool || a.kind == K::String) return a.scalar == b.scalar;
   z3::context& ctx = a.scalar.ctx();
   z3::expr all = ctx.bool_val(true);
@@ -249,10 +212,11 @@ std::optional<z3::expr> sym_equal(const SymValue& a, const SymValue& b) {
 
 namespace {
 
-double real_value(const z3::expr& e) {
-  std::string s = e.get_decimal_string(17);
-  if (!s.empty() && s.back() == '?') s.pop_back();
-  return std::strtod(s.c_str(), nullptr);
+// A number of a model as a double: an int converted as Lua's tonumber does (C's cast).
+double number_value(const z3::model& m, const SymValue& v) {
+  z3::expr x = m.eval(v.scalar, true);
+  if (v.kind == SymValue::Kind::Int) return static_cast<double>(lua::int_of(x));
+  return lua::float_of(x);
 }
 
 }  // namespace
@@ -262,13 +226,10 @@ Value concrete(const z3::model& m, const SymValue& v) {
   switch (v.kind) {
     case K::Bool:
       return Value(m.eval(v.scalar, true).is_true());
-    case K::Int: {
-      int64_t i = 0;
-      m.eval(v.scalar, true).is_numeral_i64(i);
-      return Value(i);
-    }
-    case K::Real:
-      return Value(real_value(m.eval(v.scalar, true)));
+    case K::Int:
+      return Value(lua::int_of(m.eval(v.scalar, true)));
+    case K::Float:
+      return Value(lua::float_of(m.eval(v.scalar, true)));
     case K::String: {
       // The bytes, not Z3_get_string's escaped text (a newline would come back as `\u{a}`).
       z3::expr s = m.eval(v.scalar, true);
@@ -277,12 +238,10 @@ Value concrete(const z3::model& m, const SymValue& v) {
       return Value(std::string(bytes, n));
     }
     case K::Vec3:
-      return Value::vec3(real_value(m.eval(v.items[0].scalar, true)),
-                         real_value(m.eval(v.items[1].scalar, true)),
-                         real_value(m.eval(v.items[2].scalar, true)));
+      return Value::vec3(number_value(m, v.items[0]), number_value(m, v.items[1]),
+                         number_value(m, v.items[2]));
     case K::List: {
-      int64_t len = 0;
-      m.eval(v.scalar, true).is_numeral_i64(len);
+      int64_t len = lua::int_of(m.eval(v.scalar, true));
       ValueList items;
       for (int64_t i = 0; i < len && i < static_cast<int64_t>(v.items.size()); ++i)
         items.push_back(concrete(m, v.items[static_cast<size_t>(i)]));

@@ -1,11 +1,11 @@
 // Symbolic values of spec types in Z3 (docs/design.md#the-proof): what the data encoding
 // (verify/body_encoding.h) computes for each expression of a body.
 //
-//   bool -> Bool, int -> Int, float -> Real, string -> String (sequences of characters),
-//   vec3 -> three Reals, record -> its fields (sorted by name, as app values are),
-//   list<T> -> a length (Int) and `capacity` element values: elements at or past the length
-//   are unused. A message list has capacity N (the list bound), so lists of at most N
-//   elements are covered exactly.
+//   bool -> Bool, int -> a 64-bit bit-vector, float -> IEEE binary64 (verify/lua_number.h: the
+//   machine's arithmetic), string -> String (one character per byte), vec3 -> three numbers,
+//   record -> its fields (sorted by name, as app values are), list<T> -> a length (an int)
+//   and `capacity` element values: elements at or past the length are unused. A message list
+//   has capacity N (the list bound), so lists of at most N elements are covered exactly.
 #pragma once
 
 #include <z3++.h>
@@ -21,16 +21,16 @@
 namespace arbc::verify {
 
 struct SymValue {
-  enum class Kind { Bool, Int, Real, String, Vec3, List, Record };
+  enum class Kind { Bool, Int, Float, String, Vec3, List, Record };
   Kind kind = Kind::Bool;
-  z3::expr scalar;                 // Bool/Int/Real/String; List: the length
+  z3::expr scalar;                 // Bool/Int/Float/String; List: the length
   std::vector<SymValue> items;     // Vec3: x, y, z; List: elements; Record: fields
   std::vector<std::string> names;  // Record: field names, sorted
 
   explicit SymValue(z3::context& ctx) : scalar(ctx.bool_val(true)) {}
   SymValue(Kind k, z3::expr s) : kind(k), scalar(std::move(s)) {}
 
-  bool numeric() const { return kind == Kind::Int || kind == Kind::Real; }
+  bool numeric() const { return kind == Kind::Int || kind == Kind::Float; }
   const SymValue* field(const std::string& name) const;
 };
 
@@ -50,16 +50,10 @@ SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& pref
 // accepting only the six bytes `\u{41}` was proved exclusive with one accepting all but "A".
 z3::expr byte_string(z3::context& ctx, const std::string& s);
 
-// The exact rational value of a finite double, as a Real numeral.
-z3::expr exact_real(z3::context& ctx, double d);
-
-// The number as a Real (Int converted).
-z3::expr as_real(const SymValue& v);
-
 // `if c then a else b`; nullopt when the shapes cannot be merged.
 std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymValue& b);
 
-// Structural equality as the generated Lua computes it (`arbc_equal`, numbers by value);
+// Structural equality as the generated Lua computes it (`arbc_equal`, numbers by Lua's ==);
 // nullopt when the shapes differ.
 std::optional<z3::expr> sym_equal(const SymValue& a, const SymValue& b);
 

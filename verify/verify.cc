@@ -164,7 +164,6 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
     report.assumptions = {
         "lists in messages have at most " + std::to_string(options.list_bound) +
             " elements (--list-bound)",
-        "floats are finite and computed as exact reals", "int arithmetic does not overflow 64 bits",
         "monitor state (var, now()) may hold any value earlier messages could leave"};
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;

@@ -168,7 +168,8 @@ std::string LuaExprTranslator::binary(const BodyExpr& e) {
   // `/` is float division in the spec as in Lua; `%` truncates like the spec's constant folding
   // (C fmod), where Lua's own `%` would floor.
   if (op == "%")
-    return "math.fmod(" + arith_operand(l, false) + ", " + arith_operand(r, false) + ")";
+    return helper("arbc_fmod") + "(" + arith_operand(l, false) + ", " + arith_operand(r, false) +
+           ")";
   if (op == "+" || op == "-" || op == "*" || op == "/")
     return arith_operand(l, true) + " " + op + " " + arith_operand(r, true);
   return operand(l) + " " + op + " " + operand(r);

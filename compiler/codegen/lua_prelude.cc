@@ -29,6 +29,16 @@ constexpr Helper kHelpers[] = {
      "  if x == nil then arbc_no_value() end\n"
      "  return x\n"
      "end\n"},
+    {"arbc_fmod",
+     {"arbc_no_value"},
+     "-- a % b of the spec: C's fmod, truncating (Lua's own % floors); math.fmod raises on an\n"
+     "-- int divided by int 0, which has no value instead (docs/language.md#numbers).\n"
+     "local function arbc_fmod(a, b)\n"
+     "  if b == 0 and math.type(a) == \"integer\" and math.type(b) == \"integer\" then\n"
+     "    arbc_no_value()\n"
+     "  end\n"
+     "  return math.fmod(a, b)\n"
+     "end\n"},
     {"len",
      {},
      "-- len(xs): the number of elements of a list, or of bytes of a string.\n"

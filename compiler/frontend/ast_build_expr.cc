@@ -1,4 +1,5 @@
 #include <charconv>
+#include <limits>
 
 #include "compiler/frontend/ast_builder_class.h"
 
@@ -13,6 +14,15 @@ namespace {
 void set_integer(Expr& e, const std::string& digits) {
   auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), e.integer);
   e.int_too_big = ec != std::errc() || end != digits.data() + digits.size();
+  if (e.int_too_big) e.text = digits;  // for `-9223372036854775808` (Builder::unary)
+}
+
+// `-9223372036854775808`, INT64_MIN, is one int literal (docs/language.md#numbers): its digits
+// alone do not fit in 64 bits, but arbc prints the value so in counterexamples and tests, which
+// must read back. Lua would read it as `-` of a float; the generated Lua writes math.mininteger.
+bool is_int64_min_digits(const Expr& e) {
+  return e.kind == Expr::Kind::Number && e.is_int && e.int_too_big &&
+         e.text == "9223372036854775808";
 }
 
 }  // namespace
@@ -91,9 +101,17 @@ ExprPtr Builder::expr(ArbcParser::ExprContext* ctx, int depth) {
 
 ExprPtr Builder::unary(const std::string& op, ArbcParser::ExprContext* operand, Loc where,
                        int depth) {
+  ExprPtr inner = expr(operand, depth + 1);
+  if (op == "-" && is_int64_min_digits(*inner)) {
+    auto e = make(Expr::Kind::Number, std::move(where));
+    e->is_int = true;
+    e->integer = std::numeric_limits<int64_t>::min();
+    e->number = static_cast<double>(e->integer);
+    return e;
+  }
   auto e = make(Expr::Kind::Unary, std::move(where));
   e->op = operator_spelling(op);
-  e->args.push_back(expr(operand, depth + 1));
+  e->args.push_back(std::move(inner));
   return e;
 }
 

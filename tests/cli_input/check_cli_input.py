@@ -318,6 +318,32 @@ def case_inputs_int_beyond_int64(arbc, plugin):
                          "of int, a 64-bit integer")
 
 
+def case_trace_nan_inf_reads_back(arbc, plugin):
+    # A NaN or an infinity was written to the trace as null, which --inputs refused (issue 39):
+    # the trace writes "nan", "inf", "-inf", and the trace given back as --inputs replays them.
+    with tempfile.TemporaryDirectory() as tmp:
+        spec = os.path.join(tmp, "range.spec")
+        with open(spec, "w", encoding="utf-8") as f:
+            f.write('app range "x";\nmodule Lidar { out d: float; }\nmodule Show { in d: float; }\n'
+                    "connect Lidar.d -> Show.d;\n")
+        inputs = os.path.join(tmp, "in.jsonl")
+        with open(inputs, "w", encoding="utf-8") as f:
+            for t, v in ((0.1, '"nan"'), (0.2, '"inf"'), (0.3, '"-inf"'), (0.4, "1.5")):
+                f.write(f'{{"t": {t}, "port": "Lidar.d", "value": {v}}}\n')
+        traces = [os.path.join(tmp, "run1.jsonl"), os.path.join(tmp, "run2.jsonl")]
+        code, out, err = run(arbc, "run", spec, "--inputs", inputs, "--duration", "1s",
+                             "--trace", traces[0])
+        expect(code == 0, f"run exit {code}", out, err)
+        code, out, err = run(arbc, "run", spec, "--inputs", traces[0], "--duration", "1s",
+                             "--trace", traces[1])
+        expect(code == 0, f"the trace as --inputs: exit {code}", out, err)
+        for trace in traces:
+            with open(trace, encoding="utf-8") as f:
+                values = [json.loads(line).get("value") for line in f
+                          if '"deliver"' in line]
+            expect(values == ["nan", "inf", "-inf", 1.5], f"{trace} delivered {values}")
+
+
 def case_inputs_directory(arbc, plugin):
     # A folder was read as zero messages, exit 0 (issue 40).
     with tempfile.TemporaryDirectory() as tmp:

@@ -79,6 +79,8 @@ golden temporal_derived_same_source.txt repo 0 tests/verify/temporal_derived_sam
 golden temporal_every_step.txt repo 1 tests/verify/temporal_every_step.spec
 # A vec3 scaled by a value not encoded is opaque, not a crash (tests/drt seed 38 spec 324).
 golden vec3_times_opaque.txt repo 1 tests/verify/vec3_times_opaque.spec
+golden norm_dist.txt repo 1 tests/verify/norm_dist.spec
+golden int64_min_witness.txt repo 1 tests/verify/int64_min_witness.spec
 golden vacuous_other_port.txt repo 0 tests/verify/vacuous_other_port.spec
 golden vacuous_other_port_strict.txt repo 1 --strict tests/verify/vacuous_other_port.spec
 # No time to decide is "unknown", exit 1, never "proved".

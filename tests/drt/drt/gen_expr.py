@@ -125,7 +125,8 @@ class ExprGen:
     def int_arith(self, env, d, pure):
         op = self.rng.choice(["+", "-", "*", "%"])
         rhs = self.gen(INT, env, d, pure)
-        if op == "%" and "int-mod" in self.avoid:
+        # A constant zero divisor is a check error (division-by-zero); zero from data is not.
+        if op == "%" and ("int-mod" in self.avoid or (rhs.kind == "lit" and rhs.val == "0")):
             rhs = lit(INT, self.rng.choice(["2", "3", "10"]))
         return Expr("bin", INT, [self.gen(INT, env, d, pure), rhs], op)
 
