@@ -50,8 +50,7 @@ z3::model prefer_readable_times(z3::solver& solver, const Unrolling& u, int n, z
 }  // namespace
 
 std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
-                                            std::string* err, bool faithful,
-                                            DataQuery* data) {
+                                            std::string* err, bool faithful, DataQuery* data) {
   std::optional<PortShape> shape = port_shape(app, p.port, err, data);
   if (!shape) return std::nullopt;
   shape->faithful = faithful;

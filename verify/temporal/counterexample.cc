@@ -39,8 +39,7 @@ class Builder {
   // An entry the test gives with `set`/`unset`: a feed's, except the port's own delivery
   // events, which the replayed deliveries set as the runtime does.
   bool from_harness(const Entry& e) const {
-    return shape_.connections[static_cast<size_t>(e.owner)]->kind ==
-               model::ConnectionKind::Feed &&
+    return shape_.connections[static_cast<size_t>(e.owner)]->kind == model::ConnectionKind::Feed &&
            !e.own_delivery();
   }
 
@@ -118,7 +117,8 @@ class Builder {
   const DataWitness* witness(const model::Connection& c, const std::vector<DataSide>& extra) {
     std::string key = c.destination + "/" + c.name;
     for (const DataSide& s : extra)
-      key += "|" + std::to_string(reinterpret_cast<uintptr_t>(s.emitted_holds)) + (s.negate ? "-" : "+");
+      key += "|" + std::to_string(reinterpret_cast<uintptr_t>(s.emitted_holds)) +
+             (s.negate ? "-" : "+");
     auto found = witnesses_.find(key);
     if (found != witnesses_.end()) return &found->second;
     std::string opaque = data_.opaque_reason(c);

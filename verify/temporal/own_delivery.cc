@@ -106,8 +106,8 @@ bool exact_body(const model::Body& body) {
 bool data_exact(const model::App& app, const model::Connection& rule, const model::BodyExpr& p) {
   const model::Port* from = app.find_port(rule.source);
   const model::Port* to = app.find_port(rule.destination);
-  return from && from->type && exact_type(*from->type) && to && to->type &&
-         exact_type(*to->type) && exact_body(*rule.body) && exact_expr(p);
+  return from && from->type && exact_type(*from->type) && to && to->type && exact_type(*to->type) &&
+         exact_body(*rule.body) && exact_expr(p);
 }
 
 // What a delivery of `rule` can do to own delivery entry `e`; *may_fail when the feed's Lua may
@@ -132,6 +132,39 @@ DeliveryOutcome outcome(const model::App& app, const model::Connection& rule, co
   DeliveryOutcome o{r.can_true, !lasts && r.can_false, r.can_fail || (lasts && r.can_false)};
   if (!o.can_set && !o.can_unset && !o.can_keep) return any;  // no delivery at all: say nothing
   return o;
+}
+
+// At most this many events a rule's delivery may or may not set are asked about together
+// (2^n questions per rule); more stay independent (more behaviours: sound).
+constexpr size_t kMostJoint = 4;
+
+// The delivered value decides all of a rule's own delivery events at once: where the data
+// encoding is exact and the feed cannot fail, a delivery sets exactly the events whose
+// predicate holds, so a combination no value gives is excluded (two events over one verb are
+// not set and left apart at will).
+void exclude_joint_outcomes(const model::App& app, PortShape& shape, DataQuery& data) {
+  for (size_t r = 0; r < shape.connections.size(); ++r) {
+    const model::Connection& rule = *shape.connections[r];
+    if (rule.kind != model::ConnectionKind::Rule || rule.opaque || !rule.body) continue;
+    std::vector<size_t> free;
+    for (size_t q = 0; q < shape.entries.size(); ++q) {
+      const Entry& e = shape.entries[q];
+      if (!e.own_delivery() || !e.predicate) continue;
+      const DeliveryOutcome& o = e.on_delivery[r];
+      if (o.can_set && (o.can_unset || o.can_keep) && data_exact(app, rule, *e.predicate))
+        free.push_back(q);
+    }
+    if (free.size() < 2 || free.size() > kMostJoint) continue;
+    for (unsigned mask = 0; mask < (1u << free.size()); ++mask) {
+      std::vector<DataSide> sides;
+      for (size_t i = 0; i < free.size(); ++i)
+        sides.push_back({&rule, shape.entries[free[i]].predicate, !(mask >> i & 1u)});
+      if (data.ask(sides, nullptr, nullptr) != Answer::Unsat) continue;
+      PortShape::ExcludedOutcome x{static_cast<int>(r), {}};
+      for (size_t i = 0; i < free.size(); ++i) x.sets.emplace_back(free[i], (mask >> i & 1u) != 0);
+      shape.excluded_outcomes.push_back(std::move(x));
+    }
+  }
 }
 
 }  // namespace
@@ -168,9 +201,20 @@ void add_own_deliveries(const model::App& app, PortShape& shape, DataQuery* data
   // One feed evaluates every own delivery event of the port, in one Lua call: when it may fail
   // on some delivery, the events after the failing one keep their state, and failures in a row
   // quarantine it (runtime/message_path.cc), after which no delivery changes any of them.
-  if (!may_fail) return;
+  if (!may_fail) {
+    if (data) exclude_joint_outcomes(app, shape, *data);
+    return;
+  }
   for (Entry& e : shape.entries)
     for (DeliveryOutcome& o : e.on_delivery) o.can_keep = true;
+}
+
+void Unrolling::add_excluded_outcomes(int k) {
+  for (const PortShape::ExcludedOutcome& x : shape_.excluded_outcomes) {
+    z3::expr pattern = ctx_.bool_val(true);
+    for (const auto& [q, set] : x.sets) pattern = pattern && set_[k][q] == ctx_.bool_val(set);
+    solver_.add(z3::implies(del_[k][static_cast<size_t>(x.rule)], !pattern));
+  }
 }
 
 bool Unrolling::has_own_deliveries() const {
@@ -225,9 +269,9 @@ void Unrolling::constrain_own_deliveries_at_start() {
       int a = rules[i], b = rules[j];
       z3::expr oa = order_before_start(a), ob = order_before_start(b);
       z3::expr la = last_delivery_before_start(a), lb = last_delivery_before_start(b);
-      solver_.add(z3::implies(delivered_before_start(a) && delivered_before_start(b),
-                              oa != ob && z3::implies(oa < ob, la <= lb) &&
-                                  z3::implies(ob < oa, lb <= la)));
+      solver_.add(z3::implies(
+          delivered_before_start(a) && delivered_before_start(b),
+          oa != ob && z3::implies(oa < ob, la <= lb) && z3::implies(ob < oa, lb <= la)));
     }
   }
   // Every rule r2 (but r) that `which` picks delivered last before r's last delivery, if at all.
@@ -249,8 +293,8 @@ void Unrolling::constrain_own_deliveries_at_start() {
     for (int r : rules) {
       const DeliveryOutcome& o = e.on_delivery[static_cast<size_t>(r)];
       z3::expr last = last_delivery_before_start(r);
-      z3::expr by = e.lifetime ? expiry <= last + nanos_term(ctx_, *e.lifetime)
-                               : after(r, e, must_unset);
+      z3::expr by =
+          e.lifetime ? expiry <= last + nanos_term(ctx_, *e.lifetime) : after(r, e, must_unset);
       if (o.can_set) setters.push_back(delivered_before_start(r) && by);
       if (must_set(o) && e.lifetime)
         solver_.add(z3::implies(delivered_before_start(r),

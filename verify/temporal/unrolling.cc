@@ -171,6 +171,7 @@ void Unrolling::add_step(int k) {
     if (shape_.entries[q].activity) add_activity_step(q, k);
     if (shape_.entries[q].own_delivery()) add_own_delivery_step(q, k);
   }
+  add_excluded_outcomes(k);
   add_assumptions(k);
   if (shape_.faithful) add_faithful(k);
 }
@@ -309,10 +310,14 @@ TraceStep Unrolling::trace_step(const z3::model& m, int k) const {
   step.accepted = accepted(m, k);
   step.delivered = m.eval(del_[k][static_cast<size_t>(c)], true).is_true();
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
-    // An own delivery event changes in the step of the delivery that sets it.
-    if (shape_.entries[q].owner != c && !shape_.entries[q].own_delivery()) continue;
-    if (m.eval(set_[k][q], true).is_true()) step.set.push_back(shape_.entries[q].event);
-    if (m.eval(unset_[k][q], true).is_true()) step.unset.push_back(shape_.entries[q].event);
+    // An own delivery event changes in the step of the delivery that sets it; its unset is
+    // shown only where there was an entry to remove (the runtime traces no other).
+    const Entry& e = shape_.entries[q];
+    if (e.owner != c && !e.own_delivery()) continue;
+    if (m.eval(set_[k][q], true).is_true()) step.set.push_back(e.event);
+    if (m.eval(unset_[k][q], true).is_true() &&
+        (!e.own_delivery() || m.eval(has_[static_cast<size_t>(k)][q], true).is_true()))
+      step.unset.push_back(e.event);
   }
   return step;
 }

@@ -66,6 +66,13 @@ struct PortShape {
   // accepts it; a derived event with a constant predicate follows it. Sound proofs never use
   // it: the runtime can interleave more (a module that publishes while it takes a delivery).
   bool faithful = false;
+  // A combination of own delivery events that no delivery of `rule` gives: those `sets` says
+  // set, the others not (verify/temporal/own_delivery.cc).
+  struct ExcludedOutcome {
+    int rule = -1;
+    std::vector<std::pair<size_t, bool>> sets;  // entry index, set by the delivery
+  };
+  std::vector<ExcludedOutcome> excluded_outcomes;
 };
 
 // The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`. `data`
@@ -151,9 +158,10 @@ class Unrolling {
   void add_step(int k);
   void add_entry_step(size_t q, int k);
   void add_activity_step(size_t q, int k);
-  void add_entry_update(size_t q, int k);     // state k+1 of entry q from its set/unset
+  void add_entry_update(size_t q, int k);       // state k+1 of entry q from its set/unset
   void add_own_delivery_step(size_t q, int k);  // own_delivery.cc
-  void constrain_own_deliveries_at_start();    // what any state says of them (own_delivery.cc)
+  void add_excluded_outcomes(int k);            // PortShape::excluded_outcomes at step k
+  void constrain_own_deliveries_at_start();     // what any state says of them (own_delivery.cc)
   // The place of connection c's last delivery before step 1 among the others' (any state).
   z3::expr order_before_start(int c) const;
   bool has_own_deliveries() const;
