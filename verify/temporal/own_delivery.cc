@@ -171,6 +171,11 @@ void exclude_joint_outcomes(const model::App& app, PortShape& shape, DataQuery& 
 
 std::optional<bool> constant_outcome(const model::Connection& rule,
                                      const model::BodyExpr& predicate) {
+  // A predicate that reads nothing of the value (`false`, `not true`) is what it is on every
+  // delivery, whatever the rule emits: `truth` of it against a value it cannot read.
+  model::BodyExpr unread;
+  unread.op = Op::Local;
+  if (std::optional<bool> fixed = truth(predicate, unread)) return fixed;
   std::vector<const model::BodyExpr*> emits;
   if (!rule.body || !emits_on_every_path(*rule.body, emits)) return std::nullopt;
   std::optional<bool> all;

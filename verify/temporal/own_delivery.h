@@ -24,7 +24,8 @@ bool own_delivery_feed(const PortShape& shape, int c);
 
 // What `predicate` is on every value `rule` delivers, from constants alone: each `emit` of the
 // body (on every path: a path without one delivers the message) is a record whose fields the
-// predicate reads are literals, compared with `==`, `!=`, `and`, `or`, `not`. nullopt otherwise.
+// predicate reads are literals, compared with `==`, `!=`, `and`, `or`, `not`; or the predicate
+// reads nothing of the value (`false`). nullopt otherwise.
 std::optional<bool> constant_outcome(const model::Connection& rule,
                                      const model::BodyExpr& predicate);
 

@@ -126,6 +126,11 @@ TEST(OwnDelivery, ConstantVerbsDecideTheEvents) {
       stmt("(if 40 (call len msg) ((emit 41 (record verb \"take\" pos (call vec3 0.0 0.0 0.0)))) "
            "())")};
   EXPECT_EQ(constant_outcome(maybe, *open.predicate), std::nullopt);
+  // A predicate that reads nothing of the value is that constant even then.
+  std::string err;
+  std::optional<model::BodyExpr> never = model::parse_body_expr("(not true)", &err);
+  ASSERT_TRUE(never) << err;
+  EXPECT_EQ(constant_outcome(maybe, *never), false);
 }
 
 TEST(OwnDelivery, TakesOwnDeliverySpacesTakes) {
