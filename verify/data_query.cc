@@ -282,6 +282,34 @@ void DataQuery::fill_witness(const std::vector<DataSide>& sides, const z3::expr_
   }
 }
 
+DataQuery::PredicateRange DataQuery::predicate_range(const model::Connection& c,
+                                                     const model::BodyExpr& p) {
+  PredicateRange range;
+  if (!predicate_opaque_reason(c, p).empty()) return range;
+  auto found = derived_.find(&p);
+  if (found == derived_.end()) {
+    model::BodyExpr negated;
+    negated.op = model::BodyExpr::Op::Not;
+    negated.type = p.type;
+    negated.args = {p};
+    model::BodyExpr total;
+    total.op = model::BodyExpr::Op::Binary;
+    total.text = "or";
+    total.type = p.type;
+    total.args = {p, negated};
+    found = derived_.emplace(&p, Derived{std::move(negated), std::move(total)}).first;
+  }
+  // `accept p` passes when p has a value and is true; `accept not p`, a value and false; and
+  // `p or not p` fails to pass only when p has no value (Lua evaluates p first either way).
+  auto can = [&](const model::BodyExpr& q, bool negate) {
+    return ask({{&c, &q, negate}}, nullptr, nullptr) != Answer::Unsat;
+  };
+  range.can_true = can(p, false);
+  range.can_false = can(found->second.negated, false);
+  range.can_fail = can(found->second.total, true);
+  return range;
+}
+
 std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Value& value,
                                      const Type& t) {
   SymValue v = constant_value(ctx_, value, t, list_bound_);

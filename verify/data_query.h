@@ -67,6 +67,15 @@ class DataQuery {
   // Sat: a witness; Unsat: the core. Every side must be encodable (opaque_reason empty).
   Answer ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core);
 
+  // What `p` can be on a value `c` delivers (a message `c` accepts): true, false, or without a
+  // value (it reads one that does not exist, and the generated Lua fails). Each is false only
+  // when the solver says it cannot happen; unknown answers, an opaque rule or predicate say
+  // "can". The temporal model of a delivery event reads it (verify/temporal/own_delivery.h).
+  struct PredicateRange {
+    bool can_true = true, can_false = true, can_fail = true;
+  };
+  PredicateRange predicate_range(const model::Connection& c, const model::BodyExpr& p);
+
   // Whether `predicate` (over a delivered value) holds on the concrete `value` of type `t`;
   // nullopt when it cannot be decided (opaque, solver trouble).
   std::optional<bool> holds(const model::BodyExpr& predicate, const Value& value, const Type& t);
@@ -100,6 +109,12 @@ class DataQuery {
       predicates_;
   std::vector<AbstractLength> lengths_;      // norms still abstract (check)
   std::optional<z3::model> repaired_model_;  // the last check's model, when a repair found it
+  // `not p` and `p or not p` per predicate p, asked as predicates of their own (their
+  // addresses key predicates_, so they live as long as the query).
+  struct Derived {
+    model::BodyExpr negated, total;
+  };
+  std::map<const model::BodyExpr*, Derived> derived_;
   std::string unknown_reason_;
   int queries_ = 0;
   Clock::time_point deadline_;  // of the whole run: holds() asks its own solver within it

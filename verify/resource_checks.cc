@@ -158,6 +158,8 @@ void ResourceChecker::decide_order(const ResourceRule& a, const ResourceRule& b,
       s.events.push_back(v + "'");
     }
   }
+  // PortSolver finds an event's variable by binary search: the primed names keep it sorted.
+  std::sort(s.events.begin(), s.events.end());
   ScopedRule& second = s.rules[1];
   second.effective_guard = map_events(second.effective_guard, [&](const std::string& e) {
     auto it = after.find(e);

@@ -127,6 +127,10 @@ golden temporal_short_bound.sarif repo 0 --format sarif tests/verify/temporal_sh
 golden temporal_shapes.txt repo 1 tests/verify/temporal_shapes.spec
 golden temporal_shapes.json repo 1 --format json tests/verify/temporal_shapes.spec
 golden temporal_shapes.sarif repo 1 --format sarif tests/verify/temporal_shapes.spec
+# A port's own delivery events, set only by its deliveries: two properties proved by them, and
+# a counterexample whose replay gives free "cancel" rather than setting e_busy itself.
+golden temporal_own_delivery.txt repo 1 tests/verify/temporal_own_delivery.spec
+golden temporal_own_delivery.json repo 1 --format json tests/verify/temporal_own_delivery.spec
 golden table_clean_put_mutant.txt repo 1 tests/verify/table_clean_put_mutant.spec
 # Under an environment assumption: JSON lists it with the verdict, SARIF prints it in the message.
 golden table_clean_put_mutant.json repo 1 --format json tests/verify/table_clean_put_mutant.spec

@@ -39,7 +39,7 @@ std::optional<TemporalResult> check_absence(const model::App& app, const model::
                                             int bound, z3::context& ctx, DataQuery* data,
                                             std::chrono::steady_clock::time_point deadline,
                                             std::string* err, bool faithful) {
-  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful);
+  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful, data);
   if (!ps) return std::nullopt;
   const PortShape* shape = &ps->shape;
   int r = ps->rule;

@@ -44,6 +44,15 @@ z3::expr Unrolling::armed_before(int on, int off, int k) const {
     std::string name = "armed0!" + std::to_string(on) + "!" + std::to_string(off);
     terms.push_back(start_ == Start::AnyState ? ctx_.bool_const(name.c_str())
                                               : ctx_.bool_val(false));
+    // Where own delivery entries tie the state to the order of the rules' last deliveries
+    // (Unrolling::constrain_own_deliveries_at_start), the monitor is that order's function too:
+    // armed when `on` delivered after `off`'s last delivery (or `off` never delivered).
+    if (start_ == Start::AnyState && has_own_deliveries()) {
+      z3::expr later = off < 0 || off == on ? ctx_.bool_val(true)
+                                            : !delivered_before_start(off) ||
+                                                  order_before_start(off) < order_before_start(on);
+      solver_.add(terms[0] == (delivered_before_start(on) && later));
+    }
   }
   while (static_cast<int>(terms.size()) <= k) {
     int i = static_cast<int>(terms.size()) - 1;

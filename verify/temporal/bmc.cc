@@ -50,8 +50,8 @@ z3::model prefer_readable_times(z3::solver& solver, const Unrolling& u, int n, z
 }  // namespace
 
 std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
-                                            std::string* err, bool faithful) {
-  std::optional<PortShape> shape = port_shape(app, p.port, err);
+                                            std::string* err, bool faithful, DataQuery* data) {
+  std::optional<PortShape> shape = port_shape(app, p.port, err, data);
   if (!shape) return std::nullopt;
   shape->faithful = faithful;
   PropertyShape ps{std::move(*shape)};

@@ -45,8 +45,10 @@ struct PropertyShape {
   int rule = -1;
   int other = -1;
 };
-// `faithful`: the shape's unrolling keeps to runs the replay can make (PortShape::faithful).
+// `faithful`: the shape's unrolling keeps to runs the replay can make (PortShape::faithful);
+// `data` (may be null): what deliveries do to the port's own delivery events (port_shape).
 std::optional<PropertyShape> property_shape(const model::App& app, const model::TemporalProperty& p,
-                                            std::string* err, bool faithful = false);
+                                            std::string* err, bool faithful = false,
+                                            DataQuery* data = nullptr);
 
 }  // namespace arbc::verify::temporal

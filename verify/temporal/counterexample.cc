@@ -1,6 +1,7 @@
 #include "verify/temporal/counterexample.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
@@ -17,7 +18,7 @@ class Builder {
   Builder(const PortShape& shape, const Unrolling& u, const z3::model& m, DataQuery& data)
       : shape_(shape), u_(u), m_(m), data_(data) {
     for (const Entry& e : shape_.entries)
-      if (is_feed(e.owner)) harness_[e.event] = false;
+      if (from_harness(e)) harness_[e.event] = false;
   }
 
   // Appends step k; false (and why_not) when it cannot be replayed.
@@ -35,15 +36,18 @@ class Builder {
   std::string why_not;
 
  private:
-  bool is_feed(int owner) const {
-    return shape_.connections[static_cast<size_t>(owner)]->kind == model::ConnectionKind::Feed;
+  // An entry the test gives with `set`/`unset`: a feed's, except the port's own delivery
+  // events, which the replayed deliveries set as the runtime does.
+  bool from_harness(const Entry& e) const {
+    return shape_.connections[static_cast<size_t>(e.owner)]->kind == model::ConnectionKind::Feed &&
+           !e.own_delivery();
   }
 
   // Whether the feeds' entries make `event` present in state s at time t.
   bool fed(const std::string& event, int s, Nanos t) const {
     for (size_t q = 0; q < shape_.entries.size(); ++q) {
       const Entry& e = shape_.entries[q];
-      if (e.event != event || !is_feed(e.owner)) continue;
+      if (e.event != event || !from_harness(e)) continue;
       Unrolling::EntryValue v = u_.entry(m_, s, q);
       if (v.has && (v.forever || t < v.expiry)) return true;
     }
@@ -69,7 +73,7 @@ class Builder {
       for (size_t q = 0; q < shape_.entries.size(); ++q) {
         const Entry& e = shape_.entries[q];
         Unrolling::EntryValue v = u_.entry(m_, k, q);
-        if (e.event == event && is_feed(e.owner) && v.has && !v.forever)
+        if (e.event == event && from_harness(e) && v.has && !v.forever)
           last = std::max(last, v.expiry);
       }
       lapsed.emplace_back(last, event);
@@ -90,9 +94,32 @@ class Builder {
     }
   }
 
-  // A witness that `c` accepts, once per rule.
-  const DataWitness* witness(const model::Connection& c) {
-    auto found = witnesses_.find(&c);
+  // What step k's delivery does to the own delivery events the rule does not decide alone: a
+  // side asking that the delivered value makes each predicate true (set) or not (not set).
+  std::vector<DataSide> own_delivery_sides(int k, const model::Connection& c) const {
+    std::vector<DataSide> sides;
+    int owner = u_.connection(m_, k);
+    if (!u_.trace_step(m_, k).delivered) return sides;
+    for (size_t q = 0; q < shape_.entries.size(); ++q) {
+      const Entry& e = shape_.entries[q];
+      if (!e.own_delivery() || !e.predicate) continue;
+      const DeliveryOutcome& o = e.on_delivery[static_cast<size_t>(owner)];
+      if (o.can_set + o.can_unset + o.can_keep < 2) continue;
+      bool set = false;
+      for (const std::string& ev : u_.trace_step(m_, k).set) set = set || ev == e.event;
+      sides.push_back({&c, e.predicate, !set});
+    }
+    return sides;
+  }
+
+  // A witness that `c` accepts with `extra` (what its delivery must do to events), once per
+  // rule and extra.
+  const DataWitness* witness(const model::Connection& c, const std::vector<DataSide>& extra) {
+    std::string key = c.destination + "/" + c.name;
+    for (const DataSide& s : extra)
+      key += "|" + std::to_string(reinterpret_cast<uintptr_t>(s.emitted_holds)) +
+             (s.negate ? "-" : "+");
+    auto found = witnesses_.find(key);
     if (found != witnesses_.end()) return &found->second;
     std::string opaque = data_.opaque_reason(c);
     if (!opaque.empty()) {
@@ -100,8 +127,15 @@ class Builder {
       return nullptr;
     }
     DataWitness w;
-    DataCore core;
-    Answer a = data_.ask({{&c, nullptr}}, &w, &core);
+    std::vector<DataSide> sides{{&c, nullptr}};
+    sides.insert(sides.end(), extra.begin(), extra.end());
+    Answer a = data_.ask(sides, &w, nullptr);
+    // No value does what the trace says (it kept an event the feed's Lua may fail to change, or
+    // the predicates are not exact): any accepted message, and the replay judges the trace.
+    if (a == Answer::Unsat && !extra.empty()) {
+      w = DataWitness{};
+      a = data_.ask({{&c, nullptr}}, &w, nullptr);
+    }
     if (a != Answer::Sat) {
       why_not = a == Answer::Unsat
                     ? "'" + c.name + "' accepts no message"
@@ -112,7 +146,7 @@ class Builder {
       why_not = "'" + c.name + "' accepts only with monitor state " + join(w.assumed_state[0]);
       return nullptr;
     }
-    return &witnesses_.emplace(&c, std::move(w)).first->second;
+    return &witnesses_.emplace(key, std::move(w)).first->second;
   }
 
   // A rule's step: a message it accepts; a rejected message that changes nothing is left out.
@@ -127,7 +161,7 @@ class Builder {
       }
       return true;
     }
-    const DataWitness* w = witness(c);
+    const DataWitness* w = witness(c, own_delivery_sides(k, c));
     if (!w) return false;
     Nanos t = u_.time_value(m_, k);
     model::TestStep s;
@@ -157,7 +191,7 @@ class Builder {
   const z3::model& m_;
   DataQuery& data_;
   std::map<std::string, bool> harness_;  // per event the feeds set: present in the test's entry
-  std::map<const model::Connection*, DataWitness> witnesses_;
+  std::map<std::string, DataWitness> witnesses_;  // by rule and what its delivery must do
 };
 
 }  // namespace

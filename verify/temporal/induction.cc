@@ -65,6 +65,7 @@ void Unrolling::constrain_any_start() {
     if (e.activity || e.free_lifetime || !e.lifetime) continue;
     solver_.add(z3::implies(has_[0][q], expiry_[0][q] <= t_[0] + nanos_term(ctx_, *e.lifetime)));
   }
+  if (has_own_deliveries()) constrain_own_deliveries_at_start();
 }
 
 void try_induction(TemporalResult& result, const PortShape& shape, const ViolationAt& violation,

@@ -90,7 +90,7 @@ std::optional<TemporalResult> check_response(const model::App& app,
                                              z3::context& ctx, DataQuery* data,
                                              std::chrono::steady_clock::time_point deadline,
                                              std::string* err, bool faithful) {
-  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful);
+  std::optional<PropertyShape> ps = property_shape(app, p, err, faithful, data);
   if (!ps) return std::nullopt;
   const PortShape* shape = &ps->shape;
   if (!p.event.empty() && !sets_into(*shape, p.event)) {

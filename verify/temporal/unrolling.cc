@@ -5,6 +5,7 @@
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
+#include "verify/temporal/own_delivery.h"
 
 namespace arbc::verify::temporal {
 namespace {
@@ -63,7 +64,7 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
 z3::expr nanos_term(z3::context& ctx, Nanos d) { return ctx.int_val(int64_t{d.count()}); }
 
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
-                                    std::string* err) {
+                                    std::string* err, DataQuery* data) {
   if (!app.find_arbitrated(port)) {
     *err = port + " is not an arbitrated port of app " + app.name;
     return std::nullopt;
@@ -92,6 +93,7 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
       if (!contains(c.sets, e) && e != c.activity_event)
         shape.entries.push_back(entry_of(app, c, e, static_cast<int>(owner)));
   }
+  add_own_deliveries(app, shape, data);
   shape.events.assign(events.begin(), events.end());
   if (!add_port_assumptions(app, shape, err)) return std::nullopt;
   return shape;
@@ -143,7 +145,7 @@ void Unrolling::add_step(int k) {
     unset_[k].push_back(ctx_.bool_const(("unset" + e).c_str()));
   }
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
-    if (!shape_.entries[q].activity) add_entry_step(q, k);
+    if (!shape_.entries[q].activity && !shape_.entries[q].own_delivery()) add_entry_step(q, k);
   }
   del_.emplace_back();
   for (size_t c = 0; c < shape_.connections.size(); ++c) {
@@ -151,6 +153,8 @@ void Unrolling::add_step(int k) {
     z3::expr d = ctx_.bool_const(("del!" + std::to_string(c) + s).c_str());
     z3::expr selected = run_[k] == static_cast<int>(c) && acc_[k] && guard(conn.constraint, k);
     if (conn.kind != model::ConnectionKind::Rule) selected = ctx_.bool_val(false);
+    // The feed of the port's own delivery events runs inside its deliveries only.
+    if (own_delivery_feed(shape_, static_cast<int>(c))) solver_.add(run_[k] != static_cast<int>(c));
     if (conn.throttle) {  // dropped while t < last delivery + period (runtime/message_path.cc)
       z3::expr period = nanos_term(ctx_, *conn.throttle);
       for (int i = 0; i < k; ++i)
@@ -165,7 +169,9 @@ void Unrolling::add_step(int k) {
   }
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     if (shape_.entries[q].activity) add_activity_step(q, k);
+    if (shape_.entries[q].own_delivery()) add_own_delivery_step(q, k);
   }
+  add_excluded_outcomes(k);
   add_assumptions(k);
   if (shape_.faithful) add_faithful(k);
 }
@@ -183,6 +189,13 @@ void Unrolling::add_entry_step(size_t q, int k) {
   solver_.add(!(set && unset));
   if (must_set && !must_unset) solver_.add(z3::implies(running && acc_[k], set));
   if (must_unset && !must_set) solver_.add(z3::implies(running && acc_[k], unset));
+  add_entry_update(q, k);
+}
+
+// State k+1 of entry q: as step k's set or unset leaves it (with its lifetime from t_k).
+void Unrolling::add_entry_update(size_t q, int k) {
+  const Entry& e = shape_.entries[q];
+  z3::expr set = set_[k][q], unset = unset_[k][q];
   const z3::expr &h0 = has_[k][q], &f0 = forever_[k][q], &x0 = expiry_[k][q];
   const z3::expr &h1 = has_[k + 1][q], &f1 = forever_[k + 1][q], &x1 = expiry_[k + 1][q];
   solver_.add(h1 == z3::ite(set, ctx_.bool_val(true), z3::ite(unset, ctx_.bool_val(false), h0)));
@@ -212,14 +225,14 @@ void Unrolling::add_activity_step(size_t q, int k) {
   }
 }
 
-// `event` is present at step k's decision: the entries as accept left them (activity entries
-// as before the step: they change only after the decision), at time t_k.
+// `event` is present at step k's decision: the entries as accept left them (activity and own
+// delivery entries as before the step: they change only after the decision), at time t_k.
 z3::expr Unrolling::present(const std::string& event, int k, const z3::expr& at) const {
   z3::expr any = ctx_.bool_val(false);
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     const Entry& e = shape_.entries[q];
     if (e.event != event) continue;
-    size_t s = static_cast<size_t>(e.activity ? k : k + 1);
+    size_t s = static_cast<size_t>(e.activity || e.own_delivery() ? k : k + 1);
     any = any || (has_[s][q] && (forever_[s][q] || at < expiry_[s][q]));
   }
   return any;
@@ -297,9 +310,14 @@ TraceStep Unrolling::trace_step(const z3::model& m, int k) const {
   step.accepted = accepted(m, k);
   step.delivered = m.eval(del_[k][static_cast<size_t>(c)], true).is_true();
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
-    if (shape_.entries[q].owner != c) continue;
-    if (m.eval(set_[k][q], true).is_true()) step.set.push_back(shape_.entries[q].event);
-    if (m.eval(unset_[k][q], true).is_true()) step.unset.push_back(shape_.entries[q].event);
+    // An own delivery event changes in the step of the delivery that sets it; its unset is
+    // shown only where there was an entry to remove (the runtime traces no other).
+    const Entry& e = shape_.entries[q];
+    if (e.owner != c && !e.own_delivery()) continue;
+    if (m.eval(set_[k][q], true).is_true()) step.set.push_back(e.event);
+    if (m.eval(unset_[k][q], true).is_true() &&
+        (!e.own_delivery() || m.eval(has_[static_cast<size_t>(k)][q], true).is_true()))
+      step.unset.push_back(e.event);
   }
   return step;
 }

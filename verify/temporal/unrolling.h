@@ -16,7 +16,18 @@
 #include "core/app_model.h"
 #include "verify/report.h"
 
+namespace arbc::verify {
+class DataQuery;
+}
+
 namespace arbc::verify::temporal {
+
+// What one delivery can do to an own delivery entry (verify/temporal/own_delivery.h): set it
+// (the predicate holds on the value), unset it (it does not, and the event has no `for`), or
+// keep it as it was (the predicate is false with `for`, or the feed's Lua fails).
+struct DeliveryOutcome {
+  bool can_set = true, can_unset = true, can_keep = true;
+};
 
 // One entry of the container: `event` as set by connection `owner`.
 struct Entry {
@@ -27,6 +38,12 @@ struct Entry {
   bool free_lifetime = false;     // `set e for D` in rule code: D is not in the model
   // A feed's derived event whose predicate is the constant true or false (PortShape::faithful).
   std::optional<bool> constant_predicate;
+  // A delivery event of the port read by the port itself (verify/temporal/own_delivery.h): per
+  // connection (as PortShape::connections), what its delivery can do; empty for any other
+  // entry. The owner is the event's feed, which takes no step of its own.
+  std::vector<DeliveryOutcome> on_delivery;
+  const model::BodyExpr* predicate = nullptr;  // the event's, over the delivered value
+  bool own_delivery() const { return !on_delivery.empty(); }
 };
 
 // What the unrolling needs of the port, read from the model once.
@@ -49,11 +66,19 @@ struct PortShape {
   // accepts it; a derived event with a constant predicate follows it. Sound proofs never use
   // it: the runtime can interleave more (a module that publishes while it takes a delivery).
   bool faithful = false;
+  // A combination of own delivery events that no delivery of `rule` gives: those `sets` says
+  // set, the others not (verify/temporal/own_delivery.cc).
+  struct ExcludedOutcome {
+    int rule = -1;
+    std::vector<std::pair<size_t, bool>> sets;  // entry index, set by the delivery
+  };
+  std::vector<ExcludedOutcome> excluded_outcomes;
 };
 
-// The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`.
+// The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`. `data`
+// (may be null) tells what the port's deliveries do to its own delivery events.
 std::optional<PortShape> port_shape(const model::App& app, const std::string& port,
-                                    std::string* err);
+                                    std::string* err, DataQuery* data = nullptr);
 
 // Adds to `shape` the app's assumptions about its port; false and *err when one names a rule
 // the port does not have (an app.json written by hand: bad input). verify/temporal/assumption.cc
@@ -133,6 +158,13 @@ class Unrolling {
   void add_step(int k);
   void add_entry_step(size_t q, int k);
   void add_activity_step(size_t q, int k);
+  void add_entry_update(size_t q, int k);       // state k+1 of entry q from its set/unset
+  void add_own_delivery_step(size_t q, int k);  // own_delivery.cc
+  void add_excluded_outcomes(int k);            // PortShape::excluded_outcomes at step k
+  void constrain_own_deliveries_at_start();     // what any state says of them (own_delivery.cc)
+  // The place of connection c's last delivery before step 1 among the others' (any state).
+  z3::expr order_before_start(int c) const;
+  bool has_own_deliveries() const;
   void start_state();                  // the state before step 1 (unrolling.cc)
   void add_any_start_entry(size_t q);  // one entry of any state (induction.cc)
   void constrain_any_start();          // what any state says of times before t_1 (induction.cc)

@@ -1,5 +1,6 @@
 """Random valid specs over the whole language (docs/language.md): modules and ports of every
 type, events with lifetimes, `events from` feeds, derived events with and without `for`,
+delivery events over an arbitrated port (read by its own rules or another port's),
 arbitrated ports with and without `by priority`, `otherwise`, bodies (gen_body.py), `connect`,
 `exclusive` / `invariant`, and the claims the proof makes (gen_claims.py)."""
 from .spec import (BOOL, INT, FLOAT, STRING, VEC3, list_of, Spec, Module, Decl, Arbitrate, Rule,
@@ -37,6 +38,7 @@ class SpecGen:
         self.make_events()
         ports = r.sample(self.dests, r.randint(1, min(3, len(self.dests))))
         rest = [d for d in self.dests if d not in ports]
+        self.make_delivery_events(ports)
         for p in ports:
             self.spec.decls.append(self.arbitrate(p))
         for d in rest:
@@ -134,6 +136,24 @@ class SpecGen:
             self.spec.decls.append(Decl("event", f"event {', '.join(names)}" +
                                         (f" lifetime {life}" if life else "") + ";",
                                         {"events": names, "lifetime": life}))
+
+    def make_delivery_events(self, ports):
+        """`event e = M.p : PRED [for D];` over an arbitrated port (docs/language.md#delivery-events):
+        the runtime sets it at each delivery into M.p; the guards may read it in M.p itself
+        (the model checker then models it exactly) or in another port."""
+        if "delivery-event" in self.avoid:
+            return
+        for i in range(self.rng.randint(0, 2)):
+            port = self.rng.choice(ports)
+            msg = port.split(".")[1]
+            pred = BodyGen(self.rng, self.consts, self.counter, self.avoid).exprs.gen(
+                BOOL, {msg: self.spec.port_type(port)}, 3, pure=True)
+            life = self.rng.choice(["", "", "100ms", "300ms", "1s"])
+            n = f"o{i + 1}"
+            self.fed.append(n)
+            self.spec.decls.append(Decl("derived", f"event {n} = {port} : {pred.text()}" +
+                                        (f" for {life}" if life else "") + ";",
+                                        {"event": n, "source": port, "pred": pred, "for": life}))
 
     def arbitrate(self, port):
         r = self.rng

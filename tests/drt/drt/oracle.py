@@ -122,8 +122,11 @@ class Oracle:
     def sources(self, spec, model):
         """Every out-port a connection reads: port -> (type, status flags or None)."""
         flags = {d.info["port"]: list(d.info["flags"].values()) for d in spec.decls_of("feed")}
+        inputs = {f"{m.name}.{p}" for m in spec.modules for d, p, _ in m.ports if d == "in"}
         out = {}
         for c in model.connections.values():
+            if c.source in inputs:
+                continue  # a delivery event's feed: the runtime runs it at each delivery
             out[c.source] = (spec.port_type(c.source), flags.get(c.source))
         return out
 
