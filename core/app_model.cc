@@ -4,6 +4,14 @@
 
 namespace arbc::model {
 
+std::string assumption_text(const Assumption& a) {
+  if (a.absent_for)
+    return "assume not " + a.event + " for " + duration_literal(*a.absent_for) + " after " +
+           a.after;
+  return "assume " + a.event + " only after " + a.after +
+         (a.until.empty() ? "" : " until " + a.until);
+}
+
 std::string temporal_property_text(const TemporalProperty& p) {
   switch (p.kind) {
     case TemporalProperty::Kind::Spacing:

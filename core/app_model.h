@@ -206,6 +206,10 @@ struct Assumption {
   std::optional<Nanos> absent_for;  // the timed form (then `until` is empty)
 };
 
+// An environment assumption as a spec writes it, without `;`, for verify's verdicts and the
+// runtime's checks.
+std::string assumption_text(const Assumption& a);
+
 // `resource NAME { M.p, ... } [when PRED];`: at most one of the ports receives a command that
 // uses the resource, for one message or two (docs/checks.md#resource).
 struct Resource {

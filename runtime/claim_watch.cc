@@ -13,14 +13,6 @@ std::string group_text(const model::ExclusiveGroup& g) {
   return "exclusive { " + join(g.events, ", ") + " }";
 }
 
-std::string assumption_text(const model::Assumption& a) {
-  if (a.absent_for)
-    return "assume not " + a.event + " for " + duration_literal(*a.absent_for) + " after " +
-           a.after;
-  return "assume " + a.event + " only after " + a.after +
-         (a.until.empty() ? "" : " until " + a.until);
-}
-
 std::string state_text(const std::set<std::string>& state) {
   return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
 }
@@ -131,12 +123,12 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
   auto at = [&] { return " in " + port + " at " + duration_literal(r.t); };  // only to report
   if (a.absent_for) {
     if (present && s.last_after && r.t < later(*s.last_after, *a.absent_for))
-      violated(assumption_text(a), r.t,
+      violated(model::assumption_text(a), r.t,
                a.event + " present" + at() + ", " + duration_literal(r.t - *s.last_after) +
                    " after '" + a.after + "' delivered",
                true);
   } else if (present && !s.armed) {
-    violated(assumption_text(a), r.t,
+    violated(model::assumption_text(a), r.t,
              a.event + " present" + at() + " with no delivery of '" + a.after + "'" +
                  (a.until.empty() ? "" : " since the last of '" + a.until + "'"),
              true);

@@ -6,14 +6,6 @@
 
 namespace arbc::verify::temporal {
 
-std::string assumption_words(const model::Assumption& a) {
-  if (a.absent_for)
-    return "assume not " + a.event + " for " + duration_literal(*a.absent_for) + " after " +
-           a.after;
-  return "assume " + a.event + " only after " + a.after +
-         (a.until.empty() ? "" : " until " + a.until);
-}
-
 std::vector<model::Assumption> assumptions_about(const model::App& app, const std::string& port) {
   std::vector<model::Assumption> about;
   for (const model::Assumption& a : app.assumptions)

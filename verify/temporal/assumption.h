@@ -15,9 +15,6 @@
 
 namespace arbc::verify::temporal {
 
-// The assumption as the spec states it: "assume e_taken only after take until put".
-std::string assumption_words(const model::Assumption& a);
-
 // The assumptions of `app` about `port`, in spec order.
 std::vector<model::Assumption> assumptions_about(const model::App& app, const std::string& port);
 

@@ -50,7 +50,7 @@ Confirmation confirm_violation(const TestReplayer* replayer, TemporalResult& r,
   for (const model::Assumption& a : r.assumptions) {
     std::string broken;
     if (!replay_respects(a, *records, &broken)) {
-      *seen = "the replay breaks the assumption `" + assumption_words(a) + "`: " + broken;
+      *seen = "the replay breaks the assumption `" + model::assumption_text(a) + "`: " + broken;
       return Confirmation::NotShown;
     }
   }

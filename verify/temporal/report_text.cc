@@ -46,7 +46,8 @@ std::string environment_text(const TemporalResult& r, bool plain) {
   for (const model::Assumption& a : r.assumptions) {
     std::string where = a.loc.line ? " (line " + std::to_string(a.loc.line) + ")" : "";
     out += std::string(plain ? "" : "    ") +
-           "assuming the environment as the spec states: " + assumption_words(a) + where + "\n";
+           "assuming the environment as the spec states: " + model::assumption_text(a) + where +
+           "\n";
   }
   return out;
 }
