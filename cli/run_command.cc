@@ -145,7 +145,7 @@ struct RunArgs {
   bool no_verify = false;
   RunOptions options;
   std::string report_path;
-  std::string runtime_checks = "warn";  // --runtime-checks: fail, warn or off
+  std::string runtime_checks = "fail";  // --runtime-checks: fail, warn or off
   TransportFlags transport;             // --transport, --host, --mediate, ... (cli/run_transport.h)
   RunStandIns stand_ins;                // --inputs, --stub, --stub-rate, --diff
 };
@@ -172,7 +172,7 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   cli.add_option("--runtime-checks", a.runtime_checks,
                  "what a run that breaks a proved property or an assumption of the proof does: "
-                 "fail (exit 3), warn (default: said, verdict kept) or off")
+                 "fail (exit 3, the default), warn (said, verdict kept) or off")
       ->check(CLI::IsMember({"fail", "warn", "off"}));
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
@@ -270,10 +270,13 @@ int run_command(std::span<char*> args) {
   if (proved != kExitOk) return proved;
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
-  ClaimWatch claims(app);  // what the proof proved and assumed, checked on every record
+  // What the proof proved and assumed, checked on every record of the ports mediated here.
+  ClaimWatch claims(app, options.mediate ? *options.mediate : options.host, options.host);
   bool watching = !claims.empty() && a.runtime_checks != "off";
-  if (watching)
+  if (watching) {
     options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+    options.on_start = [&claims](Nanos t) { claims.start(t); };
+  }
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,

@@ -45,7 +45,15 @@ void port_table(const model::App& app, const std::string& port, std::ostringstre
   if (!p) return;
   out << "\n\n**Decision table of " << code(port) << "**"
       << (p->by_priority ? " (by priority)" : "") << "\n\n";
-  docs::decision_table_markdown(docs::decision_table(app, *p), out);
+  docs::DecisionTable table = docs::decision_table(app, *p);
+  // A hover is read in a small window: past 16 states, only those that select a rule (arbc docs
+  // prints them all).
+  size_t all = table.rows.size();
+  if (all > 16)
+    std::erase_if(table.rows, [](const docs::DecisionRow& r) { return r.selected.empty(); });
+  docs::decision_table_markdown(table, out);
+  if (table.rows.size() < all)
+    out << "\n" << all - table.rows.size() << " of the " << all << " states select no rule.\n";
 }
 
 void describe_event(const Document& doc, const SymbolIndex& ix, const Symbol& s,

@@ -34,17 +34,7 @@ class Builder {
     for (const ast::ArbitrateDecl& a : spec_.arbitrations) arbitrate(a);
     for (const ast::ConnectDecl& c : spec_.connects) connect(c);
     for (const ast::AssertDecl& a : spec_.asserts) assertion(a);
-    for (const ast::TemporalDecl& n : spec_.temporal) {
-      if (n.rule_decl) ix_.add_occurrence(rule_key(n.rule_decl), name_loc(n.rule_loc, n.rule));
-      if (n.other_decl) ix_.add_occurrence(rule_key(n.other_decl), name_loc(n.other_loc, n.other));
-      // An absence's event, a response's trigger event; a port for a stability or a response
-      // the port answers.
-      if ((n.rule_decl || n.port_decl) && !n.event.empty())
-        ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
-      expr(n.condition.get());    // a response's `while`
-      expr(n.window.expr.get());  // `within D`: D may be a constant
-      if (n.port_decl) port_ref(n.port);
-    }
+    for (const ast::TemporalDecl& n : spec_.temporal) temporal(n);
     for (const ast::AssumeDecl& a : spec_.assumptions) {
       expr(a.absent_for.expr.get());  // `for D`
       if (!a.after_decl) continue;    // reported: its names may not resolve
@@ -187,6 +177,19 @@ class Builder {
 
   // A `test`: its rule, ports, events and the names in its values and times. A test's
   // `set` is not a rule's: set_by stays the rules'.
+  // A property over time, declared or expected by a test (`expect only put after take;`).
+  void temporal(const ast::TemporalDecl& n) {
+    if (n.rule_decl) ix_.add_occurrence(rule_key(n.rule_decl), name_loc(n.rule_loc, n.rule));
+    if (n.other_decl) ix_.add_occurrence(rule_key(n.other_decl), name_loc(n.other_loc, n.other));
+    // An absence's event, a response's trigger event; a port for a stability or a response
+    // the port answers.
+    if ((n.rule_decl || n.port_decl) && !n.event.empty())
+      ix_.add_occurrence("event:" + n.event, name_loc(n.event_loc, n.event));
+    expr(n.condition.get());    // a response's `while`
+    expr(n.window.expr.get());  // `within D`: D may be a constant
+    if (n.port_decl) port_ref(n.port);
+  }
+
   void test(const ast::TestDecl& t) {
     if (t.on_rule) ix_.add_occurrence(rule_key(t.on_rule), name_loc(t.on_loc, t.on));
     for (const ast::TestStep& s : t.steps) {
@@ -203,6 +206,7 @@ class Builder {
         ix_.add_occurrence(rule_key(x.rule_decl), name_loc(x.rule_loc, x.rule));
       if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing)
         port_ref(x.port);
+      if (x.property) temporal(*x.property);
       expr(x.value.get());
       if (x.window.present) {
         expr(x.window.from.expr.get());

@@ -1,5 +1,7 @@
 #include "runtime/claim_watch.h"
 
+#include <algorithm>
+
 #include "core/constraint.h"
 #include "core/duration_literal.h"
 #include "core/instant.h"
@@ -19,25 +21,43 @@ std::string state_text(const std::set<std::string>& state) {
 
 }  // namespace
 
-ClaimWatch::ClaimWatch(const model::App& app) : app_(app) {
-  for (const model::Connection& c : app.connections)
+ClaimWatch::ClaimWatch(const model::App& app, const ModuleSet& mediated, const ModuleSet& hosted)
+    : app_(app) {
+  auto module = [](const std::string& port) {  // of "Module.port"
+    return std::string_view(port).substr(0, port.find('.'));
+  };
+  auto here = [&](const std::string& port) { return mediated.contains(module(port)); };
+  std::set<std::string> read_here;  // sources of connections into ports mediated here
+  for (const model::Connection& c : app.connections) {
+    if (!here(c.destination)) continue;
+    read_here.insert(c.source);
     if (c.kind == model::ConnectionKind::Rule) rule_port_[c.name] = c.destination;
-  for (const model::ArbitratedPort& p : app.arbitrated_ports) boxes_[p.port];
+  }
+  for (const model::ArbitratedPort& p : app.arbitrated_ports)
+    if (here(p.port)) boxes_[p.port], decides_ = true;
   for (const model::TemporalProperty& p : app.temporal) {
+    if (!here(p.port)) continue;
     properties_of_port_[p.port].push_back(properties_.size());
     properties_.push_back(std::make_unique<PropertyWatch>(p, rules_into(app, p.port)));
     property_text_.push_back(model::temporal_property_text(p));
     property_broken_.push_back(false);
   }
-  for (const model::Assumption& a : app.assumptions) assumed_.push_back({&a, false, std::nullopt});
-  for (const model::SourceRate& r : app.rates) rates_.push_back({&r, Nanos{0}});
+  for (const model::Assumption& a : app.assumptions)
+    if (here(a.port)) assumed_.push_back({&a, false, std::nullopt});
+  for (const model::SourceRate& r : app.rates)
+    if (read_here.count(r.port))
+      rates_.push_back({&r, Nanos{0}, false, !hosted.contains(module(r.port))});
+}
+
+void ClaimWatch::start(Nanos t) {
+  for (Rate& rate : rates_) rate.last = std::max(rate.last, t);
 }
 
 bool ClaimWatch::empty() const { return size() == 0; }
 
 size_t ClaimWatch::size() const {
-  return properties_.size() + assumed_.size() + rates_.size() + app_.exclusive_groups.size() +
-         app_.invariants.size();
+  return properties_.size() + assumed_.size() + rates_.size() +
+         (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
 }
 
 void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, bool assumption) {
@@ -60,7 +80,7 @@ void ClaimWatch::observe(const TraceRecord& r) {
   const std::string* port = nullptr;  // the arbitrated port the record is about, if any
   if (r.kind == TraceKind::Publish) {
     for (Rate& rate : rates_)
-      if (rate.r->port == r.port) rate.last = r.t;
+      if (rate.r->port == r.port) rate.last = r.t, rate.awaiting_first = false;
   } else if (r.kind == TraceKind::Event) {
     auto box = boxes_.find(r.port);
     if (box != boxes_.end()) box->second.apply(r), port = &box->first;
@@ -142,7 +162,7 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
 void ClaimWatch::rate_gaps(Nanos t) {
   for (Rate& rate : rates_) {
     Nanos deadline = later(rate.last, rate.r->period);
-    if (t <= deadline || rate.broken) continue;
+    if (t <= deadline || rate.broken || rate.awaiting_first) continue;
     rate.broken = true;
     violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
              "nothing from " + rate.r->port + " between " + duration_literal(rate.last) + " and " +
@@ -153,6 +173,13 @@ void ClaimWatch::rate_gaps(Nanos t) {
 
 void ClaimWatch::finish(Nanos end) {
   rate_gaps(end);
+  for (Rate& rate : rates_) {
+    if (!rate.awaiting_first || end <= later(rate.last, rate.r->period)) continue;
+    violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), end,
+             "nothing from " + rate.r->port + " from the start (" + duration_literal(rate.last) +
+                 ") to the end of the run (" + duration_literal(end) + "): it never published",
+             true);
+  }
   for (size_t i = 0; i < properties_.size(); ++i) {
     if (property_broken_[i]) continue;
     properties_[i]->finish(end);

@@ -9,6 +9,9 @@
 //     start).
 // Each claim or assumption is reported once, at the first instant a run breaks it: from there
 // on the proof no longer covers the run.
+// Only the ports this process mediates are watched: decisions are made where a port is
+// mediated, so a process that mediates nothing (the world of a split run) watches nothing, and
+// a rate is watched where a mediated port reads its source.
 #pragma once
 
 #include <map>
@@ -24,6 +27,7 @@
 #include "runtime/trace.h"
 #include "runtime/trace_container.h"
 #include "runtime/trace_record.h"
+#include "runtime/transport.h"
 
 namespace arbc {
 
@@ -36,12 +40,17 @@ struct ClaimViolation {
 
 class ClaimWatch {
  public:
-  explicit ClaimWatch(const model::App& app);
+  // `mediated`: the modules whose input ports this process mediates; `hosted`: those whose
+  // plugins run here (runtime.h). A source hosted elsewhere starts when it first speaks.
+  explicit ClaimWatch(const model::App& app, const ModuleSet& mediated = ModuleSet::everything(),
+                      const ModuleSet& hosted = ModuleSet::everything());
 
   // Whether the app states anything to watch (a run without claims pays nothing).
   bool empty() const;
   // How many claims and assumptions it watches.
   size_t size() const;
+  // The run's time starts at `t` (after a transport's wait for peers): rates count from there.
+  void start(Nanos t);
   void observe(const TraceRecord& r);
   // observe(r), and a breach line in `trace` for each claim r showed broken (Trace::Watch).
   void watch(const TraceRecord& r, Trace& trace);
@@ -58,8 +67,12 @@ class ClaimWatch {
   };
   struct Rate {
     const model::SourceRate* r;
-    Nanos last{0};        // the start counts: `given` says "from the start"
+    Nanos last{0};        // the start counts (start()): `given` says "from the start"
     bool broken = false;  // reported: no longer judged (a run breaks a claim once)
+    // A source in another process: its own start is its first message (a mediator started
+    // before the programs it mediates is not owed their messages while they start up); one
+    // that never speaks is reported at the end.
+    bool awaiting_first = false;
   };
 
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
@@ -70,6 +83,7 @@ class ClaimWatch {
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
+  bool decides_ = false;  // some arbitrated port is mediated here: groups and invariants count
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;
   std::vector<bool> property_broken_;  // reported: that property is no longer observed

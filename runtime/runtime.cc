@@ -102,6 +102,7 @@ void Runtime::start() {
   started_ = true;                        // from here on setTrigInterval schedules at once
   transport_->start(options_.interrupt);  // may wait for peers: the run's time starts after
   start_time_ = now();
+  if (options_.on_start) options_.on_start(start_time_);
   if (options_.unknown_until_fed) collect_unknown_events();
   collect_feedback_events();
   if (options_.report_silent_lapses) watch_lapses(std::chrono::milliseconds(100));

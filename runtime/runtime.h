@@ -79,6 +79,9 @@ struct RunOptions {
   // Not empty: every trace record is also given to it, on the thread that makes it (the runtime
   // checks of `arbc run`, runtime/claim_watch.h).
   Trace::Watch trace_watch;
+  // Not empty: called once with the instant the run's time starts, after the transport's wait
+  // for peers (the start that `given M.p every D` counts from).
+  std::function<void(Nanos)> on_start;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks

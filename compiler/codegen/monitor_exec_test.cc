@@ -104,7 +104,9 @@ TEST_F(TableCleanTest, StatusFeedSetsListedFlagsAndUnsetsTheOthers) {
 TEST_F(TableCleanTest, TakePicksTheClosestReachableObjectOnlyWhenSelected) {
   ASSERT_EQ(app_.error(), "");
   auto& take = app_.monitor("PickAndPlace.cmd", "take");
-  EXPECT_EQ(take.constraint(), "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling");
+  EXPECT_EQ(
+      take.constraint(),
+      "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling and not e_arm_picking");
   // Nothing in the container yet: e_arm_idle is absent, so take is not selected.
   EXPECT_EQ(take.deliver(kObjectsFarAndNear).reason, "not-selected");
   app_.monitor("PickAndPlace.cmd", "feed_PickAndPlace_status").deliver("{ \"e_arm_idle\" }");
@@ -118,6 +120,11 @@ TEST_F(TableCleanTest, TakePicksTheClosestReachableObjectOnlyWhenSelected) {
   EXPECT_FALSE(far.accepted);
   EXPECT_EQ(far.reason, "rejected");
   EXPECT_EQ(take.deliver("{}").reason, "rejected");  // `accept len(objects) > 0` guards min_by
+  // The take's delivery sets e_take_open and e_arm_picking (the port's own delivery events):
+  // no second take, and no put, within the arm's second.
+  app_.monitor("PickAndPlace.cmd", "feed_PickAndPlace_cmd").deliver(r.value);
+  EXPECT_EQ(take.deliver(kObjectsFarAndNear).reason, "not-selected");
+  app_.set_time(1.0);
   // Holding an object: take is no longer selected, put is.
   app_.monitor("PickAndPlace.cmd", "feed_PickAndPlace_status")
       .deliver("{ \"e_taken\", \"e_arm_idle\" }");

@@ -52,8 +52,9 @@ TEST(Frontend, TableCleanChecksAndIsAnnotated) {
   const ast::ArbitrateDecl* pick = spec.find_arbitration("PickAndPlace.cmd");
   ASSERT_TRUE(pick);
   EXPECT_EQ(pick->rules[0].name, "take");
-  EXPECT_EQ(pick->rules[0].constraint.to_string(),
-            "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling");
+  EXPECT_EQ(
+      pick->rules[0].constraint.to_string(),
+      "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling and not e_arm_picking");
   EXPECT_EQ(pick->rules[0].message_name, "objects");
   EXPECT_EQ(pick->rules[0].source.port_decl->name, "objects");
   EXPECT_EQ(pick->rules[0].port, pick);

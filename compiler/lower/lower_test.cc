@@ -43,7 +43,7 @@ TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakAndDelivery
   ASSERT_TRUE(c.ok);
   const model::App& app = c.lowered->app;
   EXPECT_EQ(app.name, "table_clean");
-  ASSERT_EQ(app.connections.size(), 16u);
+  ASSERT_EQ(app.connections.size(), 17u);
   int rules = 0, feeds = 0;
   for (const model::Connection& conn : app.connections) {
     if (conn.kind == model::ConnectionKind::Rule) ++rules;
@@ -56,14 +56,17 @@ TEST(LowerTest, TableCleanHasThePapersThirteenConnectionsPlusTheSpeakAndDelivery
     EXPECT_EQ(conn.monitor, "monitors/" + conn.destination + "__" + conn.name + ".lua");
   }
   EXPECT_EQ(rules, 6);
-  // C3, C5, C6, C7, C11, C12, C13, FaceDetector into Speak, and the two delivery events' feeds
-  EXPECT_EQ(feeds, 10);
+  // C3, C5, C6, C7, C11, C12, C13, FaceDetector into Speak, and the three delivery events'
+  // feeds (PickAndPlace.cmd into PullObject.cmd and into itself, PullObject.cmd into
+  // PickAndPlace.cmd)
+  EXPECT_EQ(feeds, 11);
   const model::Connection* take = find_connection(app, "PickAndPlace.cmd", "take");
   ASSERT_NE(take, nullptr);
-  EXPECT_EQ(take->constraint.to_string(),
-            "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling");
+  EXPECT_EQ(
+      take->constraint.to_string(),
+      "not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling and not e_arm_picking");
   EXPECT_FALSE(take->generated);
-  EXPECT_EQ(take->loc.line, 37);
+  EXPECT_EQ(take->loc.line, 40);
   // A delivery event (docs/language.md#delivery-events): a feed from what PickAndPlace.cmd
   // delivers into the port that reads it, and its predicate in the model for the resource check.
   const model::Connection* picking =

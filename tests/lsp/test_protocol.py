@@ -452,10 +452,11 @@ class Hover(Session):
     def test_a_rule_shows_its_effective_guard_and_decision_table(self):
         text = self.hover("take: from")
         self.assertIn("**rule** `take` into `PickAndPlace.cmd`", text)
-        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling`",
-                      text)
-        self.assertIn("| e_arm_idle | e_arm_pulling | e_pull_idle | e_taken | selects |", text)
-        self.assertIn("| 1 | 0 | 1 | 0 | take |", text)
+        self.assertIn("effective guard: `not e_taken and e_arm_idle and e_pull_idle and "
+                      "not e_arm_pulling and not e_arm_picking`", text)
+        self.assertIn("| e_arm_idle | e_arm_picking | e_arm_pulling | e_pull_idle | e_take_open "
+                      "| e_taken | selects |", text)
+        self.assertIn("| 1 | 0 | 0 | 1 | 0 | 0 | take |", text)
 
     def test_a_by_priority_rule_shows_its_activity_event(self):
         self.assertIn("act_track", self.hover("track:  from"))
@@ -533,7 +534,7 @@ class Editing(Session):
         self.assertEqual(len([b for b in builtins if b in ("min", "max", "norm", "dist")]), 4)
 
     def test_a_did_you_mean_quick_fix(self):
-        start = position_of(self.text, "e_arm_idle and e_pull_idle and not e_arm_pulling {")
+        start = position_of(self.text, "e_arm_idle and e_pull_idle and not e_arm_pulling and")
         end = dict(start, character=start["character"] + len("e_arm_idle"))
         self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": "e_arm_idel"}])
         diags = self.c.wait_diagnostics(self.uri, version=2)
@@ -582,6 +583,7 @@ class Editing(Session):
         renamed = apply_edits(self.text, edit["changes"][self.uri])
         self.assertIn("grab: from", renamed)
         self.assertIn("PickAndPlace.cmd: grab -> not e_taken", renamed)
+        self.assertIn("expect only put after grab;", renamed)  # a test's property too
         self.assertEqual(check_json(renamed), [])
 
     def test_rename_a_rule_reaches_properties_over_time(self):
@@ -692,8 +694,8 @@ class Verification(Session):
     verify = True
 
     def test_a_counterexample_lands_on_both_rules(self):
-        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling {",
-                                 "when e_arm_idle and e_pull_idle and not e_arm_pulling {", 1)
+        text = self.text.replace("when not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling",
+                                 "when e_arm_idle and e_pull_idle and not e_arm_pulling", 1)
         self.c.open(self.uri, text)
         diags = self.c.wait_diagnostics(
             self.uri, accept=lambda ds: any(d.get("code") == "exclusive" for d in ds), timeout=120)
@@ -704,7 +706,8 @@ class Verification(Session):
         for d in exclusive:
             self.assertIn("rules 'take' and 'put' of PickAndPlace.cmd can both be selected",
                           d["message"])
-            self.assertIn("event state: e_arm_idle, e_pull_idle, e_taken present", d["message"])
+            self.assertIn("event state: e_arm_idle, e_pull_idle, e_take_open, e_taken present",
+                          d["message"])
 
     def test_a_resource_finding_lands_on_each_rule_in_its_own_port(self):
         # Both ports have a rule 'move'. e_a is fed into each port by a feed of its own, so it is

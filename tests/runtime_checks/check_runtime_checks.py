@@ -59,11 +59,17 @@ def case_exclusive_group_broken(arbc):
            "broken)" in out, "the verdict does not name it", out, err)
 
 
-def case_warn_by_default(arbc):
-    # Without --runtime-checks the breach is said and the verdict kept (docs/runtime.md).
+def case_fail_by_default_warn_and_off(arbc):
+    # Without --runtime-checks a breach fails the run; warn says it and keeps the verdict
+    # (docs/runtime.md#runtime-checks).
     code, out, err = run(arbc, GRIPS, [
         '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
         '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], checks=None)
+    expect(code == 3 and "result: failure (runtime checks:" in out, f"exit {code}, expected 3",
+           out, err)
+    code, out, err = run(arbc, GRIPS, [
+        '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
+        '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], checks="warn")
     expect(code == 0, f"exit {code}, expected 0", out, err)
     expect("runtime checks: 1 of 1 broken; the proof does not cover the run from 100ms "
            "(--runtime-checks fail makes this a failure):" in out, "the breach is not said", out, err)

@@ -191,8 +191,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "take: from ObjectDetector.objects when ", "exclusive", "mixed",
                  "take_while_holding"},
         Mutation{"take_while_rake_out",
-                 "when not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling {",
-                 "when not e_taken and e_arm_idle and not e_arm_pulling {", "assert", "tool",
+                 "when not e_taken and e_arm_idle and e_pull_idle and not e_arm_pulling and",
+                 "when not e_taken and e_arm_idle and not e_arm_pulling and", "assert", "tool",
                  "take_while_rake_out"},
         // Without the priority (and its hold, which needs one, and the property over its
         // activity event, which is gone), search and track overlap.
