@@ -271,7 +271,9 @@ int run_command(std::span<char*> args) {
   std::vector<TraceRecord> records;  // the whole trace in memory, for --report
   if (!a.report_path.empty() || stand_ins.wants_records()) options.trace_records = &records;
   // What the proof proved and assumed, checked on every record of the ports mediated here.
-  ClaimWatch claims(app, options.mediate ? *options.mediate : options.host, options.host);
+  ClaimWatch claims(app, {.mediated = options.mediate ? *options.mediate : options.host,
+                          .hosted = options.host,
+                          .states_known = !options.unknown_until_fed});
   bool watching = !claims.empty() && a.runtime_checks != "off";
   if (watching) {
     options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };

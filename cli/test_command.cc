@@ -42,7 +42,8 @@ struct TestArgs {
   std::vector<std::string> specs;
   std::string filter = "*", junit;
   bool no_verify = false;
-  unsigned jobs = 0;  // 0: one per core when there are many tests
+  unsigned jobs = 0;                    // 0: one per core when there are many tests
+  std::string runtime_checks = "fail";  // --runtime-checks: fail, warn or off
 };
 
 // A scratch directory for one spec's build, removed at the end.
@@ -132,12 +133,12 @@ int prepare_spec(const std::string& spec, bool no_verify, Seen* seen, Scratch* s
 // Runs `tests` on `jobs` threads (1: this one); outcomes in the tests' order.
 std::vector<harness::TestOutcome> run_all(const model::App& app, const std::string& dir,
                                           const std::vector<const model::TestCase*>& tests,
-                                          unsigned jobs) {
+                                          unsigned jobs, harness::RuntimeChecks checks) {
   std::vector<harness::TestOutcome> out(tests.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
     for (size_t i = next++; i < tests.size(); i = next++)
-      out[i] = harness::run_test_case(app, dir, *tests[i]);
+      out[i] = harness::run_test_case(app, dir, *tests[i], checks);
   };
   std::vector<std::thread> threads;
   for (unsigned k = 1; k < jobs; ++k) threads.emplace_back(work);
@@ -162,6 +163,10 @@ std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
   cli.add_flag("--no-verify", a.no_verify, "run the tests without proving the spec first");
   cli.add_option("--jobs", a.jobs,
                  "threads (default: one per core when there are 32 tests or more)");
+  cli.add_option("--runtime-checks", a.runtime_checks,
+                 "what a test whose run breaks a claim or assumption of the proof does: fail "
+                 "(default), warn (said, the test's verdict kept) or off")
+      ->check(CLI::IsMember({"fail", "warn", "off"}));
   try {
     cli.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -179,6 +184,7 @@ size_t print_outcomes(const std::string& spec, const std::vector<harness::TestOu
       ++failed;
       std::fputs(t.detail.c_str(), stdout);
     }
+    std::fputs(t.warnings.c_str(), stdout);
   }
   return failed;
 }
@@ -235,7 +241,10 @@ int test_command(std::span<char*> args) {
       if (harness::filter_matches(a.filter, t.name)) chosen.push_back(&t);
     }
     std::vector<harness::TestOutcome> outcomes =
-        run_all(p->app, p->dir, chosen, jobs_for(chosen.size(), a.jobs));
+        run_all(p->app, p->dir, chosen, jobs_for(chosen.size(), a.jobs),
+                a.runtime_checks == "off"    ? harness::RuntimeChecks::Off
+                : a.runtime_checks == "warn" ? harness::RuntimeChecks::Warn
+                                             : harness::RuntimeChecks::Fail);
     failed += print_outcomes(p->spec, outcomes);
     total += outcomes.size();
     suites.push_back({p->spec, p->app.name, std::move(outcomes)});

@@ -10,6 +10,7 @@
 
 #include "compiler/codegen/target.h"
 #include "compiler/codegen/write_artifacts.h"
+#include "core/duration_literal.h"
 #include "harness/test_expect.h"
 #include "runtime/app_loader.h"
 #include "runtime/runtime.h"
@@ -166,7 +167,7 @@ bool write_test_harness(const std::string& app_dir, std::string* err) {
 }
 
 bool run_test_trace(const model::App& app, const std::string& app_dir, const model::TestCase& test,
-                    TestTrace* out, std::string* err) {
+                    TestTrace* out, std::string* err, bool watch) {
   model::App run_app = test_app(app, test);
   add_harness(run_app);
   auto log = std::make_shared<StandInLog>();
@@ -174,6 +175,11 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   Registry registry = registry_with_stand_ins(run_app, Registry(), log, &stand_ins);
   RunOptions options;
   options.trace_records = &out->records;
+  ClaimWatch claims(run_app, {.test = true});
+  if (watch && !claims.empty()) {
+    options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+    options.on_start = [&claims](Nanos t) { claims.start(t); };
+  }
   std::unique_ptr<Runtime> rt = Runtime::create(run_app, app_dir, options, err, registry);
   if (!rt) return false;
   rt->set_reporter([out](const std::string& line) { out->reports.push_back(line); });
@@ -183,6 +189,10 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   rt->advance(out->end);
   rt->shutdown();
   out->received = log->received;
+  if (options.trace_watch) {
+    claims.finish(out->end);
+    out->breaches = claims.violations();
+  }
   return true;
 }
 
@@ -204,18 +214,24 @@ TestApp write_test_app(const lower::LoweredApp& lowered, const std::string& scra
 }
 
 TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
-                          const model::TestCase& test) {
+                          const model::TestCase& test, RuntimeChecks checks) {
   auto started = std::chrono::steady_clock::now();
   TestOutcome outcome;
   outcome.name = test.name;
   TestTrace trace;
   std::string error;
-  if (!run_test_trace(app, app_dir, test, &trace, &error)) {
+  if (!run_test_trace(app, app_dir, test, &trace, &error, checks != RuntimeChecks::Off)) {
     outcome.detail = "  the app did not start: " + error + "\n";
     return outcome;
   }
   TestRun run{trace.received, trace.records, trace.end, &app};
   outcome.detail = failures(test, run, trace.reports);
+  // The run left what the proof covers: a failure of the test, as of `arbc run`.
+  std::string breaches;
+  for (const ClaimViolation& v : trace.breaches)
+    breaches += "  runtime check: " + std::string(v.assumption ? "assumption " : "") + v.claim +
+                " broken at " + duration_literal(v.t) + ": " + v.what + "\n";
+  (checks == RuntimeChecks::Fail ? outcome.detail : outcome.warnings) += breaches;
   outcome.passed = outcome.detail.empty();
   outcome.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -12,6 +12,7 @@
 #include "core/app_model.h"
 #include "core/diagnostic.h"
 #include "core/test_case.h"
+#include "runtime/claim_watch.h"
 #include "runtime/stand_in.h"
 #include "runtime/trace_record.h"
 
@@ -20,9 +21,12 @@ namespace arbc::harness {
 struct TestOutcome {
   std::string name;
   bool passed = false;
-  // For a failure: each failed expectation, what happened instead and the trace around it.
+  // For a failure: each failed expectation, what happened instead and the trace around it;
+  // and each claim or assumption of the proof the run broke (runtime checks).
   std::string detail;
   double seconds = 0;  // wall time of the run
+  // With RuntimeChecks::Warn: the broken claims and assumptions, said but not failed.
+  std::string warnings;
 };
 
 // The harness monitor (monitors/arbc_test_events.lua) that `set`/`unset` steps go through;
@@ -46,17 +50,23 @@ struct TestTrace {
   std::vector<TraceRecord> records;
   std::vector<Received> received;
   std::vector<std::string> reports;
-  Nanos end{0};  // the last instant the run reached
+  Nanos end{0};                          // the last instant the run reached
+  std::vector<ClaimViolation> breaches;  // with `watch`: the claims and assumptions it broke
 };
 
 // Runs `test` as run_test_case does and keeps what happened; false and *err when the app did
-// not start.
+// not start. `watch`: check the proof's claims and assumptions on the run (runtime/claim_watch.h,
+// in its `test` scope: a source's rate is judged between its first and last message).
 bool run_test_trace(const model::App& app, const std::string& app_dir, const model::TestCase& test,
-                    TestTrace* out, std::string* err);
+                    TestTrace* out, std::string* err, bool watch = false);
+
+// What a test does with a run that breaks a claim or an assumption of the proof
+// (`arbc test --runtime-checks`, as `arbc run`'s): fail the test, say it, or not look.
+enum class RuntimeChecks { Fail, Warn, Off };
 
 // Runs `test` on `app` (built into `app_dir`, with the harness written). A test `on RULE`
 // runs that rule's connection alone, between stand-ins of its two modules.
 TestOutcome run_test_case(const model::App& app, const std::string& app_dir,
-                          const model::TestCase& test);
+                          const model::TestCase& test, RuntimeChecks checks = RuntimeChecks::Fail);
 
 }  // namespace arbc::harness

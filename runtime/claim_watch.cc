@@ -21,12 +21,11 @@ std::string state_text(const std::set<std::string>& state) {
 
 }  // namespace
 
-ClaimWatch::ClaimWatch(const model::App& app, const ModuleSet& mediated, const ModuleSet& hosted)
-    : app_(app) {
+ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
   auto module = [](const std::string& port) {  // of "Module.port"
     return std::string_view(port).substr(0, port.find('.'));
   };
-  auto here = [&](const std::string& port) { return mediated.contains(module(port)); };
+  auto here = [&](const std::string& port) { return scope.mediated.contains(module(port)); };
   std::set<std::string> read_here;  // sources of connections into ports mediated here
   for (const model::Connection& c : app.connections) {
     if (!here(c.destination)) continue;
@@ -46,7 +45,12 @@ ClaimWatch::ClaimWatch(const model::App& app, const ModuleSet& mediated, const M
     if (here(a.port)) assumed_.push_back({&a, false, std::nullopt});
   for (const model::SourceRate& r : app.rates)
     if (read_here.count(r.port))
-      rates_.push_back({&r, Nanos{0}, false, !hosted.contains(module(r.port))});
+      rates_.push_back(
+          {&r, Nanos{0}, false, scope.test || !scope.hosted.contains(module(r.port)), scope.test});
+  decisions_.emplace(app, here, scope.states_known,
+                     [this](const std::string& claim, Nanos t, const std::string& what) {
+                       violated(claim, t, what, false);
+                     });
 }
 
 void ClaimWatch::start(Nanos t) {
@@ -56,7 +60,7 @@ void ClaimWatch::start(Nanos t) {
 bool ClaimWatch::empty() const { return size() == 0; }
 
 size_t ClaimWatch::size() const {
-  return properties_.size() + assumed_.size() + rates_.size() +
+  return decisions_->size() + properties_.size() + assumed_.size() + rates_.size() +
          (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
 }
 
@@ -79,8 +83,13 @@ void ClaimWatch::observe(const TraceRecord& r) {
   rate_gaps(r.t);
   const std::string* port = nullptr;  // the arbitrated port the record is about, if any
   if (r.kind == TraceKind::Publish) {
-    for (Rate& rate : rates_)
-      if (rate.r->port == r.port) rate.last = r.t, rate.awaiting_first = false;
+    for (Rate& rate : rates_) {
+      if (rate.r->port != r.port) continue;
+      Nanos deadline = later(rate.last, rate.r->period);
+      if (rate.window && !rate.awaiting_first && !rate.broken && r.t > deadline)
+        rate_broken(rate, deadline, r.t);
+      rate.last = r.t, rate.awaiting_first = false;
+    }
   } else if (r.kind == TraceKind::Event) {
     auto box = boxes_.find(r.port);
     if (box != boxes_.end()) box->second.apply(r), port = &box->first;
@@ -91,6 +100,7 @@ void ClaimWatch::observe(const TraceRecord& r) {
       port = &rule->second;
       const std::set<std::string>& state = boxes_[rule->second].present(r.t);
       decision(rule->second, r.t, state);
+      decisions_->decision(r, state);
       for (Assumed& s : assumed_)
         if (s.a->port == rule->second) assumption(s, rule->second, r, state);
     }
@@ -162,19 +172,25 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
 void ClaimWatch::rate_gaps(Nanos t) {
   for (Rate& rate : rates_) {
     Nanos deadline = later(rate.last, rate.r->period);
-    if (t <= deadline || rate.broken || rate.awaiting_first) continue;
-    rate.broken = true;
-    violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
-             "nothing from " + rate.r->port + " between " + duration_literal(rate.last) + " and " +
-                 duration_literal(t),
-             true);
+    // A test's source: judged only by its next message (window_gap), since it is not owed
+    // anything after its last one and no record says which one that is before the end.
+    if (t <= deadline || rate.broken || rate.awaiting_first || rate.window) continue;
+    rate_broken(rate, deadline, t);
   }
+}
+
+void ClaimWatch::rate_broken(Rate& rate, Nanos deadline, Nanos t) {
+  rate.broken = true;
+  violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), deadline,
+           "nothing from " + rate.r->port + " between " + duration_literal(rate.last) + " and " +
+               duration_literal(t),
+           true);
 }
 
 void ClaimWatch::finish(Nanos end) {
   rate_gaps(end);
   for (Rate& rate : rates_) {
-    if (!rate.awaiting_first || end <= later(rate.last, rate.r->period)) continue;
+    if (rate.window || !rate.awaiting_first || end <= later(rate.last, rate.r->period)) continue;
     violated("given " + rate.r->port + " every " + duration_literal(rate.r->period), end,
              "nothing from " + rate.r->port + " from the start (" + duration_literal(rate.last) +
                  ") to the end of the run (" + duration_literal(end) + "): it never published",

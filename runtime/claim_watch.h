@@ -1,5 +1,7 @@
 // What a run checks of what `arbc verify` proved and assumed (issue 39): fed every trace record
 // as the runtime makes it, it watches
+//   - the claims about single decisions: each port's exclusivity and its asserts over events
+//     (runtime/decision_watch.h);
 //   - each property over time of the app (runtime/property_watch.h): a declared property is a
 //     claim (build refuses one the proof refutes), so a breach means the run left what was
 //     proved;
@@ -23,6 +25,7 @@
 
 #include "core/app_model.h"
 #include "core/instant.h"
+#include "runtime/decision_watch.h"
 #include "runtime/property_watch.h"
 #include "runtime/trace.h"
 #include "runtime/trace_container.h"
@@ -40,10 +43,19 @@ struct ClaimViolation {
 
 class ClaimWatch {
  public:
-  // `mediated`: the modules whose input ports this process mediates; `hosted`: those whose
-  // plugins run here (runtime.h). A source hosted elsewhere starts when it first speaks.
-  explicit ClaimWatch(const model::App& app, const ModuleSet& mediated = ModuleSet::everything(),
-                      const ModuleSet& hosted = ModuleSet::everything());
+  // Where the run happens, as far as the checks care.
+  struct Scope {
+    // The modules whose input ports this process mediates; those whose plugins run here
+    // (runtime.h). A source hosted elsewhere starts when it first speaks.
+    ModuleSet mediated = ModuleSet::everything(), hosted = ModuleSet::everything();
+    // No event starts unknown (runtime.h, unknown_until_fed; decision_watch.h).
+    bool states_known = true;
+    // An `arbc test`: each source publishes what the test says, so a rate is judged only
+    // between its first and its last message (the test is a window of the world, not all of it).
+    bool test = false;
+  };
+  explicit ClaimWatch(const model::App& app) : ClaimWatch(app, Scope{}) {}
+  ClaimWatch(const model::App& app, const Scope& scope);
 
   // Whether the app states anything to watch (a run without claims pays nothing).
   bool empty() const;
@@ -73,16 +85,19 @@ class ClaimWatch {
     // before the programs it mediates is not owed their messages while they start up); one
     // that never speaks is reported at the end.
     bool awaiting_first = false;
+    bool window = false;  // Scope::test: not owed before the first message nor after the last
   };
 
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
   void rate_gaps(Nanos t);
+  void rate_broken(Rate& rate, Nanos deadline, Nanos t);
   void property_breached(size_t i);
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
+  std::optional<DecisionWatch> decisions_;  // exclusivity and asserts at each decision
   bool decides_ = false;  // some arbitrated port is mediated here: groups and invariants count
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;

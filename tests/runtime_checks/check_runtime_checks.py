@@ -51,12 +51,17 @@ def case_exclusive_group_broken(arbc):
         '{"t": 0.1, "port": "Planner.left", "value": 1.0}',
         '{"t": 0.1, "port": "Planner.right", "value": 2.0}'])
     expect(code == 3, f"exit {code}, expected 3", out, err)
-    expect("runtime checks: 1 of 1 broken; the proof does not cover the run from 100ms:" in out,
+    # The group, and with it the port's exclusivity that rests on it.
+    expect("runtime checks: 2 of 2 broken; the proof does not cover the run from 100ms:" in out,
            "no runtime-check line", out, err)
     expect("100ms  assumption exclusive { e_left, e_right }: e_left and e_right present together "
            "in Hand.cmd at 100ms" in out, "the violation is not named with its instant", out, err)
-    expect("result: failure (runtime checks: assumption exclusive { e_left, e_right } at 100ms "
-           "broken)" in out, "the verdict does not name it", out, err)
+    expect("100ms  Hand.cmd: rules left, right are never selected together: 'left' delivered at "
+           "100ms in a state where 'right' is selected too (events present: e_left, e_right)" in out,
+           "the port's exclusivity is not said broken", out, err)
+    expect("result: failure (runtime checks: assumption exclusive { e_left, e_right } at 100ms; "
+           "Hand.cmd: rules left, right are never selected together at 100ms broken)" in out,
+           "the verdict does not name them", out, err)
 
 
 def case_fail_by_default_warn_and_off(arbc):
@@ -71,7 +76,7 @@ def case_fail_by_default_warn_and_off(arbc):
         '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
         '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], checks="warn")
     expect(code == 0, f"exit {code}, expected 0", out, err)
-    expect("runtime checks: 1 of 1 broken; the proof does not cover the run from 100ms "
+    expect("runtime checks: 2 of 2 broken; the proof does not cover the run from 100ms "
            "(--runtime-checks fail makes this a failure):" in out, "the breach is not said", out, err)
     code, out, err = run(arbc, GRIPS, [
         '{"t": 0, "port": "Arm.status", "value": ["left", "right"]}',
@@ -85,7 +90,7 @@ def case_exclusive_group_kept(arbc):
         '{"t": 0.1, "port": "Planner.left", "value": 1.0}',
         '{"t": 0.1, "port": "Planner.right", "value": 2.0}'])
     expect(code == 0, f"exit {code}, expected 0", out, err)
-    expect("runtime checks: 1 claim or assumption of the proof watched, none broken" in out,
+    expect("runtime checks: 2 claims and assumptions of the proof watched, none broken" in out,
            "no line saying what was watched", out, err)
 
 
@@ -136,6 +141,82 @@ def case_breach_in_trace_and_report(arbc):
         expect("never two go within 1s broken (seen at" in html, "no mark in the report", out, err)
         expect("runtime check: never two go within 1s broken at 250ms" in html,
                "not listed in the report", out, err)
+
+
+OVERLAP = """app overlap "two rules of one source whose bodies overlap: refuted, run anyway";
+module Sensor { out v: float; }
+module Motor { in cmd: float; }
+arbitrate Motor.cmd {
+  low: from Sensor.v { accept v < 0.6; }
+  high: from Sensor.v { accept v > 0.4; }
+}
+"""
+
+
+def case_exclusivity_broken(arbc):
+    # One message accepted by both rules: delivered twice, which exclusivity forbids.
+    code, out, err = run(arbc, OVERLAP, [
+        '{"t": 0, "port": "Sensor.v", "value": 0.2}',
+        '{"t": 0.1, "port": "Sensor.v", "value": 0.5}'], "--no-verify")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("100ms  Motor.cmd: rules low, high are never selected together: one message from "
+           "Sensor.v delivered by both 'low' and 'high' at 100ms" in out,
+           "one message delivered twice is not said", out, err)
+    code, out, err = run(arbc, OVERLAP, [
+        '{"t": 0, "port": "Sensor.v", "value": 0.2}',
+        '{"t": 0.1, "port": "Sensor.v", "value": 0.9}'], "--no-verify")
+    expect(code == 0 and "none broken" in out, f"exit {code} on messages only one rule takes",
+           out, err)
+
+
+ASSERTED = """app asserted "an assert the rule's guard does not keep: refuted, run anyway";
+module Arm { out status: list<string>; }
+module Planner { out cmd: float; }
+module Hand { in cmd: float; }
+events from Arm.status { e_ready = "ready", e_safe = "safe" } lifetime 1s;
+arbitrate Hand.cmd { go: from Planner.cmd when e_ready; }
+assert Hand.cmd: go -> e_safe;
+"""
+
+
+def case_assert_broken(arbc):
+    code, out, err = run(arbc, ASSERTED, [
+        '{"t": 0, "port": "Arm.status", "value": ["ready", "safe"]}',
+        '{"t": 0.1, "port": "Planner.cmd", "value": 1.0}',
+        '{"t": 0.2, "port": "Arm.status", "value": ["ready"]}',
+        '{"t": 0.3, "port": "Planner.cmd", "value": 1.0}'], "--no-verify")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("300ms  assert Hand.cmd: go -> e_safe: 'go' delivered at 300ms with e_safe false in "
+           "Hand.cmd (events present: e_ready)" in out, "the assert's breach is not named", out, err)
+
+
+def case_arbc_test_watches(arbc):
+    # `arbc test` checks the same claims and assumptions on each test's run: a test that gives
+    # both flags of the exclusive group leaves the proof, and fails unless told otherwise.
+    tests = GRIPS + """
+test "both grips" {
+  at 0s    Arm.status <- ["left", "right"];
+  at 100ms Planner.left <- 1.0;
+  expect Hand.cmd receives 1.0 at 100ms;
+}
+"""
+    with tempfile.TemporaryDirectory() as d:
+        spec = os.path.join(d, "grips.spec")
+        with open(spec, "w", encoding="utf-8") as f:
+            f.write(tests)
+        def test(*options):
+            p = subprocess.run([arbc, "test", spec, *options], capture_output=True, text=True,
+                               timeout=120)
+            return p.returncode, p.stdout, p.stderr
+        code, out, err = test()
+        expect(code == 1 and "FAIL  " in out, f"exit {code}, expected 1", out, err)
+        line = ("  runtime check: assumption exclusive { e_left, e_right } broken at 100ms: e_left "
+                "and e_right present together in Hand.cmd at 100ms")
+        expect(line in out, "the breach is not in the failure", out, err)
+        code, out, err = test("--runtime-checks", "warn")
+        expect(code == 0 and "PASS  " in out and line in out, f"warn: exit {code}", out, err)
+        code, out, err = test("--runtime-checks", "off")
+        expect(code == 0 and "runtime check" not in out, f"off: exit {code}", out, err)
 
 
 RATED = """app rated "a response that relies on its source's rate";

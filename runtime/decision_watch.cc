@@ -1,0 +1,95 @@
+#include "runtime/decision_watch.h"
+
+#include <algorithm>
+
+#include "core/constraint.h"
+#include "core/duration_literal.h"
+#include "core/effective_guard.h"
+#include "core/join.h"
+
+namespace arbc {
+
+namespace {
+
+std::string state_text(const std::set<std::string>& state) {
+  return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
+}
+
+}  // namespace
+
+DecisionWatch::DecisionWatch(const model::App& app,
+                             const std::function<bool(const std::string&)>& here, bool states_known,
+                             Report broken)
+    : states_known_(states_known), broken_(std::move(broken)) {
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) {
+    if (!here(p.port)) continue;
+    std::vector<const model::Connection*> into = app.connections_into(p.port);
+    size_t first = rules_.size();
+    for (const model::Connection* c : into) {
+      if (c->kind != model::ConnectionKind::Rule) continue;
+      rule_index_[c->name] = rules_.size();
+      Rule rule;
+      rule.name = c->name, rule.port = p.port, rule.source = c->source;
+      rule.guard = model::decision_guard(into, *c);
+      rules_.push_back(std::move(rule));
+    }
+    for (const model::Assertion& a : p.asserts) {
+      auto it = rule_index_.find(a.rule);
+      if (a.emitted || it == rule_index_.end()) continue;  // data asserts: not yet (header)
+      rules_[it->second].asserts.push_back(asserts_.size());
+      asserts_.push_back(
+          {&a, "assert " + p.port + ": " + a.rule + " -> " + a.property.to_string()});
+    }
+    if (p.by_priority || rules_.size() - first < 2) continue;
+    ports_.insert(p.port);
+    port_claim_[p.port] =
+        p.port + ": rules " + join(p.rules, ", ") + " are never selected together";
+    for (size_t i = first; i < rules_.size(); ++i)
+      for (size_t j = first; j < rules_.size(); ++j)
+        if (i != j)
+          (rules_[i].source == rules_[j].source ? rules_[i].same_source : rules_[i].other_source)
+              .push_back(j);
+  }
+}
+
+void DecisionWatch::decision(const TraceRecord& r, const std::set<std::string>& state) {
+  auto it = rule_index_.find(r.connection);
+  if (it == rule_index_.end()) return;
+  Rule& c = rules_[it->second];
+  uint64_t n = ++c.decided;  // the n-th message of c's source since the start
+  if (r.kind == TraceKind::Deliver) delivered(c, n, r.t, state);
+  // A message number no sibling of the same source can still decide is not needed any more.
+  uint64_t oldest = n;
+  for (size_t j : c.same_source) oldest = std::min(oldest, rules_[j].decided);
+  c.delivered.erase(c.delivered.begin(), c.delivered.lower_bound(oldest));
+}
+
+void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state) {
+  for (size_t k : c.asserts) {
+    const Assert& a = asserts_[k];
+    if (!evaluate(a.a->property, state))
+      broken_(a.text, t,
+              "'" + c.name + "' delivered at " + duration_literal(t) + " with " +
+                  a.a->property.to_string() + " false in " + c.port +
+                  " (events present: " + state_text(state) + ")");
+  }
+  if (!ports_.count(c.port)) return;
+  for (size_t j : c.same_source) {
+    const Rule& d = rules_[j];
+    if (d.decided >= n && d.delivered.count(n))
+      broken_(port_claim_[c.port], t,
+              "one message from " + c.source + " delivered by both '" + d.name + "' and '" +
+                  c.name + "' at " + duration_literal(t));
+  }
+  c.delivered.insert(n);
+  if (!states_known_) return;
+  for (size_t j : c.other_source) {
+    const Rule& d = rules_[j];
+    if (evaluate(d.guard, state))
+      broken_(port_claim_[c.port], t,
+              "'" + c.name + "' delivered at " + duration_literal(t) + " in a state where '" +
+                  d.name + "' is selected too (events present: " + state_text(state) + ")");
+  }
+}
+
+}  // namespace arbc

@@ -1,0 +1,67 @@
+// The claims `arbc verify` proves about single decisions, checked on a run's trace (issue 39):
+//   - exclusivity of each arbitrated port (not `by priority`): no message is delivered by two
+//     rules of the port (rules of one source read the same messages: the n-th decision record
+//     of each is about the n-th message), and no rule delivers in an event state where a rule of
+//     another source of the port is selected too (its decision guard holds: the proof says no
+//     state has both; core/effective_guard.h);
+//   - each `assert PORT: RULE -> EXPR` over events: EXPR holds in the port's state whenever RULE
+//     delivers.
+// The state check needs the whole state: on a mediator that starts with events unknown until
+// their feeds speak (runtime.h, unknown_until_fed) an unknown event reads as absent here, so
+// that check is left out there (`states_known` false); the same-message check stays.
+// `by priority` ports are left out: a higher rule may deliver right after a lower one in one
+// state by design (docs/design.md#priorities-and-holds), and their hold is the runtime's own.
+// Asserts over delivered data are not checked yet (the trace does not carry the value to it).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/app_model.h"
+#include "core/instant.h"
+#include "runtime/trace_record.h"
+
+namespace arbc {
+
+class DecisionWatch {
+ public:
+  // `here(port)`: the port is mediated in this process. `broken(claim, t, what)` reports a
+  // breach (ClaimWatch reports each claim once).
+  using Report = std::function<void(const std::string&, Nanos, const std::string&)>;
+  DecisionWatch(const model::App& app, const std::function<bool(const std::string&)>& here,
+                bool states_known, Report broken);
+
+  // How many claims it watches.
+  size_t size() const { return ports_.size() + asserts_.size(); }
+  // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
+  void decision(const TraceRecord& r, const std::set<std::string>& state);
+
+ private:
+  struct Rule {
+    std::string name, port, source;
+    Constraint guard;              // the decision guard: what the runtime evaluates at its decision
+    uint64_t decided = 0;          // its Deliver and Drop records so far
+    std::set<uint64_t> delivered;  // message numbers delivered, not yet past every sibling
+    std::vector<size_t> same_source;   // other rules of the port reading the same source
+    std::vector<size_t> other_source;  // other rules of the port reading other sources
+    std::vector<size_t> asserts;       // into asserts_
+  };
+  struct Assert {
+    const model::Assertion* a;
+    std::string text;
+  };
+  void delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state);
+  std::vector<Rule> rules_;
+  std::unordered_map<std::string, size_t> rule_index_;       // rule name -> rules_
+  std::unordered_map<std::string, std::string> port_claim_;  // port -> its claim's text
+  std::set<std::string> ports_;
+  std::vector<Assert> asserts_;
+  bool states_known_;
+  Report broken_;
+};
+
+}  // namespace arbc
