@@ -174,7 +174,7 @@ bool Runtime::after_accept(void* passing, bool accepted) {
 // are throttled. False with the drop's reason and detail when the message goes no further.
 bool Runtime::selected(Connection& c, Nanos t, DropReason* reason, std::string* detail) {
   *reason = DropReason::NotSelected;
-  if (!c.unknown.empty() && !knows_events_of(c, t, detail)) return false;
+  if (!c.unknown.empty() && !knows_events_of(c, detail)) return false;
   if (!c.feedback.empty() && !answered_events_of(c, t, detail)) return false;
   if (!c.constraint.evaluate(c.destination->container.present(t))) {
     if (c.is_feed) *reason = DropReason::Feed;

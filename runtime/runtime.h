@@ -207,7 +207,7 @@ class Runtime {
   // The unknown-after-start rule: which feed-provided events each rule's constraint reads.
   void collect_unknown_events();
   // Removes what is known by now from c.unknown; false (with *why) while something is not.
-  bool knows_events_of(Connection& c, Nanos t, std::string* why);
+  bool knows_events_of(Connection& c, std::string* why);
   // The deliveries-not-yet-answered rule (answered_deliveries.cc): which events each rule reads
   // from feeds of modules hosted elsewhere; whether all are answered at t (else *why); and the
   // bookkeeping of a delivery into a module hosted elsewhere.

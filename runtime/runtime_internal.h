@@ -103,7 +103,7 @@ struct Runtime::Connection : MonitorHost {
   struct UnknownEvent {
     std::string event;
     const Connection* feed = nullptr;
-    std::optional<Nanos> lifetime;
+    std::optional<Nanos> lifetime;  // the deliveries-not-yet-answered rule's; unknown: unused
   };
   std::vector<UnknownEvent> unknown;
   // The deliveries-not-yet-answered rule: the events the constraint reads that a feed from a

@@ -1,10 +1,10 @@
 // What a mediator does not know after it (re)starts
 // (docs/design.md#unknown-events-after-a-start): an event a feed provides is unknown until that
-// feed has delivered once since start, or until the event's lifetime has passed (by then any
-// entry set before the start would have lapsed too). A rule whose constraint reads an unknown
-// event is not selected: absence of knowledge is not absence of the event. This only removes
-// selections, so the proof (at most one selected connection per port) holds as before. Also:
-// reporting events that lapse because their source is silent.
+// feed has delivered once since start. Time passing is no evidence: the feed's source may not be
+// discovered yet while it reports the event present (a held bumper; issue 39). A rule whose
+// constraint reads an unknown event is not selected: absence of knowledge is not absence. This only
+// removes selections, so the proof (at most one selected connection per port) holds as before.
+// Also: reporting events that lapse because their source is silent.
 #include "core/duration_literal.h"
 #include "runtime/runtime_internal.h"
 
@@ -24,16 +24,14 @@ void Runtime::collect_unknown_events() {
         if (feed->delivered_from) continue;
         const std::vector<std::string>& sets = feed->model->sets;
         if (std::find(sets.begin(), sets.end(), e) != sets.end())
-          c.unknown.push_back({e, feed, event->lifetime});
+          c.unknown.push_back({e, feed, std::nullopt});
       }
     }
   }
 }
 
-bool Runtime::knows_events_of(Connection& c, Nanos t, std::string* why) {
-  std::erase_if(c.unknown, [&](const Connection::UnknownEvent& u) {
-    return u.feed->fed || (u.lifetime && t >= start_time_ + *u.lifetime);
-  });
+bool Runtime::knows_events_of(Connection& c, std::string* why) {
+  std::erase_if(c.unknown, [](const Connection::UnknownEvent& u) { return u.feed->fed; });
   if (c.unknown.empty()) return true;
   const Connection::UnknownEvent& u = c.unknown.front();
   *why = "unknown since start: " + u.event + " (nothing from " + u.feed->model->source + " yet)";

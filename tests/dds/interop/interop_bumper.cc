@@ -1,7 +1,8 @@
 // A bumper as a plain Fast-DDS program (no arbc in it): publishes std_msgs/msg/Bool on
 // rt/bumper every 50 ms, as a ROS 2 node would on /bumper with the sensor-data profile (best
-// effort): released for 2 s, pressed for 1 s, released for 2 s; then exits.
-// usage: interop_bumper DOMAIN
+// effort): released for 2 s, pressed for 1 s, released for 2 s; then exits. With `held S`: pressed
+// the whole time, for S seconds (a mediator restarted while the bumper is held, bumper_restart.py).
+// usage: interop_bumper DOMAIN [held SECONDS]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
+#include <string>
 #include <thread>
 
 #include "BoolPubSubTypes.h"
@@ -18,10 +20,12 @@
 namespace fdds = eprosima::fastdds::dds;
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: interop_bumper DOMAIN\n");
+  bool held = argc == 4 && std::string(argv[2]) == "held";
+  if (argc != 2 && !held) {
+    std::fprintf(stderr, "usage: interop_bumper DOMAIN [held SECONDS]\n");
     return 2;
   }
+  int samples = held ? static_cast<int>(std::atof(argv[3]) * 20) : 100;  // one per 50 ms
   fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
   factory->load_profiles();  // FASTRTPS_DEFAULT_PROFILES_FILE (interop_common.h says why)
   fdds::DomainParticipantQos pqos = factory->get_default_participant_qos();
@@ -38,13 +42,15 @@ int main(int argc, char** argv) {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 5;
   fdds::DataWriter* writer = pub->create_datawriter(topic, qos);
-  for (int i = 0; i < 100; ++i) {  // 5 s at 50 ms
+  int pressed = 0;
+  for (int i = 0; i < samples; ++i) {
     std_msgs::msg::dds_::Bool_ b;
-    b.data(i >= 40 && i < 60);
+    b.data(held || (i >= 40 && i < 60));
+    pressed += b.data();
     writer->write(&b);
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  std::printf("interop_bumper: sent 100, 20 pressed\n");
+  std::printf("interop_bumper: sent %d, %d pressed\n", samples, pressed);
   p->delete_contained_entities();
   factory->delete_participant(p);
   return 0;
