@@ -25,24 +25,23 @@ class StandIn : public Module {
   }
 
   void start() override {
-    auto it = log_->inputs.find(name_);
-    std::set<std::string> scripted;
-    if (it != log_->inputs.end()) {
-      for (const TimedValue& v : it->second) {
-        scripted.insert(v.port);
-        schedule(seconds_of(v.t - now_nanos()), [this, &v] { send(v.port, v.value); });
-      }
+    log_->publishers[name_] = [this](const TimedValue& v) { send(v.port, v.value); };
+    if (!log_->inputs_scheduled) {
+      log_->inputs_scheduled = true;
+      schedule_instants();
     }
     if (!log_->stub.enabled) return;
     for (const OutPort& o : outs_) {
       std::string qualified = name_ + "." + o.name;
-      if (scripted.count(qualified)) continue;  // an inputs file speaks for this port
+      if (log_->inputs_on(qualified)) continue;  // an inputs file speaks for this port
       auto rate = log_->stub.period_of_port.find(qualified);
       double period =
           rate == log_->stub.period_of_port.end() ? log_->stub.default_period : rate->second;
       if (period > 0) sample(o, now_nanos(), period, 0);
     }
   }
+
+  void stop() override { log_->publishers.erase(name_); }
 
   void on_delivery(const Delivery& d) override {
     Received r{nanos_from_seconds(d.time), name_ + "." + d.port, d.connection, d.value};
@@ -67,6 +66,27 @@ class StandIn : public Module {
       if (e.source == port && !e.flag.empty()) flags.push_back(e.flag);
     }
     return flags;
+  }
+
+  // The first input of each instant at its time; play() goes on from there.
+  void schedule_instants() {
+    const std::vector<TimedValue>& in = log_->inputs();
+    for (size_t i = 0; i < in.size(); ++i) {
+      if (i > 0 && in[i - 1].t == in[i].t) continue;
+      schedule(seconds_of(in[i].t - now_nanos()), [this, i] { play(i); });
+    }
+  }
+
+  // Publishes input i on its stand-in's port (none runs here in a distributed run that hosts
+  // its module elsewhere), then the next input of the same instant behind what this one
+  // caused: a publication posts one task per message on each connection from the port
+  // (runtime/message_path.cc), and a timer of delay 0 runs after them. Inputs of one instant
+  // published at once would be processed connection by connection instead, not as listed.
+  void play(size_t i) {
+    const std::vector<TimedValue>& in = log_->inputs();
+    auto publisher = log_->publishers.find(in[i].port.substr(0, in[i].port.find('.')));
+    if (publisher != log_->publishers.end()) publisher->second(in[i]);
+    if (i + 1 < in.size() && in[i + 1].t == in[i].t) schedule(0, [this, i] { play(i + 1); });
   }
 
   void send(const std::string& qualified, const Value& v) {
@@ -95,16 +115,19 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
-// How many messages the inputs file gave `port` of `module`.
-uint64_t scripted_on(const StandInLog& log, const std::string& module, const std::string& port) {
-  auto it = log.inputs.find(module);
-  if (it == log.inputs.end()) return 0;
-  uint64_t n = 0;
-  for (const TimedValue& v : it->second) n += v.port == port;
-  return n;
+}  // namespace
+
+void StandInLog::add_input(TimedValue v) {
+  auto after = std::upper_bound(inputs_.begin(), inputs_.end(), v.t,
+                                [](Nanos t, const TimedValue& x) { return t < x.t; });
+  inputs_.insert(after, std::move(v));
 }
 
-}  // namespace
+uint64_t StandInLog::inputs_on(const std::string& port) const {
+  uint64_t n = 0;
+  for (const TimedValue& v : inputs_) n += v.port == port;
+  return n;
+}
 
 Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags) {
   switch (t.kind) {
@@ -167,7 +190,7 @@ std::string stand_in_summary(const model::App& app, const std::vector<std::strin
         out += "  " + q + " (stand-in source): published " + std::to_string(n);
         // Inputs timed after the run's end (or an interrupt) never go out: say so, rather
         // than let a short --duration drop them unseen.
-        uint64_t scripted = scripted_on(log, name, q);
+        uint64_t scripted = log.inputs_on(q);
         if (scripted > n) {
           out += " of the " + std::to_string(scripted) + " in the inputs (" +
                  std::to_string(scripted - n) + " not reached: the run ended first)";
