@@ -1,9 +1,9 @@
 #include "runtime/stand_in.h"
 
 #include <algorithm>
-#include <set>
 
 #include "core/duration_literal.h"
+#include "runtime/stand_in_sample.h"
 
 namespace arbc {
 
@@ -20,7 +20,7 @@ class StandIn : public Module {
         continue;
       }
       out(p.name, p.type->to_string());
-      outs_.push_back({p.name, p.type, flags_of(app, m.name + "." + p.name)});
+      outs_.push_back({p.name, p.type, sample_plan(app, m.name + "." + p.name)});
     }
   }
 
@@ -55,18 +55,8 @@ class StandIn : public Module {
   struct OutPort {
     std::string name;
     TypePtr type;
-    std::vector<std::string> flags;
+    SamplePlan plan;  // what --stub draws (runtime/stand_in_sample.h)
   };
-
-  // The flags a status port's feeds read (`e = "flag"` maps: the flag, not the event's
-  // name): what a sample of it draws from.
-  static std::vector<std::string> flags_of(const model::App& app, const std::string& port) {
-    std::vector<std::string> flags;
-    for (const model::Event& e : app.events) {
-      if (e.source == port && !e.flag.empty()) flags.push_back(e.flag);
-    }
-    return flags;
-  }
 
   // The first input of each instant at its time; play() goes on from there.
   void schedule_instants() {
@@ -100,7 +90,7 @@ class StandIn : public Module {
   // Publishes sample k on `o` now, at origin + k * period (to the nanosecond), and schedules
   // the next (no drift).
   void sample(const OutPort& o, Nanos origin, double period, uint64_t k) {
-    send(name_ + "." + o.name, sample_value(*o.type, rng(), o.flags));
+    send(name_ + "." + o.name, sample_value(*o.type, rng(), o.plan));
     Nanos next = later(origin, nanos_from_seconds(static_cast<double>(k + 1) * period));
     schedule(seconds_of(next - now_nanos()),
              [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
@@ -110,10 +100,6 @@ class StandIn : public Module {
   std::shared_ptr<StandInLog> log_;
   std::vector<OutPort> outs_;
 };
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
 
 }  // namespace
 
@@ -127,39 +113,6 @@ uint64_t StandInLog::inputs_on(const std::string& port) const {
   uint64_t n = 0;
   for (const TimedValue& v : inputs_) n += v.port == port;
   return n;
-}
-
-Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags) {
-  switch (t.kind) {
-    case Type::Kind::Bool:
-      return Value(rng() % 2 == 0);
-    case Type::Kind::Int:
-      return Value(static_cast<int64_t>(rng() % 10));
-    case Type::Kind::Float:
-      return Value(uniform(rng, 0, 1));
-    case Type::Kind::String:
-      return Value("sample");
-    case Type::Kind::Vec3:
-      return Value::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-    case Type::Kind::List: {
-      Value out = Value::list();
-      if (!flags.empty() && t.element->kind == Type::Kind::String) {
-        for (const std::string& f : flags) {
-          if (rng() % 2 == 0) out.push_back(Value(f));  // each flag holds half of the time
-        }
-        return out;
-      }
-      size_t n = 1 + rng() % 3;
-      for (size_t i = 0; i < n; ++i) out.push_back(sample_value(*t.element, rng, {}));
-      return out;
-    }
-    case Type::Kind::Record: {
-      Value out = Value::record();
-      for (const Field& f : t.fields) out.set(f.name, sample_value(*f.type, rng, {}));
-      return out;
-    }
-  }
-  return Value();
 }
 
 Registry registry_with_stand_ins(const model::App& app, const Registry& base,

@@ -1,10 +1,11 @@
 // Stand-in modules: what runs in place of a module no plugin provides, so that a spec can be
 // tried and tested without C++ (docs/testing.md). A stand-in declares the app's ports of its
 // module, publishes the timed values it is given (an `arbc run --inputs` file, the inputs of an
-// `arbc test`) and, with `--stub`, typed sample values at a rate per port; it records every
-// message delivered to it. It uses only the module API (runtime/module.h): the runtime cannot
-// tell it from a plugin's module. Its times are the runtime's whole nanoseconds (core/instant.h),
-// through the module API's seconds, which carry them exactly for runs under 2^21 s (24 days).
+// `arbc test`) and, with `--stub`, samples at a rate per port (runtime/stand_in_sample.h); it
+// records every message delivered to it. It uses only the module API (runtime/module.h): the
+// runtime cannot tell it from a plugin's module. Its times are the runtime's whole nanoseconds
+// (core/instant.h), through the module API's seconds, which carry them exactly for runs under 2^21
+// s (24 days).
 #pragma once
 
 #include <functional>
@@ -76,10 +77,6 @@ struct StandInLog {
  private:
   std::vector<TimedValue> inputs_;
 };
-
-// A sample of type t for `--stub`: drawn from rng; a `list<string>` port that feeds events
-// (`events from`) draws its flags from `flags`.
-Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags);
 
 // `base` plus a stand-in for every module of `app` that `base` does not register; the
 // stand-ins' names are appended to *stand_ins. The stand-ins share `log`.
