@@ -53,10 +53,9 @@ bool RunStandIns::check_sample_budget(const model::App& app, double duration, st
   double busiest_rate = 0;
   for (const std::string& name : stand_ins_) {
     const model::Module* m = app.find_module(name);
-    bool scripted = log_->inputs.count(name) > 0;
     for (const model::Port& p : m ? m->ports : std::vector<model::Port>{}) {
       std::string q = name + "." + p.name;
-      if (p.direction != model::Direction::Out || scripted) continue;
+      if (p.direction != model::Direction::Out || log_->inputs_on(q)) continue;
       auto it = log_->stub.period_of_port.find(q);
       double period =
           it == log_->stub.period_of_port.end() ? log_->stub.default_period : it->second;

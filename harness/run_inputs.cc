@@ -94,7 +94,7 @@ bool read_line(const Json& j, const LineRef& at, const model::App& app,
            false;
   // To the nearest nanosecond, the runtime's instants (core/instant.h): a trace's times, which
   // it writes exactly, read back as the instants they were.
-  log->inputs[module].push_back({nanos_from_seconds(j["t"].get<double>()), port, std::move(*v)});
+  log->add_input({nanos_from_seconds(j["t"].get<double>()), port, std::move(*v)});
   ++read->messages;
   return true;
 }
@@ -120,10 +120,6 @@ bool read_inputs(const std::string& path, const model::App& app,
       return *err = at("not valid JSON: " + e.detail, e.column), false;
     }
     if (!read_line(j, at, app, stand_ins, log, read, err)) return false;
-  }
-  for (auto& [module, values] : log->inputs) {
-    std::stable_sort(values.begin(), values.end(),
-                     [](const TimedValue& a, const TimedValue& b) { return a.t < b.t; });
   }
   return true;
 }

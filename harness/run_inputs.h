@@ -19,7 +19,8 @@ struct InputsRead {
   bool from_trace = false;
 };
 
-// Reads `path` into log->inputs (per stand-in module, in time order). False with *err
+// Reads `path` into log's inputs (StandInLog::add_input: in time order, the lines of one instant
+// in the file's order). False with *err
 // ("FILE:LINE: field 'value': field pos.y: expected float, got string") on the first bad line:
 // not JSON, no or a negative `t`, a port that is not an out-port of the app, a module a plugin
 // provides (in an input line), a value that does not fit the port's type.

@@ -27,16 +27,24 @@ Read read_lines(const std::string& lines) {
   return r;
 }
 
+// In time order, and at one instant in the file's order whatever the modules (issue 39: they
+// were kept per module, and each module's stand-in published its own at the instant).
 TEST(RunInputsTest, LinesAndTracePublicationsBecomeInputsInTimeOrder) {
   Read r = read_lines(
       "{\"t\": 0.5, \"port\": \"LookAround.gaze\", \"value\": [1, 0, 0]}\n"
       "\n"
-      "{\"t\": 0.2, \"port\": \"LookAround.gaze\", \"value\": {\"x\": 0, \"y\": 1, \"z\": 0}}\n");
+      "{\"t\": 0.2, \"port\": \"LookAround.gaze\", \"value\": {\"x\": 0, \"y\": 1, \"z\": 0}}\n"
+      "{\"t\": 0.5, \"port\": \"FaceDetector.face\", \"value\": {\"pos\": [0, 0, 1], "
+      "\"certainty\": 0.9}}\n");
   ASSERT_TRUE(r.ok) << r.err;
-  EXPECT_EQ(r.read.messages, 2u);
+  EXPECT_EQ(r.read.messages, 3u);
   EXPECT_FALSE(r.read.from_trace);
-  ASSERT_EQ(r.log.inputs["LookAround"].size(), 2u);
-  EXPECT_EQ(r.log.inputs["LookAround"][0].t, std::chrono::milliseconds(200));
+  const std::vector<TimedValue>& in = r.log.inputs();
+  ASSERT_EQ(in.size(), 3u);
+  EXPECT_EQ(in[0].t, std::chrono::milliseconds(200));
+  EXPECT_EQ(in[1].port, "LookAround.gaze");
+  EXPECT_EQ(in[2].port, "FaceDetector.face");
+  EXPECT_EQ(in[2].t, std::chrono::milliseconds(500));
   Read trace = read_lines(
       "{\"t\":0.0,\"type\":\"publish\",\"port\":\"LookAround.gaze\",\"value\":{\"x\":1.0,"
       "\"y\":0.0,\"z\":0.0}}\n"

@@ -95,42 +95,21 @@ Nanos test_end(const model::TestCase& test) {
   return end;
 }
 
-void publish_step(Runtime& rt, const model::TestStep& s) {
-  if (s.kind == model::TestStep::Kind::Input) {
-    size_t dot = s.port.find('.');
-    rt.publish(s.port.substr(0, dot), s.port.substr(dot + 1), s.value);
-    return;
+// The test's steps as the stand-ins' inputs, in the order written: an input on its port, a
+// `set`/`unset` on the harness module's port. The stand-ins publish them at their times, the
+// steps of one instant in the order written (StandInLog::add_input), as `arbc run --inputs`
+// does a file's lines (docs/testing.md#how-tests-run); a replayed counterexample needs that
+// order.
+void add_steps(StandInLog& log, const model::TestCase& test) {
+  for (const model::TestStep& s : test.steps) {
+    if (s.kind == model::TestStep::Kind::Input) {
+      log.add_input({s.t, s.port, s.value});
+      continue;
+    }
+    Value step = Value::record(
+        {{"op", s.kind == model::TestStep::Kind::Set ? "set" : "unset"}, {"event", s.event}});
+    log.add_input({s.t, std::string(kHarnessModule) + ".events", step});
   }
-  Value step = Value::record(
-      {{"op", s.kind == model::TestStep::Kind::Set ? "set" : "unset"}, {"event", s.event}});
-  rt.publish(kHarnessModule, "events", step);
-}
-
-using StepOrder = std::shared_ptr<const std::vector<const model::TestStep*>>;
-
-// Publishes step i, then posts the next step of the same instant behind the deliveries step i
-// caused. The runtime drains each connection one message per task, so connections interleave
-// fairly; steps published all at once would then be processed by connection, not as written
-// (two `unset`s and a message at one instant: the message between the two). Chained, the
-// steps of an instant are processed in the order written (docs/testing.md#how-tests-run),
-// which a replayed counterexample needs.
-void publish_from(Runtime& rt, const StepOrder& steps, size_t i) {
-  const std::vector<const model::TestStep*>& order = *steps;
-  publish_step(rt, *order[i]);
-  if (i + 1 < order.size() && order[i + 1]->t == order[i]->t)
-    rt.executor().post(order[i]->t, [&rt, steps, i] { publish_from(rt, steps, i + 1); });
-}
-
-// Publishes each step at its time, in the order written (same-instant steps keep it).
-void post_steps(Runtime& rt, const model::TestCase& test) {
-  auto order = std::make_shared<std::vector<const model::TestStep*>>();
-  for (const model::TestStep& s : test.steps) order->push_back(&s);
-  std::stable_sort(order->begin(), order->end(),
-                   [](const model::TestStep* a, const model::TestStep* b) { return a->t < b->t; });
-  StepOrder steps = order;
-  for (size_t i = 0; i < steps->size(); ++i)
-    if (i == 0 || (*steps)[i - 1]->t != (*steps)[i]->t)
-      rt.executor().post((*steps)[i]->t, [&rt, steps, i] { publish_from(rt, steps, i); });
 }
 
 // Each failed expectation with what happened and the trace around it.
@@ -171,6 +150,7 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   model::App run_app = test_app(app, test);
   add_harness(run_app);
   auto log = std::make_shared<StandInLog>();
+  add_steps(*log, test);
   std::vector<std::string> stand_ins;
   Registry registry = registry_with_stand_ins(run_app, Registry(), log, &stand_ins);
   RunOptions options;
@@ -184,7 +164,6 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   if (!rt) return false;
   rt->set_reporter([out](const std::string& line) { out->reports.push_back(line); });
   rt->start();
-  post_steps(*rt, test);
   out->end = test_end(test);
   rt->advance(out->end);
   rt->shutdown();

@@ -1,9 +1,9 @@
 #include "runtime/stand_in.h"
 
 #include <algorithm>
-#include <set>
 
 #include "core/duration_literal.h"
+#include "runtime/stand_in_sample.h"
 
 namespace arbc {
 
@@ -20,29 +20,28 @@ class StandIn : public Module {
         continue;
       }
       out(p.name, p.type->to_string());
-      outs_.push_back({p.name, p.type, flags_of(app, m.name + "." + p.name)});
+      outs_.push_back({p.name, p.type, sample_plan(app, m.name + "." + p.name)});
     }
   }
 
   void start() override {
-    auto it = log_->inputs.find(name_);
-    std::set<std::string> scripted;
-    if (it != log_->inputs.end()) {
-      for (const TimedValue& v : it->second) {
-        scripted.insert(v.port);
-        schedule(seconds_of(v.t - now_nanos()), [this, &v] { send(v.port, v.value); });
-      }
+    log_->publishers[name_] = [this](const TimedValue& v) { send(v.port, v.value); };
+    if (!log_->inputs_scheduled) {
+      log_->inputs_scheduled = true;
+      schedule_instants();
     }
     if (!log_->stub.enabled) return;
     for (const OutPort& o : outs_) {
       std::string qualified = name_ + "." + o.name;
-      if (scripted.count(qualified)) continue;  // an inputs file speaks for this port
+      if (log_->inputs_on(qualified)) continue;  // an inputs file speaks for this port
       auto rate = log_->stub.period_of_port.find(qualified);
       double period =
           rate == log_->stub.period_of_port.end() ? log_->stub.default_period : rate->second;
       if (period > 0) sample(o, now_nanos(), period, 0);
     }
   }
+
+  void stop() override { log_->publishers.erase(name_); }
 
   void on_delivery(const Delivery& d) override {
     Received r{nanos_from_seconds(d.time), name_ + "." + d.port, d.connection, d.value};
@@ -56,17 +55,28 @@ class StandIn : public Module {
   struct OutPort {
     std::string name;
     TypePtr type;
-    std::vector<std::string> flags;
+    SamplePlan plan;  // what --stub draws (runtime/stand_in_sample.h)
   };
 
-  // The flags a status port's feeds read (`e = "flag"` maps: the flag, not the event's
-  // name): what a sample of it draws from.
-  static std::vector<std::string> flags_of(const model::App& app, const std::string& port) {
-    std::vector<std::string> flags;
-    for (const model::Event& e : app.events) {
-      if (e.source == port && !e.flag.empty()) flags.push_back(e.flag);
+  // The first input of each instant at its time; play() goes on from there.
+  void schedule_instants() {
+    const std::vector<TimedValue>& in = log_->inputs();
+    for (size_t i = 0; i < in.size(); ++i) {
+      if (i > 0 && in[i - 1].t == in[i].t) continue;
+      schedule(seconds_of(in[i].t - now_nanos()), [this, i] { play(i); });
     }
-    return flags;
+  }
+
+  // Publishes input i on its stand-in's port (none runs here in a distributed run that hosts
+  // its module elsewhere), then the next input of the same instant behind what this one
+  // caused: a publication posts one task per message on each connection from the port
+  // (runtime/message_path.cc), and a timer of delay 0 runs after them. Inputs of one instant
+  // published at once would be processed connection by connection instead, not as listed.
+  void play(size_t i) {
+    const std::vector<TimedValue>& in = log_->inputs();
+    auto publisher = log_->publishers.find(in[i].port.substr(0, in[i].port.find('.')));
+    if (publisher != log_->publishers.end()) publisher->second(in[i]);
+    if (i + 1 < in.size() && in[i + 1].t == in[i].t) schedule(0, [this, i] { play(i + 1); });
   }
 
   void send(const std::string& qualified, const Value& v) {
@@ -80,7 +90,7 @@ class StandIn : public Module {
   // Publishes sample k on `o` now, at origin + k * period (to the nanosecond), and schedules
   // the next (no drift).
   void sample(const OutPort& o, Nanos origin, double period, uint64_t k) {
-    send(name_ + "." + o.name, sample_value(*o.type, rng(), o.flags));
+    send(name_ + "." + o.name, sample_value(*o.type, rng(), o.plan));
     Nanos next = later(origin, nanos_from_seconds(static_cast<double>(k + 1) * period));
     schedule(seconds_of(next - now_nanos()),
              [this, &o, origin, period, k] { sample(o, origin, period, k + 1); });
@@ -91,52 +101,18 @@ class StandIn : public Module {
   std::vector<OutPort> outs_;
 };
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-// How many messages the inputs file gave `port` of `module`.
-uint64_t scripted_on(const StandInLog& log, const std::string& module, const std::string& port) {
-  auto it = log.inputs.find(module);
-  if (it == log.inputs.end()) return 0;
-  uint64_t n = 0;
-  for (const TimedValue& v : it->second) n += v.port == port;
-  return n;
-}
-
 }  // namespace
 
-Value sample_value(const Type& t, std::mt19937_64& rng, const std::vector<std::string>& flags) {
-  switch (t.kind) {
-    case Type::Kind::Bool:
-      return Value(rng() % 2 == 0);
-    case Type::Kind::Int:
-      return Value(static_cast<int64_t>(rng() % 10));
-    case Type::Kind::Float:
-      return Value(uniform(rng, 0, 1));
-    case Type::Kind::String:
-      return Value("sample");
-    case Type::Kind::Vec3:
-      return Value::vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-    case Type::Kind::List: {
-      Value out = Value::list();
-      if (!flags.empty() && t.element->kind == Type::Kind::String) {
-        for (const std::string& f : flags) {
-          if (rng() % 2 == 0) out.push_back(Value(f));  // each flag holds half of the time
-        }
-        return out;
-      }
-      size_t n = 1 + rng() % 3;
-      for (size_t i = 0; i < n; ++i) out.push_back(sample_value(*t.element, rng, {}));
-      return out;
-    }
-    case Type::Kind::Record: {
-      Value out = Value::record();
-      for (const Field& f : t.fields) out.set(f.name, sample_value(*f.type, rng, {}));
-      return out;
-    }
-  }
-  return Value();
+void StandInLog::add_input(TimedValue v) {
+  auto after = std::upper_bound(inputs_.begin(), inputs_.end(), v.t,
+                                [](Nanos t, const TimedValue& x) { return t < x.t; });
+  inputs_.insert(after, std::move(v));
+}
+
+uint64_t StandInLog::inputs_on(const std::string& port) const {
+  uint64_t n = 0;
+  for (const TimedValue& v : inputs_) n += v.port == port;
+  return n;
 }
 
 Registry registry_with_stand_ins(const model::App& app, const Registry& base,
@@ -167,7 +143,7 @@ std::string stand_in_summary(const model::App& app, const std::vector<std::strin
         out += "  " + q + " (stand-in source): published " + std::to_string(n);
         // Inputs timed after the run's end (or an interrupt) never go out: say so, rather
         // than let a short --duration drop them unseen.
-        uint64_t scripted = scripted_on(log, name, q);
+        uint64_t scripted = log.inputs_on(q);
         if (scripted > n) {
           out += " of the " + std::to_string(scripted) + " in the inputs (" +
                  std::to_string(scripted - n) + " not reached: the run ended first)";

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/runtime_test_util.h"
+#include "runtime/stand_in_sample.h"
 
 namespace arbc {
 namespace {
@@ -56,6 +57,42 @@ TEST(StandInTest, ASinkCountsWhatReachesItAndKeepsValuesOnlyWhenAsked) {
             std::string::npos)
       << counted.summary;
   EXPECT_EQ(counted.summary, all.summary);  // the same words either way
+}
+
+// --stub samples reach both sides of a threshold the spec compares a part with, the threshold
+// itself, and the strings it compares a part with (issue 39: floats stayed in [0, 1), so a
+// 45 dB threshold was never reached); parts nothing compares keep the plain ranges.
+TEST(StandInTest, SamplesReachBothSidesOfEveryThresholdTheSpecTests) {
+  SamplePlan plan;
+  plan.compared["db"].numbers = {45.0};
+  plan.compared["count"].numbers = {-3.0, 100.0};
+  plan.compared["source"].strings = {"voice"};
+  plan.compared["len(items)"].numbers = {5.0};
+  TypePtr t = parse_type("{db: float, count: int, source: string, other: float, items: list<int>}");
+  std::mt19937_64 rng(7);
+  int loud = 0, quiet = 0, at_45 = 0, voice = 0, over_100 = 0, under_minus_3 = 0, long_lists = 0;
+  for (int i = 0; i < 400; ++i) {
+    Value v = sample_value(*t, rng, plan);
+    double db = v["db"].as_float();
+    (db > 45 ? loud : quiet)++;
+    at_45 += db == 45.0;
+    voice += v["source"].as_string() == "voice";
+    int64_t count = v["count"].as_int();
+    over_100 += count > 100;
+    under_minus_3 += count < -3;
+    double other = v["other"].as_float();
+    EXPECT_TRUE(other >= 0 && other < 1) << other;
+    long_lists += v["items"].size() >= 5;
+    EXPECT_LE(v["items"].size(), static_cast<size_t>(kMaxSampleListLength));
+  }
+  EXPECT_GT(loud, 40);
+  EXPECT_GT(quiet, 40);
+  EXPECT_GT(at_45, 10);
+  EXPECT_GT(voice, 40);
+  EXPECT_LT(voice, 360);  // and strings no condition names
+  EXPECT_GT(over_100, 10);
+  EXPECT_GT(under_minus_3, 10);
+  EXPECT_GT(long_lists, 40);
 }
 
 }  // namespace

@@ -433,6 +433,48 @@ def case_arm_is_proved_per_message(arbc, tmp):
            in out, "the YARP variant's broken assumption is not said", out, err)
 
 
+# Two messages at one instant, the first changing an event the second's rule reads. Cmd is
+# declared before Arm, so ordering by module (as `run --inputs` did) puts the command first.
+ONE_INSTANT_SPEC = """app one_instant;
+module Cmd   { out cmd: float; }
+module Arm   { out status: list<string>; }
+module Motor { in cmd: float; }
+events from Arm.status { e_busy = "busy" } lifetime 1s;
+arbitrate Motor.cmd by priority { go: from Cmd.cmd when not e_busy; }
+"""
+
+
+def case_one_instant_in_the_listed_order(arbc, tmp):
+    """`arbc test` and `arbc run --inputs` process the messages of one instant as listed, so one
+    scenario gives the same deliveries both ways (issue 39: the test saw 1, the run 2)."""
+    status = ("Arm.status", '["busy"]', ["busy"])
+    command = ("Cmd.cmd", "1.0", 1.0)
+    # Listed status first: the command at 1s is not selected. Command first: it is delivered.
+    for first, second, delivered_at_1s in ((status, command, False), (command, status, True)):
+        spec = os.path.join(tmp, "one_instant.spec")
+        expectation = "delivers at 1s" if delivered_at_1s else "delivers nothing within 0s..2s"
+        with open(spec, "w", encoding="utf-8") as f:
+            f.write(ONE_INSTANT_SPEC + 'test "one instant" {\n'
+                    f"  at 1s {first[0]} <- {first[1]};\n"
+                    f"  at 1s {second[0]} <- {second[1]};\n"
+                    "  at 2.5s Cmd.cmd <- 2.0;\n"
+                    f"  expect go {expectation};\n"
+                    "}\n")
+        code, out, err = run(arbc, "test", spec)
+        expect(code == 0 and "PASS" in out, f"{first[0]} first: arbc test", out, err)
+        inputs = os.path.join(tmp, "one_instant.jsonl")
+        write_lines(inputs, [{"t": 1, "port": first[0], "value": first[2]},
+                             {"t": 1, "port": second[0], "value": second[2]},
+                             {"t": 2.5, "port": "Cmd.cmd", "value": 2.0}])
+        code, out, err = run(arbc, "run", spec, "--inputs", inputs, "--duration", "3s")
+        row = next((ln.split() for ln in out.splitlines() if ln.startswith("go ")), None)
+        expect(code == 0 and row is not None, f"exit {code}, no row for go", out, err)
+        want = 2 if delivered_at_1s else 1
+        expect(row[1:3] == ["2", str(want)],
+               f"{first[0]} first: run --inputs delivered {row[2]} of {row[1]}, the test {want}",
+               out, err)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)

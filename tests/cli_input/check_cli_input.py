@@ -81,6 +81,38 @@ def case_stub_publishes_the_flags_feeds_read(arbc, plugin):
         expect(3 * delivered > arrived > 0, f"go delivered {delivered} of {arrived}", out, err)
 
 
+def case_stub_reaches_the_thresholds_conditions_test(arbc, plugin):
+    """--stub draws a compared part around the spec's constants: a 45 dB threshold is crossed in
+    a few seconds, both ways, the same in every run of a seed (issue 39: floats stayed in [0, 1)
+    and e_loud was never set)."""
+    with tempfile.TemporaryDirectory() as d:
+        spec = os.path.join(d, "loud.spec")
+        with open(spec, "w") as f:
+            f.write('app stub_loud;\n'
+                    'module Mic { out level: { db: float, source: string }; }\n'
+                    'module Planner { out cmd: float; }\n'
+                    'module Base { in cmd: float; }\n'
+                    'event e_loud = Mic.level : level.db > 45.0;\n'
+                    'event e_voice = Mic.level : level.source == "voice";\n'
+                    'arbitrate Base.cmd { go: from Planner.cmd when not e_loud and not e_voice; }\n')
+        traces = []
+        for name in ("a.jsonl", "b.jsonl"):
+            trace = os.path.join(d, name)
+            code, out, err = run(arbc, "run", spec, "--stub", "--duration", "3s", "--trace", trace)
+            expect(code == 0, f"exit {code}", out, err)
+            traces.append(open(trace).read())
+        expect(traces[0] == traces[1], "two runs of one seed differ", out, err)
+        records = [json.loads(line) for line in traces[0].splitlines()]
+        levels = [r["value"] for r in records
+                  if r["type"] == "publish" and r["port"] == "Mic.level"]
+        sets = {r["event"] for r in records if r["type"] == "event" and r["op"] == "set"}
+        expect({"e_loud", "e_voice"} <= sets, f"events set: {sorted(sets)}", out, err)
+        expect(any(v["db"] <= 45 for v in levels) and any(v["db"] > 45 for v in levels),
+               "db not drawn on both sides of 45", out, err)
+        row = next((ln.split() for ln in out.splitlines() if ln.startswith("go ")), None)
+        expect(row is not None and int(row[2]) > 0, "go never delivered", out, err)
+
+
 def case_duration_unit_unknown(arbc, plugin):
     expect_bad_input(run(arbc, "run", PINGPONG, "--plugin", plugin, "--duration", "3d"),
                      "--duration '3d' is not a positive duration with its unit: 'd' is not a "
