@@ -9,8 +9,8 @@
 #include "cli/parse_error.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
-#include "core/join.h"
 #include "harness/model_loader.h"
+#include "verify/report_format.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -23,24 +23,25 @@ bool write_file(const std::filesystem::path& path, const std::string& text) {
   return static_cast<bool>(out);
 }
 
-// One line per arbitrated port: the verdict and what it covers, then any finding.
-std::vector<std::string> verdict_lines(const model::App& app) {
-  std::vector<std::string> lines;
+// The verifier's text report of `app` (as `arbc verify` prints it, without timings); `input` is
+// the file as the user named it.
+std::string verification_text(const model::App& app, const std::string& input) {
   std::string error;
   std::optional<verify::VerifyReport> report =
       verify::verify_app(app, verify::VerifyOptions{}, &error);
-  if (!report) return {"not verified: " + error};
-  for (const verify::PortResult& p : report->ports) {
-    lines.push_back("`" + p.port + "`: " + verify::verdict_name(p.verdict) + " (rules " +
-                    join(p.rules) + "; events " + (p.events.empty() ? "none" : join(p.events)) +
-                    ")");
-    for (const verify::Finding& f : p.findings)
-      lines.push_back("`" + p.port + "`: " + severity_name(f.severity) + " [" + f.check + "] " +
-                      f.message);
-  }
-  for (const verify::Finding& f : report->app_findings)
-    lines.push_back(std::string(severity_name(f.severity)) + " [" + f.check + "] " + f.message);
-  return lines;
+  if (!report) return "not verified: " + error + "\n";
+  std::vector<verify::InputReport> inputs;
+  inputs.emplace_back(input, std::move(*report));
+  std::string text = verify::format_text(inputs, nullptr, /*stats=*/false);
+  // The page is an artifact for other machines: no path of this one. The report names the spec
+  // as given (and its lines as file:line); a spec given by an absolute path is named by its
+  // file name alone.
+  std::filesystem::path given(input);
+  if (!given.is_absolute()) return text;
+  const std::string folder = given.parent_path().string() + "/";
+  for (size_t at = text.find(folder); at != std::string::npos; at = text.find(folder, at))
+    text.erase(at, folder.size());
+  return text;
 }
 
 }  // namespace
@@ -74,7 +75,7 @@ int docs_command(std::span<char*> args) {
     return kExitBadInput;
   }
   std::filesystem::path dir(out_dir);
-  docs::DocsInput doc{&app.value(), verdict_lines(*app), "app.svg", ""};
+  docs::DocsInput doc{&app.value(), verification_text(*app, input), "app.svg", ""};
   size_t elements = docs::diagram_elements(*app);
   if (elements > docs::kMaxDiagramElements) {
     // Graphviz would run for minutes and nobody could read the result: tables only.

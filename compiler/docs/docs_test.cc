@@ -147,7 +147,7 @@ TEST(MonitorSummaryTest, SaysWhatTheBodyDoes) {
 
 TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
   model::App app = search_and_track();
-  DocsInput input{&app, {"HeadControl.gaze: proved"}, "app.svg", ""};
+  DocsInput input{&app, "  HeadControl.gaze: proved\n", "app.svg", ""};
   std::string md = render_index_markdown(input);
   expect_consistent_tables(md);
   EXPECT_NE(md.find("\nLook around until a face appears | then track it.\n"), std::string::npos);
@@ -159,7 +159,10 @@ TEST(MarkdownDocsTest, TablesHaveConsistentColumns) {
             std::string::npos);
   EXPECT_NE(md.find("| 0 | search |"), std::string::npos);
   EXPECT_NE(md.find("| 1 | track |"), std::string::npos);
-  EXPECT_NE(md.find("- HeadControl.gaze: proved"), std::string::npos);
+  EXPECT_NE(
+      md.find("## Verification\n\nWhat `arbc verify` says of this app: every claim with its "
+              "verdict, and what each rests on.\n\n```text\n  HeadControl.gaze: proved\n```\n"),
+      std::string::npos);
 }
 
 // The lifetime column says what each `set` gives, not only the declaration's default.

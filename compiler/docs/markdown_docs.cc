@@ -159,10 +159,12 @@ std::string render_index_markdown(const DocsInput& input) {
   connections_section(app, out);
   events_section(app, out);
   decision_section(app, out);
-  if (!input.verdicts.empty()) {
-    out << "## Verification\n\n";
-    for (const std::string& v : input.verdicts) out << "- " << v << "\n";
-    out << "\n";
+  if (!input.verification.empty()) {
+    // The verifier's own words, not a summary of them: a summary said "proved" for every port
+    // of an app whose resource was refuted (issue 39).
+    out << "## Verification\n\nWhat `arbc verify` says of this app: every claim with its verdict, "
+           "and what each rests on.\n\n```text\n"
+        << input.verification << "```\n";
   }
   return out.str();
 }

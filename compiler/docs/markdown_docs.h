@@ -13,9 +13,10 @@ namespace arbc::docs {
 
 struct DocsInput {
   const model::App* app = nullptr;
-  // One line per verified port ("PickAndPlace.cmd: proved, 2 rules, 3 events"), or findings.
-  // Empty when the verifier did not run.
-  std::vector<std::string> verdicts;
+  // What `arbc verify` says of the app, as its text report prints it: every claim (ports,
+  // asserts, resources, properties over time) with its verdict, the assumptions and rates each
+  // rests on, and the counterexample of each refuted one. Empty when the verifier did not run.
+  std::string verification;
   std::string diagram_svg;   // file name of the diagram to embed, e.g. "app.svg"; empty: none
   std::string diagram_note;  // shown instead of the diagram when there is none (why not)
 };
