@@ -190,6 +190,11 @@ Ev Encoder::index(const Ev& list, const Ev& i) {
   if (list.v.items.empty()) return bad("an index into an empty list literal");
   const z3::expr& n = i.v.scalar;
   z3::expr ok = list.ok && i.ok && n >= 0 && n < list.v.scalar;
+  // A constant index below the capacity reads an encoded element whatever the length; any other
+  // index of a list of unknown length may reach past the capacity.
+  z3::expr at = n.simplify();
+  bool known = at.is_numeral() && lua::int_of(at) < static_cast<int64_t>(list.v.items.size());
+  if (!known && open_list(list.v)) out_.bounded = true;
   SymValue v = list.v.items.back();
   for (size_t k = list.v.items.size() - 1; k-- > 0;) {
     std::optional<SymValue> m = merge(n == static_cast<int>(k), list.v.items[k], v);
@@ -216,6 +221,7 @@ Ev Encoder::binary(const BodyExpr& e) {
   if (op == "==" || op == "!=") {
     std::optional<z3::expr> eq = sym_equal(a.v, b.v);
     if (!eq) return bad("`" + op + "` of values of different shapes");
+    if (open_list(a.v) || open_list(b.v)) out_.bounded = true;  // compares every element
     return {{K::Bool, op == "==" ? *eq : !*eq}, a.ok && b.ok};
   }
   if (op == "<" || op == "<=" || op == ">" || op == ">=") return compare(op, a, b);
@@ -223,6 +229,7 @@ Ev Encoder::binary(const BodyExpr& e) {
   if (op == "+" && a.v.kind == K::String)
     return {{K::String, z3::concat(a.v.scalar, b.v.scalar)}, a.ok && b.ok};
   if (op == "+" && a.v.kind == K::List) {
+    if (open_list(a.v) || open_list(b.v)) out_.bounded = true;  // b's elements move
     SymValue l(K::List, a.v.scalar + b.v.scalar);
     // Element k of the result: a's when k < len(a), else b's element k - len(a).
     for (size_t k = 0; k < a.v.items.size() + b.v.items.size(); ++k) {
@@ -392,6 +399,7 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
   if (list.unread) return unread();
   if (list.v.kind != K::List || list.v.items.empty()) return bad(e.text + " of an empty literal");
   const BodyExpr& lambda = e.args[1];
+  if (open_list(list.v)) out_.bounded = true;  // every element's key
   z3::expr ok = list.ok && list.v.scalar > 0;
   std::optional<SymValue> best, best_key;
   for (size_t k = 0; k < list.v.items.size(); ++k) {
@@ -432,6 +440,7 @@ Ev Encoder::min_max(const BodyExpr& e, bool min) {
     if (x.unread) return unread();
     ok = ok && x.ok;
     if (x.v.kind == K::List && e.args.size() == 1) {
+      if (open_list(x.v)) out_.bounded = true;  // every element
       len = x.v.scalar;
       xs = x.v.items;
     } else {

@@ -1,7 +1,10 @@
 // A rule's body as a Z3 formula over one input message (docs/design.md#the-proof): whether
 // the generated monitor accepts the message, and the value it delivers.
 //
-// Exact for lists of at most the list bound (the assumption the report prints), in the
+// Exact for lists of any length where the body reads its lists only through `len` and indexes
+// that are constants below the capacity (the elements encoded), and else for lists of at most
+// the capacity (the list bound): `bounded` says which, and the data query assumes the bound only
+// for bodies that need it (docs/checks.md#message-data). In the
 // machine's arithmetic (verify/lua_number.h: IEEE doubles, 64-bit ints that wrap). What cannot
 // be encoded exactly (string order and length, `%` on floats of the message, a list-valued
 // `var`) makes the rule *opaque* for data: `opaque` says why, and no
@@ -51,6 +54,11 @@ struct EncodedBody {
   std::vector<std::string> abstracted;                  // state read: "var x", "now()"
   std::vector<std::pair<std::string, SymValue>> state;  // the abstracted values, by name
   std::vector<AbstractLength> lengths;                  // with abstract_lengths only
+  // The encoding is exact only for lists of at most their capacity: it reads elements at an
+  // index it does not know (min_by, max_by, min, max of a list, `xs[i]`, `+` and `==` of
+  // lists). Without it, a list of any length is encoded exactly: its elements past the
+  // capacity are never read.
+  bool bounded = false;
 
   explicit EncodedBody(z3::context& ctx) : accepts(ctx.bool_val(false)) {}
 };

@@ -55,10 +55,13 @@ std::string DataQuery::opaque_reason(const model::Connection& c) {
 const SymValue& DataQuery::message(const std::string& source) {
   auto it = messages_.find(source);
   if (it != messages_.end()) return it->second;
-  std::vector<z3::expr> domain;
+  std::vector<z3::expr> domain, within;
   const model::Port* p = app_.find_port(source);
-  SymValue m = fresh_value(ctx_, *p->type, source, list_bound_, domain);
-  for (const z3::expr& d : domain) solver_.add(d);  // list lengths within the bound
+  SymValue m = fresh_value(ctx_, *p->type, source, list_bound_, domain, within);
+  for (const z3::expr& d : domain) solver_.add(d);  // list lengths are not negative
+  z3::expr all = ctx_.bool_val(true);
+  for (const z3::expr& w : within) all = all && w;
+  within_bound_.insert_or_assign(source, all);
   return messages_.emplace(source, std::move(m)).first->second;
 }
 
@@ -72,6 +75,8 @@ const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   z3::expr lit = ctx_.bool_const(("accepts!" + c.destination + "/" + c.name).c_str());
   if (b.opaque.empty()) {
     solver_.add(z3::implies(lit, b.accepts));
+    // A body exact only for short lists: asking about it assumes the source's lists are short.
+    if (b.bounded) solver_.add(z3::implies(lit, within_bound_.at(c.source)));
     for (const z3::expr& x : b.side) solver_.add(x);
     lengths_.insert(lengths_.end(), b.lengths.begin(), b.lengths.end());
   }
@@ -98,11 +103,23 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
   if (pe.opaque.empty()) {
     solver_.add(z3::implies(lit, negate ? !pe.accepts : pe.accepts));
+    if (pe.bounded) {
+      solver_.add(z3::implies(lit, within_bound_.at(c.source)));
+      bounded_predicates_.insert(lit.id());
+    }
     for (const z3::expr& x : pe.side) solver_.add(x);
     for (const AcceptTracker& t : pe.trackers) solver_.add(t.literal);
     lengths_.insert(lengths_.end(), pe.lengths.begin(), pe.lengths.end());
   }
   return predicates_.emplace(key, lit).first->second;
+}
+
+bool DataQuery::bounded(const model::Connection& c, const model::BodyExpr* p, bool negate) {
+  const Encoded& e = encoded(c);
+  if (!e.body.opaque.empty()) return false;  // no data question is asked about it
+  if (e.body.bounded) return true;
+  if (!p || !e.body.emitted) return false;
+  return bounded_predicates_.count(predicate_literal(c, *p, negate).id()) > 0;
 }
 
 std::string DataQuery::predicate_opaque_reason(const model::Connection& c,
@@ -235,6 +252,10 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
     }
   }
   Answer a = check(assumptions);
+  if (a == Answer::Unsat) {
+    for (const DataSide& side : sides)
+      bound_used_ |= bounded(*side.connection, side.emitted_holds, side.negate);
+  }
   if (a == Answer::Unsat && core) {
     core->accept_lines.assign(sides.size(), {});
     core->predicate_used.assign(sides.size(), false);

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -80,6 +81,14 @@ class DataQuery {
   // nullopt when it cannot be decided (opaque, solver trouble).
   std::optional<bool> holds(const model::BodyExpr& predicate, const Value& value, const Type& t);
 
+  // Whether the answers about `c` (and `p` over what it delivers) hold only for lists of at most
+  // the list bound: its body or the predicate reads elements at an index it does not know
+  // (EncodedBody::bounded). Else they hold for lists of any length.
+  bool bounded(const model::Connection& c, const model::BodyExpr* p = nullptr, bool negate = false);
+  // Whether some unsat answer so far rested on the list bound (the report's assumption).
+  bool bound_used() const { return bound_used_; }
+  int list_bound() const { return list_bound_; }
+
   std::string unknown_reason() const { return unknown_reason_; }
   const model::App& app() const { return app_; }
   int queries() const { return queries_; }
@@ -104,6 +113,9 @@ class DataQuery {
   int list_bound_;
   z3::solver solver_;
   std::map<std::string, SymValue> messages_;
+  std::map<std::string, z3::expr> within_bound_;  // by source: its list lengths <= the bound
+  std::set<unsigned> bounded_predicates_;         // predicate literals (ids) that assume it
+  bool bound_used_ = false;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
   std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>
       predicates_;

@@ -13,9 +13,12 @@ std::vector<z3::expr> candidates(const SymValue& leaf, const z3::model& m) {
   z3::context& ctx = leaf.scalar.ctx();
   std::vector<z3::expr> out;
   if (leaf.kind == K::List) {
-    // Fewest elements: each length below the model's.
+    // Fewest elements: each length below the model's, up to a few dozen; then lengths a
+    // witness can be written with (a length need not be bounded: docs/checks.md#message-data).
     int64_t len = lua::int_of(m.eval(leaf.scalar, true));
-    for (int64_t k = 0; k < len; ++k) out.push_back(leaf.scalar == lua::int_val(ctx, k));
+    for (int64_t k = 0; k < len && k <= 32; ++k) out.push_back(leaf.scalar == lua::int_val(ctx, k));
+    for (int64_t k : {int64_t{256}, kMaxWitnessElements})
+      if (len > k) out.push_back(leaf.scalar <= lua::int_val(ctx, k));
     return out;
   }
   if (leaf.kind == K::Int) {

@@ -155,21 +155,16 @@ class PortChecker {
     }
   }
 
-  // Whether rule c's message has a list: the data encoding sees at most --list-bound elements.
-  bool reads_lists(const model::Connection& c) const {
-    const model::Port* p = data_.app().find_port(c.source);
-    return p && p->type && p->type->has_list();
-  }
-
-  // A verdict about rule `r` rests on its message data with lists: it holds for lists of at most
-  // --list-bound elements, which the verdict says. A rule whose body accepts no such message
-  // looks dead by data, and every pair it is in exclusive by data, while a longer list may pass
-  // it: a warning, once per rule.
+  // A verdict about rule `r` rests on its message data. Where its body reads list elements at
+  // an index it does not know (DataQuery::bounded), the data answers hold for lists of at most
+  // --list-bound elements, which the verdict says. A rule whose body then accepts no such
+  // message looks dead by data, and every pair it is in exclusive by data, while a longer list
+  // may pass it: a warning, once per rule.
   void bounded_by_lists(const ScopedRule& r) {
     const model::Connection& c = *r.connection;
-    if (!reads_lists(c)) return;
+    if (!data_.opaque_reason(c).empty() || !data_.bounded(c)) return;
     result_.list_bound = options_.list_bound;
-    if (!warned_bound_.insert(&c).second || !data_.opaque_reason(c).empty()) return;
+    if (!warned_bound_.insert(&c).second) return;
     DataWitness w;
     DataCore core;
     ++data_queries_;

@@ -220,6 +220,17 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
     results.push_back(std::move(r));
   };
   add_input_rules(inputs, rules);
+  // Proved verdicts that hold only for lists of at most N elements: a proof is no result in
+  // SARIF, so the run's property bag names them (docs/checks.md#list-bound).
+  Json bounded = Json::array();
+  for (const InputReport& in : inputs) {
+    for (const PortResult& p : in.report.ports)
+      if (p.verdict == Verdict::Proved && p.list_bound)
+        bounded.push_back({{"port", p.port}, {"list_bound", p.list_bound}});
+    for (const ResourceResult& r : in.report.resources)
+      if (r.verdict == Verdict::Proved && r.list_bound)
+        bounded.push_back({{"resource", r.name}, {"list_bound", r.list_bound}});
+  }
   for (const InputReport& in : inputs) {
     for (const Diagnostic& d : in.errors) results.push_back(diagnostic_result(d));
     for (const PortResult& p : in.report.ports) {
@@ -235,6 +246,7 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
   Json root{{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
             {"version", "2.1.0"},
             {"runs", Json::array({{{"tool", {{"driver", driver}}}, {"results", results}}})}};
+  if (!bounded.empty()) root["runs"][0]["properties"]["proved_for_bounded_lists"] = bounded;
   return root.dump(2) + "\n";
 }
 

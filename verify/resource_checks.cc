@@ -248,8 +248,7 @@ bool ResourceChecker::never_uses(const ResourceRule& a, const ResourceRule& b, D
       return true;
     }
     if (ans == Answer::Sat) continue;
-    const model::Port* source = app_.find_port(sides[s]->connection->source);
-    if (source && source->type && source->type->has_list()) out_.list_bound = options_.list_bound;
+    if (data_.bounded(*sides[s]->connection, uses())) out_.list_bound = options_.list_bound;
     std::string why = "'" + sides[s]->connection->name + "' never delivers a command that uses it";
     if (!core.accept_lines[0].empty())
       why += " (" + core_lines_text(core.accept_lines[0], sides[s]->connection->name) + ")";

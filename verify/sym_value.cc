@@ -15,7 +15,7 @@ const SymValue* SymValue::field(const std::string& name) const {
 }
 
 SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix, int bound,
-                     std::vector<z3::expr>& domain) {
+                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound) {
   using K = SymValue::Kind;
   switch (t.kind) {
     case Type::Kind::Bool:
@@ -34,11 +34,12 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
     }
     case Type::Kind::List: {
       z3::expr len = lua::int_const(ctx, prefix + ".len");
-      domain.push_back(len >= 0 && len <= bound);
+      domain.push_back(len >= 0);
+      within_bound.push_back(len <= bound);
       SymValue v(K::List, len);
       for (int i = 0; i < bound; ++i)
-        v.items.push_back(
-            fresh_value(ctx, *t.element, prefix + "[" + std::to_string(i) + "]", bound, domain));
+        v.items.push_back(fresh_value(ctx, *t.element, prefix + "[" + std::to_string(i) + "]",
+                                      bound, domain, within_bound));
       return v;
     }
     case Type::Kind::Record: {
@@ -48,12 +49,19 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
       SymValue v(K::Record, ctx.bool_val(true));
       for (const Field& f : fields) {
         v.names.push_back(f.name);
-        v.items.push_back(fresh_value(ctx, *f.type, prefix + "." + f.name, bound, domain));
+        v.items.push_back(
+            fresh_value(ctx, *f.type, prefix + "." + f.name, bound, domain, within_bound));
       }
       return v;
     }
   }
   return SymValue(ctx);
+}
+
+bool open_list(const SymValue& v) {
+  if (v.kind == SymValue::Kind::List && !v.scalar.simplify().is_numeral()) return true;
+  return std::any_of(v.items.begin(), v.items.end(),
+                     [](const SymValue& i) { return open_list(i); });
 }
 
 SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bound) {
@@ -245,6 +253,13 @@ Value concrete(const z3::model& m, const SymValue& v) {
       ValueList items;
       for (int64_t i = 0; i < len && i < static_cast<int64_t>(v.items.size()); ++i)
         items.push_back(concrete(m, v.items[static_cast<size_t>(i)]));
+      // Past the capacity (a length no exact encoding bounds): unread, so any element will do.
+      // A witness longer than kMaxWitnessElements is not built (no message carries it).
+      Value pad = v.items.empty() ? Value()
+                  : items.empty() ? concrete(m, v.items.back())
+                                  : items.back();
+      for (int64_t i = static_cast<int64_t>(items.size()); i < len && i < kMaxWitnessElements; ++i)
+        items.push_back(pad);
       return Value(std::move(items));
     }
     case K::Record: {

@@ -4,8 +4,10 @@
 //   bool -> Bool, int -> a 64-bit bit-vector, float -> IEEE binary64 (verify/lua_number.h: the
 //   machine's arithmetic), string -> String (one character per byte), vec3 -> three numbers,
 //   record -> its fields (sorted by name, as app values are), list<T> -> a length (an int)
-//   and `capacity` element values: elements at or past the length are unused. A message list
-//   has capacity N (the list bound), so lists of at most N elements are covered exactly.
+//   and `capacity` element values: elements at or past the length are unused, and so are elements
+//   past the capacity of a longer list. A message list has capacity N (the list bound) and any
+//   length: a body that reads no element past the capacity is exact for every length, others
+//   assume the length at most N (EncodedBody::bounded).
 #pragma once
 
 #include <z3++.h>
@@ -34,10 +36,15 @@ struct SymValue {
   const SymValue* field(const std::string& name) const;
 };
 
-// Fresh constants for a value of type `t` named after `prefix` ("m1.objects"). List lengths
-// get 0 <= len <= bound, added to `domain`.
+// Fresh constants for a value of type `t` named after `prefix` ("m1.objects"), lists with
+// capacity `bound`. List lengths get 0 <= len, added to `domain`, and len <= bound, added to
+// `within_bound` (assumed only by encodings that need it).
 SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix, int bound,
-                     std::vector<z3::expr>& domain);
+                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound);
+
+// Whether v holds a list whose length is not a constant (its elements past the capacity, if
+// any, are not encoded).
+bool open_list(const SymValue& v);
 
 // The constant `v` of type `t` (lists get capacity `bound`, unused elements zero).
 SymValue constant_value(z3::context& ctx, const Value& v, const Type& t, int bound);
@@ -57,7 +64,13 @@ std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymVal
 // nullopt when the shapes differ.
 std::optional<z3::expr> sym_equal(const SymValue& a, const SymValue& b);
 
-// The concrete value of v in a model (list elements up to the length), as an app Value.
+// The longest list a witness is built with (concrete; nicer_model tries 256 first): a model
+// whose list needs more (`accept len(xs) > 1000000`) is cut there, and its replay on the Lua
+// monitors then says that it disagrees, rather than a witness no monitor's memory holds.
+inline constexpr int64_t kMaxWitnessElements = int64_t{1} << 12;
+
+// The concrete value of v in a model (list elements up to the length), as an app Value. Elements
+// past a list's capacity, which no exact encoding reads, repeat its last encoded element.
 Value concrete(const z3::model& m, const SymValue& v);
 
 }  // namespace arbc::verify

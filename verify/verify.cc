@@ -161,10 +161,12 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   }
   report.solver_queries += data.queries();
   if (data.queries() > 0) {
-    report.assumptions = {
-        "lists in messages have at most " + std::to_string(options.list_bound) +
-            " elements (--list-bound)",
-        "monitor state (var, now()) may hold any value earlier messages could leave"};
+    // Lists of any length unless some answer rested on the bound (DataQuery::bound_used).
+    if (data.bound_used())
+      report.assumptions.push_back("lists in messages have at most " +
+                                   std::to_string(options.list_bound) + " elements (--list-bound)");
+    report.assumptions.push_back(
+        "monitor state (var, now()) may hold any value earlier messages could leave");
   }
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);

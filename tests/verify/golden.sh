@@ -68,9 +68,17 @@ golden findings.txt repo 1 tests/verify/findings.spec
 # event that only another port's container holds is vacuous (a warning), not proved.
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
 golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
-# A proof that rests on lists of at most --list-bound elements says so; raised, it is refuted.
-golden list_bound.txt repo 0 tests/verify/list_bound.spec
-golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound.spec
+# Lists of any length (issue 38 item 3): a rule that needs five elements, read through `len`
+# only, is refuted by a 5-element message (it was "proved" for lists of at most 4); bodies that
+# read `len` and constant indexes are proved for every length. A proof that rests on lists of
+# at most --list-bound elements (min_by reads every element) says so in its first line and JSON;
+# raised, it is refuted.
+golden list_bound.txt repo 1 tests/verify/list_bound.spec
+golden list_any_length.txt repo 0 tests/verify/list_any_length.spec
+golden list_bound_min_by.txt repo 0 tests/verify/list_bound_min_by.spec
+golden list_bound_min_by.json repo 0 --format json tests/verify/list_bound_min_by.spec
+golden list_bound_min_by.sarif repo 0 --format sarif tests/verify/list_bound_min_by.spec
+golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound_min_by.spec
 # Properties over time whose free-model counterexample the runtime does not show (issue 38
 # item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
 golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec

@@ -1,0 +1,98 @@
+// Lists of any length (docs/checks.md#message-data): a body that reads its message's list only
+// through `len` and constant indexes below the capacity is encoded exactly for every length
+// (EncodedBody::bounded false), so a question about it is answered with lists longer than the
+// capacity; a body that reads an element at an index it does not know needs the bound.
+#include <gtest/gtest.h>
+
+#include "core/body_text.h"
+#include "core/type.h"
+#include "verify/body_encoding.h"
+#include "verify/lua_number.h"
+
+namespace arbc::verify {
+namespace {
+
+constexpr int kCapacity = 4;
+
+struct Encoded {
+  z3::context ctx;
+  std::vector<z3::expr> domain, within;
+  std::optional<SymValue> msg;
+  std::optional<EncodedBody> body;
+};
+
+// `accept PREDICATE` over a message of type list<{ d: float }> with capacity kCapacity.
+void encode(Encoded& out, const std::string& predicate) {
+  std::string err;
+  std::optional<model::BodyStmt> s = model::parse_body_stmt("(accept 1 " + predicate + ")", &err);
+  ASSERT_TRUE(s) << err;
+  TypePtr t = Type::list(Type::record({{"d", Type::scalar(Type::Kind::Float)}}));
+  out.msg = fresh_value(out.ctx, *t, "m", kCapacity, out.domain, out.within);
+  out.body = encode_body(out.ctx, {*s}, *out.msg, "r");
+  ASSERT_EQ(out.body->opaque, "");
+}
+
+// Whether the body accepts some message with exactly `len` elements (the bound assumed only if
+// the encoding says it needs it, as DataQuery asks).
+z3::check_result accepts_with_length(Encoded& e, int64_t len) {
+  z3::solver s(e.ctx);
+  for (const z3::expr& d : e.domain) s.add(d);
+  if (e.body->bounded)
+    for (const z3::expr& w : e.within) s.add(w);
+  for (const z3::expr& x : e.body->side) s.add(x);
+  for (const AcceptTracker& t : e.body->trackers) s.add(t.literal);
+  s.add(e.body->accepts);
+  s.add(e.msg->scalar == lua::int_val(e.ctx, len));
+  return s.check();
+}
+
+TEST(ListLength, LenAloneIsExactForEveryLength) {
+  Encoded e;
+  encode(e, "(>= (call len msg) 5)");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 5), z3::sat);  // past the capacity of 4
+  EXPECT_EQ(accepts_with_length(e, 1000000), z3::sat);
+  EXPECT_EQ(accepts_with_length(e, 4), z3::unsat);
+}
+
+TEST(ListLength, ConstantIndexBelowTheCapacityIsExact) {
+  Encoded e;
+  encode(e, "(and (>= (call len msg) 6) (< (field d (index msg 3)) 1.0))");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 6), z3::sat);
+  EXPECT_EQ(accepts_with_length(e, 5), z3::unsat);
+}
+
+// Out of range, the generated Lua has no value (the message is dropped `no-value`): the body
+// does not accept, whatever the length.
+TEST(ListLength, ConstantIndexOutOfRangeHasNoValue) {
+  Encoded e;
+  encode(e, "(< (field d (index msg 2)) 1.0)");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 2), z3::unsat);
+  EXPECT_EQ(accepts_with_length(e, 3), z3::sat);
+}
+
+TEST(ListLength, ReadingPastTheCapacityNeedsTheBound) {
+  for (const char* p :
+       {"(< (field d (index msg 5)) 1.0)", "(< (field d (index msg (- (call len msg) 1))) 1.0)",
+        "(< (field d (call min_by msg (lambda o (field d (param o))))) 1.0)", "(== msg msg)",
+        "(>= (call len (+ msg msg)) 2)"}) {
+    Encoded e;
+    encode(e, p);
+    EXPECT_TRUE(e.body->bounded) << p;
+    EXPECT_EQ(accepts_with_length(e, kCapacity + 1), z3::unsat) << p;
+  }
+}
+
+// A list literal has a known length: indexing it at an unknown index is exact.
+TEST(ListLength, LiteralListsNeedNoBound) {
+  Encoded e;
+  encode(e, "(== (index (list 1 2 3) (- (call len msg) 7)) 2)");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 8), z3::sat);
+  EXPECT_EQ(accepts_with_length(e, 7), z3::unsat);
+}
+
+}  // namespace
+}  // namespace arbc::verify
