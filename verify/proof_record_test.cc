@@ -13,8 +13,11 @@
 namespace arbc::verify {
 namespace {
 
+// One folder per test: ctest runs the tests of this file in parallel processes, and a shared
+// folder was removed by one while the other wrote into it.
 std::string scratch() {
-  std::string dir = arbc::testing::binary_dir() + "/proof_record_test_scratch";
+  std::string dir = arbc::testing::binary_dir() + "/proof_record_test_scratch/" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
