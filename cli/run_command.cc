@@ -1,5 +1,5 @@
 // `arbc run DIR|SPEC [--plugin LIB]... [--scenario NAME] [--duration D] [--realtime]
-//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify]
+//                    [--seed N] [--trace FILE] [--report FILE.html] [--no-verify] [--state FILE]
 //                    [--transport inproc|dds] [--host ..] [--mediate ..] [--deploy FILE]
 //                    [--domain N] [--time-scale K]  (these six: cli/run_transport.h)
 //                    [--inputs FILE] [--stub] [--stub-rate PORT=HZ]... [--diff TRACE]`
@@ -174,6 +174,10 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
                  "what a run that breaks a proved property or an assumption of the proof does: "
                  "fail (exit 3, the default), warn (said, verdict kept) or off")
       ->check(CLI::IsMember({"fail", "warn", "off"}));
+  cli.add_option("--state", options.state_path,
+                 "keep this mediator's memory of its own deliveries in FILE, so that one started "
+                 "again goes on from it (docs/runtime.md#a-mediator-that-restarts)")
+      ->type_name("FILE");
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
   add_transport_options(cli, &a.transport);
@@ -218,6 +222,17 @@ void print_stand_in_hint(const model::App& app, const Registry& registry, const 
                "plugin provides run as stand-ins (a source publishes samples of its type, a "
                "sink records what reaches it; docs/testing.md)\n",
                join(missing, ", ", " and ").c_str());
+}
+
+// The runtime checks see every trace record, start with the run, and keep their share of a
+// mediator's memory (--state).
+void watch_claims(ClaimWatch& claims, RunOptions& options) {
+  options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+  options.on_start = [&claims](Nanos t) { claims.start(t); };
+  options.checks_memory = {
+      [&claims] { return claims.save(); },
+      [&claims](const nlohmann::json& j, std::string* e) { return claims.load(j, e); },
+      [&claims](Nanos shift) { claims.resume(shift); }};
 }
 
 }  // namespace
@@ -275,10 +290,7 @@ int run_command(std::span<char*> args) {
                           .hosted = options.host,
                           .states_known = !options.unknown_until_fed});
   bool watching = !claims.empty() && a.runtime_checks != "off";
-  if (watching) {
-    options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
-    options.on_start = [&claims](Nanos t) { claims.start(t); };
-  }
+  if (watching) watch_claims(claims, options);
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,

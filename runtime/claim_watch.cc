@@ -54,6 +54,7 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
 }
 
 void ClaimWatch::start(Nanos t) {
+  start_ = t;
   for (Rate& rate : rates_) rate.last = std::max(rate.last, t);
 }
 
@@ -201,6 +202,75 @@ void ClaimWatch::finish(Nanos end) {
     properties_[i]->finish(end);
     property_breached(i);
   }
+}
+
+nlohmann::json ClaimWatch::save() const {
+  nlohmann::json properties = nlohmann::json::array(), assumed = nlohmann::json::array(),
+                 broken = nlohmann::json::array();
+  for (size_t i = 0; i < properties_.size(); ++i)
+    properties.push_back({{"claim", property_text_[i]}, {"state", properties_[i]->save()}});
+  for (const Assumed& s : assumed_) {
+    nlohmann::json a = {{"claim", model::assumption_text(*s.a)}, {"armed", s.armed}};
+    if (s.last_after) a["last_after"] = s.last_after->count();
+    assumed.push_back(a);
+  }
+  for (const ClaimViolation& v : violations_)
+    broken.push_back({{"claim", v.claim}, {"assumption", v.assumption}});
+  return {{"properties", properties}, {"assumptions", assumed}, {"broken", broken}};
+}
+
+bool ClaimWatch::load(const nlohmann::json& saved, std::string* error) {
+  if (saved.is_object() && saved.empty()) return true;  // written with the checks off
+  try {
+    const nlohmann::json& properties = saved.at("properties");
+    const nlohmann::json& assumed = saved.at("assumptions");
+    bool fits = properties.size() == properties_.size() && assumed.size() == assumed_.size();
+    for (size_t i = 0; fits && i < properties_.size(); ++i) {
+      fits = properties[i].at("claim") == property_text_[i];
+      PropertyWatch copy = *properties_[i];
+      copy.restore(properties[i].at("state"), Nanos(0));  // throws when it is not a save()
+    }
+    for (size_t i = 0; fits && i < assumed_.size(); ++i)
+      fits = assumed[i].at("claim") == model::assumption_text(*assumed_[i].a);
+    for (const nlohmann::json& b : saved.at("broken"))
+      fits = fits && b.at("claim").is_string() && b.at("assumption").is_boolean();
+    if (!fits) {
+      *error =
+          "its runtime checks watch other claims than this mediator's (another --mediate?); "
+          "start it with the --mediate it had, or remove the file to start with no memory";
+      return false;
+    }
+  } catch (const nlohmann::json::exception& e) {
+    *error = std::string("its runtime checks' part is not one this arbc wrote (") + e.what() +
+             "); remove the file to start this mediator with no memory";
+    return false;
+  }
+  loaded_ = saved;
+  return true;
+}
+
+// A claim broken before the restart stays broken: the proof stopped covering the run there,
+// and a run that goes on from it is no more covered. It is reported again at this run's start.
+void ClaimWatch::resume(Nanos shift) {
+  if (loaded_.is_null()) return;
+  for (size_t i = 0; i < properties_.size(); ++i)
+    properties_[i]->restore(loaded_["properties"][i]["state"], shift);
+  for (size_t i = 0; i < assumed_.size(); ++i) {
+    const nlohmann::json& a = loaded_["assumptions"][i];
+    assumed_[i].armed = a["armed"].get<bool>();
+    if (a.contains("last_after"))
+      assumed_[i].last_after = Nanos(a["last_after"].get<int64_t>()) + shift;
+  }
+  for (const nlohmann::json& b : loaded_["broken"]) {
+    std::string claim = b["claim"].get<std::string>();
+    for (size_t i = 0; i < properties_.size(); ++i)
+      if (property_text_[i] == claim) property_broken_[i] = true;
+    violated(claim, start_,
+             "broken before this mediator started again (the earlier run's "
+             "report says how); not watched since",
+             b["assumption"].get<bool>());
+  }
+  loaded_ = nullptr;
 }
 
 }  // namespace arbc

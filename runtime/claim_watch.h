@@ -68,6 +68,14 @@ class ClaimWatch {
   void watch(const TraceRecord& r, Trace& trace);
   // The run ended at `end` (response windows and rates up to there are judged).
   void finish(Nanos end);
+  // Its history, for a mediator's memory (runtime/mediator_memory.h, MemoryHooks): what the
+  // properties and assumptions remember of the run, and which claims it found broken (a run
+  // started again does not judge those again: the proof stopped covering the run there).
+  nlohmann::json save() const;
+  // Takes a save() of a watch of the same app; false (with *error) when `saved` is not one.
+  bool load(const nlohmann::json& saved, std::string* error);
+  // Applies what load took, its instants moved by `shift` into this run's time.
+  void resume(Nanos shift);
   // The first violation of each claim and assumption, in the order they happened.
   const std::vector<ClaimViolation>& violations() const { return violations_; }
 
@@ -110,6 +118,8 @@ class ClaimWatch {
   std::unordered_map<std::string, TraceContainer> boxes_;   // arbitrated port -> its container
   std::set<std::string> reported_;
   std::vector<ClaimViolation> violations_;
+  nlohmann::json loaded_;  // load()'s, until resume()
+  Nanos start_{0};
 };
 
 }  // namespace arbc

@@ -34,6 +34,12 @@ bool EventContainer::has(std::string_view name, Nanos now) {
   return id >= 0 && has(id, now);
 }
 
+void EventContainer::for_each_entry(
+    const std::function<void(int event, int owner, Nanos expiry)>& fn) const {
+  for (size_t event = 0; event < entries_.size(); ++event)
+    for (const Entry& e : entries_[event]) fn(static_cast<int>(event), e.owner, e.expiry);
+}
+
 void EventContainer::expire(Nanos now) {
   Nanos next = kNever;
   for (size_t event = 0; event < entries_.size(); ++event) {

@@ -38,6 +38,8 @@ class EventContainer {
   }
   bool has(int event, Nanos now) { return present(now).test(event); }
   bool has(std::string_view name, Nanos now);
+  // Each entry (event id, owner, expiry), lapsed ones included until present() drops them.
+  void for_each_entry(const std::function<void(int event, int owner, Nanos expiry)>& fn) const;
 
  private:
   struct Entry {

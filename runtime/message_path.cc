@@ -261,6 +261,7 @@ void Runtime::deliver(Connection& c, Nanos t, const Value& delivered) {
     f->message = c.message;
     process(*f, delivered);
   }
+  save_memory();  // before the message leaves: runtime/mediator_memory.h
   Delivery d{c.destination->port, delivered, c.name, c.model->source, seconds_of(t)};
   if (c.destination->remote) delivered_to_remote(*c.destination->remote, t, c.message);
   if (loops_back_) {

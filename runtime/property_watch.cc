@@ -119,6 +119,24 @@ void PropertyWatch::close_windows_before(Nanos t) {
   }
 }
 
+nlohmann::json PropertyWatch::save() const {
+  nlohmann::json last = nlohmann::json::object();
+  for (const auto& [rule, t] : last_) last[rule] = t.count();
+  nlohmann::json out = {{"last", last}, {"armed", armed_}};
+  if (last_rule_) out["last_rule"] = *last_rule_;
+  if (last_switch_) out["last_switch"] = last_switch_->count();
+  return out;
+}
+
+void PropertyWatch::restore(const nlohmann::json& saved, Nanos shift) {
+  for (const auto& [rule, t] : saved.at("last").items())
+    last_[rule] = Nanos(t.get<int64_t>()) + shift;
+  armed_ = saved.at("armed").get<bool>();
+  if (saved.contains("last_rule")) last_rule_ = saved.at("last_rule").get<std::string>();
+  if (saved.contains("last_switch"))
+    last_switch_ = Nanos(saved.at("last_switch").get<int64_t>()) + shift;
+}
+
 void PropertyWatch::finish(Nanos end) {
   if (breach_ || p_.kind != Kind::Response) return;
   // A window that ends after the run is not judged: the answer might still have come.

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
@@ -42,6 +43,15 @@ class PropertyWatch {
   void finish(Nanos end);
 
   const std::optional<PropertyBreach>& breach() const { return breach_; }
+
+  // What it remembers of the run that a later delivery may break the property against (the
+  // last deliveries, the precedence's arming, the last switch), for a mediator's memory
+  // (runtime/mediator_memory.h). The port's events are not in it: the runtime restores them as
+  // event records. Nor are response windows still open: a run started again owes them nothing.
+  nlohmann::json save() const;
+  // Takes a save() back, its instants moved by `shift`; throws nlohmann::json::exception when
+  // `saved` is not one.
+  void restore(const nlohmann::json& saved, Nanos shift);
 
  private:
   struct Trigger {

@@ -7,8 +7,7 @@
 
 namespace arbc {
 
-// FNV-1a: a stable hash (std::hash may differ between builds) for per-module seeds.
-static uint64_t stable_hash(std::string_view s) {
+uint64_t stable_hash(std::string_view s) {
   uint64_t h = 1469598103934665603ull;
   for (unsigned char c : s) {
     h ^= c;
@@ -103,6 +102,7 @@ void Runtime::start() {
   transport_->start(options_.interrupt);  // may wait for peers: the run's time starts after
   start_time_ = now();
   if (options_.on_start) options_.on_start(start_time_);
+  restore_memory();  // after the checks start: they see the restored entries as set now
   if (options_.unknown_until_fed) collect_unknown_events();
   collect_feedback_events();
   if (options_.report_silent_lapses) watch_lapses(std::chrono::milliseconds(100));

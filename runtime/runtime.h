@@ -39,6 +39,7 @@
 #include "runtime/event_container.h"
 #include "runtime/executor.h"
 #include "runtime/lua_monitor.h"
+#include "runtime/mediator_memory.h"
 #include "runtime/module.h"
 #include "runtime/trace.h"
 #include "runtime/transport.h"
@@ -82,6 +83,11 @@ struct RunOptions {
   // Not empty: called once with the instant the run's time starts, after the transport's wait
   // for peers (the start that `given M.p every D` counts from).
   std::function<void(Nanos)> on_start;
+  // Not empty: the file this mediator keeps its memory of its own deliveries in, read at start
+  // when it exists and written after each delivery (runtime/mediator_memory.h); with the
+  // runtime checks' share of it.
+  std::string state_path;
+  MemoryHooks checks_memory;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks
@@ -255,6 +261,13 @@ class Runtime {
   std::string monitor_path(const model::Connection& mc) const;
   // The lifetime app.json declares for `event` (none: until unset, also for unknown names).
   std::optional<Nanos> declared_lifetime(std::string_view event) const;
+  // The mediator's memory (mediator_memory.cc): read at create (false with *error on a file
+  // that does not fit), applied at start, written after each delivery and at shutdown.
+  bool load_memory(std::string* error);
+  void restore_memory();
+  void save_memory();
+  uint64_t memory_fingerprint() const;
+  Connection* memory_owner(const std::string& port, const std::string& name);
 
   model::App app_;
   std::string app_dir_;  // where the monitors are, as create() was given it
@@ -284,6 +297,9 @@ class Runtime {
   Nanos start_time_{0};
   bool started_ = false, shut_down_ = false;
   BusyMarker busy_;
+  std::unique_ptr<SavedMemory> memory_;  // read by create, applied (and dropped) by start
+  uint64_t memory_fingerprint_ = 0;
+  int memory_errors_ = 0;  // writes of the memory that failed (the first is reported)
 };
 
 }  // namespace arbc

@@ -87,6 +87,7 @@ std::unique_ptr<Runtime> Runtime::create(const model::App& app, const std::strin
   if (!rt->create_environment(registry, error)) return nullptr;
   if (!rt->create_modules(registry, error)) return nullptr;
   if (!rt->create_connections(error)) return nullptr;
+  if (!rt->load_memory(error)) return nullptr;
   if (!rt->open_trace(error)) return nullptr;
   if (!rt->create_monitors(error)) return nullptr;
   if (!rt->open_transport(error)) return nullptr;

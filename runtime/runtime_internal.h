@@ -13,6 +13,8 @@ namespace arbc {
 // A generator seeded from the run's seed and a name (a module's, "environment"): deterministic
 // and independent per name.
 std::mt19937_64 seeded_generator(uint64_t seed, std::string_view who);
+// FNV-1a: a stable hash (std::hash may differ between builds).
+uint64_t stable_hash(std::string_view s);
 
 // A module hosted in another process that connections mediated here deliver to: its recent
 // deliveries (docs/design.md#deliveries-not-yet-answered); older ones no longer matter.

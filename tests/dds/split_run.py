@@ -54,6 +54,7 @@ class Split:
         if built.returncode != 0:
             fail("arbc build: " + built.stdout + built.stderr)
         self.app = os.path.join(self.dir, "table_clean")
+        self.state = os.path.join(self.dir, "M.memory.json")
         self.domain = Domain()
         self.env = environment(profile)
         self.prefix = {"W": [], "M": []}  # `ip netns exec NS` in the hosts case
@@ -77,8 +78,11 @@ class Split:
         if role == "M":
             # Warned of, not failed: M outlives W, so LookAround's rate breaks once W has ended
             # (check_m_breaches allows only that).
+            # --state: a restarted M goes on from what the last one delivered (a take whose put
+            # is still to come; docs/runtime.md#a-mediator-that-restarts).
             words = [self.arbc, "run", self.app, "--host", "none", "--mediate", "all",
-                     "--duration", "100000s", "--runtime-checks", "warn"] + common + extra
+                     "--duration", "100000s", "--runtime-checks", "warn",
+                     "--state", self.state] + common + extra
         else:
             words = [self.arbc, "run", self.app, "--plugin", self.plugin, "--host", "all",
                      "--mediate", "none", "--no-verify", "--duration", "3000s"] + common + extra
@@ -231,6 +235,8 @@ def restart_m(split, sig, case):
         out, mout = w.communicate()[0], m2.communicate()[0]
         fail(f"{case}: W did not end within 120 s of M's restart\n--- W ---\n{out}\n--- M ---\n{mout}")
     mrc, mout = stop(m2, "M (restarted)")
+    expect("restored the memory in " + split.state in mout,
+           f"{case}: the restarted M did not restore the killed one's memory", mout)
     check_w(rc, out, case)
     check_m_stopped(mrc, mout, case)
     check_m_breaches(mout, case)
