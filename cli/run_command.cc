@@ -229,6 +229,7 @@ void print_stand_in_hint(const model::App& app, const Registry& registry, const 
 void watch_claims(ClaimWatch& claims, RunOptions& options) {
   options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
   options.on_start = [&claims](Nanos t) { claims.start(t); };
+  options.on_finish = [&claims](Nanos end, Trace& trace) { claims.finish(end, &trace); };
   options.checks_memory = {
       [&claims] { return claims.save(); },
       [&claims](const nlohmann::json& j, std::string* e) { return claims.load(j, e); },

@@ -1,5 +1,6 @@
 #include "cli/run_end.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -38,6 +39,19 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
   }
   input.transport = {end.placement, end.runtime.transport_status()};
   input.records = &end.records;
+  if (end.claims) {
+    input.checks_watched = true;
+    for (const std::string& claim : end.claims->watched())
+      input.checks.push_back({claim, false, 0, {}});
+    for (const ClaimViolation& v : end.claims->violations()) {
+      std::string claim = (v.assumption ? "assumption " : "") + v.claim;
+      auto row = std::find_if(input.checks.begin(), input.checks.end(),
+                              [&](const report::CheckRow& c) { return c.claim == claim; });
+      if (row == input.checks.end())
+        row = input.checks.insert(input.checks.end(), {claim, false, 0, {}});
+      row->broken = true, row->at = seconds_of(v.t), row->what = v.what;
+    }
+  }
   return input;
 }
 

@@ -7,6 +7,7 @@ body { font: 14px/1.45 system-ui, -apple-system, "Segoe UI", Helvetica, Arial, s
        color: #222; margin: 24px auto; max-width: 1240px; padding: 0 16px; }
 h1 { font-size: 22px; margin: 0 0 4px; } h2 { font-size: 17px; margin: 28px 0 8px; }
 p.description { color: #555; margin: 0 0 12px; }
+tr.broken td { color: #a00; }
 dl.header { display: grid; grid-template-columns: max-content auto; gap: 2px 16px; margin: 0; }
 dl.header dt { color: #666; } dl.header dd { margin: 0; }
 .ok { color: #0a7d32; font-weight: 600; } .bad { color: #c00; font-weight: 600; }

@@ -144,6 +144,37 @@ void append_totals(std::string& out, const std::vector<ConnectionRow>& rows) {
          counted(quarantined, "connection", "connections") + " quarantined.</p>\n";
 }
 
+// What the run checked of the proof, and what it found broken: from a breach on, the proof no
+// longer covers the run (docs/runtime.md#runtime-checks).
+void append_checks(std::string& out, const RunReportInput& input) {
+  out += "<h2>Runtime checks</h2>\n";
+  if (!input.checks_watched) {
+    out += "<p id=\"runtime-checks\">None watched (<code>--runtime-checks off</code>).</p>\n";
+    return;
+  }
+  if (input.checks.empty()) {
+    out +=
+        "<p id=\"runtime-checks\">The app states no claim or assumption for this process to "
+        "watch (it mediates no port that has one).</p>\n";
+    return;
+  }
+  TimeFormat format = timeline_time_format(input.header.end);
+  size_t broken = 0;
+  std::string rows;
+  for (const CheckRow& c : input.checks) {
+    broken += c.broken ? 1 : 0;
+    rows += "<tr" + std::string(c.broken ? " class=\"broken\"" : "") + "><td>" + escaped(c.claim) +
+            "</td><td>" +
+            (c.broken ? "broken at " + escaped(format.text(c.at)) : std::string("kept")) +
+            "</td><td>" + escaped(c.what) + "</td></tr>\n";
+  }
+  out += "<p>" + counted(input.checks.size(), "claim or assumption", "claims and assumptions") +
+         " of the proof watched on every decision made here, " + std::to_string(broken) +
+         " broken.</p>\n<div class=\"wide\">\n<table id=\"runtime-checks\">\n<tr><th>claim "
+         "or assumption</th><th>this run</th><th>what broke it</th></tr>\n" +
+         rows + "</table>\n</div>\n";
+}
+
 void append_legend(std::string& out) {
   out += "<p class=\"legend\"><span class=\"item\">" + swatch(kDeliveryColor) + "delivered</span>";
   for (int r = 0; r < kDropReasonCount; ++r) {
@@ -349,6 +380,7 @@ std::string render_run_report(const RunReportInput& input) {
   append_transport(out, input.transport);
   append_totals(out, input.connections);
   append_timelines(out, input);
+  append_checks(out, input);
   append_drops_by_reason(out, input);
   append_counters(out, input.connections);
   static const std::vector<TraceRecord> kNone;

@@ -46,8 +46,20 @@ struct TransportSection {
   TransportStatus status;  // the transport's own counters (Transport::status)
 };
 
+// One claim or assumption of the proof the run watched (runtime/claim_watch.h), as a violation
+// names it, and whether the run broke it.
+struct CheckRow {
+  std::string claim;
+  bool broken = false;
+  double at = 0;     // s: the instant the run broke it
+  std::string what;  // what the run did
+};
+
 struct RunReportInput {
   RunHeader header;
+  // The runtime checks; `checks_watched` false: the run watched none (--runtime-checks off).
+  bool checks_watched = false;
+  std::vector<CheckRow> checks;
   TransportSection transport;
   std::vector<ConnectionRow> connections;             // in the app's order
   const std::vector<TraceRecord>* records = nullptr;  // the whole trace, in order

@@ -65,6 +65,22 @@ size_t ClaimWatch::size() const {
          (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
 }
 
+std::vector<std::string> ClaimWatch::watched() const {
+  std::vector<std::string> out = decisions_->claims();
+  out.insert(out.end(), property_text_.begin(), property_text_.end());
+  if (decides_) {
+    for (const model::ExclusiveGroup& g : app_.exclusive_groups)
+      out.push_back("assumption " + group_text(g));
+    for (const model::Invariant& inv : app_.invariants)
+      out.push_back("assumption invariant " + inv.formula.to_string());
+  }
+  for (const Assumed& s : assumed_) out.push_back("assumption " + model::assumption_text(*s.a));
+  for (const Rate& rate : rates_)
+    out.push_back("assumption given " + rate.r->port + " every " +
+                  duration_literal(rate.r->period));
+  return out;
+}
+
 void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, bool assumption) {
   if (!reported_.insert(claim).second) return;
   violations_.push_back({t, claim, std::move(what), assumption});
@@ -73,9 +89,15 @@ void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, b
 void ClaimWatch::watch(const TraceRecord& r, Trace& trace) {
   size_t known = violations_.size();
   observe(r);
-  for (size_t i = known; i < violations_.size(); ++i) {
+  breach_lines(known, r.t, trace);
+}
+
+// A trace line for each violation from the `from`-th on, written at `t` (after the record, or
+// at the end, that showed it).
+void ClaimWatch::breach_lines(size_t from, Nanos t, Trace& trace) const {
+  for (size_t i = from; i < violations_.size(); ++i) {
     const ClaimViolation& v = violations_[i];
-    trace.breach(r.t, (v.assumption ? "assumption " : "") + v.claim,
+    trace.breach(t, (v.assumption ? "assumption " : "") + v.claim,
                  "broken at " + duration_literal(v.t) + ": " + v.what);
   }
 }
@@ -188,7 +210,15 @@ void ClaimWatch::rate_broken(Rate& rate, Nanos deadline, Nanos t) {
            true);
 }
 
-void ClaimWatch::finish(Nanos end) {
+void ClaimWatch::finish(Nanos end, Trace* trace) {
+  if (finished_) return;
+  finished_ = true;
+  size_t known = violations_.size();
+  judge_end(end);
+  if (trace) breach_lines(known, end, *trace);
+}
+
+void ClaimWatch::judge_end(Nanos end) {
   rate_gaps(end);
   for (Rate& rate : rates_) {
     if (rate.window || !rate.awaiting_first || end <= later(rate.last, rate.r->period)) continue;

@@ -59,15 +59,18 @@ class ClaimWatch {
 
   // Whether the app states anything to watch (a run without claims pays nothing).
   bool empty() const;
-  // How many claims and assumptions it watches.
+  // How many claims and assumptions it watches, and what each is, as a violation names it
+  // (an assumption with "assumption " before it).
   size_t size() const;
+  std::vector<std::string> watched() const;
   // The run's time starts at `t` (after a transport's wait for peers): rates count from there.
   void start(Nanos t);
   void observe(const TraceRecord& r);
   // observe(r), and a breach line in `trace` for each claim r showed broken (Trace::Watch).
   void watch(const TraceRecord& r, Trace& trace);
-  // The run ended at `end` (response windows and rates up to there are judged).
-  void finish(Nanos end);
+  // The run ended at `end` (response windows and rates up to there are judged); once: a second
+  // call changes nothing. With `trace`, a breach line for each claim only the end showed broken.
+  void finish(Nanos end, Trace* trace = nullptr);
   // Its history, for a mediator's memory (runtime/mediator_memory.h, MemoryHooks): what the
   // properties and assumptions remember of the run, and which claims it found broken (a run
   // started again does not judge those again: the proof stopped covering the run there).
@@ -100,6 +103,8 @@ class ClaimWatch {
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
   void rate_gaps(Nanos t);
+  void judge_end(Nanos end);
+  void breach_lines(size_t from, Nanos t, Trace& trace) const;
   void rate_broken(Rate& rate, Nanos deadline, Nanos t);
   void property_breached(size_t i);
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
@@ -120,6 +125,7 @@ class ClaimWatch {
   std::vector<ClaimViolation> violations_;
   nlohmann::json loaded_;  // load()'s, until resume()
   Nanos start_{0};
+  bool finished_ = false;
 };
 
 }  // namespace arbc

@@ -52,6 +52,13 @@ DecisionWatch::DecisionWatch(const model::App& app,
   }
 }
 
+std::vector<std::string> DecisionWatch::claims() const {
+  std::vector<std::string> out;
+  for (const std::string& port : ports_) out.push_back(port_claim_.at(port));
+  for (const Assert& a : asserts_) out.push_back(a.text);
+  return out;
+}
+
 void DecisionWatch::decision(const TraceRecord& r, const std::set<std::string>& state) {
   auto it = rule_index_.find(r.connection);
   if (it == rule_index_.end()) return;

@@ -35,8 +35,9 @@ class DecisionWatch {
   DecisionWatch(const model::App& app, const std::function<bool(const std::string&)>& here,
                 bool states_known, Report broken);
 
-  // How many claims it watches.
+  // How many claims it watches, and their texts (each port's exclusivity, then the asserts).
   size_t size() const { return ports_.size() + asserts_.size(); }
+  std::vector<std::string> claims() const;
   // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
   void decision(const TraceRecord& r, const std::set<std::string>& state);
 

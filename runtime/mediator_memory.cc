@@ -173,7 +173,7 @@ void Runtime::restore_memory() {
     Connection* c = memory_owner(e.port, e.owner);
     Nanos expiry = e.expiry == kNever ? kNever : e.expiry + shift;
     if (expiry <= t) {
-      lapsed.push_back(e.event);
+      lapsed.push_back(e.event + " at " + e.port);
       continue;
     }
     EventContainer& box = c->destination->container;

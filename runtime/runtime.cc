@@ -208,6 +208,7 @@ void Runtime::shutdown() {
     if (!cp->queue.empty()) trace_.pending(end, cp->name, cp->queue.size());
   }
   for (auto& in : in_ports_) in->container.present(end);
+  if (options_.on_finish) options_.on_finish(end, trace_);
   trace_.close();
 }
 

@@ -88,6 +88,9 @@ struct RunOptions {
   // runtime checks' share of it.
   std::string state_path;
   MemoryHooks checks_memory;
+  // Not empty: called once at shutdown, with the instant the run ended, before the trace is
+  // closed (the runtime checks judge what only the end shows and write it into the trace).
+  std::function<void(Nanos, Trace&)> on_finish;
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks

@@ -7,6 +7,7 @@ usage: check_runtime_checks.py ARBC CASE        (run from the repository root)
 """
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -235,6 +236,44 @@ def case_rate_broken(arbc):
     expect(code == 3, f"exit {code}, expected 3", out, err)
     expect("200ms  assumption given Scan.range every 100ms: nothing from Scan.range between 100ms "
            "and 500ms" in out, "the rate's gap is not named", out, err)
+
+
+def case_end_breach_in_trace(arbc):
+    # A breach only the end of the run shows (the rate's last gap) is a trace line at the end,
+    # and the report's table of runtime checks lists every check with this run's verdict.
+    with tempfile.TemporaryDirectory() as d:
+        trace, report = os.path.join(d, "t.jsonl"), os.path.join(d, "r.html")
+        code, out, err = run(arbc, RATED, [
+            '{"t": 0, "port": "Scan.range", "value": 1.0}',
+            '{"t": 0.1, "port": "Scan.range", "value": 1.0}'], "--duration", "500ms",
+            "--trace", trace, "--report", report)
+        expect(code == 3, f"exit {code}, expected 3", out, err)
+        with open(trace, encoding="utf-8") as f:
+            lines = [json.loads(line) for line in f]
+        breaches = [line for line in lines if line["type"] == "breach"]
+        expect(breaches == [{"t": 0.5, "type": "breach",
+                             "claim": "assumption given Scan.range every 100ms",
+                             "message": "broken at 200ms: nothing from Scan.range between 100ms "
+                                        "and 500ms"}], f"breach lines {breaches}", out, err)
+        with open(report, encoding="utf-8") as f:
+            html = f.read()
+        expect('<table id="runtime-checks">' in html, "the report has no table of checks", out, err)
+        rows = re.findall(r'<tr(?: class="broken")?><td>([^<]*)</td><td>([^<]*)</td>', html)
+        expect(("Base.cmd: rules go are never selected together", "kept") not in rows and
+               ("assumption given Scan.range every 100ms", "broken at 200.0 ms") in rows,
+               f"the table's rows: {rows}", out, err)
+    with tempfile.TemporaryDirectory() as d:
+        report = os.path.join(d, "r.html")
+        code, out, err = run(arbc, GRIPS, [
+            '{"t": 0, "port": "Arm.status", "value": ["left"]}',
+            '{"t": 0.1, "port": "Planner.left", "value": 1.0}'], "--report", report)
+        expect(code == 0, f"exit {code}, expected 0", out, err)
+        with open(report, encoding="utf-8") as f:
+            html = f.read()
+        rows = re.findall(r'<tr(?: class="broken")?><td>([^<]*)</td><td>([^<]*)</td>', html)
+        expect(("assumption exclusive { e_left, e_right }", "kept") in rows and
+               ("Hand.cmd: rules left, right are never selected together", "kept") in rows,
+               f"the kept checks are not listed: {rows}", out, err)
 
 
 def main():
