@@ -224,6 +224,29 @@ void print_stand_in_hint(const model::App& app, const Registry& registry, const 
                join(missing, ", ", " and ").c_str());
 }
 
+// A mediator in another process than its modules may be stopped and started again while
+// the world goes on; what its deliveries set is then lost unless it keeps a memory
+// (docs/runtime.md#a-mediator-that-restarts). Said once, at start, where it matters.
+void note_memory(const model::App& app, const RunOptions& options) {
+  if (!options.state_path.empty() || !options.transport) return;  // in-process: no restart
+  const ModuleSet& mediated = options.mediate ? *options.mediate : options.host;
+  std::set<std::string> kept;
+  for (const model::Connection& c : app.connections) {
+    if (!mediated.contains(std::string_view(c.destination).substr(0, c.destination.find('.'))))
+      continue;
+    const model::Port* from = app.find_port(c.source);
+    if (c.kind == model::ConnectionKind::Feed && from && from->direction == model::Direction::In)
+      kept.insert(c.sets.begin(), c.sets.end());
+    if (!c.activity_event.empty()) kept.insert(c.activity_event);
+  }
+  if (kept.empty()) return;
+  std::fprintf(stderr,
+               "arbc run: note: what this mediator's deliveries set (%s) starts afresh if it is "
+               "started again; give --state FILE to keep it across restarts "
+               "(docs/runtime.md#a-mediator-that-restarts)\n",
+               join(std::vector<std::string>(kept.begin(), kept.end()), ", ").c_str());
+}
+
 // The runtime checks see every trace record, start with the run, and keep their share of a
 // mediator's memory (--state).
 void watch_claims(ClaimWatch& claims, RunOptions& options) {
@@ -270,6 +293,7 @@ int run_command(std::span<char*> args) {
   const model::App& app = *loaded;
   int placed = apply_transport(a.transport, app, &options);
   if (placed != kExitOk) return placed;
+  note_memory(app, options);
   if (!stand_ins.prepare(app, options.duration, &error)) {
     print_errors({error});
     return kExitBadInput;

@@ -171,6 +171,8 @@ class Oracle:
         res.steps += sum(len(v) for v in run.publishes.values())
         for b in claims.judge(run, end, res):
             res.breaches.append((b, inputs))
+        for b in claims.runtime_checks(out):  # the runtime's own checks: a second oracle
+            res.breaches.append((b, inputs))
 
     def replay(self, work, res):
         """The counterexample tests `verify --counterexamples` wrote, each run as `arbc test` runs

@@ -11,6 +11,29 @@ PAIR = re.compile(r"^'([^']+)' (?:\(into [^)]*\) )?and '([^']+)'(?: \(into [^)]*
 INT_EDGE = 2**62
 
 
+# How the runtime checks write each kind of property (core/app_model.h temporal_property_text).
+TEMPORAL_WORDS = {
+    "spacing": lambda t: t.startswith("never two ") or " within " in t and t.startswith("never "),
+    "absence": lambda t: t.startswith("never ") and " while " in t,
+    "precedence": lambda t: t.startswith("only "),
+    "response": lambda t: t.startswith("after "),
+    "stability": lambda t: t.startswith("stable"),
+}
+
+
+UNITS = {"ns": 1e-9, "us": 1e-6, "µs": 1e-6, "ms": 1e-3, "s": 1.0, "min": 60.0, "h": 3600.0}
+
+
+def same_window(p, claim):
+    """Whether the property's window (JSON, seconds) is the one the claim's text writes: two
+    spacings of one rule differ only by it."""
+    if "window" not in p:
+        return True
+    m = re.search(r"within ([\d.e+-]+)(ns|us|µs|ms|s|min|h)\b", claim)
+    return bool(m) and abs(float(m.group(1)) * UNITS[m.group(2)] - p["window"]) <= 1e-12 * max(
+        1.0, p["window"])
+
+
 class Claims:
     def __init__(self, report, spec, model, list_bound):
         self.model = model
@@ -99,6 +122,43 @@ class Claims:
         out += self.judge_temporal(run, end, res)
         out += monitor_errors(run, m)
         return out
+
+    def proved_claim(self, claim):
+        """Whether the runtime checks' name of a claim (runtime/claim_watch.h) is one the report
+        proved outright: a port's exclusivity, an assert over events, a property over time."""
+        m = re.match(r"(\S+): rules .* are never selected together$", claim)
+        if m:
+            return m.group(1) in self.ports and m.group(1) not in self.bounded
+        m = re.match(r"assert (\S+): (\S+) -> ", claim)
+        if m:
+            return any(d.kind == "assert" and d.info["port"] == m.group(1) and
+                       d.info["rule"] == m.group(2) for d, _ in self.asserts)
+        words = set(re.findall(r"[A-Za-z_][\w.]*", claim))
+        for p in self.temporal:
+            names = [n for n in (p.get("rule"), p.get("after"), p.get("event")) if n]
+            if p["outcome"] == "proved" and names and all(n in words for n in names) and \
+                    p["kind"] in TEMPORAL_WORDS and TEMPORAL_WORDS[p["kind"]](claim) and \
+                    same_window(p, claim):
+                return True
+        return False
+
+    def runtime_checks(self, out):
+        """The second oracle: `arbc run` watches the claims itself (issue 39). A claim the report
+        proved that the run's checks say broken, with no assumption of the proof broken in the
+        run, is a disagreement between the proof and the runtime (or between the runtime checks
+        and the run). Returns the breaches."""
+        lines = out.split("runtime checks: ", 1)[1].splitlines()[1:] if "runtime checks: " in out \
+            else []
+        broken = []
+        for line in lines:
+            m = re.match(r"  (\S+)  (.*?): (.*)$", line)
+            if not m:
+                break
+            broken.append((m.group(2), m.group(3)))
+        if any(c.startswith("assumption ") for c, _ in broken):
+            return []  # outside the premises: neither oracle judges the claims
+        return [C.Breach("runtime-check", claim, "the run's own checks say: " + what)
+                for claim, what in broken if self.proved_claim(claim)]
 
     def judge_temporal(self, run, end, res):
         out = []

@@ -105,20 +105,17 @@ class ValueGen:
 
 
 def lua_mod(a, b):
+    """The spec's `%`: C's fmod, truncating, the sign of `a` (the monitors' arbc_fmod,
+    docs/language.md#numbers), not Lua's own flooring `%`."""
     if isinstance(a, int) and isinstance(b, int):
         if b == 0:
             raise ArithmeticError("attempt to perform 'n%%0'")
-        m = a - (a // b) * b  # Python's // floors, as Lua's integer % does
-        return wrap(m)
+        m = abs(a) % abs(b)
+        return -m if a < 0 else m
     a, b = float(a), float(b)
     if b == 0 or math.isinf(a) or math.isnan(a) or math.isnan(b):
         return math.nan
-    if math.isinf(b):
-        return a if (a >= 0) == (b > 0) or a == 0 else b
-    m = math.fmod(a, b)
-    if m != 0 and (m > 0) != (b > 0):
-        m += b
-    return m
+    return math.fmod(a, b)  # an infinite b gives a back, as C's fmod does
 
 
 def arith(op, a, b):
