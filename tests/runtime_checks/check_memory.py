@@ -8,10 +8,12 @@ usage: check_memory.py ARBC CASE        (run from the repository root)
   spacing_across        `never two go within 30s` is judged across the restart: a second `go`
                         right after it is a breach the restarted run names;
   broken_stays_broken   a claim broken before the restart is reported again after it;
+  throttle_across       a throttle's period runs on across the restart;
   refuses               a file of another app, a file that is no memory, --state on simulated
                         time: exit 2, saying what to do.
 """
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -92,6 +94,11 @@ def case_put_after_restart(arbc):
                "e_busy at Arm.cmd for " in err, "the restart does not say what it restored", out, err)
         expect("none broken" in out, "`only put after take` judged broken across the restart",
                out, err)
+        # e_busy's 30 s ran on while no mediator was up: the take was at 100 ms and the first
+        # run lasted 300 ms, so at most 29.8 s of it can be left.
+        left = re.search(r"e_busy at Arm.cmd for ([\d.]+)s", err)
+        expect(left and float(left.group(1)) <= 29.8,
+               "e_busy's lifetime did not run on while no mediator was up", out, err)
         # Without the memory the mediator starts afresh: the put waits for a take that already
         # happened (what deadlocked table_clean's arm when its mediator was killed mid-cycle).
         code, out, err = app.run(['{"t": 0.1, "port": "Planner.put", "value": 1.0}'],
@@ -116,6 +123,28 @@ def case_spacing_across(arbc):
         code, out, err = app.run([], state)
         expect(code == 3 and "never two go within 30s: broken before this mediator started "
                "again" in out, f"the broken claim was not carried: exit {code}", out, err)
+
+
+THROTTLED = """app throttled "one command per 30 s, across restarts";
+module Planner { out cmd: float; }
+module Base { in cmd: float; }
+arbitrate Base.cmd { go: from Planner.cmd { throttle 30s; } }
+"""
+
+
+def case_throttle_across(arbc):
+    # A throttle's period runs on from the last delivery before the restart.
+    with tempfile.TemporaryDirectory() as d:
+        app = App(arbc, THROTTLED, d, "throttled")
+        state = os.path.join(d, "memory.json")
+        go = ['{"t": 0.1, "port": "Planner.cmd", "value": 1.0}']
+        code, out, err = app.run(go, state)
+        expect(code == 0 and row(out, "go")[1] == 1, f"first run: exit {code}", out, err)
+        code, out, err = app.run(go, state)
+        expect(code == 0 and row(out, "go")[1] == 0, "a command within 30 s of the last one, "
+               "across a restart, was not throttled", out, err)
+        code, out, err = app.run(go, os.path.join(d, "fresh.json"))
+        expect(code == 0 and row(out, "go")[1] == 1, "a fresh mediator throttled", out, err)
 
 
 def case_broken_stays_broken(arbc):
