@@ -300,8 +300,16 @@ def check_repo(root):
             jsonschema.Draft202012Validator.check_schema(strict_json(os.path.join(root, "docs", schema)))
         except (jsonschema.SchemaError, Bad) as e:
             problems.append(f"docs/{schema}: not a valid JSON Schema: {str(e).splitlines()[0]}")
-    files = subprocess.run(["git", "-C", root, "ls-files", "*.json"], capture_output=True,
-                           text=True).stdout.split()
+    listed = subprocess.run(["git", "-C", root, "ls-files", "*.json"], capture_output=True,
+                            text=True)
+    files = listed.stdout.split()
+    if listed.returncode != 0:  # not a checkout (mutate.sh's scratch copy): the tree's files
+        files = []
+        for d, dirs, names in os.walk(root):
+            if d == root:  # what a build or the demo writes, not the repository's inputs
+                dirs[:] = [x for x in dirs if x not in ("build", "out", ".git")]
+            files += [os.path.relpath(os.path.join(d, f), root) for f in names
+                      if f.endswith(".json")]
     checked = 0
     for rel in files:
         schema = ("deployment.schema.json" if rel.endswith(".deploy.json") else
