@@ -112,7 +112,8 @@ struct ConnectionStats {
 };
 
 // Messages for an input of a module hosted here that another process mediates: what arrived
-// through the transport and what it lost before delivery (bad-type, queue-full).
+// through the transport and what it lost before delivery (queue-full, bad-type,
+// lost-in-transit).
 struct InputStats {
   std::string port;                     // "Module.port"
   uint64_t arrived = 0, delivered = 0;  // arrived = delivered + drops
