@@ -9,7 +9,8 @@ own; one case per run:
                     were written (they all read "the last sample's" detail).
   lost-in-transit   interop_stream writes best effort as fast as it can over UDP for 2 s: what
                     DDS reports lost in transit is `lost-in-transit`, never `queue-full`, and
-                    queue-full plus lost-in-transit on `nav` add up to the topic's `lost`.
+                    queue-full plus lost-in-transit on `nav` add up to the topic's `lost`; the
+                    losses in bulk are said when they start, before the end of the run.
   nobody            the planner runs 2 s before the base's subscriber exists: those commands
                     are written "to nobody", said when it starts and in the summary, and the
                     subscriber receives exactly the commands written minus those.
@@ -127,6 +128,9 @@ def lost_in_transit(arbc, stream, sub, padded, here, env, domain, app):
     if not nav["lost-in-transit"] <= lost <= nav["lost-in-transit"] + nav["queue-full"]:
         fail(f"nav: {nav['lost-in-transit']} lost-in-transit and {nav['queue-full']} queue-full "
              f"do not account for the topic's {lost} lost", out)
+    said = "connection nav: losing messages in bulk from "
+    if said not in out or out.index(said) > out.index("interrupted (SIGTERM)"):
+        fail("the losses in bulk were not said when they started", out)
     print(f"ok: {nav['lost-in-transit']} lost in transit, {nav['queue-full']} queue-full\n" + out)
 
 
