@@ -135,6 +135,7 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   options->realtime = true;
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
+  options->report_bulk_drops = true;
   options->time_scale = flags.time_scale.value_or(1);
   dds.time_scale = options->time_scale;
   options->transport = load_dds_transport(app, std::move(dds), &error);

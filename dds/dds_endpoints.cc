@@ -160,24 +160,40 @@ void TopicReader::buffer(Buffered b, bool bad, const std::string& why) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (bad) {
       ++undecodable;
-      ++bad_;
-      bad_why_ = why;
+      count_loss(DropReason::BadType, why, 1);
     } else {
       ++lost;
-      ++overflow_;
+      count_loss(DropReason::QueueFull,
+                 "DDS: " + topic + ": this process's queue of the topic's samples was full (" +
+                     std::to_string(transport_->depth()) + ", the deployment's depth)",
+                 1);
     }
   }
   transport_->to_inbox(this, std::nullopt);
 }
 
-// Samples the writer dropped before they reached this reader (its keep-last history
-// overflowed): the same loss as a full queue.
+void TopicReader::count_loss(DropReason reason, const std::string& detail, uint64_t count) {
+  if (!losses_.empty() && losses_.back().reason == reason && losses_.back().detail == detail) {
+    losses_.back().count += count;
+  } else {
+    losses_.push_back({reason, detail, count});
+  }
+}
+
+// Samples DDS reports lost before they reached this reader: a gap in the writer's sequence
+// numbers, which this process cannot tell apart (Fast-DDS 2.9 gives only a count): a sample the
+// network lost, one that came after a later one (a best-effort reader drops it), or one the
+// writer's keep-last history dropped before sending it. Never this process's own queue.
 void TopicReader::on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus& status) {
   if (status.total_count_change <= 0) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     lost += static_cast<uint64_t>(status.total_count_change);
-    overflow_ += static_cast<uint64_t>(status.total_count_change);
+    count_loss(DropReason::LostInTransit,
+               "DDS: " + topic +
+                   ": DDS reports samples lost before they reached this process (lost or "
+                   "reordered on the network, or dropped by the writer)",
+               static_cast<uint64_t>(status.total_count_change));
   }
   transport_->to_inbox(this, std::nullopt);
 }
@@ -218,30 +234,30 @@ void TopicReader::on_requested_incompatible_qos(
 }
 
 void TopicReader::report_losses() {
-  uint64_t overflow = 0, bad = 0;
-  std::string why;
+  std::vector<Loss> losses;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::swap(overflow, overflow_);
-    std::swap(bad, bad_);
-    why = bad_why_;
+    std::swap(losses, losses_);
   }
   TransportSink& sink = transport_->sink();
-  if (overflow) sink.lost(input, port.index, DropReason::QueueFull, overflow, "DDS: " + topic);
-  if (bad) sink.lost(input, port.index, DropReason::BadType, bad, why);
-  // Said once, when it first happens: the counters alone show it only at the end of the run.
-  // A program without arbc in it announces no spec type, so this is the first sign that its
-  // type has the name this process expects and another layout.
-  if (bad && !bad_reported_) {
-    bad_reported_ = true;
-    sink.report("DDS: topic " + topic + " (" + port.qualified + "): " + why +
-                "; the remote program's type has this name but other fields, or another order: "
-                "give " +
-                port.qualified +
-                "'s type in the spec the program's fields, in the "
-                "program's order (docs/distributed.md#types-on-the-wire); until then every "
-                "sample is dropped as bad-type");
+  for (const Loss& loss : losses) {
+    sink.lost(input, port.index, loss.reason, loss.count, loss.detail);
+    if (loss.reason == DropReason::BadType) report_bad_type(loss.detail);
   }
+}
+
+// Said once, when it first happens: the counters alone show it only at the end of the run.
+// A program without arbc in it announces no spec type, so this is the first sign that its
+// type has the name this process expects and another layout.
+void TopicReader::report_bad_type(const std::string& why) {
+  if (bad_reported_) return;
+  bad_reported_ = true;
+  transport_->sink().report(
+      "DDS: topic " + topic + " (" + port.qualified + "): " + why +
+      "; the remote program's type has this name but other fields, or another order: give " +
+      port.qualified +
+      "'s type in the spec the program's fields, in the program's order "
+      "(docs/distributed.md#types-on-the-wire); until then every sample is dropped as bad-type");
 }
 
 void TopicReader::hand(const Buffered& b) {
@@ -274,6 +290,7 @@ bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& p
   std::string error;
   if (to_wire(*wire, v, sample_->data, &error) && writer->write(sample_, params)) {
     ++written;
+    if (subscribers.load() == 0) wrote_to_nobody();
     return true;
   }
   ++failed;
@@ -286,10 +303,26 @@ bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& p
   return false;
 }
 
+// DDS accepted the sample, but no reader had matched: it reaches nobody, although the runtime
+// counts the connection's delivery (issue 39: a restarted mediator "delivered" 1,486 commands
+// before the base's subscriber matched). Counted apart and said, in the summary and here.
+void TopicWriter::wrote_to_nobody() {
+  ++to_nobody;
+  if (nobody_reported_.exchange(true)) return;
+  transport_->sink().report("DDS: topic " + topic + " (" + port.qualified +
+                            "): written with no subscriber matched " +
+                            (ever_matched ? "(since the last one left)" : "(none yet)") + ": " +
+                            (input ? port.module + " does not receive it" : "nobody receives it") +
+                            "; such writes are counted as 'to nobody' in the summary");
+}
+
 void TopicWriter::on_publication_matched(fdds::DataWriter*,
                                          const fdds::PublicationMatchedStatus& status) {
   subscribers = status.current_count;
-  if (status.current_count_change > 0) ever_matched = true;
+  if (status.current_count_change > 0) {
+    ever_matched = true;
+    nobody_reported_ = false;
+  }
   if (input && status.current_count_change < 0 && status.current_count == 0) {
     transport_->report("DDS: topic " + topic + " (" + port.qualified +
                        ") has no subscriber any more: the process that hosts " + port.module +

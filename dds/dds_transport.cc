@@ -233,7 +233,7 @@ TransportStatus DdsTransport::status() const {
     t.topic = w->topic, t.port = w->port.qualified, t.type = w->wire->name, t.read = false;
     t.heard_peer = w->ever_matched, t.peers_now = w->subscribers;
     t.expects_peer = expects_peer(w->port, w->input);
-    t.written = w->written, t.failed = w->failed;
+    t.written = w->written, t.to_nobody = w->to_nobody, t.failed = w->failed;
     status.topics.push_back(std::move(t));
   }
   std::lock_guard<std::mutex> lock(mismatch_mutex_);
@@ -253,8 +253,10 @@ std::string DdsTransport::summary() const {
              " received, " + std::to_string(t.lost) + " lost, " + std::to_string(t.undecodable) +
              " undecodable\n";
     } else {
-      out += "  wrote " + t.topic + " (" + t.type + "): " + std::to_string(t.written) + " written" +
-             (t.failed ? ", " + std::to_string(t.failed) + " failed" : "") + "\n";
+      out +=
+          "  wrote " + t.topic + " (" + t.type + "): " + std::to_string(t.written) + " written" +
+          (t.to_nobody ? ", " + std::to_string(t.to_nobody) + " to nobody (no subscriber)" : "") +
+          (t.failed ? ", " + std::to_string(t.failed) + " failed" : "") + "\n";
     }
   }
   // What a run left alone says at the end too: a report long ago on stderr is easy to miss.

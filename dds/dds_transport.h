@@ -10,9 +10,11 @@
 // QoS: reliable, volatile, keep-last with the deployment's depth (100 by default), or a port's
 // reliability and durability from the deployment; a remote endpoint DDS does not match for its
 // QoS is reported with the setting to write (dds/qos_mismatch.h). A reader
-// hands samples to the executor through a buffer of that depth: overflow, and samples the
-// writer dropped before they arrived (DDS "sample lost"), count as `queue-full`; a sample that
-// does not decode counts as `bad-type`. A remote endpoint on one of this process's topics with
+// hands samples to the executor through a buffer of that depth: its overflow counts as
+// `queue-full`, samples DDS reports lost before they arrived ("sample lost": the network, a
+// reordering, the writer's history) as `lost-in-transit`, and a sample that does not decode as
+// `bad-type`, each with its own detail. A write while no subscriber has matched is counted as
+// written to nobody and said. A remote endpoint on one of this process's topics with
 // another type is reported (topic and both types) at discovery.
 #pragma once
 

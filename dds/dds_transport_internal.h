@@ -80,15 +80,26 @@ class TopicReader : public fdds::DataReaderListener {
   // Queues a decoded sample (or counts it lost: undecodable, or `depth` of this topic's
   // samples are in the inbox already).
   void buffer(Buffered b, bool bad, const std::string& why);
+  // Counts `count` samples lost for `reason` with `detail` (mutex_ held), after those lost
+  // before: each keeps its own reason and detail until report_losses hands them over.
+  void count_loss(DropReason reason, const std::string& detail, uint64_t count);
+  // Executor thread: says (once) that samples do not decode, with the first one's detail.
+  void report_bad_type(const std::string& why);
   // Decodes one valid sample and buffers it.
   void take_one(WireSample& sample, const fdds::SampleInfo& info);
   DdsTransport* transport_;
   std::mutex take_mutex_;  // one taker at a time (DDS may call from several threads)
   WireSample* sample_ = nullptr;
   std::atomic<int> queued_{0};  // this topic's samples in the inbox
-  std::mutex mutex_;            // guards what follows
-  uint64_t overflow_ = 0, bad_ = 0;
-  std::string bad_why_;
+  std::mutex mutex_;            // guards losses_
+  // Samples lost since the last report_losses, in the order they were lost; a run of samples
+  // with one reason and one detail is one entry (a flood of one kind costs one entry).
+  struct Loss {
+    DropReason reason;
+    std::string detail;
+    uint64_t count = 0;
+  };
+  std::vector<Loss> losses_;
   bool bad_reported_ = false;  // executor thread: a sample that did not decode was reported
 };
 
@@ -113,14 +124,20 @@ class TopicWriter : public fdds::DataWriterListener {
   const std::string topic;
   const std::shared_ptr<const WireType> wire;
   fdds::DataWriter* writer = nullptr;
-  std::atomic<uint64_t> written{0}, failed{0};
+  // Written, of them while no subscriber had matched (they reach nobody), failed.
+  std::atomic<uint64_t> written{0}, to_nobody{0}, failed{0};
   std::atomic<int> subscribers{0};
   std::atomic<bool> ever_matched{false};  // a subscriber matched at some time
 
  private:
+  // Executor thread: counts a sample written while no subscriber had matched, and says so the
+  // first time in each stretch without one.
+  void wrote_to_nobody();
   DdsTransport* transport_;
   WireSample* sample_ = nullptr;
   bool reported_ = false;
+  // A write to nobody was reported since the last subscriber matched (the listener clears it).
+  std::atomic<bool> nobody_reported_{false};
 };
 
 // Compares what remote endpoints announce with this process's topics.

@@ -15,29 +15,7 @@ namespace {
 constexpr size_t kMaxListed = 200;       // log lines, errors: the first ones, then a count
 constexpr size_t kDetailsPerReason = 3;  // sample details shown per drop reason
 
-const char* reason_meaning(DropReason r) {
-  switch (r) {
-    case DropReason::Rejected:
-      return "the monitor's accept returned false";
-    case DropReason::NoValue:
-      return "an expression had no value (min_by of an empty list, an index out of range)";
-    case DropReason::NotSelected:
-      return "the connection's constraint was false on the port's events";
-    case DropReason::Throttled:
-      return "a delivery on this connection less than its throttle period ago";
-    case DropReason::Feed:
-      return "consumed by an event feed (by design: feeds set events, never deliver)";
-    case DropReason::MonitorError:
-      return "a script error, the instruction budget, the memory cap or a wrong return type";
-    case DropReason::Quarantined:
-      return "the connection had been taken out of service";
-    case DropReason::QueueFull:
-      return "the connection's queue was at its bound";
-    case DropReason::BadType:
-      return "the source module published a value its output port's type does not admit";
-  }
-  return "";
-}
+const char* reason_meaning(DropReason r) { return drop_reason_info(r).meaning; }
 
 std::string escaped(std::string_view s) { return html_escape(s); }
 
@@ -93,9 +71,9 @@ void append_transport_topic(std::string& out, const TransportTopicStatus& t) {
          "</code></td><td>" + (t.read ? "read" : "written") + "</td><td>" + heard +
          "</td><td class=\"n\">" + std::to_string(t.peers_now) + "</td>";
   if (t.read) {
-    out += count(t.received) + count(t.lost) + count(t.undecodable) + blank + blank;
+    out += count(t.received) + count(t.lost) + count(t.undecodable) + blank + blank + blank;
   } else {
-    out += blank + blank + blank + count(t.written) + count(t.failed);
+    out += blank + blank + blank + count(t.written) + count(t.to_nobody) + count(t.failed);
   }
   out += "</tr>\n";
 }
@@ -106,13 +84,15 @@ void append_transport(std::string& out, const TransportSection& t) {
   if (!t.placement.empty()) out += "<p id=\"transport\">" + escaped(t.placement) + "</p>\n";
   if (t.status.topics.empty()) return;
   out += "<p>DDS domain " + std::to_string(t.status.domain) +
-         ". Lost: samples DDS dropped before they reached this process, or that came while "
-         "its queue for the topic was full.</p>\n<div class=\"wide\">\n"
+         ". Lost: samples DDS reported lost before they reached this process (lost-in-transit), "
+         "or that came while its queue for the topic was full (queue-full). To nobody: written "
+         "while no subscriber had matched, so no program received them.</p>\n"
+         "<div class=\"wide\">\n"
          "<table id=\"transport-topics\">\n<tr><th>topic</th><th>port</th><th>type</th>"
          "<th>here</th><th>heard a peer</th><th class=\"n\">peers at the end</th>"
          "<th class=\"n\">received</th><th class=\"n\">lost</th>"
          "<th class=\"n\">undecodable</th><th class=\"n\">written</th>"
-         "<th class=\"n\">failed</th></tr>\n";
+         "<th class=\"n\">to nobody</th><th class=\"n\">failed</th></tr>\n";
   for (const TransportTopicStatus& topic : t.status.topics) append_transport_topic(out, topic);
   out += "</table>\n</div>\n";
   if (t.status.notes.empty()) return;

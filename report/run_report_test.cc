@@ -149,7 +149,7 @@ TEST_F(RunReportTest, ATransportHasATableOfItsTopicsAndInProcessHasNone) {
   heard.peers_now = 1, heard.received = 40, heard.lost = 3, heard.undecodable = 2;
   TransportTopicStatus alone;
   alone.topic = "W/y<1>", alone.port = "W.y", alone.type = "int", alone.read = false;
-  alone.written = 5, alone.failed = 1;
+  alone.written = 5, alone.to_nobody = 4, alone.failed = 1;
   input.transport.status.topics = {heard, alone};
   input.transport.status.notes = {"DDS: topic M/x: a remote writer's type is <other>"};
   std::string html = render_run_report(input);
@@ -166,7 +166,10 @@ TEST_F(RunReportTest, ATransportHasATableOfItsTopicsAndInProcessHasNone) {
                        "<td><code>int</code></td><td>written</td><td>never</td>"),
             std::string::npos)
       << table;
-  EXPECT_NE(table.find("<td class=\"n\">5</td><td class=\"n\">1</td></tr>"), std::string::npos)
+  // Written to nobody (no subscriber had matched) apart from written (issue 39).
+  EXPECT_NE(table.find("<th class=\"n\">to nobody</th>"), std::string::npos) << table;
+  EXPECT_NE(table.find("<td class=\"n\">5</td><td class=\"n\">4</td><td class=\"n\">1</td></tr>"),
+            std::string::npos)
       << table;
   std::string notes = section(html, "ul", "transport-notes");
   EXPECT_NE(notes.find("<li>DDS: topic M/x: a remote writer&#39;s type is &lt;other&gt;</li>"),
@@ -375,9 +378,10 @@ TEST(RunReportFailureTest, ErrorsAndQuarantineAreShown) {
   // The counters' columns carry the names of `arbc run`'s table (arrived, pending).
   EXPECT_NE(html.find("<th class=\"n\">arrived</th>"), std::string::npos);
   EXPECT_NE(html.find("<th class=\"n\">pending</th>"), std::string::npos);
-  // The three later messages are dropped as quarantined, the five before as monitor errors.
+  // The three later messages are dropped as quarantined, the five before as monitor errors
+  // (one column per drop reason, lost-in-transit last).
   EXPECT_EQ(row_numbers(html, "broken"),
-            (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 0, 5}));
+            (std::vector<uint64_t>{8, 0, 0, 0, 0, 0, 0, 5, 3, 0, 0, 0, 0, 5}));
 }
 
 // A plugin whose tick throws: the run goes on and the report lists the plugin error.

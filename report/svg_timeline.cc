@@ -9,29 +9,7 @@
 
 namespace arbc::report {
 
-const char* drop_reason_color(DropReason reason) {
-  switch (reason) {
-    case DropReason::Rejected:
-      return "#e69f00";
-    case DropReason::NoValue:
-      return "#cc79a7";
-    case DropReason::NotSelected:
-      return "#7f7f7f";
-    case DropReason::Throttled:
-      return "#56b4e9";
-    case DropReason::Feed:
-      return "#c8c8c8";
-    case DropReason::MonitorError:
-      return "#d55e00";
-    case DropReason::Quarantined:
-      return "#7a0000";
-    case DropReason::QueueFull:
-      return "#9467bd";
-    case DropReason::BadType:
-      return "#8c564b";
-  }
-  return "#000000";
-}
+const char* drop_reason_color(DropReason reason) { return drop_reason_info(reason).color; }
 
 namespace {
 

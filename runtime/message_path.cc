@@ -86,6 +86,8 @@ void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
     in.stats.dropped[static_cast<int>(reason)] += count;
     trace_.publish_error(now(), in.qualified,
                          std::string(drop_reason_name(reason)) + ": " + detail);
+    if (options_.report_bulk_drops && in.bulk.count(reason, count, now()))
+      report_bulk("input " + in.qualified, reason);
     return;
   }
   OutPort& out = *out_ports_[static_cast<size_t>(index)];
@@ -274,6 +276,16 @@ void Runtime::deliver(Connection& c, Nanos t, const Value& delivered) {
 void Runtime::drop(Connection& c, DropReason reason, std::string_view detail) {
   ++c.stats.dropped[static_cast<int>(reason)];
   trace_.drop(now(), c.name, reason, detail);
+  if (options_.report_bulk_drops && drop_reason_info(reason).loss && c.bulk.count(reason, 1, now()))
+    report_bulk("connection " + c.name, reason);
+}
+
+void Runtime::report_bulk(const std::string& where, DropReason reason) {
+  const DropReasonInfo& r = drop_reason_info(reason);
+  report(where + ": losing messages in bulk from " + run_time_text(now()) + ", as " + r.name +
+         " (" + r.meaning + "): " + std::to_string(BulkDrops::kThreshold) +
+         " within a second; each is counted and traced, and this is said again only after a "
+         "second without one");
 }
 
 void Runtime::monitor_failed(Connection& c, const LuaCall& call, const char* callback,

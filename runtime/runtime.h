@@ -68,6 +68,10 @@ struct RunOptions {
   // Report (once per silence) an event that lapses because its feed's source sent nothing for
   // its lifetime: in a distributed run, the sign that a peer is gone.
   bool report_silent_lapses = false;
+  // Say (one line, when it starts) that a connection or a mediated input loses messages in
+  // bulk: BulkDrops::kThreshold losses of one reason within a second of run time; said again
+  // only after a second without one (runtime/bulk_drops.h). On for distributed runs.
+  bool report_bulk_drops = false;
   // The file the app's model was read from ("out/app/app.json"). Errors of Runtime::create about
   // the model's content (a connection between ports the app lacks) name it ("app NAME" when it
   // is empty); the others name what they are about (a plugin, a monitor file, the trace file, the
@@ -112,7 +116,8 @@ struct ConnectionStats {
 };
 
 // Messages for an input of a module hosted here that another process mediates: what arrived
-// through the transport and what it lost before delivery (bad-type, queue-full).
+// through the transport and what it lost before delivery (queue-full, bad-type,
+// lost-in-transit).
 struct InputStats {
   std::string port;                     // "Module.port"
   uint64_t arrived = 0, delivered = 0;  // arrived = delivered + drops
@@ -242,6 +247,9 @@ class Runtime {
   void post_drain(Connection& c);  // one drain task per message, posted now
   void process(Connection& c, const Value& msg);
   void drop(Connection& c, DropReason reason, std::string_view detail = {});
+  // Says that `where` (a connection, a mediated input) started losing messages for `reason`
+  // in bulk (RunOptions::report_bulk_drops).
+  void report_bulk(const std::string& where, DropReason reason);
   // Counts and reports a failing callback; quarantines after too many in a row.
   void monitor_failed(Connection& c, const LuaCall& call, const char* callback,
                       bool may_quarantine = true);

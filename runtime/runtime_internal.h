@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "runtime/bulk_drops.h"
 #include "runtime/ring_queue.h"
 #include "runtime/runtime.h"
 #include "runtime/same_name.h"
@@ -47,6 +48,7 @@ struct Runtime::InPort {
   // into the containers of the ports that read them; run in the task of each delivery.
   std::vector<Connection*> delivery_feeds;
   InputStats stats;  // what arrived mediated by another process
+  BulkDrops bulk;    // its losses in bulk (RunOptions::report_bulk_drops)
 };
 
 // An output port and the connections leaving it, in model order.
@@ -124,6 +126,7 @@ struct Runtime::Connection : MonitorHost {
   bool quarantined = false;
   std::set<std::string> reported_errors;
   ConnectionStats stats;
+  BulkDrops bulk;  // its losses in bulk (RunOptions::report_bulk_drops)
 
   // MonitorHost: PortMonitor calls from this connection's script.
   Nanos now() override;

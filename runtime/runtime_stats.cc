@@ -47,35 +47,33 @@ std::vector<PluginStats> Runtime::plugin_stats() const {
   return out;
 }
 
-namespace {
-
-const DropReason kColumns[] = {
-    DropReason::Rejected,    DropReason::NoValue,   DropReason::NotSelected,
-    DropReason::Throttled,   DropReason::Feed,      DropReason::MonitorError,
-    DropReason::Quarantined, DropReason::QueueFull, DropReason::BadType,
-};
-
-}  // namespace
-
 // One row per hosted input that another process mediates: what arrived through the transport
-// and what it lost on the way (only such losses can happen before the module).
+// and what it lost on the way (only the transport's losses can happen before the module).
 std::string Runtime::input_table() const {
   std::vector<InputStats> inputs = input_stats();
   if (inputs.empty()) return {};
+  const DropReason kLosses[] = {DropReason::QueueFull, DropReason::BadType,
+                                DropReason::LostInTransit};
   std::string title = "input (mediated elsewhere)";
   size_t width = title.size();
   for (const InputStats& s : inputs) width = std::max(width, s.port.size());
   char cell[160];
-  std::snprintf(cell, sizeof cell, "%-*s  arrived delivered queue-full bad-type\n",
-                static_cast<int>(width), title.c_str());
+  std::snprintf(cell, sizeof cell, "%-*s  arrived delivered", static_cast<int>(width),
+                title.c_str());
   std::string out = cell;
+  for (DropReason r : kLosses) out += std::string(" ") + drop_reason_name(r);
+  out += "\n";
   for (const InputStats& s : inputs) {
-    std::snprintf(cell, sizeof cell, "%-*s %8llu %9llu %10llu %8llu\n", static_cast<int>(width),
-                  s.port.c_str(), static_cast<unsigned long long>(s.arrived),
-                  static_cast<unsigned long long>(s.delivered),
-                  static_cast<unsigned long long>(s.drops(DropReason::QueueFull)),
-                  static_cast<unsigned long long>(s.drops(DropReason::BadType)));
+    std::snprintf(cell, sizeof cell, "%-*s %8llu %9llu", static_cast<int>(width), s.port.c_str(),
+                  static_cast<unsigned long long>(s.arrived),
+                  static_cast<unsigned long long>(s.delivered));
     out += cell;
+    for (DropReason r : kLosses) {
+      int w = static_cast<int>(std::string_view(drop_reason_name(r)).size());
+      std::snprintf(cell, sizeof cell, " %*llu", w, static_cast<unsigned long long>(s.drops(r)));
+      out += cell;
+    }
+    out += "\n";
   }
   return out;
 }
@@ -100,8 +98,8 @@ std::string Runtime::connection_table() const {
   std::snprintf(cell, sizeof cell, "%-*s", static_cast<int>(width), "connection");
   out += cell;
   out += "  arrived delivered";
-  for (DropReason r : kColumns) {
-    std::snprintf(cell, sizeof cell, " %s", drop_reason_name(r));
+  for (const DropReasonInfo& r : kDropReasons) {
+    std::snprintf(cell, sizeof cell, " %s", r.name);
     out += cell;
   }
   out += " pending errors\n";
@@ -112,9 +110,10 @@ std::string Runtime::connection_table() const {
     std::snprintf(cell, sizeof cell, " %8llu %9llu", static_cast<unsigned long long>(s.arrived),
                   static_cast<unsigned long long>(s.delivered));
     out += cell;
-    for (DropReason r : kColumns) {
-      int w = static_cast<int>(std::string_view(drop_reason_name(r)).size());
-      std::snprintf(cell, sizeof cell, " %*llu", w, static_cast<unsigned long long>(s.drops(r)));
+    for (const DropReasonInfo& r : kDropReasons) {
+      int w = static_cast<int>(std::string_view(r.name).size());
+      std::snprintf(cell, sizeof cell, " %*llu", w,
+                    static_cast<unsigned long long>(s.drops(r.reason)));
       out += cell;
     }
     std::snprintf(cell, sizeof cell, " %7zu %6llu%s\n", c->queue.size(),

@@ -75,7 +75,8 @@ class TransportSink {
   // A message mediated for input `in` of a module hosted here.
   virtual void to_module(int in, const Delivery& d) = 0;
   // `count` messages for a port were lost before the engine saw them (a transport's queue
-  // overflowed: queue-full; a sample could not be decoded: bad-type). `input` tells whether
+  // overflowed: queue-full; a sample could not be decoded: bad-type; the transport reports
+  // them lost on the way: lost-in-transit), all with the one `detail`. `input` tells whether
   // `index` is an input (a hosted module's port) or an output (a source of mediated
   // connections, each of which counts the loss).
   virtual void lost(bool input, int index, DropReason reason, uint64_t count,

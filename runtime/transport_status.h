@@ -19,10 +19,11 @@ struct TransportTopicStatus {
   bool heard_peer = false;   // a remote writer (read) or reader (written) matched at some time
   bool expects_peer = true;  // the app connects the port; an output nothing reads may be alone
   int peers_now = 0;         // remote endpoints matched at the end
-  // Read: samples taken, samples lost (DDS dropped them, or this process's queue was full),
-  // samples that did not decode. Written: samples written, writes that failed.
+  // Read: samples taken, samples lost (DDS reported them lost in transit, or this process's
+  // queue was full), samples that did not decode. Written: samples written, of them written
+  // while no subscriber had matched (they reached nobody), writes that failed.
   uint64_t received = 0, lost = 0, undecodable = 0;
-  uint64_t written = 0, failed = 0;
+  uint64_t written = 0, to_nobody = 0, failed = 0;
 };
 
 struct TransportStatus {

@@ -42,9 +42,11 @@ void Runtime::lapsed(InPort& in, int event, int owner, Nanos expiry) {
   Connection& c = *connections_[static_cast<size_t>(owner)];
   const std::string& name = in.container.index().name(event);
   trace_.event(expiry, in.qualified, "expire", name, c.name, expiry);
-  // A delivery event lapses when its port has delivered nothing for its lifetime: no source
-  // is silent then.
-  if (!options_.report_silent_lapses || c.delivered_from) return;
+  // A delivery event lapses when its port has delivered nothing for its lifetime, and a rule's
+  // hold (its activity event) when the rule delivered nothing for the hold: the hold ended as
+  // it should, no source is silent then (issue 39: "nothing from Joy.cmd_vel" after a joystick
+  // let go).
+  if (!options_.report_silent_lapses || c.delivered_from || name == c.model->activity_event) return;
   std::optional<Nanos> lifetime = declared_lifetime(name);
   // Silent for the whole lifetime before the expiry, or its source spoke and the entry just ended.
   if (!lifetime || c.last_arrival > expiry - *lifetime) return;

@@ -111,6 +111,32 @@ TEST(UnknownEventsTest, ASilentSourcesLapseIsReportedOnce) {
   EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.700 s: nothing from Src.f for 500ms");
 }
 
+// A `by priority` hold that ends is not a silent source: hi delivers at 1.0 and its hold
+// (act_hi, 1 s) lapses at 2.0 as it should; nothing is reported (it read "event act_hi at
+// Sink.a lapsed at 2.000 s: nothing from Src.x for 1s"). A feed's event at the same port still is.
+TEST(UnknownEventsTest, AHoldThatEndsIsNotASilentSource) {
+  TestApp t;
+  feed_app(t, "e");
+  t.module("Src2", {"out y: int"});
+  t.app.events.push_back({"act_hi", 1s, "", {}});
+  model::Connection& hi = t.connect("hi", "Src2.y", "Sink.x", "true");
+  hi.activity_event = "act_hi";
+  hi.sets = {"act_hi"};
+  RunOptions o;
+  o.report_silent_lapses = true;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 1.0, "Src2", "y", Value(1));    // delivered: act_hi until 2.0
+  TestApp::publish_at(*rt, 1.0, "Src", "f", Value(true));  // e until 1.5, then silent
+  rt->advance(3s);
+  EXPECT_EQ(TestApp::sink(*rt).got.size(), 1u);
+  std::vector<std::string> lapses;
+  for (const std::string& r : t.reports) {
+    if (r.find("lapsed") != std::string::npos) lapses.push_back(r);
+  }
+  ASSERT_EQ(lapses.size(), 1u) << ::testing::PrintToString(t.reports);
+  EXPECT_EQ(lapses[0], "event e at Sink.x lapsed at 1.500 s: nothing from Src.f for 500ms");
+}
+
 // The report writes its instant in the unit of the run, as `arbc run`'s last line and the run
 // report do: in a run shorter than a second, ms (it read "0.600 s").
 TEST(UnknownEventsTest, ALapseOfAShortRunIsInMilliseconds) {

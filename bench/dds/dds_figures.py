@@ -79,10 +79,12 @@ class Bench:
         mediator.send_signal(signal.SIGTERM)
         out = finish(mediator, "the arbc mediator", 30)
         # Every connection's drop counters (monitor-error, quarantined, queue-full, bad-type,
-        # errors) must be zero; not-selected is the arbitration's decision, not a loss.
+        # lost-in-transit, errors) must be zero; not-selected is the arbitration's decision,
+        # not a loss.
         for line in out.splitlines():
             cells = line.split()
-            if len(cells) == 14 and cells[1].isdigit() and any(cells[i] != "0" for i in (8, 9, 10, 11, 13)):
+            if len(cells) == 15 and cells[1].isdigit() and any(
+                    cells[i] != "0" for i in (8, 9, 10, 11, 12, 14)):
                 fail("the mediator dropped messages: " + line, out)
         return out
 

@@ -12,6 +12,7 @@
 #include "compiler/frontend/test_contradiction.h"
 #include "compiler/frontend/type_rules.h"
 #include "core/join.h"
+#include "runtime/drop_reason.h"
 
 namespace arbc::frontend {
 
@@ -19,10 +20,16 @@ using namespace ast;
 
 namespace {
 
-// The drop reasons of docs/runtime.md#drop-reasons, as `expect RULE drops "reason"` names them.
-const std::vector<std::string> kDropReasons = {"rejected",    "no-value",   "not-selected",
-                                               "throttled",   "feed",       "monitor-error",
-                                               "quarantined", "queue-full", "bad-type"};
+// The drop reasons of docs/runtime.md#drop-reasons a test can expect, as `expect RULE drops
+// "reason"` names them: all but lost-in-transit, which only DDS between processes reports.
+std::vector<std::string> test_drop_reasons() {
+  std::vector<std::string> out;
+  for (const DropReasonInfo& r : kDropReasons) {
+    if (r.reason != DropReason::LostInTransit) out.push_back(r.name);
+  }
+  return out;
+}
+const std::vector<std::string> kTestDropReasons = test_drop_reasons();
 
 }  // namespace
 
@@ -209,14 +216,14 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       if (t.on_rule && e.rule_decl && e.rule_decl != t.on_rule) {
         error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", "test-port");
       }
-      if (!e.reason.empty() &&
-          std::find(kDropReasons.begin(), kDropReasons.end(), e.reason) == kDropReasons.end()) {
+      if (!e.reason.empty() && std::find(kTestDropReasons.begin(), kTestDropReasons.end(),
+                                         e.reason) == kTestDropReasons.end()) {
         Diagnostic& d = unknown(e.reason_loc, "unknown drop reason \"" + e.reason + "\"",
-                                "test-reason", e.reason, kDropReasons);
+                                "test-reason", e.reason, kTestDropReasons);
         if (d.notes.empty()) {  // nothing close: the whole list, which is short
           Diagnostic note;
           note.severity = Severity::Note;
-          note.message = "a drop reason is one of " + join(kDropReasons, ", ", " or ");
+          note.message = "a drop reason is one of " + join(kTestDropReasons, ", ", " or ");
           d.notes.push_back(std::move(note));
         }
       } else if (!e.reason.empty() && e.rule_decl) {
