@@ -61,9 +61,9 @@ struct RunOptions {
   // Where messages between ports go; nullptr: make_inproc_transport().
   std::shared_ptr<Transport> transport;
   // After a (re)start this process knows no event: a rule whose constraint reads an event that
-  // a feed provides is not selected until that feed has delivered once since start, or the
-  // event's lifetime has passed (docs/design.md#unknown-events-after-a-start). On for
-  // distributed runs, where the modules do not start with the mediator.
+  // a feed provides is not selected until that feed has processed a message since start (time
+  // passing is no evidence: docs/design.md#unknown-events-after-a-start). On for distributed
+  // runs, where the modules do not start with the mediator.
   bool unknown_until_fed = false;
   // Report (once per silence) an event that lapses because its feed's source sent nothing for
   // its lifetime: in a distributed run, the sign that a peer is gone.
