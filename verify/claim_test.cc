@@ -31,6 +31,20 @@ std::optional<Value> witness(const model::Connection& c, DataQuery& data, std::s
   return w.messages[0];
 }
 
+// Runs the test: it must break its claim on the app it came from.
+bool breaks_claim(const model::TestCase& test, const TestReplayer* replayer, std::string* why_not) {
+  if (!replayer) return true;
+  std::string err;
+  std::optional<std::string> failure = replayer->judge(test, &err);
+  if (!failure)
+    *why_not = "its replay on the runtime could not be run (" + err + ")";
+  else if (failure->empty())
+    *why_not =
+        "its replay on the runtime keeps the claim (a monitor of the same source may change the "
+        "events before the decision), so the test would pass on this app";
+  return failure && !failure->empty();
+}
+
 }  // namespace
 
 DataQuery& ReplayData::data() {
@@ -42,12 +56,19 @@ DataQuery& ReplayData::data() {
 }
 
 std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery& data,
-                                             std::string* why_not) {
+                                             const TestReplayer* replayer, std::string* why_not) {
   model::TestCase test;
   test.name = r.name;
   // The state first: the steps of one instant run in the order written
-  // (docs/testing.md#how-tests-run), so the rules decide in it.
+  // (docs/testing.md#how-tests-run), so the rules decide in it. A hold's activity event
+  // (act_RULE) is the runtime's: a test cannot set it (sema: unknown-event).
   for (const std::string& e : r.state.present) {
+    bool activity = false;
+    for (const model::Connection& c : data.app().connections) activity |= c.activity_event == e;
+    if (activity) {
+      *why_not = "its state has " + e + " present, which a test cannot `set`";
+      return std::nullopt;
+    }
     model::TestStep s;
     s.kind = model::TestStep::Kind::Set;
     s.event = e;
@@ -69,6 +90,7 @@ std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery&
     sources.push_back(c.source);
   }
   test.expectations.push_back(r.claim);
+  if (!breaks_claim(test, replayer, why_not)) return std::nullopt;
   return test;
 }
 

@@ -17,6 +17,7 @@
 #include "core/value.h"
 #include "verify/data_query.h"
 #include "verify/report.h"
+#include "verify/verify.h"
 
 namespace arbc::verify {
 
@@ -49,9 +50,12 @@ class ReplayData {
 };
 
 // The test; nullopt with *why_not ("'take' is opaque for data (a script)") when some rule has
-// no message to replay it with.
+// no message to replay it with, the state has an event a test cannot `set` (a hold's activity
+// event), or `replayer` ran the test and its claim held (a monitor of the same source changed
+// the events before the decision, say): a test that passes on the app it came from would keep
+// nothing. Without a replayer the test is not run.
 std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery& data,
-                                             std::string* why_not);
+                                             const TestReplayer* replayer, std::string* why_not);
 
 // The expectation `expect exclusive PORT;`, and `expect assert PORT: RULE -> EXPR;`.
 model::Expectation exclusive_claim(const std::string& port);

@@ -324,7 +324,8 @@ class PortChecker {
                          "' read one source, and no message both accept from a fresh monitor "
                          "is known";
     else
-      f.replay_test = decision_test(replay, replay_.data(), &f.not_replayable);
+      f.replay_test =
+          decision_test(replay, replay_.data(), options_.test_replayer, &f.not_replayable);
     return f;
   }
 
@@ -433,7 +434,8 @@ class PortChecker {
         {rule.connection},
         {std::nullopt},
         assert_claim(f.port, a)};
-    f.replay_test = decision_test(replay, replay_.data(), &f.not_replayable);
+    f.replay_test =
+        decision_test(replay, replay_.data(), options_.test_replayer, &f.not_replayable);
     f.counterexample = std::move(state);
     result_.findings.push_back(std::move(f));
   }
