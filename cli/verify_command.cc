@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "harness/test_replayer.h"
 #include "import/yarp/yarp_directory.h"
 #include "import/yarp/yarp_verify.h"
+#include "verify/claim_test.h"
 #include "verify/report_format.h"
 #include "verify/temporal/counterexample.h"
 #include "verify/verify.h"
@@ -103,9 +105,12 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   cli.add_option("--counterexamples", a.counterexamples,
-                 "a folder to write each violated property over time into, as a tests file "
-                 "that states the property (APP.RULE.test.spec): `arbc test` of it fails until "
-                 "the app is fixed");
+                 "a folder to write each counterexample into, as a tests file that states the "
+                 "claim it breaks: a property over time (APP.RULE.test.spec), a port's "
+                 "exclusivity (APP.M_p.RULE.RULE.exclusive.test.spec), an assert over events "
+                 "(APP.M_p.RULE.assert.test.spec); `arbc test` of it fails until the app is "
+                 "fixed. One a test cannot replay (a resource, an assert over `emitted`) is "
+                 "written as a .txt that says why");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
@@ -117,36 +122,85 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   return std::nullopt;
 }
 
-// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec, whose `tests for` names
-// the spec relative to DIR. False (after saying why on stderr) when one cannot be written.
-bool write_counterexamples(const std::vector<verify::InputReport>& reports,
-                           const std::string& dir) {
+// Writes `text` to `path`; false (after saying why on stderr) when it cannot.
+bool write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) std::fprintf(stderr, "arbc verify: cannot write %s\n", path.string().c_str());
+  return static_cast<bool>(out);
+}
+
+// "M.p" as a file name part: "M_p".
+std::string file_part(std::string name) {
+  for (char& c : name) c = c == '.' ? '_' : c;
+  return name;
+}
+
+// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec.
+bool write_temporal(const verify::InputReport& r, const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::create_directories(dir, ec);
+  for (const verify::TemporalResult& t : r.report.temporal) {
+    if (!t.replayed) continue;
+    fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
+    // APP.RULE.test.spec for spacing (APP.RULE.after_OTHER.test.spec after another rule);
+    // APP.RULE.KIND.test.spec for the others (a stability, which names no rule:
+    // APP.M_p.stability.test.spec).
+    std::string kind = std::string(".") + model::temporal_kind_name(t.property.kind);
+    if (t.property.kind == model::TemporalProperty::Kind::Spacing)
+      kind = t.property.other.empty() ? "" : ".after_" + t.property.other;
+    std::string who = t.property.rule.empty() ? file_part(t.property.port) : t.property.rule;
+    if (!write_file(
+            dir / (r.report.app + "." + who + kind + ".test.spec"),
+            verify::temporal::test_file_text(*t.replay_test, t.property, spec.generic_string())))
+      return false;
+  }
+  return true;
+}
+
+// A counterexample to a claim about single decisions (a port's exclusivity, an assert, a
+// resource) as DIR/APP.M_p.RULE[.RULE].KIND.test.spec (APP.NAME.RULE.RULE.resource for a resource):
+// a test that states the claim (verify/claim_test.h). One that cannot be replayed as a test is
+// written as a .txt file that says why and what the counterexample is, so that nothing is left out
+// silently. `where`: the port, or the resource, the claim is about.
+bool write_finding(const verify::InputReport& r, const verify::Finding& f, const std::string& where,
+                   const std::filesystem::path& dir, std::set<std::string>& used) {
+  namespace fs = std::filesystem;
+  if (!f.replay_test && f.not_replayable.empty()) return true;
+  std::string stem = r.report.app + "." + file_part(where);
+  for (const std::string& rule : f.rules) stem += "." + rule;
+  stem += "." + f.check;
+  std::string unique = stem;
+  for (int n = 2; !used.insert(unique).second; ++n) unique = stem + std::to_string(n);
+  if (!f.replay_test) {
+    std::string text = "Not written as a test: " + f.not_replayable + ".\n\n" + f.message + "\n";
+    for (const verify::Note& n : f.notes) text += "note: " + n.message + "\n";
+    return write_file(dir / (unique + ".txt"), text);
+  }
+  std::error_code ec;
+  fs::path spec = fs::proximate(fs::absolute(f.loc.file.str()), fs::absolute(dir), ec);
+  return write_file(
+      dir / (unique + ".test.spec"),
+      verify::counterexample_file_text(*f.replay_test, f.replay_test->expectations.at(0).text,
+                                       spec.generic_string(), verify::kDecisionTestHeader));
+}
+
+// Each counterexample the reports hold, as a tests file whose `tests for` names the spec
+// relative to DIR (docs/cli.md, --counterexamples). False (after saying why on stderr) when one
+// cannot be written.
+bool write_counterexamples(const std::vector<verify::InputReport>& reports,
+                           const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::set<std::string> used;  // file names written, so that none is overwritten
   for (const verify::InputReport& r : reports) {
-    for (const verify::TemporalResult& t : r.report.temporal) {
-      if (!t.replayed) continue;
-      fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
-      // APP.RULE.test.spec for spacing (APP.RULE.after_OTHER.test.spec after another rule);
-      // APP.RULE.KIND.test.spec for the others (a stability, which names no rule:
-      // APP.M_p.stability.test.spec).
-      std::string kind = std::string(".") + model::temporal_kind_name(t.property.kind);
-      if (t.property.kind == model::TemporalProperty::Kind::Spacing)
-        kind = t.property.other.empty() ? "" : ".after_" + t.property.other;
-      std::string who = t.property.rule;
-      if (who.empty()) {
-        who = t.property.port;
-        for (char& c : who) c = c == '.' ? '_' : c;
-      }
-      fs::path path = fs::path(dir) / (r.report.app + "." + who + kind + ".test.spec");
-      std::ofstream out(path);
-      out << verify::temporal::test_file_text(*t.replay_test, t.property, spec.generic_string());
-      if (!out) {
-        std::fprintf(stderr, "arbc verify: cannot write %s\n", path.string().c_str());
-        return false;
-      }
-    }
+    if (!write_temporal(r, dir)) return false;
+    for (const verify::PortResult& p : r.report.ports)
+      for (const verify::Finding& f : p.findings)
+        if (!write_finding(r, f, p.port, dir, used)) return false;
+    for (const verify::ResourceResult& res : r.report.resources)
+      for (const verify::Finding& f : res.findings)
+        if (!write_finding(r, f, res.name, dir, used)) return false;
   }
   return true;
 }

@@ -12,6 +12,10 @@ std::string assumption_text(const Assumption& a) {
          (a.until.empty() ? "" : " until " + a.until);
 }
 
+std::string assertion_text(const std::string& port, const Assertion& a) {
+  return "assert " + port + ": " + a.rule + " -> " + a.property.to_string();
+}
+
 std::string temporal_property_text(const TemporalProperty& p) {
   switch (p.kind) {
     case TemporalProperty::Kind::Spacing:

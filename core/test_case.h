@@ -28,14 +28,28 @@ struct Expectation {
   // Delivers, DeliversNothing: the rule delivers (nothing) in the window, whatever it drops.
   // Property: the property over time holds over the whole run (its windows that end after the
   // run are not judged).
-  enum class Kind { Receives, Nothing, Drops, Delivers, DeliversNothing, Property, State };
+  // Exclusive, Assert: a claim about single decisions (the port's exclusivity, an assert over
+  // events) holds at every decision of the run, judged as the runtime checks judge it
+  // (runtime/decision_watch.h).
+  enum class Kind {
+    Receives,
+    Nothing,
+    Drops,
+    Delivers,
+    DeliversNothing,
+    Property,
+    State,
+    Exclusive,
+    Assert
+  };
   Kind kind = Kind::Receives;
-  std::string port;                          // Receives, Nothing: "Module.port", an in-port
+  std::string port;  // Receives, Nothing: "Module.port", an in-port; Exclusive, Assert: arbitrated
   std::optional<Value> value;                // Receives: none means any value
   std::string connection;                    // Drops, Delivers, DeliversNothing: the rule
   std::string reason;                        // Drops: empty means any reason
   Constraint state;                          // State
   std::optional<TemporalProperty> property;  // Property (none: sema reported its port)
+  std::optional<Assertion> assertion;        // Assert
   // The window, both ends included; without one, the whole test.
   Nanos from{0}, to = kNever;
   std::string text;  // the expectation as written, for failure messages

@@ -94,6 +94,10 @@ testStep
   | 'expect' ID 'drops' STRING? testWindow? ';'                          # expectDrops
   | 'expect' ID 'delivers' nothing='nothing'? testWindow? ';'            # expectDelivers
   | 'expect' (neverDecl | onlyAfterDecl | responseDecl | stableDecl)     # expectProperty
+  // A claim about single decisions, judged on the run as the runtime checks judge it
+  // (runtime/decision_watch.h): the port's exclusivity, or an assert over events.
+  | 'expect' 'exclusive' portRef ';'                                     # expectExclusive
+  | 'expect' assertDecl                                                  # expectAssert
   | 'expect' expr testWindow ';'                                         # expectState
   ;
 testWindow : 'at' duration | 'within' duration '..' duration ;

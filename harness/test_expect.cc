@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/duration_literal.h"
+#include "harness/claim_expect.h"
 #include "harness/value_spec_text.h"
 #include "report/run_timeline.h"
 #include "runtime/property_watch.h"
@@ -220,6 +221,9 @@ std::pair<Nanos, Nanos> failure_window(const model::Expectation& e, const TestRu
   if (e.kind == model::Expectation::Kind::Property) {
     if (std::optional<PropertyBreach> b = property_breach(e, run)) return {b->from, b->t};
   }
+  if (e.kind == model::Expectation::Kind::Exclusive || e.kind == model::Expectation::Kind::Assert) {
+    if (std::optional<ClaimBreach> b = claim_breach(e, run)) return {b->t, b->t};
+  }
   return {e.from, e.to};
 }
 
@@ -237,6 +241,10 @@ std::string check_expectation(const model::Expectation& e, const TestRun& run) {
       return check_property(e, run);
     case model::Expectation::Kind::State:
       return check_state(e, run);
+    case model::Expectation::Kind::Exclusive:
+    case model::Expectation::Kind::Assert:
+      if (std::optional<ClaimBreach> b = claim_breach(e, run)) return "but " + b->what;
+      return "";
   }
   return "";
 }

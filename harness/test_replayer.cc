@@ -9,6 +9,7 @@
 #include "compiler/codegen/write_artifacts.h"
 #include "compiler/lower/compile_spec.h"
 #include "harness/model_loader.h"
+#include "harness/test_expect.h"
 #include "harness/test_runner.h"
 #include "runtime/app_loader.h"
 
@@ -93,6 +94,19 @@ std::optional<std::vector<verify::ReplayRecord>> RuntimeTestReplayer::replay(
     }
   }
   return out;
+}
+
+std::optional<std::string> RuntimeTestReplayer::judge(const model::TestCase& test,
+                                                      std::string* err) const {
+  if (!prepare(err)) return std::nullopt;
+  TestTrace trace;
+  if (!run_test_trace(*app_, app_dir_, test, &trace, err, false)) return std::nullopt;
+  TestRun run{trace.received, trace.records, trace.end, &*app_};
+  for (const model::Expectation& e : test.expectations) {
+    std::string why = check_expectation(e, run);
+    if (!why.empty()) return "expected " + e.text + " " + why;
+  }
+  return "";
 }
 
 }  // namespace arbc::harness

@@ -29,6 +29,7 @@ class RuntimeTestReplayer : public verify::TestReplayer {
   std::optional<std::vector<verify::ReplayRecord>> replay(const model::TestCase& test,
                                                           const std::string& port,
                                                           std::string* err) const override;
+  std::optional<std::string> judge(const model::TestCase& test, std::string* err) const override;
 
  private:
   bool prepare(std::string* err) const;  // the scratch app directory, once

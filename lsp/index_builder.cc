@@ -204,9 +204,11 @@ class Builder {
     for (const ast::TestExpect& x : t.expects) {
       if (x.rule_decl)  // Drops, Delivers, DeliversNothing
         ix_.add_occurrence(rule_key(x.rule_decl), name_loc(x.rule_loc, x.rule));
-      if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing)
+      if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing ||
+          x.kind == ast::TestExpect::Kind::Exclusive)
         port_ref(x.port);
       if (x.property) temporal(*x.property);
+      if (x.assertion) assertion(*x.assertion);  // `expect assert M.p: RULE -> EXPR;`
       expr(x.value.get());
       if (x.window.present) {
         expr(x.window.from.expr.get());

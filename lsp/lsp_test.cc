@@ -177,6 +177,28 @@ TEST(SymbolIndex, ConstantsInDurationsAreUses) {
   EXPECT_EQ(lines, (std::vector<int>{2, 6, 7, 8, 9}));
 }
 
+// A test's `expect exclusive M.p;` uses the port, and `expect assert M.p: RULE -> EXPR;` the
+// port, the rule and the events, as a declared assert does (find references, rename).
+TEST(SymbolIndex, ClaimExpectationsAreUses) {
+  frontend::CheckResult r = frontend::check_text(
+      "app a \"x\";\nmodule M { in p: int; out q: int; out s: int; }\nevent e, f;\n"
+      "arbitrate M.p { r: from M.q when e; t: from M.s when not e; }\n"
+      "test \"claims\" {\n  at 0s M.q <- 1;\n  expect exclusive M.p;\n"
+      "  expect assert M.p: r -> f;\n}\n",
+      "x.spec", ".");
+  ASSERT_TRUE(r.ok()) << frontend::render_diagnostics(r.diagnostics, nullptr);
+  std::unique_ptr<SymbolIndex> ix = build_index(*r.spec);
+  const Occurrence* port = ix->occurrence_at(7, 22);  // the `p` of `expect exclusive M.p`
+  ASSERT_NE(port, nullptr);
+  EXPECT_EQ(ix->symbols[port->symbol].key.substr(0, 5), "port:");
+  const Occurrence* rule = ix->occurrence_at(8, 22);  // the `r` of `expect assert M.p: r`
+  ASSERT_NE(rule, nullptr);
+  EXPECT_EQ(ix->occurrences_of(rule->symbol).size(), 2u);  // declared, asserted
+  const Occurrence* event = ix->occurrence_at(8, 27);      // the `f` of `-> f`
+  ASSERT_NE(event, nullptr);
+  EXPECT_EQ(ix->symbols[event->symbol].key, "event:f");
+}
+
 TEST(GrammarInfo, KeywordsComeFromTheGrammar) {
   std::vector<std::string> k = frontend::grammar_keywords();
   for (const char* word : {"arbitrate", "when", "module", "otherwise"})

@@ -37,13 +37,11 @@ DecisionWatch::DecisionWatch(const model::App& app,
       auto it = rule_index_.find(a.rule);
       if (a.emitted || it == rule_index_.end()) continue;  // data asserts: not yet (header)
       rules_[it->second].asserts.push_back(asserts_.size());
-      asserts_.push_back(
-          {&a, "assert " + p.port + ": " + a.rule + " -> " + a.property.to_string()});
+      asserts_.push_back({&a, model::assertion_text(p.port, a)});
     }
     if (p.by_priority || rules_.size() - first < 2) continue;
     ports_.insert(p.port);
-    port_claim_[p.port] =
-        p.port + ": rules " + join(p.rules, ", ") + " are never selected together";
+    port_claim_[p.port] = exclusivity_claim(p);
     for (size_t i = first; i < rules_.size(); ++i)
       for (size_t j = first; j < rules_.size(); ++j)
         if (i != j)
@@ -57,6 +55,10 @@ std::vector<std::string> DecisionWatch::claims() const {
   for (const std::string& port : ports_) out.push_back(port_claim_.at(port));
   for (const Assert& a : asserts_) out.push_back(a.text);
   return out;
+}
+
+std::string DecisionWatch::exclusivity_claim(const model::ArbitratedPort& p) {
+  return p.port + ": rules " + join(p.rules, ", ") + " are never selected together";
 }
 
 void DecisionWatch::decision(const TraceRecord& r, const std::set<std::string>& state) {

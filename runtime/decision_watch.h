@@ -38,6 +38,8 @@ class DecisionWatch {
   // How many claims it watches, and their texts (each port's exclusivity, then the asserts).
   size_t size() const { return ports_.size() + asserts_.size(); }
   std::vector<std::string> claims() const;
+  // A port's exclusivity as breaches name it (an assert: model::assertion_text).
+  static std::string exclusivity_claim(const model::ArbitratedPort& p);
   // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
   void decision(const TraceRecord& r, const std::set<std::string>& state);
 

@@ -9,6 +9,10 @@ namespace arbc::verify {
 
 namespace {
 
+// Why --counterexamples writes no test for a refuted assert over data.
+constexpr const char* kNotJudged =
+    "an assert over `emitted` is not judged on a test's run yet (docs/testing.md#claims)";
+
 Finding assert_finding(const PortScope& scope, const model::Assertion& a) {
   Finding f;
   f.check = kCheckAssert;
@@ -81,6 +85,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   Finding f = assert_finding(scope, a);
   f.message =
       what + " can fail: '" + a.rule + "' can deliver a value for which the property is false";
+  f.not_replayable = kNotJudged;
   f.counterexample = EventState{*present, {}};
   for (const std::string& e : scope.events)
     if (std::find(present->begin(), present->end(), e) == present->end())

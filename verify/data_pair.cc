@@ -100,6 +100,7 @@ DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const m
     }
     d.notes.push_back({"replayed through the Lua monitors: " + join(ex.replay, "; "), {}});
   }
+  if (assumed.empty()) d.message = w.messages[0];
   d.example = std::move(ex);
   return d;
 }

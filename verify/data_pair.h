@@ -23,6 +23,7 @@ struct DataPair {
   Kind kind = Kind::NotApplicable;
   std::string text;
   std::optional<MessageExample> example;
+  std::optional<Value> message;  // Overlap: the example's message, when a fresh monitor takes it
   std::vector<Note> notes;
   int queries = 0;
 };

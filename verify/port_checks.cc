@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/join.h"
+#include "verify/claim_test.h"
 #include "verify/data_assert.h"
 #include "verify/data_pair.h"
 #include "verify/replay.h"
@@ -104,10 +105,11 @@ Finding internal_error(const PortScope& scope, const std::string& what, const Ev
 class PortChecker {
  public:
   PortChecker(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
-              Clock::time_point deadline, DataQuery& data, PortResult& result)
+              Clock::time_point deadline, DataQuery& data, ReplayData& replay, PortResult& result)
       : scope_(scope),
         options_(options),
         data_(data),
+        replay_(replay),
         solver_(scope, ctx, deadline),
         shortcut_(scope),
         result_(result) {}
@@ -270,27 +272,9 @@ class PortChecker {
             state));
         continue;
       }
-      Finding f;
-      f.check = kCheckExclusive;
-      f.severity = Severity::Error;
-      f.port = scope_.port->port;
-      f.rules = {rule_name(ri), rule_name(rj)};
-      f.loc = ri.connection->loc;
-      f.message = "rules '" + rule_name(ri) + "' and '" + rule_name(rj) + "' of " +
-                  scope_.port->port + " can both be selected in one state";
-      f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
-      f.notes.push_back(explain_rule(ri, *present, true));
-      f.notes.push_back(explain_rule(rj, *present, true));
-      f.notes.push_back(
-          {"make the constraints exclusive (e.g. `not EVENT` in one of them), or "
-           "declare the `invariant` or `exclusive` group that rules this state out",
-           {}});
-      f.counterexample = std::move(state);
-      if (auto d = data.find({i, j}); d != data.end()) {
-        for (Note& n : d->second.notes) f.notes.push_back(std::move(n));
-        if (d->second.example) f.messages.push_back(std::move(*d->second.example));
-      }
-      result_.findings.push_back(std::move(f));
+      auto d = data.find({i, j});
+      result_.findings.push_back(overlap_finding(ri, rj, *present, std::move(state),
+                                                 d == data.end() ? nullptr : &d->second));
       ++result_.reported_pairs;
       last = static_cast<int>(result_.findings.size()) - 1;
     }
@@ -302,6 +286,47 @@ class PortChecker {
                std::to_string(options_.max_pairs_per_port) + " per port)",
            {}});
     }
+  }
+
+  // The finding of two rules selected in one state, with the message both accept when they
+  // read one source (`d`), and the counterexample as a test that states the port's exclusivity.
+  Finding overlap_finding(const ScopedRule& ri, const ScopedRule& rj,
+                          const std::vector<std::string>& present, EventState state, DataPair* d) {
+    Finding f;
+    f.check = kCheckExclusive;
+    f.severity = Severity::Error;
+    f.port = scope_.port->port;
+    f.rules = {rule_name(ri), rule_name(rj)};
+    f.loc = ri.connection->loc;
+    f.message = "rules '" + rule_name(ri) + "' and '" + rule_name(rj) + "' of " +
+                scope_.port->port + " can both be selected in one state";
+    f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
+    f.notes.push_back(explain_rule(ri, present, true));
+    f.notes.push_back(explain_rule(rj, present, true));
+    f.notes.push_back(
+        {"make the constraints exclusive (e.g. `not EVENT` in one of them), or "
+         "declare the `invariant` or `exclusive` group that rules this state out",
+         {}});
+    DecisionReplay replay{
+        "counterexample: " + f.rules[0] + " and " + f.rules[1] + " selected together in " + f.port,
+        state,
+        {ri.connection, rj.connection},
+        {std::nullopt, std::nullopt},
+        exclusive_claim(f.port)};
+    f.counterexample = std::move(state);
+    if (d) {
+      for (Note& n : d->notes) f.notes.push_back(std::move(n));
+      if (d->example) f.messages.push_back(std::move(*d->example));
+      replay.messages = {d->message, d->message};
+    }
+    if (ri.connection->source == rj.connection->source && !replay.messages[0])
+      f.not_replayable = "'" + f.rules[0] + "' and '" + f.rules[1] +
+                         "' read one source, and no message both accept from a fresh monitor "
+                         "is known";
+    else
+      f.replay_test =
+          decision_test(replay, replay_.data(), options_.test_replayer, &f.not_replayable);
+    return f;
   }
 
   // Drops from `pairs` those that no one message can select together (same source, both
@@ -403,6 +428,14 @@ class PortChecker {
     f.notes.push_back({"counterexample (fewest events present): " + state_text(state), {}});
     f.notes.push_back(explain_rule(rule, *present, true));
     f.notes.push_back({"strengthen the `when` of '" + a.rule + "' with the property", {}});
+    DecisionReplay replay{
+        "counterexample: " + a.rule + " delivers while `" + a.property.to_string() + "` is false",
+        state,
+        {rule.connection},
+        {std::nullopt},
+        assert_claim(f.port, a)};
+    f.replay_test =
+        decision_test(replay, replay_.data(), options_.test_replayer, &f.not_replayable);
     f.counterexample = std::move(state);
     result_.findings.push_back(std::move(f));
   }
@@ -410,6 +443,7 @@ class PortChecker {
   const PortScope& scope_;
   const VerifyOptions& options_;
   DataQuery& data_;
+  ReplayData& replay_;
   int data_queries_ = 0;
   std::set<const model::Connection*> warned_bound_;  // rules bounded_by_lists has looked at
   PortSolver solver_;
@@ -420,7 +454,8 @@ class PortChecker {
 }  // namespace
 
 void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::context& ctx,
-                     Clock::time_point deadline, DataQuery& data, PortResult& result) {
+                     Clock::time_point deadline, DataQuery& data, ReplayData& replay,
+                     PortResult& result) {
   result.port = scope.port->port;
   result.by_priority = scope.port->by_priority;
   result.complete = scope.port->complete;
@@ -438,7 +473,7 @@ void run_port_checks(const PortScope& scope, const VerifyOptions& options, z3::c
       ++result.exclusive_groups;
     }
   }
-  PortChecker(scope, options, ctx, deadline, data, result).run();
+  PortChecker(scope, options, ctx, deadline, data, replay, result).run();
 }
 
 }  // namespace arbc::verify

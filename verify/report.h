@@ -75,6 +75,11 @@ struct Finding {
   std::vector<MessageExample> messages;  // data findings: the message(s) that show it
   std::vector<Note> notes;               // why each side holds, what to do
   bool strict = false;                   // a warning (dead, unused) that --strict made an error
+  // A counterexample to a claim about single decisions (`exclusive`, `assert`) as a test that
+  // states the claim in its expectation (verify/claim_test.h), for --counterexamples; nullopt
+  // when it cannot be written, with `not_replayable` saying why (empty: not such a finding).
+  std::optional<model::TestCase> replay_test;
+  std::string not_replayable;
 
   // The port of rules[i]; empty when the finding does not say.
   const std::string& rule_port(size_t i) const {

@@ -119,10 +119,11 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   z3::context ctx;  // one per run: creating a context costs tens of milliseconds
   SolverWatchdog watchdog(ctx, deadline, options.on_stuck);  // where Z3's timeout is not kept
   DataQuery data(app, ctx, options.list_bound, deadline);
+  ReplayData replay(app, options.list_bound, deadline);
   for (const PortScope& scope : scopes) {
     PortResult result;
     Clock::time_point port_start = Clock::now();
-    run_port_checks(scope, options, ctx, deadline, data, result);
+    run_port_checks(scope, options, ctx, deadline, data, replay, result);
     for (Finding& f : structural) {
       if (f.port == result.port) result.findings.push_back(std::move(f));
     }

@@ -57,6 +57,14 @@ class TestReplayer {
   virtual std::optional<std::vector<ReplayRecord>> replay(const model::TestCase& test,
                                                           const std::string& port,
                                                           std::string* err) const = 0;
+  // Runs `test` as `arbc test` does and judges its expectations: "" when they all hold, else the
+  // first failure in words; nullopt and *err when the run could not be made (or this replayer
+  // cannot judge). A counterexample written as a test is run so before it is written
+  // (verify/claim_test.h): it must fail on the app it came from.
+  virtual std::optional<std::string> judge(const model::TestCase&, std::string* err) const {
+    *err = "no runtime to run it on";
+    return std::nullopt;
+  }
 };
 
 struct VerifyOptions {

@@ -417,9 +417,11 @@ struct TestExpect {
     DeliversNothing,  // `expect RULE delivers nothing [window];`
     Property,         // `expect never two take within 1s;` (any property over time): the whole run
     State,            // `expect CONSTRAINT at D;`
+    Exclusive,        // `expect exclusive M.p;`: no two rules of the port selected at once
+    Assert,           // `expect assert M.p: RULE -> EXPR;`: EXPR holds at each delivery of RULE
   };
   Kind kind = Kind::Receives;
-  PortRef port;      // Receives, Nothing
+  PortRef port;      // Receives, Nothing, Exclusive
   ExprPtr value;     // Receives: null means any value; State: the constraint
   std::string rule;  // Drops, Delivers, DeliversNothing
   Loc rule_loc;
@@ -432,6 +434,7 @@ struct TestExpect {
   const Rule* rule_decl = nullptr;         // Drops, Delivers, DeliversNothing
   Constraint constraint;                   // State
   std::shared_ptr<TemporalDecl> property;  // Property
+  std::shared_ptr<AssertDecl> assertion;   // Assert (checked by sema as a declared one)
 };
 
 // `test "name" [on RULE] { steps and expectations }`

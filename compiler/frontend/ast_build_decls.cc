@@ -326,7 +326,7 @@ TestDecl Builder::test_decl(ArbcParser::TestDeclContext* c) {
 }
 
 // testStep : 'at' duration portRef '<-' expr ';' | 'at' duration ('set'|'unset') ID ';'
-//          | 'expect' ... ;   (the four expectations of ast::TestExpect)
+//          | 'expect' ... ;   (the expectations of ast::TestExpect)
 void Builder::add_test_step(TestDecl& t, ArbcParser::TestStepContext* step) {
   if (auto* c = as<ArbcParser::TestInputContext>(step)) {
     TestStep s;
@@ -380,6 +380,12 @@ TestExpect Builder::test_expect(ArbcParser::TestStepContext* step) {
     if (c->responseDecl())
       e.property = std::make_shared<TemporalDecl>(response_decl(c->responseDecl()));
     if (c->stableDecl()) e.property = std::make_shared<TemporalDecl>(stable_decl(c->stableDecl()));
+  } else if (auto* c = as<ArbcParser::ExpectExclusiveContext>(step)) {
+    e.kind = TestExpect::Kind::Exclusive;
+    e.port = port_ref(c->portRef());
+  } else if (auto* c = as<ArbcParser::ExpectAssertContext>(step)) {
+    e.kind = TestExpect::Kind::Assert;
+    e.assertion = std::make_shared<AssertDecl>(assert_decl(c->assertDecl()));
   } else if (auto* c = as<ArbcParser::ExpectStateContext>(step)) {
     e.kind = TestExpect::Kind::State;
     e.value = expr(c->expr(), 0);

@@ -198,6 +198,37 @@ void Sema::check_reason_possible(const Rule& rule, const TestExpect& e) {
   d.notes.push_back(std::move(note));
 }
 
+// `expect exclusive M.p;` and `expect assert M.p: RULE -> EXPR;`: the claims the proof makes
+// about single decisions, judged on the run by runtime/decision_watch.h. One that could not fail
+// there is refused: a `by priority` port claims no exclusivity, a test on one rule runs no
+// other rule of the port, and an assert over `emitted` is not judged on a run yet.
+void Sema::check_test_claim(const TestDecl& t, TestExpect& e) {
+  if (e.kind == TestExpect::Kind::Assert) {
+    check_assert(*e.assertion);
+    if (e.assertion->over_data)
+      error(e.assertion->loc,
+            "an assert over `emitted` is not judged on a test's run yet: expect what the rule "
+            "delivers with `expect " +
+                e.assertion->port.qualified() + " receives VALUE;`",
+            "test-claim");
+    return;
+  }
+  const ArbitrateDecl* a = arbitrated_port(e.port, "`expect exclusive`");
+  if (!a) return;
+  if (a->by_priority) {
+    error(e.port.loc,
+          e.port.qualified() +
+              " is arbitrated `by priority`: a higher rule may deliver right after a lower one by "
+              "design, so no exclusivity is claimed (docs/design.md#priorities-and-holds)",
+          "test-claim");
+  } else if (t.on_rule) {
+    error(e.loc,
+          "test \"" + t.name + "\" runs rule '" + t.on +
+              "' alone: exclusivity is about the port's rules together; remove `on " + t.on + "`",
+          "test-port");
+  }
+}
+
 void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
   switch (e.kind) {
     case TestExpect::Kind::Receives:
@@ -239,6 +270,10 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       break;
     case TestExpect::Kind::Property:
       check_temporal(*e.property);
+      break;
+    case TestExpect::Kind::Exclusive:
+    case TestExpect::Kind::Assert:
+      check_test_claim(t, e);
       break;
     case TestExpect::Kind::State:
       e.constraint = check_constraint(*e.value, "an expectation", false);

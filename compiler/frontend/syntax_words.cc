@@ -177,8 +177,9 @@ void describe_test_step(const antlr4::Token* start, const antlr4::Token* offendi
     note.message =
         "an expectation reads `expect Module.port receives VALUE [WINDOW];` (or `receives "
         "nothing`), `expect RULE drops [\"reason\"] [WINDOW];`, `expect RULE delivers [nothing] "
-        "[WINDOW];`, `expect PROPERTY;` (a property over time) or `expect CONDITION WINDOW;`, "
-        "where WINDOW is `at TIME` or `within T1..T2`";
+        "[WINDOW];`, `expect PROPERTY;` (a property over time), `expect exclusive Module.port;`, "
+        "`expect assert Module.port: RULE -> CONDITION;` or `expect CONDITION WINDOW;`, where "
+        "WINDOW is `at TIME` or `within T1..T2`";
   }
   d.notes.push_back(std::move(note));
 }

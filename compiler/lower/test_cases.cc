@@ -1,6 +1,7 @@
 #include "compiler/lower/test_cases.h"
 
 #include "compiler/frontend/literal_value.h"
+#include "compiler/lower/lower_body.h"
 #include "compiler/lower/temporal.h"
 
 namespace arbc {
@@ -71,6 +72,15 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
     case ast::TestExpect::Kind::State:
       out.kind = model::Expectation::Kind::State;
       out.state = e.constraint;
+      break;
+    case ast::TestExpect::Kind::Exclusive:
+      out.kind = model::Expectation::Kind::Exclusive;
+      out.port = e.port.qualified();
+      break;
+    case ast::TestExpect::Kind::Assert:
+      out.kind = model::Expectation::Kind::Assert;
+      out.port = e.assertion->port.qualified();
+      out.assertion = lower::lower_assert(*e.assertion, nullptr);  // over events (sema)
       break;
   }
   return out;

@@ -2,7 +2,9 @@
 # A violated property over time is written as a tests file (--counterexamples) that states the
 # property where the app broke it (docs/checks.md#temporal): `arbc test` of that file fails on
 # the app, so the counterexample is real, and with --fixed FIXED_SPEC (the app without the
-# mutation) the same file passes: it can be kept as a regression test.
+# mutation) the same file passes: it can be kept as a regression test. The same for a claim
+# about single decisions (docs/testing.md#claims): RULE is then the end of the file's name,
+# RULE.RULE.exclusive or RULE.assert.
 # Usage: temporal_replay.sh ARBC SPEC RULE [--fixed FIXED_SPEC] [VERIFY OPTIONS...]
 set -u
 arbc=$1 spec=$2 rule=$3

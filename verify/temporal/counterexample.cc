@@ -8,6 +8,7 @@
 
 #include "core/duration_literal.h"
 #include "core/join.h"
+#include "verify/claim_test.h"
 #include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
@@ -213,28 +214,12 @@ std::optional<model::TestCase> counterexample_test(const PortShape& shape, const
 
 std::string test_file_text(const model::TestCase& replay, const model::TemporalProperty& p,
                            const std::string& spec_path) {
-  std::string out =
+  return counterexample_file_text(
+      replay, property_words(p), spec_path,
       "// A counterexample `arbc verify` found and replayed on the runtime, kept as a regression\n"
       "// test: it expects the property itself over these inputs, so `arbc test --no-verify FILE`\n"
       "// fails on that app and passes once it is fixed. Events the app's feeds set are given\n"
-      "// directly (`set`/`unset`).\n";
-  out += "tests for \"" + spec_path + "\";\n\ntest \"" + replay.name + "\" {\n";
-  for (const model::TestStep& s : replay.steps) {
-    out += "  at " + duration_literal(s.t) + " ";
-    switch (s.kind) {
-      case model::TestStep::Kind::Input:
-        out += s.port + " <- " + spec_value_text(s.value) + ";\n";
-        break;
-      case model::TestStep::Kind::Set:
-        out += "set " + s.event + ";\n";
-        break;
-      case model::TestStep::Kind::Unset:
-        out += "unset " + s.event + ";\n";
-        break;
-    }
-  }
-  out += "  expect " + property_words(p) + ";\n";
-  return out + "}\n";
+      "// directly (`set`/`unset`).\n");
 }
 
 }  // namespace arbc::verify::temporal

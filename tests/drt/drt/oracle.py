@@ -176,8 +176,9 @@ class Oracle:
 
     def replay(self, work, res):
         """The counterexample tests `verify --counterexamples` wrote, each run as `arbc test` runs
-        it. A file that states the property ("kept as a regression" in its header) must fail on
-        this app, its expectation unmet: the violation is real. A file that states what the
+        it. A file that states the claim it breaks (a property over time, a port's exclusivity,
+        an assert: "kept as a regression" in its header) must fail on this app, its expectation
+        unmet: the violation is real. A file that states what the
         broken app does must pass (docs/checks.md#temporal)."""
         cex = os.path.join(work, "cex")
         if not os.path.isdir(cex):

@@ -1,0 +1,50 @@
+#include "harness/claim_expect.h"
+
+#include <set>
+
+#include "runtime/decision_watch.h"
+#include "runtime/trace_container.h"
+
+namespace arbc::harness {
+
+std::optional<ClaimBreach> claim_breach(const model::Expectation& e, const TestRun& run) {
+  if (!run.app || !run.app->find_arbitrated(e.port)) return std::nullopt;  // sema said so
+  // The app with only the claim the test states: the watch judges that, not the asserts the
+  // app declares (a kept counterexample still states its assert once the app drops it).
+  model::App app = *run.app;
+  std::string claim;
+  for (model::ArbitratedPort& p : app.arbitrated_ports) {
+    p.asserts.clear();
+    if (p.port != e.port) continue;
+    if (e.kind == model::Expectation::Kind::Assert && e.assertion) {
+      p.asserts.push_back(*e.assertion);
+      claim = model::assertion_text(p.port, *e.assertion);
+    } else {
+      claim = DecisionWatch::exclusivity_claim(p);
+    }
+  }
+  std::optional<ClaimBreach> out;
+  DecisionWatch watch(
+      app, [&e](const std::string& port) { return port == e.port; }, true,
+      [&](const std::string& broken, Nanos t, const std::string& what) {
+        if (broken == claim && !out) out = ClaimBreach{t, what};
+      });
+  std::set<std::string> rules;  // the port's rules: their decisions are judged
+  for (const model::Connection* c : app.connections_into(e.port))
+    if (c->kind == model::ConnectionKind::Rule) rules.insert(c->name);
+  // As runtime/claim_watch.cc does: the port's container from its event records, and each
+  // decision of a rule (a delivery, or a drop that is not a feed's) in the state at its instant.
+  TraceContainer box;
+  for (const TraceRecord& r : run.records) {
+    if (r.kind == TraceKind::Event && r.port == e.port) {
+      box.apply(r);
+    } else if ((r.kind == TraceKind::Deliver && r.port == e.port) ||
+               (r.kind == TraceKind::Drop && r.reason != DropReason::Feed)) {
+      if (rules.count(r.connection)) watch.decision(r, box.present(r.t));
+    }
+    if (out) break;
+  }
+  return out;
+}
+
+}  // namespace arbc::harness
