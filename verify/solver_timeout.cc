@@ -29,7 +29,7 @@ z3::check_result check(z3::solver& solver, SolverTimeout& timeout, std::string* 
     return z3::unknown;
   }
   try {
-    QueryInFlight in_flight;  // the watchdog may interrupt this query, and only this
+    QueryInFlight in_flight(solver.ctx());  // the watchdog may interrupt this query, and only this
     z3::check_result r = assumptions ? solver.check(*assumptions) : solver.check();
     if (r != z3::unknown) return r;
     std::string why = solver.reason_unknown();

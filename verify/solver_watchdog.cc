@@ -1,5 +1,6 @@
 #include "verify/solver_watchdog.h"
 
+#include <map>
 #include <utility>
 
 namespace arbc::verify {
@@ -9,26 +10,27 @@ namespace {
 // The queries in flight in this process, under one lock with the watchdogs' interrupts, so an
 // interrupt is issued only between a query's start and its end.
 std::mutex g_flight_mutex;
-int g_in_flight = 0;
+std::map<Z3_context, int> g_in_flight;  // queries in flight, per context
 
 // Interrupts `ctx` if a query is in flight; whether it did.
 bool interrupt_query(z3::context& ctx) {
   std::lock_guard<std::mutex> lock(g_flight_mutex);
-  if (g_in_flight == 0) return false;
+  auto it = g_in_flight.find(ctx);
+  if (it == g_in_flight.end() || it->second == 0) return false;
   ctx.interrupt();
   return true;
 }
 
 }  // namespace
 
-QueryInFlight::QueryInFlight() {
+QueryInFlight::QueryInFlight(z3::context& ctx) : ctx_(ctx) {
   std::lock_guard<std::mutex> lock(g_flight_mutex);
-  ++g_in_flight;
+  ++g_in_flight[ctx_];
 }
 
 QueryInFlight::~QueryInFlight() {
   std::lock_guard<std::mutex> lock(g_flight_mutex);
-  --g_in_flight;
+  if (--g_in_flight[ctx_] == 0) g_in_flight.erase(ctx_);
 }
 
 SolverWatchdog::SolverWatchdog(z3::context& ctx, Clock::time_point deadline,

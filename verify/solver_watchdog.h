@@ -26,12 +26,18 @@ namespace arbc::verify {
 // reaches whatever interruptable Z3 call runs at that moment, and outside a query that is a
 // simplify or a model evaluation, which then throws "canceled" where no caller expects it (a
 // verify --timeout 1e-9 ended in an uncaught exception). Put one around every check() call.
+// Counted per context: a query of another context (the claim tests' own, verify/claim_test.h)
+// is no query of the watched one, whose next simplify an interrupt would cancel ("internal
+// error: canceled", exit 3 and no report, under load in the differential test).
 class QueryInFlight {
  public:
-  QueryInFlight();
+  explicit QueryInFlight(z3::context& ctx);
   ~QueryInFlight();
   QueryInFlight(const QueryInFlight&) = delete;
   QueryInFlight& operator=(const QueryInFlight&) = delete;
+
+ private:
+  Z3_context ctx_;
 };
 
 class SolverWatchdog {

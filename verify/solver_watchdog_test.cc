@@ -17,7 +17,7 @@ TEST(SolverWatchdogTest, AQueryZ3DoesNotStopIsInterruptedAtTheDeadline) {
   s.add(x > 0 && y > 0 && z > 0 && x * x * x + y * y * y == z * z * z);
   SolverWatchdog watchdog(ctx, SolverWatchdog::Clock::now() + std::chrono::milliseconds(200));
   {
-    QueryInFlight in_flight;
+    QueryInFlight in_flight(ctx);
     EXPECT_EQ(s.check(), z3::unknown);
   }
   EXPECT_TRUE(watchdog.fired());
@@ -37,6 +37,25 @@ TEST(SolverWatchdogTest, ARunThatEndsBeforeTheDeadlineIsNotInterrupted) {
   EXPECT_EQ(s.check(), z3::sat);  // and a later query on the context still runs
 }
 
+// A query of another context (the claim tests' own, verify/claim_test.h) is no query of the
+// watched one: interrupting the watched context then cancelled its next simplify, and `arbc
+// verify` ended "internal error: canceled" with no report (drt_campaign under load).
+TEST(SolverWatchdogTest, AQueryOfAnotherContextDoesNotInterruptTheWatchedOne) {
+  z3::context watched, other;
+  z3::solver s(other);
+  z3::expr x = other.int_const("x"), y = other.int_const("y"), z = other.int_const("z");
+  s.add(x > 0 && y > 0 && z > 0 && x * x * x + y * y * y == z * z * z);
+  s.set("timeout", 400u);  // the other context ends by its own timeout
+  SolverWatchdog watchdog(watched, SolverWatchdog::Clock::now() + std::chrono::milliseconds(50));
+  {
+    QueryInFlight in_flight(other);
+    EXPECT_EQ(s.check(), z3::unknown);
+  }
+  EXPECT_FALSE(watchdog.fired());
+  z3::expr a = watched.int_const("a");
+  EXPECT_NO_THROW(z3::expr(a + 0).simplify());  // not cancelled
+}
+
 // A query Z3 4.8.12 does not stop even when interrupted (found by tests/drt: the distance
 // between points built from an int field): the watchdog's last word, on_stuck, is called once the
 // grace is over. In a child process, as the thread inside Z3 cannot be ended; a Z3 that stops by
@@ -54,7 +73,7 @@ TEST(SolverWatchdogDeathTest, AQueryThatIgnoresTheInterruptEndsThroughOnStuck) {
         SolverWatchdog watchdog(
             ctx, SolverWatchdog::Clock::now() + std::chrono::milliseconds(100),
             [] { std::_Exit(7); }, std::chrono::milliseconds(300));
-        QueryInFlight in_flight;
+        QueryInFlight in_flight(ctx);
         std::_Exit(s.check() == z3::unknown ? 7 : 9);
       },
       testing::ExitedWithCode(7), "");

@@ -106,7 +106,12 @@ class Oracle:
             res.timeouts += b.claim == "timeout"
             if b.claim != "internal":  # an internal error still leaves a report to judge by
                 return None
-        report = json.loads(out)
+        try:
+            report = json.loads(out)
+        except json.JSONDecodeError:  # an internal error that left no report: say so, go on
+            res.breaches.append((C.Breach("internal", "arbc verify", f"exit {rc}, no JSON report: "
+                                          f"{err.strip()[-600:]}"), None))
+            return None
         res.verdict = report["verdict"]
         return report
 
