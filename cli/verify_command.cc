@@ -98,10 +98,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
       ->check(CLI::Range(2, 1024))
       ->capture_default_str();
   cli.add_option("--list-bound", a.options.list_bound,
-                 "a rule whose body reads list elements at an index it does not know (`min_by`, "
-                 "`xs[i]`) is proved for lists of at most this many elements (its verdict says "
-                 "so); bodies that read only `len` and constant indexes are proved for every "
-                 "length")
+                 "a rule whose body reads list elements at an index it does not know (`xs[i]`, "
+                 "`==` of lists) is proved for lists of at most this many elements (its verdict "
+                 "says so); bodies that read `len`, constant indexes, `min_by`, `max_by`, "
+                 "`min`/`max` of a list are proved for every length")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   cli.add_option("--counterexamples", a.counterexamples,

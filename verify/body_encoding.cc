@@ -73,6 +73,7 @@ class Encoder {
   Ev best_by(const BodyExpr& e, bool min);
   Ev min_max(const BodyExpr& e, bool min);
   Ev index(const Ev& list, const Ev& i);
+  std::vector<std::pair<const SymValue*, z3::expr>> scanned(const SymValue& list);
   Ev vec_op(const std::string& op, const Ev& a, const Ev& b);
   Ev length(bool dist, const std::vector<Ev>& args, const z3::expr& ok);
 
@@ -193,7 +194,7 @@ Ev Encoder::index(const Ev& list, const Ev& i) {
   // A constant index below the capacity reads an encoded element whatever the length; any other
   // index of a list of unknown length may reach past the capacity.
   z3::expr at = n.simplify();
-  bool known = at.is_numeral() && lua::int_of(at) < static_cast<int64_t>(list.v.items.size());
+  bool known = at.is_numeral() && lua::int_of(at) < static_cast<int64_t>(exact_prefix(list.v));
   if (!known && open_list(list.v)) out_.bounded = true;
   SymValue v = list.v.items.back();
   for (size_t k = list.v.items.size() - 1; k-- > 0;) {
@@ -399,13 +400,12 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
   if (list.unread) return unread();
   if (list.v.kind != K::List || list.v.items.empty()) return bad(e.text + " of an empty literal");
   const BodyExpr& lambda = e.args[1];
-  if (open_list(list.v)) out_.bounded = true;  // every element's key
   z3::expr ok = list.ok && list.v.scalar > 0;
   std::optional<SymValue> best, best_key;
-  for (size_t k = 0; k < list.v.items.size(); ++k) {
+  for (const auto& [item, in] : scanned(list.v)) {
     std::optional<SymValue> saved;
     if (auto it = params_.find(lambda.text); it != params_.end()) saved = it->second;
-    params_.insert_or_assign(lambda.text, list.v.items[k]);
+    params_.insert_or_assign(lambda.text, *item);
     Ev key = eval(lambda.args[0]);
     if (key.unread) return unread();
     if (saved)
@@ -413,49 +413,64 @@ Ev Encoder::best_by(const BodyExpr& e, bool min) {
     else
       params_.erase(lambda.text);
     if (!key.v.numeric()) return bad(e.text + " with a key that is not a number");
-    z3::expr in = list.v.scalar > static_cast<int>(k);
     ok = ok && z3::implies(in, key.ok);
     if (!best) {
-      best = list.v.items[k];
+      best = *item;
       best_key = key.v;
       continue;
     }
     z3::expr better = in && (min ? lua::less(key.v, *best_key) : lua::less(*best_key, key.v));
-    best = merge(better, list.v.items[k], *best);
+    best = merge(better, *item, *best);
     if (!best) return bad("a list whose elements differ in shape");
     best_key = merge(better, key.v, *best_key);
   }
   return {*best, ok};
 }
 
+// The elements a read of every element visits, each with when it is one: the items, then
+// the stand-ins past the capacity of an open list (SymValue::tail), one of the reads they
+// allow (EncodedBody::tail_reads). An open list without them is read exactly only up to the
+// capacity (EncodedBody::bounded).
+std::vector<std::pair<const SymValue*, z3::expr>> Encoder::scanned(const SymValue& list) {
+  std::vector<std::pair<const SymValue*, z3::expr>> out;
+  for (size_t k = 0; k < list.items.size(); ++k)
+    out.emplace_back(&list.items[k], list.scalar > static_cast<int>(k));
+  if (list.scalar.simplify().is_numeral()) return out;  // a literal's length
+  if (list.tail.empty() || exact_prefix(list) < list.items.size()) {
+    out_.bounded = true;
+    return out;
+  }
+  for (size_t j = 0; j < list.tail.size(); ++j)
+    out.emplace_back(&list.tail[j], list.scalar > static_cast<int>(list.items.size() + j));
+  ++out_.tail_reads;
+  return out;
+}
+
 // min / max of numbers, or of one list (none of an empty list): math.min keeps the first
 // argument and takes a later one only if it is less than the kept one (math.max: greater), so
 // with NaNs the result depends on their order, as in Lua.
 Ev Encoder::min_max(const BodyExpr& e, bool min) {
-  std::vector<SymValue> xs;
+  std::vector<std::pair<SymValue, z3::expr>> xs;  // each with when it is one
   z3::expr ok = ctx_.bool_val(true);
-  std::optional<z3::expr> len;
   for (const BodyExpr& a : e.args) {
     Ev x = eval(a);
     if (x.unread) return unread();
     ok = ok && x.ok;
     if (x.v.kind == K::List && e.args.size() == 1) {
-      if (open_list(x.v)) out_.bounded = true;  // every element
-      len = x.v.scalar;
-      xs = x.v.items;
+      ok = ok && x.v.scalar > 0;
+      for (const auto& [item, in] : scanned(x.v)) xs.emplace_back(*item, in);
     } else {
-      xs.push_back(x.v);
+      xs.emplace_back(x.v, ctx_.bool_val(true));
     }
   }
   if (xs.empty()) return bad(e.text + " of an empty literal");
-  for (const SymValue& x : xs)
-    if (!x.numeric()) return bad(e.text + " of values that are not numbers");
-  if (len) ok = ok && *len > 0;
-  SymValue best = xs[0];
+  for (const auto& x : xs)
+    if (!x.first.numeric()) return bad(e.text + " of values that are not numbers");
+  SymValue best = xs[0].first;
   for (size_t k = 1; k < xs.size(); ++k) {
-    z3::expr better = min ? lua::less(xs[k], best) : lua::less(best, xs[k]);
-    if (len) better = better && *len > static_cast<int>(k);
-    best = *merge(better, xs[k], best);  // numbers always merge
+    const SymValue& x = xs[k].first;
+    z3::expr better = xs[k].second && (min ? lua::less(x, best) : lua::less(best, x));
+    best = *merge(better, x, best);  // numbers always merge
   }
   return {best, ok};
 }

@@ -55,10 +55,14 @@ struct EncodedBody {
   std::vector<std::pair<std::string, SymValue>> state;  // the abstracted values, by name
   std::vector<AbstractLength> lengths;                  // with abstract_lengths only
   // The encoding is exact only for lists of at most their capacity: it reads elements at an
-  // index it does not know (min_by, max_by, min, max of a list, `xs[i]`, `+` and `==` of
-  // lists). Without it, a list of any length is encoded exactly: its elements past the
-  // capacity are never read.
+  // index it does not know (`xs[i]`, `+` and `==` of lists; min_by, max_by, min, max of an
+  // open list without stand-ins past its capacity). Without it, a list of any length is
+  // encoded exactly: its elements past the capacity are read only through the stand-ins.
   bool bounded = false;
+  // How many reads scanned a list's stand-ins past its capacity (SymValue::tail): exact only
+  // while all encodings over one message together make no more such reads than a list has
+  // slots (DataQuery counts them).
+  int tail_reads = 0;
 
   explicit EncodedBody(z3::context& ctx) : accepts(ctx.bool_val(false)) {}
 };

@@ -7,6 +7,7 @@
 #include "verify/body_encoding.h"
 #include "verify/lua_number.h"
 #include "verify/nice_model.h"
+#include "verify/tail_slots.h"
 
 namespace arbc::verify {
 
@@ -57,7 +58,9 @@ const SymValue& DataQuery::message(const std::string& source) {
   if (it != messages_.end()) return it->second;
   std::vector<z3::expr> domain, within;
   const model::Port* p = app_.find_port(source);
-  SymValue m = fresh_value(ctx_, *p->type, source, list_bound_, domain, within);
+  int slots = tail_slots(app_, source);
+  tail_budget_.insert_or_assign(source, slots);
+  SymValue m = fresh_value(ctx_, *p->type, source, list_bound_, domain, within, slots);
   for (const z3::expr& d : domain) solver_.add(d);  // list lengths are not negative
   z3::expr all = ctx_.bool_val(true);
   for (const z3::expr& w : within) all = all && w;
@@ -73,6 +76,7 @@ const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   EncodedBody b = encode_body(ctx_, *c.body, message(c.source), c.destination + "/" + c.name,
                               /*abstract_lengths=*/true);
   z3::expr lit = ctx_.bool_const(("accepts!" + c.destination + "/" + c.name).c_str());
+  spend_tail_reads(c.source, b);
   if (b.opaque.empty()) {
     solver_.add(z3::implies(lit, b.accepts));
     // A body exact only for short lists: asking about it assumes the source's lists are short.
@@ -99,6 +103,7 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
       encode_body(ctx_, predicate_body(p), *e.body.emitted,
                   c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()),
                   /*abstract_lengths=*/true);
+  spend_tail_reads(c.source, pe);
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).
   if (pe.opaque.empty()) {
@@ -112,6 +117,18 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
     lengths_.insert(lengths_.end(), pe.lengths.begin(), pe.lengths.end());
   }
   return predicates_.emplace(key, lit).first->second;
+}
+
+// Reads of the stand-ins past the capacity are exact while all encodings over the message
+// together make no more than a list has slots (SymValue::tail); an encoding that would make
+// more assumes the list bound instead (its answers then say so).
+void DataQuery::spend_tail_reads(const std::string& source, EncodedBody& b) {
+  if (!b.opaque.empty() || b.bounded || b.tail_reads == 0) return;
+  int& left = tail_budget_.at(source);
+  if (b.tail_reads <= left)
+    left -= b.tail_reads;
+  else
+    b.bounded = true;
 }
 
 bool DataQuery::bounded(const model::Connection& c, const model::BodyExpr* p, bool negate) {

@@ -98,6 +98,7 @@ class DataQuery {
   const Encoded& encoded(const model::Connection& c);
   const SymValue& message(const std::string& source);
   z3::expr predicate_literal(const model::Connection& c, const model::BodyExpr& p, bool negate);
+  void spend_tail_reads(const std::string& source, EncodedBody& b);
   Answer check(const z3::expr_vector& assumptions);
   void fill_witness(const std::vector<DataSide>& sides, const z3::expr_vector& assumptions,
                     DataWitness& witness);
@@ -115,6 +116,7 @@ class DataQuery {
   std::map<std::string, SymValue> messages_;
   std::map<std::string, z3::expr> within_bound_;  // by source: its list lengths <= the bound
   std::set<unsigned> bounded_predicates_;         // predicate literals (ids) that assume it
+  std::map<std::string, int> tail_budget_;        // by source: scanning reads its lists still allow
   bool bound_used_ = false;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
   std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>

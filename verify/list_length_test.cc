@@ -8,6 +8,7 @@
 #include "core/type.h"
 #include "verify/body_encoding.h"
 #include "verify/lua_number.h"
+#include "verify/tail_slots.h"
 
 namespace arbc::verify {
 namespace {
@@ -21,13 +22,14 @@ struct Encoded {
   std::optional<EncodedBody> body;
 };
 
-// `accept PREDICATE` over a message of type list<{ d: float }> with capacity kCapacity.
-void encode(Encoded& out, const std::string& predicate) {
+// `accept PREDICATE` over a message of type list<{ d: float }> with capacity kCapacity and
+// `slots` stand-ins past it (SymValue::tail).
+void encode(Encoded& out, const std::string& predicate, int slots = 0) {
   std::string err;
   std::optional<model::BodyStmt> s = model::parse_body_stmt("(accept 1 " + predicate + ")", &err);
   ASSERT_TRUE(s) << err;
   TypePtr t = Type::list(Type::record({{"d", Type::scalar(Type::Kind::Float)}}));
-  out.msg = fresh_value(out.ctx, *t, "m", kCapacity, out.domain, out.within);
+  out.msg = fresh_value(out.ctx, *t, "m", kCapacity, out.domain, out.within, slots);
   out.body = encode_body(out.ctx, {*s}, *out.msg, "r");
   ASSERT_EQ(out.body->opaque, "");
 }
@@ -83,6 +85,70 @@ TEST(ListLength, ReadingPastTheCapacityNeedsTheBound) {
     EXPECT_TRUE(e.body->bounded) << p;
     EXPECT_EQ(accepts_with_length(e, kCapacity + 1), z3::unsat) << p;
   }
+}
+
+const char* kMinBelowZero = "(< (field d (call min_by msg (lambda o (field d (param o))))) 0.0)";
+// Every encoded element (the first kCapacity) has d >= 0.
+const char* kItemsNotNegative =
+    "(and (>= (field d (index msg 0)) 0.0) (and (>= (field d (index msg 1)) 0.0) "
+    "(and (>= (field d (index msg 2)) 0.0) (>= (field d (index msg 3)) 0.0))))";
+
+// With stand-ins past the capacity, min_by reads every element of a list of any length: the
+// smallest may be the fifth (issue 38: a rule that needs five elements looked dead by data).
+TEST(ListLength, MinByReadsPastTheCapacityThroughTheStandIns) {
+  Encoded e;
+  encode(e, std::string("(and ") + kMinBelowZero + " " + kItemsNotNegative + ")", 1);
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(e.body->tail_reads, 1);
+  EXPECT_EQ(accepts_with_length(e, kCapacity), z3::unsat);
+  EXPECT_EQ(accepts_with_length(e, kCapacity + 1), z3::sat);
+  EXPECT_EQ(accepts_with_length(e, 1000), z3::sat);
+}
+
+// Two reads need two stand-ins: the smallest and the largest may both lie past the capacity.
+// The witness puts them in order, and the elements past the last repeat it, which changes
+// neither choice.
+TEST(ListLength, EachScanningReadHasAStandInOfItsOwn) {
+  const std::string both =
+      std::string("(and ") + kMinBelowZero +
+      " (and (> (field d (call max_by msg (lambda o (field d (param o))))) "
+      "10.0) " +
+      "(and " + kItemsNotNegative +
+      " (and (<= (field d (index msg 0)) 10.0) (and (<= (field d (index msg 1)) "
+      "10.0) (and (<= (field d (index msg 2)) 10.0) (<= (field d (index msg "
+      "3)) 10.0)))))))";
+  Encoded e;
+  encode(e, both, 2);
+  EXPECT_EQ(e.body->tail_reads, 2);
+  EXPECT_EQ(accepts_with_length(e, kCapacity + 1), z3::unsat);  // one element cannot be both
+  EXPECT_EQ(accepts_with_length(e, kCapacity + 2), z3::sat);
+  z3::solver s(e.ctx);
+  for (const z3::expr& d : e.domain) s.add(d);
+  for (const AcceptTracker& t : e.body->trackers) s.add(t.literal);
+  s.add(e.body->accepts);
+  s.add(e.msg->scalar == lua::int_val(e.ctx, 9));
+  ASSERT_EQ(s.check(), z3::sat);
+  Value m = concrete(s.get_model(), *e.msg);
+  ASSERT_EQ(m.as_list().size(), 9u);
+  double lo = 0, hi = 0;
+  for (const Value& o : m.as_list()) {
+    lo = std::min(lo, o["d"].as_float());
+    hi = std::max(hi, o["d"].as_float());
+  }
+  EXPECT_LT(lo, 0.0);
+  EXPECT_GT(hi, 10.0);
+}
+
+// The scanning reads of a source's rules size its stand-ins; a read inside a lambda runs once
+// per element and is not counted.
+TEST(ListLength, ScanningReadsAreCountedOutsideLambdas) {
+  std::string err;
+  std::optional<model::BodyStmt> s = model::parse_body_stmt(
+      "(accept 1 (< (call min (call max_by msg (lambda o (call min (field d (param o)) "
+      "(call max msg))))) 0.0))",
+      &err);
+  ASSERT_TRUE(s) << err;
+  EXPECT_EQ(scanning_reads({*s}), 2);  // min of one argument and max_by; not the max inside
 }
 
 // A list literal has a known length: indexing it at an unknown index is exact.

@@ -71,6 +71,8 @@ class Simplifier {
     int64_t len = lua::int_of(model_.eval(v.scalar, true));
     solver_.add(v.scalar == lua::int_val(v.scalar.ctx(), len));
     for (size_t k = 0; k < v.items.size() && static_cast<int64_t>(k) < len; ++k) value(v.items[k]);
+    for (size_t j = 0; j < v.tail.size() && static_cast<int64_t>(v.items.size() + j) < len; ++j)
+      value(v.tail[j]);  // the stand-ins past the capacity in the witness (sym_value.h)
   }
 
   const z3::model& model() const { return model_; }

@@ -294,7 +294,8 @@ bool ResourceChecker::replay(const Order& o, const std::vector<Value>& messages,
     if (!*used) {
       *why = "Z3 says '" + rules[s]->name + "' delivers a command that uses '" + res_.name +
              "', but its Lua monitor delivers " + spec_value_text(run.delivered) +
-             ", which does not";
+             ", which does not, for the message " +
+             spec_value_text(messages[static_cast<size_t>(s)]);
       return false;
     }
   }

@@ -15,7 +15,8 @@ const SymValue* SymValue::field(const std::string& name) const {
 }
 
 SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix, int bound,
-                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound) {
+                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound,
+                     int tail_slots) {
   using K = SymValue::Kind;
   switch (t.kind) {
     case Type::Kind::Bool:
@@ -39,7 +40,10 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
       SymValue v(K::List, len);
       for (int i = 0; i < bound; ++i)
         v.items.push_back(fresh_value(ctx, *t.element, prefix + "[" + std::to_string(i) + "]",
-                                      bound, domain, within_bound));
+                                      bound, domain, within_bound, tail_slots));
+      for (int j = 0; j < tail_slots && bound > 0; ++j)
+        v.tail.push_back(fresh_value(ctx, *t.element, prefix + "[tail " + std::to_string(j) + "]",
+                                     bound, domain, within_bound, tail_slots));
       return v;
     }
     case Type::Kind::Record: {
@@ -49,14 +53,16 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
       SymValue v(K::Record, ctx.bool_val(true));
       for (const Field& f : fields) {
         v.names.push_back(f.name);
-        v.items.push_back(
-            fresh_value(ctx, *f.type, prefix + "." + f.name, bound, domain, within_bound));
+        v.items.push_back(fresh_value(ctx, *f.type, prefix + "." + f.name, bound, domain,
+                                      within_bound, tail_slots));
       }
       return v;
     }
   }
   return SymValue(ctx);
 }
+
+size_t exact_prefix(const SymValue& list) { return std::min(list.items.size(), list.exact_items); }
 
 bool open_list(const SymValue& v) {
   if (v.kind == SymValue::Kind::List && !v.scalar.simplify().is_numeral()) return true;
@@ -128,6 +134,8 @@ SymValue fresh_like(z3::context& ctx, const SymValue& v, const std::string& pref
     case K::Record:
       for (size_t i = 0; i < v.items.size(); ++i)
         out.items[i] = fresh_like(ctx, v.items[i], prefix + "." + std::to_string(i));
+      for (size_t j = 0; j < v.tail.size(); ++j)
+        out.tail[j] = fresh_like(ctx, v.tail[j], prefix + ".tail" + std::to_string(j));
       break;
   }
   return out;
@@ -156,6 +164,46 @@ const SymValue* any_element(const SymValue& a, const SymValue& b) {
   return nullptr;
 }
 
+// Whether the list's length is a constant (a literal, or a list built from literals).
+bool closed(const SymValue& list) { return list.scalar.simplify().is_numeral(); }
+
+// `if c then a else b` for two lists: items padded to the larger capacity. Past the capacity
+// of an open list its padding stands in for elements it does not encode, so the merged list
+// is exact only up to that capacity (exact_items), and it keeps stand-ins past the capacity
+// (SymValue::tail) only where both sides agree on where they start.
+std::optional<SymValue> merge_lists(const z3::expr& c, const SymValue& a, const SymValue& b) {
+  SymValue out = a;
+  out.scalar = z3::ite(c, a.scalar, b.scalar);
+  const SymValue* pad = any_element(a, b);
+  size_t cap = std::max(a.items.size(), b.items.size());
+  out.items.clear();
+  for (size_t i = 0; i < cap; ++i) {
+    const SymValue& x = i < a.items.size() ? a.items[i] : *pad;
+    const SymValue& y = i < b.items.size() ? b.items[i] : *pad;
+    std::optional<SymValue> m = merge(c, x, y);
+    if (!m) return std::nullopt;
+    out.items.push_back(std::move(*m));
+  }
+  out.exact_items = std::min(exact_prefix(a), exact_prefix(b));
+  for (const SymValue* side : {&a, &b})
+    if (!closed(*side) && side->items.size() < cap)
+      out.exact_items = std::min(out.exact_items, side->items.size());
+  // A closed list never reaches its tail; an open one without the other's slots loses them.
+  size_t slots = std::max(a.tail.size(), b.tail.size());
+  bool aligned = a.items.size() == b.items.size() && out.exact_items >= cap;
+  for (const SymValue* side : {&a, &b})
+    if (side->tail.size() < slots && !closed(*side)) aligned = false;
+  out.tail.clear();
+  for (size_t j = 0; aligned && j < slots; ++j) {
+    const SymValue& x = j < a.tail.size() ? a.tail[j] : *pad;
+    const SymValue& y = j < b.tail.size() ? b.tail[j] : *pad;
+    std::optional<SymValue> m = merge(c, x, y);
+    if (!m) return std::nullopt;
+    out.tail.push_back(std::move(*m));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymValue& b) {
@@ -169,19 +217,7 @@ std::optional<SymValue> merge(const z3::expr& c, const SymValue& a, const SymVal
   }
   SymValue out = a;
   out.scalar = z3::ite(c, a.scalar, b.scalar);
-  if (a.kind == K::List) {
-    const SymValue* pad = any_element(a, b);
-    size_t cap = std::max(a.items.size(), b.items.size());
-    out.items.clear();
-    for (size_t i = 0; i < cap; ++i) {
-      const SymValue& x = i < a.items.size() ? a.items[i] : *pad;
-      const SymValue& y = i < b.items.size() ? b.items[i] : *pad;
-      std::optional<SymValue> m = merge(c, x, y);
-      if (!m) return std::nullopt;
-      out.items.push_back(std::move(*m));
-    }
-    return out;
-  }
+  if (a.kind == K::List) return merge_lists(c, a, b);
   for (size_t i = 0; i < a.items.size(); ++i) {
     std::optional<SymValue> m = merge(c, a.items[i], b.items[i]);
     if (!m) return std::nullopt;
@@ -253,8 +289,11 @@ Value concrete(const z3::model& m, const SymValue& v) {
       ValueList items;
       for (int64_t i = 0; i < len && i < static_cast<int64_t>(v.items.size()); ++i)
         items.push_back(concrete(m, v.items[static_cast<size_t>(i)]));
-      // Past the capacity (a length no exact encoding bounds): unread, so any element will do.
-      // A witness longer than kMaxWitnessElements is not built (no message carries it).
+      // Past the capacity: the stand-ins in range, then the last element repeated (what the
+      // encoding of SymValue::tail means; without stand-ins nothing exact reads them). A
+      // witness longer than kMaxWitnessElements is not built (no message carries it).
+      for (size_t j = 0; j < v.tail.size() && static_cast<int64_t>(v.items.size() + j) < len; ++j)
+        items.push_back(concrete(m, v.tail[j]));
       Value pad = v.items.empty() ? Value()
                   : items.empty() ? concrete(m, v.items.back())
                                   : items.back();

@@ -6,8 +6,10 @@
 //   record -> its fields (sorted by name, as app values are), list<T> -> a length (an int)
 //   and `capacity` element values: elements at or past the length are unused, and so are elements
 //   past the capacity of a longer list. A message list has capacity N (the list bound) and any
-//   length: a body that reads no element past the capacity is exact for every length, others
-//   assume the length at most N (EncodedBody::bounded).
+//   length: a body that reads no element past the capacity is exact for every length; min_by,
+//   max_by, min and max also scan its `tail` (stand-ins for the elements past the capacity),
+//   which keeps them exact for every length; others assume the length at most N
+//   (EncodedBody::bounded).
 #pragma once
 
 #include <z3++.h>
@@ -28,6 +30,18 @@ struct SymValue {
   z3::expr scalar;                 // Bool/Int/Float/String; List: the length
   std::vector<SymValue> items;     // Vec3: x, y, z; List: elements; Record: fields
   std::vector<std::string> names;  // Record: field names, sorted
+  // List (a message's list of any length): stand-ins for its elements past the capacity. Slot j
+  // is an element iff the length exceeds items.size() + j; the slots in range are a subsequence
+  // of the real elements past the capacity, in order, and the elements after the last slot in
+  // range repeat it. A read that scans every element for one (min_by, max_by, min, max) is exact
+  // over them as long as no more such reads scan the list than it has slots: each read's choice
+  // past the capacity can then be one slot, and a repeated element never changes a choice
+  // (docs/design.md#the-proof). Empty: elements past the capacity are not encoded.
+  std::vector<SymValue> tail;
+  // List: how many leading items are the list's elements at any length (fewer than
+  // items.size() only after merging an open list with a longer one, whose extra items the
+  // shorter list's padding stands in for).
+  size_t exact_items = static_cast<size_t>(-1);
 
   explicit SymValue(z3::context& ctx) : scalar(ctx.bool_val(true)) {}
   SymValue(Kind k, z3::expr s) : kind(k), scalar(std::move(s)) {}
@@ -37,10 +51,15 @@ struct SymValue {
 };
 
 // Fresh constants for a value of type `t` named after `prefix` ("m1.objects"), lists with
-// capacity `bound`. List lengths get 0 <= len, added to `domain`, and len <= bound, added to
-// `within_bound` (assumed only by encodings that need it).
+// capacity `bound` and `tail_slots` stand-ins past it (SymValue::tail). List lengths get
+// 0 <= len, added to `domain`, and len <= bound, added to `within_bound` (assumed only by
+// encodings that need it).
 SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix, int bound,
-                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound);
+                     std::vector<z3::expr>& domain, std::vector<z3::expr>& within_bound,
+                     int tail_slots = 0);
+
+// How many of a list's items are its elements whatever its length (SymValue::exact_items).
+size_t exact_prefix(const SymValue& list);
 
 // Whether v holds a list whose length is not a constant (its elements past the capacity, if
 // any, are not encoded).

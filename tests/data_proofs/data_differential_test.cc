@@ -19,6 +19,7 @@
 #include "runtime/lua_monitor.h"
 #include "verify/body_encoding.h"
 #include "verify/data_query.h"
+#include "verify/tail_slots.h"
 
 namespace arbc::verify {
 namespace {
@@ -421,6 +422,7 @@ TEST(DataDifferential, EncodingAgreesWithLuaMonitors) {
 void add_lengths_below(const SymValue& v, int n, std::vector<z3::expr>& out) {
   if (v.kind == SymValue::Kind::List) out.push_back(v.scalar <= n);
   for (const SymValue& i : v.items) add_lengths_below(i, n, out);
+  for (const SymValue& i : v.tail) add_lengths_below(i, n, out);
 }
 
 // A message the solver finds on unknowns (its circuits, not folded constants: what a proof
@@ -430,19 +432,25 @@ TEST(DataDifferential, MessagesFoundOnUnknownsReplay) {
   z3::context ctx;
   Gen gen(38);
   int replayed = 0;
+  int long_lists = 0;  // rules whose scanning reads were replayed past the capacity
   for (int r = 0; r < 60; ++r) {
     std::unique_ptr<Rule> rule = load_rule(gen.body());
     if (!rule) continue;
     std::vector<z3::expr> domain, within;
-    SymValue m = fresh_value(ctx, message_type(*rule), "m", kBound, domain, within);
+    // The stand-ins past the capacity DataQuery gives the source (tail_slots.h), so that min_by,
+    // max_by, min and max of a list are checked on elements past the capacity too.
+    int slots = std::min(scanning_reads(*rule->conn->body), kMaxTailSlots);
+    SymValue m = fresh_value(ctx, message_type(*rule), "m", kBound, domain, within, slots);
     EncodedBody e = encode_body(ctx, *rule->conn->body, m, "r");
     if (!e.opaque.empty()) continue;
+    bool bounded = e.bounded || e.tail_reads > slots;
     // As DataQuery asks: lists of any length unless the encoding needs the bound, so messages
     // longer than the capacity are replayed too.
-    // (Unbounded ones at most twice the capacity: past it, elements repeat, and the Lua
-    // monitor's memory cap is no subject here.)
-    if (e.bounded) domain.insert(domain.end(), within.begin(), within.end());
-    if (!e.bounded) add_lengths_below(m, 2 * kBound, domain);
+    // (Unbounded ones at most twice the capacity and the stand-ins: past them, elements
+    // repeat, and the Lua monitor's memory cap is no subject here.)
+    if (bounded) domain.insert(domain.end(), within.begin(), within.end());
+    if (!bounded) add_lengths_below(m, 2 * kBound + slots, domain);
+    long_lists += !bounded && slots > 0;
     for (bool accept : {true, false}) {
       z3::solver s(ctx);
       z3::params p(ctx);
@@ -469,6 +477,7 @@ TEST(DataDifferential, MessagesFoundOnUnknownsReplay) {
     }
   }
   EXPECT_GE(replayed, 40);
+  EXPECT_GE(long_lists, 5);
 }
 
 }  // namespace

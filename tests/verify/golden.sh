@@ -75,10 +75,11 @@ golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
 # raised, it is refuted.
 golden list_bound.txt repo 1 tests/verify/list_bound.spec
 golden list_any_length.txt repo 0 tests/verify/list_any_length.spec
-golden list_bound_min_by.txt repo 0 tests/verify/list_bound_min_by.spec
-golden list_bound_min_by.json repo 0 --format json tests/verify/list_bound_min_by.spec
-golden list_bound_min_by.sarif repo 0 --format sarif tests/verify/list_bound_min_by.spec
-golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound_min_by.spec
+golden list_min_by_any_length.txt repo 1 tests/verify/list_min_by_any_length.spec
+golden list_bound_index.txt repo 0 tests/verify/list_bound_index.spec
+golden list_bound_index.json repo 0 --format json tests/verify/list_bound_index.spec
+golden list_bound_index.sarif repo 0 --format sarif tests/verify/list_bound_index.spec
+golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound_index.spec
 # Properties over time whose free-model counterexample the runtime does not show (issue 38
 # item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
 golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec
