@@ -170,7 +170,8 @@ int build_spec(const BuildRequest& a, std::string* app_dir) {
     std::fprintf(stderr, "arbc build: %s has errors; nothing was written\n", spec.c_str());
     return kExitBadInput;
   }
-  const lower::LoweredApp& lowered = *compiled.lowered;
+  // A copy: the proof adds what the runtime must enforce of it (apply_list_bounds).
+  lower::LoweredApp lowered = *compiled.lowered;
   if (std::optional<int> exit = configure_target(*target, a.deploy, lowered.app)) return *exit;
 
   std::string verified = "not verified (--no-verify)";
@@ -178,6 +179,7 @@ int build_spec(const BuildRequest& a, std::string* app_dir) {
     VerifyGate gate = verify_before_writing(lowered.app, spec, &compiled.sources, a.strict);
     if (!gate.pass) return gate.exit_code;
     verified = gate.summary;
+    apply_list_bounds(gate, lowered.app);
     timer.phase("verify");
   }
 

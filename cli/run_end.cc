@@ -106,6 +106,18 @@ bool write_report(const RunEnd& end, const report::RunReportInput& input) {
   return true;
 }
 
+// Messages the proof excluded and the runtime dropped before delivery (bad-value: a list longer
+// than the proof of its rule covers): the run stayed inside the proof, so no failure, but said.
+void excluded_values(const RunEnd& end) {
+  uint64_t n = 0;
+  for (const ConnectionStats& s : end.runtime.stats()) n += s.drops(DropReason::BadValue);
+  if (n == 0) return;
+  std::printf(
+      "runtime checks: %llu %s the proof excluded dropped (bad-value: lists longer than it "
+      "covers; see the trace)\n",
+      static_cast<unsigned long long>(n), n == 1 ? "message" : "messages");
+}
+
 // The runtime checks' lines; a violation makes the run a failure, named in the verdict (what
 // the proof no longer covers, and from when).
 void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
@@ -160,6 +172,7 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     std::fputs(received.c_str(), stdout);
     summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
   }
+  excluded_values(end);
   judge_claims(end, &success, &verdict);
   std::printf("result: %s\n", verdict.c_str());
   report::RunReportInput input = report_input(end, success, verdict, summary);

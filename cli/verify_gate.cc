@@ -56,7 +56,15 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
   }
   gate.pass = true;
   gate.summary = verified_summary(report.ports.size());
+  gate.bounded_rules = report.bounded_rules;
+  gate.list_bound = report.list_bound;
   return gate;
+}
+
+void apply_list_bounds(const VerifyGate& gate, model::App& app) {
+  for (model::Connection& c : app.connections)
+    for (const auto& [destination, name] : gate.bounded_rules)
+      if (c.destination == destination && c.name == name) c.list_bound = gate.list_bound;
 }
 
 }  // namespace arbc::cli

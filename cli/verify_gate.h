@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/app_model.h"
 #include "core/diagnostic.h"
@@ -13,7 +15,15 @@ struct VerifyGate {
   bool pass = false;
   int exit_code = 0;    // when !pass: kExitRefuted, or kExitBadInput for a malformed model
   std::string summary;  // when pass: one line, e.g. "verified: 4 arbitrated ports proved"
+  // Rules (destination, name) proved only for lists of at most list_bound elements
+  // (verify::VerifyReport::bounded_rules): apply_list_bounds writes them into the model.
+  std::vector<std::pair<std::string, std::string>> bounded_rules;
+  int list_bound = 0;
 };
+
+// Sets Connection::list_bound on the rules the gate's proof holds for only up to the list
+// bound, so that app.json carries it and the runtime drops longer lists (bad-value).
+void apply_list_bounds(const VerifyGate& gate, model::App& app);
 
 // Verifies `app`, printing the findings to stderr (with spec lines quoted from `sources`).
 // Warnings alone pass unless `strict`. When it does not pass, `refusal` follows the verdict on

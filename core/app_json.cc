@@ -89,6 +89,16 @@ bool get_duration(const Json& j, const std::string& path, const char* key, Nanos
   return true;
 }
 
+// A connection's list_bound: absent or null is 0 (any length), else a positive integer.
+bool opt_list_bound(const Json& j, const std::string& path, int* out, std::string* err) {
+  if (!j.contains("list_bound") || j["list_bound"].is_null()) return true;
+  const Json& v = j["list_bound"];
+  if (!v.is_number_integer() || v.get<int64_t>() < 1 || v.get<int64_t>() > 1000000)
+    return fail(path + ".list_bound: expected an integer from 1 to 1000000, or null", err);
+  *out = v.get<int>();
+  return true;
+}
+
 bool opt_bool(const Json& j, const std::string& path, const char* key, bool* out,
               std::string* err) {
   if (!j.contains(key)) return true;
@@ -289,6 +299,7 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
          opt_duration(j, p, "trig_interval", &c->trig_interval, err) &&
          opt_duration(j, p, "throttle", &c->throttle, err) &&
+         opt_list_bound(j, p, &c->list_bound, err) &&
          opt_string(j, p, "monitor", &c->monitor, err) &&
          read_digest(j, p, c->monitor, &c->monitor_sha256, err) &&
          read_array(j, p, p + ".", "source_map", false, &c->source_map, read_source_map_entry,

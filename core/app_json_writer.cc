@@ -101,6 +101,7 @@ void write_connection(JsonWriter& w, const Connection& c) {
   }
   write_optional(w, "trig_interval", c.trig_interval);
   write_optional(w, "throttle", c.throttle);
+  if (c.list_bound > 0) w.member("list_bound", c.list_bound);  // absent: any length
   w.member("monitor", c.monitor);
   w.member("monitor_sha256", c.monitor_sha256);
   w.key("source_map");

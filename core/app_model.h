@@ -107,7 +107,12 @@ struct Connection {
   std::optional<Body> body;
   std::optional<Nanos> trig_interval;  // from `every`
   std::optional<Nanos> throttle;       // from `throttle`
-  std::string monitor;                 // Lua file relative to the app directory; empty: none
+  // The proof of what this rule accepts and delivers covers messages whose lists have at most
+  // this many elements (verify's --list-bound, where an answer about the rule rested on it:
+  // docs/checks.md#message-data); the runtime drops a message with a longer list before the
+  // monitor, counted `bad-value`. 0: any length (the proof needed no bound).
+  int list_bound = 0;
+  std::string monitor;  // Lua file relative to the app directory; empty: none
   // SHA-256 of the monitor file as `arbc build` wrote it (64 hex digits); readers of an app
   // directory refuse a monitor whose bytes differ (core/monitor_digests.h). Empty in models
   // built in code, which are not read from a directory.

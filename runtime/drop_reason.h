@@ -20,6 +20,7 @@ enum class DropReason {
   QueueFull,
   BadType,
   LostInTransit,
+  BadValue,
 };
 
 struct DropReasonInfo {
@@ -60,6 +61,9 @@ inline constexpr DropReasonInfo kDropReasons[] = {
      "DDS reported the sample lost before it reached this process: the network lost or "
      "reordered it, or the writer dropped it",
      "#17becf", true},
+    {DropReason::BadValue, "bad-value",
+     "a value the rule's proof excluded (a list longer than the --list-bound its proof needed)",
+     "#bcbd22", true},
 };
 inline constexpr int kDropReasonCount = static_cast<int>(std::size(kDropReasons));
 

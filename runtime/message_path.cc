@@ -1,6 +1,9 @@
 // The message path of docs/design.md#the-message-path: queueing, accept, constraint, throttle,
 // update, delivery (which sets a `by priority` rule's activity event); drops, script failures
 // and quarantine; the PortMonitor calls of a connection.
+#include <algorithm>
+#include <string>
+
 #include "core/instant.h"
 #include "runtime/runtime_internal.h"
 
@@ -99,6 +102,22 @@ void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
   }
 }
 
+namespace {
+
+// The number of elements of the longest list in v, at any depth (0: none).
+size_t longest_list(const Value& v) {
+  size_t n = 0;
+  if (v.is_list()) {
+    n = v.as_list().size();
+    for (const Value& e : v.as_list()) n = std::max(n, longest_list(e));
+  } else if (v.is_record()) {
+    for (const auto& [name, f] : v.as_record()) n = std::max(n, longest_list(f));
+  }
+  return n;
+}
+
+}  // namespace
+
 void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   ++c.stats.arrived;
   c.last_arrival = now();
@@ -106,6 +125,17 @@ void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
     return;
+  }
+  // The proof of this rule covers lists of at most list_bound elements (app.json): a longer
+  // one is not delivered under a proof that excluded it.
+  if (c.list_bound > 0) {
+    size_t n = longest_list(v);
+    if (n > static_cast<size_t>(c.list_bound)) {
+      drop(c, DropReason::BadValue,
+           "a list of " + std::to_string(n) + " elements; the proof covers at most " +
+               std::to_string(c.list_bound) + " (arbc verify --list-bound)");
+      return;
+    }
   }
   if (c.queue.size() >= options_.queue_capacity) {
     drop(c, DropReason::QueueFull);

@@ -285,6 +285,7 @@ bool Runtime::create_connection(size_t i, const std::string& display_name,
   }
   c->destination = dst->second;
   c->throttle = mc.throttle;
+  c->list_bound = mc.list_bound;
   // A rule is selected on its effective guard without the activity event, which equals its
   // constraint whenever its monitor does what app.json says (core/effective_guard.h): so a
   // monitor that does otherwise cannot deliver in a state the proof took to be impossible.

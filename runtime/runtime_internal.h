@@ -92,6 +92,7 @@ struct Runtime::Connection : MonitorHost {
   RingQueue<Queued> queue;
   bool drain_posted = false;
   std::optional<Nanos> throttle;
+  int list_bound = 0;  // model::Connection::list_bound: longer lists are dropped bad-value
   Nanos last_delivery = -kNever;  // none yet: no throttle period runs
   Nanos trig_interval{0};
   Executor::TaskId trig_task = 0;

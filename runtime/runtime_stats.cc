@@ -1,4 +1,5 @@
 // Counters per connection and the table `arbc run` prints at the end.
+#include <algorithm>
 #include <cstdio>
 
 #include "runtime/runtime_internal.h"
@@ -97,8 +98,15 @@ std::string Runtime::connection_table() const {
   char cell[64];
   std::snprintf(cell, sizeof cell, "%-*s", static_cast<int>(width), "connection");
   out += cell;
+  // bad-value (a list longer than the proof covers) is rare: its column only when it happened.
+  std::vector<DropReasonInfo> columns;
+  for (const DropReasonInfo& r : kDropReasons)
+    if (r.reason != DropReason::BadValue ||
+        std::any_of(connections_.begin(), connections_.end(),
+                    [](const auto& c) { return c->stats.drops(DropReason::BadValue) > 0; }))
+      columns.push_back(r);
   out += "  arrived delivered";
-  for (const DropReasonInfo& r : kDropReasons) {
+  for (const DropReasonInfo& r : columns) {
     std::snprintf(cell, sizeof cell, " %s", r.name);
     out += cell;
   }
@@ -110,7 +118,7 @@ std::string Runtime::connection_table() const {
     std::snprintf(cell, sizeof cell, " %8llu %9llu", static_cast<unsigned long long>(s.arrived),
                   static_cast<unsigned long long>(s.delivered));
     out += cell;
-    for (const DropReasonInfo& r : kDropReasons) {
+    for (const DropReasonInfo& r : columns) {
       int w = static_cast<int>(std::string_view(r.name).size());
       std::snprintf(cell, sizeof cell, " %*llu", w,
                     static_cast<unsigned long long>(s.drops(r.reason)));

@@ -271,7 +271,8 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
   Answer a = check(assumptions);
   if (a == Answer::Unsat) {
     for (const DataSide& side : sides)
-      bound_used_ |= bounded(*side.connection, side.emitted_holds, side.negate);
+      if (bounded(*side.connection, side.emitted_holds, side.negate))
+        bounded_rules_.insert(side.connection);
   }
   if (a == Answer::Unsat && core) {
     core->accept_lines.assign(sides.size(), {});

@@ -85,8 +85,10 @@ class DataQuery {
   // the list bound: its body or the predicate reads elements at an index it does not know
   // (EncodedBody::bounded). Else they hold for lists of any length.
   bool bounded(const model::Connection& c, const model::BodyExpr* p = nullptr, bool negate = false);
-  // Whether some unsat answer so far rested on the list bound (the report's assumption).
-  bool bound_used() const { return bound_used_; }
+  // The rules some unsat answer so far rested on the list bound for (the report's assumption;
+  // the runtime drops longer lists into them: model::Connection::list_bound).
+  const std::set<const model::Connection*>& bounded_rules() const { return bounded_rules_; }
+  bool bound_used() const { return !bounded_rules_.empty(); }
   int list_bound() const { return list_bound_; }
 
   std::string unknown_reason() const { return unknown_reason_; }
@@ -117,7 +119,7 @@ class DataQuery {
   std::map<std::string, z3::expr> within_bound_;  // by source: its list lengths <= the bound
   std::set<unsigned> bounded_predicates_;         // predicate literals (ids) that assume it
   std::map<std::string, int> tail_budget_;        // by source: scanning reads its lists still allow
-  bool bound_used_ = false;
+  std::set<const model::Connection*> bounded_rules_;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
   std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>
       predicates_;

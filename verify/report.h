@@ -203,7 +203,12 @@ struct VerifyReport {
   // no data question was asked.
   std::vector<std::string> assumptions;
   std::vector<TemporalResult> temporal;  // properties over time, in spec order
-  Verdict verdict = Verdict::Proved;     // refuted if any error, else unknown if any unknown
+  // The rules (destination, name) whose proofs hold for lists of at most `list_bound` elements
+  // (DataQuery::bounded_rules): `arbc build` records it in app.json (Connection::list_bound),
+  // and the runtime drops longer lists into them.
+  std::vector<std::pair<std::string, std::string>> bounded_rules;
+  int list_bound = 0;
+  Verdict verdict = Verdict::Proved;  // refuted if any error, else unknown if any unknown
   double seconds = 0;
   int solver_queries = 0;
 

@@ -1,5 +1,6 @@
 #include "verify/verify.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "verify/port_checks.h"
@@ -163,6 +164,10 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
   report.solver_queries += data.queries();
   if (data.queries() > 0) {
     // Lists of any length unless some answer rested on the bound (DataQuery::bound_used).
+    for (const model::Connection* c : data.bounded_rules())
+      report.bounded_rules.emplace_back(c->destination, c->name);
+    std::sort(report.bounded_rules.begin(), report.bounded_rules.end());
+    if (data.bound_used()) report.list_bound = options.list_bound;
     if (data.bound_used())
       report.assumptions.push_back("lists in messages have at most " +
                                    std::to_string(options.list_bound) + " elements (--list-bound)");
