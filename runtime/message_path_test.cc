@@ -363,3 +363,49 @@ TEST(MessagePathTest, TrigRunsAtWholeMultiplesOfItsInterval) {
 
 }  // namespace
 }  // namespace arbc
+
+namespace arbc {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::TestApp;
+
+// A rule whose proof holds for lists of at most list_bound elements (app.json's list_bound,
+// docs/checks.md#lists-of-any-length) gets no longer list, at any depth: dropped before its
+// monitor as bad-value, counted, traced with both lengths, shown in the connection table.
+TEST(MessagePathTest, ListsLongerThanTheProofCoversAreDroppedAsBadValue) {
+  TestApp t;
+  t.module("Src", {"out x: list<list<int>>"});
+  t.module("Sink", {"in x: list<list<int>>"});
+  t.connect("c", "Src.x", "Sink.x", "true", "PortMonitor.accept = function(m) return true end\n");
+  t.app.connections.back().list_bound = 2;
+  auto rt = t.start();
+  auto list = [](std::vector<Value> items) { return Value(ValueList(std::move(items))); };
+  Value one(int64_t{1});
+  TestApp::publish_at(*rt, 1.0, "Src", "x", list({list({one, one})}));              // within
+  TestApp::publish_at(*rt, 2.0, "Src", "x", list({list({}), list({}), list({})}));  // 3 at the top
+  TestApp::publish_at(*rt, 3.0, "Src", "x", list({list({one, one, one})}));         // 3 inside
+  rt->advance(5s);
+  ASSERT_EQ(TestApp::sink(*rt).got.size(), 1u);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.arrived, 3u);
+  EXPECT_EQ(s.drops(DropReason::BadValue), 2u);
+  EXPECT_NE(rt->stats_table().find("bad-value"), std::string::npos);
+}
+
+// Without a bound (the proof covers any length) nothing is dropped, and the table has no
+// bad-value column.
+TEST(MessagePathTest, ListsOfAnyLengthPassWithoutABound) {
+  TestApp t;
+  t.module("Src", {"out x: list<int>"});
+  t.module("Sink", {"in x: list<int>"});
+  t.connect("c", "Src.x", "Sink.x", "true", "PortMonitor.accept = function(m) return true end\n");
+  auto rt = t.start();
+  TestApp::publish_at(*rt, 1.0, "Src", "x", Value(ValueList(100, Value(int64_t{1}))));
+  rt->advance(5s);
+  EXPECT_EQ(TestApp::sink(*rt).got.size(), 1u);
+  EXPECT_EQ(rt->stats_table().find("bad-value"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace arbc
