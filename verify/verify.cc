@@ -97,6 +97,28 @@ bool check_temporal(const model::App& app, const VerifyOptions& options, z3::con
 
 }  // namespace
 
+namespace {
+
+// What the data answers assumed, and the rules whose answers rested on the list bound (app.json
+// carries it on them, so that the runtime drops longer lists).
+void data_assumptions(const DataQuery& data, const VerifyOptions& options, VerifyReport& report) {
+  report.solver_queries += data.queries();
+  if (data.queries() == 0) return;
+  // Lists of any length unless some answer rested on the bound (DataQuery::bound_used).
+  for (const model::Connection* c : data.bounded_rules())
+    report.bounded_rules.emplace_back(c->destination, c->name);
+  std::sort(report.bounded_rules.begin(), report.bounded_rules.end());
+  if (data.bound_used()) {
+    report.list_bound = options.list_bound;
+    report.assumptions.push_back("lists in messages have at most " +
+                                 std::to_string(options.list_bound) + " elements (--list-bound)");
+  }
+  report.assumptions.push_back(
+      "monitor state (var, now()) may hold any value earlier messages could leave");
+}
+
+}  // namespace
+
 std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOptions& options,
                                        std::string* err) {
   VerifyReport report;
@@ -161,19 +183,7 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
     refuted |= r.verdict == Verdict::Refuted;
     unknown |= r.verdict == Verdict::Unknown;
   }
-  report.solver_queries += data.queries();
-  if (data.queries() > 0) {
-    // Lists of any length unless some answer rested on the bound (DataQuery::bound_used).
-    for (const model::Connection* c : data.bounded_rules())
-      report.bounded_rules.emplace_back(c->destination, c->name);
-    std::sort(report.bounded_rules.begin(), report.bounded_rules.end());
-    if (data.bound_used()) report.list_bound = options.list_bound;
-    if (data.bound_used())
-      report.assumptions.push_back("lists in messages have at most " +
-                                   std::to_string(options.list_bound) + " elements (--list-bound)");
-    report.assumptions.push_back(
-        "monitor state (var, now()) may hold any value earlier messages could leave");
-  }
+  data_assumptions(data, options, report);
   report.verdict = refuted ? Verdict::Refuted : unknown ? Verdict::Unknown : Verdict::Proved;
   report.seconds = seconds_since(start);
   return report;
