@@ -314,6 +314,10 @@ int run_command(std::span<char*> args) {
   ClaimWatch claims(app, {.mediated = options.mediate ? *options.mediate : options.host,
                           .hosted = options.host,
                           .states_known = !options.unknown_until_fed});
+  if (!claims.load_claims(dir, &error)) {
+    print_errors({error});
+    return kExitBadInput;
+  }
   bool watching = !claims.empty() && a.runtime_checks != "off";
   if (watching) watch_claims(claims, options);
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process

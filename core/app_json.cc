@@ -213,6 +213,19 @@ bool read_digest(const Json& j, const std::string& path, const std::string& moni
               err);
 }
 
+// The claims script's digest: required with the script, as a monitor's is.
+bool read_claims_digest(const Json& j, const std::string& path, App* app, std::string* err) {
+  if (!opt_string(j, path, "claims_script_sha256", &app->claims_script_sha256, err)) return false;
+  const std::string& d = app->claims_script_sha256;
+  if (app->claims_script.empty() ||
+      (d.size() == 64 && d.find_first_not_of("0123456789abcdef") == std::string::npos))
+    return true;
+  return fail(path + ".claims_script_sha256: " +
+                  (d.empty() ? std::string("missing") : "not 64 lower-case hex digits") +
+                  "; the claims script has the SHA-256 `arbc build` recorded (rebuild the app)",
+              err);
+}
+
 bool read_type(const Json& j, const std::string& path, TypePtr* out, std::string* err) {
   std::string text, error;
   if (!get_string(j, path, "type", &text, err)) return false;
@@ -234,7 +247,9 @@ bool read_header(const Json& root, const std::string& r, App* app, std::string* 
                 err);
   return get_string(root, r, "name", &app->name, err) &&
          opt_string(root, r, "description", &app->description, err) &&
-         opt_string(root, r, "spec_file", &app->spec_file, err);
+         opt_string(root, r, "spec_file", &app->spec_file, err) &&
+         opt_string(root, r, "claims_script", &app->claims_script, err) &&
+         read_claims_digest(root, r, app, err);
 }
 
 // A named type of the spec (its name names the type on a DDS wire: dds/wire_types.h).

@@ -231,6 +231,10 @@ std::string to_app_json(const App& app) {
   w.member("name", app.name);
   w.member("description", app.description);
   w.member("spec_file", paths(app.spec_file));
+  if (!app.claims_script.empty()) {  // absent: no claim over delivered values
+    w.member("claims_script", app.claims_script);
+    w.member("claims_script_sha256", app.claims_script_sha256);
+  }
   w.key("types");
   w.begin_array();
   for (const NamedType& t : app.types) {

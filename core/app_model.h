@@ -245,6 +245,9 @@ struct App {
   std::vector<Assumption> assumptions;
   std::vector<SourceRate> rates;  // at most one per source port
   std::vector<Resource> resources;
+  // The script of the proof's claims over delivered values (core/data_claims.h), relative to
+  // the app directory, and the SHA-256 of its bytes; empty: the app has none.
+  std::string claims_script, claims_script_sha256;
 
   const Module* find_module(std::string_view name) const;
   const Port* find_port(std::string_view qualified) const;  // "Module.port"

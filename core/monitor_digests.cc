@@ -20,8 +20,33 @@ bool monitor_matches_digest(const Connection& c, const std::string& path, std::s
   return false;
 }
 
+bool read_claims_script(const App& app, const std::string& dir, std::string* text,
+                        std::string* err) {
+  text->clear();
+  if (app.claims_script.empty()) return true;
+  std::string path = (std::filesystem::path(dir) / app.claims_script).string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in || !std::filesystem::is_regular_file(path)) {
+    *err = path +
+           ": app.json names this claims script, but it cannot be read (rebuild the app "
+           "with `arbc build`)";
+    return false;
+  }
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  *text = bytes.str();
+  std::string actual = sha256_hex(*text);
+  if (app.claims_script_sha256.empty() || actual == app.claims_script_sha256) return true;
+  *err = path + ": this claims script is not the one `arbc build` wrote (its SHA-256 is " + actual +
+         ", app.json records " + app.claims_script_sha256 +
+         "); it is generated: change the spec and rebuild the app with `arbc build`";
+  return false;
+}
+
 std::vector<std::string> check_monitor_files(const App& app, const std::string& dir) {
   std::vector<std::string> errors;
+  std::string claims, claims_error;
+  if (!read_claims_script(app, dir, &claims, &claims_error)) errors.push_back(claims_error);
   for (const Connection& c : app.connections) {
     if (c.monitor.empty()) continue;
     std::string path = (std::filesystem::path(dir) / c.monitor).string();

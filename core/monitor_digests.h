@@ -18,6 +18,12 @@ namespace arbc::model {
 bool monitor_matches_digest(const Connection& c, const std::string& path, std::string_view bytes,
                             std::string* err);
 
+// Reads the claims script `app` names (App::claims_script) from the app directory `dir` into
+// *text and checks its digest; false (and *err) when it is missing, unreadable or changed. An
+// app without one gives an empty *text.
+bool read_claims_script(const App& app, const std::string& dir, std::string* text,
+                        std::string* err);
+
 // Reads every monitor file `app` names, relative to the app directory `dir`, and checks each
 // against its digest. Returns one message per missing, unreadable or changed file.
 std::vector<std::string> check_monitor_files(const App& app, const std::string& dir);

@@ -156,6 +156,7 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   RunOptions options;
   options.trace_records = &out->records;
   ClaimWatch claims(run_app, {.test = true});
+  if (watch && !claims.load_claims(app_dir, err)) return false;
   if (watch && !claims.empty()) {
     options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
     options.on_start = [&claims](Nanos t) { claims.start(t); };

@@ -6,6 +6,7 @@
 #include "core/duration_literal.h"
 #include "core/instant.h"
 #include "core/join.h"
+#include "core/monitor_digests.h"
 
 namespace arbc {
 
@@ -51,6 +52,17 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
                      [this](const std::string& claim, Nanos t, const std::string& what) {
                        violated(claim, t, what, false);
                      });
+  delivered_ = std::make_unique<DeliveryWatch>(app, nullptr, boxes_);
+}
+
+bool ClaimWatch::load_claims(const std::string& app_dir, std::string* err) {
+  std::string text;
+  if (!model::read_claims_script(app_, app_dir, &text, err)) return false;
+  if (text.empty()) return true;
+  data_claims_ = DataClaims::load(app_, text, app_.claims_script, err);
+  if (!data_claims_) return false;
+  delivered_ = std::make_unique<DeliveryWatch>(app_, data_claims_.get(), boxes_);
+  return true;
 }
 
 void ClaimWatch::start(Nanos t) {
@@ -61,12 +73,14 @@ void ClaimWatch::start(Nanos t) {
 bool ClaimWatch::empty() const { return size() == 0; }
 
 size_t ClaimWatch::size() const {
-  return decisions_->size() + properties_.size() + assumed_.size() + rates_.size() +
-         (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
+  return decisions_->size() + delivered_->watched().size() + properties_.size() + assumed_.size() +
+         rates_.size() + (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
 }
 
 std::vector<std::string> ClaimWatch::watched() const {
   std::vector<std::string> out = decisions_->claims();
+  std::vector<std::string> delivered = delivered_->watched();
+  out.insert(out.end(), delivered.begin(), delivered.end());
   out.insert(out.end(), property_text_.begin(), property_text_.end());
   if (decides_) {
     for (const model::ExclusiveGroup& g : app_.exclusive_groups)
@@ -104,6 +118,7 @@ void ClaimWatch::breach_lines(size_t from, Nanos t, Trace& trace) const {
 
 void ClaimWatch::observe(const TraceRecord& r) {
   rate_gaps(r.t);
+  delivered_->before(r);
   const std::string* port = nullptr;  // the arbitrated port the record is about, if any
   if (r.kind == TraceKind::Publish) {
     for (Rate& rate : rates_) {
@@ -115,7 +130,10 @@ void ClaimWatch::observe(const TraceRecord& r) {
     }
   } else if (r.kind == TraceKind::Event) {
     auto box = boxes_.find(r.port);
-    if (box != boxes_.end()) box->second.apply(r), port = &box->first;
+    if (box != boxes_.end()) {
+      box->second.apply(r), port = &box->first;
+      delivered_->after(r, box->first);
+    }
   } else if (r.kind == TraceKind::Deliver ||
              (r.kind == TraceKind::Drop && r.reason != DropReason::Feed)) {  // feeds: no rule
     auto rule = rule_port_.find(r.connection);
@@ -126,6 +144,7 @@ void ClaimWatch::observe(const TraceRecord& r) {
       decisions_->decision(r, state);
       for (Assumed& s : assumed_)
         if (s.a->port == rule->second) assumption(s, rule->second, r, state);
+      if (r.kind == TraceKind::Deliver) delivered(r, rule->second);
     }
   }
   // A property reads only its port's events, deliveries and drops (runtime/property_watch.h).
@@ -136,6 +155,12 @@ void ClaimWatch::observe(const TraceRecord& r) {
     properties_[i]->observe(r);
     property_breached(i);
   }
+}
+
+void ClaimWatch::delivered(const TraceRecord& r, const std::string& port) {
+  std::vector<DeliveryWatch::Breach> breaches;
+  delivered_->delivered(r, port, &breaches);
+  for (DeliveryWatch::Breach& b : breaches) violated(b.claim, r.t, std::move(b.what), false);
 }
 
 void ClaimWatch::property_breached(size_t i) {

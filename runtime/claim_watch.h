@@ -5,6 +5,8 @@
 //   - each property over time of the app (runtime/property_watch.h): a declared property is a
 //     claim (build refuses one the proof refutes), so a breach means the run left what was
 //     proved;
+//   - the claims about delivered values: asserts over `emitted` and resources
+//     (runtime/delivery_watch.h), once load_claims() has read the claims script;
 //   - the assumptions the proofs rest on, at every decision of a rule, in the state of the
 //     rule's port: `exclusive` groups, `invariant`s, environment assumptions (`assume ...`),
 //     and source rates (`given M.p every D`: the source published at least every D from the
@@ -25,7 +27,9 @@
 
 #include "core/app_model.h"
 #include "core/instant.h"
+#include "runtime/data_claims.h"
 #include "runtime/decision_watch.h"
+#include "runtime/delivery_watch.h"
 #include "runtime/property_watch.h"
 #include "runtime/trace.h"
 #include "runtime/trace_container.h"
@@ -57,6 +61,9 @@ class ClaimWatch {
   explicit ClaimWatch(const model::App& app) : ClaimWatch(app, Scope{}) {}
   ClaimWatch(const model::App& app, const Scope& scope);
 
+  // Reads the app directory's claims script (App::claims_script), so that asserts over data
+  // and resources with `when` are watched too; false (and *err) when it does not load.
+  bool load_claims(const std::string& app_dir, std::string* err);
   // Whether the app states anything to watch (a run without claims pays nothing).
   bool empty() const;
   // How many claims and assumptions it watches, and what each is, as a violation names it
@@ -107,10 +114,13 @@ class ClaimWatch {
   void breach_lines(size_t from, Nanos t, Trace& trace) const;
   void rate_broken(Rate& rate, Nanos deadline, Nanos t);
   void property_breached(size_t i);
+  void delivered(const TraceRecord& r, const std::string& port);
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
-  std::optional<DecisionWatch> decisions_;  // exclusivity and asserts at each decision
+  std::optional<DecisionWatch> decisions_;    // exclusivity and asserts at each decision
+  std::unique_ptr<DataClaims> data_claims_;   // load_claims()'s
+  std::unique_ptr<DeliveryWatch> delivered_;  // asserts over data, resources
   bool decides_ = false;  // some arbitrated port is mediated here: groups and invariants count
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;

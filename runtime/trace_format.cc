@@ -200,11 +200,13 @@ void fill_trace_record(const TraceLine& line, TraceRecord* r) {
   r->text.assign(line.text);
   r->callback.assign(line.callback);
   r->count = line.count;
+  r->value = line.value;
 }
 
 TraceRecord to_trace_record(const TraceLine& line) {
   TraceRecord r;
   fill_trace_record(line, &r);
+  r.value = nullptr;  // the line's value lives only as long as the line
   return r;
 }
 

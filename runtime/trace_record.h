@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/instant.h"
+#include "core/value.h"
 #include "runtime/drop_reason.h"
 
 namespace arbc {
@@ -42,6 +43,9 @@ struct TraceRecord {
   std::string text;      // Drop: detail; Error, Quarantine, Log, PluginError: message
   std::string callback;  // PluginError: the callback that threw, e.g. "tick"
   uint64_t count = 0;    // Pending: messages left queued
+  // Deliver, Publish: the value, only while a Trace::Watch reads the record (the runtime
+  // checks' claims over delivered values); null in records kept after that.
+  const Value* value = nullptr;
 };
 
 }  // namespace arbc

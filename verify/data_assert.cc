@@ -11,7 +11,8 @@ namespace {
 
 // Why --counterexamples writes no test for a refuted assert over data.
 constexpr const char* kNotJudged =
-    "an assert over `emitted` is not judged on a test's run yet (docs/testing.md#claims)";
+    "--counterexamples does not write a test for an assert over `emitted` yet; a run and a "
+    "test check it on each delivery (docs/runtime.md#runtime-checks)";
 
 Finding assert_finding(const PortScope& scope, const model::Assertion& a) {
   Finding f;

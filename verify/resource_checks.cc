@@ -313,8 +313,9 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
   f.message = pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name +
               "' (two messages, one decision after the other in one event state)";
   f.not_replayable =
-      "a test cannot hold two ports' event states still between the two decisions, and a "
-      "run does not watch resources yet (docs/testing.md#claims)";
+      "a test cannot hold two ports' event states still between the two decisions; a run "
+      "that delivers both in one state is reported by its runtime checks "
+      "(docs/runtime.md#runtime-checks)";
   f.notes.push_back({"in the event state (fewest events present): present: " +
                          (o.state.empty() ? std::string("none") : join(o.state)),
                      {}});

@@ -4,6 +4,7 @@
 #include <optional>
 #include <thread>
 
+#include "compiler/codegen/claims_writer.h"
 #include "compiler/codegen/monitor_writer.h"
 #include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/lowered_app.h"
@@ -94,6 +95,20 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
     // Readers of the app directory refuse a monitor whose bytes differ (docs/app-json.md).
     c.monitor_sha256 = std::move(g.sha256);
     monitors.push_back({c.monitor, std::move(g.text.text)});
+  }
+  // The claims over delivered values the runtime checks on each delivery (claims_writer.h).
+  if (std::optional<std::string> claims = write_claims(lowered)) {
+    std::string lua_error;
+    if (!frontend::LuaSyntaxChecker().check(*claims, kClaimsScript, &lua_error)) {
+      Diagnostic d;
+      d.id = "codegen";
+      d.message = "internal error: the claims script generated is not valid Lua (" + lua_error +
+                  "); please report this with the spec";
+      result.diagnostics.push_back(std::move(d));
+    }
+    app.claims_script = kClaimsScript;
+    app.claims_script_sha256 = sha256_hex(*claims);
+    monitors.push_back({kClaimsScript, std::move(*claims)});
   }
   result.files.push_back({"app.json", model::to_app_json(app)});
   for (OutputFile& f : monitors) result.files.push_back(std::move(f));

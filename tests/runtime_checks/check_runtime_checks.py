@@ -191,6 +191,62 @@ def case_assert_broken(arbc):
            "Hand.cmd (events present: e_ready)" in out, "the assert's breach is not named", out, err)
 
 
+
+DOUBLED = """app doubled "an assert over data the rule does not keep: refuted, run anyway";
+module Sensor { out v: float; }
+module Motor { in cmd: float; }
+arbitrate Motor.cmd { pass: from Sensor.v { emit v * 2.0; } }
+assert Motor.cmd: pass -> emitted < 10.0;
+"""
+
+
+def case_data_assert_broken(arbc):
+    # Asserts over `emitted` are checked on each delivery by the claims script arbc build wrote
+    # from the IR the proof encodes (runtime/data_claims.h).
+    code, out, err = run(arbc, DOUBLED, [
+        '{"t": 0, "port": "Sensor.v", "value": 1.0}',
+        '{"t": 0.1, "port": "Sensor.v", "value": 6.0}'], "--no-verify")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("100ms  assert Motor.cmd: pass -> (over `emitted`, line 5): 'pass' delivered 12.0 "
+           "into Motor.cmd at 100ms, for which it is false" in out,
+           "the assert over data is not said broken", out, err)
+    code, out, err = run(arbc, DOUBLED, ['{"t": 0, "port": "Sensor.v", "value": 4.5}'],
+                         "--no-verify")
+    expect(code == 0 and "none broken" in out, f"exit {code} on a value the assert allows",
+           out, err)
+
+
+SHARED = """app shared "one arm, two ports, nothing keeps them apart: refuted, run anyway";
+module Planner { out a: int; out b: int; }
+module Arm { out status: list<string>; }
+module Grip { in cmd: int; }
+module Rake { in cmd: int; }
+events from Arm.status { e_busy = "busy" } lifetime 10s;
+arbitrate Grip.cmd { grip: from Planner.a when not e_busy; }
+arbitrate Rake.cmd { rake: from Planner.b; }
+resource arm { Grip.cmd, Rake.cmd } when emitted > 0;
+"""
+
+
+def case_resource_broken(arbc):
+    # Two commands that use the arm, into both ports, in one event state.
+    code, out, err = run(arbc, SHARED, [
+        '{"t": 0.1, "port": "Planner.a", "value": 1}',
+        '{"t": 0.2, "port": "Planner.b", "value": 2}'], "--no-verify")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("200ms  resource arm: 'grip' into Grip.cmd at 100ms and 'rake' into Rake.cmd at 200ms "
+           "both delivered a command that uses it (1, 2) in one event state" in out,
+           "the resource is not said broken", out, err)
+    # A command its `when` says does not use it, or an event of its ports set in between (the
+    # state changed: the proof's pairs are of one state), breaks nothing.
+    for inputs in (['{"t": 0.1, "port": "Planner.a", "value": 1}',
+                    '{"t": 0.2, "port": "Planner.b", "value": 0}'],
+                   ['{"t": 0.1, "port": "Planner.a", "value": 1}',
+                    '{"t": 0.15, "port": "Arm.status", "value": ["busy"]}',
+                    '{"t": 0.2, "port": "Planner.b", "value": 2}']):
+        code, out, err = run(arbc, SHARED, inputs, "--no-verify")
+        expect(code == 0 and "none broken" in out, f"exit {code} on {inputs}", out, err)
+
 def case_arbc_test_watches(arbc):
     # `arbc test` checks the same claims and assumptions on each test's run: a test that gives
     # both flags of the exclusive group leaves the proof, and fails unless told otherwise.
