@@ -38,7 +38,9 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
   for (const model::TemporalProperty& p : app.temporal) {
     if (!here(p.port)) continue;
     properties_of_port_[p.port].push_back(properties_.size());
-    properties_.push_back(std::make_unique<PropertyWatch>(p, rules_into(app, p.port)));
+    auto box = boxes_.find(p.port);  // the same container for the checks and the properties
+    properties_.push_back(std::make_unique<PropertyWatch>(
+        p, rules_into(app, p.port), box == boxes_.end() ? nullptr : &box->second));
     property_text_.push_back(model::temporal_property_text(p));
     property_broken_.push_back(false);
   }
@@ -131,6 +133,8 @@ void ClaimWatch::observe(const TraceRecord& r) {
   } else if (r.kind == TraceKind::Event) {
     auto box = boxes_.find(r.port);
     if (box != boxes_.end()) {
+      if (auto props = properties_of_port_.find(r.port); props != properties_of_port_.end())
+        for (size_t i : props->second) properties_[i]->before_event(r);
       box->second.apply(r), port = &box->first;
       delivered_->after(r, box->first);
     }

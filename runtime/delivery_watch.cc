@@ -64,13 +64,17 @@ void DeliveryWatch::before(const TraceRecord& r) {
   for (Watched& w : resources_)
     if (w.last && !w.last->settled && !(r.kind == TraceKind::Event && r.t == w.last->t))
       settle(w, w.last->t);
-  if (r.kind == TraceKind::Event && watches_port(r.port))
-    present_before_ = present_in(boxes_, r.port, r.t);
+  if (r.kind == TraceKind::Event && watches_port(r.port)) was_present_ = present(r, r.port);
+}
+
+bool DeliveryWatch::present(const TraceRecord& r, const std::string& port) const {
+  auto it = boxes_.find(port);
+  return it != boxes_.end() && it->second.present_at(r.event, r.t);
 }
 
 void DeliveryWatch::after(const TraceRecord& r, const std::string& port) {
   if (r.kind != TraceKind::Event || !watches_port(port)) return;
-  if (present_in(boxes_, port, r.t) == present_before_) return;  // a refresh changes nothing
+  if (present(r, port) == was_present_) return;  // a refresh, or an expiry's late record
   for (Watched& w : resources_)
     if (std::find(w.r->ports.begin(), w.r->ports.end(), port) != w.r->ports.end()) ++w.changes;
 }
@@ -102,13 +106,14 @@ bool DeliveryWatch::uses(const Watched& w, const Value* v) {
 
 void DeliveryWatch::delivered(const TraceRecord& r, const std::string& port,
                               std::vector<Breach>* out) {
-  std::string at = " into " + port + " at " + duration_literal(r.t);
+  // Texts only for a breach: this runs on every delivery (bench/figures/runtime_checks.sh).
+  auto at = [&] { return " into " + port + " at " + duration_literal(r.t); };
   for (const Assert& a : asserts_) {
     if (a.port != port || a.rule != r.connection || !r.value) continue;
     std::string why;
     DataClaims::Outcome o = claims_->evaluate(a.claim, *r.value, &why);
     if (o == DataClaims::Outcome::Holds) continue;
-    out->push_back({a.text, "'" + a.rule + "' delivered " + value_text(r.value) + at +
+    out->push_back({a.text, "'" + a.rule + "' delivered " + value_text(r.value) + at() +
                                 (o == DataClaims::Outcome::Fails ? ", for which it is false"
                                                                  : ", for which " + why)});
   }
@@ -116,13 +121,14 @@ void DeliveryWatch::delivered(const TraceRecord& r, const std::string& port,
     if (std::find(w.r->ports.begin(), w.r->ports.end(), port) == w.r->ports.end()) continue;
     if (!uses(w, r.value)) continue;
     if (w.last && w.last->port != port && same_state(w, r.t))
-      out->push_back({"resource " + w.r->name,
-                      "'" + w.last->rule + "' into " + w.last->port + " at " +
-                          duration_literal(w.last->t) + " and '" + r.connection + "'" + at +
-                          " both delivered a command that uses it (" + w.last->value + ", " +
-                          value_text(r.value) + ") in one event state, which no event of its " +
-                          "ports changed in between"});
-    w.last = Use{port, r.connection, value_text(r.value), r.t, false, 0, {}};
+      out->push_back(
+          {"resource " + w.r->name,
+           "'" + w.last->rule + "' into " + w.last->port + " at " + duration_literal(w.last->t) +
+               " and '" + r.connection + "'" + at() + " both delivered a command that uses it (" +
+               value_text(w.last->value ? &*w.last->value : nullptr) + ", " + value_text(r.value) +
+               ") in one event state, which no event of its " + "ports changed in between"});
+    w.last = Use{port, r.connection, std::nullopt, r.t, false, 0, {}};
+    if (r.value) w.last->value = *r.value;
   }
 }
 

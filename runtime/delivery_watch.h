@@ -51,7 +51,8 @@ class DeliveryWatch {
     std::string port, rule, text;
   };
   struct Use {  // the last delivery that used a resource
-    std::string port, rule, value;
+    std::string port, rule;
+    std::optional<Value> value;
     Nanos t{0};
     bool settled = false;                      // its effects applied: the state it left is known
     uint64_t changes = 0;                      // the resource's changes count then
@@ -73,7 +74,8 @@ class DeliveryWatch {
   std::vector<Assert> asserts_;
   std::vector<Watched> resources_;
   std::set<std::string> resource_ports_;
-  std::set<std::string> present_before_;  // before(): the port's events before the record
+  bool present(const TraceRecord& r, const std::string& port) const;  // r's event, in port
+  bool was_present_ = false;  // before(): the record's event, before it
 };
 
 }  // namespace arbc

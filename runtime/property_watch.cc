@@ -21,8 +21,14 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
   return out;
 }
 
-PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules)
-    : p_(std::move(p)), rules_(std::move(port_rules)) {}
+PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules,
+                             const TraceContainer* shared)
+    : p_(std::move(p)), rules_(std::move(port_rules)), shared_(shared) {}
+
+void PropertyWatch::before_event(const TraceRecord& r) {
+  if (p_.kind == Kind::Response && !p_.event.empty() && r.event == p_.event)
+    was_present_ = box().present_at(p_.event, r.t);
+}
 
 void PropertyWatch::broken(Nanos from, Nanos t, std::string what) {
   if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
@@ -40,18 +46,18 @@ void PropertyWatch::observe(const TraceRecord& r) {
 
 // An event record of the port; for a response triggered by an event, its becoming present.
 void PropertyWatch::container(const TraceRecord& r) {
-  bool was = p_.kind == Kind::Response && !p_.event.empty() && box_.present(r.t).count(p_.event);
-  box_.apply(r);
+  if (!shared_) before_event(r), own_.apply(r);
   if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
   close_windows_before(r.t);
-  if (!was && box_.present(r.t).count(p_.event)) pending_.push_back({r.t, later(r.t, p_.window)});
+  if (!was_present_ && box().present_at(p_.event, r.t))
+    pending_.push_back({r.t, later(r.t, p_.window)});
 }
 
 void PropertyWatch::decision(const TraceRecord& r) {
   if (p_.kind == Kind::Response) {
     close_windows_before(r.t);
     if (breach_) return;
-    respond(r, box_.present(r.t));
+    respond(r, box().present(r.t));
     bool trigger = p_.event.empty() && r.kind == TraceKind::Deliver && r.connection == p_.other;
     if (trigger) pending_.push_back({r.t, later(r.t, p_.window)});
     return;
@@ -73,7 +79,7 @@ void PropertyWatch::delivery(const TraceRecord& r) {
                                     at(it->second));
     }
   }
-  if (p_.kind == Kind::Absence && who == p_.rule && box_.present(t).count(p_.event))
+  if (p_.kind == Kind::Absence && who == p_.rule && box().present(t).count(p_.event))
     broken(t, t, "'" + who + "' delivered at " + at(t) + " with " + p_.event + " present");
   if (p_.kind == Kind::Precedence && who == p_.other) armed_ = true;
   if (p_.kind == Kind::Precedence && who == p_.rule) {

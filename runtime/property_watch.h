@@ -34,7 +34,14 @@ class PropertyWatch {
  public:
   // `port_rules`: the names of the rules into p.port (a response answered by the port, and the
   // decisions whose state a response's `while` reads).
-  PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules);
+  // `shared`: the port's container kept by the caller, who applies each of its records after
+  // before_event(r) and before observe(r) (ClaimWatch, whose checks read the same container:
+  // one container per port instead of one per property); null: the watch keeps its own.
+  PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules,
+                const TraceContainer* shared = nullptr);
+
+  // With a shared container: an event record of the port, before the caller applies it.
+  void before_event(const TraceRecord& r);
 
   // One record of the run, in order. Once broken, later records change nothing.
   void observe(const TraceRecord& r);
@@ -68,7 +75,10 @@ class PropertyWatch {
 
   model::TemporalProperty p_;
   std::set<std::string> rules_;
-  TraceContainer box_;                    // the port's container
+  const TraceContainer& box() const { return shared_ ? *shared_ : own_; }
+  TraceContainer own_;  // the port's container, unless shared
+  const TraceContainer* shared_ = nullptr;
+  bool was_present_ = false;              // before_event(): a response's event, before it
   std::map<std::string, Nanos> last_;     // rule -> its last delivery
   bool armed_ = false;                    // precedence
   std::optional<std::string> last_rule_;  // stability

@@ -20,6 +20,14 @@ void TraceContainer::apply(const TraceRecord& r) {
   cached_ = false;
 }
 
+bool TraceContainer::present_at(std::string_view event, Nanos t) const {
+  auto it = entries_.find(event);
+  if (it == entries_.end()) return false;
+  for (const auto& [owner, expiry] : it->second)
+    if (t < expiry) return true;
+  return false;
+}
+
 const std::set<std::string>& TraceContainer::present(Nanos t) const {
   if (cached_ && t >= cached_from_ && t < cached_until_) return present_;
   present_.clear();

@@ -21,6 +21,8 @@ class TraceContainer {
   void apply(const TraceRecord& r);
   // The events present at t; valid until the next apply() or present() call.
   const std::set<std::string>& present(Nanos t) const;
+  // Whether `event` alone is present at t (no set built: cheap on every record).
+  bool present_at(std::string_view event, Nanos t) const;
 
  private:
   using Owners = std::map<std::string, Nanos, std::less<>>;  // owner -> expiry (kNever: none)
