@@ -283,6 +283,7 @@ bool read_event(const Json& j, const std::string& p, Event* e, std::string* err)
   return get_string(j, p, "name", &e->name, err) &&
          opt_duration(j, p, "lifetime", &e->lifetime, err) &&
          opt_string(j, p, "source", &e->source, err) && opt_string(j, p, "flag", &e->flag, err) &&
+         opt_duration(j, p, "fail_open_after", &e->fail_open_after, err) &&
          read_location(j, p, &e->loc, err);
 }
 

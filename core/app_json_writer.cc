@@ -258,6 +258,7 @@ std::string to_app_json(const App& app) {
     w.member("source", e.source);
     if (e.predicate) w.member("predicate", body_expr_text(*e.predicate));
     if (!e.flag.empty()) w.member("flag", e.flag);
+    if (e.fail_open_after) write_optional(w, "fail_open_after", e.fail_open_after);
     write_location(w, e.loc);
     w.end_object();
   }

@@ -69,6 +69,10 @@ struct Event {
   // sets it ("flag" for f, "e" for e). Empty for every other event. Stand-in sources publish
   // these, so a `--stub` run reaches the feeds (docs/cli.md, `--stub`).
   std::string flag = "";
+  // `otherwise absent after D` (docs/language.md#a-feed-that-may-fail-open): after a start, the
+  // event counts as absent once its feed has been silent for D, instead of staying unknown
+  // until the feed speaks (runtime/unknown_events.cc). nullopt: unknown until then.
+  std::optional<Nanos> fail_open_after = std::nullopt;
 };
 
 // One line of a generated monitor and the spec line it comes from, so a script error at

@@ -34,6 +34,9 @@ constexpr CheckId kIds[] = {
     {"empty-spec", kCheck, "the file declares nothing"},
     {"event-in-expression", kCheck, "an event read in a value expression"},
     {"exclusive", kVerify, "two rules of one arbitrated port can be selected in the same state"},
+    {"fail-open", kCheck,
+     "`otherwise WORD after D` on a feed, with a word other than `absent` (the only one a feed's "
+     "silence can mean)"},
     {"fan-in", kCheck, "two sources into a port that is not arbitrated"},
     {"hold-missing", kCheck, "a rule of a `by priority` port other than the lowest has no `hold`"},
     {"hold-on-lowest", kCheck, "the lowest rule of a `by priority` port has a `hold`"},

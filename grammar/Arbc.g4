@@ -45,9 +45,13 @@ constDecl        : 'const' ID '=' expr ';' ;
 moduleDecl       : 'module' ID STRING? '{' portDecl* '}' ;
 portDecl         : direction=('in' | 'out') ID ':' typeExpr ';' ;
 eventDecl        : 'event' ID (',' ID)* ('lifetime' duration)? ';' ;
-derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? ';' ;
+derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? failOpen? ';' ;
 statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* ','? '}'
-                   ('lifetime' duration)? ';' ;
+                   ('lifetime' duration)? failOpen? ';' ;
+// A feed that may never speak (docs/language.md#a-feed-that-may-fail-open): after a start, its
+// events count as absent once it has been silent this long. The word is `absent` (sema checks
+// it: no new keyword, so no name users chose becomes one).
+failOpen         : 'otherwise' ID 'after' duration ;
 statusEntry      : ID ('=' STRING)? ;
 exclusiveDecl    : 'exclusive' '{' ID (',' ID)* ','? '}' ';' ;
 invariantDecl    : 'invariant' expr ';' ;

@@ -306,6 +306,7 @@ class Runtime {
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
   Nanos start_time_{0};
+  std::set<std::string> failed_open_;  // events taken as absent after their feed's silence
   bool started_ = false, shut_down_ = false;
   BusyMarker busy_;
   std::unique_ptr<SavedMemory> memory_;  // read by create, applied (and dropped) by start

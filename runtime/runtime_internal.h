@@ -108,7 +108,9 @@ struct Runtime::Connection : MonitorHost {
   struct UnknownEvent {
     std::string event;
     const Connection* feed = nullptr;
-    std::optional<Nanos> lifetime;  // the deliveries-not-yet-answered rule's; unknown: unused
+    // The deliveries-not-yet-answered rule's lifetime; for `unknown`, the event's
+    // `otherwise absent after D` (model::Event::fail_open_after): none, unknown until fed.
+    std::optional<Nanos> lifetime;
   };
   std::vector<UnknownEvent> unknown;
   // The deliveries-not-yet-answered rule: the events the constraint reads that a feed from a

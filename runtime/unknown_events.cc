@@ -24,14 +24,24 @@ void Runtime::collect_unknown_events() {
         if (feed->delivered_from) continue;
         const std::vector<std::string>& sets = feed->model->sets;
         if (std::find(sets.begin(), sets.end(), e) != sets.end())
-          c.unknown.push_back({e, feed, std::nullopt});
+          c.unknown.push_back({e, feed, event->fail_open_after});
       }
     }
   }
 }
 
 bool Runtime::knows_events_of(Connection& c, std::string* why) {
-  std::erase_if(c.unknown, [](const Connection::UnknownEvent& u) { return u.feed->fed; });
+  std::erase_if(c.unknown, [&](const Connection::UnknownEvent& u) {
+    if (u.feed->fed) return true;
+    // `otherwise absent after D`: the spec lets this feed's silence count as absence.
+    if (!u.lifetime || now() < later(start_time_, *u.lifetime)) return false;
+    if (failed_open_.insert(u.event).second)
+      report("event " + u.event + " taken as absent at " + run_time_text(now()) +
+             ": nothing from " + u.feed->model->source +
+             " since the start, and the spec lets it fail open after " +
+             duration_literal(*u.lifetime) + " (`otherwise absent after`)");
+    return true;
+  });
   if (c.unknown.empty()) return true;
   const Connection::UnknownEvent& u = c.unknown.front();
   *why = "unknown since start: " + u.event + " (nothing from " + u.feed->model->source + " yet)";

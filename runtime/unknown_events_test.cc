@@ -63,6 +63,44 @@ TEST(UnknownEventsTest, TheLifetimeDoesNotEndTheUnknown) {
   EXPECT_EQ(delivery_times(*rt), std::vector<double>{3.6});
 }
 
+// `otherwise absent after 2s` (model::Event::fail_open_after): the spec lets the feed's silence
+// count as absence once it has lasted that long since the start; before, the rule waits; the
+// run says when it took the event as absent.
+TEST(UnknownEventsTest, AFeedThatMayFailOpenCountsAsAbsentAfterItsSilence) {
+  TestApp t;
+  feed_app(t, "not e");
+  t.app.events.back().fail_open_after = 2s;
+  RunOptions o;
+  o.unknown_until_fed = true;
+  auto rt = t.start(o);
+  std::vector<std::string> reports;
+  rt->set_reporter([&](const std::string& line) { reports.push_back(line); });
+  for (double at : {0.1, 1.9, 2.0, 2.5}) TestApp::publish_at(*rt, at, "Src", "x", Value(1));
+  rt->advance(3s);
+  EXPECT_EQ(delivery_times(*rt), (std::vector<double>{2.0, 2.5}));
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_NE(
+      reports[0].find("event e taken as absent at 2.000 s: nothing from Src.f since the start"),
+      std::string::npos)
+      << reports[0];
+}
+
+// A feed that speaks before the silence is up ends the unknown by its message, as any feed does:
+// a present event keeps the rule closed after the 2 s.
+TEST(UnknownEventsTest, AFeedThatSpeaksIsBelievedBeforeItsSilenceIsUp) {
+  TestApp t;
+  feed_app(t, "not e");
+  t.app.events.back().fail_open_after = 2s;
+  t.app.events.back().lifetime = std::nullopt;  // set until unset
+  RunOptions o;
+  o.unknown_until_fed = true;
+  auto rt = t.start(o);
+  TestApp::publish_at(*rt, 0.5, "Src", "f", Value(true));  // e present
+  for (double at : {1.0, 2.5}) TestApp::publish_at(*rt, at, "Src", "x", Value(1));
+  rt->advance(3s);
+  EXPECT_TRUE(delivery_times(*rt).empty());
+}
+
 // Without the option (a single-process run) nothing changes: `not e` holds at once.
 TEST(UnknownEventsTest, OffByDefault) {
   TestApp t;

@@ -219,6 +219,13 @@ struct EventDecl {
 };
 
 // `events from M.p { e, f = "flag" } lifetime D;`
+// `otherwise absent after D` on a feed's declaration.
+struct FailOpen {
+  std::string word;  // `absent`, the only one sema accepts
+  Loc word_loc;
+  Duration after;
+};
+
 struct StatusEventDecl {
   struct Entry {
     std::string event;  // the event's name
@@ -228,6 +235,7 @@ struct StatusEventDecl {
   PortRef source;
   std::vector<Entry> entries;
   std::optional<Duration> lifetime;
+  std::optional<FailOpen> fail_open;
   Loc loc;
 };
 
@@ -237,7 +245,8 @@ struct DerivedEventDecl {
   PortRef source;
   ExprPtr predicate;                 // over the message, bound to the source port's name
   std::optional<Duration> lifetime;  // `for D`
-  Loc loc;                           // the name
+  std::optional<FailOpen> fail_open;
+  Loc loc;  // the name
 };
 
 // `exclusive { a, b, c };`
@@ -380,8 +389,9 @@ struct EventSymbol {
   Kind kind = Kind::Manual;
   std::string name;
   std::optional<Nanos> lifetime;
-  std::string source;  // "Module.port" for Status and Derived
-  std::string flag;    // Status: the module's flag name
+  std::string source;                    // "Module.port" for Status and Derived
+  std::string flag;                      // Status: the module's flag name
+  std::optional<Nanos> fail_open_after;  // Status, Derived: `otherwise absent after D`
   Loc loc;
 };
 

@@ -136,7 +136,7 @@ ResourceDecl Builder::resource_decl(ArbcParser::ResourceDeclContext* c) {
   return r;
 }
 
-// derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? ';' ;
+// derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? failOpen? ';' ;
 DerivedEventDecl Builder::derived_event_decl(ArbcParser::DerivedEventDeclContext* c) {
   DerivedEventDecl e;
   e.name = tx(c->ID());
@@ -144,11 +144,18 @@ DerivedEventDecl Builder::derived_event_decl(ArbcParser::DerivedEventDeclContext
   e.source = port_ref(c->portRef());
   e.predicate = expr(c->expr(), 0);
   e.lifetime = optional_duration(c->duration());
+  e.fail_open = fail_open(c->failOpen());
   return e;
 }
 
+// failOpen : 'otherwise' ID 'after' duration ;
+std::optional<FailOpen> Builder::fail_open(ArbcParser::FailOpenContext* c) {
+  if (!c) return std::nullopt;
+  return FailOpen{tx(c->ID()), loc(c->ID()), *optional_duration(c->duration())};
+}
+
 // statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* '}'
-//                    ('lifetime' duration)? ';' ;
+//                    ('lifetime' duration)? failOpen? ';' ;
 StatusEventDecl Builder::status_events_decl(ArbcParser::StatusEventsDeclContext* c) {
   StatusEventDecl e;
   e.loc = loc(c);
@@ -161,6 +168,7 @@ StatusEventDecl Builder::status_events_decl(ArbcParser::StatusEventsDeclContext*
     e.entries.push_back(std::move(x));
   }
   e.lifetime = optional_duration(c->duration());
+  e.fail_open = fail_open(c->failOpen());
   return e;
 }
 

@@ -96,6 +96,7 @@ class Builder {
   ast::ModuleDecl module_decl(ArbcParser::ModuleDeclContext* c);
   ast::EventDecl event_decl(ArbcParser::EventDeclContext* c);
   ast::ResourceDecl resource_decl(ArbcParser::ResourceDeclContext* c);
+  std::optional<ast::FailOpen> fail_open(ArbcParser::FailOpenContext* c);
   ast::DerivedEventDecl derived_event_decl(ArbcParser::DerivedEventDeclContext* c);
   ast::StatusEventDecl status_events_decl(ArbcParser::StatusEventsDeclContext* c);
   ast::ExclusiveDecl exclusive_decl(ArbcParser::ExclusiveDeclContext* c);

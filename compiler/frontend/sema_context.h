@@ -93,6 +93,7 @@ class Sema {
   void add_event(ast::EventSymbol symbol);  // reports a name declared twice
   void declare_manual_events(ast::EventDecl& e);
   // `events from M.p { ... }`: a list<string> source, each flag mapped once.
+  std::optional<Nanos> fail_open_after(std::optional<ast::FailOpen>& f);
   void declare_status_events(ast::StatusEventDecl& e);
   // After all events exist, so that a predicate naming an event gets the right message.
   void check_derived_predicates();

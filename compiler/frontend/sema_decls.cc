@@ -129,6 +129,7 @@ void Sema::declare_events() {
       check_duration(*e.lifetime, "the `for` lifetime");
       s.lifetime = e.lifetime->nanos;
     }
+    s.fail_open_after = fail_open_after(e.fail_open);
     add_event(std::move(s));
   }
 }
@@ -159,6 +160,21 @@ void Sema::declare_manual_events(EventDecl& e) {
   }
 }
 
+// `otherwise absent after D`: the word must be `absent`, D a duration a run can wait.
+std::optional<Nanos> Sema::fail_open_after(std::optional<FailOpen>& f) {
+  if (!f) return std::nullopt;
+  if (f->word != "absent") {
+    error(f->word_loc,
+          "`otherwise " + f->word +
+              " after ...`: a feed that has not spoken can only count as "
+              "absent; write `otherwise absent after D`",
+          "fail-open");
+    return std::nullopt;
+  }
+  check_duration(f->after, "the time a feed may stay silent");
+  return f->after.nanos;
+}
+
 void Sema::declare_status_events(StatusEventDecl& e) {
   if (resolve_port(e.source, "source", "`events from`")) {
     TypePtr t = port_type(e.source);
@@ -187,6 +203,7 @@ void Sema::declare_status_events(StatusEventDecl& e) {
     s.source = e.source.qualified();
     s.flag = entry.flag;
     if (e.lifetime) s.lifetime = e.lifetime->nanos;
+    s.fail_open_after = fail_open_after(e.fail_open);
     add_event(std::move(s));
   }
 }

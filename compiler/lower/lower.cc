@@ -125,6 +125,7 @@ class Lowerer {
     for (const ast::EventSymbol& e : spec_.event_symbols) {
       model::Event event{e.name, e.lifetime, e.source, e.loc, std::nullopt};
       if (e.kind == ast::EventSymbol::Kind::Status) event.flag = e.flag.empty() ? e.name : e.flag;
+      event.fail_open_after = e.fail_open_after;
       for (const ast::DerivedEventDecl& d : spec_.derived_events)
         if (d.name == e.name && d.predicate)
           event.predicate = lower_expr(*d.predicate, port_type(d.source.qualified()));
