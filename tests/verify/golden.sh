@@ -68,6 +68,7 @@ golden findings.txt repo 1 tests/verify/findings.spec
 # event that only another port's container holds is vacuous (a warning), not proved.
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
 golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
+golden resource_one_order.txt repo 1 tests/verify/resource_one_order.spec
 # Lists of any length (issue 38 item 3): a rule that needs five elements, read through `len`
 # only, is refuted by a 5-element message (it was "proved" for lists of at most 4); bodies that
 # read `len` and constant indexes are proved for every length. A proof that rests on lists of
