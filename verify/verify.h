@@ -97,6 +97,8 @@ std::optional<VerifyReport> verify_app(const model::App& app, const VerifyOption
 // The report of an app whose verification could not be ended at the deadline (on_stuck): the
 // verdict unknown, every port unknown, one app finding saying why, and nothing else (the checks
 // after the stuck query never ran).
-VerifyReport stuck_report(const model::App& app, double timeout_seconds);
+// `stuck`: the solver did not stop when interrupted (SolverWatchdog's on_stuck); else the
+// deadline passed between queries and Z3 refused further work ("canceled").
+VerifyReport stuck_report(const model::App& app, double timeout_seconds, bool stuck = true);
 
 }  // namespace arbc::verify
