@@ -15,7 +15,8 @@
 # Environment: ARBC_MUTATE_DIR (scratch directory, default a new one under /tmp, kept for its
 # logs), ARBC_MUTATE_EXCLUDE (a ctest -E regex; default: the installed-package and Chromium
 # tests, which check packaging and HTML, not the logic mutated here, and the site-list checks,
-# which fail on any mutated tree by construction and would "kill" every mutant), ARBC_MUTATE_JOBS (2),
+# which fail on any mutated tree by construction and would "kill" every mutant, and code_format,
+# which a mutant's line may fail without any behaviour changing), ARBC_MUTATE_JOBS (2),
 # ARBC_WERROR (as scripts/build.sh: ON shares ccache's objects with CI's builds).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -30,7 +31,7 @@ $sites_py check "$root" >/dev/null || { $sites_py check "$root"; exit 2; }
 if [ $# -gt 0 ]; then ids=("$@"); else mapfile -t ids < <($sites_py list | cut -f1); fi
 
 jobs=${ARBC_MUTATE_JOBS:-2}
-exclude=${ARBC_MUTATE_EXCLUDE:-installed_package|report_in_chromium|mutation_site}
+exclude=${ARBC_MUTATE_EXCLUDE:-installed_package|report_in_chromium|mutation_site|code_format}
 commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')  # the tree tested
 git -C "$root" diff --quiet HEAD 2>/dev/null || commit="$commit with uncommitted changes"
 scratch=${ARBC_MUTATE_DIR:-$(mktemp -d /tmp/arbc-mutate.XXXXXX)}
