@@ -1,7 +1,6 @@
 #include "compiler/codegen/claims_writer.h"
 
 #include "compiler/codegen/lua_expr.h"
-#include "compiler/codegen/lua_prelude.h"
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/lua_writer.h"
 #include "core/artifact_path.h"
@@ -33,20 +32,7 @@ std::optional<std::string> write_claims(const lower::LoweredApp& app) {
   out.line("-- The proof's claims over delivered values, as Lua written from the IR it proved;");
   out.line("-- the runtime calls each on the deliveries it is about (docs/runtime.md).");
   out.blank();
-  std::string prelude = lua_prelude(tr.helpers_used());
-  if (!prelude.empty()) {
-    out.line("-- Builtins of the spec language, in plain Lua.");
-    out.raw(prelude);
-    out.blank();
-  }
-  std::vector<LuaConstant> constants = tr.constants_used();
-  if (!constants.empty()) {
-    out.line("-- Constants.");
-    for (const LuaConstant& k : constants)
-      out.line("local " + k.name + " = " + k.value + "  -- spec line " + std::to_string(k.line),
-               k.line);
-    out.blank();
-  }
+  write_helpers_and_constants(tr, out);
   out.append(body);
   return out.text();
 }

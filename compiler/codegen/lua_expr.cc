@@ -183,4 +183,20 @@ std::string LuaExprTranslator::call(const BodyExpr& e) {
   return out + ")";
 }
 
+void write_helpers_and_constants(const LuaExprTranslator& tr, LuaWriter& out) {
+  std::string prelude = lua_prelude(tr.helpers_used());
+  if (!prelude.empty()) {
+    out.line("-- Builtins of the spec language, in plain Lua.");
+    out.raw(prelude);
+    out.blank();
+  }
+  std::vector<LuaConstant> constants = tr.constants_used();
+  if (constants.empty()) return;
+  out.line("-- Constants.");
+  for (const LuaConstant& c : constants)
+    out.line("local " + c.name + " = " + c.value + "  -- spec line " + std::to_string(c.line),
+             c.line);
+  out.blank();
+}
+
 }  // namespace arbc::codegen

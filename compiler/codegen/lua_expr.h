@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "compiler/codegen/lua_writer.h"
 #include "core/body.h"
 
 namespace arbc::codegen {
@@ -66,5 +67,9 @@ class LuaExprTranslator {
   std::set<std::string> helpers_;
   std::map<std::tuple<int, int, std::string>, LuaConstant> constants_;  // by declaration
 };
+
+// The top of a generated file that uses what `tr` translated: the prelude's helpers it called,
+// then its named constants (each with its spec line), each block followed by a blank line.
+void write_helpers_and_constants(const LuaExprTranslator& tr, LuaWriter& out);
 
 }  // namespace arbc::codegen

@@ -69,20 +69,7 @@ class MonitorWriter {
     }
     LuaWriter out;
     if (style_.header) header(out);
-    std::string prelude = lua_prelude(tr_.helpers_used());
-    if (!prelude.empty()) {
-      out.line("-- Builtins of the spec language, in plain Lua.");
-      out.raw(prelude);
-      out.blank();
-    }
-    std::vector<LuaConstant> constants = tr_.constants_used();
-    if (!constants.empty()) {
-      out.line("-- Constants.");
-      for (const LuaConstant& c : constants)
-        out.line("local " + c.name + " = " + c.value + "  -- spec line " + std::to_string(c.line),
-                 c.line);
-      out.blank();
-    }
+    write_helpers_and_constants(tr_, out);
     if (!state_.empty()) {
       out.line("-- Monitor state, kept across messages.");
       for (const auto& [text, spec_line] : state_) out.line(text, spec_line);
