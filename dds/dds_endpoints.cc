@@ -73,9 +73,11 @@ bool DdsTransport::add_reader(const Endpoint& e, std::string* error) {
 bool DdsTransport::add_writer(const Endpoint& e, std::string* error) {
   fdds::Topic* t = topic_for(e.topic, e.wire, error);
   if (!t) return false;
-  auto w = std::make_unique<TopicWriter>(this, e.port, e.input, e.topic, e.wire);
+  const PortQos& port_qos = options_.deployment.qos_of(e.port.qualified);
+  auto w = std::make_unique<TopicWriter>(this, e.port, e.input, e.topic, e.wire,
+                                         port_qos.transient_local ? depth() : 0);
   fdds::DataWriterQos qos = publisher_->get_default_datawriter_qos();
-  set_common_qos(qos, depth(), *e.wire, options_.deployment.qos_of(e.port.qualified));
+  set_common_qos(qos, depth(), *e.wire, port_qos);
   w->writer = publisher_->create_datawriter(t, qos, w.get(),
                                             fdds::StatusMask::publication_matched()
                                                 << fdds::StatusMask::offered_incompatible_qos());
@@ -276,13 +278,14 @@ void TopicReader::hand(const Buffered& b) {
 // --- TopicWriter -----------------------------------------------------------------------------
 
 TopicWriter::TopicWriter(DdsTransport* transport, const TransportPort& port, bool input,
-                         std::string topic, std::shared_ptr<const WireType> wire)
+                         std::string topic, std::shared_ptr<const WireType> wire, int kept)
     : port(port),
       input(input),
       topic(std::move(topic)),
       wire(std::move(wire)),
       transport_(transport),
-      sample_(new_sample(*this->wire)) {}
+      sample_(new_sample(*this->wire)),
+      kept_(kept) {}
 
 TopicWriter::~TopicWriter() { delete_sample(sample_); }
 
@@ -305,14 +308,20 @@ bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& p
 
 // DDS accepted the sample, but no reader had matched: it reaches nobody, although the runtime
 // counts the connection's delivery (issue 39: a restarted mediator "delivered" 1,486 commands
-// before the base's subscriber matched). Counted apart and said, in the summary and here.
+// before the base's subscriber matched). Counted apart and said, in the summary and here. A
+// transient-local writer keeps its last `kept_` samples for a subscriber that joins later: only
+// the writes that push one out of that history reach nobody.
 void TopicWriter::wrote_to_nobody() {
+  if (unmatched_writes_.fetch_add(1) < static_cast<uint64_t>(kept_)) return;
   ++to_nobody;
   if (nobody_reported_.exchange(true)) return;
   transport_->sink().report("DDS: topic " + topic + " (" + port.qualified +
                             "): written with no subscriber matched " +
                             (ever_matched ? "(since the last one left)" : "(none yet)") + ": " +
                             (input ? port.module + " does not receive it" : "nobody receives it") +
+                            (kept_ ? " (beyond the last " + std::to_string(kept_) +
+                                         " the writer keeps for a late subscriber)"
+                                   : "") +
                             "; such writes are counted as 'to nobody' in the summary");
 }
 
@@ -322,6 +331,7 @@ void TopicWriter::on_publication_matched(fdds::DataWriter*,
   if (status.current_count_change > 0) {
     ever_matched = true;
     nobody_reported_ = false;
+    unmatched_writes_ = 0;
   }
   if (input && status.current_count_change < 0 && status.current_count == 0) {
     transport_->report("DDS: topic " + topic + " (" + port.qualified +

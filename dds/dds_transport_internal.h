@@ -107,8 +107,9 @@ class TopicReader : public fdds::DataReaderListener {
 // elsewhere that a connection mediated here delivers to. Written on the executor thread.
 class TopicWriter : public fdds::DataWriterListener {
  public:
+  // `kept`: the samples a transient-local writer keeps for late subscribers (0 when volatile).
   TopicWriter(DdsTransport* transport, const TransportPort& port, bool input, std::string topic,
-              std::shared_ptr<const WireType> wire);
+              std::shared_ptr<const WireType> wire, int kept);
   ~TopicWriter() override;
   // Writes v with `params` (in: the related sample; out: the sample's identity); false when
   // it could not (counted, reported once).
@@ -124,7 +125,8 @@ class TopicWriter : public fdds::DataWriterListener {
   const std::string topic;
   const std::shared_ptr<const WireType> wire;
   fdds::DataWriter* writer = nullptr;
-  // Written, of them while no subscriber had matched (they reach nobody), failed.
+  // Written, of them while no subscriber had matched and not kept for one (they reach nobody),
+  // failed.
   std::atomic<uint64_t> written{0}, to_nobody{0}, failed{0};
   std::atomic<int> subscribers{0};
   std::atomic<bool> ever_matched{false};  // a subscriber matched at some time
@@ -138,6 +140,9 @@ class TopicWriter : public fdds::DataWriterListener {
   bool reported_ = false;
   // A write to nobody was reported since the last subscriber matched (the listener clears it).
   std::atomic<bool> nobody_reported_{false};
+  const int kept_;
+  // Writes since the last subscriber matched, while none had (the listener clears it).
+  std::atomic<uint64_t> unmatched_writes_{0};
 };
 
 // Compares what remote endpoints announce with this process's topics.
