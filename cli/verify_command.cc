@@ -108,9 +108,9 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "a folder to write each counterexample into, as a tests file that states the "
                  "claim it breaks: a property over time (APP.RULE.test.spec), a port's "
                  "exclusivity (APP.M_p.RULE.RULE.exclusive.test.spec), an assert over events "
-                 "(APP.M_p.RULE.assert.test.spec); `arbc test` of it fails until the app is "
-                 "fixed. One a test cannot replay (a resource, an assert over `emitted`) is "
-                 "written as a .txt that says why");
+                 "or over `emitted` (APP.M_p.RULE.assert.test.spec); `arbc test` of it fails until "
+                 "the app is fixed. One a test cannot replay (a resource's) is written as a .txt "
+                 "that says why");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");

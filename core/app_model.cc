@@ -1,5 +1,6 @@
 #include "core/app_model.h"
 
+#include "core/body_spec_text.h"
 #include "core/duration_literal.h"
 
 namespace arbc::model {
@@ -13,7 +14,8 @@ std::string assumption_text(const Assumption& a) {
 }
 
 std::string assertion_text(const std::string& port, const Assertion& a) {
-  return "assert " + port + ": " + a.rule + " -> " + a.property.to_string();
+  return "assert " + port + ": " + a.rule + " -> " +
+         (a.emitted ? body_expr_spec_text(*a.emitted, "emitted") : a.property.to_string());
 }
 
 std::string temporal_property_text(const TemporalProperty& p) {

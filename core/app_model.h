@@ -198,8 +198,9 @@ const char* temporal_kind_name(TemporalProperty::Kind k);
 // verdicts, the tests it writes and the runtime's checks.
 std::string temporal_property_text(const TemporalProperty& p);
 
-// An assert over events as a spec writes it, without `;` ("assert Arm.cmd: take -> e_idle"), for
-// the runtime's checks and the tests `arbc verify --counterexamples` writes.
+// An assert as a spec writes it, without `;` ("assert Arm.cmd: take -> e_idle", "assert Arm.cmd:
+// take -> emitted.speed <= 0.5"), for the runtime's checks, the verifier's messages and the tests
+// `arbc verify --counterexamples` writes.
 std::string assertion_text(const std::string& port, const Assertion& a);
 
 // An environment assumption (docs/language.md#environment-assumptions) about EVENT, an event

@@ -97,8 +97,7 @@ constexpr CheckId kIds[] = {
      "two different ports"},
     {"temporal-rule", kCheck, "a property over time names a rule used by several ports"},
     {"test-claim", kCheck,
-     "`expect exclusive` of a `by priority` port, or `expect assert` over `emitted`: claims a "
-     "test's run cannot judge"},
+     "`expect exclusive` of a `by priority` port: a claim the app does not make"},
     {"test-expect", kCheck, "a test without an `expect`: it would pass whatever the app does"},
     {"test-port", kCheck,
      "a test names a port or rule it cannot use (an `on RULE` test off that rule's ports)"},

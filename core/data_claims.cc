@@ -12,8 +12,7 @@ std::vector<DataClaim> data_claims(const App& app) {
       c.rule = a.rule;
       c.predicate = &*a.emitted;
       c.loc = a.loc;
-      c.text = "assert " + p.port + ": " + a.rule + " -> (over `emitted`, line " +
-               std::to_string(a.loc.line) + ")";
+      c.text = assertion_text(p.port, a) + " (line " + std::to_string(a.loc.line) + ")";
       out.push_back(std::move(c));
     }
   for (const Resource& r : app.resources) {

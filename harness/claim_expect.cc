@@ -1,11 +1,46 @@
 #include "harness/claim_expect.h"
 
 #include <set>
+#include <unordered_map>
 
+#include "compiler/codegen/claims_writer.h"
+#include "runtime/data_claims.h"
 #include "runtime/decision_watch.h"
+#include "runtime/delivery_watch.h"
 #include "runtime/trace_container.h"
 
 namespace arbc::harness {
+
+namespace {
+
+// An assert over `emitted` on `app`, which states only it: the claims script `arbc build` would
+// write for it (compiler/codegen/claims_writer.h), judged on each delivery of its rule by the
+// runtime's own check (runtime/delivery_watch.h), on the values the stand-ins received.
+std::optional<ClaimBreach> data_assert_breach(model::App app, const model::Expectation& e,
+                                              const TestRun& run) {
+  app.resources.clear();
+  lower::LoweredApp low;
+  low.app = std::move(app);
+  std::optional<std::string> script = codegen::write_claims(low);
+  std::string err = "no claim";
+  std::unique_ptr<DataClaims> claims =
+      script ? DataClaims::load(low.app, *script, codegen::kClaimsScript, &err) : nullptr;
+  if (!claims) return ClaimBreach{Nanos{0}, "the assert cannot be judged: " + err};
+  std::unordered_map<std::string, TraceContainer> boxes{{e.port, TraceContainer()}};
+  DeliveryWatch watch(low.app, claims.get(), boxes);
+  for (const Received& got : run.received) {
+    if (got.port != e.port || got.connection != e.assertion->rule) continue;
+    TraceRecord r;
+    r.t = got.t, r.kind = TraceKind::Deliver, r.port = got.port, r.connection = got.connection;
+    r.value = &got.value;
+    std::vector<DeliveryWatch::Breach> broke;
+    watch.delivered(r, e.port, &broke);
+    if (!broke.empty()) return ClaimBreach{got.t, broke[0].what};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 std::optional<ClaimBreach> claim_breach(const model::Expectation& e, const TestRun& run) {
   if (!run.app || !run.app->find_arbitrated(e.port)) return std::nullopt;  // sema said so
@@ -23,6 +58,8 @@ std::optional<ClaimBreach> claim_breach(const model::Expectation& e, const TestR
       claim = DecisionWatch::exclusivity_claim(p);
     }
   }
+  if (e.kind == model::Expectation::Kind::Assert && e.assertion && e.assertion->emitted)
+    return data_assert_breach(std::move(app), e, run);
   std::optional<ClaimBreach> out;
   DecisionWatch watch(
       app, [&e](const std::string& port) { return port == e.port; }, true,

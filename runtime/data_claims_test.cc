@@ -34,7 +34,7 @@ TEST(DataClaims, EachPredicateJudgesTheDeliveredValue) {
   auto d = load(app, "Claims = { function(emitted) return emitted < 10.0 end }", &err);
   ASSERT_TRUE(d) << err;
   ASSERT_EQ(d->claims().size(), 1u);
-  EXPECT_EQ(d->claims()[0].text, "assert M.p: r -> (over `emitted`, line 0)");
+  EXPECT_EQ(d->claims()[0].text, "assert M.p: r -> emitted < 10.0 (line 0)");
   EXPECT_EQ(d->evaluate(0, Value(1.0), &why), DataClaims::Outcome::Holds);
   EXPECT_EQ(d->evaluate(0, Value(12.0), &why), DataClaims::Outcome::Fails);
 }

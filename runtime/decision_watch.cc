@@ -35,7 +35,7 @@ DecisionWatch::DecisionWatch(const model::App& app,
     }
     for (const model::Assertion& a : p.asserts) {
       auto it = rule_index_.find(a.rule);
-      if (a.emitted || it == rule_index_.end()) continue;  // data asserts: not yet (header)
+      if (a.emitted || it == rule_index_.end()) continue;  // data asserts: delivery_watch.h
       rules_[it->second].asserts.push_back(asserts_.size());
       asserts_.push_back({&a, model::assertion_text(p.port, a)});
     }

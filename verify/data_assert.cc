@@ -9,11 +9,6 @@ namespace arbc::verify {
 
 namespace {
 
-// Why --counterexamples writes no test for a refuted assert over data.
-constexpr const char* kNotJudged =
-    "--counterexamples does not write a test for an assert over `emitted` yet; a run and a "
-    "test check it on each delivery (docs/runtime.md#runtime-checks)";
-
 Finding assert_finding(const PortScope& scope, const model::Assertion& a) {
   Finding f;
   f.check = kCheckAssert;
@@ -57,7 +52,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   DataAssertOutcome out;
   const ScopedRule& rule = scope.rules[static_cast<size_t>(rule_index)];
   const model::Connection& c = *rule.connection;
-  const std::string what = "assert " + scope.port->port + ": " + a.rule + " -> (over `emitted`)";
+  const std::string what = model::assertion_text(scope.port->port, a);
   // Where the rule is never selected it never delivers: the assert holds (the dead check says so).
   std::optional<std::vector<std::string>> present = solver.minimal_state({rule_index}, {});
   if (!present) {
@@ -86,11 +81,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
   Finding f = assert_finding(scope, a);
   f.message =
       what + " can fail: '" + a.rule + "' can deliver a value for which the property is false";
-  f.not_replayable = kNotJudged;
-  f.counterexample = EventState{*present, {}};
-  for (const std::string& e : scope.events)
-    if (std::find(present->begin(), present->end(), e) == present->end())
-      f.counterexample->absent.push_back(e);
+  f.counterexample = state_of(scope, *present);
   f.notes.push_back({"in the event state (fewest events present): present: " +
                          (present->empty() ? std::string("none") : join(*present)),
                      {}});
@@ -106,6 +97,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
                            " (abstracted: any value earlier messages could leave), so not "
                            "replayed",
                        {}});
+    f.not_replayable = "it needs monitor state that earlier messages would have to leave";
   } else if (runner) {
     std::string why;
     const model::Port* port = data.app().find_port(scope.port->port);
@@ -121,8 +113,10 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
       return out;
     }
     f.notes.push_back({"replayed through the Lua monitors: " + join(ex.replay, "; "), {}});
+    out.message = w.messages[0];
   } else {
     f.notes.push_back({"not replayed (no monitor runner)", {}});
+    f.not_replayable = "it was not replayed";
   }
   f.messages.push_back(std::move(ex));
   f.notes.push_back(

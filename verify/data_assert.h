@@ -18,6 +18,9 @@ struct DataAssertOutcome {
   std::optional<Finding> finding;  // refuted, not provable (opaque), or internal
   std::string unknown;             // non-empty: what could not be decided (the solver's answer)
   std::string unknown_reason;
+  // Refuted and replayed: the message that makes the rule deliver a value the assert rejects,
+  // in the finding's counterexample state (the kept test's step).
+  std::optional<Value> message;
 };
 
 // `rule` is the assert's rule, index `rule_index` in `solver`'s port scope.

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "core/body_spec_text.h"
 #include "core/join.h"
 #include "verify/claim_test.h"
 #include "verify/data_assert.h"
@@ -12,15 +13,6 @@
 
 namespace arbc::verify {
 namespace {
-
-EventState state_of(const PortScope& scope, const std::vector<std::string>& present) {
-  EventState s;
-  s.present = present;
-  for (const std::string& e : scope.events) {
-    if (!std::binary_search(present.begin(), present.end(), e)) s.absent.push_back(e);
-  }
-  return s;
-}
 
 std::string list(const std::vector<std::string>& items) {
   return items.empty() ? "none" : join(items);
@@ -399,6 +391,16 @@ class PortChecker {
     if (a.emitted) {  // over data (verify/data_assert.h)
       DataAssertOutcome d = check_data_assert(scope_, r, a, solver_, data_, options_.runner);
       if (!d.unknown.empty()) unknown(d.unknown, d.unknown_reason);
+      if (d.finding && d.message) {  // kept as a test that states the assert (claim_test.h)
+        DecisionReplay replay{"counterexample: " + a.rule + " delivers a value for which `" +
+                                  model::body_expr_spec_text(*a.emitted, "emitted") + "` is false",
+                              *d.finding->counterexample,
+                              {scope_.rules[static_cast<size_t>(r)].connection},
+                              {d.message},
+                              assert_claim(scope_.port->port, a)};
+        d.finding->replay_test = decision_test(replay, replay_.data(), options_.test_replayer,
+                                               &d.finding->not_replayable);
+      }
       if (d.finding) result_.findings.push_back(std::move(*d.finding));
       // Holds of what the rule delivers for messages with lists of at most the bound.
       if (!d.finding && r >= 0) bounded_by_lists(scope_.rules[static_cast<size_t>(r)]);

@@ -114,4 +114,12 @@ std::optional<PortScope> build_port_scope(const model::App& app, const model::Ar
   return scope;
 }
 
+EventState state_of(const PortScope& scope, const std::vector<std::string>& present) {
+  EventState s;
+  s.present = present;
+  for (const std::string& e : scope.events)
+    if (!std::binary_search(present.begin(), present.end(), e)) s.absent.push_back(e);
+  return s;
+}
+
 }  // namespace arbc::verify

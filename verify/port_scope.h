@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "verify/report.h"
 
 namespace arbc::verify {
 
@@ -49,6 +50,9 @@ struct PortScope {
 // connection into it, or an assert names a rule the port does not have.
 std::optional<PortScope> build_port_scope(const model::App& app, const model::ArbitratedPort& port,
                                           std::string* err);
+
+// The state with `present` (sorted) present and the scope's other events absent.
+EventState state_of(const PortScope& scope, const std::vector<std::string>& present);
 
 // "at most one of the events" as a formula: pairwise "not (a and b)".
 Constraint at_most_one(const std::vector<std::string>& events);

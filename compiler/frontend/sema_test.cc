@@ -199,18 +199,12 @@ void Sema::check_reason_possible(const Rule& rule, const TestExpect& e) {
 }
 
 // `expect exclusive M.p;` and `expect assert M.p: RULE -> EXPR;`: the claims the proof makes
-// about single decisions, judged on the run by runtime/decision_watch.h. One that could not fail
-// there is refused: a `by priority` port claims no exclusivity, a test on one rule runs no
-// other rule of the port, and an assert over `emitted` is not judged on a run yet.
+// about single decisions, judged on the run by the runtime's own checks (harness/claim_expect.h).
+// One that could not fail there is refused: a `by priority` port claims no exclusivity, and a
+// test on one rule runs no other rule of the port.
 void Sema::check_test_claim(const TestDecl& t, TestExpect& e) {
   if (e.kind == TestExpect::Kind::Assert) {
-    check_assert(*e.assertion);
-    if (e.assertion->over_data)
-      error(e.assertion->loc,
-            "an assert over `emitted` is not judged on a test's run yet: expect what the rule "
-            "delivers with `expect " +
-                e.assertion->port.qualified() + " receives VALUE;`",
-            "test-claim");
+    check_assert(*e.assertion);  // over events, or over `emitted` (each delivery of the rule)
     return;
   }
   const ArbitrateDecl* a = arbitrated_port(e.port, "`expect exclusive`");

@@ -80,7 +80,9 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
     case ast::TestExpect::Kind::Assert:
       out.kind = model::Expectation::Kind::Assert;
       out.port = e.assertion->port.qualified();
-      out.assertion = lower::lower_assert(*e.assertion, nullptr);  // over events (sema)
+      out.assertion = lower::lower_assert(
+          *e.assertion,
+          e.assertion->port.port_decl ? e.assertion->port.port_decl->type.resolved : nullptr);
       break;
   }
   return out;

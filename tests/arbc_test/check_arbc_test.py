@@ -475,6 +475,39 @@ def case_one_instant_in_the_listed_order(arbc, tmp):
                out, err)
 
 
+DOUBLER_SPEC = """app doubler;
+module Sensor { out v: float; }
+module Motor { in cmd: float; }
+arbitrate Motor.cmd { pass: from Sensor.v { emit v * 2.0; } }
+"""
+
+
+def case_expect_assert_over_emitted(arbc, tmp):
+    """`expect assert M.p: RULE -> PRED;` with PRED over `emitted` is judged on each value RULE
+    delivers, whether or not the app declares the assert (this app does not)."""
+    spec = os.path.join(tmp, "doubler.spec")
+    with open(spec, "w", encoding="utf-8") as f:
+        f.write(DOUBLER_SPEC + """
+test "small values stay small" {
+  at 0s Sensor.v <- 1.0;
+  at 100ms Sensor.v <- 4.5;
+  expect assert Motor.cmd: pass -> emitted < 10.0;
+}
+test "a large one is doubled past the bound" {
+  at 0s Sensor.v <- 1.0;
+  at 100ms Sensor.v <- 6.0;
+  expect assert Motor.cmd: pass -> emitted < 10.0 and emitted > 0.0;
+}
+""")
+    code, out, err = run(arbc, "test", spec)
+    expect(code == 1 and "1 passed, 1 failed" in out, f"exit {code}", out, err)
+    expect(re.search(r"^PASS .*: small values stay small$", out, re.M), "the small values fail",
+           out, err)
+    expect("expected assert Motor.cmd: pass -> emitted < 10.0 and emitted > 0.0" in out and
+           "but 'pass' delivered 12.0 into Motor.cmd at 100ms, for which it is false" in out,
+           "the failure does not say which delivery broke the assert", out, err)
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)

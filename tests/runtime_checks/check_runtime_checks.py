@@ -207,7 +207,7 @@ def case_data_assert_broken(arbc):
         '{"t": 0, "port": "Sensor.v", "value": 1.0}',
         '{"t": 0.1, "port": "Sensor.v", "value": 6.0}'], "--no-verify")
     expect(code == 3, f"exit {code}, expected 3", out, err)
-    expect("100ms  assert Motor.cmd: pass -> (over `emitted`, line 5): 'pass' delivered 12.0 "
+    expect("100ms  assert Motor.cmd: pass -> emitted < 10.0 (line 5): 'pass' delivered 12.0 "
            "into Motor.cmd at 100ms, for which it is false" in out,
            "the assert over data is not said broken", out, err)
     code, out, err = run(arbc, DOUBLED, ['{"t": 0, "port": "Sensor.v", "value": 4.5}'],
