@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "compiler/codegen/yarp_checks.h"
 #include "core/join.h"
 
 namespace arbc::cli {
@@ -15,10 +16,6 @@ std::string pad(std::string s, size_t width) {
 }
 
 }  // namespace
-
-std::string count_of(size_t n, const std::string& singular, const std::string& plural) {
-  return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
 
 std::string build_summary(const model::App& app, const std::string& spec,
                           const std::string& out_dir, const std::string& verified) {
@@ -72,6 +69,15 @@ std::string yarp_build_summary(const model::App& app, const std::string& spec,
          count_of(monitors, "YARP monitor", "YARP monitors") + " for " +
          count_of(app.connections.size(), "connection", "connections") +
          " (connections that share a source and a destination are one YARP connection)\n";
+  // What the monitors check at run time of the proof, and what no YARP monitor can.
+  size_t checked = codegen::yarp_checked_count(app);
+  std::vector<std::string> unchecked = codegen::yarp_unchecked(app);
+  if (checked)
+    out += "  runtime checks in the monitors: " + count_of(checked, "check", "checks") +
+           " (asserts over `emitted`, list bounds), said on the receiving process's stderr\n";
+  if (!unchecked.empty())
+    out += "  not checked at run time on YARP (its monitors cannot read a port's events): " +
+           join(unchecked) + "; docs/yarp.md#runtime-checks\n";
   out += "  next: fill in the modules of " + app.name +
          ".xml; docs/yarp.md#deploying-a-spec-on-yarp-step-by-step\n";
   return out;

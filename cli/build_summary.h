@@ -6,11 +6,9 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/count_text.h"
 
 namespace arbc::cli {
-
-// "1 monitor", "3 monitors".
-std::string count_of(size_t n, const std::string& singular, const std::string& plural);
 
 std::string build_summary(const model::App& app, const std::string& spec,
                           const std::string& out_dir, const std::string& verified);

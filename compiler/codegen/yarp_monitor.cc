@@ -4,6 +4,7 @@
 
 #include "compiler/codegen/lua_text.h"
 #include "compiler/codegen/yarp_bottle_lua.h"
+#include "compiler/codegen/yarp_checks.h"
 #include "compiler/codegen/yarp_constraint.h"
 #include "compiler/codegen/yarp_layout_example.h"
 #include "core/artifact_path.h"
@@ -51,6 +52,7 @@ class YarpMonitorWriter {
         "local ARBC_NO_VALUE = {}\n"
         "local function arbc_novalue() error(ARBC_NO_VALUE, 0) end\n\n";
     for (size_t k = 0; k < link_.parts.size(); ++k) out += part(k);
+    out += checks();
     out += accept_function();
     out += callbacks();
     return out;
@@ -136,6 +138,21 @@ class YarpMonitorWriter {
     return out;
   }
 
+  // The delivering rule's runtime checks (yarp_checks.h); "" when it has none.
+  std::string checks() const {
+    if (!link_.delivering) return "";
+    const model::Connection& d = app_.connections[*link_.delivering];
+    std::string out = yarp_checks_lua(app_, d, who());
+    replace_all(out, "PortMonitor.novalue()", "arbc_novalue()");
+    return out;
+  }
+  bool has_checks() const { return !checks().empty(); }
+  // How the monitor names itself in what it says on stderr.
+  std::string who() const {
+    return "arbc monitor " + link_.monitor + " (" + names_.port(link_.source) + " -> " +
+           names_.port(link_.destination) + ")";
+  }
+
   std::string accept_function() const;
   std::string layout_report() const;
   std::string callbacks() const;
@@ -159,11 +176,9 @@ namespace {
 // layout would otherwise see nothing arrive, and no word of why.
 std::string YarpMonitorWriter::layout_report() const {
   const Type& type = *type_of(link_.source);
-  std::string before = "arbc monitor " + link_.monitor + " (" + names_.port(link_.source) + " -> " +
-                       names_.port(link_.destination) + "): dropped a message that is not a " +
-                       type.to_string() + " (" + link_.source +
-                       ") in arbc's Bottle layout, such as `" + yarp_layout_example(type) +
-                       "` (docs/yarp.md#the-bottle-layout): got `";
+  std::string before = who() + ": dropped a message that is not a " + type.to_string() + " (" +
+                       link_.source + ") in arbc's Bottle layout, such as `" +
+                       yarp_layout_example(type) + "` (docs/yarp.md#the-bottle-layout): got `";
   std::string after =
       "`; later messages of this connection without the layout are dropped without a word\n";
   return "\n-- A message without the layout of " + link_.source +
@@ -188,6 +203,8 @@ std::string YarpMonitorWriter::accept_function() const {
       "-- the parts run in the spec's order, each under pcall; a feed never delivers.\n"
       "local arbc_out = nil  -- the Bottle update() delivers, made by accept\n";
   const model::Connection* d = link_.delivering ? &app_.connections[*link_.delivering] : nullptr;
+  if (d && !yarp_checked_asserts(app_, *d).empty())
+    out += "local arbc_out_value = nil  -- its value, for the runtime checks\n";
   if (d && d->throttle) out += "local arbc_last_delivery = nil  -- for the throttle\n";
   out += layout_report();
   out += "\nlocal function arbc_accept(thing)\n";
@@ -207,6 +224,7 @@ std::string YarpMonitorWriter::accept_function() const {
     bool has_code = !c.monitor.empty();
     if (c.kind == model::ConnectionKind::Feed || link_.parts[k] != *link_.delivering) continue;
     out += "  -- " + c.name + "\n";
+    if (c.list_bound > 0) out += "  if arbc_over_bound(msg) then return false end\n";
     if (has_code) {
       out += "  local ok, accepted = pcall(" + table(k) + ".accept, msg)\n";
       out += "  if not ok or accepted ~= true then return false end\n";
@@ -223,6 +241,8 @@ std::string YarpMonitorWriter::accept_function() const {
     out += "  local ok_out, bottle = pcall(arbc_write, value, arbc_out_type)\n";
     out += "  if not ok_out then return false end\n";
     out += "  arbc_out = bottle\n";
+    if (!yarp_checked_asserts(app_, c).empty())
+      out += "  arbc_out_value = value  -- judged by the runtime checks if it is delivered\n";
     out += "  return true\n";
   }
   if (!d) out += "  return false\n";
@@ -290,6 +310,8 @@ std::string YarpMonitorWriter::callbacks() const {
              declared_lifetime(app_, d.activity_event) + ")  -- by priority: " + d.activity_event +
              "\n";
     if (d.throttle) out += "  arbc_last_delivery = yarp.now()\n";
+    if (!yarp_checked_asserts(app_, d).empty())
+      out += "  pcall(arbc_check_claims, arbc_out_value, arbc_out)  -- runtime checks\n";
     out +=
         "  pcall(function()\n    local b = thing:asBottle()\n    b:clear()\n"
         "    b:append(arbc_out)\n  end)\n  return thing\nend\n\n";
@@ -297,6 +319,7 @@ std::string YarpMonitorWriter::callbacks() const {
   if (every) out += "PortMonitor.trig = function()\n" + guard_every + "end\n\n";
   out += "-- YARP keeps a monitor's events after its connection is gone: unset them.\n";
   out += "PortMonitor.destroy = function()\n";
+  if (has_checks()) out += "  pcall(arbc_checks_destroy)\n";
   std::set<std::string> owned;
   for (size_t k = 0; k < link_.parts.size(); ++k) {
     for (const std::string& e : conn(k).sets) {

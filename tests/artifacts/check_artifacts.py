@@ -227,6 +227,9 @@ def write_artifacts(arbc, plugin, inputs, out, cwd):
     # YARP cannot carry table_clean's delivery events: its own spec (docs/yarp.md).
     run([arbc, "build", os.path.join(inputs, "table_clean_yarp.spec"), "--target", "yarp", "-o",
          os.path.join(out, "yarp")], cwd)
+    # A YARP monitor with runtime checks (an assert over `emitted`, a list bound).
+    run([arbc, "build", os.path.join(inputs, "checks.spec"), "--target", "yarp", "-o",
+         os.path.join(out, "yarp")], cwd)
     run([arbc, "docs", spec, "-o", os.path.join(out, "docs")], cwd)
     run([arbc, "run", os.path.join(out, "build", "table_clean"), "--plugin", plugin,
          "--scenario", "mixed", "--seed", "1", "--duration", "60s",
@@ -245,7 +248,8 @@ def write_artifacts(arbc, plugin, inputs, out, cwd):
 
 def copy_inputs(inputs):
     for rel in ("specs/table_clean.spec", "specs/table_clean_yarp.spec", "specs/testing/gaze.spec",
-                "specs/testing/gaze.test.spec", "tests/verify/table_clean_take_mutant.spec"):
+                "specs/testing/gaze.test.spec", "tests/verify/table_clean_take_mutant.spec",
+                "tests/yarp_real/checks.spec"):
         shutil.copy(os.path.join(ROOT, rel), inputs)
     with open(os.path.join(inputs, "gaze.test.spec"), encoding="utf-8") as f:
         text = f.read()

@@ -63,10 +63,13 @@ class YarpTargetTest : public YarpTest {
     if (!HasFailure()) fs::remove_all(dir_, ec);
   }
 
-  // Builds only the yarp target of `spec`; fills yarp_dir_ and ports_.
-  void build_yarp(const std::string& spec, const std::string& app) {
+  // Builds only the yarp target of `spec` (a path, absolute or in the source tree) with the
+  // build options `options`; fills yarp_dir_ and ports_.
+  void build_yarp(const std::string& spec, const std::string& app,
+                  const std::string& options = "") {
     std::string arbc = ARBC_BINARY;
-    ASSERT_EQ(shell(arbc + " build '" + source_dir(spec) + "' --target yarp -o '" +
+    std::string path = fs::path(spec).is_absolute() ? spec : source_dir(spec);
+    ASSERT_EQ(shell(arbc + " build '" + path + "' --target yarp " + options + " -o '" +
                         (dir_ / "yarp").string() + "'",
                     dir_ / "build-yarp.log"),
               0)
@@ -231,6 +234,52 @@ TEST_F(YarpTargetTest, ABottleWithoutTheLayoutIsDroppedAndSaidOnce) {
       "`0.0 0.0 0.0` (docs/yarp.md#the-bottle-layout): got `left`";
   EXPECT_NE(log.find(said), std::string::npos) << log;
   EXPECT_EQ(log.find("got `0.5 up`"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
+}
+
+// The runtime checks a YARP monitor carries (docs/yarp.md#runtime-checks). checks.spec's proof
+// assumes lists of at most 4 elements: the monitor drops a longer one, says so once on the
+// receiver's stderr, and passes the next message.
+TEST_F(YarpTargetTest, RuntimeChecksDropAListLongerThanTheProofCovers) {
+  ASSERT_NO_FATAL_FAILURE(build_yarp("tests/yarp_real/checks.spec", "yarp_checks"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/Sensor/v:o", "1.0 2.0 3.0 4.0 4.5");
+  send("/Sensor/v:o", "1.0 2.0 3.0 4.0 4.5 1.0");
+  send("/Sensor/v:o", "1.0 2.0");
+  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("4.0"));
+  std::string log = receiver_log();
+  std::string said =
+      "arbc monitor Motor_cmd__pass (/Sensor/v:o -> /Motor/cmd:i): runtime check: dropped a "
+      "message with a list of 5 elements; the proof of 'pass' covers at most 4 (bad-value; later "
+      "ones are counted)";
+  EXPECT_NE(log.find(said), std::string::npos) << log;
+  EXPECT_EQ(log.find("a list of 6 elements"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
+}
+
+// The same app without the `accept` that keeps its assert over `emitted`, built with
+// --no-verify: the monitor delivers what the rule emits and says on the first breach which
+// value broke the assert; values that keep it pass without a word.
+TEST_F(YarpTargetTest, RuntimeChecksSayABrokenAssertOverEmitted) {
+  std::string text = slurp(source_dir("tests/yarp_real/checks.spec"));
+  const std::string keep = "    accept hi < 5.0;\n";
+  ASSERT_NE(text.find(keep), std::string::npos);
+  text.erase(text.find(keep), keep.size());
+  fs::path broken = dir_ / "broken.spec";
+  std::ofstream(broken) << text;
+  ASSERT_NO_FATAL_FAILURE(build_yarp(broken.string(), "yarp_checks", "--no-verify"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/Sensor/v:o", "1.0 2.0");
+  send("/Sensor/v:o", "1.0 6.0");
+  send("/Sensor/v:o", "7.0");
+  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("4.0", "12.0", "14.0"));
+  std::string log = receiver_log();
+  std::string said =
+      "arbc monitor Motor_cmd__pass (/Sensor/v:o -> /Motor/cmd:i): runtime check: assert "
+      "Motor.cmd: pass -> emitted < 10.0 broken: 'pass' delivered `12.0`, for which it is false "
+      "(later breaches are counted)";
+  EXPECT_NE(log.find(said), std::string::npos) << log;
+  EXPECT_EQ(log.find("delivered `14.0`"), std::string::npos) << log;
   EXPECT_TRUE(receiver_alive());
 }
 
