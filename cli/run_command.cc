@@ -145,7 +145,7 @@ struct RunArgs {
   bool no_verify = false;
   RunOptions options;
   std::string report_path;
-  std::string runtime_checks = "fail";  // --runtime-checks: fail, warn or off
+  std::string runtime_checks = "fail";  // --runtime-checks: stop, fail, warn or off
   TransportFlags transport;             // --transport, --host, --mediate, ... (cli/run_transport.h)
   RunStandIns stand_ins;                // --inputs, --stub, --stub-rate, --diff
 };
@@ -172,8 +172,9 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
   cli.add_option("--trace", options.trace_path, "write a JSON-lines trace to FILE");
   cli.add_option("--runtime-checks", a.runtime_checks,
                  "what a run that breaks a proved property or an assumption of the proof does: "
-                 "fail (exit 3, the default), warn (said, verdict kept) or off")
-      ->check(CLI::IsMember({"fail", "warn", "off"}));
+                 "stop (end the run there, exit 3), fail (exit 3 at its end, the default), warn "
+                 "(said, verdict kept) or off")
+      ->check(CLI::IsMember({"stop", "fail", "warn", "off"}));
   cli.add_option("--state", options.state_path,
                  "keep this mediator's memory of its own deliveries in FILE, so that one started "
                  "again goes on from it (docs/runtime.md#a-mediator-that-restarts)")
@@ -249,8 +250,14 @@ void note_memory(const model::App& app, const RunOptions& options) {
 
 // The runtime checks see every trace record, start with the run, and keep their share of a
 // mediator's memory (--state).
-void watch_claims(ClaimWatch& claims, RunOptions& options) {
-  options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+// `stop`: not null, the run to end at the first breach (set once the runtime exists).
+void watch_claims(ClaimWatch& claims, RunOptions& options, Runtime** stop) {
+  options.trace_watch = [&claims, stop](const TraceRecord& r, Trace& trace) {
+    size_t before = claims.violations().size();
+    claims.watch(r, trace);
+    if (stop && *stop && before == 0 && !claims.violations().empty())
+      (*stop)->request_stop("runtime check broken: " + claims.violations()[0].claim);
+  };
   options.on_start = [&claims](Nanos t) { claims.start(t); };
   options.on_finish = [&claims](Nanos end, Trace& trace) { claims.finish(end, &trace); };
   options.checks_memory = {
@@ -319,7 +326,9 @@ int run_command(std::span<char*> args) {
     return kExitBadInput;
   }
   bool watching = !claims.empty() && a.runtime_checks != "off";
-  if (watching) watch_claims(claims, options);
+  Runtime* stop_on_breach = nullptr;  // --runtime-checks stop: the runtime, once created
+  if (watching)
+    watch_claims(claims, options, a.runtime_checks == "stop" ? &stop_on_breach : nullptr);
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,
@@ -331,6 +340,7 @@ int run_command(std::span<char*> args) {
     print_errors(error);
     return kExitBadInput;
   }
+  stop_on_breach = runtime.get();
   report::ReportFile report_file;
   if (!a.report_path.empty()) {
     std::string open_error;
@@ -344,7 +354,7 @@ int run_command(std::span<char*> args) {
              a.report_path, report_file, proof,   describe_transport(a.transport, options)};
   if (stand_ins.active()) end.stand_ins = [&] { return stand_ins.summary(app); };
   if (watching) end.claims = &claims;
-  end.claims_fail = a.runtime_checks == "fail";
+  end.claims_fail = a.runtime_checks == "fail" || a.runtime_checks == "stop";
   interrupt.watch(kStuckGrace, [&] {
     give_up_stuck_run(end, interrupt.signal_name(), kStuckGrace);
     std::error_code ignored;

@@ -50,6 +50,13 @@ void Runtime::EnvironmentSlot::request_stop(std::string reason) {
   runtime->executor_->stop();
 }
 
+void Runtime::request_stop(const std::string& reason) {
+  if (!stop_reason_.empty()) return;
+  stop_reason_ = reason;
+  trace_.log(now(), "runtime", "stop: " + reason);
+  executor_->stop();
+}
+
 void Runtime::EnvironmentSlot::log(std::string_view message) {
   runtime->trace_.log(runtime->now(), "environment", message);
   runtime->report("environment: " + std::string(message));

@@ -149,6 +149,9 @@ class Runtime {
   void start();
   // Runs the executor until time `until` or a stop request.
   void advance(Nanos until);
+  // Ends the run after the task that runs now (on the executor's thread: a trace watch, say);
+  // stop_reason() is then `reason`, unless the run was already stopping.
+  void request_stop(const std::string& reason);
   // Stops modules, destroys monitors, finishes the environment, closes the trace.
   void shutdown();
 

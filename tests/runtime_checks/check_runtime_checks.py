@@ -216,6 +216,25 @@ def case_data_assert_broken(arbc):
            out, err)
 
 
+def case_stop_ends_the_run(arbc):
+    # `--runtime-checks stop` ends the run at the first breach: what came after is not run.
+    inputs = ['{"t": 0, "port": "Sensor.v", "value": 1.0}',
+              '{"t": 0.1, "port": "Sensor.v", "value": 6.0}',
+              '{"t": 0.5, "port": "Sensor.v", "value": 2.0}']
+    code, out, err = run(arbc, DOUBLED, inputs, "--no-verify", "--duration", "2s", checks="stop")
+    expect(code == 3, f"exit {code}, expected 3", out, err)
+    expect("stopped: runtime check broken: assert Motor.cmd: pass -> emitted < 10.0 (line 5)"
+           in out, "the run does not say it stopped at the breach", out, err)
+    row = next((ln.split() for ln in out.splitlines() if ln.startswith("pass ")), None)
+    expect(row is not None and row[1:3] == ["2", "2"],
+           f"the run went on after the breach: {row}", out, err)
+    # The same run under `fail` goes to its end.
+    code, out, err = run(arbc, DOUBLED, inputs, "--no-verify", "--duration", "2s")
+    row = next((ln.split() for ln in out.splitlines() if ln.startswith("pass ")), None)
+    expect(code == 3 and "stopped:" not in out and row[1:3] == ["3", "3"],
+           f"exit {code}, {row} under fail", out, err)
+
+
 SHARED = """app shared "one arm, two ports, nothing keeps them apart: refuted, run anyway";
 module Planner { out a: int; out b: int; }
 module Arm { out status: list<string>; }
