@@ -284,6 +284,18 @@ std::optional<model::App> load_app_or_say_why(const std::string& dir) {
   return std::nullopt;
 }
 
+// The plugins' modules against app.json's (what each provides, their ports' types); false after
+// saying what differs.
+static bool modules_match(const model::App& app, const std::string& dir, RunStandIns& stand_ins,
+                          const RunOptions& options) {
+  std::vector<std::string> mismatches =
+      check_modules(app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
+  if (mismatches.empty()) return true;
+  print_errors(mismatches);
+  print_stand_in_hint(app, stand_ins.registry(), options.host);
+  return false;
+}
+
 int run_command(std::span<char*> args) {
   RunArgs a;
   if (std::optional<int> exit = parse_args(args, a)) return *exit;
@@ -305,13 +317,7 @@ int run_command(std::span<char*> args) {
     print_errors({error});
     return kExitBadInput;
   }
-  std::vector<std::string> mismatches =
-      check_modules(app, (fs::path(dir) / "app.json").string(), stand_ins.registry(), options.host);
-  if (!mismatches.empty()) {
-    print_errors(mismatches);
-    print_stand_in_hint(app, stand_ins.registry(), options.host);
-    return kExitBadInput;
-  }
+  if (!modules_match(app, dir, stand_ins, options)) return kExitBadInput;
   std::string proof;
   int proved = prove_app_dir(app, dir, /*built_from_spec=*/!temp.path.empty(), a.no_verify, &proof);
   if (proved != kExitOk) return proved;

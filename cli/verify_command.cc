@@ -232,7 +232,7 @@ bool resolve_yarp_directory(std::string& input, std::vector<verify::InputReport>
                       ")";
   std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
   reports.push_back(
-      {input, {}, {harness::file_error(input, error.substr(input.size() + 2), "io")}});
+      {input, {}, {harness::file_error(input, error.substr(input.size() + 2), diag::Io)}});
   return false;
 }
 
@@ -317,7 +317,7 @@ int verify_command(std::span<char*> args) {
     if (!app) {
       std::fprintf(stderr, "arbc verify: %s\n", error.c_str());
       if (notes.errors.empty())
-        notes.errors.push_back(harness::file_error(input, error, "app-json"));
+        notes.errors.push_back(harness::file_error(input, error, diag::AppJson));
       reports.push_back({input, {}, std::move(notes.errors)});
       bad_input = true;
       continue;
@@ -341,7 +341,7 @@ int verify_command(std::span<char*> args) {
     std::optional<verify::VerifyReport> report = verify::verify_app(*app, options, &error);
     if (!report) {
       std::fprintf(stderr, "arbc verify: %s: %s\n", input.c_str(), error.c_str());
-      reports.push_back({input, {}, {harness::file_error(input, error, "app-json")}});
+      reports.push_back({input, {}, {harness::file_error(input, error, diag::AppJson)}});
       bad_input = true;
       continue;
     }

@@ -8,6 +8,7 @@
 
 #include "core/body_text.h"
 #include "core/body_types.h"
+#include "core/check_ids.h"
 #include "core/decimal_text.h"
 #include "core/instant.h"
 #include "core/json_diagnostic.h"
@@ -520,7 +521,7 @@ std::optional<App> from_app_json(std::string_view text, const std::string& file,
   Json root;
   if (JsonParseError e; !parse_json(text, &root, &e)) {
     *error = json_syntax_diagnostic(file, e);
-    error->id = "app-json";
+    error->id = diag::AppJson.text();
     return std::nullopt;
   }
   std::string err;
@@ -532,7 +533,7 @@ std::optional<App> from_app_json(std::string_view text, const std::string& file,
   // path that the text has.
   while (!path.empty() && !json_place(text, path)) path.pop_back();
   *error = json_diagnostic(file, text, path, JsonPart::Value, message);
-  error->id = "app-json";
+  error->id = diag::AppJson.text();
   return std::nullopt;
 }
 

@@ -1,13 +1,41 @@
-// Every diagnostic id any stage of arbc can report, with the stage and what it means. Ids are
-// stable: tests, editors and CI scripts match on them (`arbc check --list-ids` prints this
-// table). Each id of stage "check" has a golden case in tests/check/, each of stage "verify"
-// one in tests/verify/golden/, each of stage "yarp" one in tests/yarp_verify/
-// (tests/check/check_ids_covered.py fails otherwise); ids of stage "internal" report a bug in
-// arbc, which no input should reach.
+// Every diagnostic id any stage of arbc can report, with the stage and what it means, defined
+// once in core/check_ids.def (the model: Clang's DiagnosticKinds.def). Code that reports a
+// diagnostic names its id as a typed constant, `diag::UnknownRule`, never as a string: a
+// misspelt id does not compile, and `arbc check --list-ids` prints the same table.
 #pragma once
 
 #include <span>
 #include <string_view>
+
+namespace arbc {
+
+// A diagnostic id: a constant of namespace diag. Built from the table only (no conversion from
+// a string), so that every id a diagnostic carries is one of the table's.
+class DiagId {
+ public:
+  constexpr const char* text() const { return text_; }
+  constexpr operator std::string_view() const { return text_; }
+
+ private:
+  friend struct DiagTable;
+  constexpr explicit DiagId(const char* text) : text_(text) {}
+  const char* text_;
+};
+
+struct DiagTable {
+#define ARBC_DIAG(name, id, stage, meaning) static constexpr DiagId name{id};
+#include "core/check_ids.def"
+#undef ARBC_DIAG
+};
+
+// diag::UnknownRule, diag::Exclusive, ...
+namespace diag {
+#define ARBC_DIAG(name, id, stage, meaning) inline constexpr DiagId name = DiagTable::name;
+#include "core/check_ids.def"
+#undef ARBC_DIAG
+}  // namespace diag
+
+}  // namespace arbc
 
 namespace arbc::frontend {
 

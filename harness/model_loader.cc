@@ -19,11 +19,11 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 bool is_spec_path(const std::string& path) { return ends_with(path, ".spec"); }
 
-Diagnostic file_error(const std::string& file, std::string message, std::string id) {
+Diagnostic file_error(const std::string& file, std::string message, DiagId id) {
   Diagnostic d;
   d.loc.file = file;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   return d;
 }
 
@@ -52,14 +52,14 @@ std::optional<model::App> load_model(const std::string& path, LoadNotes* notes, 
            ": a build for YARP (arbc build --target yarp), which runs on YARP "
            "(docs/yarp.md#deploying-a-spec-on-yarp-step-by-step) and has no app.json; for "
            "arbc's runtime, build the spec without --target yarp";
-    notes->errors.push_back(file_error(path, err->substr(path.size() + 2), "io"));
+    notes->errors.push_back(file_error(path, err->substr(path.size() + 2), diag::Io));
     return std::nullopt;
   }
   if (!in) {
     *err = file +
            ": cannot read the file; give a spec (*.spec), an app.json, or a directory "
            "written by `arbc build`";
-    notes->errors.push_back(file_error(file, err->substr(file.size() + 2), "io"));
+    notes->errors.push_back(file_error(file, err->substr(file.size() + 2), diag::Io));
     return std::nullopt;
   }
   std::ostringstream text;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/check_ids.h"
 #include "core/diagnostic.h"
 
 namespace arbc::harness {
@@ -18,7 +19,7 @@ namespace arbc::harness {
 bool is_spec_path(const std::string& path);
 
 // An error about a whole file (no line): `io` (unreadable), `app-json` (does not load).
-Diagnostic file_error(const std::string& file, std::string message, std::string id);
+Diagnostic file_error(const std::string& file, std::string message, DiagId id);
 
 // What loading says besides the model.
 struct LoadNotes {

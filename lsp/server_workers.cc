@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "compiler/frontend/frontend.h"
+#include "core/check_ids.h"
 #include "lsp/lsp_diagnostics.h"
 #include "lsp/server.h"
 #include "lsp/verification.h"
@@ -18,7 +19,7 @@ std::shared_ptr<const Analysis> too_large(const Document& d) {
   a->text = d.text;
   Diagnostic diag;
   diag.loc.file = d.path;
-  diag.id = "io";
+  diag.id = diag::Io.text();
   diag.message = "the file is larger than " + std::to_string(frontend::kMaxSpecBytes >> 20) +
                  " MiB; a spec this large is surely not hand-written text";
   a->diagnostics.push_back(std::move(diag));

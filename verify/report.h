@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/check_ids.h"
 #include "core/diagnostic.h"
 #include "core/test_case.h"
 
@@ -19,23 +20,24 @@ enum class Verdict { Proved, Refuted, Unknown };
 const char* verdict_name(Verdict v);  // "proved", "refuted", "unknown"
 
 // Stable check ids, used in diagnostics, JSON, SARIF and docs/checks.md anchors.
-inline constexpr const char* kCheckExclusive = "exclusive";
-inline constexpr const char* kCheckDead = "dead";
-inline constexpr const char* kCheckUnfed = "unfed";
-inline constexpr const char* kCheckUnused = "unused";
-inline constexpr const char* kCheckOwnership = "ownership";
-inline constexpr const char* kCheckComplete = "complete";
-inline constexpr const char* kCheckAssert = "assert";
-inline constexpr const char* kCheckUnknown = "unknown";    // the solver gave no answer
-inline constexpr const char* kCheckInternal = "internal";  // Z3 and the runtime disagree
-inline constexpr const char* kCheckResource = "resource";
-inline constexpr const char* kCheckTemporal = "temporal";  // a property over time is violated
+inline constexpr const char* kCheckExclusive = diag::Exclusive.text();
+inline constexpr const char* kCheckDead = diag::Dead.text();
+inline constexpr const char* kCheckUnfed = diag::Unfed.text();
+inline constexpr const char* kCheckUnused = diag::Unused.text();
+inline constexpr const char* kCheckOwnership = diag::Ownership.text();
+inline constexpr const char* kCheckComplete = diag::Complete.text();
+inline constexpr const char* kCheckAssert = diag::Assert.text();
+inline constexpr const char* kCheckUnknown = diag::Unknown.text();    // the solver gave no answer
+inline constexpr const char* kCheckInternal = diag::Internal.text();  // Z3 and the runtime disagree
+inline constexpr const char* kCheckResource = diag::Resource.text();
+inline constexpr const char* kCheckTemporal =
+    diag::Temporal.text();  // a property over time is violated
 // A response whose window cannot close within --temporal-bound messages at the given rates.
-inline constexpr const char* kCheckTemporalBound = "temporal-bound";
+inline constexpr const char* kCheckTemporalBound = diag::TemporalBound.text();
 // A property over time about an event nothing can put into its port's container: it says nothing.
-inline constexpr const char* kCheckVacuous = "vacuous";
+inline constexpr const char* kCheckVacuous = diag::Vacuous.text();
 // A rule that accepts no message whose lists have at most --list-bound elements.
-inline constexpr const char* kCheckListBound = "list-bound";
+inline constexpr const char* kCheckListBound = diag::ListBound.text();
 
 // A decision state: which of the port's events are present. Both lists are sorted.
 struct EventState {

@@ -9,6 +9,7 @@
 #include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/lowered_app.h"
 #include "core/app_json.h"
+#include "core/check_ids.h"
 #include "core/sha256.h"
 
 namespace arbc::codegen {
@@ -86,7 +87,7 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
     if (!g.compiles) {
       Diagnostic d;
       d.loc = c.loc;
-      d.id = "codegen";
+      d.id = diag::Codegen.text();
       d.message = "internal error: the monitor generated for '" + c.name + "' is not valid Lua (" +
                   g.lua_error + "); please report this with the spec";
       result.diagnostics.push_back(std::move(d));
@@ -101,7 +102,7 @@ CodegenResult EmbeddedTarget::generate(const lower::LoweredApp& lowered) const {
     std::string lua_error;
     if (!frontend::LuaSyntaxChecker().check(*claims, kClaimsScript, &lua_error)) {
       Diagnostic d;
-      d.id = "codegen";
+      d.id = diag::Codegen.text();
       d.message = "internal error: the claims script generated is not valid Lua (" + lua_error +
                   "); please report this with the spec";
       result.diagnostics.push_back(std::move(d));

@@ -8,6 +8,7 @@
 #include "compiler/codegen/yarp_constraint.h"
 #include "compiler/codegen/yarp_layout_example.h"
 #include "core/artifact_path.h"
+#include "core/check_ids.h"
 #include "core/join.h"
 
 namespace arbc::codegen {
@@ -22,7 +23,7 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
 Diagnostic unsupported(const model::Connection& c, const std::string& what) {
   Diagnostic d;
   d.loc = c.loc;
-  d.id = "codegen";
+  d.id = diag::Codegen.text();
   d.message = "the yarp target cannot write '" + c.name + "': " + what;
   return d;
 }

@@ -8,6 +8,7 @@
 #include "compiler/codegen/yarp_names.h"
 #include "compiler/frontend/lua_syntax.h"
 #include "compiler/lower/lowered_app.h"
+#include "core/check_ids.h"
 
 namespace arbc::codegen {
 
@@ -22,7 +23,7 @@ bool unique_port_names(const model::App& app, const YarpNames& names, Diagnostic
       auto [it, fresh] = seen.emplace(y, q);
       if (fresh) continue;
       d->loc = p.loc;
-      d->id = "codegen";
+      d->id = diag::Codegen.text();
       d->message = "ports " + it->second + " and " + q + " would both be the YARP port " + y +
                    "; name one of them in the deployment file's \"topics\"";
       return false;
@@ -41,7 +42,7 @@ bool no_delivery_events(const model::App& app, std::vector<Diagnostic>& out) {
     if (!p || p->direction != model::Direction::In) continue;
     Diagnostic d;
     d.loc = e.loc;
-    d.id = "codegen";
+    d.id = diag::Codegen.text();
     d.message = "delivery event '" + e.name + "' (what " + e.source +
                 " delivers) cannot be built for YARP: each YARP arbitrator keeps its events in "
                 "its own module's process, where no other port's delivery can set them; build "
@@ -82,7 +83,7 @@ CodegenResult YarpTarget::generate(const lower::LoweredApp& lowered) const {
     if (!lua.check(text, path, &error)) {
       Diagnostic d;
       d.loc = app.connections[link.parts[0]].loc;
-      d.id = "codegen";
+      d.id = diag::Codegen.text();
       d.message = "internal error: the YARP monitor generated for '" + link.id +
                   "' is not valid Lua (" + error + "); please report this with the spec";
       result.diagnostics.push_back(std::move(d));

@@ -76,7 +76,7 @@ void Builder::add_app(Spec& spec, ArbcParser::AppDeclContext* c) {
     error(app.loc,
           "the app is already declared as '" + spec.app->name + "' at line " +
               std::to_string(spec.app->loc.line) + ": a spec describes one app",
-          "duplicate");
+          diag::Duplicate);
     return;
   }
   spec.app = std::move(app);
@@ -314,7 +314,7 @@ void Builder::add_tests_for(Spec& spec, ArbcParser::TestsForDeclContext* c) {
           "this file already names the app it tests (\"" + spec.tests_for->path + "\" at line " +
               std::to_string(spec.tests_for->loc.line) +
               "); a tests file tests one app: keep one `tests for`",
-          "duplicate");
+          diag::Duplicate);
     return;
   }
   spec.tests_for = std::move(f);

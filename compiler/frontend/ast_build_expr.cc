@@ -48,7 +48,7 @@ bool Builder::too_deep(int depth, const Loc& where) {
     error(where,
           "expression nested deeper than " + std::to_string(kMaxNesting) +
               " levels: split it with `let` or named constants",
-          "nesting-too-deep");
+          diag::NestingTooDeep);
   }
   reported_depth_ = true;
   return true;

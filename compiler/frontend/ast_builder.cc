@@ -9,11 +9,11 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-void Builder::error(const Loc& where, std::string message, std::string id) {
+void Builder::error(const Loc& where, std::string message, DiagId id) {
   Diagnostic d;
   d.loc = where;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   out_.push_back(std::move(d));
 }
 
@@ -50,7 +50,7 @@ std::string Builder::decode_string(antlr4::tree::TerminalNode* node) {
         error(where,
               std::string("unknown escape sequence '\\") + c +
                   "' in a string: use \\\", \\\\, \\n, \\t or \\r",
-              "bad-escape");
+              diag::BadEscape);
       }
     }
   }
@@ -72,7 +72,7 @@ TypeExpr Builder::type_expr(ArbcParser::TypeExprContext* ctx, int depth) {
   t.loc = loc(ctx);
   if (depth > kMaxNesting) {
     error(t.loc, "type nested deeper than " + std::to_string(kMaxNesting) + " levels",
-          "nesting-too-deep");
+          diag::NestingTooDeep);
     t.kind = TypeExpr::Kind::Bool;
     return t;
   }
@@ -89,7 +89,7 @@ TypeExpr Builder::type_expr(ArbcParser::TypeExprContext* ctx, int depth) {
       if (named->typeExpr()) {
         t.element = std::make_unique<TypeExpr>(type_expr(named->typeExpr(), depth + 1));
       } else {
-        error(t.loc, "'list' needs an element type, e.g. list<string>", "bad-type");
+        error(t.loc, "'list' needs an element type, e.g. list<string>", diag::BadType);
         t.element = std::make_unique<TypeExpr>();
         t.element->loc = t.loc;
       }
@@ -101,7 +101,7 @@ TypeExpr Builder::type_expr(ArbcParser::TypeExprContext* ctx, int depth) {
       if (name == scalar) t.kind = kind;
     if (named->typeExpr())
       error(loc(named->typeExpr()), "type '" + name + "' takes no type argument; only list<T> does",
-            "bad-type");
+            diag::BadType);
     return t;
   }
   auto* record = as<ArbcParser::RecordTypeContext>(ctx);

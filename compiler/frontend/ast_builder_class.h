@@ -17,6 +17,7 @@
 #include "compiler/frontend/ast.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/token_text.h"
+#include "core/check_ids.h"
 #include "core/diagnostic.h"
 
 namespace arbc::frontend {
@@ -64,7 +65,7 @@ class Builder {
   }
 
   // ast_builder.cc
-  void error(const ast::Loc& where, std::string message, std::string id);
+  void error(const ast::Loc& where, std::string message, DiagId id);
   std::string decode_string(antlr4::tree::TerminalNode* node);
   static double seconds_of_duration(const std::string& text);
   ast::TypeExpr type_expr(ArbcParser::TypeExprContext* ctx, int depth = 0);

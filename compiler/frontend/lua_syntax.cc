@@ -3,6 +3,8 @@
 #include <lua.hpp>
 #include <string_view>
 
+#include "core/check_ids.h"
+
 namespace arbc::frontend {
 
 LuaSyntaxChecker::LuaSyntaxChecker() : L_(luaL_newstate()) {}
@@ -75,7 +77,7 @@ std::optional<Diagnostic> lua_syntax_diagnostic(const std::string& text, const s
   std::string error;
   if (check_lua_syntax(text, path, &error)) return std::nullopt;
   Diagnostic d;
-  d.id = "script";
+  d.id = diag::Script.text();
   d.loc.file = path;
   // Lua's message is "PATH:LINE: what"; the location goes into the diagnostic's own fields.
   std::string_view what = error;

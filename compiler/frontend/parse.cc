@@ -18,6 +18,7 @@
 #include "compiler/frontend/syntax_errors.h"
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/utf8.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 
@@ -97,7 +98,7 @@ void report_syntax_errors(const std::vector<antlr4::Token*>& tokens, const std::
 }
 
 Diagnostic file_error(const std::string& file, int line, int column, std::string message,
-                      std::string id) {
+                      DiagId id) {
   Diagnostic d;
   d.loc.file = file;
   d.loc.line = line;
@@ -105,7 +106,7 @@ Diagnostic file_error(const std::string& file, int line, int column, std::string
   d.loc.end_line = line;
   d.loc.end_column = column + 1;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   return d;
 }
 
@@ -129,7 +130,7 @@ std::optional<std::pair<int, int>> find_lone_carriage_return(std::string_view te
 // Placeholders for over-deep expressions would only cause follow-on type errors.
 void without_deep_placeholders(ParseResult& result) {
   for (const Diagnostic& d : result.diagnostics)
-    if (d.id == "nesting-too-deep") result.spec.reset();
+    if (d.id == diag::NestingTooDeep.text()) result.spec.reset();
 }
 
 }  // namespace
@@ -143,7 +144,7 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
         file_error(file, bad->line, bad->column,
                    "the file is not valid UTF-8 (byte " + std::string(byte) + " at offset " +
                        std::to_string(bad->offset) + "): save it as UTF-8 text",
-                   "invalid-utf8"));
+                   diag::InvalidUtf8));
     return result;
   }
 
@@ -154,7 +155,7 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
         "end a line here: the file would read as one line; save it with LF (or CR LF) line "
         "endings, e.g. `tr '\\r' '\\n' < " +
             file + " > fixed.spec`",
-        "line-endings"));
+        diag::LineEndings));
     return result;
   }
 
@@ -186,7 +187,7 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
   if (tokens.size() == 1) {  // only EOF
     result.diagnostics.push_back(
         file_error(file, 0, 0, "the spec is empty: declare the app, its modules and their rules",
-                   "empty-spec"));
+                   diag::EmptySpec));
     return result;
   }
   if (!check_nesting(tokens, lexed.lexer.getVocabulary(), file, result.diagnostics)) return result;
@@ -197,7 +198,7 @@ ParseResult parse_spec(std::string_view text, const std::string& file, size_t tw
     report_syntax_errors(tokens, file, result.diagnostics);
     if (result.diagnostics.empty()) {  // cannot happen, but never stay silent
       result.diagnostics.push_back(
-          file_error(file, 1, 1, "the spec does not follow the grammar", "syntax"));
+          file_error(file, 1, 1, "the spec does not follow the grammar", diag::Syntax));
     }
     return result;
   }

@@ -15,7 +15,8 @@ using namespace ast;
 void Sema::check_assume(AssumeDecl& a) {
   auto ev = events_.find(a.event);
   if (ev == events_.end()) {
-    unknown(a.event_loc, "unknown event '" + a.event + "'", "unknown-event", a.event, event_names_);
+    unknown(a.event_loc, "unknown event '" + a.event + "'", diag::UnknownEvent, a.event,
+            event_names_);
   } else if (spec_.event_symbols[ev->second].kind == EventSymbol::Kind::Manual) {
     // An event that monitor code sets belongs to the app: assuming when it is present would
     // assume the app's own behaviour, which is what the checker has to decide.
@@ -23,7 +24,7 @@ void Sema::check_assume(AssumeDecl& a) {
           "'" + a.event + "' is set by monitor code (`event " + a.event +
               ";`), not reported by the environment; an assumption is about an event that a "
               "feed sets: a status flag (`events from M.p { ... }`) or a derived event",
-          "assume-event");
+          diag::AssumeEvent);
   }
   if (a.absent_for.expr) check_duration(a.absent_for, "the `for` period");
   a.after_decl = unique_rule(a.after, a.after_loc, "an assumption");
@@ -37,7 +38,7 @@ void Sema::check_assume(AssumeDecl& a) {
     error(a.until_loc,
           "`assume " + a.event + " only after " + a.after + " until " + a.until +
               "` names one rule twice: name the rule after which " + a.event + " is withdrawn",
-          "assume-pair");
+          diag::AssumePair);
     bad = true;
   } else if (a.until_decl && a.after_decl->port != a.until_decl->port) {
     error(a.until_loc,
@@ -45,7 +46,7 @@ void Sema::check_assume(AssumeDecl& a) {
               a.until + "' into " + a.until_decl->port->port.qualified() +
               "; an assumption relates two rules of one port (the model checker follows one "
               "port's messages)",
-          "assume-pair");
+          diag::AssumePair);
     bad = true;
   }
   if (bad || spec_.event_symbols[ev->second].kind == EventSymbol::Kind::Manual ||

@@ -77,7 +77,7 @@ void Sema::check_script_file(const Stmt& s) {
     error(s.loc,
           "script file '" + s.text + "' not found (" + where +
               "a script path is relative to the spec's folder)",
-          "script-missing");
+          diag::ScriptMissing);
     return;
   }
   std::ifstream in(script, std::ios::binary);
@@ -85,7 +85,7 @@ void Sema::check_script_file(const Stmt& s) {
   text << in.rdbuf();
   if (!in) {
     error(s.loc, "cannot read script file '" + script.string() + "': check its permissions",
-          "script");
+          diag::Script);
   } else if (auto d = lua_syntax_diagnostic(text.str(), script.string(), s.loc)) {
     out_.push_back(std::move(*d));
   }
@@ -117,7 +117,7 @@ void Sema::check_script_alone(const Block& body, const BodyContext& ctx) {
       error(s->loc,
             "a body with `script` holds nothing else: the script's accept/update replace "
             "the generated monitor",
-            "script-alone");
+            diag::ScriptAlone);
       return;
     }
   }
@@ -133,9 +133,9 @@ void Sema::check_stmt(Stmt& s, Scope& scope, BodyContext& ctx) {
     case Stmt::Kind::Accept:
       if (ctx.in_every) {
         error(s.loc, "`accept` filters messages; an `every` body runs on a timer",
-              "statement-context");
+              diag::StatementContext);
       }
-      check_condition(*s.expr, scope, "the condition of `accept`", "type-mismatch");
+      check_condition(*s.expr, scope, "the condition of `accept`", diag::TypeMismatch);
       return;
     case Stmt::Kind::Set:
     case Stmt::Kind::Unset:
@@ -151,7 +151,7 @@ void Sema::check_stmt(Stmt& s, Scope& scope, BodyContext& ctx) {
     case Stmt::Kind::Script:
       if (!ctx.top_level) {
         error(s.loc, "`script` replaces the whole body: put it at the top level",
-              "statement-context");
+              diag::StatementContext);
       }
       check_script_file(s);
       return;
@@ -164,15 +164,16 @@ void Sema::check_local(Stmt& s, Scope& scope, const BodyContext& ctx) {
   check_expr(*s.expr, scope);
   if (s.kind == Stmt::Kind::Var && (!ctx.top_level || ctx.in_every)) {
     error(s.loc, "`var` declares monitor state: put it at the top level of the body",
-          "statement-context");
+          diag::StatementContext);
   }
   if (const Binding* existing = scope.find(s.name); existing && !existing->other_port) {
     error(s.name_loc,
           "'" + s.name + "' is already defined here as " + local_kind(existing->kind) +
               "; choose another name",
-          "duplicate");
+          diag::Duplicate);
   } else if (consts_.count(s.name)) {
-    error(s.name_loc, "'" + s.name + "' is already a constant; choose another name", "duplicate");
+    error(s.name_loc, "'" + s.name + "' is already a constant; choose another name",
+          diag::Duplicate);
   }
   Binding b;
   b.kind = s.kind == Stmt::Kind::Let ? NameKind::Let : NameKind::Var;
@@ -189,9 +190,9 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
   if (!b) {
     if (consts_.count(s.name)) {
       error(s.name_loc, "'" + s.name + "' is a constant; only `var` variables can be assigned",
-            "assign");
+            diag::Assign);
     } else {
-      Diagnostic& d = unknown(s.name_loc, "unknown variable '" + s.name + "'", "unknown-name",
+      Diagnostic& d = unknown(s.name_loc, "unknown variable '" + s.name + "'", diag::UnknownName,
                               s.name, scope.names());
       if (d.notes.empty()) {  // no close name: state is declared before it is assigned
         Diagnostic note;
@@ -206,7 +207,7 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
   if (b->kind != NameKind::Var) {
     error(s.name_loc,
           "'" + s.name + "' is " + local_kind(b->kind) + "; only `var` variables can be assigned",
-          "assign");
+          diag::Assign);
     return;
   }
   s.var_decl = b->local;
@@ -214,7 +215,7 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
     value_type_error(
         *s.expr, b->type,
         "'" + s.name + "' holds " + describe(b->type) + ", not " + describe(s.expr->type),
-        "type-mismatch");
+        diag::TypeMismatch);
   }
 }
 
@@ -229,7 +230,7 @@ void Sema::check_set(Stmt& s) {
       error(s.name_loc,
             "event '" + s.name + "' is fed from " + event.source +
                 "; monitor code sets only events declared with `event " + s.name + ";`",
-            "set-fed-event");
+            diag::SetFedEvent);
     }
   }
   if (s.duration) check_duration(*s.duration, "the lifetime of `set`");
@@ -237,7 +238,7 @@ void Sema::check_set(Stmt& s) {
 
 // `if`: a bool condition; both branches are nested bodies.
 void Sema::check_if(Stmt& s, Scope& scope, BodyContext& ctx) {
-  check_condition(*s.expr, scope, "the condition of `if`", "type-mismatch");
+  check_condition(*s.expr, scope, "the condition of `if`", diag::TypeMismatch);
   BodyContext inner = ctx;
   inner.top_level = false;
   check_body(s.body, scope, inner);
@@ -251,14 +252,14 @@ void Sema::check_emit(Stmt& s, Scope& scope, const BodyContext& ctx) {
   check_expr(*s.expr, scope);
   if (ctx.in_every) {
     error(s.loc, "`emit` delivers a message; an `every` body runs on a timer and has none",
-          "statement-context");
+          diag::StatementContext);
     return;
   }
   if (s.expr->type && ctx.destination_type && !assignable(*s.expr->type, *ctx.destination_type)) {
     value_type_error(*s.expr, ctx.destination_type,
                      ctx.owner + " emits " + describe(s.expr->type) + ", but " + ctx.destination +
                          " takes " + describe(ctx.destination_type),
-                     "emit-type");
+                     diag::EmitType);
   }
 }
 
@@ -267,9 +268,9 @@ void Sema::check_throttle(Stmt& s, BodyContext& ctx) {
   check_duration(*s.duration, "the `throttle` period");
   if (!ctx.top_level || ctx.in_every) {
     error(s.loc, "`throttle` limits the whole connection: put it at the top level of the body",
-          "statement-context");
+          diag::StatementContext);
   } else if (ctx.saw_throttle) {
-    error(s.loc, "a body has at most one `throttle`", "statement-context");
+    error(s.loc, "a body has at most one `throttle`", diag::StatementContext);
   }
   ctx.saw_throttle = true;
 }
@@ -278,9 +279,9 @@ void Sema::check_throttle(Stmt& s, BodyContext& ctx) {
 void Sema::check_every(Stmt& s, Scope& scope, BodyContext& ctx) {
   check_duration(*s.duration, "the `every` period");
   if (!ctx.top_level || ctx.in_every) {
-    error(s.loc, "`every` must be at the top level of the body", "statement-context");
+    error(s.loc, "`every` must be at the top level of the body", diag::StatementContext);
   } else if (ctx.saw_every) {
-    error(s.loc, "a body has at most one `every`", "statement-context");
+    error(s.loc, "a body has at most one `every`", diag::StatementContext);
   }
   ctx.saw_every = true;
   BodyContext inner = ctx;

@@ -78,7 +78,7 @@ void Sema::fold_operator(Expr& e) {
   std::string why;
   if (binary && (e.op == "/" || e.op == "%") && b && is_zero(*b)) {
     fold_binary(e.op, a ? *a : *b, *b, &why);  // says what dividing by zero gives
-    error(e.args[1]->loc, why, "division-by-zero");
+    error(e.args[1]->loc, why, diag::DivisionByZero);
     e.type = nullptr;
     return;
   }
@@ -86,7 +86,7 @@ void Sema::fold_operator(Expr& e) {
   std::optional<ConstValue> v =
       binary ? fold_binary(e.op, *a, *b, &why) : fold_unary(e.op, *a, &why);
   if (!v) {
-    error(e.loc, why, "int-overflow");
+    error(e.loc, why, diag::IntOverflow);
     e.type = nullptr;
     return;
   }
@@ -100,7 +100,7 @@ void Sema::check_const(size_t index) {
     error(c.loc,
           "constant '" + c.name +
               "' is defined in terms of itself: compute it from literals and other constants",
-          "not-constant");
+          diag::NotConstant);
     const_state_[index] = 2;
     return;
   }
@@ -114,7 +114,7 @@ void Sema::check_const(size_t index) {
     error(c.value->loc,
           "the value of constant '" + c.name +
               "' must be computed from literals and other constants with operators",
-          "not-constant");
+          diag::NotConstant);
     c.value->type = nullptr;
     return;
   }

@@ -11,6 +11,7 @@
 
 #include "compiler/frontend/ast.h"
 #include "compiler/frontend/const_fold.h"
+#include "core/check_ids.h"
 #include "core/diagnostic.h"
 
 namespace arbc::frontend {
@@ -167,10 +168,10 @@ class Sema {
   void check_test_window(ast::TestWindow& w, bool instant_only);
 
   // ---- reporting (sema_decls.cc) ----
-  Diagnostic& error(const ast::Loc& loc, std::string message, std::string id);
+  Diagnostic& error(const ast::Loc& loc, std::string message, DiagId id);
   // Reports an unknown name, with "did you mean" when a candidate is close.
-  Diagnostic& unknown(const ast::Loc& loc, std::string message, std::string id,
-                      const std::string& name, const std::vector<std::string>& candidates);
+  Diagnostic& unknown(const ast::Loc& loc, std::string message, DiagId id, const std::string& name,
+                      const std::vector<std::string>& candidates);
   // Adds the note "did you mean 'X'?" (an editor's quick fix puts X in place of `d`'s range).
   void did_you_mean(Diagnostic& d, const std::string& meant);
   // An unknown event with no close name: how to declare it, for monitor code to set
@@ -180,7 +181,7 @@ class Sema {
   // reported at the value, or, when a record literal in it names a field `want` lacks, at
   // that name with "did you mean" (stray_field.h).
   Diagnostic& value_type_error(const ast::Expr& value, const TypePtr& want, std::string message,
-                               std::string id);
+                               DiagId id);
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
 
@@ -208,7 +209,7 @@ class Sema {
   void check_record(ast::Expr& e, Scope& scope);
   void check_list(ast::Expr& e, Scope& scope);
   // A condition (`accept`, `if`, a derived event's predicate): reports non-bool with `id`.
-  void check_condition(ast::Expr& e, Scope& scope, const std::string& what, const char* id);
+  void check_condition(ast::Expr& e, Scope& scope, const std::string& what, DiagId id);
   // Resolves a duration position to whole nanoseconds; `what` names it ("the lifetime").
   void check_duration(ast::Duration& d, const std::string& what);
   // The whole nanoseconds of `e`, a positive duration literal or constant; nullopt, with the

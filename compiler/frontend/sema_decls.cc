@@ -49,7 +49,7 @@ void Sema::check_app_declared() {
   start.line = 1;
   start.column = 1;
   error(start, "the spec has no app declaration: start it with `app NAME \"what it does\";`",
-        "missing-app");
+        diag::MissingApp);
 }
 
 // ---- types, constants, modules --------------------------------------------------------------
@@ -62,9 +62,10 @@ void Sema::declare_types() {
         error(t.loc,
               "type '" + t.name + "' is already defined at " + where_defined(types_[t.name]->loc) +
                   kRenameOne,
-              "duplicate");
+              diag::Duplicate);
       } else {
-        error(t.loc, "'" + t.name + "' is a built-in type and cannot be redefined", "duplicate");
+        error(t.loc, "'" + t.name + "' is a built-in type and cannot be redefined",
+              diag::Duplicate);
       }
       continue;
     }
@@ -81,7 +82,7 @@ void Sema::declare_consts() {
       error(c.loc,
             "constant '" + c.name + "' is already defined at " +
                 where_defined(spec_.consts[consts_[c.name]].loc) + kRenameOne,
-            "duplicate");
+            diag::Duplicate);
       const_state_[i] = 2;
       continue;
     }
@@ -96,7 +97,7 @@ void Sema::declare_modules() {
       error(m.loc,
             "module '" + m.name + "' is already defined at " +
                 where_defined(modules_[m.name]->loc) + kRenameOne,
-            "duplicate");
+            diag::Duplicate);
     } else {
       modules_[m.name] = &m;
     }
@@ -106,7 +107,7 @@ void Sema::declare_modules() {
         error(p.loc,
               "module '" + m.name + "' already has a port '" + p.name + "' (" +
                   where_defined(ports[p.name]->loc) + ")" + kRenameOne,
-              "duplicate");
+              diag::Duplicate);
       }
       ports[p.name] = &p;
       resolve_type(p.type);
@@ -140,7 +141,7 @@ void Sema::add_event(EventSymbol symbol) {
     error(symbol.loc,
           "event '" + symbol.name + "' is already declared at " +
               where_defined(spec_.event_symbols[it->second].loc) + kRenameOne,
-          "duplicate");
+          diag::Duplicate);
     return;
   }
   events_[symbol.name] = spec_.event_symbols.size();
@@ -168,7 +169,7 @@ std::optional<Nanos> Sema::fail_open_after(std::optional<FailOpen>& f) {
           "`otherwise " + f->word +
               " after ...`: a feed that has not spoken can only count as "
               "absent; write `otherwise absent after D`",
-          "fail-open");
+          diag::FailOpen);
     return std::nullopt;
   }
   check_duration(f->after, "the time a feed may stay silent");
@@ -183,7 +184,7 @@ void Sema::declare_status_events(StatusEventDecl& e) {
       error(e.source.loc,
             "`events from` reads status flags, so " + e.source.qualified() +
                 " must carry list<string>, not " + describe(t),
-            "status-source-type");
+            diag::StatusSourceType);
     }
   }
   if (e.lifetime) check_duration(*e.lifetime, "the event lifetime");
@@ -193,7 +194,7 @@ void Sema::declare_status_events(StatusEventDecl& e) {
       error(entry.loc,
             "flag \"" + entry.flag + "\" is already mapped to an event at " +
                 where_defined(flags[entry.flag]),
-            "duplicate");
+            diag::Duplicate);
     }
     flags[entry.flag] = entry.loc;
     EventSymbol s;
@@ -221,7 +222,7 @@ bool Sema::resolve_derived_source(DerivedEventDecl& e) {
             " is an `in` port that is not arbitrated; a derived event reads an `out` port's "
             "messages, or what an arbitrated `in` port delivers (`arbitrate " +
             q + " { ... }`)",
-        "port-direction");
+        diag::PortDirection);
   return false;
 }
 
@@ -230,7 +231,7 @@ void Sema::check_derived_predicates() {
     Scope scope;
     bind_message(scope, e.source, resolve_derived_source(e));
     check_condition(*e.predicate, scope, "the predicate of derived event '" + e.name + "'",
-                    "predicate-type");
+                    diag::PredicateType);
   }
 }
 
@@ -241,7 +242,7 @@ void Sema::check_domain() {
       if (!events_.count(n.name)) {
         unknown_event(n.loc, n.name, false);
       } else if (!seen.insert(n.name).second) {
-        error(n.loc, "event '" + n.name + "' is listed twice", "duplicate");
+        error(n.loc, "event '" + n.name + "' is listed twice", diag::Duplicate);
       }
     }
   }
@@ -258,7 +259,7 @@ void Sema::check_arbitration(ArbitrateDecl& a) {
     error(a.port.loc,
           port + " is already arbitrated at " + where_defined(arbitrated_[port]->loc) +
               ": put all its rules in one `arbitrate` block",
-          "duplicate");
+          diag::Duplicate);
   } else {
     arbitrated_[port] = &a;
   }
@@ -273,7 +274,7 @@ void Sema::check_arbitration(ArbitrateDecl& a) {
       error(r.loc,
             "port " + port + " already has a rule '" + r.name + "' (" +
                 where_defined(names[r.name]->loc) + ")" + kRenameOne,
-            "duplicate");
+            diag::Duplicate);
     }
     names[r.name] = &r;
     bool source_ok = resolve_port(r.source, "source", "rule '" + r.name + "'");
@@ -299,7 +300,7 @@ void Sema::check_rule_when(Rule& r, const std::string& port, const Rule*& otherw
     error(r.when->loc,
           "port " + port + " already has an `otherwise` rule ('" + otherwise_rule->name + "', " +
               where_defined(otherwise_rule->loc) + "); at most one per port",
-          "otherwise");
+          diag::Otherwise);
   }
   otherwise_rule = &r;
 }
@@ -314,18 +315,18 @@ void Sema::check_rule_hold(ArbitrateDecl& a, size_t i) {
       error(
           r.hold->expr->loc,
           "`hold` applies only to rules of a `by priority` port; " + port + " is not `by priority`",
-          "hold-without-priority");
+          diag::HoldWithoutPriority);
     } else if (lowest) {
       error(r.hold->expr->loc,
             "rule '" + r.name + "' is the lowest priority of " + port +
                 ": nothing below it to suppress, so it takes no `hold`",
-            "hold-on-lowest");
+            diag::HoldOnLowest);
     }
   } else if (a.by_priority && !lowest) {
     error(r.loc,
           "rule '" + r.name + "' outranks later rules of " + port +
               ": say how long it suppresses them with `hold D` (e.g. hold 1s)",
-          "hold-missing");
+          diag::HoldMissing);
   }
 }
 
@@ -348,7 +349,7 @@ void Sema::check_monitor(const MonitorSite& site, const std::string& owner,
               (body.empty() ? "" : " on a path without `emit`") + ": " + site.source->qualified() +
               " carries " + describe(message_type) + " but " + site.destination + " takes " +
               describe(site.destination_type) + " (add `emit VALUE;`)",
-          "emit-type");
+          diag::EmitType);
   }
 }
 
@@ -364,13 +365,13 @@ void Sema::check_connect(ConnectDecl& c) {
       error(c.destination.loc,
             port + " is arbitrated (" + where_defined(arbitrated_[port]->loc) +
                 "): add a rule to its `arbitrate` block instead of a `connect`",
-            "connect-into-arbitrated");
+            diag::ConnectIntoArbitrated);
     } else if (fed_.count(port)) {
       error(c.destination.loc,
             port + " already has a source (the connect at " + where_defined(fed_[port]->loc) +
                 "): two sources into one port must be arbitrated with `arbitrate " + port +
                 " { ... }`",
-            "fan-in");
+            diag::FanIn);
     } else {
       fed_[port] = &c;
     }
@@ -388,7 +389,7 @@ void Sema::check_assert(AssertDecl& a) {
             a.port.qualified() +
                 " has no `arbitrate` block: assertions are about the rules "
                 "of an arbitrated port",
-            "not-arbitrated");
+            diag::NotArbitrated);
     } else {
       std::vector<std::string> names;
       for (const Rule& r : it->second->rules) {
@@ -397,7 +398,7 @@ void Sema::check_assert(AssertDecl& a) {
       }
       if (!a.rule_decl) {
         unknown(a.rule_loc, "port " + a.port.qualified() + " has no rule '" + a.rule + "'",
-                "unknown-rule", a.rule, names);
+                diag::UnknownRule, a.rule, names);
       }
     }
   }

@@ -20,7 +20,7 @@ void Sema::check_duration(Duration& d, const std::string& what) {
     std::snprintf(n_text, sizeof n_text, "%g", e.number);
     std::string n = n_text;
     error(e.loc, what + " needs a unit: write e.g. " + n + "s, " + n + "ms or " + n + "min",
-          "duration");
+          diag::Duration);
     return;
   }
   Scope empty;
@@ -30,13 +30,13 @@ void Sema::check_duration(Duration& d, const std::string& what) {
     error(e.loc,
           "constant '" + e.text + "' is " + describe(e.type) + ", but " + what +
               " must be a duration such as 500ms or 1s",
-          "duration");
+          diag::Duration);
     return;
   }
   double seconds =
       e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
   if (!(seconds > 0) || !std::isfinite(seconds)) {
-    error(e.loc, what + " must be a positive duration, such as 500ms or 1s", "duration");
+    error(e.loc, what + " must be a positive duration, such as 500ms or 1s", diag::Duration);
     return;
   }
   if (std::optional<Nanos> n = duration_nanos(e, what)) d.nanos = *n;
@@ -64,7 +64,7 @@ std::optional<Nanos> Sema::duration_nanos(const Expr& e, const std::string& what
   }
   if (n) return n;
   if (seconds > seconds_of(kLongestDuration)) {
-    error(e.loc, what + " must be at most 36525 days (100 years)", "duration");
+    error(e.loc, what + " must be at most 36525 days (100 years)", diag::Duration);
   } else {
     std::string value = literal ? literal->text : shortest_decimal(seconds) + "s";
     error(e.loc,
@@ -74,7 +74,7 @@ std::optional<Nanos> Sema::duration_nanos(const Expr& e, const std::string& what
               value +
               ": the runtime counts time in nanoseconds, and the proof reads the duration as "
               "that count",
-          "duration");
+          diag::Duration);
   }
   return std::nullopt;
 }

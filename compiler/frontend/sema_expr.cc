@@ -64,7 +64,7 @@ void Sema::check_expr(Expr& e, Scope& scope) {
               "this int does not fit in 64 bits (-9223372036854775808 to "
               "9223372036854775807): write it as a float (with a decimal point) or use a "
               "smaller value",
-              "int-overflow");
+              diag::IntOverflow);
         return;
       }
       e.type = e.is_int ? kInt : kFloat;
@@ -81,7 +81,7 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       return;
     case Expr::Kind::Otherwise:
       error(e.loc, "'otherwise' is a whole rule constraint (`when otherwise`), not a value",
-            "otherwise");
+            diag::Otherwise);
       return;
     case Expr::Kind::Name:
       return check_name(e, scope);
@@ -99,7 +99,7 @@ void Sema::check_expr(Expr& e, Scope& scope) {
       return check_list(e, scope);
     case Expr::Kind::Lambda:
       error(e.loc, "a lambda ('x => ...') can only be the second argument of min_by or max_by",
-            "lambda");
+            diag::Lambda);
       return;
     case Expr::Kind::Call:
       check_call(e, scope);
@@ -115,7 +115,7 @@ void Sema::check_name(Expr& e, Scope& scope) {
       error(e.loc,
             "the message '" + e.text +
                 "' is not available in an `every` body: it runs on a timer, not on a message",
-            "statement-context");
+            diag::StatementContext);
       return;
     }
     e.name_kind = b->kind;
@@ -151,13 +151,13 @@ void Sema::check_name(Expr& e, Scope& scope) {
           "event '" + e.text +
               "' cannot be read in a value expression: events appear in `when`, `assert` "
               "and `invariant` constraints",
-          "event-in-expression");
+          diag::EventInExpression);
     return;
   }
   std::vector<std::string> candidates = scope.names();
   for (auto& [name, index] : consts_) candidates.push_back(name);
   Diagnostic& d =
-      unknown(e.loc, "unknown name '" + e.text + "'", "unknown-name", e.text, candidates);
+      unknown(e.loc, "unknown name '" + e.text + "'", diag::UnknownName, e.text, candidates);
   // `accept Joy.cmd.vx < 2` reads like a port reference, but a body names the message alone.
   std::string message = scope.message_name();
   if (modules_.count(e.text) && !message.empty()) {
@@ -225,14 +225,14 @@ void Sema::check_field(Expr& e, Scope& scope) {
     }
     Diagnostic& d =
         unknown(field_name_loc(e), "vec3 has no field '" + e.text + "' (it has x, y and z)",
-                "unknown-field", e.text, {"x", "y", "z"});
+                diag::UnknownField, e.text, {"x", "y", "z"});
     note_length_function(d, e, base.type);
     return;
   }
   if (base.type->kind != Type::Kind::Record) {
     Diagnostic& d = error(
         e.loc, "'." + e.text + "' needs a record or a vec3, but this is " + describe(base.type),
-        "type-mismatch");
+        diag::TypeMismatch);
     note_length_function(d, e, base.type);
     return;
   }
@@ -249,7 +249,7 @@ void Sema::check_field(Expr& e, Scope& scope) {
   std::string has;
   if (!names.empty() && names.size() <= 8) has = " (it has " + join(names, ", ", " and ") + ")";
   unknown(field_name_loc(e), describe(base.type) + " has no field '" + e.text + "'" + has,
-          "unknown-field", e.text, names);
+          diag::UnknownField, e.text, names);
 }
 
 // `list[int]`: the list's element type.
@@ -259,11 +259,12 @@ void Sema::check_index(Expr& e, Scope& scope) {
   const TypePtr& list = e.args[0]->type;
   const TypePtr& index = e.args[1]->type;
   if (list && list->kind != Type::Kind::List) {
-    error(e.loc, "only lists can be indexed, but this is " + describe(list), "type-mismatch");
+    error(e.loc, "only lists can be indexed, but this is " + describe(list), diag::TypeMismatch);
     return;
   }
   if (index && index->kind != Type::Kind::Int) {
-    error(e.args[1]->loc, "a list index must be an int, not " + describe(index), "type-mismatch");
+    error(e.args[1]->loc, "a list index must be an int, not " + describe(index),
+          diag::TypeMismatch);
     return;
   }
   if (list) e.type = list->element;
@@ -276,7 +277,7 @@ void Sema::check_unary(Expr& e, Scope& scope) {
   if (!operand.type) return;
   if (e.op == "not") {
     if (operand.type->kind != Type::Kind::Bool) {
-      error(e.loc, "'not' needs a bool, not " + describe(operand.type), "type-mismatch");
+      error(e.loc, "'not' needs a bool, not " + describe(operand.type), diag::TypeMismatch);
       return;
     }
     e.type = kBool;
@@ -285,7 +286,7 @@ void Sema::check_unary(Expr& e, Scope& scope) {
   }
   if (!is_numeric(operand.type) && operand.type->kind != Type::Kind::Vec3) {
     error(e.loc, "unary '-' needs a number or a vec3, not " + describe(operand.type),
-          "type-mismatch");
+          diag::TypeMismatch);
     return;
   }
   e.type = operand.type;
@@ -304,7 +305,7 @@ void Sema::check_binary(Expr& e, Scope& scope) {
     error(e.loc,
           "operator '" + std::string(e.op) + "' cannot combine " + describe(a.type) + " and " +
               describe(b.type),
-          "type-mismatch");
+          diag::TypeMismatch);
   };
   std::string_view op = e.op;
   if (op == "and" || op == "or") {
@@ -348,7 +349,7 @@ void Sema::check_record(Expr& e, Scope& scope) {
   for (size_t i = 0; i < e.args.size(); ++i) {
     for (size_t j = 0; j < i; ++j) {
       if (e.names[j].name == e.names[i].name) {
-        error(e.names[i].loc, "field '" + e.names[i].name + "' is given twice", "duplicate");
+        error(e.names[i].loc, "field '" + e.names[i].name + "' is given twice", diag::Duplicate);
       }
     }
     check_expr(*e.args[i], scope);
@@ -376,7 +377,7 @@ void Sema::check_list(Expr& e, Scope& scope) {
       error(item->loc,
             "list items must have one type: this is " + describe(item->type) +
                 ", earlier items are " + describe(element),
-            "type-mismatch");
+            diag::TypeMismatch);
       ok = false;
     }
   }
@@ -396,7 +397,7 @@ void Sema::check_call(Expr& e, Scope& scope) {
     for (const BuiltinInfo& b : kBuiltins) names.emplace_back(b.name);
     Diagnostic& d =
         error(callee, "unknown function '" + e.text + "': the builtins are " + builtin_names_text(),
-              "unknown-function");
+              diag::UnknownFunction);
     if (auto meant = meant_builtin(e.text, names, e.args.empty() ? nullptr : e.args[0]->type))
       did_you_mean(d, *meant);
     return;
@@ -419,7 +420,7 @@ bool Sema::check_arity(Expr& e, const BuiltinInfo& info) {
                                : std::to_string(info.min_args)) +
             (info.min_args == 1 && info.max_args == 1 ? " argument" : " arguments") + ", not " +
             std::to_string(n) + ": " + std::string(info.signature),
-        "arity");
+        diag::Arity);
   return false;
 }
 
@@ -430,12 +431,13 @@ void Sema::check_best_by(Expr& e, Scope& scope) {
   if (key.kind != Expr::Kind::Lambda) {
     check_expr(key, scope);
     error(key.loc, "the second argument of '" + e.text + "' is a function such as o => o.dist",
-          "type-mismatch");
+          diag::TypeMismatch);
     return;
   }
   if (!list.type) return;
   if (list.type->kind != Type::Kind::List || !list.type->element) {
-    error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type), "type-mismatch");
+    error(list.loc, "'" + e.text + "' needs a list, not " + describe(list.type),
+          diag::TypeMismatch);
     return;
   }
   scope.push();
@@ -449,7 +451,7 @@ void Sema::check_best_by(Expr& e, Scope& scope) {
   if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
     error(key.args[0]->loc,
           "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),
-          "type-mismatch");
+          diag::TypeMismatch);
     return;
   }
   e.type = list.type->element;
@@ -461,7 +463,7 @@ void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
       error(e.args[i]->loc,
             "argument " + std::to_string(i + 1) + " of '" + e.text + "' must be " + what +
                 ", not " + describe(e.args[i]->type) + " (" + std::string(info.signature) + ")",
-            "type-mismatch");
+            diag::TypeMismatch);
     return ok;
   };
   switch (info.id) {
@@ -512,7 +514,7 @@ void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
   }
 }
 
-void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, const char* id) {
+void Sema::check_condition(Expr& e, Scope& scope, const std::string& what, DiagId id) {
   check_expr(e, scope);
   if (e.type && e.type->kind != Type::Kind::Bool)
     error(e.loc, what + " must be a bool, not " + describe(e.type), id);
@@ -532,7 +534,7 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
         error(e.loc,
               "'otherwise' must be a rule's whole constraint (`when otherwise`), not part of " +
                   where,
-              "otherwise");
+              diag::Otherwise);
       return Constraint::constant(false);
     case Expr::Kind::Name: {
       if (events_.count(e.text)) {
@@ -544,7 +546,7 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
         error(e.loc,
               "'" + e.text + "' is a constant; " + where +
                   " may mention only events, true, false, not, and, or",
-              "constraint-term");
+              diag::ConstraintTerm);
         return Constraint::constant(false);
       }
       unknown_event(e.loc, e.text, false);
@@ -574,7 +576,7 @@ Constraint Sema::check_constraint(Expr& e, const std::string& where, bool otherw
         std::string(kind_word(e.kind)) + " cannot appear in " + where +
             ": it may mention only events, true, false, not, and, or (compute a derived event "
             "with `event NAME = Module.port : PREDICATE;`)",
-        "constraint-term");
+        diag::ConstraintTerm);
   return Constraint::constant(false);
 }
 

@@ -9,6 +9,7 @@
 // and 20,000 ended in std::bad_alloc (docs/benchmarks.md#rules-by-priority-issue-40). Past the
 // bound the spec is refused with that reason, before lowering builds anything.
 #include "compiler/frontend/sema.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 
@@ -18,7 +19,7 @@ void check_rule_count(const ast::ArbitrateDecl& a, std::vector<Diagnostic>& out)
   if (a.rules.size() <= kMaxPriorityRules) return;
   Diagnostic d;
   d.loc = a.loc;
-  d.id = "priority";
+  d.id = diag::Priority.text();
   d.message = a.port.qualified() + " has " + std::to_string(a.rules.size()) +
               " rules by priority; at most " + std::to_string(kMaxPriorityRules) +
               " can be checked: each rule's constraint names the activity event of every "
@@ -45,7 +46,7 @@ void check_activity_names(const ast::Spec& spec, std::vector<Diagnostic>& out) {
       if (!clash) continue;
       Diagnostic d;
       d.loc = r.loc;
-      d.id = "priority";
+      d.id = diag::Priority.text();
       d.message = "rule '" + r.name + "' of " + a.port.qualified() + " needs the activity event '" +
                   activity +
                   "' (by priority), but an event of that name is declared; rename the event "

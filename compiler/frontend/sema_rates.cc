@@ -41,12 +41,12 @@ void Sema::check_rates() {
       error(r.port.loc,
             "a rate for " + port + " is already given at line " + std::to_string(first->second) +
                 ": state one period per source",
-            "duplicate");
+            diag::Duplicate);
     } else if (!read_by_app(spec_, port)) {
       error(r.port.loc,
             "no rule, stream event or connect reads " + port +
                 ", so its rate constrains nothing: name a source the app reads",
-            "rate-source");
+            diag::RateSource);
     }
   }
 }

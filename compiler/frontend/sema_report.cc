@@ -22,17 +22,17 @@ bool same_place(const Loc& a, const Loc& b) {
 
 }  // namespace
 
-Diagnostic& Sema::error(const Loc& loc, std::string message, std::string id) {
+Diagnostic& Sema::error(const Loc& loc, std::string message, DiagId id) {
   Diagnostic d;
   d.loc = loc;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   out_.push_back(std::move(d));
   return out_.back();
 }
 
-Diagnostic& Sema::unknown(const Loc& loc, std::string message, std::string id,
-                          const std::string& name, const std::vector<std::string>& candidates) {
+Diagnostic& Sema::unknown(const Loc& loc, std::string message, DiagId id, const std::string& name,
+                          const std::vector<std::string>& candidates) {
   Diagnostic& d = error(loc, std::move(message), std::move(id));
   if (auto best = closest_name(name, candidates)) did_you_mean(d, *best);
   return d;
@@ -59,7 +59,8 @@ static std::optional<std::string> activity_elsewhere(const Spec& spec, const std
 }
 
 Diagnostic& Sema::unknown_event(const Loc& loc, const std::string& name, bool set_by_code) {
-  Diagnostic& d = unknown(loc, "unknown event '" + name + "'", "unknown-event", name, event_names_);
+  Diagnostic& d =
+      unknown(loc, "unknown event '" + name + "'", diag::UnknownEvent, name, event_names_);
   if (!d.notes.empty()) return d;  // "did you mean": most likely a misspelling
   Diagnostic note;
   note.severity = Severity::Note;
@@ -87,7 +88,7 @@ void Sema::did_you_mean(Diagnostic& d, const std::string& meant) {
 }
 
 Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::string message,
-                                   std::string id) {
+                                   DiagId id) {
   if (auto stray = stray_field(value, want)) {
     const std::string& name = stray->name->name;
     message += "; " + describe(stray->record) + " has no field '" + name + "'";
@@ -101,7 +102,7 @@ Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::
     note.message =
         "'" + stray->via->text + "' has the type of that record literal; it is used here";
     for (Diagnostic& d : out_) {
-      if (d.id == id && d.message == message && same_place(d.loc, stray->name->loc)) {
+      if (d.id == id.text() && d.message == message && same_place(d.loc, stray->name->loc)) {
         d.notes.push_back(std::move(note));
         return d;
       }

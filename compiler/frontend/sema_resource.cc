@@ -24,14 +24,14 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
     }
     std::string q = p.qualified();
     if (!seen.insert(q).second) {
-      error(p.loc, q + " is listed twice in resource '" + r.name + "'", "resource-port");
+      error(p.loc, q + " is listed twice in resource '" + r.name + "'", diag::ResourcePort);
       continue;
     }
     if (!arbitrated_.count(q)) {
       error(p.loc,
             q + " has no `arbitrate` block: a resource is shared by arbitrated ports, whose "
                 "rules arbc can check; arbitrate it (or drop it from the resource)",
-            "resource-port");
+            diag::ResourcePort);
       continue;
     }
     TypePtr t = p.port_decl->type.resolved;
@@ -46,7 +46,7 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
                 "means the same on each: " +
                 r.ports.front().qualified() + " is " + describe(type) + ", " + q + " is " +
                 describe(t),
-            "resource-type");
+            diag::ResourceType);
     }
   }
   // A misspelt port is one listed: "lists 1 port" would flag the resource for that typo.
@@ -54,7 +54,7 @@ TypePtr Sema::check_resource_ports(ResourceDecl& r) {
     error(r.loc,
           "resource '" + r.name + "' lists " + std::to_string(seen.size()) + " port" +
               (seen.size() == 1 ? "" : "s") + "; a resource is shared by at least two ports",
-          "resource-port");
+          diag::ResourcePort);
   return same ? type : nullptr;
 }
 
@@ -77,14 +77,14 @@ void Sema::check_data_assert(AssertDecl& a) {
   emitted.kind = NameKind::Message;
   emitted.type = type;
   scope.define("emitted", emitted);
-  check_condition(*a.property, scope, "an assertion over `emitted`", "predicate-type");
+  check_condition(*a.property, scope, "an assertion over `emitted`", diag::PredicateType);
 }
 
 void Sema::check_resources() {
   std::set<std::string> names;
   for (ResourceDecl& r : spec_.resources) {
     if (!names.insert(r.name).second)
-      error(r.loc, "resource '" + r.name + "' is declared twice", "duplicate");
+      error(r.loc, "resource '" + r.name + "' is declared twice", diag::Duplicate);
     TypePtr type = check_resource_ports(r);
     if (!r.uses || !type) continue;  // without one type the `when` cannot be typed
     Scope scope;
@@ -92,7 +92,7 @@ void Sema::check_resources() {
     emitted.kind = NameKind::Message;
     emitted.type = type;
     scope.define("emitted", emitted);
-    check_condition(*r.uses, scope, "the `when` of resource '" + r.name + "'", "predicate-type");
+    check_condition(*r.uses, scope, "the `when` of resource '" + r.name + "'", diag::PredicateType);
   }
 }
 

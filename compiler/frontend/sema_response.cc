@@ -42,7 +42,7 @@ void Sema::check_response_event(TemporalDecl& n, const ArbitrateDecl& port) {
               "' is an event: `stops` follows a rule (the window starts at its last delivery); "
               "for an event, the window starts each time it becomes present in " +
               port.port.qualified() + ": write `after " + n.event + ", ...`",
-          "temporal-pair");
+          diag::TemporalPair);
 }
 
 // OTHER as a rule: another rule of ANSWER's port.
@@ -53,7 +53,7 @@ void Sema::check_response_rule(TemporalDecl& n, const ArbitrateDecl& port) {
     error(n.other_loc,
           "`after " + n.other + ", " + n.rule +
               " within ...` names one rule twice: name the rule that must respond",
-          "temporal-pair");
+          diag::TemporalPair);
   } else if (n.other_decl->port != &port && n.other_decl->port) {
     std::string answer = n.rule.empty() ? "the answer is " + port.port.qualified()
                                         : "'" + n.rule + "' into " + port.port.qualified();
@@ -61,7 +61,7 @@ void Sema::check_response_rule(TemporalDecl& n, const ArbitrateDecl& port) {
           "'" + n.other + "' goes into " + n.other_decl->port->port.qualified() + " but " + answer +
               "; the trigger rule of `after ..., ... within` must go into the port that answers "
               "(the model checker follows one port's messages)",
-          "temporal-pair");
+          diag::TemporalPair);
   } else {
     return;
   }
@@ -84,7 +84,7 @@ void Sema::check_response(TemporalDecl& n) {
     error(
         n.other_loc,
         "'" + n.other + "' names both a rule and an event, so the trigger is ambiguous: rename one",
-        "temporal-pair");
+        diag::TemporalPair);
     n.rule_decl = nullptr;
     n.port_decl = nullptr;
   } else if (event) {
@@ -99,7 +99,7 @@ void Sema::check_response(TemporalDecl& n) {
             "no rule or event is named '" + n.other +
                 "': a response starts at each delivery of a rule of " + port->port.qualified() +
                 " or each time an event becomes present there",
-            "unknown-rule", n.other, candidates);
+            diag::UnknownRule, n.other, candidates);
     n.rule_decl = nullptr;
     n.port_decl = nullptr;
   }

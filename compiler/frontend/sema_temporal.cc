@@ -52,7 +52,7 @@ const Rule* Sema::unique_rule(const std::string& name, const Loc& loc, const std
     }
   }
   if (found.empty()) {
-    unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    unknown(loc, "no rule is named '" + name + "'", diag::UnknownRule, name, all);
     return nullptr;
   }
   if (found.size() > 1) {
@@ -60,7 +60,7 @@ const Rule* Sema::unique_rule(const std::string& name, const Loc& loc, const std
     error(loc,
           "rule name '" + name + "' is used by " + std::to_string(found.size()) + " ports; " +
               what + " can name only a rule whose name is unique: rename one",
-          "temporal-rule");
+          diag::TemporalRule);
     return nullptr;
   }
   return found.front();
@@ -89,7 +89,7 @@ void Sema::check_absence_event(TemporalDecl& n) {
           "unknown event '" + n.event + "' in " + port->port.qualified() +
               ": name a declared event or the activity event act_RULE of a rule with a `hold` "
               "there",
-          "unknown-event", n.event, candidates);
+          diag::UnknownEvent, n.event, candidates);
 }
 
 // `only RULE after OTHER;` (and a response's trigger and rule, and a spacing after another
@@ -99,13 +99,13 @@ void Sema::check_precedence(TemporalDecl& n) {
   n.other_decl = unique_rule(n.other, n.other_loc, shape_name(n.kind));
   if (!n.rule_decl || !n.other_decl) return;
   if (n.rule_decl == n.other_decl) {
-    error(n.other_loc, same_rule_fix(n), "temporal-pair");
+    error(n.other_loc, same_rule_fix(n), diag::TemporalPair);
   } else if (n.rule_decl->port != n.other_decl->port && n.rule_decl->port && n.other_decl->port) {
     error(n.other_loc,
           "'" + n.rule + "' goes into " + n.rule_decl->port->port.qualified() + " but '" + n.other +
               "' into " + n.other_decl->port->port.qualified() + "; " + pair_shape(n.kind) +
               " relates two rules of one port (the model checker follows one port's messages)",
-          "temporal-pair");
+          diag::TemporalPair);
   }
   if (n.rule_decl == n.other_decl || n.rule_decl->port != n.other_decl->port)
     n.rule_decl = n.other_decl = nullptr;  // reported (or a port reported): lowering skips it
@@ -118,7 +118,7 @@ const ArbitrateDecl* Sema::arbitrated_port(PortRef& ref, const std::string& use)
   error(ref.loc,
         ref.qualified() + " has no `arbitrate` block: " + use +
             " is about the rules that deliver into an arbitrated port",
-        "not-arbitrated");
+        diag::NotArbitrated);
   return nullptr;
 }
 

@@ -41,7 +41,7 @@ void Sema::check_tests() {
       error(t.loc,
             "test \"" + t.name + "\" is already defined at line " +
                 std::to_string(it->second->loc.line) + ": rename one of them",
-            "duplicate");
+            diag::Duplicate);
     }
     if (!t.on.empty()) t.on_rule = find_test_rule(t.on, t.on_loc);
     for (TestStep& s : t.steps) check_test_step(t, s);
@@ -52,7 +52,7 @@ void Sema::check_tests() {
                             "this expectation contradicts `expect " + pair->second->text +
                                 "` (line " + std::to_string(pair->second->loc.line) +
                                 "): no run can satisfy both, so the test can never pass",
-                            "test-window");
+                            diag::TestWindow);
       Diagnostic note;
       note.severity = Severity::Note;
       note.message = "give `receives nothing` a window that leaves this one out";
@@ -68,7 +68,7 @@ void Sema::report_expects_nothing(const TestDecl& t) {
                         "test \"" + t.name +
                             "\" expects nothing, so it would pass whatever the app does: add "
                             "an `expect`",
-                        "test-expect");
+                        diag::TestExpect);
   Diagnostic note;
   note.severity = Severity::Note;
   std::string hint = expectation_hint(t, spec_);
@@ -91,7 +91,7 @@ const Rule* Sema::find_test_rule(const std::string& name, const Loc& loc) {
     }
   }
   if (found.empty()) {
-    Diagnostic& d = unknown(loc, "no rule is named '" + name + "'", "unknown-rule", name, all);
+    Diagnostic& d = unknown(loc, "no rule is named '" + name + "'", diag::UnknownRule, name, all);
     if (d.notes.empty() && !all.empty()) {  // nothing close: a test names a rule, not a module
       Diagnostic note;
       note.severity = Severity::Note;
@@ -107,7 +107,7 @@ const Rule* Sema::find_test_rule(const std::string& name, const Loc& loc) {
     error(loc,
           "rule name '" + name + "' is used by " + std::to_string(found.size()) +
               " ports; a test can name only a rule whose name is unique: rename one",
-          "test-port");
+          diag::TestPort);
   }
   return found.front();
 }
@@ -124,9 +124,9 @@ void Sema::check_test_time(Duration& d, const std::string& what) {
   double seconds =
       e.kind == Expr::Kind::Duration ? e.number : (e.constant ? e.constant->number : 0);
   if (!e.is_duration && e.kind != Expr::Kind::Duration) {
-    error(e.loc, what + " must be a time such as 1.5s or 200ms", "duration");
+    error(e.loc, what + " must be a time such as 1.5s or 200ms", diag::Duration);
   } else if (!(seconds >= 0) || !std::isfinite(seconds)) {
-    error(e.loc, what + " must be a time >= 0s", "duration");
+    error(e.loc, what + " must be a time >= 0s", diag::Duration);
   } else if (std::optional<Nanos> n = duration_nanos(e, what)) {
     d.nanos = *n;  // an instant of the run, which counts whole nanoseconds
   }
@@ -141,18 +141,18 @@ void Sema::check_test_value(Expr& e, const PortRef& port) {
     value_type_error(e, want,
                      "the value is " + describe(e.type) + ", but " + port.qualified() +
                          " carries " + describe(want),
-                     "test-value");
+                     diag::TestValue);
     return;
   }
   std::string why;
-  if (!literal_value(e, *want, &why)) error(e.loc, "this value is " + why, "test-value");
+  if (!literal_value(e, *want, &why)) error(e.loc, "this value is " + why, diag::TestValue);
 }
 
 void Sema::check_test_step(const TestDecl& t, TestStep& s) {
   check_test_time(s.at, "the time of a test step");
   if (s.kind != TestStep::Kind::Input) {
     if (!events_.count(s.event)) {
-      unknown(s.event_loc, "unknown event '" + s.event + "'", "unknown-event", s.event,
+      unknown(s.event_loc, "unknown event '" + s.event + "'", diag::UnknownEvent, s.event,
               event_names_);
     }
     return;
@@ -163,7 +163,7 @@ void Sema::check_test_step(const TestDecl& t, TestStep& s) {
           "test \"" + t.name + "\" is on rule '" + t.on + "', whose messages come from " +
               t.on_rule->source.qualified() + "; an input on " + s.port.qualified() +
               " would not reach it",
-          "test-port");
+          diag::TestPort);
   }
   check_test_value(*s.value, s.port);
 }
@@ -174,12 +174,13 @@ void Sema::check_test_window(TestWindow& w, bool instant_only) {
   if (!w.to.expr) return;
   if (instant_only) {
     error(w.loc, "an event state is checked at one time: write `at D`, not a window",
-          "test-window");
+          diag::TestWindow);
     return;
   }
   check_test_time(w.to, "the end of a window");
   if (w.to.nanos < w.from.nanos) {
-    error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`", "test-window");
+    error(w.loc, "the window ends before it starts: write `within EARLIER..LATER`",
+          diag::TestWindow);
   }
 }
 
@@ -191,7 +192,7 @@ void Sema::check_reason_possible(const Rule& rule, const TestExpect& e) {
   Diagnostic& d = error(e.reason_loc,
                         "rule '" + rule.name + "' never drops a message as \"" + e.reason +
                             "\": " + why + ", so this expectation can never hold",
-                        "test-reason");
+                        diag::TestReason);
   Diagnostic note;
   note.severity = Severity::Note;
   note.message = "a message the rule's `when` does not select is dropped as \"not-selected\"";
@@ -214,12 +215,12 @@ void Sema::check_test_claim(const TestDecl& t, TestExpect& e) {
           e.port.qualified() +
               " is arbitrated `by priority`: a higher rule may deliver right after a lower one by "
               "design, so no exclusivity is claimed (docs/design.md#priorities-and-holds)",
-          "test-claim");
+          diag::TestClaim);
   } else if (t.on_rule) {
     error(e.loc,
           "test \"" + t.name + "\" runs rule '" + t.on +
               "' alone: exclusivity is about the port's rules together; remove `on " + t.on + "`",
-          "test-port");
+          diag::TestPort);
   }
 }
 
@@ -232,19 +233,19 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
         error(e.port.loc,
               "test \"" + t.name + "\" is on rule '" + t.on + "', which delivers only to " +
                   t.on_rule->port->port.qualified(),
-              "test-port");
+              diag::TestPort);
       }
       if (e.value) check_test_value(*e.value, e.port);
       break;
     case TestExpect::Kind::Drops:
       e.rule_decl = find_test_rule(e.rule, e.rule_loc);
       if (t.on_rule && e.rule_decl && e.rule_decl != t.on_rule) {
-        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", "test-port");
+        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", diag::TestPort);
       }
       if (!e.reason.empty() && std::find(kTestDropReasons.begin(), kTestDropReasons.end(),
                                          e.reason) == kTestDropReasons.end()) {
         Diagnostic& d = unknown(e.reason_loc, "unknown drop reason \"" + e.reason + "\"",
-                                "test-reason", e.reason, kTestDropReasons);
+                                diag::TestReason, e.reason, kTestDropReasons);
         if (d.notes.empty()) {  // nothing close: the whole list, which is short
           Diagnostic note;
           note.severity = Severity::Note;
@@ -259,7 +260,7 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
     case TestExpect::Kind::DeliversNothing:
       e.rule_decl = find_test_rule(e.rule, e.rule_loc);
       if (t.on_rule && e.rule_decl && e.rule_decl != t.on_rule) {
-        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", "test-port");
+        error(e.rule_loc, "test \"" + t.name + "\" runs rule '" + t.on + "' alone", diag::TestPort);
       }
       break;
     case TestExpect::Kind::Property:
@@ -272,7 +273,7 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
     case TestExpect::Kind::State:
       e.constraint = check_constraint(*e.value, "an expectation", false);
       if (!e.window.present) {
-        error(e.loc, "an event state is checked at a time: add `at D`", "test-window");
+        error(e.loc, "an event state is checked at a time: add `at D`", diag::TestWindow);
       }
       break;
   }

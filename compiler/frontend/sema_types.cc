@@ -44,7 +44,8 @@ TypePtr Sema::resolve_type(TypeExpr& t) {
         for (size_t j = 0; j < i; ++j)
           if (t.fields[j].first == t.fields[i].first)
             error(t.field_locs[i],
-                  "field '" + t.fields[i].first + "' is declared twice" + kRenameOne, "duplicate");
+                  "field '" + t.fields[i].first + "' is declared twice" + kRenameOne,
+                  diag::Duplicate);
         TypePtr f = resolve_type(*t.fields[i].second);
         if (!f) ok = false;
         fields.push_back({t.fields[i].first, f});
@@ -68,7 +69,7 @@ TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
           "type '" + decl.name +
               "' is defined in terms of itself: a type cannot contain itself, even through a "
               "list or another type; give the inner value a type of its own",
-          "type-cycle");
+          diag::TypeCycle);
     types_done_.insert(&decl);
     return nullptr;
   }
@@ -93,7 +94,7 @@ TypePtr Sema::resolve_named_type(TypeExpr& t) {
             "unknown type '" + t.name +
                 "': the types are bool, int, float, string, vec3, list<T>, records and "
                 "declared type names",
-            "unknown-type", t.name, names);
+            diag::UnknownType, t.name, names);
     return nullptr;
   }
   return resolve_type_decl(*it->second);
@@ -108,8 +109,8 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
     std::vector<std::string> names;
     for (const ModuleDecl& m : spec_.modules) names.push_back(m.name);
     // At the module's name alone: an editor's quick fix replaces exactly what is underlined.
-    Diagnostic& d = unknown(ref.module_loc, "unknown module '" + ref.module + "'", "unknown-module",
-                            ref.module, names);
+    Diagnostic& d = unknown(ref.module_loc, "unknown module '" + ref.module + "'",
+                            diag::UnknownModule, ref.module, names);
     if (d.notes.empty()) {  // no close name: what there is, and how to add it
       Diagnostic note;
       note.severity = Severity::Note;
@@ -130,7 +131,7 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
     }
     Diagnostic& d =
         unknown(ref.port_loc, "module '" + ref.module + "' has no port '" + ref.port + "'",
-                "unknown-port", ref.port, names);
+                diag::UnknownPort, ref.port, names);
     if (d.notes.empty() && !listed.empty()) {  // nothing close (`velocity` for `vel`): list them
       Diagnostic note;
       note.severity = Severity::Note;
@@ -146,12 +147,12 @@ bool Sema::resolve_port(PortRef& ref, const char* role, const std::string& use) 
     error(ref.loc,
           ref.qualified() + " is an `in` port; " + use +
               " needs a source, which must be an `out` port",
-          "port-direction");
+          diag::PortDirection);
   } else if (role_s == "destination" && ref.port_decl->direction == model::Direction::Out) {
     error(ref.loc,
           ref.qualified() + " is an `out` port; " + use +
               " needs a destination, which must be an `in` port",
-          "port-direction");
+          diag::PortDirection);
   }
   return true;
 }

@@ -14,6 +14,7 @@
 #include "compiler/frontend/token_checks.h"
 #include "compiler/frontend/unclosed_block.h"
 #include "compiler/frontend/unit_words.h"
+#include "core/check_ids.h"
 #include "core/duration_literal.h"
 #include "core/join.h"
 #include "core/suggest.h"
@@ -37,7 +38,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
       // Describing is best effort; an ANTLR internal state we did not foresee must not turn a
       // user's syntax error into a crash.
       Diagnostic d;
-      d.id = "syntax";
+      d.id = diag::Syntax.text();
       d.loc = token_location(offending, file_);
       d.message = "unexpected " + found_text(offending);
       first_ = d;
@@ -80,7 +81,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
         return *unclosed;
     }
     Diagnostic d;
-    d.id = "syntax";
+    d.id = diag::Syntax.text();
     d.loc = token_location(offending, file_);
     if (describe_mistaken_operator(parser, offending, x, d)) return d;
     if (describe_keyword_after_declaring_word(parser, offending, d)) return d;

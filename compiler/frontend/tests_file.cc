@@ -11,6 +11,7 @@
 
 #include "compiler/frontend/frontend.h"
 #include "compiler/frontend/parse.h"
+#include "core/check_ids.h"
 #include "core/suggest.h"
 
 namespace arbc::frontend {
@@ -19,11 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Diagnostic error_at(const ast::Loc& loc, std::string message, std::string id) {
+Diagnostic error_at(const ast::Loc& loc, std::string message, DiagId id) {
   Diagnostic d;
   d.loc = loc;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   return d;
 }
 
@@ -69,7 +70,7 @@ bool read_spec_file(const std::string& path, std::string* text, Diagnostic* prob
   auto fail = [&](std::string message) {
     problem->loc.file = path;
     problem->message = std::move(message);
-    problem->id = "io";
+    problem->id = diag::Io.text();
     return false;
   };
   std::error_code ec;
@@ -99,7 +100,7 @@ std::unique_ptr<ast::Spec> merge_with_app(std::unique_ptr<ast::Spec> tests, cons
                            "a tests file holds only `test` declarations, and this is " +
                                other->second + ": declare it in the app's spec, \"" + named.path +
                                "\"",
-                           "tests-file"));
+                           diag::TestsFile));
     return nullptr;
   }
   fs::path app = fs::path(named.path);
@@ -110,7 +111,7 @@ std::unique_ptr<ast::Spec> merge_with_app(std::unique_ptr<ast::Spec> tests, cons
     Diagnostic d = error_at(named.loc,
                             "cannot read the app's spec " + *app_file + ": " + problem.message +
                                 " (the path is relative to this file's folder)",
-                            "tests-file");
+                            diag::TestsFile);
     if (auto meant = close_spec_file(app)) {  // `bse.spec` for `base.spec`
       Diagnostic note;
       note.severity = Severity::Note;
@@ -128,7 +129,7 @@ std::unique_ptr<ast::Spec> merge_with_app(std::unique_ptr<ast::Spec> tests, cons
     out.push_back(error_at(
         named.loc,
         "\"" + named.path + "\" is itself a tests file: name the spec that declares the app",
-        "tests-file"));
+        diag::TestsFile));
     return nullptr;
   }
   // The app's own tests belong to the app's spec (`arbc test APP.spec` runs them): a tests

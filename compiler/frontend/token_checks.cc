@@ -4,6 +4,7 @@
 #include <antlr4-runtime.h>
 
 #include "compiler/frontend/unit_words.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 
@@ -28,11 +29,11 @@ model::SourceLocation token_location(const antlr4::Token* token, const model::Fi
 namespace {
 
 Diagnostic error_at(const antlr4::Token* token, const std::string& file, std::string message,
-                    std::string id) {
+                    DiagId id) {
   Diagnostic d;
   d.loc = token_location(token, file);
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   return d;
 }
 
@@ -82,7 +83,7 @@ size_t report_single_quotes(const std::vector<antlr4::Token*>& tokens, size_t op
   if (close >= tokens.size() || tokens[close]->getLine() != t->getLine()) {
     out.push_back(error_at(
         t, file, "unexpected character \"'\": strings are written in double quotes, \"like this\"",
-        "bad-character"));
+        diag::BadCharacter));
     return open;
   }
   std::string inside = close == open + 1 && tokens[close]->getStartIndex() == t->getStartIndex() + 1
@@ -92,8 +93,8 @@ size_t report_single_quotes(const std::vector<antlr4::Token*>& tokens, size_t op
   Diagnostic d = error_at(
       t, file,
       "strings are written in double quotes: write \"" + inside + "\", not '" + inside + "'",
-      "bad-character");
-  d.loc.end_column = error_at(tokens[close], file, "", "").loc.end_column;
+      diag::BadCharacter);
+  d.loc.end_column = error_at(tokens[close], file, "", diag::BadCharacter).loc.end_column;
   // The note an editor turns into a quick fix that rewrites the quotes.
   Diagnostic note;
   note.severity = Severity::Note;
@@ -111,15 +112,15 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
     const antlr4::Token* t = tokens[i];
     switch (t->getType()) {
       case ArbcLexer::BAD_NUMBER:
-        out.push_back(error_at(t, file, bad_number_message(t->getText()), "bad-number"));
+        out.push_back(error_at(t, file, bad_number_message(t->getText()), diag::BadNumber));
         break;
       case ArbcLexer::UNTERMINATED_STRING:
-        out.push_back(
-            error_at(t, file, "string literal is missing its closing '\"'", "unterminated-string"));
+        out.push_back(error_at(t, file, "string literal is missing its closing '\"'",
+                               diag::UnterminatedString));
         break;
       case ArbcLexer::UNTERMINATED_COMMENT:
         out.push_back(error_at(t, file, "comment opened with '/*' is never closed with '*/'",
-                               "unterminated-comment"));
+                               diag::UnterminatedComment));
         break;
       case ArbcLexer::ERROR_CHAR: {
         std::string text = t->getText();
@@ -131,7 +132,7 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
           out.push_back(error_at(t, file,
                                  "'?' is not an operator of the spec language: choose with "
                                  "`if C { emit A; } else { emit B; }`",
-                                 "bad-character"));
+                                 diag::BadCharacter));
           break;
         }
         std::string word = logic_word(text);
@@ -139,7 +140,7 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
           out.push_back(error_at(t, file,
                                  "unexpected character '" + describe_char(text) +
                                      "': names use only ASCII letters, digits and '_'",
-                                 "bad-character"));
+                                 diag::BadCharacter));
           break;
         }
         // `&&` and `||` are one mistake: one error, underlining both characters.
@@ -151,7 +152,7 @@ void check_lexical(const std::vector<antlr4::Token*>& tokens, const std::string&
             error_at(t, file,
                      "'" + (doubled ? text + text : text) +
                          "' is not an operator of the spec language: write `" + word + "`",
-                     "bad-character");
+                     diag::BadCharacter);
         if (doubled) {
           d.loc.end_column += 1;
           ++i;
@@ -224,7 +225,7 @@ bool check_nesting(const std::vector<antlr4::Token*>& tokens,
                              "nesting is deeper than " + std::to_string(kMaxNesting) +
                                  " levels (brackets and prefix operators): split the expression "
                                  "with `let` or named constants",
-                             "nesting-too-deep"));
+                             diag::NestingTooDeep));
       return false;
     }
     previous = r;

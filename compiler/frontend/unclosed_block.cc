@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compiler/frontend/token_checks.h"
+#include "core/check_ids.h"
 
 namespace arbc::frontend {
 
@@ -47,7 +48,7 @@ std::optional<Diagnostic> keyword_as_rule_name(antlr4::TokenStream* tokens,
       tokens->get(stop->getTokenIndex() + 1)->getText() != ":")
     return std::nullopt;
   Diagnostic d;
-  d.id = "syntax";
+  d.id = diag::Syntax.text();
   d.loc = token_location(stop, file);
   d.message = "'" + stop->getText() +
               "' is a keyword, so it cannot name a rule: choose another name (such as '" +
@@ -92,7 +93,7 @@ std::optional<Diagnostic> describe_unclosed_block(antlr4::TokenStream* tokens,
   const antlr4::Token* brace = tokens->get(open.back());
   bool at_end = stop->getType() == antlr4::Token::EOF;
   Diagnostic d;
-  d.id = "syntax";
+  d.id = diag::Syntax.text();
   d.loc = token_location(brace, file);
   d.message = "the block `" + block_head(tokens, open.back()) + "` opened on line " +
               std::to_string(brace->getLine()) + " is not closed: a '}' is missing before " +

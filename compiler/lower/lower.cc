@@ -11,18 +11,19 @@
 #include "compiler/lower/lower_body.h"
 #include "compiler/lower/temporal.h"
 #include "compiler/lower/test_cases.h"
+#include "core/check_ids.h"
 #include "core/effective_guard.h"
 
 namespace arbc::lower {
 
 namespace {
 
-Diagnostic error_at(const model::SourceLocation& loc, std::string message, std::string id) {
+Diagnostic error_at(const model::SourceLocation& loc, std::string message, DiagId id) {
   Diagnostic d;
   d.severity = Severity::Error;
   d.loc = loc;
   d.message = std::move(message);
-  d.id = std::move(id);
+  d.id = id.text();
   return d;
 }
 
@@ -156,7 +157,7 @@ class Lowerer {
                                       "cannot read script '" + s.text + "' (looked for '" +
                                           path.lexically_normal().string() +
                                           "'); script paths are relative to the spec's directory",
-                                      "script"));
+                                      diag::Script));
       return std::nullopt;
     }
     std::ostringstream text;

@@ -5,12 +5,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/check_ids.h"
 #include "import/yarp/xml_mismatch.h"
 
 namespace arbc::yarp {
 namespace {
 
-constexpr const char* kXmlId = "yarp-xml";
+constexpr const char* kXmlId = diag::YarpXml.text();
 constexpr size_t kMaxXmlBytes = 64u << 20;
 
 Diagnostic error_at(model::SourceLocation loc, std::string message, Severity s = Severity::Error) {

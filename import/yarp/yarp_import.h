@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/app_model.h"
+#include "core/check_ids.h"
 #include "core/diagnostic.h"
 #include "import/yarp/app_xml.h"
 #include "import/yarp/carrier.h"
@@ -47,20 +48,20 @@ struct YarpImport {
 YarpImport import_yarp(const std::string& xml_path, const YarpImportOptions& options);
 
 // Each diagnostic id this importer reports, with its meaning (registered in core/check_ids.cc).
-inline constexpr const char* kIdXml = "yarp-xml";
-inline constexpr const char* kIdCarrier = "yarp-carrier";
-inline constexpr const char* kIdMonitorMissing = "yarp-monitor-missing";
-inline constexpr const char* kIdScriptError = "yarp-script-error";
-inline constexpr const char* kIdRequire = "yarp-require";
-inline constexpr const char* kIdOpaque = "yarp-opaque";
-inline constexpr const char* kIdConstraintSyntax = "yarp-constraint-syntax";
-inline constexpr const char* kIdSubstring = "yarp-substring-event";
-inline constexpr const char* kIdKeyword = "yarp-keyword-event";
-inline constexpr const char* kIdTrigInterval = "yarp-trig-interval";
-inline constexpr const char* kIdForever = "yarp-event-forever";
-inline constexpr const char* kIdShared = "yarp-shared-event";
-inline constexpr const char* kIdDuplicateId = "yarp-duplicate-id";
-inline constexpr const char* kIdSpecName = "yarp-spec-name";
-inline constexpr const char* kIdPortName = "yarp-port-name";
+inline constexpr const char* kIdXml = diag::YarpXml.text();
+inline constexpr const char* kIdCarrier = diag::YarpCarrier.text();
+inline constexpr const char* kIdMonitorMissing = diag::YarpMonitorMissing.text();
+inline constexpr const char* kIdScriptError = diag::YarpScriptError.text();
+inline constexpr const char* kIdRequire = diag::YarpRequire.text();
+inline constexpr const char* kIdOpaque = diag::YarpOpaque.text();
+inline constexpr const char* kIdConstraintSyntax = diag::YarpConstraintSyntax.text();
+inline constexpr const char* kIdSubstring = diag::YarpSubstringEvent.text();
+inline constexpr const char* kIdKeyword = diag::YarpKeywordEvent.text();
+inline constexpr const char* kIdTrigInterval = diag::YarpTrigInterval.text();
+inline constexpr const char* kIdForever = diag::YarpEventForever.text();
+inline constexpr const char* kIdShared = diag::YarpSharedEvent.text();
+inline constexpr const char* kIdDuplicateId = diag::YarpDuplicateId.text();
+inline constexpr const char* kIdSpecName = diag::YarpSpecName.text();
+inline constexpr const char* kIdPortName = diag::YarpPortName.text();
 
 }  // namespace arbc::yarp
