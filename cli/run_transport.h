@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
 #include "runtime/runtime.h"
@@ -19,6 +20,7 @@ struct TransportFlags {
   std::string transport = "inproc";
   std::string host, mediate;  // empty: all, and the hosted modules
   std::string deploy;
+  std::vector<std::string> msg_path;  // --msg-path: folders of PKG/msg/NAME.msg
   std::optional<int> domain;
   std::optional<double> time_scale;
   std::optional<double> wait_peers;

@@ -10,6 +10,7 @@
 #include "core/json_diagnostic.h"
 #include "core/suggest.h"
 #include "dds/known_messages.h"
+#include "dds/msg_layout.h"
 
 namespace arbc::dds {
 
@@ -284,14 +285,16 @@ bool check_deployment(const Deployment& d, const model::App& app, std::vector<Di
   }
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
   for (const model::NamedType& t : app.types) known.insert(t.name);
+  // Each message's definition: its .msg file on the message path, else a built-in one.
+  ros2::MsgLibrary library(ros2::message_path(d.msg_path), known_message_texts());
   for (const auto& [name, wire] : d.types) {
-    const model::NamedType* named = nullptr;
+    TypePtr type = name == "vec3" ? Type::scalar(Type::Kind::Vec3) : nullptr;
     for (const model::NamedType& t : app.types) {
-      if (t.name == name) named = &t;
+      if (t.name == name) type = t.type;
     }
-    if (named && named->type) {
-      std::string order = field_order_problem(name, *named->type, wire);
-      if (!order.empty()) problems.value({"types", name}, "types: \"" + name + "\": " + order);
+    if (type) {
+      std::string layout = layout_problem(name, *type, wire, library);
+      if (!layout.empty()) problems.value({"types", name}, "types: \"" + name + "\": " + layout);
     }
     if (!known.count(name)) {
       std::string names;

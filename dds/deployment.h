@@ -41,6 +41,9 @@ struct Deployment {
   std::map<std::string, std::string> types;   // named type (or "vec3", ...) -> "pkg/msg/Name"
   int depth = kDefaultDepth;
   std::map<std::string, PortQos> port_qos;  // "Module.port" -> "qos": {"ports": ...}
+  // `--msg-path` folders, searched before ARBC_MSG_PATH and AMENT_PREFIX_PATH for the `.msg`
+  // files `types` are checked against (core/ros2_msg_path.h).
+  std::vector<std::string> msg_path;
 
   PortQos qos_of(const std::string& port) const {
     auto it = port_qos.find(port);
@@ -60,8 +63,8 @@ bool parse_deployment(std::string_view text, const std::string& path, Deployment
 // Reads and parses the file at `path` (a missing file or a directory is an error at the file).
 bool read_deployment(const std::string& path, Deployment* out, std::vector<Diagnostic>* errors);
 // Checks the file against the app: every `topics` key is a port of the app, every `types` key
-// a named type of the app or a built-in type name whose fields, when it stands for a known ROS 2
-// message, come in that message's order (dds/known_messages.h), every "qos" "ports" key a port,
+// a named type of the app or a built-in type name that lays out as the ROS 2 message it stands
+// for, when its definition is found (dds/msg_layout.h), every "qos" "ports" key a port,
 // no two ports
 // share a topic (a topic the file gives is not another port's default either).
 bool check_deployment(const Deployment& d, const model::App& app, std::vector<Diagnostic>* errors);

@@ -11,6 +11,10 @@ rt/nav/cmd_vel.
            used to pass on 24-byte Twists, which the program's subscribers drop without a trace
            (they are refused as 24 bytes longer than the spec's Twist)
 
+The mediator is given a Twist.msg that agrees with the spec (--msg-path): the definitions of
+this machine and the remote program's disagree, which only the samples can show; without it
+the mapping is refused before anything runs (dds/msg_layout.h, cli_dds_stamp_of_ints).
+
 usage: foreign_layout.py ARBC INTEROP_STREAM TESTS_DDS_DIR [longer|shorter]
 """
 import os
@@ -41,10 +45,16 @@ def main():
     if case == "longer":
         wrong = text.replace(twist, "type Twist = { linear: vec3, angular: vec3, speed: float };")
         why = "does not decode as geometry_msgs::msg::dds_::Twist_"
+        local = "Vector3 linear\nVector3 angular\nfloat64 speed\n"
     else:
         wrong = text.replace(twist, "type Twist = { linear: vec3 };").replace(
             "or norm(cmd_vel.angular) > 0.0", "")
         why = "has 24 bytes more than geometry_msgs::msg::dds_::Twist_ as the spec declares it"
+        local = "Vector3 linear\n"
+    msgs = os.path.join(out_dir, "msgs")
+    os.makedirs(os.path.join(msgs, "geometry_msgs", "msg"))
+    with open(os.path.join(msgs, "geometry_msgs", "msg", "Twist.msg"), "w") as f:
+        f.write("# this machine's Twist, not the program's\n" + local)
     if wrong == text:
         fail("teleop.spec no longer declares Twist as this test expects")
     open(spec, "w").write(wrong)
@@ -54,7 +64,7 @@ def main():
     mediator = subprocess.Popen(
         [arbc, "run", os.path.join(out_dir, "teleop"), "--transport", "dds", "--host", "none",
          "--mediate", "all", "--deploy", os.path.join(here, "interop", "teleop.deploy.json"),
-         "--domain", domain, "--duration", "100000s"],
+         "--domain", domain, "--duration", "100000s", "--msg-path", msgs],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     publisher = subprocess.Popen([stream, domain, "20"], env=env)
     time.sleep(4)
