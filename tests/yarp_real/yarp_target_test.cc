@@ -246,7 +246,8 @@ TEST_F(YarpTargetTest, RuntimeChecksDropAListLongerThanTheProofCovers) {
   send("/Sensor/v:o", "1.0 2.0 3.0 4.0 4.5");
   send("/Sensor/v:o", "1.0 2.0 3.0 4.0 4.5 1.0");
   send("/Sensor/v:o", "1.0 2.0");
-  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("4.0"));
+  send("/Sensor/v:o", "1.0 2.0 3.0 4.5");  // at the bound: delivered
+  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("4.0", "9.0"));
   std::string log = receiver_log();
   std::string said =
       "arbc monitor Motor_cmd__pass (/Sensor/v:o -> /Motor/cmd:i): runtime check: dropped a "
