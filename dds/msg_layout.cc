@@ -53,10 +53,18 @@ std::string msg_text(const MsgType& m) {
   return m.text();
 }
 
+// A definition that could not be read, as `file:line:col: what` (the message's name when the
+// definition is a built-in one); "" when it was simply not found.
+std::string error_text(const ros2::MsgError& e, const std::string& name) {
+  if (e.message.empty()) return "";
+  return (e.file.empty() ? name
+                         : e.file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column)) +
+         ": " + e.message;
+}
+
 class Comparer {
  public:
-  Comparer(ros2::MsgLibrary& library, const std::string& message)
-      : library_(library), message_(message) {}
+  explicit Comparer(ros2::MsgLibrary& library) : library_(library) {}
 
   // Why `t` at `where` ("" at the top) does not lay out as `m`; "" when it does.
   std::string field(const Type& t, const MsgType& m, const std::string& where) {
@@ -79,7 +87,7 @@ class Comparer {
                   : "");
     }
     const MsgDefinition* def = library_.find(m.name, &error_);
-    if (!def) return error_text(m.name);
+    if (!def) return error_text(error_, m.name);  // not found anywhere: not checked
     if (t.kind == Type::Kind::Vec3) return vec3(*def, where);
     if (t.kind != Type::Kind::Record) return differ(where, spec_text(t), m.text());
     return record(t, *def, where);
@@ -129,16 +137,7 @@ class Comparer {
                     def.full_name() + " in the message, which is not three float64 x, y, z";
   }
 
-  std::string error_text(const std::string& name) {
-    if (error_.message.empty()) return "";  // not found anywhere: not checked
-    return (error_.file.empty() ? name
-                                : error_.file + ":" + std::to_string(error_.line) + ":" +
-                                      std::to_string(error_.column)) +
-           ": " + error_.message;
-  }
-
   ros2::MsgLibrary& library_;
-  std::string message_;
   ros2::MsgError error_;
 };
 
@@ -148,19 +147,14 @@ std::string layout_problem(const std::string& name, const Type& spec, const std:
                            ros2::MsgLibrary& library) {
   ros2::MsgError error;
   const MsgDefinition* def = library.find(message, &error);
-  Comparer compare(library, message);
   std::string why;
   if (!def) {
-    if (error.message.empty()) return "";
-    why = (error.file.empty() ? message
-                              : error.file + ":" + std::to_string(error.line) + ":" +
-                                    std::to_string(error.column)) +
-          ": " + error.message;
+    why = error_text(error, message);
   } else if (spec.kind == Type::Kind::Vec3 || spec.kind == Type::Kind::Record) {
     ros2::MsgType whole;
     whole.primitive = false;
     whole.name = def->full_name();
-    why = compare.field(spec, whole, "");
+    why = Comparer(library).field(spec, whole, "");
   } else {
     return "";
   }

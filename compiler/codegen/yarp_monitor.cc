@@ -42,6 +42,7 @@ class YarpMonitorWriter {
 
   std::string run() {
     check_parts();
+    checks_ = checks();
     std::string out = header();
     out += "require(\"yarp\")\n\n";
     out += yarp_bottle_lua() + "\n";
@@ -53,7 +54,7 @@ class YarpMonitorWriter {
         "local ARBC_NO_VALUE = {}\n"
         "local function arbc_novalue() error(ARBC_NO_VALUE, 0) end\n\n";
     for (size_t k = 0; k < link_.parts.size(); ++k) out += part(k);
-    out += checks();
+    out += checks_;
     out += accept_function();
     out += callbacks();
     return out;
@@ -147,7 +148,7 @@ class YarpMonitorWriter {
     replace_all(out, "PortMonitor.novalue()", "arbc_novalue()");
     return out;
   }
-  bool has_checks() const { return !checks().empty(); }
+  bool has_checks() const { return !checks_.empty(); }
   // How the monitor names itself in what it says on stderr.
   std::string who() const {
     return "arbc monitor " + link_.monitor + " (" + names_.port(link_.source) + " -> " +
@@ -166,6 +167,7 @@ class YarpMonitorWriter {
   const YarpNames& names_;
   const SpecLines& lines_;
   std::vector<Diagnostic>& diags_;
+  std::string checks_;  // checks(), written once by run()
 };
 
 }  // namespace
