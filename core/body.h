@@ -21,10 +21,14 @@
 
 namespace arbc::model {
 
+// BodyExpr::text of an Op::Int that is a uint64 above 2^63 - 1.
+inline constexpr const char* kUint64Literal = "uint64";
+
 struct BodyExpr {
   enum class Op {
     Message,  // the incoming message
-    Int,      // integer holds an int literal (a folded int constant), exactly
+    Int,      // integer holds an int literal (a folded int constant), exactly; text "uint64"
+              // for a uint64 literal above 2^63 - 1, whose bits integer holds
     Float,    // number holds a float literal (a folded float or duration constant)
     String,   // text
     Bool,     // boolean

@@ -33,7 +33,8 @@ std::string body_expr_spec_text(const BodyExpr& e, const std::string& m) {
     case Op::Message:
       return m;
     case Op::Int:
-      return std::to_string(e.integer);
+      return e.text == kUint64Literal ? std::to_string(static_cast<uint64_t>(e.integer))
+                                      : std::to_string(e.integer);
     case Op::Float:
       return float_spec_text(e.number);
     case Op::String: {

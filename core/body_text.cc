@@ -22,7 +22,9 @@ bool is_binary_op(std::string_view s) {
 
 void append_number(std::string& out, const BodyExpr& e) {
   if (e.op == BodyExpr::Op::Int) {
-    out += std::to_string(e.integer);
+    // A uint64 literal as its unsigned digits, which the reader types uint64 (above 2^63 - 1).
+    out += e.text == kUint64Literal ? std::to_string(static_cast<uint64_t>(e.integer))
+                                    : std::to_string(e.integer);
   } else if (!std::isfinite(e.number)) {
     out += std::isnan(e.number) ? "nan" : (e.number > 0 ? "inf" : "-inf");
   } else {
@@ -268,8 +270,14 @@ bool Reader::number(const std::string& w, BodyExpr& e) {
   e.number = v;
   if (!is_float) {  // an int exactly: the double rounds above 2^53
     auto [last, ec] = std::from_chars(w.data(), w.data() + w.size(), e.integer);
-    if (ec != std::errc() || last != w.data() + w.size())
-      return fail("the int '" + w + "' does not fit in 64 bits");
+    if (ec != std::errc() || last != w.data() + w.size()) {
+      uint64_t u = 0;  // above 2^63 - 1: a uint64 literal
+      auto [ulast, uec] = std::from_chars(w.data(), w.data() + w.size(), u);
+      if (uec != std::errc() || ulast != w.data() + w.size())
+        return fail("the int '" + w + "' does not fit in 64 bits");
+      e.integer = static_cast<int64_t>(u);
+      e.text = kUint64Literal;
+    }
   }
   return true;
 }

@@ -16,11 +16,8 @@ const TypePtr& scalar(Type::Kind k) {
 bool is(const TypePtr& t, Type::Kind k) { return t && t->kind == k; }
 bool numeric(const TypePtr& t) { return is(t, Type::Kind::Int) || is(t, Type::Kind::Float); }
 
-// int only if both are (sema's numeric_join).
-TypePtr join(const TypePtr& a, const TypePtr& b) {
-  return is(a, Type::Kind::Int) && is(b, Type::Kind::Int) ? scalar(Type::Kind::Int)
-                                                          : scalar(Type::Kind::Float);
-}
+// int only if both are, uint64 if either is (core/type.h, as sema's numeric_join).
+TypePtr join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
 
 class Typer {
  public:
@@ -64,7 +61,7 @@ TypePtr Typer::compute(BodyExpr& e) {
     case Op::Message:
       return message_;
     case Op::Int:
-      return scalar(Type::Kind::Int);
+      return e.text == kUint64Literal ? Type::number("uint64") : scalar(Type::Kind::Int);
     case Op::Float:
       return scalar(Type::Kind::Float);
     case Op::String:
@@ -85,7 +82,7 @@ TypePtr Typer::compute(BodyExpr& e) {
       return is(base, Type::Kind::List) ? base->element : nullptr;
     }
     case Op::Neg:
-      return expr(e.args[0]);
+      return promoted(expr(e.args[0]));
     case Op::Not:
       expr(e.args[0]);
       return scalar(Type::Kind::Bool);
@@ -170,10 +167,10 @@ TypePtr Typer::call(BodyExpr& e) {
     case Builtin::Now:
       return scalar(Type::Kind::Float);
     case Builtin::Abs:
-      return args.size() == 1 ? args[0] : nullptr;
+      return args.size() == 1 ? promoted(args[0]) : nullptr;
     case Builtin::Min:
     case Builtin::Max: {
-      if (args.size() == 1 && is(args[0], Type::Kind::List)) return args[0]->element;
+      if (args.size() == 1 && is(args[0], Type::Kind::List)) return promoted(args[0]->element);
       TypePtr t = scalar(Type::Kind::Int);
       for (const TypePtr& a : args) {
         if (!numeric(a)) return nullptr;
@@ -195,8 +192,10 @@ void Typer::stmt(BodyStmt& s) {
   using Kind = BodyStmt::Kind;
   switch (s.kind) {
     case Kind::Let:
-    case Kind::Var:
       locals_[s.name] = expr(s.expr);
+      return;
+    case Kind::Var:  // state a later assignment computes: a sized number's promoted type
+      locals_[s.name] = promoted(expr(s.expr));
       return;
     case Kind::Assign:
     case Kind::Accept:

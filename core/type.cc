@@ -2,8 +2,85 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 
 namespace arbc {
+
+namespace {
+
+struct NumberSpelling {
+  const char* name;
+  Type::Kind kind;
+  int bits;
+  bool is_unsigned;
+};
+
+constexpr NumberSpelling kNumbers[] = {
+#define ARBC_NUMBER(name, kind, bits, is_unsigned) {name, Type::Kind::kind, bits, is_unsigned},
+#include "core/number_types.def"
+#undef ARBC_NUMBER
+};
+
+// The canonical text of a number type: `int` and `float` for the 64-bit ones (what every spec
+// and app.json before issue 41 wrote), else the first spelling the table gives (`uint8`, not
+// `byte`).
+std::string number_text(const Type& t) {
+  if (!t.narrow() && !t.is_unsigned) return t.kind == Type::Kind::Int ? "int" : "float";
+  for (const NumberSpelling& n : kNumbers)
+    if (n.kind == t.kind && n.bits == t.bits && n.is_unsigned == t.is_unsigned) return n.name;
+  return "?";
+}
+
+}  // namespace
+
+TypePtr Type::number(std::string_view name) {
+  for (const NumberSpelling& n : kNumbers) {
+    if (name != n.name) continue;
+    auto t = std::make_shared<Type>();
+    t->kind = n.kind;
+    t->bits = n.bits;
+    t->is_unsigned = n.is_unsigned;
+    return t;
+  }
+  return nullptr;
+}
+
+const std::vector<std::string>& Type::number_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const NumberSpelling& n : kNumbers) v.push_back(n.name);
+    return v;
+  }();
+  return names;
+}
+
+bool Type::narrow() const {
+  return (kind == Kind::Int && (bits < 64 || is_unsigned)) || (kind == Kind::Float && bits < 64);
+}
+
+int64_t Type::min_int() const {
+  if (is_unsigned) return 0;
+  return bits >= 64 ? INT64_MIN : -(int64_t{1} << (bits - 1));
+}
+
+int64_t Type::max_int() const {
+  if (bits >= 64) return INT64_MAX;  // uint64's greatest is not an int64: range_text says it
+  return is_unsigned ? (int64_t{1} << bits) - 1 : (int64_t{1} << (bits - 1)) - 1;
+}
+
+bool Type::holds(int64_t v) const { return v >= min_int() && v <= max_int(); }
+
+bool Type::holds(double v) const {
+  if (bits >= 64 || !std::isfinite(v)) return true;
+  if (std::fabs(v) > std::numeric_limits<float>::max()) return false;  // the cast would be UB
+  return static_cast<double>(static_cast<float>(v)) == v;
+}
+
+std::string Type::range_text() const {
+  if (is_unsigned && bits >= 64) return "0 to 18446744073709551615";
+  return std::to_string(min_int()) + " to " + std::to_string(max_int());
+}
 
 TypePtr Type::scalar(Kind kind) {
   auto t = std::make_shared<Type>();
@@ -43,9 +120,8 @@ std::string Type::to_string() const {
     case Kind::Bool:
       return "bool";
     case Kind::Int:
-      return "int";
     case Kind::Float:
-      return "float";
+      return number_text(*this);
     case Kind::String:
       return "string";
     case Kind::Vec3:
@@ -64,8 +140,25 @@ std::string Type::to_string() const {
   return "?";
 }
 
+bool is_uint64(const Type& t) { return t.kind == Type::Kind::Int && t.bits == 64 && t.is_unsigned; }
+
+TypePtr promoted(const TypePtr& t) {
+  static const TypePtr kInt = Type::number("int64"), kFloat = Type::number("float64");
+  if (!t || !t->narrow() || is_uint64(*t)) return t;
+  return t->kind == Type::Kind::Int ? kInt : kFloat;
+}
+
+TypePtr arithmetic_type(const Type& a, const Type& b) {
+  static const TypePtr kInt = Type::number("int64"), kUint64 = Type::number("uint64"),
+                       kFloat = Type::number("float64");
+  if (a.kind == Type::Kind::Float || b.kind == Type::Kind::Float) return kFloat;
+  return is_uint64(a) || is_uint64(b) ? kUint64 : kInt;
+}
+
 bool same_type(const Type& a, const Type& b) {
   if (a.kind != b.kind) return false;
+  if (a.kind == Type::Kind::Int || a.kind == Type::Kind::Float)
+    return a.bits == b.bits && a.is_unsigned == b.is_unsigned;
   if (a.kind == Type::Kind::List) return same_type(*a.element, *b.element);
   if (a.kind != Type::Kind::Record) return true;
   if (a.fields.size() != b.fields.size()) return false;
@@ -79,7 +172,8 @@ bool same_type(const Type& a, const Type& b) {
 
 namespace {
 
-// Recursive descent over: type := scalar | 'list' '<' type '>' | '{' (name ':' type),* '}'
+// Recursive descent over: type := scalar (number types by any spelling) | 'list' '<' type '>' | '{'
+// (name ':' type),* '}'
 class TypeParser {
  public:
   explicit TypeParser(std::string_view text) : text_(text) {}
@@ -123,10 +217,8 @@ class TypeParser {
       std::string word = identifier();
       if (word == "bool")
         result = Type::scalar(Type::Kind::Bool);
-      else if (word == "int")
-        result = Type::scalar(Type::Kind::Int);
-      else if (word == "float")
-        result = Type::scalar(Type::Kind::Float);
+      else if (TypePtr number = Type::number(word))
+        result = number;
       else if (word == "string")
         result = Type::scalar(Type::Kind::String);
       else if (word == "vec3")

@@ -240,9 +240,17 @@ bool conforms(const Value& v, const Type& t, std::string* why) {
     case Type::Kind::Bool:
       return v.is_bool() || mismatch();
     case Type::Kind::Int:
-      return v.is_int() || mismatch();
+      if (!v.is_int()) return mismatch();
+      // A uint64 is held as its bit pattern (core/type.h): every int64 is one.
+      if (t.bits < 64 && !t.holds(v.as_int()))
+        return fail(std::to_string(v.as_int()) + " is not " + t.to_string() + " (" +
+                    t.range_text() + ")");
+      return true;
     case Type::Kind::Float:
-      return v.is_number() || mismatch();
+      if (!v.is_number()) return mismatch();
+      if (!t.holds(v.as_float()))
+        return fail(v.to_json() + " is not a " + t.to_string() + " value (it would round)");
+      return true;
     case Type::Kind::String:
       return v.is_string() || mismatch();
     case Type::Kind::Vec3:

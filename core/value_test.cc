@@ -50,5 +50,20 @@ TEST(ValueTest, ConformsChecksTypesAndSaysWhere) {
   EXPECT_EQ(why, "missing field pos");
 }
 
+// A value of a sized type is in its range; a uint64 is any bit pattern; a float32 rounds to
+// itself. What does not conform is dropped by the runtime as bad-type, with this reason.
+TEST(ValueTest, ConformsChecksTheRangeOfSizedTypes) {
+  std::string why;
+  EXPECT_TRUE(conforms(Value(int64_t{127}), *parse_type("int8")));
+  EXPECT_FALSE(conforms(Value(int64_t{128}), *parse_type("int8"), &why));
+  EXPECT_EQ(why, "128 is not int8 (-128 to 127)");
+  EXPECT_FALSE(conforms(Value(int64_t{-1}), *parse_type("uint32"), &why));
+  EXPECT_TRUE(conforms(Value(int64_t{-1}), *parse_type("uint64")));  // 2^64 - 1
+  EXPECT_TRUE(conforms(Value(0.5), *parse_type("float32")));
+  EXPECT_FALSE(conforms(Value(0.1), *parse_type("float32"), &why));
+  EXPECT_EQ(why, "0.1 is not a float32 value (it would round)");
+  EXPECT_FALSE(conforms(Value(int64_t{16777217}), *parse_type("float32"), &why));
+}
+
 }  // namespace
 }  // namespace arbc

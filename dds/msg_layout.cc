@@ -1,7 +1,6 @@
 #include "dds/msg_layout.h"
 
 #include <algorithm>
-#include <map>
 
 #include "core/join.h"
 
@@ -12,32 +11,28 @@ namespace {
 using ros2::MsgDefinition;
 using ros2::MsgType;
 
-// A primitive's bytes on the wire (CDR), and the spec type that has the same layout, if any.
-struct Primitive {
-  int bytes;
-  Type::Kind spec;  // Type::Kind::Record: none
-};
+// The spec type a .msg primitive is, with the same bytes on the wire (core/number_types.def
+// spells byte and char as uint8; a bounded string is a string, whose bound is not on the wire);
+// null for wstring, which a spec cannot declare.
+TypePtr spec_type_of(const MsgType& m) {
+  if (m.name == "bool") return Type::scalar(Type::Kind::Bool);
+  if (m.name == "string") return Type::scalar(Type::Kind::String);
+  return Type::number(m.name);
+}
 
-const std::map<std::string, Primitive>& primitives() {
-  static const std::map<std::string, Primitive> table = {
-      {"bool", {1, Type::Kind::Bool}},      {"byte", {1, Type::Kind::Record}},
-      {"char", {1, Type::Kind::Record}},    {"int8", {1, Type::Kind::Record}},
-      {"uint8", {1, Type::Kind::Record}},   {"int16", {2, Type::Kind::Record}},
-      {"uint16", {2, Type::Kind::Record}},  {"int32", {4, Type::Kind::Record}},
-      {"uint32", {4, Type::Kind::Record}},  {"float32", {4, Type::Kind::Record}},
-      {"int64", {8, Type::Kind::Int}},      {"uint64", {8, Type::Kind::Record}},
-      {"float64", {8, Type::Kind::Float}},  {"string", {0, Type::Kind::String}},
-      {"wstring", {0, Type::Kind::Record}},
-  };
-  return table;
+std::string bytes_text(int bytes) {
+  return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
 }
 
 std::string spec_text(const Type& t) {
   switch (t.kind) {
     case Type::Kind::Int:
-      return "int (int64, 8 bytes)";
-    case Type::Kind::Float:
-      return "float (float64, 8 bytes)";
+    case Type::Kind::Float: {
+      std::string name = t.to_string();
+      std::string full = t.kind == Type::Kind::Float ? "float" : t.is_unsigned ? "uint" : "int";
+      full += std::to_string(t.bits);
+      return name + " (" + (name == full ? "" : full + ", ") + bytes_text(t.bits / 8) + ")";
+    }
     case Type::Kind::Record:
       return "a record";
     default:
@@ -46,10 +41,10 @@ std::string spec_text(const Type& t) {
 }
 
 std::string msg_text(const MsgType& m) {
-  auto p = primitives().find(m.name);
-  if (m.primitive && m.array == MsgType::Array::None && p != primitives().end() && p->second.bytes)
-    return m.text() + " (" + std::to_string(p->second.bytes) +
-           (p->second.bytes == 1 ? " byte)" : " bytes)");
+  TypePtr t = m.primitive && m.array == MsgType::Array::None ? spec_type_of(m) : nullptr;
+  if (t && (t->kind == Type::Kind::Int || t->kind == Type::Kind::Float))
+    return m.text() + " (" + bytes_text(t->bits / 8) + ")";
+  if (t && t->kind == Type::Kind::Bool) return m.text() + " (1 byte)";
   return m.text();
 }
 
@@ -79,12 +74,11 @@ class Comparer {
       return field(*t.element, element, where + "[]");
     }
     if (m.primitive) {
-      auto p = primitives().find(m.name);
-      if (p != primitives().end() && p->second.spec == t.kind) return "";
+      TypePtr want = spec_type_of(m);
+      if (want && same_type(t, *want)) return "";
       return differ(where, spec_text(t), msg_text(m)) +
-             (p != primitives().end() && p->second.spec == Type::Kind::Record
-                  ? "; a spec cannot declare " + m.name + " yet (docs/distributed.md#known-limits)"
-                  : "");
+             (want ? ": declare it " + want->to_string()
+                   : "; a spec cannot declare " + m.name + " (docs/distributed.md#known-limits)");
     }
     const MsgDefinition* def = library_.find(m.name, &error_);
     if (!def) return error_text(error_, m.name);  // not found anywhere: not checked

@@ -67,7 +67,23 @@ TEST(MsgLayoutTest, AStampOfIntsIsNotAnInt32AndAUint32) {
   EXPECT_EQ(layout_problem("TwistStamped", *stamped, "geometry_msgs/msg/TwistStamped", lib),
             "the spec's TwistStamped does not lay out as geometry_msgs/msg/TwistStamped: "
             "header.stamp.sec is int (int64, 8 bytes) in the spec and int32 (4 bytes) in the "
-            "message; a spec cannot declare int32 yet (docs/distributed.md#known-limits)");
+            "message: declare it int32");
+  // Declared at ROS 2's widths, it lays out: int32 sec, uint32 nanosec.
+  TypePtr stamp =
+      Type::record({{"sec", Type::number("int32")}, {"nanosec", Type::number("uint32")}});
+  TypePtr exact = Type::record(
+      {{"header", Type::record({{"stamp", stamp}, {"frame_id", text()}})}, {"twist", twist}});
+  EXPECT_EQ(layout_problem("TwistStamped", *exact, "geometry_msgs/msg/TwistStamped", lib), "");
+  // One width off is named with both widths: a uint32 is not an int32, nor a byte a char8.
+  TypePtr swapped =
+      Type::record({{"sec", Type::number("uint32")}, {"nanosec", Type::number("uint32")}});
+  TypePtr off = Type::record(
+      {{"header", Type::record({{"stamp", swapped}, {"frame_id", text()}})}, {"twist", twist}});
+  std::string why = layout_problem("TwistStamped", *off, "geometry_msgs/msg/TwistStamped", lib);
+  EXPECT_NE(why.find("header.stamp.sec is uint32 (4 bytes) in the spec and int32 (4 bytes) in "
+                     "the message: declare it int32"),
+            std::string::npos)
+      << why;
   TypePtr headerless = Type::record({{"twist", twist}});
   EXPECT_NE(layout_problem("TwistStamped", *headerless, "geometry_msgs/msg/TwistStamped", lib)
                 .find("has 1 fields (twist) and geometry_msgs/msg/TwistStamped has 2"),

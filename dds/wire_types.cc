@@ -5,6 +5,7 @@
 #include <fastrtps/types/DynamicTypeBuilderPtr.h>
 
 #include <cstdint>
+#include <string>
 
 namespace arbc::dds {
 
@@ -17,50 +18,52 @@ namespace {
 // unbounded sequence or string: a bound is not part of the CDR encoding.
 constexpr uint32_t kUnbounded = INT32_MAX;
 
-// The name of a scalar's wrapper struct: ROS 2's std_msgs layout and names.
-const char* scalar_message(Type::Kind k) {
-  switch (k) {
+// The name of a scalar's wrapper struct: ROS 2's std_msgs layout and names (std_msgs/msg/Int32,
+// UInt8, Float32, ...).
+std::string scalar_message(const Type& t) {
+  switch (t.kind) {
     case Type::Kind::Bool:
       return "Bool";
     case Type::Kind::Int:
-      return "Int64";
+      return std::string(t.is_unsigned ? "UInt" : "Int") + std::to_string(t.bits);
     case Type::Kind::Float:
-      return "Float64";
+      return "Float" + std::to_string(t.bits);
     default:
       return "String";
   }
 }
 
-// The key of a built-in type in the deployment's "types".
-const char* builtin_key(Type::Kind k) {
-  switch (k) {
-    case Type::Kind::Bool:
-      return "bool";
-    case Type::Kind::Int:
-      return "int";
-    case Type::Kind::Float:
-      return "float";
-    case Type::Kind::String:
-      return "string";
+// The key of a built-in type in the deployment's "types": its canonical spelling ("int",
+// "uint8", "float32").
+std::string builtin_key(const Type& t) { return t.to_string(); }
+
+// A number type on the wire: its CDR width (an int8 or a uint8 is one octet, which Fast-DDS 2.9's
+// dynamic types call a byte; wire_values.cc reads int8 back with its sign).
+ft::DynamicType_ptr number(const Type& t) {
+  ft::DynamicTypeBuilderFactory* f = ft::DynamicTypeBuilderFactory::get_instance();
+  if (t.kind == Type::Kind::Float)
+    return t.bits == 32 ? f->create_float32_type() : f->create_float64_type();
+  switch (t.bits) {
+    case 8:
+      return f->create_byte_type();
+    case 16:
+      return t.is_unsigned ? f->create_uint16_type() : f->create_int16_type();
+    case 32:
+      return t.is_unsigned ? f->create_uint32_type() : f->create_int32_type();
     default:
-      return "vec3";
+      return t.is_unsigned ? f->create_uint64_type() : f->create_int64_type();
   }
 }
 
-ft::DynamicType_ptr scalar(Type::Kind k, std::string* signature) {
+ft::DynamicType_ptr scalar(const Type& t) {
   ft::DynamicTypeBuilderFactory* f = ft::DynamicTypeBuilderFactory::get_instance();
-  switch (k) {
+  switch (t.kind) {
     case Type::Kind::Bool:
-      *signature = "boolean";
       return f->create_bool_type();
     case Type::Kind::Int:
-      *signature = "int64";
-      return f->create_int64_type();
     case Type::Kind::Float:
-      *signature = "float64";
-      return f->create_float64_type();
+      return number(t);
     default:
-      *signature = "string";
       return f->create_string_type(kUnbounded);
   }
 }
@@ -128,9 +131,9 @@ std::string WireNaming::struct_name(const Type& t, const std::string& anonymous)
 
 std::string WireNaming::wrapper_name(const Type& t, const std::string& anonymous) const {
   if (!is_scalar(t.kind)) return struct_name(t, anonymous);
-  auto it = deployment_.types.find(builtin_key(t.kind));
+  auto it = deployment_.types.find(builtin_key(t));
   if (it != deployment_.types.end()) return mangle(it->second);
-  std::string message = scalar_message(t.kind);
+  std::string message = scalar_message(t);
   return deployment_.ros2 ? mangle("std_msgs/msg/" + message) : "arbc::" + message;
 }
 
@@ -163,8 +166,7 @@ std::shared_ptr<const WireType> WireNaming::port_type(const std::string& module,
 // anonymous records inside a struct are named after it and their field (`Cmd_pos`).
 ft::DynamicType_ptr WireNaming::build(const Type& t, const std::string& anonymous,
                                       std::string* error) {
-  std::string ignored;
-  if (is_scalar(t.kind)) return scalar(t.kind, &ignored);
+  if (is_scalar(t.kind)) return scalar(t);
   ft::DynamicTypeBuilderFactory* f = ft::DynamicTypeBuilderFactory::get_instance();
   if (t.kind == Type::Kind::List) {
     ft::DynamicType_ptr element = build(*t.element, anonymous, error);

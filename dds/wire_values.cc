@@ -1,5 +1,10 @@
 #include "dds/wire_values.h"
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
 namespace arbc::dds {
 
 namespace ft = eprosima::fastrtps::types;
@@ -9,6 +14,124 @@ namespace {
 bool ok(const ft::ReturnCode_t& rc) { return rc == ft::ReturnCode_t::RETCODE_OK; }
 
 bool put(ft::DynamicData* parent, ft::MemberId id, const Type& t, const Value& v);
+
+// A float32 widened to a double and narrowed back with a NaN's sign and payload moved by hand:
+// the hardware's conversions are IEEE operations, which set a signalling NaN's quiet bit
+// (0x7f800001 came back 0x7fc00001). The payload's 23 bits are the double's top 23.
+double widen(float f) {
+  if (!std::isnan(f)) return f;
+  uint32_t b = std::bit_cast<uint32_t>(f);
+  return std::bit_cast<double>(uint64_t{b >> 31} << 63 | uint64_t{0x7ff} << 52 |
+                               uint64_t{b & 0x7fffffu} << 29);
+}
+
+float narrow(double x) {
+  if (!std::isnan(x)) return static_cast<float>(x);
+  uint64_t d = std::bit_cast<uint64_t>(x);
+  uint32_t payload = static_cast<uint32_t>(d >> 29) & 0x7fffffu;
+  // A double NaN whose payload is all in its low 29 bits: quiet, as the hardware makes it.
+  if (payload == 0) payload = 0x400000u;
+  return std::bit_cast<float>(static_cast<uint32_t>(d >> 63) << 31 | 0x7f800000u | payload);
+}
+
+// A number of type t into member `id`, at its width (wire_types.cc). The value is in t's range:
+// the runtime refuses a message that is not (core/value.h conforms), and a uint64 is held as its
+// bits, which the cast keeps.
+bool put_number(ft::DynamicData* d, ft::MemberId id, const Type& t, const Value& v) {
+  if (t.kind == Type::Kind::Float)
+    return t.bits == 32 ? ok(d->set_float32_value(narrow(v.as_float()), id))
+                        : ok(d->set_float64_value(v.as_float(), id));
+  int64_t i = v.as_int();
+  switch (t.bits) {
+    case 8:
+      return ok(d->set_byte_value(static_cast<ft::octet>(static_cast<uint8_t>(i)), id));
+    case 16:
+      return t.is_unsigned ? ok(d->set_uint16_value(static_cast<uint16_t>(i), id))
+                           : ok(d->set_int16_value(static_cast<int16_t>(i), id));
+    case 32:
+      return t.is_unsigned ? ok(d->set_uint32_value(static_cast<uint32_t>(i), id))
+                           : ok(d->set_int32_value(static_cast<int32_t>(i), id));
+    default:
+      return t.is_unsigned ? ok(d->set_uint64_value(static_cast<uint64_t>(i), id))
+                           : ok(d->set_int64_value(i, id));
+  }
+}
+
+// A number of type t appended to a sequence, at its width (as put_number).
+bool insert_number(ft::DynamicData* seq, const Type& t, const Value& v) {
+  ft::MemberId id = 0;
+  if (t.kind == Type::Kind::Float)
+    return t.bits == 32 ? ok(seq->insert_float32_value(narrow(v.as_float()), id))
+                        : ok(seq->insert_float64_value(v.as_float(), id));
+  int64_t i = v.as_int();
+  switch (t.bits) {
+    case 8:
+      return ok(seq->insert_byte_value(static_cast<ft::octet>(static_cast<uint8_t>(i)), id));
+    case 16:
+      return t.is_unsigned ? ok(seq->insert_uint16_value(static_cast<uint16_t>(i), id))
+                           : ok(seq->insert_int16_value(static_cast<int16_t>(i), id));
+    case 32:
+      return t.is_unsigned ? ok(seq->insert_uint32_value(static_cast<uint32_t>(i), id))
+                           : ok(seq->insert_int32_value(static_cast<int32_t>(i), id));
+    default:
+      return t.is_unsigned ? ok(seq->insert_uint64_value(static_cast<uint64_t>(i), id))
+                           : ok(seq->insert_int64_value(i, id));
+  }
+}
+
+// A number of type t from member `id`: an int8 gets its sign back from the octet, a uint64 is
+// kept as its bits, a float32 widens exactly. (Fast-DDS overloads each getter, so no table of
+// member pointers: one call per width.)
+// x is a reference: the getter that fills it is another argument of the same call, and C++
+// leaves the order of arguments unspecified (GCC copied x, still 0, before the getter ran).
+template <typename T>
+bool keep(bool read, const T& x, Value* out) {
+  if (!read) return false;
+  if constexpr (std::is_floating_point_v<T>)
+    *out = Value(static_cast<double>(x));
+  else
+    *out = Value(static_cast<int64_t>(x));
+  return true;
+}
+
+bool get_number(ft::DynamicData* d, ft::MemberId id, const Type& t, Value* out) {
+  if (t.kind == Type::Kind::Float) {
+    if (t.bits == 32) {
+      float f = 0;
+      bool read = ok(d->get_float32_value(f, id));
+      return keep(read, widen(f), out);
+    }
+    double x = 0;
+    return keep(ok(d->get_float64_value(x, id)), x, out);
+  }
+  if (t.bits == 8) {
+    ft::octet b = 0;
+    bool read = ok(d->get_byte_value(b, id));
+    return t.is_unsigned ? keep(read, b, out) : keep(read, static_cast<int8_t>(b), out);
+  }
+  if (t.bits == 16 && t.is_unsigned) {
+    uint16_t x = 0;
+    return keep(ok(d->get_uint16_value(x, id)), x, out);
+  }
+  if (t.bits == 16) {
+    int16_t x = 0;
+    return keep(ok(d->get_int16_value(x, id)), x, out);
+  }
+  if (t.bits == 32 && t.is_unsigned) {
+    uint32_t x = 0;
+    return keep(ok(d->get_uint32_value(x, id)), x, out);
+  }
+  if (t.bits == 32) {
+    int32_t x = 0;
+    return keep(ok(d->get_int32_value(x, id)), x, out);
+  }
+  if (t.is_unsigned) {
+    uint64_t x = 0;
+    return keep(ok(d->get_uint64_value(x, id)), x, out);
+  }
+  int64_t x = 0;
+  return keep(ok(d->get_int64_value(x, id)), x, out);
+}
 
 // Fills a struct (a record's fields in declaration order, or vec3's x, y, z).
 bool fill_struct(ft::DynamicData* s, const Type& t, const Value& v) {
@@ -33,10 +156,8 @@ bool fill_sequence(ft::DynamicData* seq, const Type& element, const Value& v) {
         done = ok(seq->insert_bool_value(item.as_bool(), id));
         break;
       case Type::Kind::Int:
-        done = ok(seq->insert_int64_value(item.as_int(), id));
-        break;
       case Type::Kind::Float:
-        done = ok(seq->insert_float64_value(item.as_float(), id));
+        done = insert_number(seq, element, item);
         break;
       case Type::Kind::String:
         done = ok(seq->insert_string_value(item.as_string(), id));
@@ -55,9 +176,8 @@ bool put(ft::DynamicData* parent, ft::MemberId id, const Type& t, const Value& v
     case Type::Kind::Bool:
       return ok(parent->set_bool_value(v.as_bool(), id));
     case Type::Kind::Int:
-      return ok(parent->set_int64_value(v.as_int(), id));
     case Type::Kind::Float:
-      return ok(parent->set_float64_value(v.as_float(), id));
+      return put_number(parent, id, t, v);
     case Type::Kind::String:
       return ok(parent->set_string_value(v.as_string(), id));
     default:
@@ -114,18 +234,9 @@ bool get(ft::DynamicData* parent, ft::MemberId id, const Type& t, Value* out) {
       *out = Value(b);
       return true;
     }
-    case Type::Kind::Int: {
-      int64_t i = 0;
-      if (!ok(parent->get_int64_value(i, id))) return false;
-      *out = Value(i);
-      return true;
-    }
-    case Type::Kind::Float: {
-      double d = 0;
-      if (!ok(parent->get_float64_value(d, id))) return false;
-      *out = Value(d);
-      return true;
-    }
+    case Type::Kind::Int:
+    case Type::Kind::Float:
+      return get_number(parent, id, t, out);
     case Type::Kind::String: {
       std::string s;
       if (!ok(parent->get_string_value(s, id))) return false;

@@ -97,12 +97,22 @@ Value draw(const Type& t, std::mt19937_64& rng, const SamplePlan& plan, const st
     case Type::Kind::Bool:
       return Value(rng() % 2 == 0);
     case Type::Kind::Int: {
+      // Within the field's type: a stand-in for an int8 is an int8 (core/value.h conforms).
       const model::ComparedValues* cs = compared(plan, part);
-      return Value(cs ? int_around(cs->numbers, rng, -kIntEdge, kIntEdge)
+      double least = t.bits < 64 ? static_cast<double>(t.min_int()) : -kIntEdge;
+      double most = t.bits < 64 ? static_cast<double>(t.max_int()) : kIntEdge;
+      if (t.is_unsigned) least = 0;
+      return Value(cs ? int_around(cs->numbers, rng, least, most)
                       : static_cast<int64_t>(rng() % 10));
     }
-    case Type::Kind::Float:
-      return Value(draw_float(rng, plan, part, 0, 1));
+    case Type::Kind::Float: {
+      double x = draw_float(rng, plan, part, 0, 1);
+      if (t.bits == 64 || !std::isfinite(x)) return Value(x);
+      // A float32 field gets the float32 nearest the draw, kept inside its range (a cast from
+      // beyond it is undefined).
+      constexpr double kMax = std::numeric_limits<float>::max();
+      return Value(static_cast<double>(static_cast<float>(std::clamp(x, -kMax, kMax))));
+    }
     case Type::Kind::String:
       return draw_string(rng, plan, part);
     case Type::Kind::Vec3: {

@@ -68,7 +68,7 @@ class Encoder {
   Ev record(const BodyExpr& e);
   Ev list(const BodyExpr& e);
   Ev arith(const std::string& op, const Ev& a, const Ev& b);
-  Ev compare(const std::string& op, const Ev& a, const Ev& b);
+  Ev compare(const std::string& op, const Ev& a, const Ev& b, bool unsigned_order);
   Ev call(const BodyExpr& e);
   Ev best_by(const BodyExpr& e, bool min);
   Ev min_max(const BodyExpr& e, bool min);
@@ -225,7 +225,11 @@ Ev Encoder::binary(const BodyExpr& e) {
     if (open_list(a.v) || open_list(b.v)) out_.bounded = true;  // compares every element
     return {{K::Bool, op == "==" ? *eq : !*eq}, a.ok && b.ok};
   }
-  if (op == "<" || op == "<=" || op == ">" || op == ">=") return compare(op, a, b);
+  if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+    bool unsigned_order = (e.args[0].type && is_uint64(*e.args[0].type)) ||
+                          (e.args[1].type && is_uint64(*e.args[1].type));
+    return compare(op, a, b, unsigned_order);
+  }
   if (a.v.kind == K::Vec3 || b.v.kind == K::Vec3) return vec_op(op, a, b);
   if (op == "+" && a.v.kind == K::String)
     return {{K::String, z3::concat(a.v.scalar, b.v.scalar)}, a.ok && b.ok};
@@ -253,9 +257,17 @@ Ev Encoder::binary(const BodyExpr& e) {
   return arith(op, a, b);
 }
 
-Ev Encoder::compare(const std::string& op, const Ev& a, const Ev& b) {
+Ev Encoder::compare(const std::string& op, const Ev& a, const Ev& b, bool unsigned_order) {
   if (!a.v.numeric() || !b.v.numeric())
     return bad("`" + op + "` on strings (byte order is not encoded)");
+  if (unsigned_order && a.v.kind == K::Int && b.v.kind == K::Int) {
+    // A uint64's bits against an unsigned partner's (sema_numbers.cc): the monitor's math.ult.
+    z3::expr r = op == "<"    ? z3::ult(a.v.scalar, b.v.scalar)
+                 : op == "<=" ? z3::ule(a.v.scalar, b.v.scalar)
+                 : op == ">"  ? z3::ult(b.v.scalar, a.v.scalar)
+                              : z3::ule(b.v.scalar, a.v.scalar);
+    return {{K::Bool, r}, a.ok && b.ok};
+  }
   // Lua evaluates a > b as b < a and a >= b as b <= a.
   z3::expr r = op == "<"    ? lua::less(a.v, b.v)
                : op == "<=" ? lua::less_equal(a.v, b.v)

@@ -24,7 +24,7 @@ Finding assert_finding(const PortScope& scope, const model::Assertion& a) {
 bool replay_violation(const model::Connection& c, const model::Assertion& a, const Type& type,
                       const DataWitness& w, DataQuery& data, const MonitorRunner* runner,
                       MessageExample& ex, std::string* why) {
-  if (!replay_accepts(runner, {&c}, w.messages, {0}, ex, why)) return false;
+  if (!replay_accepts(data.app(), runner, {&c}, w.messages, {0}, ex, why)) return false;
   MonitorRun run;
   std::string err;
   runner->run(c, w.messages[0], &run, &err);
@@ -87,7 +87,7 @@ DataAssertOutcome check_data_assert(const PortScope& scope, int rule_index,
                      {}});
   MessageExample ex;
   ex.source = c.source;
-  ex.value = spec_value_text(w.messages[0]);
+  ex.value = spec_value_text(w.messages[0], port_type_of(data.app(), c.source));
   f.notes.push_back({"the message: " + ex.source + " = " + ex.value, {}});
   f.notes.push_back({"'" + a.rule + "' is selected (`" + rule.effective_guard.to_string() +
                          "`) and delivers " + spec_value_text(w.emitted[0]),

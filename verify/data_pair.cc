@@ -12,27 +12,29 @@ std::string core_lines_text(const std::vector<int>& lines, const std::string& ru
          join(n) + " of '" + rule + "'";
 }
 
-bool replay_accepts(const MonitorRunner* runner, const std::vector<const model::Connection*>& rules,
+bool replay_accepts(const model::App& app, const MonitorRunner* runner,
+                    const std::vector<const model::Connection*>& rules,
                     const std::vector<Value>& messages, const std::vector<int>& message_of,
                     MessageExample& example, std::string* why) {
   for (size_t i = 0; i < rules.size(); ++i) {
     const model::Connection& c = *rules[i];
     const Value& msg = messages[static_cast<size_t>(message_of[i])];
+    const Type* msg_type = port_type_of(app, c.source);
     MonitorRun run;
     std::string err;
     if (!runner->run(c, msg, &run, &err)) {
-      *why = "the monitor of '" + c.name + "' could not be run on " + spec_value_text(msg) + ": " +
-             err;
+      *why = "the monitor of '" + c.name + "' could not be run on " +
+             spec_value_text(msg, msg_type) + ": " + err;
       return false;
     }
     if (!run.accepted) {
-      *why = "Z3 says '" + c.name + "' accepts " + c.source + " = " + spec_value_text(msg) +
-             ", but its Lua monitor drops it (" + (run.reason.empty() ? "rejected" : run.reason) +
-             ")";
+      *why = "Z3 says '" + c.name + "' accepts " + c.source + " = " +
+             spec_value_text(msg, msg_type) + ", but its Lua monitor drops it (" +
+             (run.reason.empty() ? "rejected" : run.reason) + ")";
       return false;
     }
     example.replay.push_back("'" + c.name + "' accepts it and delivers " +
-                             spec_value_text(run.delivered));
+                             spec_value_text(run.delivered, port_type_of(app, c.destination)));
   }
   return true;
 }
@@ -78,7 +80,7 @@ DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const m
   }
   MessageExample ex;
   ex.source = a.source;
-  ex.value = spec_value_text(w.messages[0]);
+  ex.value = spec_value_text(w.messages[0], port_type_of(data.app(), a.source));
   std::vector<std::string> assumed = w.assumed_state[0];
   assumed.insert(assumed.end(), w.assumed_state[1].begin(), w.assumed_state[1].end());
   d.kind = DataPair::Kind::Overlap;
@@ -93,7 +95,7 @@ DataPair same_message_pair(DataQuery& data, const MonitorRunner* runner, const m
     d.notes.push_back({"not replayed (no monitor runner)", {}});
   } else {
     std::string why;
-    if (!replay_accepts(runner, {&a, &b}, w.messages, {0, 0}, ex, &why)) {
+    if (!replay_accepts(data.app(), runner, {&a, &b}, w.messages, {0, 0}, ex, &why)) {
       d.kind = DataPair::Kind::Internal;
       d.text = why;
       return d;

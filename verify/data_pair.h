@@ -37,7 +37,8 @@ std::string core_lines_text(const std::vector<int>& lines, const std::string& ru
 // Replays `message` through each rule's monitor; each must accept (and, with `emitted`,
 // deliver that value). Adds one line per rule to `example`; false and `*why` on a
 // disagreement (an internal error).
-bool replay_accepts(const MonitorRunner* runner, const std::vector<const model::Connection*>& rules,
+bool replay_accepts(const model::App& app, const MonitorRunner* runner,
+                    const std::vector<const model::Connection*>& rules,
                     const std::vector<Value>& messages, const std::vector<int>& message_of,
                     MessageExample& example, std::string* why);
 

@@ -371,7 +371,7 @@ std::optional<bool> DataQuery::holds(const model::BodyExpr& predicate, const Val
   return r == z3::sat;
 }
 
-std::string spec_value_text(const Value& v) {
+std::string spec_value_text(const Value& v, const Type* type) {
   std::string out;
   switch (v.kind()) {
     case Value::Kind::None:
@@ -379,6 +379,7 @@ std::string spec_value_text(const Value& v) {
     case Value::Kind::Bool:
       return v.as_bool() ? "true" : "false";
     case Value::Kind::Int:
+      if (type && is_uint64(*type)) return std::to_string(static_cast<uint64_t>(v.as_int()));
       return std::to_string(v.as_int());
     case Value::Kind::Float:
       out = float_spec_text(v.as_float());
@@ -394,22 +395,30 @@ std::string spec_value_text(const Value& v) {
              spec_value_text(Value(p.z())) + ")";
     }
     case Value::Kind::List: {
+      const Type* element = type && type->kind == Type::Kind::List ? type->element.get() : nullptr;
       out = "[";
       for (size_t i = 0; i < v.as_list().size(); ++i)
-        out += (i ? ", " : "") + spec_value_text(v.as_list()[i]);
+        out += (i ? ", " : "") + spec_value_text(v.as_list()[i], element);
       return out + "]";
     }
     case Value::Kind::Record: {
       out = "{ ";
       bool first = true;
       for (const auto& [name, f] : v.as_record()) {
-        out += (first ? "" : ", ") + name + ": " + spec_value_text(f);
+        const Field* field = type ? type->field(name) : nullptr;
+        out += (first ? "" : ", ") + name + ": " +
+               spec_value_text(f, field ? field->type.get() : nullptr);
         first = false;
       }
       return out + " }";
     }
   }
   return out;
+}
+
+const Type* port_type_of(const model::App& app, const std::string& qualified) {
+  const model::Port* p = app.find_port(qualified);
+  return p && p->type ? p->type.get() : nullptr;
 }
 
 }  // namespace arbc::verify

@@ -137,7 +137,12 @@ class DataQuery {
   SolverTimeout timeout_;
 };
 
-// A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`.
-std::string spec_value_text(const Value& v);
+// A value in spec syntax: `[{ dist: 0.3, pos: vec3(0.3, 0, 0) }]`, `"take"`, `0.4`. With its
+// type, a uint64 (held as its bits, core/type.h) is written as its unsigned value, which reads
+// back as that uint64 in a test (a counterexample kept with --counterexamples).
+std::string spec_value_text(const Value& v, const Type* type = nullptr);
+
+// The type of the port `qualified` ("M.p") in `app`; null when there is none.
+const Type* port_type_of(const model::App& app, const std::string& qualified);
 
 }  // namespace arbc::verify

@@ -87,6 +87,20 @@ z3::expr float_const(z3::context& ctx, const std::string& name) {
   return ctx.constant(name.c_str(), float_sort(ctx));
 }
 
+z3::expr sized_int_const(z3::context& ctx, const std::string& name, const Type& t) {
+  if (t.bits >= 64) return int_const(ctx, name);
+  z3::expr narrow = ctx.bv_const(name.c_str(), static_cast<unsigned>(t.bits));
+  unsigned wider = static_cast<unsigned>(64 - t.bits);
+  return t.is_unsigned ? z3::zext(narrow, wider) : z3::sext(narrow, wider);
+}
+
+z3::expr sized_float_const(z3::context& ctx, const std::string& name, const Type& t) {
+  if (t.bits >= 64) return float_const(ctx, name);
+  z3::expr single = ctx.fpa_const(name.c_str(), 8, 24);
+  // Widening a binary32 to binary64 is exact: the rounding mode never applies.
+  return z3::expr(ctx, Z3_mk_fpa_to_fp_float(ctx, Z3_mk_fpa_rne(ctx), single, float_sort(ctx)));
+}
+
 z3::expr to_float(const SymValue& v) {
   return v.kind == K::Int ? int_to_float(v.scalar, Round::Nearest) : v.scalar;
 }

@@ -4,6 +4,8 @@
 //
 //   int   a 64-bit two's complement bit-vector: + - * and unary minus wrap, abs(INT64_MIN) is
 //         INT64_MIN, math.fmod by 0 raises (the monitor drops the message);
+//   sized integers and float32 (issue 41) are held as int and float values in their type's
+//         range (sized_int_const, sized_float_const); arithmetic promotes them, as Lua does;
 //   float IEEE 754 binary64 (Z3's floating-point theory): + - * / and sqrt round to nearest,
 //         ties to even; NaN, infinities and -0.0 are values; comparisons with NaN are false and
 //         `==` is IEEE's (0.0 == -0.0, NaN ~= NaN); math.fmod is C's fmod.
@@ -28,6 +30,13 @@ z3::expr int_val(z3::context& ctx, int64_t v);
 z3::expr float_val(z3::context& ctx, double v);  // exact: NaN, infinities and -0.0 included
 z3::expr int_const(z3::context& ctx, const std::string& name);
 z3::expr float_const(z3::context& ctx, const std::string& name);
+
+// A value of a sized number type (core/type.h) as the machine holds it, by construction: an
+// int8 is a 64-bit vector sign-extended from 8 bits (so in -128..127), a uint32 one zero-extended
+// from 32, a float32 the binary64 of a binary32 (NaN, the infinities and -0.0 included). A uint64
+// is all 64 bits (its bit pattern); int64 and float64 are int_const and float_const.
+z3::expr sized_int_const(z3::context& ctx, const std::string& name, const Type& t);
+z3::expr sized_float_const(z3::context& ctx, const std::string& name, const Type& t);
 
 // The number as a float: an int converted to the nearest double (ties to even, as C's cast).
 z3::expr to_float(const SymValue& v);

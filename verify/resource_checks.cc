@@ -276,7 +276,8 @@ void ResourceChecker::check_pair(const ResourceRule& a, const ResourceRule& b) {
 bool ResourceChecker::replay(const Order& o, const std::vector<Value>& messages, MessageExample& ex,
                              std::string* why) {
   const model::Connection* rules[2] = {o.first->connection, o.second->connection};
-  if (!replay_accepts(options_.runner, {rules[0], rules[1]}, messages, {0, 1}, ex, why))
+  if (!replay_accepts(data_.app(), options_.runner, {rules[0], rules[1]}, messages, {0, 1}, ex,
+                      why))
     return false;
   if (!res_.uses) return true;
   for (int s = 0; s < 2; ++s) {
@@ -323,7 +324,7 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
   for (int s = 0; s < 2; ++s) {
     MessageExample ex;
     ex.source = w[s].message_sources[0];
-    ex.value = spec_value_text(w[s].messages[0]);
+    ex.value = spec_value_text(w[s].messages[0], port_type_of(data_.app(), ex.source));
     messages.push_back(w[s].messages[0]);
     f.messages.push_back(ex);
     f.notes.push_back(

@@ -22,9 +22,9 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
     case Type::Kind::Bool:
       return {K::Bool, ctx.bool_const(prefix.c_str())};
     case Type::Kind::Int:
-      return {K::Int, lua::int_const(ctx, prefix)};
+      return {K::Int, lua::sized_int_const(ctx, prefix, t)};
     case Type::Kind::Float:
-      return {K::Float, lua::float_const(ctx, prefix)};
+      return {K::Float, lua::sized_float_const(ctx, prefix, t)};
     case Type::Kind::String:
       return {K::String, ctx.constant(prefix.c_str(), ctx.string_sort())};
     case Type::Kind::Vec3: {

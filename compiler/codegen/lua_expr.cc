@@ -16,6 +16,8 @@ using Op = BodyExpr::Op;
 
 bool has_kind(const BodyExpr& e, Type::Kind k) { return e.type && e.type->kind == k; }
 
+bool is_uint64_typed(const BodyExpr& e) { return e.type && is_uint64(*e.type); }
+
 bool is_structured(const BodyExpr& e) {
   return has_kind(e, Type::Kind::Vec3) || has_kind(e, Type::Kind::List) ||
          has_kind(e, Type::Kind::Record);
@@ -172,6 +174,13 @@ std::string LuaExprTranslator::binary(const BodyExpr& e) {
            ")";
   if (op == "+" || op == "-" || op == "*" || op == "/")
     return arith_operand(l, true) + " " + op + " " + arith_operand(r, true);
+  // A uint64 is held as its bit pattern (core/type.h): its orderings compare unsigned. The
+  // checker lets it meet only partners whose bits are their unsigned value (sema_numbers.cc).
+  if (is_uint64_typed(l) || is_uint64_typed(r)) {
+    bool flip = op == ">" || op == "<=";  // a > b is b < a; a <= b is not (b < a)
+    std::string ult = "math.ult(" + expr(flip ? r : l) + ", " + expr(flip ? l : r) + ")";
+    return op == "<" || op == ">" ? ult : "not " + ult;
+  }
   return operand(l) + " " + op + " " + operand(r);
 }
 

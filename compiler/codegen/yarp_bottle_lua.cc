@@ -16,9 +16,14 @@ std::string yarp_type_descriptor(const Type& t) {
     case Type::Kind::Bool:
       return "{ kind = \"bool\" }";
     case Type::Kind::Int:
-      return "{ kind = \"int\" }";
-    case Type::Kind::Float:
-      return "{ kind = \"float\" }";
+    case Type::Kind::Float: {
+      // A sized number carries its width (yarp_bottle.lua checks the range on reading); int64
+      // and float64 stay as before sized types, so older monitors' text is unchanged.
+      std::string kind = t.kind == Type::Kind::Int ? "int" : "float";
+      if (!t.narrow()) return "{ kind = \"" + kind + "\" }";
+      return "{ kind = \"" + kind + "\", bits = " + std::to_string(t.bits) +
+             (t.is_unsigned ? ", unsigned = true" : "") + " }";
+    }
     case Type::Kind::String:
       return "{ kind = \"string\" }";
     case Type::Kind::Vec3:

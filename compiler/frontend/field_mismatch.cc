@@ -1,10 +1,8 @@
 #include "compiler/frontend/field_mismatch.h"
 
-#include "compiler/frontend/type_rules.h"
+#include "compiler/frontend/value_fit.h"
 
 namespace arbc::frontend {
-
-namespace {}  // namespace
 
 std::optional<FieldMismatch> field_mismatch(const ast::Expr& value, const TypePtr& want) {
   if (!want) return std::nullopt;
@@ -13,7 +11,7 @@ std::optional<FieldMismatch> field_mismatch(const ast::Expr& value, const TypePt
       const Field* field = want->field(value.names[i].name);
       const ast::Expr* arg = value.args[i].get();
       if (!field || !arg || !arg->type || !field->type) continue;
-      if (assignable(*arg->type, *field->type)) continue;
+      if (value_fits(*arg, field->type)) continue;
       if (auto inner = field_mismatch(*arg, field->type)) return inner;  // deeper is plainer
       return FieldMismatch{field->name, arg, &value, field->type};
     }
@@ -25,7 +23,7 @@ std::optional<FieldMismatch> field_mismatch(const ast::Expr& value, const TypePt
   }
   if (value.kind == ast::Expr::Kind::List && want->kind == Type::Kind::List) {
     for (const ast::ExprPtr& item : value.args)
-      if (item && item->type && want->element && !assignable(*item->type, *want->element))
+      if (item && item->type && want->element && !value_fits(*item, want->element))
         if (auto inner = field_mismatch(*item, want->element)) return inner;
   }
   return std::nullopt;

@@ -177,7 +177,9 @@ void Sema::check_local(Stmt& s, Scope& scope, const BodyContext& ctx) {
   }
   Binding b;
   b.kind = s.kind == Stmt::Kind::Let ? NameKind::Let : NameKind::Var;
-  b.type = s.expr->type;
+  // A `var` holds what the body computes later, so a sized number's state is its promoted type
+  // (`var n = m.seq;` of an int32 holds an int: `n = n + 1` is allowed), as core/body_types.cc.
+  b.type = b.kind == NameKind::Var ? promoted(s.expr->type) : s.expr->type;
   b.is_duration = s.expr->is_duration;
   b.local = &s;
   scope.define(s.name, b);
@@ -255,12 +257,11 @@ void Sema::check_emit(Stmt& s, Scope& scope, const BodyContext& ctx) {
           diag::StatementContext);
     return;
   }
-  if (s.expr->type && ctx.destination_type && !assignable(*s.expr->type, *ctx.destination_type)) {
-    value_type_error(*s.expr, ctx.destination_type,
+  if (s.expr->type && ctx.destination_type)
+    check_value_fits(*s.expr, ctx.destination_type,
                      ctx.owner + " emits " + describe(s.expr->type) + ", but " + ctx.destination +
                          " takes " + describe(ctx.destination_type),
                      diag::EmitType);
-  }
 }
 
 // `throttle D`: once, at the top level, outside `every`.

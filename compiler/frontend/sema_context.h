@@ -227,6 +227,21 @@ class Sema {
   // The argument types of the other builtins (all typed already) and the call's type.
   void check_builtin_args(ast::Expr& e, const BuiltinInfo& info);
 
+  // ---- sized numbers (sema_numbers.cc) ----
+  // An int literal above 2^63 - 1 that fits in 64 bits unsigned: typed uint64, its bits in
+  // `integer` (docs/language.md#sized-numbers). False for one beyond 2^64 - 1.
+  bool uint64_literal(ast::Expr& e);
+  // A binary operator with a uint64 operand: only + - * == != < <= > >= against a uint64, an
+  // unsigned integer or a constant >= 0; false, reported, otherwise.
+  bool check_uint64_binary(ast::Expr& e);
+  // An operand no uint64 may be (of unary '-', of a builtin): false, reported, when it is one.
+  bool check_uint64_operand(const ast::Expr& operand, const std::string& what);
+  // `value` goes where `want` is expected (an emit, a test's message): false, reported with
+  // `message` and `id`, when its type does not fit (value_fit.h); reported as number-range at the
+  // constant when a constant is out of its sized type's range.
+  bool check_value_fits(const ast::Expr& value, const TypePtr& want, const std::string& message,
+                        DiagId id);
+
   // ---- constants (sema_const.cc) ----
   // The value of a constant expression (literals, constants and operators on them), folded as
   // the monitor's Lua computes it (const_fold.h); nullopt for anything else.

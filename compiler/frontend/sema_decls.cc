@@ -56,8 +56,8 @@ void Sema::check_app_declared() {
 
 void Sema::declare_types() {
   for (TypeDecl& t : spec_.types) {
-    if (types_.count(t.name) || t.name == "bool" || t.name == "int" || t.name == "float" ||
-        t.name == "string" || t.name == "vec3" || t.name == "list") {
+    if (types_.count(t.name) || t.name == "bool" || Type::number(t.name) || t.name == "string" ||
+        t.name == "vec3" || t.name == "list") {
       if (types_.count(t.name)) {
         error(t.loc,
               "type '" + t.name + "' is already defined at " + where_defined(types_[t.name]->loc) +

@@ -22,10 +22,12 @@ const TypePtr kFloat = Type::scalar(Type::Kind::Float);
 const TypePtr kString = Type::scalar(Type::Kind::String);
 const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
 
-// The numeric type of combining a and b: int only if both are.
-TypePtr numeric_join(const TypePtr& a, const TypePtr& b) {
-  return is_kind(a, Type::Kind::Int) && is_kind(b, Type::Kind::Int) ? kInt : kFloat;
-}
+// The numeric type of combining a and b: int only if both are, uint64 if either is (core/type.h).
+TypePtr numeric_join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
+
+const char* const kIntTooBig =
+    "this int does not fit in 64 bits (-9223372036854775808 to 9223372036854775807): write it "
+    "as a float (with a decimal point) or use a smaller value";
 
 const char* kind_word(Expr::Kind kind) {
   switch (kind) {
@@ -59,12 +61,9 @@ const char* kind_word(Expr::Kind kind) {
 void Sema::check_expr(Expr& e, Scope& scope) {
   switch (e.kind) {
     case Expr::Kind::Number:
+      if (e.is_int && e.int_too_big && uint64_literal(e)) return;
       if (e.is_int && e.int_too_big) {
-        error(e.loc,
-              "this int does not fit in 64 bits (-9223372036854775808 to "
-              "9223372036854775807): write it as a float (with a decimal point) or use a "
-              "smaller value",
-              diag::IntOverflow);
+        error(e.loc, kIntTooBig, diag::IntOverflow);
         return;
       }
       e.type = e.is_int ? kInt : kFloat;
@@ -289,7 +288,13 @@ void Sema::check_unary(Expr& e, Scope& scope) {
           diag::TypeMismatch);
     return;
   }
-  e.type = operand.type;
+  // `-9223372036854775809`: its digits are a uint64 literal, but no int is that negative.
+  if (operand.kind == Expr::Kind::Number && operand.int_too_big) {
+    error(operand.loc, kIntTooBig, diag::IntOverflow);
+    return;
+  }
+  if (!check_uint64_operand(operand, "unary '-'")) return;
+  e.type = promoted(operand.type);
   e.is_duration = operand.is_duration;
   fold_operator(e);
 }
@@ -308,6 +313,7 @@ void Sema::check_binary(Expr& e, Scope& scope) {
           diag::TypeMismatch);
   };
   std::string_view op = e.op;
+  if (!check_uint64_binary(e)) return;
   if (op == "and" || op == "or") {
     if (a.type->kind != Type::Kind::Bool || b.type->kind != Type::Kind::Bool) return mismatch();
     e.type = kBool;
@@ -466,6 +472,8 @@ void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
             diag::TypeMismatch);
     return ok;
   };
+  for (const ExprPtr& arg : e.args)
+    if (!check_uint64_operand(*arg, "'" + e.text + "'")) return;
   switch (info.id) {
     case Builtin::Len: {
       const TypePtr& t = e.args[0]->type;
@@ -484,7 +492,7 @@ void Sema::check_builtin_args(Expr& e, const BuiltinInfo& info) {
       return;
     case Builtin::Abs:
       if (expect(0, is_numeric(e.args[0]->type), "a number")) {
-        e.type = e.args[0]->type;
+        e.type = promoted(e.args[0]->type);
         e.is_duration = e.args[0]->is_duration;
       }
       return;

@@ -137,13 +137,11 @@ void Sema::check_test_value(Expr& e, const PortRef& port) {
   check_expr(e, empty);
   TypePtr want = port.port_decl ? port.port_decl->type.resolved : nullptr;
   if (!e.type || !want) return;
-  if (!assignable(*e.type, *want)) {
-    value_type_error(e, want,
-                     "the value is " + describe(e.type) + ", but " + port.qualified() +
-                         " carries " + describe(want),
-                     diag::TestValue);
+  if (!check_value_fits(e, want,
+                        "the value is " + describe(e.type) + ", but " + port.qualified() +
+                            " carries " + describe(want),
+                        diag::TestValue))
     return;
-  }
   std::string why;
   if (!literal_value(e, *want, &why)) error(e.loc, "this value is " + why, diag::TestValue);
 }

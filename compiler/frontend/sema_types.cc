@@ -88,11 +88,15 @@ TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
 TypePtr Sema::resolve_named_type(TypeExpr& t) {
   auto it = types_.find(t.name);
   if (it == types_.end()) {
-    std::vector<std::string> names = {"bool", "int", "float", "string", "vec3", "list"};
+    // The number types by any spelling (core/number_types.def): `int32`, `byte`, `float64`.
+    if (TypePtr number = Type::number(t.name)) return number;
+    std::vector<std::string> names = {"bool", "string", "vec3", "list"};
+    for (const std::string& n : Type::number_names()) names.push_back(n);
     for (auto& [name, decl] : types_) names.push_back(name);
     unknown(t.loc,
             "unknown type '" + t.name +
-                "': the types are bool, int, float, string, vec3, list<T>, records and "
+                "': the types are bool, int, float, the sized numbers (int8 to int64, uint8 to "
+                "uint64, float32, float64, byte, char), string, vec3, list<T>, records and "
                 "declared type names",
             diag::UnknownType, t.name, names);
     return nullptr;

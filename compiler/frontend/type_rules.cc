@@ -2,8 +2,26 @@
 
 namespace arbc::frontend {
 
+namespace {
+
+// Whether every value of the number type `from` is a value of `to`, so that nothing converts
+// it (docs/language.md#numbers); int64 into float64 is the one exception, kept from the
+// language before sized types (Lua converts it, rounding beyond 2^53). A uint64 goes nowhere
+// else: its bit pattern would read as a negative int64.
+bool number_assignable(const Type& from, const Type& to) {
+  if (from.kind == Type::Kind::Float) return to.kind == Type::Kind::Float && from.bits <= to.bits;
+  if (is_uint64(from)) return is_uint64(to);
+  if (to.kind == Type::Kind::Float) return to.bits == 64 || from.bits <= 16;
+  if (is_uint64(to)) return from.is_unsigned;
+  return from.min_int() >= to.min_int() && from.max_int() <= to.max_int();
+}
+
+}  // namespace
+
 bool assignable(const Type& from, const Type& to) {
-  if (from.kind == Type::Kind::Int && to.kind == Type::Kind::Float) return true;
+  bool from_number = from.kind == Type::Kind::Int || from.kind == Type::Kind::Float;
+  bool to_number = to.kind == Type::Kind::Int || to.kind == Type::Kind::Float;
+  if (from_number && to_number) return number_assignable(from, to);
   if (from.kind != to.kind) return false;
   if (from.kind == Type::Kind::List) {
     if (!from.element || !to.element) return true;

@@ -9,8 +9,10 @@
 namespace arbc::frontend {
 
 // True when a value of type `from` may be delivered or stored where `to` is expected:
-// the same type (records compare fields by name, in any order), an int where a float is
-// expected, element- and field-wise for lists and records. An empty list literal (null element)
+// the same type (records compare fields by name, in any order), a number type whose values the
+// expected one all holds (int8 into int32, uint16 into float32; any int into float64, except
+// uint64), element- and field-wise for lists and records. A constant may go into narrower types
+// (value_fit.h). An empty list literal (null element)
 // fits any list.
 bool assignable(const Type& from, const Type& to);
 

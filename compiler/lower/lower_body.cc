@@ -41,6 +41,7 @@ BodyExpr constant_literal(const ast::ConstDecl& c) {
     case TK::Int:
       out.op = BodyExpr::Op::Int;
       out.integer = c.integer;
+      if (is_uint64(*c.value->type)) out.text = model::kUint64Literal;
       break;
     default:
       out.op = BodyExpr::Op::Float;
@@ -153,6 +154,7 @@ BodyExpr expr(const ast::Expr& e) {
       out.op = e.is_int && is(e.type, TK::Int) ? BodyExpr::Op::Int : BodyExpr::Op::Float;
       out.number = e.number;
       out.integer = e.integer;
+      if (out.op == BodyExpr::Op::Int && is_uint64(*e.type)) out.text = model::kUint64Literal;
       return out;
     case Kind::Duration:
       out.op = BodyExpr::Op::Float;

@@ -508,6 +508,46 @@ test "a large one is doubled past the bound" {
            "the failure does not say which delivery broke the assert", out, err)
 
 
+SIZED_SPEC = """app sized_run;
+type Reading = { level: int8, seq: uint64, range: float32 };
+module Sensor { out r: Reading; }
+module Motor { in r: Reading; }
+arbitrate Motor.r {
+  pass: from Sensor.r { accept r.seq > 5 and r.range < 1.0; }
+}
+test "a uint64 above 2^63 compares unsigned" {
+  at 0s Sensor.r <- { level: -128, seq: 18446744073709551615, range: 0.5 };
+  at 100ms Sensor.r <- { level: 127, seq: 3, range: 0.5 };
+  expect Motor.r receives { level: -128, seq: 18446744073709551615, range: 0.5 } at 0s;
+  expect pass delivers nothing within 50ms..1s;
+}
+"""
+
+
+def case_sized_numbers_run(arbc, tmp):
+    """Sized numbers at run time (docs/language.md#sized-numbers): a uint64 literal above 2^63 - 1
+    reaches the monitor as its bits and compares unsigned in `arbc test`; an `--inputs` value
+    outside its field's type is dropped as bad-type and counted, with the reason."""
+    spec = os.path.join(tmp, "sized.spec")
+    with open(spec, "w", encoding="utf-8") as f:
+        f.write(SIZED_SPEC)
+    code, out, err = run(arbc, "test", spec)
+    expect(code == 0 and "1 passed" in out, f"exit {code}", out, err)
+    inputs = os.path.join(tmp, "inputs.jsonl")
+    write_lines(inputs, [
+        {"t": 0, "port": "Sensor.r", "value": {"level": 300, "seq": 9, "range": 0.5}},
+        {"t": 0.1, "port": "Sensor.r", "value": {"level": 1, "seq": 9, "range": 0.1}},
+        {"t": 0.2, "port": "Sensor.r", "value": {"level": 1, "seq": -1, "range": 0.5}},
+    ])
+    code, out, err = run(arbc, "run", spec, "--inputs", inputs, "--duration", "1s")
+    expect(code == 3 and "2 bad-type into pass" in out, f"exit {code}: the run does not fail on "
+           "the two messages outside their types", out, err)
+    expect("field level: 300 is not int8 (-128 to 127)" in err and
+           "field range: 0.1 is not a float32 value (it would round)" in err,
+           "the reasons are not said", out, err)
+    expect('(pass): {"level":1,"range":0.5,"seq":-1}' in out,
+           "the uint64 2^64 - 1 (bits -1) was not delivered", out, err)
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)

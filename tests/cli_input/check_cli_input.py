@@ -319,7 +319,7 @@ def case_dds_stamp_of_ints(arbc, plugin):
     expect(code == 2, f"exit {code}, expected 2", out, err)
     expect(f"{deploy}:4:21: error: types: \"TwistStamped\": the spec's TwistStamped does not "
            "lay out as geometry_msgs/msg/TwistStamped: header.stamp.sec is int (int64, 8 bytes) "
-           "in the spec and int32 (4 bytes) in the message; a spec cannot declare int32 yet"
+           "in the spec and int32 (4 bytes) in the message: declare it int32"
            in err, "the stamp's width is not named at the mapping", out, err)
     msgs = os.path.join(folder, "msgs")
     os.makedirs(os.path.join(msgs, "builtin_interfaces", "msg"))

@@ -28,8 +28,9 @@ constexpr int kBound = 4;
 
 const char* kPrelude = R"(app diff;
 type Item = { d: float, k: int, t: string };
-type Msg = { a: float, b: int, s: string, p: vec3, xs: list<Item> };
-type Cmd = { verb: string, v: float };
+type Msg = { a: float, b: int, s: string, p: vec3, xs: list<Item>, i8: int8, u32: uint32,
+             u64: uint64, f32: float32 };
+type Cmd = { verb: string, v: float, c: uint64 };
 const C = 0.5;
 module Src { out m: Msg; }
 module Dst { in cmd: Cmd; }
@@ -46,13 +47,15 @@ class Gen {
   std::string flt(int d) {
     static const char* lits[] = {"0.5", "-1.0", "0.25", "2.0", "0.0", "C"};
     if (d <= 0) {
-      switch (pick(4)) {
+      switch (pick(5)) {
         case 0:
           return "m.a";
         case 1:
           return "m.p.x";
         case 2:
           return lits[pick(6)];
+        case 3:
+          return "m.f32";  // a float32 promotes to float, exactly
         default:
           return "m.p.z";
       }
@@ -116,11 +119,15 @@ class Gen {
   }
   std::string integer(int d) {
     if (d <= 0) {
-      switch (pick(3)) {
+      switch (pick(5)) {
         case 0:
           return "m.b";
         case 1:
           return "len(m.xs)";
+        case 2:
+          return "m.i8";  // sized integers promote to int
+        case 3:
+          return "m.u32";
         default:
           return std::to_string(pick(5) - 1);
       }
@@ -177,8 +184,24 @@ class Gen {
         return "-" + vec(0);
     }
   }
+  // A uint64: its bits, wrapped by + - * (sema_numbers.cc allows no other operator).
+  std::string u64(int d) {
+    if (d <= 0) return "m.u64";
+    switch (pick(4)) {
+      case 0:
+        return "(" + u64(d - 1) + " + m.u32)";
+      case 1:
+        return "(" + u64(d - 1) + " - " + std::to_string(pick(4)) + ")";
+      case 2:
+        return "(" + u64(d - 1) + " * 3)";
+      default:
+        return "m.u64";
+    }
+  }
   std::string cmp(int d) {
     static const char* ops[] = {"<", "<=", ">", ">=", "==", "!="};
+    if (pick(6) == 0)  // unsigned orderings: math.ult in Lua, bvult in the proof
+      return u64(d) + " " + ops[pick(6)] + " " + (pick(2) ? "m.u64" : pick(2) ? "m.u32" : "1");
     switch (pick(5)) {
       case 0:
         return num(d) + " " + ops[pick(6)] + " " + num(d);
@@ -205,11 +228,13 @@ class Gen {
         return cmp(d - 1);
     }
   }
-  std::string emit(int d) { return "emit { verb: " + str(d) + ", v: " + flt(d) + " };"; }
+  std::string emit(int d) {
+    return "emit { verb: " + str(d) + ", v: " + flt(d) + ", c: " + u64(d) + " };";
+  }
 
   // A body: a first emit (every path delivers a Cmd), then random statements.
   std::string body() {
-    std::string out = "    emit { verb: \"none\", v: 0.0 };\n";
+    std::string out = "    emit { verb: \"none\", v: 0.0, c: 0 };\n";
     int n = 1 + pick(4);
     for (int i = 0; i < n; ++i) {
       switch (pick(4)) {
@@ -264,11 +289,30 @@ class Gen {
     for (int i = 0; i < n; ++i)
       xs.push_back(Value::record(
           {{"d", Value(real())}, {"k", Value(whole())}, {"t", Value(strings[pick(4)])}}));
+    static const int64_t i8[] = {-128, 127, 0, -1, 5};
+    static const int64_t u32[] = {0, 4294967295, 1, 2147483648, 3};
+    // uint64 bits: 2^64 - 1, 2^63, 2^63 - 1 (as int64: -1, INT64_MIN, INT64_MAX).
+    static const int64_t u64[] = {
+        0, -1, std::numeric_limits<int64_t>::min(), std::numeric_limits<int64_t>::max(), 1, 2};
+    static const float f32[] = {std::numeric_limits<float>::quiet_NaN(),
+                                std::numeric_limits<float>::infinity(),
+                                -std::numeric_limits<float>::infinity(),
+                                -0.0f,
+                                std::numeric_limits<float>::max(),
+                                std::numeric_limits<float>::denorm_min(),
+                                0.1f,
+                                0.5f,
+                                1.0f / 3,
+                                16777216.0f};
     return Value::record({{"a", Value(real())},
                           {"b", Value(whole())},
                           {"s", Value(strings[pick(4)])},
                           {"p", Value::vec3(real(), real(), real())},
-                          {"xs", Value(std::move(xs))}});
+                          {"xs", Value(std::move(xs))},
+                          {"i8", Value(i8[pick(5)])},
+                          {"u32", Value(u32[pick(5)])},
+                          {"u64", Value(u64[pick(6)])},
+                          {"f32", Value(static_cast<double>(f32[pick(10)]))}});
   }
 
  private:

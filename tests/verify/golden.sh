@@ -47,6 +47,7 @@ golden refuted.txt repo 1 tests/verify/table_clean_take_mutant.app.json
 golden refuted.json repo 1 --format json tests/verify/table_clean_take_mutant.app.json
 golden refuted.sarif repo 1 --format sarif tests/verify/table_clean_take_mutant.app.json
 golden warnings.txt repo 0 tests/verify/table_clean_warnings.app.json
+golden sized_numbers.txt repo 1 tests/verify/sized_numbers.spec
 golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app.json
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 golden missing.txt repo 2 tests/verify/no_such_app.json

@@ -284,5 +284,22 @@ TEST_F(YarpTargetTest, RuntimeChecksSayABrokenAssertOverEmitted) {
   EXPECT_TRUE(receiver_alive());
 }
 
+// Sized numbers (tests/yarp_real/sized.spec): a Bottle whose int8 holds 300 or whose float32
+// holds a float64 that would round is dropped as without the layout; 2^64 - 1, sent as the int64
+// -1, is greater than 5 for the uint64 comparison (math.ult), so it is delivered; 3 is not.
+TEST_F(YarpTargetTest, SizedNumbersAreReadWithinTheirTypes) {
+  ASSERT_NO_FATAL_FAILURE(build_yarp("tests/yarp_real/sized.spec", "yarp_sized"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/Sensor/r:o", "(level 300) (count 1) (seq 9) (range 0.5)");
+  send("/Sensor/r:o", "(level 1) (count 1) (seq 9) (range 0.1)");
+  send("/Sensor/r:o", "(level 1) (count 1) (seq 3) (range 0.5)");
+  send("/Sensor/r:o", "(level -128) (count 65535) (seq -1) (range 0.5)");
+  EXPECT_THAT(received("/Motor/r:i"),
+              ::testing::ElementsAre("(level -128) (count 65535) (seq -1) (range 0.5)"));
+  std::string log = receiver_log();
+  EXPECT_NE(log.find("got `(level 300) (count 1) (seq 9) (range 0.5)`"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
+}
+
 }  // namespace
 }  // namespace arbc::yarp_test

@@ -55,13 +55,36 @@ local function arbc_read_contents(b, t)
   return nil
 end
 
-arbc_read_item = function(v, t)
-  if t.kind == "float" then return arbc_read_number(v) end
-  if t.kind == "int" then
-    local x = arbc_read_number(v)
-    if x == nil then return nil end
-    return math.tointeger(x)
+-- An integer of t's width: any YARP integer (read whole, not through a double), or a float with
+-- an integer value; nil outside t's range (docs/yarp.md#the-bottle-layout). A uint64 travels as
+-- the int64 of its bits, every value of which is one of its.
+local function arbc_read_int(v, t)
+  local x
+  if v:isInt8() or v:isInt16() or v:isInt32() or v:isInt64() then
+    x = v:asInt64()
+  else
+    local f = arbc_read_number(v)
+    x = f ~= nil and math.tointeger(f) or nil
   end
+  if x == nil or t.bits == nil or t.bits == 64 then return x end
+  local lo, hi = -(1 << (t.bits - 1)), (1 << (t.bits - 1)) - 1
+  if t.unsigned then lo, hi = 0, (1 << t.bits) - 1 end
+  if x < lo or x > hi then return nil end
+  return x
+end
+
+-- A float32 is a double that rounds to itself in binary32 (NaN and the infinities included).
+local function arbc_read_float(v, t)
+  local x = arbc_read_number(v)
+  if x == nil or t.bits ~= 32 or x ~= x or x == math.huge or x == -math.huge then return x end
+  if math.abs(x) > 3.4028234663852886e38 then return nil end
+  if string.unpack("<f", string.pack("<f", x)) ~= x then return nil end
+  return x
+end
+
+arbc_read_item = function(v, t)
+  if t.kind == "float" then return arbc_read_float(v, t) end
+  if t.kind == "int" then return arbc_read_int(v, t) end
   if t.kind == "bool" then
     if v:isString() then
       local s = v:asString()
@@ -91,9 +114,16 @@ local arbc_write_contents
 
 local function arbc_write_item(b, x, t)
   if t.kind == "float" then
-    b:addFloat64(x + 0.0)
+    if t.bits == 32 then b:addFloat32(x + 0.0) else b:addFloat64(x + 0.0) end
   elseif t.kind == "int" then
-    if x >= -2147483648 and x <= 2147483647 then b:addInt32(x) else b:addInt64(x) end
+    -- At the narrowest YARP integer that holds every value of t (YARP has no unsigned ones: a
+    -- uint8 goes as an Int16); an int as before sized types, Int32 when the value fits.
+    local bits = t.bits or 64
+    if t.unsigned and bits < 64 then bits = bits * 2 end
+    if bits == 8 then b:addInt8(x)
+    elseif bits == 16 then b:addInt16(x)
+    elseif bits == 32 or (t.bits == nil and x >= -2147483648 and x <= 2147483647) then b:addInt32(x)
+    else b:addInt64(x) end
   elseif t.kind == "bool" then
     b:addInt32(x and 1 or 0)
   elseif t.kind == "string" then

@@ -1,0 +1,90 @@
+#include "compiler/frontend/value_fit.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "compiler/frontend/literal_value.h"
+#include "compiler/frontend/type_rules.h"
+
+namespace arbc::frontend {
+
+namespace {
+
+using ast::Expr;
+
+bool is_number(const TypePtr& t) {
+  return t && (t->kind == Type::Kind::Int || t->kind == Type::Kind::Float);
+}
+
+// The nearest float32 to v, printed to read back as that float32 ("0.100000001").
+std::string nearest_float32(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(static_cast<float>(v)));
+  return text;
+}
+
+std::optional<RangeMiss> number_miss(const Expr& value, const Type& want) {
+  std::optional<Value> v = constant_number(value);
+  if (!v || !want.narrow()) return std::nullopt;
+  // A uint64 constant holds bits (a literal above 2^63 - 1 reads negative): any is a uint64.
+  if (is_uint64(want) && value.type && is_uint64(*value.type)) return std::nullopt;
+  std::string written = v->to_json();
+  if (want.kind == Type::Kind::Int && v->is_int() && !want.holds(v->as_int()))
+    return RangeMiss{
+        &value, written + " does not fit in " + want.to_string() + " (" + want.range_text() + ")"};
+  if (want.kind == Type::Kind::Float && !want.holds(v->as_float())) {
+    double d = v->as_float();
+    if (std::fabs(d) > std::numeric_limits<float>::max())
+      return RangeMiss{&value, written + " is beyond the range of float32 (about 3.4e38)"};
+    return RangeMiss{&value, written + " is not a float32 value: it would round to " +
+                                 nearest_float32(d) + "; write that, or declare the field float64"};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Value> constant_number(const Expr& e) {
+  if (!is_number(e.type)) return std::nullopt;
+  std::string err;
+  std::optional<Value> v = literal_value(e, *e.type, &err);
+  if (!v || !v->is_number()) return std::nullopt;
+  return v;
+}
+
+bool value_fits(const Expr& value, const TypePtr& want) {
+  if (!value.type || !want) return true;  // reported where the type was lost
+  if (is_number(want) && is_number(value.type) && constant_number(value))
+    return value.type->kind == Type::Kind::Int || want->kind == Type::Kind::Float;
+  if (value.kind == Expr::Kind::Record && want->kind == Type::Kind::Record) {
+    if (value.args.size() != want->fields.size()) return false;
+    for (size_t i = 0; i < value.args.size() && i < value.names.size(); ++i) {
+      const Field* f = want->field(value.names[i].name);
+      if (!f || !value_fits(*value.args[i], f->type)) return false;
+    }
+    return true;
+  }
+  if (value.kind == Expr::Kind::List && want->kind == Type::Kind::List) {
+    for (const ast::ExprPtr& item : value.args)
+      if (!value_fits(*item, want->element)) return false;
+    return true;
+  }
+  return assignable(*value.type, *want);
+}
+
+std::optional<RangeMiss> range_miss(const Expr& value, const TypePtr& want) {
+  if (!value.type || !want) return std::nullopt;
+  if (is_number(want)) return number_miss(value, *want);
+  if (value.kind == Expr::Kind::Record && want->kind == Type::Kind::Record) {
+    for (size_t i = 0; i < value.args.size() && i < value.names.size(); ++i)
+      if (const Field* f = want->field(value.names[i].name))
+        if (auto miss = range_miss(*value.args[i], f->type)) return miss;
+  }
+  if (value.kind == Expr::Kind::List && want->kind == Type::Kind::List)
+    for (const ast::ExprPtr& item : value.args)
+      if (auto miss = range_miss(*item, want->element)) return miss;
+  return std::nullopt;
+}
+
+}  // namespace arbc::frontend
