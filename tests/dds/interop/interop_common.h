@@ -1,17 +1,14 @@
-// What the two interop programs share: a participant and a reliable keep-last topic of
-// ROS 2's Twist (the QoS of ROS 2's default profile, with a deeper history). Plain Fast-DDS
-// and the types fastddsgen generated from Twist.idl; no arbc code.
+// What the Twist interop programs share: a participant with ROS 2's Twist registered and a
+// topic of it; their QoS, reliable keep-last (ROS 2's default profile, with a deeper history),
+// is interop_participant.h's. Plain Fast-DDS and the types fastddsgen generated from Twist.idl;
+// no arbc code.
 #pragma once
 
-#include <cstdio>
-#include <cstdlib>
-#include <fastdds/dds/domain/DomainParticipant.hpp>
-#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
-#include <string>
 
 #include "TwistPubSubTypes.h"
+#include "interop_participant.h"
 
 namespace interop {
 
@@ -19,18 +16,7 @@ namespace fdds = eprosima::fastdds::dds;
 
 // The participant of domain `domain` with the Twist type registered; exits on failure.
 inline fdds::DomainParticipant* participant(int domain, const char* name) {
-  fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
-  // The default QoS is Fast-DDS's own until the profiles of FASTRTPS_DEFAULT_PROFILES_FILE are
-  // loaded: without this the program ran on the builtin transports (shared memory and UDP on
-  // every interface), whatever the profile said (docs/distributed.md#confining-dds-to-one-machine).
-  factory->load_profiles();
-  fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
-  qos.name(name);
-  fdds::DomainParticipant* p = factory->create_participant(domain, qos);
-  if (!p) {
-    std::fprintf(stderr, "%s: cannot create a participant in domain %d\n", name, domain);
-    std::exit(3);
-  }
+  fdds::DomainParticipant* p = plain_participant(domain, name);
   fdds::TypeSupport type(new geometry_msgs::msg::dds_::Twist_PubSubType());
   type.register_type(p);
   return p;
@@ -38,33 +24,6 @@ inline fdds::DomainParticipant* participant(int domain, const char* name) {
 
 inline fdds::Topic* topic(fdds::DomainParticipant* p, const std::string& name) {
   return p->create_topic(name, "geometry_msgs::msg::dds_::Twist_", fdds::TOPIC_QOS_DEFAULT);
-}
-
-template <class Qos>
-void reliable(Qos& qos) {
-  qos.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
-  qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
-  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = 100;
-}
-
-// The reliable QoS above, changed by the words `first`.. of the command line: `best_effort`
-// (ROS 2's sensor-data profile) and `transient_local` (a latched topic), so that a test can
-// give a program the QoS a ROS 2 node may have. Exits on another word.
-template <class Qos>
-void qos_from_args(Qos& qos, int argc, char** argv, int first) {
-  reliable(qos);
-  for (int i = first; i < argc; ++i) {
-    std::string word = argv[i];
-    if (word == "best_effort") {
-      qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
-    } else if (word == "transient_local") {
-      qos.durability().kind = fdds::TRANSIENT_LOCAL_DURABILITY_QOS;
-    } else {
-      std::fprintf(stderr, "unknown QoS word '%s' (best_effort, transient_local)\n", argv[i]);
-      std::exit(2);
-    }
-  }
 }
 
 }  // namespace interop
