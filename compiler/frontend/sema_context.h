@@ -182,6 +182,9 @@ class Sema {
   // that name with "did you mean" (stray_field.h).
   Diagnostic& value_type_error(const ast::Expr& value, const TypePtr& want, std::string message,
                                DiagId id);
+  // Adds the note on sized numbers when `got` is a number that `want`, a narrower one, cannot
+  // take (sema_report.cc).
+  void narrowing_note(Diagnostic& d, const TypePtr& got, const TypePtr& want);
   // A type as the user wrote it when it has a declared name ("Cmd"), else its structure.
   std::string describe(const TypePtr& t) const;
 

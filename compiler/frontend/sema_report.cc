@@ -119,12 +119,31 @@ Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::
           message + "; field '" + field->field + "' (" + describe(field->want) + ") is missing",
           std::move(id));
     }
-    return error(field->value->loc,
-                 message + "; field '" + field->field + "' is " + describe(field->value->type) +
-                     " where " + describe(field->want) + " is expected",
-                 std::move(id));
+    Diagnostic& d = error(field->value->loc,
+                          message + "; field '" + field->field + "' is " +
+                              describe(field->value->type) + " where " + describe(field->want) +
+                              " is expected",
+                          std::move(id));
+    narrowing_note(d, field->value->type, field->want);
+    return d;
   }
-  return error(value.loc, std::move(message), std::move(id));
+  Diagnostic& d = error(value.loc, std::move(message), std::move(id));
+  narrowing_note(d, value.type, want);
+  return d;
+}
+
+// A number where a narrower sized number is expected: arithmetic promoted it (int8 + 1 is an
+// int), and arbc converts nothing silently; say both, once.
+void Sema::narrowing_note(Diagnostic& d, const TypePtr& got, const TypePtr& want) {
+  bool numbers = got && want && (got->kind == Type::Kind::Int || got->kind == Type::Kind::Float) &&
+                 (want->kind == Type::Kind::Int || want->kind == Type::Kind::Float);
+  if (!numbers || !want->narrow()) return;
+  Diagnostic note;
+  note.severity = Severity::Note;
+  note.message = "arithmetic computes sized numbers as int or float, and arbc narrows no computed "
+                 "value: give a value of " + want->to_string() + " (a field of that type, or a "
+                 "constant in its range; docs/language.md#sized-numbers)";
+  d.notes.push_back(std::move(note));
 }
 
 std::string Sema::describe(const TypePtr& t) const {
