@@ -119,11 +119,11 @@ Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::
           message + "; field '" + field->field + "' (" + describe(field->want) + ") is missing",
           std::move(id));
     }
-    Diagnostic& d = error(field->value->loc,
-                          message + "; field '" + field->field + "' is " +
-                              describe(field->value->type) + " where " + describe(field->want) +
-                              " is expected",
-                          std::move(id));
+    Diagnostic& d =
+        error(field->value->loc,
+              message + "; field '" + field->field + "' is " + describe(field->value->type) +
+                  " where " + describe(field->want) + " is expected",
+              std::move(id));
     narrowing_note(d, field->value->type, field->want);
     return d;
   }
@@ -140,9 +140,12 @@ void Sema::narrowing_note(Diagnostic& d, const TypePtr& got, const TypePtr& want
   if (!numbers || !want->narrow()) return;
   Diagnostic note;
   note.severity = Severity::Note;
-  note.message = "arithmetic computes sized numbers as int or float, and arbc narrows no computed "
-                 "value: give a value of " + want->to_string() + " (a field of that type, or a "
-                 "constant in its range; docs/language.md#sized-numbers)";
+  note.message =
+      "arithmetic computes sized numbers as int or float, and arbc narrows no computed "
+      "value: give a value of " +
+      want->to_string() +
+      " (a field of that type, or a "
+      "constant in its range; docs/language.md#sized-numbers)";
   d.notes.push_back(std::move(note));
 }
 
