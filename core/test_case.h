@@ -18,8 +18,12 @@ struct TestStep {
   enum class Kind { Input, Set, Unset };
   Kind kind = Kind::Input;
   Nanos t{0};
-  std::string port;   // Input: "Module.port", an out-port
-  Value value;        // Input
+  std::string port;  // Input: "Module.port", an out-port
+  Value value;       // Input
+  // Input: the port's type, where the step was made by arbc (a counterexample), so that its
+  // value is written back as the spec writes it (a uint64 above 2^63 - 1 is held as its bits,
+  // core/type.h); null for steps read from a spec, which need no writing.
+  TypePtr type;
   std::string event;  // Set, Unset
   SourceLocation loc;
 };

@@ -4,6 +4,7 @@
 
 #include "core/duration_literal.h"
 #include "core/join.h"
+#include "core/json_text.h"
 
 namespace arbc::verify {
 
@@ -86,6 +87,7 @@ std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery&
     model::TestStep s;
     s.port = c.source;
     s.value = std::move(*message);
+    if (const model::Port* p = data.app().find_port(c.source)) s.type = p->type;
     test.steps.push_back(std::move(s));
     sources.push_back(c.source);
   }
@@ -120,12 +122,16 @@ const char* const kDecisionTestHeader =
 std::string counterexample_file_text(const model::TestCase& replay, const std::string& claim,
                                      const std::string& spec_path, const std::string& header) {
   std::string out = header;
-  out += "tests for \"" + spec_path + "\";\n\ntest \"" + replay.name + "\" {\n";
+  // The name quotes the claim, which may hold a string literal: written as a spec string, quotes
+  // and backslashes escaped (as a value's strings are, spec_value_text).
+  out += "tests for \"" + spec_path + "\";\n\ntest ";
+  append_json_string(out, replay.name);
+  out += " {\n";
   for (const model::TestStep& s : replay.steps) {
     out += "  at " + duration_literal(s.t) + " ";
     switch (s.kind) {
       case model::TestStep::Kind::Input:
-        out += s.port + " <- " + spec_value_text(s.value) + ";\n";
+        out += s.port + " <- " + spec_value_text(s.value, s.type.get()) + ";\n";
         break;
       case model::TestStep::Kind::Set:
         out += "set " + s.event + ";\n";

@@ -213,12 +213,11 @@ void Sema::check_assign(Stmt& s, Scope& scope) {
     return;
   }
   s.var_decl = b->local;
-  if (b->type && s.expr->type && !assignable(*s.expr->type, *b->type)) {
-    value_type_error(
+  if (b->type && s.expr->type)  // a constant in range fits, as in an emit (value_fit.h)
+    check_value_fits(
         *s.expr, b->type,
         "'" + s.name + "' holds " + describe(b->type) + ", not " + describe(s.expr->type),
         diag::TypeMismatch);
-  }
 }
 
 // `set` / `unset`: a declared event that monitor code may set (not one a feed sets).

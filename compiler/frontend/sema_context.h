@@ -237,6 +237,9 @@ class Sema {
   // A binary operator with a uint64 operand: only + - * == != < <= > >= against a uint64, an
   // unsigned integer or a constant >= 0; false, reported, otherwise.
   bool check_uint64_binary(ast::Expr& e);
+  // A number item of a list literal beside items of type `element`: false, reported, when one
+  // is a uint64 and the other may be negative.
+  bool check_uint64_list_item(const ast::Expr& item, const TypePtr& element);
   // An operand no uint64 may be (of unary '-', of a builtin): false, reported, when it is one.
   bool check_uint64_operand(const ast::Expr& operand, const std::string& what);
   // `value` goes where `want` is expected (an emit, a test's message): false, reported with

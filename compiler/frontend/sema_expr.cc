@@ -378,6 +378,10 @@ void Sema::check_list(Expr& e, Scope& scope) {
     if (!element) {
       element = item->type;
     } else if (is_numeric(element) && is_numeric(item->type)) {
+      if (!check_uint64_list_item(*item, element)) {
+        ok = false;
+        continue;
+      }
       element = numeric_join(element, item->type);
     } else if (!assignable(*item->type, *element)) {
       error(item->loc,
@@ -454,6 +458,7 @@ void Sema::check_best_by(Expr& e, Scope& scope) {
   scope.define(key.text, param);
   check_expr(*key.args[0], scope);
   scope.pop();
+  if (!check_uint64_operand(*key.args[0], "the key of '" + e.text + "'")) return;
   if (key.args[0]->type && !is_numeric(key.args[0]->type)) {
     error(key.args[0]->loc,
           "the key of '" + e.text + "' must be a number, not " + describe(key.args[0]->type),

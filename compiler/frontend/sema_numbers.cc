@@ -81,6 +81,19 @@ bool Sema::check_uint64_operand(const Expr& operand, const std::string& what) {
   return false;
 }
 
+bool Sema::check_uint64_list_item(const Expr& item, const TypePtr& element) {
+  // A uint64 item beside a signed one would read the signed -1 as 2^64 - 1.
+  if (!(is_uint64(*element) || is_uint64(*item.type)) ||
+      (element->is_unsigned && item.type->is_unsigned))
+    return true;
+  error(item.loc,
+        "list items must have one type: a uint64 cannot share a list with " +
+            describe(is_uint64(*element) ? item.type : element) +
+            " (a negative value would read as a huge uint64)",
+        diag::Uint64);
+  return false;
+}
+
 bool Sema::check_value_fits(const Expr& value, const TypePtr& want, const std::string& message,
                             DiagId id) {
   if (!value_fits(value, want)) {

@@ -169,6 +169,7 @@ class Builder {
     s.t = t;
     s.port = c.source;
     s.value = w->messages[0];
+    if (const model::Port* port = data_.app().find_port(c.source)) s.type = port->type;
     test.steps.push_back(std::move(s));
     // The deliveries the property is about (for a property over two rules, both rules') as
     // expectations.
@@ -180,7 +181,8 @@ class Builder {
       e.value = w->emitted[0];
       e.from = e.to = t;
       e.connection = c.name;  // the rule that delivered it; a `receives` ignores it
-      e.text = c.destination + " receives " + spec_value_text(w->emitted[0]) + " at " +
+      e.text = c.destination + " receives " +
+               spec_value_text(w->emitted[0], port_type_of(data_.app(), c.destination)) + " at " +
                duration_literal(t);
       test.expectations.push_back(std::move(e));
     }
