@@ -23,7 +23,7 @@ Common ground, for every claim:
   them or that the verdict say "up to N"; a breach that needs one is still a breach, labelled
   with the assumption it needs (`Breach.needs`). The one exception: a verdict that says "for
   lists of at most N elements" (list_bound in the JSON) claims nothing about longer lists, so
-  report_claims.py counts a breach that needs only longer lists as beyond the bound.
+  report_claims.py counts a breach by a message with a longer list as beyond the bound.
 """
 from dataclasses import dataclass
 

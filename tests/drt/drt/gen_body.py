@@ -1,7 +1,8 @@
 """Random monitor bodies (docs/language.md#monitor-bodies): let, var, assignment, accept,
 set / unset of the events monitors own, if / else if / else, emit, throttle, every; and
 `script` rules with a small hand-written Lua monitor."""
-from .spec import BOOL, INT, FLOAT, STRING, Stmt, Expr, lit, name, fits
+from .spec import (BOOL, INT, FLOAT, STRING, U64, F32, Stmt, Expr, lit, name, fits, int_like,
+                   is_numeric, assignable)
 from .gen_expr import ExprGen
 
 DURATIONS = ["1ms", "50ms", "100ms", "200ms", "250ms", "300ms", "0.5s", "1s", "1.5s"]
@@ -27,8 +28,9 @@ class BodyGen:
         top_vars = {}
         if r.random() < 0.25:
             v = self.fresh("v")
-            init = self.exprs.gen(r.choice([INT, FLOAT, BOOL]), {}, 1, pure=True)
-            vt = init.ty
+            init = self.sized_init(env) if r.random() < 0.4 else None
+            init = init or self.exprs.gen(r.choice([INT, FLOAT, BOOL]), {}, 1, pure=True)
+            vt = promoted(init.ty)
             stmts.append(Stmt("var", v, init))
             top_vars[v] = vt
             env[v] = vt
@@ -46,6 +48,17 @@ class BodyGen:
             stmts.append(Stmt("emit", expr=self.exprs.gen(dst_type, env, 3)))
         return stmts, sets
 
+    def sized_init(self, env):
+        """A sized number of the message as a `var`'s first value: the var holds its promoted
+        type (`var n = m.seq;` of an int32 is an int), so later assignments of ints fit."""
+        if "sized" in self.avoid:
+            return None
+        want = (lambda t: is_numeric(t) and t not in (INT, FLOAT))
+        msg = next(iter(env))
+        if want(env[msg]):
+            return name(env[msg], msg)
+        return self.exprs.field_of(INT, env, 0, want)
+
     def statement(self, env, top_vars, dst_type, events, sets, depth, in_rule):
         r = self.rng
         roll = r.random()
@@ -59,7 +72,12 @@ class BodyGen:
             return [Stmt("accept", expr=self.exprs.gen(BOOL, env, 3))]
         if roll < 0.6 and top_vars:
             v = r.choice(list(top_vars))
-            return [Stmt("assign", v, self.exprs.gen(top_vars[v], env, 2))]
+            e = self.exprs.gen(top_vars[v], env, 2)
+            if not assignable(e.ty, top_vars[v]):
+                # An int constant into a uint64 var is refused (type-mismatch, unlike `emit`):
+                # add it to the var instead.
+                e = Expr("bin", U64, [name(U64, v), e], "+")
+            return [Stmt("assign", v, e)]
         if roll < 0.75 and events:
             e = r.choice(events)
             if e in sets and r.random() < 0.4:
@@ -88,7 +106,7 @@ def script_lua(rng, msg_type, events):
     """A hand-written monitor: accept on a condition of the message, set or unset an event
     (the proof treats it as opaque: docs/design.md#effective-guards)."""
     cond = "true"
-    if msg_type in (INT, FLOAT):
+    if is_numeric(msg_type):
         cond = rng.choice(["msg > 2", "msg <= 0.5", "msg ~= msg", "true"])
     elif msg_type == BOOL:
         cond = rng.choice(["msg", "not msg"])
@@ -116,12 +134,19 @@ def constant_value(rng, ty):
     return lit(STRING, '"s"')
 
 
+def promoted(t):
+    """The type a `var` holds of a value of type t (sema_body.cc: sized numbers promote)."""
+    return INT if int_like(t) else FLOAT if t == F32 else t
+
+
 def guarded_emit(rng, msg, src_type, dst_type):
     """A body that accepts on a comparison of the message and emits it, with the predicate over
     `emitted` that the comparison makes true over the reals (for `assert ... -> P(emitted)`):
     rounding, NaN and wrapping are what can break it."""
-    if not fits(src_type, dst_type) or src_type not in (INT, FLOAT):
-        return None
+    if src_type == U64 and dst_type == U64:
+        return guarded_u64(rng, msg)
+    if not fits(src_type, dst_type) or not is_numeric(src_type) or U64 in (src_type, dst_type):
+        return None  # a uint64 `emitted` meets no float constant
     x = name(src_type, msg)
     roll = rng.random()
     if roll < 0.4:
@@ -129,7 +154,7 @@ def guarded_emit(rng, msg, src_type, dst_type):
                                              (">=", "1.0", ">", "0.3333333333333333")])
         lhs = Expr("bin", FLOAT, [x, lit(FLOAT, "3.0")], "*")
         cond = Expr("bin", BOOL, [lhs, lit(FLOAT, scaled)], op)
-    elif src_type == INT and roll < 0.7:
+    elif int_like(src_type) and roll < 0.7:
         lhs = Expr("bin", INT, [x, lit(INT, "1")], "-")
         cond = Expr("bin", BOOL, [lhs, lit(INT, "0")], ">=")
         pred_op, c = ">", "0"
@@ -140,3 +165,24 @@ def guarded_emit(rng, msg, src_type, dst_type):
     body = [Stmt("accept", expr=cond), Stmt("emit", expr=x)]
     pred = Expr("bin", BOOL, [name(dst_type, "emitted"), lit(FLOAT, c)], pred_op)
     return body, pred
+
+
+def guarded_u64(rng, msg):
+    """A uint64 let through by an unsigned comparison, emitted as it is or plus one; the assert
+    over `emitted` holds only if both the proof and the monitor compare unsigned and wrap at
+    2^64 (x < 2^64 - 1 makes x + 1 > 0; x >= 2^63 is a uint64 above every int64)."""
+    x = name(U64, msg)
+    big = lit(U64, rng.choice(["9223372036854775808", "18446744073709551615"]))
+    roll = rng.random()
+    if roll < 0.4:
+        cond = Expr("bin", BOOL, [x, big], ">=")
+        body_value, pred = x, Expr("bin", BOOL, [name(U64, "emitted"), lit(INT, "5")], ">")
+    elif roll < 0.7:
+        cond = Expr("bin", BOOL, [x, lit(U64, "18446744073709551615")], "<")
+        body_value = Expr("bin", U64, [x, lit(INT, "1")], "+")
+        pred = Expr("bin", BOOL, [name(U64, "emitted"), lit(INT, "0")], ">")
+    else:
+        cond = Expr("bin", BOOL, [x, lit(INT, "10")], "<=")
+        body_value = Expr("bin", U64, [x, lit(INT, "3")], "*")
+        pred = Expr("bin", BOOL, [name(U64, "emitted"), lit(INT, "30")], "<=")
+    return [Stmt("accept", expr=cond), Stmt("emit", expr=body_value)], pred

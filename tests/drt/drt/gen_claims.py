@@ -53,7 +53,7 @@ def data_assert(g, a, rule):
         pred = ExprGen(g.rng, g.consts, g.avoid).gen(BOOL, {"emitted": ty}, 3, pure=True)
         if "emitted" not in pred.text():
             pred = ExprGen(g.rng, g.consts, g.avoid).gen(BOOL, {"emitted": ty}, 2, pure=True)
-    if "emitted" not in pred.text():
+    if "emitted" not in pred.text() or ("assert-data-string" in g.avoid and '"' in pred.text()):
         pred = type(pred)("bin", BOOL, [name(ty, "emitted"), name(ty, "emitted")], "==")
     return Decl("assert_data", f"assert {a.port}: {rule.name} -> {pred.text()};",
                 {"port": a.port, "rule": rule.name, "pred": pred})

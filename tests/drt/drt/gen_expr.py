@@ -1,13 +1,22 @@
 """Random well-typed expressions of the spec language (docs/language.md#expressions): every
 operator and builtin, literals at the edges (0, -0.0, 2^63 - 1, 1e308, empty and non-ASCII
-strings), lists, records and lambdas of min_by / max_by."""
-from .spec import BOOL, INT, FLOAT, STRING, VEC3, Expr, lit, name, is_number, fits
+strings), lists, records and lambdas of min_by / max_by; sized numbers (docs/language.md,
+"Sized numbers") read where an int or a float is wanted (they promote), put only where they fit
+(a narrower type, a constant in range), and uint64 in + - * and comparisons with its partners."""
+from .spec import (BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, Expr, lit, name, fits,
+                   is_sized, is_numeric, int_like, assignable, literal_type)
 
 INT_LITS = ["0", "1", "2", "3", "5", "7", "10", "100", "9223372036854775807", "4611686018427387904"]
 FLOAT_LITS = ["0.0", "0.5", "0.1", "0.3333333333333333", "1.5", "2.0", "1e308", "1e-300", "3.75",
               "0.2", "1e-3"]
 DURATION_LITS = ["1ms", "200ms", "0.5s", "1s", "2min"]
 STRING_LITS = ['""', '"a"', '"take"', '"é✓"', '"日本"', '"a\\"b"', '"x\\ny"', '"' + "z" * 40 + '"']
+# Constants a float32 holds exactly: FLT_MAX, the least subnormal, 0.1 as float32 rounds it.
+F32_LITS = ["0.0", "0.5", "1.5", "3.0", "16777216.0", "0.10000000149011612", "3.4028234663852886e38",
+            "1.401298464324817e-45", "1.1754943508222875e-38"]
+# uint64 constants: those above 2^63 - 1 are uint64 literals (their bits read negative).
+U64_LITS = ["0", "1", "7", "4294967296", "9223372036854775807", "9223372036854775808",
+            "18446744073709551615", "18446744073709551614"]
 
 
 class ExprGen:
@@ -38,6 +47,10 @@ class ExprGen:
         return self.leaf(ty, env, force=True)
 
     def leaf(self, ty, env, force=False):
+        if (is_numeric(ty) or ty == BOOL) and "sized" not in self.avoid and self.chance(0.3):
+            f = self.field_of(ty, env, 0)  # a message's fields, sized ones among them
+            if f is not None:
+                return f
         names = self.names_of(env, ty)
         local = [n for n in names if n in env]
         if local and self.chance(0.7):
@@ -60,16 +73,29 @@ class ExprGen:
             return lit(STRING, self.rng.choice(STRING_LITS))
         if ty == VEC3:
             return Expr("call", VEC3, [self.leaf(FLOAT, env, True) for _ in range(3)], "vec3")
+        if is_sized(ty):
+            return self.sized_const(ty)
         if ty[0] == "record":
-            return Expr("record", ty, [exact(self.leaf(t, env, True), t) for _, t in ty[1]],
-                        [f for f, _ in ty[1]])
+            return record_lit(ty, [exact(self.leaf(t, env, True), t) for _, t in ty[1]])
         if ty[0] == "list":
             if names:
                 n = self.rng.choice(names)
                 return name(env.get(n, self.consts.get(n)), n)
-            items = [exact(self.leaf(ty[1], env, True), ty[1]) for _ in range(self.rng.randint(1, 2))]
-            return Expr("list", ty, items)
+            return list_lit([exact(self.leaf(ty[1], env, True), ty[1])
+                             for _ in range(self.rng.randint(1, 2))])
         return None
+
+    def sized_const(self, ty):
+        """A constant the sized type holds: its edges, 0, -1, and a random one in its range."""
+        r = self.rng
+        if ty == F32:
+            e = lit(FLOAT, r.choice(F32_LITS))
+            return Expr("neg", FLOAT, [e]) if self.chance(0.3) else e
+        if ty == U64:
+            t = r.choice(U64_LITS)
+            return lit(U64 if int(t) >= 2**63 else INT, t)
+        lo, hi = INT_RANGES[ty[0]]
+        return int_lit(r.choice([0, 1, hi, hi - 1, lo, lo + 1, -1 if lo else 2, r.randint(lo, hi)]))
 
     def makers(self, ty, env, d, pure):
         g = self.gen
@@ -113,14 +139,52 @@ class ExprGen:
                   lambda: Expr("bin", VEC3, [g(self.num(), env, d, pure), g(VEC3, env, d, pure)], "*"),
                   lambda: Expr("bin", VEC3, [g(VEC3, env, d, pure), self.nonzero()], "/"),
                   lambda: Expr("neg", VEC3, [g(VEC3, env, d, pure)])]
+        elif ty == U64:
+            m += [lambda: self.u64_arith(env, d, pure)]
         elif ty[0] == "record":
-            m += [lambda: Expr("record", ty, [exact(g(t, env, d, pure), t) for _, t in ty[1]],
-                               [f for f, _ in ty[1]])]
+            m += [lambda: record_lit(ty, [exact(g(t, env, d, pure), t) for _, t in ty[1]])]
         elif ty[0] == "list":
-            m += [lambda: Expr("list", ty, [exact(g(ty[1], env, d, pure), ty[1])
-                                            for _ in range(self.rng.randint(1, 3))])]
-
+            m += [lambda: list_lit([exact(g(ty[1], env, d, pure), ty[1])
+                                    for _ in range(self.rng.randint(1, 3))])]
+        if ty == BOOL and "sized" not in self.avoid:
+            m += [lambda: self.u64_compare(env, d, pure)]
         return m
+
+    def u64_source(self, env, d):
+        """A uint64 that is not a constant: a name, a field or an element of that type."""
+        exactly = (lambda t: t == U64)
+        names = [n for n, t in env.items() if t == U64]
+        opts = [lambda: name(U64, self.rng.choice(names)) if names else None,
+                lambda: self.field_of(U64, env, d, exactly), lambda: self.index_of(U64, env, d, exactly)]
+        self.rng.shuffle(opts)
+        for make in opts:
+            e = make()
+            if e is not None:
+                return e
+        return None
+
+    def u64_arith(self, env, d, pure):
+        """`+ - *` of a uint64 (wrapping modulo 2^64) with a partner a uint64 takes: another uint64,
+        an unsigned narrower integer or a constant >= 0 (docs/language.md, "Sized numbers")."""
+        a = self.u64_source(env, d)
+        if a is None:
+            return None
+        b = self.gen(U64, env, d, pure)
+        if self.chance(0.5):
+            a, b = b, a
+        return Expr("bin", U64, [a, b], self.rng.choice(["+", "-", "*"]))
+
+    def u64_compare(self, env, d, pure):
+        """A uint64 compared with a partner it takes: the orderings compare unsigned."""
+        a = self.u64_source(env, d)
+        if a is None:
+            return None
+        if self.chance(0.3):
+            a = self.u64_arith(env, d, pure)
+        b = self.gen(U64, env, d, pure)
+        if self.chance(0.5):
+            a, b = b, a
+        return Expr("bin", BOOL, [a, b], self.rng.choice(["<", "<=", ">", ">=", "==", "!="]))
 
     def int_arith(self, env, d, pure):
         op = self.rng.choice(["+", "-", "*", "%"])
@@ -151,17 +215,64 @@ class ExprGen:
         return Expr("bin", FLOAT, [a, b], op)
 
     def compare(self, env, d, pure):
+        op = self.rng.choice(["<", "<=", ">", ">="])
+        if "sized" not in self.avoid and self.chance(0.3):
+            edge = self.edge_compare(env, op)
+            if edge is not None:
+                return edge
         if self.chance(0.15):
             ty = STRING
         else:
             ty = self.num()
-        op = self.rng.choice(["<", "<=", ">", ">="])
         return Expr("bin", BOOL, [self.gen(ty, env, d, pure), self.gen(ty, env, d, pure)], op)
+
+    def edge_compare(self, env, op):
+        """A sized number against an edge of its type or just past it (`m.level > 127` of an
+        int8, `m.range < 1e-46` of a float32): true or false of every value the type holds,
+        which the proof knows only if it gives the field its range, as the runtime does."""
+        want = (lambda t: t not in (INT, FLOAT, U64) and is_numeric(t))
+        x = self.field_of(INT, env, 0, want)
+        names = [n for n, t in env.items() if want(t)]
+        if names and (x is None or self.chance(0.5)):
+            n = self.rng.choice(names)
+            x = name(env[n], n)
+        if x is None:
+            return None
+        if x.ty == F32:
+            c = lit(FLOAT, self.rng.choice(["3.4028234663852886e38", "3.4028235677973366e38",
+                                             "1.401298464324817e-45", "1e-46", "16777216.0",
+                                             "16777217.0", "0.0"]))
+            c = Expr("neg", FLOAT, [c]) if self.chance(0.3) else c
+        else:
+            lo, hi = INT_RANGES[x.ty[0]]
+            c = int_lit(self.rng.choice([lo, hi, lo - 1, hi + 1, hi - 1, 0]))
+        return Expr("bin", BOOL, [x, c] if self.chance(0.7) else [c, x], op)
+
+    def edge_pair(self, env):
+        """Two comparisons of one sized number with one constant: the first at an edge of its
+        type, the second its negation (exclusive), the other strict side (exclusive but for the
+        constant itself), or an overlapping one; None if the message has no sized number."""
+        op = self.rng.choice(["<", "<=", ">", ">="])
+        first = self.edge_compare(env, op)
+        if first is None or self.chance(0.3):
+            x = self.u64_source(env, 0)
+            first = first if x is None else Expr("bin", BOOL, [x, self.sized_const(U64)], op)
+        if first is None:
+            return None
+        x, c = first.args
+        other = {"<": [">=", ">", "<="], "<=": [">", ">=", "<"], ">": ["<=", "<", ">="],
+                 ">=": ["<", "<=", ">"]}[op]
+        return first, Expr("bin", BOOL, [x, c], self.rng.choice(other))
 
     def equality(self, env, d, pure):
         ty = self.rng.choice([INT, FLOAT, STRING, BOOL, VEC3] + [t for t in env.values()])
-        return Expr("bin", BOOL, [self.gen(ty, env, d, pure), self.gen(ty, env, d, pure)],
-                    self.rng.choice(["==", "!="]))
+        a, b = self.gen(ty, env, d, pure), self.gen(ty, env, d, pure)
+        # Two records or lists compare only when each type takes the other's values: a literal
+        # `{ f: 1 }` is a record of an int, not of the port's int8.
+        if not (is_numeric(a.ty) and is_numeric(b.ty)) and \
+                not (assignable(a.ty, b.ty) and assignable(b.ty, a.ty)):
+            b = a
+        return Expr("bin", BOOL, [a, b], self.rng.choice(["==", "!="]))
 
     def length(self, env, d):
         lists = [n for n, t in env.items() if t[0] == "list" or (t == STRING and "string-len" not in self.avoid)]
@@ -172,52 +283,78 @@ class ExprGen:
         n = self.rng.choice(lists)
         return Expr("call", INT, [name(env[n], n)], "len")
 
-    def field_of(self, ty, env, d):
-        """`r.f` of a record in scope whose field f has type ty."""
-        opts = [(n, f) for n, t in env.items() if t[0] == "record" for f, ft in t[1] if ft == ty]
+    def field_of(self, ty, env, d, want=None):
+        """`r.f` of a record in scope whose field f may stand for ty (`want`: which types)."""
+        want = want or (lambda t: fits(t, ty))
+        opts = [(n, f, ft) for n, t in env.items() if t[0] == "record" for f, ft in t[1] if want(ft)]
         if not opts:
             return None
-        n, f = self.rng.choice(opts)
-        return Expr("field", ty, [name(env[n], n)], f)
+        n, f, ft = self.rng.choice(opts)
+        return Expr("field", ft, [name(env[n], n)], f)
 
-    def index_of(self, ty, env, d):
-        opts = [n for n, t in env.items() if t == ("list", ty)]
+    def index_of(self, ty, env, d, want=None):
+        want = want or (lambda t: fits(t, ty))
+        opts = [n for n, t in env.items() if t[0] == "list" and want(t[1])]
         if not opts:
             return None
         n = self.rng.choice(opts)
         i = self.gen(INT, env, d) if self.chance(0.3) else lit(INT, self.rng.choice(["0", "1", "4", "5"]))
-        return Expr("index", ty, [name(env[n], n), i])
+        return Expr("index", env[n][1], [name(env[n], n), i])
 
     def best_of(self, ty, env, d):
-        """min_by / max_by(list, x => key) of a list in scope whose elements have type ty."""
-        opts = [n for n, t in env.items() if t == ("list", ty)]
+        """min_by / max_by(list, x => key) of a list in scope whose elements may stand for ty."""
+        opts = [n for n, t in env.items() if t[0] == "list" and fits(t[1], ty)]
         if not opts:
             return None
         n = self.rng.choice(opts)
+        element = env[n][1]
         self.lambda_count += 1
         var = f"o{self.lambda_count}"
-        key = self.gen(self.num(), {**env, var: ty}, min(d, 2), pure=True)
-        return Expr("call", ty, [name(env[n], n), Expr("lambda", key.ty, [key], var)],
+        key = self.gen(self.num(), {**env, var: element}, min(d, 2), pure=True)
+        return Expr("call", element, [name(env[n], n), Expr("lambda", key.ty, [key], var)],
                     self.rng.choice(["min_by", "max_by"]))
 
 
 def retype(e):
-    """A float-wanted arithmetic node whose operands all came out int is an int (sema's rule:
-    `int op int` is int except `/`; min, max and abs of ints are ints)."""
+    """A float-wanted arithmetic node whose operands all came out integers is an int (sema's
+    rule: `int op int` is int except `/`, sized integers promoted; min, max and abs of ints are
+    ints)."""
     if e.ty != FLOAT:
         return e
-    if e.kind == "bin" and e.val in "+-*%" and all(a.ty == INT for a in e.args):
+    if e.kind == "bin" and e.val in "+-*%" and all(int_like(a.ty) for a in e.args):
         e.ty = INT
-    elif e.kind == "neg" and e.args[0].ty == INT:
+    elif e.kind == "neg" and int_like(e.args[0].ty):
         e.ty = INT
-    elif e.kind == "call" and e.val in ("min", "max", "abs") and all(a.ty == INT for a in e.args):
+    elif e.kind == "call" and e.val in ("min", "max", "abs") and all(int_like(a.ty) for a in e.args):
         e.ty = INT
     return e
 
 
 def exact(e, ty):
-    """`e` with exactly type `ty` where an int would do for a float but change a record's or a
-    list's type ({f: 1} is a record of an int)."""
-    if ty == FLOAT and e.ty == INT:
+    """`e` with exactly type `ty` where an int would do for a float, or a sized number for an
+    int or a float, but change a record's or a list's type ({f: 1} is a record of an int)."""
+    if ty == FLOAT and e.ty != FLOAT:
         return Expr("bin", FLOAT, [e, lit(FLOAT, "0.0")], "+")
+    if ty == INT and e.ty != INT:
+        return Expr("bin", INT, [e, lit(INT, "0")], "+")
     return e
+
+
+def int_lit(v):
+    """An int constant; a negative one is the negation of a literal (-128 for an int8's least)."""
+    return lit(INT, str(v)) if v >= 0 else Expr("neg", INT, [lit(INT, str(-v))])
+
+
+def record_lit(ty, args):
+    """A record literal of the fields of `ty`, typed as arbc types it (by its fields' values)."""
+    names = [f for f, _ in ty[1]]
+    return Expr("record", literal_type("record", [(f, a.ty) for f, a in zip(names, args)]), args, names)
+
+
+def list_lit(items):
+    """A list literal, typed as arbc types it. Items of a record or list type must each fit the
+    first's type; when a sized field makes them differ ({ f: 1 } and { f: m.a }), one is kept."""
+    first = items[0].ty
+    if not is_numeric(first) and not all(assignable(i.ty, first) for i in items[1:]):
+        items = items[:1]
+    return Expr("list", literal_type("list", [i.ty for i in items]), items)

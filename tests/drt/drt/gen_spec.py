@@ -2,9 +2,11 @@
 type, events with lifetimes, `events from` feeds, derived events with and without `for`,
 delivery events over an arbitrated port (read by its own rules or another port's),
 arbitrated ports with and without `by priority`, `otherwise`, bodies (gen_body.py), `connect`,
-`exclusive` / `invariant`, and the claims the proof makes (gen_claims.py)."""
-from .spec import (BOOL, INT, FLOAT, STRING, VEC3, list_of, Spec, Module, Decl, Arbitrate, Rule,
-                   Connect, Stmt, Expr, lit, name, fits)
+`exclusive` / `invariant`, and the claims the proof makes (gen_claims.py). Sized numbers
+(docs/language.md, "Sized numbers"; `--avoid sized` leaves them out) as ports, record fields and
+list elements, each spelled as the spec chooses (`byte`, `int64`)."""
+from .spec import (BOOL, INT, FLOAT, STRING, VEC3, U64, F32, SIZED, SPELLINGS, list_of, Spec,
+                   Module, Decl, Arbitrate, Rule, Connect, Stmt, Expr, lit, name, fits, has_sized)
 from .gen_body import BodyGen, DURATIONS, script_lua, guarded_emit
 from .gen_claims import add_claims
 
@@ -50,9 +52,11 @@ class SpecGen:
 
     def make_types(self):
         r = self.rng
-        self.types = list(SIMPLE)
+        sized = self.sized_types()
+        self.types = list(SIMPLE) + sized
         for i in range(r.randint(0, 2)):
-            fields = [(f"f{j}", r.choice(SIMPLE + [list_of(FLOAT)])) for j in range(r.randint(1, 3))]
+            fields = [(f"f{j}", r.choice(SIMPLE + [list_of(FLOAT)] + sized * 2))
+                      for j in range(r.randint(1, 3))]
             rec = ("record", tuple(fields))
             if self.chance(0.6):
                 self.spec.aliases[f"R{i + 1}"] = rec
@@ -60,7 +64,18 @@ class SpecGen:
             if self.chance(0.5):
                 self.types.append(list_of(rec))
         if self.chance(0.5):
-            self.types.append(list_of(self.rng.choice([INT, FLOAT, STRING, VEC3])))
+            self.types.append(list_of(self.rng.choice([INT, FLOAT, STRING, VEC3] + sized)))
+
+    def sized_types(self):
+        """The sized number types of this spec (uint64 and float32, the ones with their own
+        rules, drawn more often; `--avoid uint64` leaves uint64 out), and how it spells int,
+        float and uint8."""
+        r = self.rng
+        if "sized" in self.avoid or not self.chance(0.7):
+            return []
+        self.spec.spellings = {k: r.choice(v) for k, v in SPELLINGS.items() if r.random() < 0.5}
+        pool = [t for t in SIZED + [U64, U64, F32] if t != U64 or "uint64" not in self.avoid]
+        return r.sample(pool, r.randint(1, 3))
 
     def make_consts(self):
         for i in range(self.rng.randint(0, 3)):
@@ -158,6 +173,9 @@ class SpecGen:
     def arbitrate(self, port):
         r = self.rng
         dst = self.spec.port_type(port)
+        pair = self.data_pair(port) if "sized" not in self.avoid and self.chance(0.15) else None
+        if pair:
+            return pair
         by_priority = self.chance(0.4)
         a = Arbitrate(port, by_priority, complete=self.chance(0.1))
         n_rules = r.randint(1, 4)
@@ -186,6 +204,31 @@ class SpecGen:
                 rule.hold = r.choice(DURATIONS[1:] + getattr(self, "durations_extra", []))
             a.rules.append(rule)
         self.guards(a, sorted(owned))
+        return a
+
+    def data_pair(self, port):
+        """A port of two rules of one source that only their data can keep apart: no `when`,
+        and accepts comparing one sized number of the message with an edge of its type, the
+        second rule the opposite or an overlapping comparison (`m.level > 126` and
+        `m.level < 127` of an int8; a uint64 compared unsigned): the proof's exclusive_by_data
+        pairs, which a message both rules accept breaks."""
+        srcs = [s for s in self.sources if has_sized(self.spec.port_type(s))]
+        if not srcs:
+            return None
+        src = self.rng.choice(srcs)
+        src_type, dst = self.spec.port_type(src), self.spec.port_type(port)
+        msg = src.split(".")[1]
+        bodies = BodyGen(self.rng, self.consts, self.counter, self.avoid)
+        accepts = bodies.exprs.edge_pair({msg: src_type})
+        if accepts is None:
+            return None
+        a = Arbitrate(port)
+        for cond in accepts:
+            self.counter["r"] = self.counter.get("r", 0) + 1
+            body = []
+            if src_type != dst or self.chance(0.3):
+                body, _ = bodies.body(msg, src_type, dst, [], must_emit=src_type != dst)
+            a.rules.append(Rule(f"r{self.counter['r']}", src, body=[Stmt("accept", expr=cond)] + body))
         return a
 
     def source_for(self, dst):

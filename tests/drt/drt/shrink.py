@@ -8,9 +8,10 @@ import os
 import random
 import time
 
-from .spec import Expr, Arbitrate, Connect, Decl, lit, BOOL, INT, FLOAT, STRING
+from .spec import Expr, Arbitrate, Connect, Decl, lit, BOOL, INT, FLOAT, STRING, SIZED, F32
 
-LEAVES = {BOOL: ["true", "false"], INT: ["0", "1"], FLOAT: ["0.0", "1.0"], STRING: ['""']}
+LEAVES = {BOOL: ["true", "false"], INT: ["0", "1"], FLOAT: ["0.0", "1.0"], STRING: ['""'],
+          **{t: (["0.0", "1.0"] if t == F32 else ["0", "1"]) for t in SIZED}}
 
 
 def fit_inputs(spec, inputs):

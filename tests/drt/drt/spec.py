@@ -2,13 +2,24 @@
 make one and the shrinker can take it apart.
 
 Types are tuples: ("bool",), ("int",), ("float",), ("string",), ("vec3",), ("list", T),
-("record", ((field, T), ...)). Expressions are `Expr` trees; every compound expression prints
-in parentheses, so the printer never depends on operator precedence.
+("record", ((field, T), ...)), and the sized numbers by their canonical names (docs/language.md,
+"Sized numbers"): ("int8",) ... ("uint64",), ("float32",); `int` is int64 and `float` float64.
+Expressions are `Expr` trees; every compound expression prints in parentheses, so the printer
+never depends on operator precedence.
 """
 from dataclasses import dataclass, field
 from typing import List, Optional
 
 BOOL, INT, FLOAT, STRING, VEC3 = ("bool",), ("int",), ("float",), ("string",), ("vec3",)
+
+# The sized integers' ranges; a uint64 is held as its 64-bit pattern (an int64), as Lua holds it.
+INT_RANGES = {"int8": (-2**7, 2**7 - 1), "int16": (-2**15, 2**15 - 1), "int32": (-2**31, 2**31 - 1),
+              "uint8": (0, 2**8 - 1), "uint16": (0, 2**16 - 1), "uint32": (0, 2**32 - 1),
+              "uint64": (0, 2**64 - 1), "int": (-2**63, 2**63 - 1)}
+U64, F32 = ("uint64",), ("float32",)
+SIZED = [(n,) for n in INT_RANGES if n != "int"] + [F32]
+# Other spellings of one type (core/number_types.def): a spec may write any of them.
+SPELLINGS = {"int": ["int", "int64"], "float": ["float", "float64"], "uint8": ["uint8", "byte", "char"]}
 
 
 def list_of(t):
@@ -19,25 +30,114 @@ def is_number(t):
     return t in (INT, FLOAT)
 
 
-def type_text(t, aliases=None):
-    """The spec text of a type; a record or list that has an alias prints as its name."""
+def is_sized(t):
+    return t in SIZED
+
+
+def is_numeric(t):
+    return t in (INT, FLOAT) or t in SIZED
+
+
+def int_like(t):
+    """An integer that promotes to an int in arithmetic (every integer but uint64)."""
+    return t == INT or (t in SIZED and t not in (U64, F32))
+
+
+def is_float(t):
+    return t in (FLOAT, F32)
+
+
+def bits(t):
+    if t in (INT, FLOAT, U64):
+        return 64
+    return 32 if t == F32 else int(t[0].lstrip("uint"))
+
+
+def number_assignable(frm, to):
+    """Whether every value of number type `frm` is one of `to` (compiler/frontend/type_rules.cc):
+    int8 into int32, uint16 into float32, float32 into float; int into float (the language's
+    old rule); a uint64 only into a uint64, which takes every unsigned integer."""
+    if is_float(frm):
+        return is_float(to) and bits(frm) <= bits(to)
+    if frm == U64:
+        return to == U64
+    if is_float(to):
+        return to == FLOAT or bits(frm) <= 16
+    if to == U64:
+        return frm[0].startswith("u")
+    lo, hi = INT_RANGES[frm[0]]
+    return INT_RANGES[to[0]][0] <= lo and hi <= INT_RANGES[to[0]][1]
+
+
+def assignable(frm, to):
+    """arbc's assignable(): what may be stored or delivered where `to` is expected."""
+    if is_numeric(frm) and is_numeric(to):
+        return number_assignable(frm, to)
+    if frm[0] != to[0]:
+        return False
+    if frm[0] == "list":
+        return assignable(frm[1], to[1])
+    if frm[0] == "record":
+        fields = dict(to[1])
+        return len(frm[1]) == len(fields) and all(f in fields and assignable(t, fields[f])
+                                                   for f, t in frm[1])
+    return True
+
+
+def has_sized(t):
+    if t[0] == "list":
+        return has_sized(t[1])
+    if t[0] == "record":
+        return any(has_sized(ft) for _, ft in t[1])
+    return is_sized(t)
+
+
+def arithmetic_type(a, b):
+    """The type of `a op b` for + - * % (core/type.cc): float if either is a float, uint64 if
+    either is a uint64, else int: sized numbers promote."""
+    if is_float(a) or is_float(b):
+        return FLOAT
+    return U64 if U64 in (a, b) else INT
+
+
+def literal_type(kind, items):
+    """The type arbc gives a record literal (its fields' types) or a list literal (its first
+    item's type, joined with each next number item's as arithmetic joins them)."""
+    if kind == "record":
+        return ("record", tuple(items))
+    element = items[0]
+    for t in items[1:]:
+        if is_numeric(element) and is_numeric(t):
+            element = arithmetic_type(element, t)
+    return ("list", element)
+
+
+def type_text(t, aliases=None, spellings=None):
+    """The spec text of a type; a record or list that has an alias prints as its name, a number
+    type as the spec spells it (`byte` for uint8, `int64` for int)."""
     if aliases:
         for name, aliased in aliases.items():
             if aliased == t:
                 return name
     if t[0] == "list":
-        return f"list<{type_text(t[1], aliases)}>"
+        return f"list<{type_text(t[1], aliases, spellings)}>"
     if t[0] == "record":
-        return "{ " + ", ".join(f"{f}: {type_text(ft, aliases)}" for f, ft in t[1]) + " }"
-    return t[0]
+        return "{ " + ", ".join(f"{f}: {type_text(ft, aliases, spellings)}" for f, ft in t[1]) + " }"
+    return (spellings or {}).get(t[0], t[0])
 
 
 def fits(value_type, expected):
-    """Whether a value of `value_type` is accepted where `expected` is (an int is a float)."""
+    """Whether an expression of `value_type` may stand where the generator wants `expected`: the
+    same type; for an int any integer that promotes to one; for a float also any float; for a
+    sized number a type whose every value it holds (a uint64 stands only for itself)."""
     if value_type == expected:
         return True
-    if value_type == INT and expected == FLOAT:
-        return True
+    if expected == INT:
+        return int_like(value_type)
+    if expected == FLOAT:
+        return int_like(value_type) or value_type == F32
+    if is_sized(expected) and is_numeric(value_type):
+        return number_assignable(value_type, expected)
     return False
 
 
@@ -202,15 +302,17 @@ class Spec:
     modules: List[Module] = field(default_factory=list)
     decls: List[object] = field(default_factory=list)  # Decl, Arbitrate, Connect, in order
     scripts: dict = field(default_factory=dict)     # file name -> Lua text
+    spellings: dict = field(default_factory=dict)   # number type -> how this spec writes it
 
     def text(self):
         out = [f'app {self.app} "a random app of the differential test (tests/drt)";']
         for n, t in self.aliases.items():
-            out.append(f"type {n} = {type_text(t)};")
+            out.append(f"type {n} = {type_text(t, None, self.spellings)};")
         for n, e in self.consts:
             out.append(f"const {n} = {e.text()};")
         for m in self.modules:
-            ports = " ".join(f"{d} {p}: {type_text(t, self.aliases)};" for d, p, t in m.ports)
+            ports = " ".join(f"{d} {p}: {type_text(t, self.aliases, self.spellings)};"
+                             for d, p, t in m.ports)
             out.append(f"module {m.name} {{ {ports} }}")
         self.line_of = {}
         for d in self.decls:

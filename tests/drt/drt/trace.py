@@ -88,6 +88,11 @@ class Run:
             kind = rec["type"]
             if kind == "publish":
                 self.publishes.setdefault(rec["port"], []).append(to_float(rec["value"]))
+            elif kind == "publish-error":
+                # A value its port's type does not hold (300 on an int8): no publish record,
+                # a bad-type drop on each connection; a placeholder keeps the k-th decision of
+                # a connection on the k-th message of its source.
+                self.publishes.setdefault(rec["port"], []).append(None)
             elif kind == "event" and rec["port"] in containers:
                 containers[rec["port"]].apply(rec, self.lifetime_of)
             elif kind in ("deliver", "drop"):
@@ -116,6 +121,7 @@ class Run:
         for rec in self.records:
             if rec["type"] == "event" and rec.get("port") == port:
                 out.append(rec)
-            elif rec["type"] in ("deliver", "drop") and rec.get("connection") in conns:
+            elif rec["type"] in ("deliver", "drop") and rec.get("connection") in conns and \
+                    rec.get("reason") != "bad-type":  # a message the proof's model never has
                 out.append(rec)
         return out

@@ -3,12 +3,15 @@ evaluator of expressions over values with the machine's arithmetic (Lua 5.4: 64-
 integers, IEEE doubles, `/` always a float, floored `%`), for the properties over a delivered
 value (`assert ... -> P(emitted)`, a resource's `when`).
 
-A value here is Python's: bool, int, float, str, dict (vec3 {"x","y","z"}, records), list.
+A value here is Python's: bool, int, float, str, dict (vec3 {"x","y","z"}, records), list. A
+sized number is an int or a float in its type's range (a float32 is a double that a float32
+holds exactly); a uint64 is its 64-bit pattern, as Lua, traces and the inputs file hold it: its
+orderings compare unsigned, its + - * wrap as every int's do.
 """
 import math
 import struct
 
-from .spec import BOOL, INT, FLOAT, STRING, VEC3
+from .spec import BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, is_sized
 
 INT64_MAX = 2**63 - 1
 INT64_MIN = -2**63
@@ -21,6 +24,12 @@ EDGE_FLOATS = [0.0, -0.0, 0.5, 0.1, 0.2, 0.3, 1.0, 1.5, 2.0, -1.0, 0.33333333333
                -1e308, 5e-324, 1e-300, 0.49999999999999994, 0.7999999999999999, 3.75, 1e15 + 0.5,
                math.nan, math.inf, -math.inf]  # drawn, then left out: see UNWRITABLE
 EDGE_STRINGS = ["", "a", "take", "é✓", "日本", 'a"b', "x\ny", "\\", "z" * 300, "idle", "e1"]
+FLT_MAX = 3.4028234663852886e38
+FLT_TRUE_MIN = 1.401298464324817e-45  # the least subnormal
+EDGE_F32 = [0.0, -0.0, 0.5, 1.0, -1.0, 1.5, FLT_MAX, -FLT_MAX, FLT_TRUE_MIN, -FLT_TRUE_MIN,
+            1.1754943508222875e-38, 0.10000000149011612, 0.3333333432674408, 16777216.0, -16777216.0]
+# Values a float32 does not hold (the runtime drops them as bad-type): they round, or overflow.
+BAD_F32 = [0.1, 16777217.0, 1e39, -1e39, 0.3333333333333333, 1e-46]
 
 
 class NoValue(Exception):
@@ -31,6 +40,25 @@ def wrap(i):
     """An integer as Lua 5.4 holds it: 64-bit two's complement."""
     i &= (1 << 64) - 1
     return i - (1 << 64) if i >= 1 << 63 else i
+
+
+def to_f32(x):
+    """The float32 nearest to x, as a double (None beyond the float32 range)."""
+    try:
+        return struct.unpack("<f", struct.pack("<f", x))[0]
+    except OverflowError:
+        return None
+
+
+def next_f32(x, up=True):
+    """The next float32 above (below) the float32 x."""
+    if math.isnan(x) or math.isinf(x):
+        return x
+    bits = struct.unpack("<i", struct.pack("<f", x))[0]
+    if x == 0.0:
+        return FLT_TRUE_MIN if up else -FLT_TRUE_MIN
+    bits += 1 if (x > 0) == up else -1
+    return struct.unpack("<f", struct.pack("<i", bits))[0]
 
 
 def next_float(x, up=True):
@@ -74,7 +102,48 @@ class ValueGen:
             return [self.value(ty[1], flags) for _ in range(self.length())]
         if ty[0] == "record":
             return {f: self.value(ft, flags) for f, ft in ty[1]}
+        if ty == F32:
+            return self.f32_value()
+        if is_sized(ty):
+            return self.sized_int(ty)
         raise ValueError(ty)
+
+    def out_of_range(self):
+        """Now and then a value the port's type does not hold: the runtime drops it as
+        bad-type, and the proof, which assumes every value in range, must not see it."""
+        return "sized-out-of-range" not in self.avoid and self.rng.random() < 0.03
+
+    def sized_int(self, ty):
+        """An int of a sized type: its edges, 0 and -1, the spec's constants that it holds, and
+        one either side; a uint64 written as its bits (2^64 - 1 as -1, 2^63 as -2^63)."""
+        r = self.rng
+        lo, hi = INT_RANGES[ty[0]]
+        if ty != U64 and self.out_of_range():
+            return r.choice([lo - 1, hi + 1])
+        pool = [lo, hi, lo + 1, hi - 1, 0, 1] + ([-1] if lo else [2])
+        if ty == U64:
+            pool += [2**63, 2**63 - 1, 2**63 + 1, 2**32, 2**53 + 1]
+        pool += [int(n) + k for n in self.numbers if float(n).is_integer() and abs(n) < 2**53
+                 for k in (-1, 0, 1) if lo <= int(n) + k <= hi]
+        v = r.choice(pool) if r.random() < 0.7 else r.randint(max(lo, -3), min(hi, 12))
+        return wrap(v)
+
+    def f32_value(self):
+        """A double that a float32 holds: its edges (FLT_MAX, the least subnormal, -0.0, 0.1
+        rounded to float32, 2^24), the spec's constants rounded to float32 and one float32 ulp
+        either side."""
+        r = self.rng
+        if self.out_of_range():
+            return r.choice(BAD_F32)
+        roll = r.random()
+        if roll < 0.35 and self.numbers:
+            v = to_f32(float(r.choice(self.numbers)))
+            if v is not None:
+                w = r.choice([v, v, next_f32(v), next_f32(v, False), -v])
+                return w if not math.isinf(w) else v  # FLT_MAX's next is no float32
+        if roll < 0.75:
+            return r.choice(EDGE_F32)
+        return to_f32(round(r.uniform(-2, 2), r.choice([1, 2, 7])))
 
     def float_value(self):
         r = self.rng
@@ -214,15 +283,28 @@ def binary(e, env):
     if op == "or":
         return evaluate(e.args[0], env) or evaluate(e.args[1], env)
     a, b = evaluate(e.args[0], env), evaluate(e.args[1], env)
+    if op in ("==", "!=", "<", "<=", ">", ">=") and mixed_numbers(a, b):
+        # An int compared with a float is compared as a float (compiler/lower/lower_body.cc
+        # converts it, as C does), not by mathematical value as Lua itself would.
+        a, b = float(a), float(b)
     if op == "==":
         return equal(a, b)
     if op == "!=":
         return not equal(a, b)
     if op in ("<", "<=", ">", ">="):
+        if U64 in (e.args[0].ty, e.args[1].ty):  # math.ult in the monitor: unsigned
+            a, b = a & (2**64 - 1), b & (2**64 - 1)
         return compare(op, a, b)
     if op == "+" and isinstance(a, list):
         return a + b
     return arith(op, a, b)
+
+
+def mixed_numbers(a, b):
+    def kind(x):
+        return None if isinstance(x, bool) else int if isinstance(x, int) else \
+            float if isinstance(x, float) else None
+    return {kind(a), kind(b)} == {int, float}
 
 
 def call(e, env):
@@ -247,6 +329,8 @@ def call(e, env):
             if not args[0]:
                 raise NoValue()
             args = args[0]
+        if any(isinstance(x, float) for x in args):  # a float min/max takes its ints as floats
+            args = [float(x) for x in args]
         return lua_min_max(f, args)
     if f == "vec3":
         return {"x": float(args[0]), "y": float(args[1]), "z": float(args[2])}
