@@ -90,9 +90,14 @@ def main():
                  said, heard)
         if "never heard a peer: rt/bumper (Bumper.pressed)" not in said:
             fail("the mediator does not say it never heard the bumper", said)
+        # How many arrive depends on when discovery matched under load (25 of 150 on a loaded
+        # CI host): some must, and every one that arrived was kept out.
         navs = re.search(r"read  rt/nav/cmd_vel \([^)]*\): (\d+) received", said)
-        if not navs or int(navs.group(1)) < 50:
+        if not navs or int(navs.group(1)) < 5:
             fail("the mediator did not read the planner's commands (nothing was kept out)", said)
+        row = next((ln.split() for ln in said.splitlines() if ln.startswith("nav ")), None)
+        if not row or row[5] != row[1]:
+            fail("not every command that arrived was kept out (not-selected)", said)
 
         said, heard, commands = run(arbc, build(arbc, opened, tmp), deploy, stream, sub, domain,
                                     env)
