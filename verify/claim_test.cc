@@ -51,6 +51,7 @@ bool breaks_claim(const model::TestCase& test, const TestReplayer* replayer, std
 DataQuery& ReplayData::data() {
   if (!data_) {
     ctx_ = std::make_unique<z3::context>();
+    if (watchdog_) watchdog_->watch_also(*ctx_);
     data_ = std::make_unique<DataQuery>(app_, *ctx_, list_bound_, deadline_);
   }
   return *data_;

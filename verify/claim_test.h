@@ -17,6 +17,7 @@
 #include "core/value.h"
 #include "verify/data_query.h"
 #include "verify/report.h"
+#include "verify/solver_watchdog.h"
 #include "verify/verify.h"
 
 namespace arbc::verify {
@@ -40,11 +41,15 @@ class ReplayData {
   ReplayData(const model::App& app, int list_bound, Clock::time_point deadline)
       : app_(app), list_bound_(list_bound), deadline_(deadline) {}
   DataQuery& data();
+  // The run's watchdog, which then watches this context too once it is made: it must be
+  // destroyed before this (declare this first).
+  void watched_by(SolverWatchdog& watchdog) { watchdog_ = &watchdog; }
 
  private:
   const model::App& app_;
   int list_bound_;
   Clock::time_point deadline_;
+  SolverWatchdog* watchdog_ = nullptr;
   std::unique_ptr<z3::context> ctx_;
   std::unique_ptr<DataQuery> data_;
 };

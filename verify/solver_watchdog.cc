@@ -35,7 +35,7 @@ QueryInFlight::~QueryInFlight() {
 
 SolverWatchdog::SolverWatchdog(z3::context& ctx, Clock::time_point deadline,
                                std::function<void()> on_stuck, Clock::duration grace)
-    : ctx_(ctx),
+    : contexts_{&ctx},
       deadline_(deadline),
       on_stuck_(std::move(on_stuck)),
       grace_(grace),
@@ -50,6 +50,11 @@ SolverWatchdog::~SolverWatchdog() {
   thread_.join();
 }
 
+void SolverWatchdog::watch_also(z3::context& other) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  contexts_.push_back(&other);
+}
+
 bool SolverWatchdog::fired() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return fired_;
@@ -62,7 +67,8 @@ void SolverWatchdog::watch() {
   // just before the deadline (SolverTimeout::arm let it) is stopped by the next one.
   Clock::time_point give_up = Clock::now() + grace_;
   while (!stop_) {
-    bool interrupted = interrupt_query(ctx_);
+    bool interrupted = false;
+    for (z3::context* ctx : contexts_) interrupted |= interrupt_query(*ctx);
     fired_ |= interrupted;
     if (interrupted && on_stuck_ && Clock::now() >= give_up) {
       std::function<void()> last_word = std::move(on_stuck_);

@@ -19,6 +19,7 @@
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 namespace arbc::verify {
 
@@ -51,13 +52,19 @@ class SolverWatchdog {
   SolverWatchdog(const SolverWatchdog&) = delete;
   SolverWatchdog& operator=(const SolverWatchdog&) = delete;
 
-  // True once the deadline passed and the context was interrupted at least once.
+  // Watches `other` too, from now on: a run's queries in a second context (the claim tests'
+  // own, ReplayData) must end at the same deadline, or the run outlives it (drt seed 38 spec 186
+  // asked that context for witnesses of 1e308 floats for 35 s past a 10 s --timeout). `other`
+  // must outlive this watchdog.
+  void watch_also(z3::context& other);
+
+  // True once the deadline passed and a context was interrupted at least once.
   bool fired() const;
 
  private:
   void watch();
 
-  z3::context& ctx_;
+  std::vector<z3::context*> contexts_;  // under mutex_
   Clock::time_point deadline_;
   std::function<void()> on_stuck_;
   Clock::duration grace_;

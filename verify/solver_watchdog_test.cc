@@ -56,6 +56,27 @@ TEST(SolverWatchdogTest, AQueryOfAnotherContextDoesNotInterruptTheWatchedOne) {
   EXPECT_NO_THROW(z3::expr(a + 0).simplify());  // not cancelled
 }
 
+// A run's second context (the claim tests' witnesses, verify/claim_test.h) ends at the run's
+// deadline too: it was not watched, and drt seed 38 spec 186 asked it for witnesses for 35 s
+// after a 10 s --timeout.
+TEST(SolverWatchdogTest, AContextWatchedAlsoIsInterruptedAtTheDeadline) {
+  z3::context watched, other;
+  z3::solver s(other);
+  z3::expr x = other.int_const("x"), y = other.int_const("y"), z = other.int_const("z");
+  s.add(x > 0 && y > 0 && z > 0 && x * x * x + y * y * y == z * z * z);
+  s.set("timeout", 5000u);  // unwatched, the query would end only here, not by an interrupt
+  SolverWatchdog watchdog(watched, SolverWatchdog::Clock::now() + std::chrono::milliseconds(200));
+  watchdog.watch_also(other);
+  {
+    QueryInFlight in_flight(other);
+    EXPECT_EQ(s.check(), z3::unknown);
+  }
+  EXPECT_TRUE(watchdog.fired());
+  EXPECT_NE(s.reason_unknown().find("interrupted"), std::string::npos) << s.reason_unknown();
+  z3::expr a = watched.int_const("a");
+  EXPECT_NO_THROW(z3::expr(a + 0).simplify());  // the idle context was not interrupted
+}
+
 // A query Z3 4.8.12 does not stop even when interrupted (found by tests/drt: the distance
 // between points built from an int field): the watchdog's last word, on_stuck, is called once the
 // grace is over. In a child process, as the thread inside Z3 cannot be ended; a Z3 that stops by

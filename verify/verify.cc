@@ -142,9 +142,10 @@ std::optional<VerifyReport> verify_within_deadline(const model::App& app,
   run_structural_checks(app, options.strict, structural);
 
   z3::context ctx;  // one per run: creating a context costs tens of milliseconds
+  ReplayData replay(app, options.list_bound, deadline);      // outlives the watchdog, which sees it
   SolverWatchdog watchdog(ctx, deadline, options.on_stuck);  // where Z3's timeout is not kept
+  replay.watched_by(watchdog);
   DataQuery data(app, ctx, options.list_bound, deadline);
-  ReplayData replay(app, options.list_bound, deadline);
   for (const PortScope& scope : scopes) {
     PortResult result;
     Clock::time_point port_start = Clock::now();
