@@ -83,7 +83,7 @@ def main(argv=None):
     print(f"drt: timeouts: {totals['timeouts']}; decisions outside the claims' premises: "
           f"{totals['outside']}; breaches by lists longer than a bounded verdict claims: "
           f"{totals['beyond_bound']}; deliveries not judged (NaN or infinity in the trace): "
-          f"{totals['unjudged']}; input values left out (no JSON form for NaN, infinities): "
+          f"{totals['unjudged']}; input values left out: "
           f"{totals['skipped']}")
     if kinds:
         print("drt: disagreements by claim: " + ", ".join(f"{k} {v}" for k, v in sorted(kinds.items())))

@@ -121,4 +121,4 @@ def write_inputs(path, msgs):
     with open(path, "w") as f:
         for m in msgs:
             f.write('{"t": %s, "port": %s, "value": %s}\n' % (
-                repr(float(m["t"])), json.dumps(m["port"]), json.dumps(m["value"], ensure_ascii=False)))
+                repr(float(m["t"])), json.dumps(m["port"]), json.dumps(to_json_deep(m["value"]), ensure_ascii=False)))

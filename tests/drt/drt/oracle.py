@@ -159,12 +159,12 @@ class Oracle:
             write_inputs(path, msgs)
             with open(path.replace(".jsonl", ".end"), "w") as f:
                 f.write(f"{end}\n")
-            self.run_one(app_dir, path, end, model, durations, claims, res)
+            self.run_one(app_dir, path, end, model, durations, claims, res, spec.port_type)
         res.skipped_values += gen.skipped
         self.replay(work, res)
         return res
 
-    def run_one(self, app_dir, inputs, end, model, durations, claims, res):
+    def run_one(self, app_dir, inputs, end, model, durations, claims, res, port_type):
         trace = inputs.replace(".jsonl", ".trace.jsonl")
         rc, out, err = self.arbc(["run", app_dir, "--no-verify", "--inputs", inputs, "--duration",
                                   f"{float(end) * 1000 + 1:.0f}ms", "--trace", trace])
@@ -175,7 +175,7 @@ class Oracle:
             res.timeouts += b.claim == "timeout"
             return
         with open(trace) as f:
-            run = Run(f.readlines(), model, durations)
+            run = Run(f.readlines(), model, durations, port_type)
         res.steps += sum(len(v) for v in run.publishes.values())
         for b in claims.judge(run, end, res):
             res.breaches.append((b, inputs))

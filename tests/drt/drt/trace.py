@@ -9,6 +9,26 @@ not the double sum the runtime records (0.2 + 0.1 is 0.30000000000000004 there).
 import json
 from decimal import Decimal
 
+from .spec import VEC3, is_float
+from .values import NONFINITE
+
+
+def from_trace(v, t):
+    """A value of type `t` as the trace writes it: numbers as Decimals, a float's NaN and
+    infinities as "nan", "inf", "-inf" (a string field's "inf" stays a string)."""
+    if t is None or v is None:
+        return to_float(v)
+    if is_float(t) or t == VEC3 and not isinstance(v, dict):
+        return NONFINITE[v] if isinstance(v, str) and v in NONFINITE else to_float(v)
+    if t == VEC3:
+        return {k: from_trace(x, ("float",)) for k, x in v.items()}
+    if t[0] == "list" and isinstance(v, list):
+        return [from_trace(x, t[1]) for x in v]
+    if t[0] == "record" and isinstance(v, dict):
+        fields = dict(t[1])
+        return {k: from_trace(x, fields.get(k)) for k, x in v.items()}
+    return to_float(v)
+
 
 def to_float(v):
     if isinstance(v, Decimal):
@@ -46,7 +66,8 @@ class Run:
     """Records in the order the runtime made them, each with an exact "t" (Decimal), and per
     decision (a `deliver` or `drop` record) the message it decided and the state it read."""
 
-    def __init__(self, lines, model, durations):
+    def __init__(self, lines, model, durations, port_type=lambda port: None):
+        self.port_type = port_type  # "M.p" -> its type (spec.py's tuples), for from_trace
         self.records = []
         for line in lines:
             if line.strip():
@@ -87,7 +108,8 @@ class Run:
         for i, rec in enumerate(self.records):
             kind = rec["type"]
             if kind == "publish":
-                self.publishes.setdefault(rec["port"], []).append(to_float(rec["value"]))
+                self.publishes.setdefault(rec["port"], []).append(
+                    from_trace(rec["value"], self.port_type(rec["port"])))
             elif kind == "publish-error":
                 # A value its port's type does not hold (300 on an int8): no publish record,
                 # a bad-type drop on each connection; a placeholder keeps the k-th decision of
@@ -107,7 +129,8 @@ class Run:
                     "index": i, "conn": conn.name, "port": port, "t": rec["t"],
                     "delivered": kind == "deliver", "reason": rec.get("reason"),
                     "detail": rec.get("detail"), "msg": (conn.source, k), "state": state,
-                    "value": to_float(rec.get("value")), "raw_value": rec.get("value")})
+                    "value": from_trace(rec.get("value"), self.port_type(port)),
+                    "raw_value": rec.get("value")})
 
     def message(self, msg):
         port, k = msg

@@ -15,19 +15,21 @@ from .spec import BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, is_sized
 
 INT64_MAX = 2**63 - 1
 INT64_MIN = -2**63
-# Floats the inputs file cannot carry today (JSON has no NaN or infinities; issue 39 item 4).
-UNWRITABLE = "NaN and infinities (the inputs file has no form for them yet)"
+# JSON has no NaN or infinities: the inputs file and the trace write them as the strings
+# "nan", "inf" and "-inf" where a float is expected (core/value_json.cc, core/json_text.cc).
+NONFINITE = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
 
 EDGE_INTS = [0, 1, -1, 2, 3, 5, 7, 10, 100, INT64_MAX, INT64_MIN, INT64_MAX - 1, INT64_MIN + 1,
              2**53 + 1, -(2**62)]
 EDGE_FLOATS = [0.0, -0.0, 0.5, 0.1, 0.2, 0.3, 1.0, 1.5, 2.0, -1.0, 0.3333333333333333, 1e308,
                -1e308, 5e-324, 1e-300, 0.49999999999999994, 0.7999999999999999, 3.75, 1e15 + 0.5,
-               math.nan, math.inf, -math.inf]  # drawn, then left out: see UNWRITABLE
+               math.nan, math.inf, -math.inf]  # written as NONFINITE's strings
 EDGE_STRINGS = ["", "a", "take", "é✓", "日本", 'a"b', "x\ny", "\\", "z" * 300, "idle", "e1"]
 FLT_MAX = 3.4028234663852886e38
 FLT_TRUE_MIN = 1.401298464324817e-45  # the least subnormal
 EDGE_F32 = [0.0, -0.0, 0.5, 1.0, -1.0, 1.5, FLT_MAX, -FLT_MAX, FLT_TRUE_MIN, -FLT_TRUE_MIN,
-            1.1754943508222875e-38, 0.10000000149011612, 0.3333333432674408, 16777216.0, -16777216.0]
+            1.1754943508222875e-38, 0.10000000149011612, 0.3333333432674408, 16777216.0, -16777216.0,
+            math.nan, math.inf, -math.inf]
 # Values a float32 does not hold (the runtime drops them as bad-type): they round, or overflow.
 BAD_F32 = [0.1, 16777217.0, 1e39, -1e39, 0.3333333333333333, 1e-46]
 
@@ -359,7 +361,9 @@ def literal(e):
 
 
 def to_json(v):
-    """A value as the inputs file writes it; None when it has no JSON form (NaN, infinities)."""
-    if isinstance(v, float) and (math.isnan(v) or math.isinf(v)):
-        return None
+    """A value as the inputs file writes it: NaN and infinities as their strings (NONFINITE)."""
+    if isinstance(v, float) and math.isnan(v):
+        return "nan"
+    if isinstance(v, float) and math.isinf(v):
+        return "inf" if v > 0 else "-inf"
     return v
