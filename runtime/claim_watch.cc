@@ -137,6 +137,9 @@ void ClaimWatch::observe(const TraceRecord& r) {
         for (size_t i : props->second) properties_[i]->before_event(r);
       box->second.apply(r), port = &box->first;
       delivered_->after(r, box->first);
+      if (r.op == "set")
+        for (Assumed& s : assumed_)
+          if (s.a->port == r.port && s.a->event == r.event) reported(s, r);
     }
   } else if (r.kind == TraceKind::Deliver ||
              (r.kind == TraceKind::Drop && r.reason != DropReason::Feed)) {  // feeds: no rule
@@ -200,24 +203,36 @@ void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::
 // port, as docs/language.md#environment-assumptions states them.
 void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                             const std::set<std::string>& state) {
+  if (state.count(s.a->event) > 0) present(s, port, r.t, "");
+  if (r.kind != TraceKind::Deliver) return;
+  if (r.connection == s.a->after) s.armed = true, s.last_after = r.t;
+  if (!s.a->until.empty() && r.connection == s.a->until) s.armed = false;
+}
+
+// The assumed event reported into its port (a feed set it): the assumption speaks of what the
+// environment reports, so a report while it forbids one breaks it even if no decision reads
+// the state before the event lapses (the proof constrains the state after every step too,
+// verify/temporal/assumption.cc): a response to the event is otherwise owed from a report the
+// proof ruled out (drt seed 12001 spec 118).
+void ClaimWatch::reported(Assumed& s, const TraceRecord& r) {
+  present(s, r.port, r.t, " (reported by " + r.owner + ")");
+}
+
+void ClaimWatch::present(Assumed& s, const std::string& port, Nanos t, const std::string& how) {
   const model::Assumption& a = *s.a;
-  bool present = state.count(a.event) > 0;
-  auto at = [&] { return " in " + port + " at " + duration_literal(r.t); };  // only to report
+  std::string at = " in " + port + " at " + duration_literal(t) + how;
   if (a.absent_for) {
-    if (present && s.last_after && r.t < later(*s.last_after, *a.absent_for))
-      violated(model::assumption_text(a), r.t,
-               a.event + " present" + at() + ", " + duration_literal(r.t - *s.last_after) +
-                   " after '" + a.after + "' delivered",
+    if (s.last_after && t < later(*s.last_after, *a.absent_for))
+      violated(model::assumption_text(a), t,
+               a.event + " present" + at + ", " + duration_literal(t - *s.last_after) + " after '" +
+                   a.after + "' delivered",
                true);
-  } else if (present && !s.armed) {
-    violated(model::assumption_text(a), r.t,
-             a.event + " present" + at() + " with no delivery of '" + a.after + "'" +
+  } else if (!s.armed) {
+    violated(model::assumption_text(a), t,
+             a.event + " present" + at + " with no delivery of '" + a.after + "'" +
                  (a.until.empty() ? "" : " since the last of '" + a.until + "'"),
              true);
   }
-  if (r.kind != TraceKind::Deliver) return;
-  if (r.connection == a.after) s.armed = true, s.last_after = r.t;
-  if (!a.until.empty() && r.connection == a.until) s.armed = false;
 }
 
 // `given M.p every D`: nothing from M.p for more than D (from the start) breaks it.

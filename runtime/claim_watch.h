@@ -8,7 +8,8 @@
 //   - the claims about delivered values: asserts over `emitted` and resources
 //     (runtime/delivery_watch.h), once load_claims() has read the claims script;
 //   - the assumptions the proofs rest on, at every decision of a rule, in the state of the
-//     rule's port: `exclusive` groups, `invariant`s, environment assumptions (`assume ...`),
+//     rule's port: `exclusive` groups, `invariant`s, environment assumptions (`assume ...`,
+//     also each time its event is reported into the port),
 //     and source rates (`given M.p every D`: the source published at least every D from the
 //     start).
 // Each claim or assumption is reported once, at the first instant a run breaks it: from there
@@ -109,6 +110,9 @@ class ClaimWatch {
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
+  void reported(Assumed& s, const TraceRecord& r);
+  // The assumed event present in `port` at `t`: a breach unless the assumption allows it.
+  void present(Assumed& s, const std::string& port, Nanos t, const std::string& how);
   void rate_gaps(Nanos t);
   void judge_end(Nanos end);
   void breach_lines(size_t from, Nanos t, Trace& trace) const;

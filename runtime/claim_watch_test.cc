@@ -199,5 +199,30 @@ TEST(ClaimWatchTest, InATestARateIsJudgedBetweenASourcesFirstAndLastMessages) {
   EXPECT_TRUE(quiet.violations().empty());
 }
 
+// `assume g only after a;` speaks of what the environment reports: a feed's report of g before
+// any delivery of `a` breaks it even if no rule decides while g is present (the proof rules the
+// report out, so a response to g owed from it would be reported as a broken claim instead: drt
+// seed 12001 spec 118). A report after a delivery of `a` keeps it.
+TEST(ClaimWatchTest, AnAssumedEventReportedBeforeItsRuleDeliveredBreaksTheAssumption) {
+  model::App a = two_sources();
+  model::Assumption assumed;
+  assumed.event = "g";
+  assumed.port = "D.q";
+  assumed.after = "a";
+  a.assumptions.push_back(assumed);
+  ClaimWatch w(a);
+  w.observe(set_event(0.1, "g"));
+  EXPECT_EQ(broken(w), std::vector<std::string>{
+                           "assume g only after a: g present in D.q at 100ms (reported by feed) "
+                           "with no delivery of 'a'"});
+  ClaimWatch kept(a);
+  kept.observe(set_event(0, "e"));
+  kept.observe(set_event(0, "f"));
+  kept.observe(decided(0.1, "a", true));
+  kept.observe(decided(0.1, "b", false));
+  kept.observe(set_event(0.2, "g"));
+  EXPECT_TRUE(kept.violations().empty()) << broken(kept)[0];
+}
+
 }  // namespace
 }  // namespace arbc
