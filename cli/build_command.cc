@@ -38,7 +38,8 @@ std::string target_list() { return join(codegen::target_names()); }
 // a bad option).
 std::optional<int> parse_args(std::span<char*> args, BuildRequest& a) {
   CLI::App cli{
-      "Compile a behaviour spec, prove that each arbitrated port selects at most one rule, and "
+      "Compile a behaviour spec, prove that each arbitrated port selects at most one rule (by "
+      "priority: that a rule's delivery holds every rule below it off for its hold), and "
       "write DIR/<app>/app.json and one Lua monitor per connection under DIR/<app>/monitors/\n"
       "(--target yarp: DIR/<app>/<app>.xml, ports.json and contexts/<app>/*.lua for YARP).\n"
       "Nothing is written when the proof fails (exit 1) or the spec has errors (exit 2).",

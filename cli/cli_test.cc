@@ -116,8 +116,14 @@ TEST(VerifyGate, ListBoundsGoToTheBoundedRulesOnly) {
   apply_list_bounds(gate, app);
   for (const model::Connection& c : app.connections)
     EXPECT_EQ(c.list_bound, c.name == "b" ? 4 : 0) << c.name;
-  EXPECT_EQ(verified_summary(1), "verified: 1 arbitrated port proved exclusive");
-  EXPECT_EQ(verified_summary(3), "verified: 3 arbitrated ports proved exclusive");
+  EXPECT_EQ(verified_summary(1, 0), "verified: 1 arbitrated port proved exclusive");
+  EXPECT_EQ(verified_summary(3, 0), "verified: 3 arbitrated ports proved exclusive");
+  EXPECT_EQ(verified_summary(3, 1),
+            "verified: 3 arbitrated ports proved exclusive; 1 arbitrated port by priority: a "
+            "rule's delivery holds every rule below it off for its hold");
+  EXPECT_EQ(verified_summary(0, 2),
+            "verified: 2 arbitrated ports by priority: a rule's delivery holds every rule below "
+            "it off for its hold");
 }
 
 TEST(BuildSummary, SaysWhereAndWhatWasWritten) {

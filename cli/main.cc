@@ -19,6 +19,7 @@ constexpr const char* kUsage =
     "  check  SPEC...                parse and semantic checks\n"
     "  verify [SPEC | APP.json | APP.xml]...\n"
     "                                prove that at most one rule per arbitrated port is selected\n"
+    "                                (by priority: a rule's delivery holds the rules below off)\n"
     "  build  SPEC [-o DIR]          verify, then write app.json and the Lua monitors\n"
     "  run    DIR|SPEC [options]     run the application on the embedded runtime\n"
     "  test   SPEC... [options]      run the specs' `test` declarations in simulated time\n"

@@ -122,7 +122,7 @@ int prove_app_dir(const model::App& app, const std::string& dir, bool built_from
   if (no_verify) {
     *proof = "not verified (--no-verify)";
   } else if (built_from_spec) {
-    *proof = verified_summary(app.arbitrated_ports.size());
+    *proof = verified_summary(app.arbitrated_ports);
   } else if (std::optional<std::string> recorded =
                  verify::recorded_proof(dir, app_json_bytes(dir))) {
     *proof = *recorded + " (by arbc build, for this very app.json)";

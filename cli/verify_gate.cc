@@ -12,10 +12,22 @@
 
 namespace arbc::cli {
 
-std::string verified_summary(size_t ports) {
-  return ports == 0 ? "verified: no arbitrated ports, nothing to prove"
-                    : "verified: " + count_of(ports, "arbitrated port", "arbitrated ports") +
-                          " proved exclusive";
+std::string verified_summary(size_t exclusive, size_t by_priority) {
+  if (exclusive + by_priority == 0) return "verified: no arbitrated ports, nothing to prove";
+  std::string line = "verified: ";
+  if (exclusive > 0)
+    line += count_of(exclusive, "arbitrated port", "arbitrated ports") + " proved exclusive";
+  if (by_priority == 0) return line;
+  if (exclusive > 0) line += "; ";
+  // The wording of verify's own line for such a port (verify/report_text.cc).
+  return line + count_of(by_priority, "arbitrated port", "arbitrated ports") +
+         " by priority: a rule's delivery holds every rule below it off for its hold";
+}
+
+std::string verified_summary(const std::vector<model::ArbitratedPort>& ports) {
+  size_t by_priority = 0;
+  for (const model::ArbitratedPort& p : ports) by_priority += p.by_priority ? 1 : 0;
+  return verified_summary(ports.size() - by_priority, by_priority);
 }
 
 VerifyGate verify_before_writing(const model::App& app, const std::string& input,
@@ -55,7 +67,7 @@ VerifyGate verify_before_writing(const model::App& app, const std::string& input
     return gate;
   }
   gate.pass = true;
-  gate.summary = verified_summary(report.ports.size());
+  gate.summary = verified_summary(app.arbitrated_ports);
   gate.bounded_rules = report.bounded_rules;
   gate.list_bound = report.list_bound;
   return gate;

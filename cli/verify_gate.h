@@ -34,8 +34,12 @@ VerifyGate verify_before_writing(
         "nothing was written (fix the spec, or build anyway with --no-verify)",
     const char* command = "arbc build");
 
-// "verified: 4 arbitrated ports proved exclusive": the summary of a passed gate for an app with
-// `ports` arbitrated ports.
-std::string verified_summary(size_t ports);
+// "verified: 3 arbitrated ports proved exclusive; 1 by priority: ...": the summary of a passed
+// gate. A `by priority` port is counted apart because exclusivity is not what holds there: two
+// messages at one instant can both be delivered from one event state (the higher rule has not
+// delivered yet), so its line states the property proved for it
+// (docs/design.md#priorities-and-holds).
+std::string verified_summary(size_t exclusive, size_t by_priority);
+std::string verified_summary(const std::vector<model::ArbitratedPort>& ports);
 
 }  // namespace arbc::cli
