@@ -278,14 +278,16 @@ def port_walk(run, port):
 
 def assumption_broken(run, port, a):
     """An environment assumption (docs/language.md#environment-assumptions), at every decision
-    into the port: `assume E only after R [until O]`: E present only if R delivered before and O
-    not since; `assume not E for D after R`: E not present at a decision less than D after a
-    delivery of R. The time of the first decision that breaks it, or None."""
+    into the port and every report of E into it: `assume E only after R [until O]`: E present
+    only if R delivered before and O not since; `assume not E for D after R`: E not present less
+    than D after a delivery of R. The time of the first decision or report that breaks it, or
+    None."""
     armed, last_after = False, None
     for rec, state, _ in port_walk(run, port):
-        if state is None:
-            continue
-        present = a["event"] in state
+        if state is None:  # an event record: a report of E sets it
+            present = rec.get("op") == "set" and rec.get("event") == a["event"]
+        else:
+            present = a["event"] in state
         if a.get("absent_for") is not None:
             if present and last_after is not None and \
                     rec["t"] - last_after < dec(a["absent_for"]):
