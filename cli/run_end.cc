@@ -124,10 +124,15 @@ void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
   if (!end.claims) return;
   end.claims->finish(end.runtime.now());
   const std::vector<ClaimViolation>& broken = end.claims->violations();
+  auto unwatched = [&] {  // what the spec assumes and no run can see: not counted kept
+    for (const std::string& u : end.claims->unwatched())
+      std::printf("runtime checks: not watched: %s\n", u.c_str());
+  };
   if (broken.empty()) {
     size_t n = end.claims->size();
     std::printf("runtime checks: %zu %s of the proof watched, none broken\n", n,
                 n == 1 ? "claim or assumption" : "claims and assumptions");
+    unwatched();
     return;
   }
   std::printf("runtime checks: %zu of %zu broken; the proof does not cover the run from %s%s:\n",
@@ -139,6 +144,7 @@ void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
     std::printf("  %s  %s: %s\n", duration_literal(v.t).c_str(), claim.c_str(), v.what.c_str());
     names.push_back(claim + " at " + duration_literal(v.t));
   }
+  unwatched();
   if (!end.claims_fail) return;
   *success = false;
   *verdict = "failure (runtime checks: " + join(names, "; ") + " broken" +

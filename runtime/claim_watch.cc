@@ -20,6 +20,36 @@ std::string state_text(const std::set<std::string>& state) {
   return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
 }
 
+// The events some connection into `port` can set into its container (feeds, monitors, delivery
+// and activity events); nullopt when a `script` rule may set any.
+std::optional<std::set<std::string>> fed_into(const model::App& app, const std::string& port) {
+  std::set<std::string> fed;
+  for (const model::Connection* c : app.connections_into(port)) {
+    if (c->opaque) return std::nullopt;
+    fed.insert(c->sets.begin(), c->sets.end());
+    fed.insert(c->must_set.begin(), c->must_set.end());
+    if (!c->activity_event.empty()) fed.insert(c->activity_event);
+  }
+  return fed;
+}
+
+// Past this many events of an invariant not fed into a port, it is not watched there: each
+// decision would try every value of them.
+constexpr size_t kMaxUnfed = 10;
+
+// Whether `f` holds in `state` for some presence of the `unfed` events (absent from `state`).
+bool holds_for_some(const Constraint& f, const std::set<std::string>& state,
+                    const std::vector<std::string>& unfed) {
+  if (evaluate(f, state)) return true;
+  for (uint32_t m = 1; m < (1u << unfed.size()); ++m) {
+    std::set<std::string> s = state;
+    for (size_t i = 0; i < unfed.size(); ++i)
+      if (m >> i & 1) s.insert(unfed[i]);
+    if (evaluate(f, s)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
@@ -33,8 +63,10 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
     read_here.insert(c.source);
     if (c.kind == model::ConnectionKind::Rule) rule_port_[c.name] = c.destination;
   }
+  std::set<std::string> mediated;
   for (const model::ArbitratedPort& p : app.arbitrated_ports)
-    if (here(p.port)) boxes_[p.port], decides_ = true;
+    if (here(p.port)) boxes_[p.port], decides_ = true, mediated.insert(p.port);
+  assumptions_over_events(app, mediated);
   for (const model::TemporalProperty& p : app.temporal) {
     if (!here(p.port)) continue;
     properties_of_port_[p.port].push_back(properties_.size());
@@ -67,16 +99,72 @@ bool ClaimWatch::load_claims(const std::string& app_dir, std::string* err) {
   return true;
 }
 
+// Where each `exclusive` group and `invariant` is watched. A port's proof reads the events its
+// rules and asserts read, closed under the groups and invariants that mention them, each free
+// (docs/design.md#the-proof); its container holds only the events fed into it, the others never
+// present. So an invariant is judged in a port fed some of its events, true when some value of
+// the others makes it true (what that port's proof assumed of the state); a group where two of
+// its events are fed. One fed into no port of the app is watched nowhere, and said to be (by a
+// process that decides something: one that mediates nothing says nothing).
+void ClaimWatch::assumptions_over_events(const model::App& app,
+                                         const std::set<std::string>& mediated) {
+  std::map<std::string, std::optional<std::set<std::string>>> fed;  // every arbitrated port's
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) fed[p.port] = fed_into(app, p.port);
+  auto count_fed = [](const std::optional<std::set<std::string>>& into,
+                      const std::set<std::string>& events, std::vector<std::string>* unfed) {
+    size_t n = 0;
+    for (const std::string& e : events)
+      if (!into || into->count(e))
+        ++n;
+      else if (unfed)
+        unfed->push_back(e);
+    return n;
+  };
+  auto why = [](const std::set<std::string>& events) {
+    return ": no port is fed " +
+           join(std::vector<std::string>(events.begin(), events.end()), ", ") +
+           " (no rule or assert reads them), so no proof rests on it and no run can see it broken";
+  };
+  for (const model::ExclusiveGroup& g : app.exclusive_groups) {
+    std::set<std::string> events(g.events.begin(), g.events.end());
+    bool anywhere = false, here = false;
+    for (const auto& [port, into] : fed) {
+      if (count_fed(into, events, nullptr) < 2) continue;
+      anywhere = true, here = here || mediated.count(port);
+    }
+    if (here) groups_watched_.push_back("assumption " + group_text(g));
+    if (!anywhere && decides_) unwatched_.push_back("assumption " + group_text(g) + why(events));
+  }
+  for (const model::Invariant& inv : app.invariants) {
+    std::set<std::string> events;
+    inv.formula.collect_events(events);
+    if (events.empty()) continue;  // `invariant true;`: nothing of a run to watch
+    bool anywhere = false, here = false;
+    for (const auto& [port, into] : fed) {
+      std::vector<std::string> unfed;
+      if (count_fed(into, events, &unfed) == 0 || unfed.size() > kMaxUnfed) continue;
+      anywhere = true;
+      if (!mediated.count(port)) continue;
+      here = true;
+      guards_[port].push_back({&inv, std::move(unfed)});
+    }
+    std::string text = "assumption invariant " + inv.formula.to_string();
+    if (here) invariants_watched_.push_back(text);
+    if (!anywhere && decides_) unwatched_.push_back(text + why(events));
+  }
+}
+
 void ClaimWatch::start(Nanos t) {
   start_ = t;
   for (Rate& rate : rates_) rate.last = std::max(rate.last, t);
 }
 
-bool ClaimWatch::empty() const { return size() == 0; }
+// An app whose only assumptions cannot be watched still has that to say.
+bool ClaimWatch::empty() const { return size() == 0 && unwatched_.empty(); }
 
 size_t ClaimWatch::size() const {
   return decisions_->size() + delivered_->watched().size() + properties_.size() + assumed_.size() +
-         rates_.size() + (decides_ ? app_.exclusive_groups.size() + app_.invariants.size() : 0);
+         rates_.size() + groups_watched_.size() + invariants_watched_.size();
 }
 
 std::vector<std::string> ClaimWatch::watched() const {
@@ -84,12 +172,8 @@ std::vector<std::string> ClaimWatch::watched() const {
   std::vector<std::string> delivered = delivered_->watched();
   out.insert(out.end(), delivered.begin(), delivered.end());
   out.insert(out.end(), property_text_.begin(), property_text_.end());
-  if (decides_) {
-    for (const model::ExclusiveGroup& g : app_.exclusive_groups)
-      out.push_back("assumption " + group_text(g));
-    for (const model::Invariant& inv : app_.invariants)
-      out.push_back("assumption invariant " + inv.formula.to_string());
-  }
+  out.insert(out.end(), groups_watched_.begin(), groups_watched_.end());
+  out.insert(out.end(), invariants_watched_.begin(), invariants_watched_.end());
   for (const Assumed& s : assumed_) out.push_back("assumption " + model::assumption_text(*s.a));
   for (const Rate& rate : rates_)
     out.push_back("assumption given " + rate.r->port + " every " +
@@ -177,8 +261,8 @@ void ClaimWatch::property_breached(size_t i) {
   violated(property_text_[i], b->t, b->what, false);
 }
 
-// The assumptions over the state of the port at a rule's decision: exclusive groups and
-// invariants (the proof reads every state as satisfying them).
+// The assumptions over the state of the port at a rule's decision: exclusive groups and the
+// invariants watched there (the proof reads every state as satisfying them).
 void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::string>& state) {
   for (const model::ExclusiveGroup& g : app_.exclusive_groups) {
     std::vector<std::string> both;
@@ -190,12 +274,18 @@ void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::
           join(both, ", ", " and ") + " present together in " + port + " at " + duration_literal(t),
           true);
   }
-  for (const model::Invariant& inv : app_.invariants) {
-    if (!evaluate(inv.formula, state))
-      violated("invariant " + inv.formula.to_string(), t,
-               "false in " + port + " at " + duration_literal(t) +
-                   " (events present: " + state_text(state) + ")",
-               true);
+  auto guards = guards_.find(port);
+  if (guards == guards_.end()) return;
+  for (const Guard& g : guards->second) {
+    if (holds_for_some(g.inv->formula, state, g.unfed)) continue;
+    violated("invariant " + g.inv->formula.to_string(), t,
+             "false in " + port + " at " + duration_literal(t) +
+                 " (events present: " + state_text(state) +
+                 (g.unfed.empty() ? ""
+                                  : "; whatever " + join(g.unfed, ", ", " and ") +
+                                        ", not fed into " + port + ", may be") +
+                 ")",
+             true);
   }
 }
 

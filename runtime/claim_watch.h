@@ -8,7 +8,9 @@
 //   - the claims about delivered values: asserts over `emitted` and resources
 //     (runtime/delivery_watch.h), once load_claims() has read the claims script;
 //   - the assumptions the proofs rest on, at every decision of a rule, in the state of the
-//     rule's port: `exclusive` groups, `invariant`s, environment assumptions (`assume ...`,
+//     rule's port: `exclusive` groups, `invariant`s (in the ports whose containers some of their
+//     events are fed into, as the proof of that port reads them: an event not fed there may be
+//     anything), environment assumptions (`assume ...`,
 //     also each time its event is reported into the port),
 //     and source rates (`given M.p every D`: the source published at least every D from the
 //     start).
@@ -71,6 +73,10 @@ class ClaimWatch {
   // (an assumption with "assumption " before it).
   size_t size() const;
   std::vector<std::string> watched() const;
+  // The `invariant`s and `exclusive` groups no run can watch, each with why: no port of the app
+  // is fed their events (no rule or assert reads them), so no container ever holds them and no
+  // proof rests on them. A run says so rather than count them kept.
+  const std::vector<std::string>& unwatched() const { return unwatched_; }
   // The run's time starts at `t` (after a transport's wait for peers): rates count from there.
   void start(Nanos t);
   void observe(const TraceRecord& r);
@@ -96,6 +102,12 @@ class ClaimWatch {
     bool armed = false;
     std::optional<Nanos> last_after;
   };
+  // An invariant watched in a port: the events of it that are fed into the port's container
+  // (the others are never present there, and the port's proof takes them as free).
+  struct Guard {
+    const model::Invariant* inv;
+    std::vector<std::string> unfed;
+  };
   struct Rate {
     const model::SourceRate* r;
     Nanos last{0};        // the start counts (start()): `given` says "from the start"
@@ -107,6 +119,7 @@ class ClaimWatch {
     bool window = false;  // Scope::test: not owed before the first message nor after the last
   };
 
+  void assumptions_over_events(const model::App& app, const std::set<std::string>& mediated);
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
                   const std::set<std::string>& state);
@@ -125,7 +138,10 @@ class ClaimWatch {
   std::optional<DecisionWatch> decisions_;    // exclusivity and asserts at each decision
   std::unique_ptr<DataClaims> data_claims_;   // load_claims()'s
   std::unique_ptr<DeliveryWatch> delivered_;  // asserts over data, resources
-  bool decides_ = false;  // some arbitrated port is mediated here: groups and invariants count
+  bool decides_ = false;                      // some arbitrated port is mediated here
+  std::vector<std::string> groups_watched_, invariants_watched_;  // here, as watched() names them
+  std::unordered_map<std::string, std::vector<Guard>> guards_;    // port -> invariants there
+  std::vector<std::string> unwatched_;
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;
   std::vector<bool> property_broken_;  // reported: that property is no longer observed

@@ -16,6 +16,7 @@ model::App app() {
   rule.name = "r";
   rule.source = "S.out";
   rule.destination = "D.q";
+  rule.sets = {"a", "b"};  // its monitor's: the group's events are in D.q's container
   a.connections.push_back(rule);
   model::ArbitratedPort port;
   port.port = "D.q";
@@ -222,6 +223,30 @@ TEST(ClaimWatchTest, AnAssumedEventReportedBeforeItsRuleDeliveredBreaksTheAssump
   kept.observe(decided(0.1, "b", false));
   kept.observe(set_event(0.2, "g"));
   EXPECT_TRUE(kept.violations().empty()) << broken(kept)[0];
+}
+
+// An invariant is judged in a port fed some of its events, the others free as the port's proof
+// reads them (D.q's container never holds x: `a or x` may hold by x, `a and not b` may not); one
+// over events fed into no port is watched nowhere, and said to be, not counted kept.
+TEST(ClaimWatchTest, AnInvariantIsJudgedWhereItsEventsAreFed) {
+  model::App a = app();
+  auto ref = [](const char* e) { return Constraint::event_ref(e); };
+  a.invariants.push_back({Constraint::disjunction({ref("a"), ref("x")}), {}});
+  a.invariants.push_back({Constraint::conjunction({ref("a"), Constraint::negate(ref("b"))}), {}});
+  a.invariants.push_back({Constraint::negate(Constraint::conjunction({ref("x"), ref("y")})), {}});
+  ClaimWatch w(a);
+  TraceRecord r = publish(0.1);
+  r.kind = TraceKind::Deliver, r.connection = "r", r.port = "D.q";
+  w.observe(r);  // no event present
+  EXPECT_EQ(broken(w), std::vector<std::string>{"invariant a and not b: false in D.q at 100ms "
+                                                "(events present: none)"});
+  EXPECT_EQ(w.size(), 4u);  // the rate, the group, the first two invariants
+  EXPECT_EQ(w.unwatched(), std::vector<std::string>{
+                               "assumption invariant not (x and y): no port is fed x, y (no rule "
+                               "or assert reads them), so no proof rests on it and no run can see "
+                               "it broken"});
+  ClaimWatch world(a, {ModuleSet::none(), ModuleSet::everything()});
+  EXPECT_TRUE(world.empty());  // decides nothing here: says nothing
 }
 
 }  // namespace
