@@ -68,8 +68,10 @@ struct PreparedSpec {
 // proves the app it tests: given beside that app's spec (or another of its tests files), its
 // errors and the proof's report would be printed again, and the proof run again.
 struct Seen {
-  std::set<std::string> diagnostics;    // rendered
-  std::map<std::string, int> verdicts;  // the app's spec file (canonical) -> the gate's exit
+  std::set<std::string> diagnostics;  // rendered
+  // The app's spec file (canonical) -> its proof's gate: whether it passed (else its exit), and
+  // the rules it holds for only up to the list bound.
+  std::map<std::string, VerifyGate> gates;
 };
 
 // The spec compiled, proved (unless no_verify) and written to a scratch directory, with the
@@ -83,24 +85,26 @@ int prepare_spec(const std::string& spec, bool no_verify, Seen* seen, Scratch* s
   }
   std::fputs(frontend::render_diagnostics(fresh, &compiled.sources).c_str(), stderr);
   if (!compiled.ok) return kExitBadInput;
-  const lower::LoweredApp& lowered = *compiled.lowered;
+  // A copy: the proof adds what the runtime must enforce of it (apply_list_bounds), as `arbc
+  // build` and `arbc run` do: a test's run drops a list longer than the proof covers (bad-value).
+  lower::LoweredApp lowered = *compiled.lowered;
   if (!no_verify) {
     std::error_code ec;
     std::string app_spec = fs::weakly_canonical(lowered.app.spec_file, ec).string();
     if (ec) app_spec = lowered.app.spec_file;
-    auto [verdict, first] = seen->verdicts.try_emplace(app_spec, kExitOk);
+    auto [gate, first] = seen->gates.try_emplace(app_spec);
     if (first) {
-      VerifyGate gate = verify_before_writing(
+      gate->second = verify_before_writing(
           lowered.app, spec, &compiled.sources, false,
           "no test was run (fix the spec, or run the tests anyway with --no-verify)", "arbc test");
-      if (!gate.pass) verdict->second = gate.exit_code;
-    } else if (verdict->second != kExitOk) {
+    } else if (!gate->second.pass) {
       std::fprintf(stderr,
                    "arbc test: %s: no test was run: it tests %s, whose proof failed above (fix "
                    "the spec, or run the tests anyway with --no-verify)\n",
                    spec.c_str(), lowered.app.spec_file.c_str());
     }
-    if (verdict->second != kExitOk) return verdict->second;
+    if (!gate->second.pass) return gate->second.exit_code;
+    apply_list_bounds(gate->second, lowered.app);
   }
   std::string pattern = (fs::temp_directory_path() / "arbc-test-XXXXXX").string();
   if (!mkdtemp(pattern.data())) {

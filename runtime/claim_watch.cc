@@ -320,7 +320,7 @@ void ClaimWatch::present(Assumed& s, const std::string& port, Nanos t, const std
   } else if (!s.armed) {
     violated(model::assumption_text(a), t,
              a.event + " present" + at + " with no delivery of '" + a.after + "'" +
-                 (a.until.empty() ? "" : " since the last of '" + a.until + "'"),
+                 (a.until.empty() || !s.last_after ? "" : " since the last of '" + a.until + "'"),
              true);
   }
 }
