@@ -53,6 +53,18 @@ std::string DataQuery::opaque_reason(const model::Connection& c) {
   return "";
 }
 
+const model::Connection& DataQuery::pass_through(const std::string& source) {
+  std::unique_ptr<model::Connection>& c = pass_through_[source];
+  if (!c) {
+    c = std::make_unique<model::Connection>();
+    c->name = "message";
+    c->source = source;
+    c->destination = source + "~";  // a name of its own for its constants, no port
+    c->body = model::Body{};        // accepts every message and delivers it as it came
+  }
+  return *c;
+}
+
 const SymValue& DataQuery::message(const std::string& source) {
   auto it = messages_.find(source);
   if (it != messages_.end()) return it->second;
@@ -271,8 +283,10 @@ Answer DataQuery::ask(const std::vector<DataSide>& sides, DataWitness* witness, 
   Answer a = check(assumptions);
   if (a == Answer::Unsat) {
     for (const DataSide& side : sides)
-      if (bounded(*side.connection, side.emitted_holds, side.negate))
-        bounded_rules_.insert(side.connection);
+      if (!pass_through_.count(side.connection->source) ||
+          pass_through_.at(side.connection->source).get() != side.connection)
+        if (bounded(*side.connection, side.emitted_holds, side.negate))
+          bounded_rules_.insert(side.connection);
   }
   if (a == Answer::Unsat && core) {
     core->accept_lines.assign(sides.size(), {});

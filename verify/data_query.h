@@ -65,6 +65,12 @@ class DataQuery {
   // Why `p` over what `c` delivers cannot be encoded ("" when it can, and c can).
   std::string predicate_opaque_reason(const model::Connection& c, const model::BodyExpr& p);
 
+  // A rule that accepts every message on `source` and delivers it unchanged, owned by the
+  // query: a side on it with a predicate asks about the message itself, as a feed's derived
+  // event reads it (verify/temporal/feed_outcomes.h). Never in bounded_rules(): it is no rule
+  // of the app, and its askers check bounded() themselves.
+  const model::Connection& pass_through(const std::string& source);
+
   // Sat: a witness; Unsat: the core. Every side must be encodable (opaque_reason empty).
   Answer ask(const std::vector<DataSide>& sides, DataWitness* witness, DataCore* core);
 
@@ -121,6 +127,7 @@ class DataQuery {
   std::map<std::string, int> tail_budget_;        // by source: scanning reads its lists still allow
   std::set<const model::Connection*> bounded_rules_;
   std::map<const model::Connection*, std::shared_ptr<Encoded>> rules_;
+  std::map<std::string, std::unique_ptr<model::Connection>> pass_through_;  // by source
   std::map<std::tuple<const model::Connection*, const model::BodyExpr*, bool>, z3::expr>
       predicates_;
   std::vector<AbstractLength> lengths_;      // norms still abstract (check)

@@ -58,6 +58,10 @@ golden ten_digit_duration.txt repo 2 tests/verify/ten_digit_duration.app.json
 # Durations a nanosecond apart (0.999999999s, 1.000000001s): violated at whole nanoseconds and
 # replayed; with the unrolling's times as reals this ran into the timeout and said unknown.
 golden temporal_ns_slow.txt repo 1 --temporal-bound 6 tests/verify/temporal_ns_slow.spec
+# Derived events of one source are decided by one message (issue 38 item 7): two that no value
+# makes both true are never both present, and a counterexample sets them only by messages.
+golden temporal_feed_exclusive.txt repo 0 tests/verify/temporal_feed_exclusive.spec
+golden temporal_feed_lasting.txt repo 1 tests/verify/temporal_feed_lasting.spec
 # Specs go through the compiler (front end + lowering).
 golden spec_proved.txt repo 0 specs/table_clean.spec specs/search_and_track.spec
 golden spec_refuted.txt repo 1 tests/verify/table_clean_take_mutant.spec

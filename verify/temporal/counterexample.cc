@@ -9,6 +9,7 @@
 #include "core/duration_literal.h"
 #include "core/join.h"
 #include "verify/claim_test.h"
+#include "verify/temporal/feed_outcomes.h"
 #include "verify/temporal/property.h"
 
 namespace arbc::verify::temporal {
@@ -16,83 +17,117 @@ namespace {
 
 class Builder {
  public:
-  Builder(const PortShape& shape, const Unrolling& u, const z3::model& m, DataQuery& data)
-      : shape_(shape), u_(u), m_(m), data_(data) {
-    for (const Entry& e : shape_.entries)
-      if (from_harness(e)) harness_[e.event] = false;
-  }
+  Builder(const PortShape& shape, const Unrolling& u, const z3::model& m, DataQuery& data,
+          int steps)
+      : shape_(shape), u_(u), m_(m), data_(data), steps_(steps) {}
 
-  // Appends step k; false (and why_not) when it cannot be replayed.
-  bool add(int k, const model::TemporalProperty& p) {
-    lapses_before(k);
-    const model::Connection& c = *shape_.connections[static_cast<size_t>(u_.connection(m_, k))];
-    if (c.kind == model::ConnectionKind::Feed) {
-      feed_step(k);
-      return true;
+  // Appends the message of step k and of the steps after it that it continues (the same
+  // source at the same instant, as the runtime hands one message to each connection from it);
+  // the number of steps it took, 0 (and why_not) when they cannot be replayed.
+  int add(int k, const model::TemporalProperty& p) {
+    int end = k + 1;
+    while (end < steps_ && continues(end)) ++end;
+    std::vector<DataSide> sides;
+    std::vector<int> accepted;  // steps whose rule accepts the message
+    status_.reset();
+    bool fed = false;
+    for (int j = k; j < end; ++j) {
+      const model::Connection& c = connection(j);
+      if (c.kind == model::ConnectionKind::Feed) {
+        if (!feed_sides(j, c, sides)) return 0;
+        fed = true;
+      } else if (!rule_sides(j, c, sides, accepted)) {
+        return 0;
+      }
     }
-    return rule_step(k, c, p);
+    if (status_ && !sides.empty()) {
+      why_not = "a status message of " + connection(k).source + " that must also decide events " +
+                "or be accepted by a rule";
+      return 0;
+    }
+    if (!fed && sides.empty()) return end - k;  // rejected messages that change nothing
+    if (fed && sides.empty() && !status_)
+      sides.push_back({&data_.pass_through(connection(k).source), nullptr});
+    const DataWitness* w = status_ ? nullptr : witness(sides);
+    if (!status_ && !w) return 0;
+    model::TestStep s;
+    s.t = u_.time_value(m_, k);
+    s.port = connection(k).source;
+    s.value = status_ ? *status_ : w->messages[0];
+    if (const model::Port* port = data_.app().find_port(s.port)) s.type = port->type;
+    test.steps.push_back(std::move(s));
+    for (int j : accepted) expect_delivery(j, p, *w);
+    return end - k;
   }
 
   model::TestCase test;
   std::string why_not;
 
  private:
-  // An entry the test gives with `set`/`unset`: a feed's, except the port's own delivery
-  // events, which the replayed deliveries set as the runtime does.
-  bool from_harness(const Entry& e) const {
-    return shape_.connections[static_cast<size_t>(e.owner)]->kind == model::ConnectionKind::Feed &&
-           !e.own_delivery();
+  const model::Connection& connection(int k) const {
+    return *shape_.connections[static_cast<size_t>(u_.connection(m_, k))];
   }
 
-  // Whether the feeds' entries make `event` present in state s at time t.
-  bool fed(const std::string& event, int s, Nanos t) const {
-    for (size_t q = 0; q < shape_.entries.size(); ++q) {
-      const Entry& e = shape_.entries[q];
-      if (e.event != event || !from_harness(e)) continue;
-      Unrolling::EntryValue v = u_.entry(m_, s, q);
-      if (v.has && (v.forever || t < v.expiry)) return true;
-    }
-    return false;
+  // Whether step k is handled by a connection of step k-1's source after it, at its instant.
+  bool continues(int k) const {
+    return connection(k).source == connection(k - 1).source &&
+           u_.connection(m_, k) > u_.connection(m_, k - 1) &&
+           u_.time_value(m_, k) == u_.time_value(m_, k - 1);
   }
 
-  void event_step(model::TestStep::Kind kind, Nanos t, const std::string& event) {
-    model::TestStep s;
-    s.kind = kind;
-    s.t = t;
-    s.event = event;
-    test.steps.push_back(std::move(s));
-  }
-
-  // Feed entries that lapsed between step k-1 and step k: unset when the last one expired,
-  // in time order (the harness's `set` lasts until unset).
-  void lapses_before(int k) {
-    Nanos t = u_.time_value(m_, k);
-    std::vector<std::pair<Nanos, std::string>> lapsed;
-    for (auto& [event, present] : harness_) {
-      if (!present || fed(event, k, t)) continue;
-      Nanos last{0};
-      for (size_t q = 0; q < shape_.entries.size(); ++q) {
-        const Entry& e = shape_.entries[q];
-        Unrolling::EntryValue v = u_.entry(m_, k, q);
-        if (e.event == event && from_harness(e) && v.has && !v.forever)
-          last = std::max(last, v.expiry);
+  // A feed's step: a message of its source that sets the events the step sets and removes
+  // those it removes (a derived event kept with `for D`: its predicate is false), so the
+  // runtime's own feed makes the container what the trace says, never the test directly.
+  bool feed_sides(int k, const model::Connection& feed, std::vector<DataSide>& sides) {
+    TraceStep step = u_.trace_step(m_, k);
+    auto in = [](const std::vector<std::string>& v, const std::string& e) {
+      return std::find(v.begin(), v.end(), e) != v.end();
+    };
+    const model::Connection& message = data_.pass_through(feed.source);
+    ValueList flags;
+    for (const Entry& e : shape_.entries) {
+      if (shape_.connections[static_cast<size_t>(e.owner)] != &feed) continue;
+      const model::Event* event = data_.app().find_event(e.event);
+      bool set = in(step.set, e.event), unset = in(step.unset, e.event);
+      if (event && event->predicate) {
+        if (set || unset || (e.by_message && e.lifetime))
+          sides.push_back({&message, &*event->predicate, !set});
+      } else if (event && !event->source.empty()) {
+        if (set) flags.push_back(Value(status_flag(*event)));
+        status_ = Value(flags);
+      } else {
+        why_not = "'" + e.event + "' is not set by a message of " + feed.source;
+        return false;
       }
-      lapsed.emplace_back(last, event);
-      present = false;
     }
-    std::sort(lapsed.begin(), lapsed.end());
-    for (const auto& [at, event] : lapsed) event_step(model::TestStep::Kind::Unset, at, event);
+    return true;
   }
 
-  // A feed's step: the events whose presence it changed, set or unset by the test.
-  void feed_step(int k) {
-    Nanos t = u_.time_value(m_, k);
-    for (auto& [event, present] : harness_) {
-      bool now = fed(event, k + 1, t);
-      if (now == present) continue;
-      event_step(now ? model::TestStep::Kind::Set : model::TestStep::Kind::Unset, t, event);
-      present = now;
+  // A rule's step: a message it accepts, with what its delivery does to the port's own delivery
+  // events; a rejected message must change nothing.
+  bool rule_sides(int k, const model::Connection& c, std::vector<DataSide>& sides,
+                  std::vector<int>& accepted) {
+    int owner = u_.connection(m_, k);
+    if (!u_.accepted(m_, k)) {
+      for (size_t q = 0; q < shape_.entries.size(); ++q) {
+        if (shape_.entries[q].owner == owner && u_.changes(m_, k, q)) {
+          why_not = "a message '" + c.name + "' rejects but that changes its events";
+          return false;
+        }
+      }
+      return true;
     }
+    std::string opaque = data_.opaque_reason(c);
+    if (!opaque.empty()) {
+      why_not = "'" + c.name + "' is opaque for data (" + opaque + ")";
+      return false;
+    }
+    rule_side_.emplace_back(k, sides.size());
+    sides.push_back({&c, nullptr});
+    std::vector<DataSide> own = own_delivery_sides(k, c);
+    sides.insert(sides.end(), own.begin(), own.end());
+    accepted.push_back(k);
+    return true;
   }
 
   // What step k's delivery does to the own delivery events the rule does not decide alone: a
@@ -113,88 +148,83 @@ class Builder {
     return sides;
   }
 
-  // A witness that `c` accepts with `extra` (what its delivery must do to events), once per
-  // rule and extra.
-  const DataWitness* witness(const model::Connection& c, const std::vector<DataSide>& extra) {
-    std::string key = c.destination + "/" + c.name;
-    for (const DataSide& s : extra)
-      key += "|" + std::to_string(reinterpret_cast<uintptr_t>(s.emitted_holds)) +
-             (s.negate ? "-" : "+");
+  // A message for `sides` (the accepting rules first, what their deliveries and the feeds must
+  // do after them), asked once per question. When no message does what the deliveries' own
+  // events say (a predicate that is not exact), any message the rules accept with the feeds'
+  // outcomes, and the replay judges the trace; no message for a feed's outcomes: no replay.
+  const DataWitness* witness(const std::vector<DataSide>& sides) {
+    std::string key;
+    for (const DataSide& s : sides)
+      key += std::to_string(reinterpret_cast<uintptr_t>(s.connection)) + "/" +
+             std::to_string(reinterpret_cast<uintptr_t>(s.emitted_holds)) + (s.negate ? "-" : "+") +
+             "|";
     auto found = witnesses_.find(key);
     if (found != witnesses_.end()) return &found->second;
-    std::string opaque = data_.opaque_reason(c);
-    if (!opaque.empty()) {
-      why_not = "'" + c.name + "' is opaque for data (" + opaque + ")";
-      return nullptr;
-    }
     DataWitness w;
-    std::vector<DataSide> sides{{&c, nullptr}};
-    sides.insert(sides.end(), extra.begin(), extra.end());
     Answer a = data_.ask(sides, &w, nullptr);
-    // No value does what the trace says (it kept an event the feed's Lua may fail to change, or
-    // the predicates are not exact): any accepted message, and the replay judges the trace.
-    if (a == Answer::Unsat && !extra.empty()) {
-      w = DataWitness{};
-      a = data_.ask({{&c, nullptr}}, &w, nullptr);
+    if (a == Answer::Unsat) {
+      std::vector<DataSide> loose;
+      for (const DataSide& s : sides)
+        if (s.connection->kind != model::ConnectionKind::Rule || !s.emitted_holds ||
+            s.connection == &data_.pass_through(s.connection->source))
+          loose.push_back(s);
+      if (loose.size() < sides.size()) {
+        w = DataWitness{};
+        a = data_.ask(loose, &w, nullptr);
+      }
     }
     if (a != Answer::Sat) {
+      // One rule alone: say which; else what the message had to do.
+      const model::Connection& first = *sides[0].connection;
+      bool one_rule = &first != &data_.pass_through(first.source) &&
+                      std::all_of(sides.begin(), sides.end(),
+                                  [&](const DataSide& s) { return s.connection == &first; });
+      std::string what = one_rule ? "'" + first.name + "'" : "a message of " + first.source;
       why_not = a == Answer::Unsat
-                    ? "'" + c.name + "' accepts no message"
-                    : "no message found for '" + c.name + "' (" + data_.unknown_reason() + ")";
+                    ? (one_rule ? what + " accepts no message"
+                                : "no message of " + first.source + " does what the trace says")
+                    : "no message found for " + what + " (" + data_.unknown_reason() + ")";
       return nullptr;
     }
-    if (!w.assumed_state[0].empty()) {
-      why_not = "'" + c.name + "' accepts only with monitor state " + join(w.assumed_state[0]);
+    for (size_t i = 0; i < w.assumed_state.size(); ++i) {
+      if (w.assumed_state[i].empty()) continue;
+      why_not = "'" + sides[i].connection->name + "' accepts only with monitor state " +
+                join(w.assumed_state[i]);
       return nullptr;
     }
     return &witnesses_.emplace(key, std::move(w)).first->second;
   }
 
-  // A rule's step: a message it accepts; a rejected message that changes nothing is left out.
-  bool rule_step(int k, const model::Connection& c, const model::TemporalProperty& p) {
-    int owner = u_.connection(m_, k);
-    if (!u_.accepted(m_, k)) {
-      for (size_t q = 0; q < shape_.entries.size(); ++q) {
-        if (shape_.entries[q].owner == owner && u_.changes(m_, k, q)) {
-          why_not = "a message '" + c.name + "' rejects but that changes its events";
-          return false;
-        }
-      }
-      return true;
-    }
-    const DataWitness* w = witness(c, own_delivery_sides(k, c));
-    if (!w) return false;
-    Nanos t = u_.time_value(m_, k);
-    model::TestStep s;
-    s.t = t;
-    s.port = c.source;
-    s.value = w->messages[0];
-    if (const model::Port* port = data_.app().find_port(c.source)) s.type = port->type;
-    test.steps.push_back(std::move(s));
-    // The deliveries the property is about (for a property over two rules, both rules') as
-    // expectations.
+  // The delivery of step k as an expectation when the property is about its rule (for a
+  // property over two rules, both rules').
+  void expect_delivery(int k, const model::TemporalProperty& p, const DataWitness& w) {
+    const model::Connection& c = connection(k);
+    size_t side = 0;
+    for (const auto& [step, at] : rule_side_)
+      if (step == k) side = at;
     bool named = c.name == p.rule || p.kind == model::TemporalProperty::Kind::Stability ||
                  (!p.other.empty() && c.name == p.other);
-    if (named && u_.trace_step(m_, k).delivered) {
-      model::Expectation e;
-      e.port = c.destination;
-      e.value = w->emitted[0];
-      e.from = e.to = t;
-      e.connection = c.name;  // the rule that delivered it; a `receives` ignores it
-      e.text = c.destination + " receives " +
-               spec_value_text(w->emitted[0], port_type_of(data_.app(), c.destination)) + " at " +
-               duration_literal(t);
-      test.expectations.push_back(std::move(e));
-    }
-    return true;
+    if (!named || !u_.trace_step(m_, k).delivered) return;
+    Nanos t = u_.time_value(m_, k);
+    model::Expectation e;
+    e.port = c.destination;
+    e.value = w.emitted[side];
+    e.from = e.to = t;
+    e.connection = c.name;  // the rule that delivered it; a `receives` ignores it
+    e.text = c.destination + " receives " +
+             spec_value_text(w.emitted[side], port_type_of(data_.app(), c.destination)) + " at " +
+             duration_literal(t);
+    test.expectations.push_back(std::move(e));
   }
 
   const PortShape& shape_;
   const Unrolling& u_;
   const z3::model& m_;
   DataQuery& data_;
-  std::map<std::string, bool> harness_;  // per event the feeds set: present in the test's entry
-  std::map<std::string, DataWitness> witnesses_;  // by rule and what its delivery must do
+  int steps_;
+  std::optional<Value> status_;  // the status list of the message being built, if it is one
+  std::vector<std::pair<int, size_t>> rule_side_;  // per accepting rule step: its side's index
+  std::map<std::string, DataWitness> witnesses_;   // by question
 };
 
 }  // namespace
@@ -203,13 +233,15 @@ std::optional<model::TestCase> counterexample_test(const PortShape& shape, const
                                                    const z3::model& m, int steps,
                                                    const model::TemporalProperty& p,
                                                    DataQuery& data, std::string* why_not) {
-  Builder b(shape, u, m, data);
+  Builder b(shape, u, m, data, steps);
   b.test.name = "counterexample: " + property_words(p);
-  for (int k = 0; k < steps; ++k) {
-    if (!b.add(k, p)) {
+  for (int k = 0; k < steps;) {
+    int taken = b.add(k, p);
+    if (taken == 0) {
       *why_not = b.why_not;
       return std::nullopt;
     }
+    k += taken;
   }
   return std::move(b.test);
 }
@@ -220,8 +252,8 @@ std::string test_file_text(const model::TestCase& replay, const model::TemporalP
       replay, property_words(p), spec_path,
       "// A counterexample `arbc verify` found and replayed on the runtime, kept as a regression\n"
       "// test: it expects the property itself over these inputs, so `arbc test --no-verify FILE`\n"
-      "// fails on that app and passes once it is fixed. Events the app's feeds set are given\n"
-      "// directly (`set`/`unset`).\n");
+      "// fails on that app and passes once it is fixed. The app's feeds set their events from\n"
+      "// the messages of their sources, as they would in a run.\n");
 }
 
 }  // namespace arbc::verify::temporal

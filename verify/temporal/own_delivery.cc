@@ -218,7 +218,9 @@ void Unrolling::add_excluded_outcomes(int k) {
   for (const PortShape::ExcludedOutcome& x : shape_.excluded_outcomes) {
     z3::expr pattern = ctx_.bool_val(true);
     for (const auto& [q, set] : x.sets) pattern = pattern && set_[k][q] == ctx_.bool_val(set);
-    solver_.add(z3::implies(del_[k][static_cast<size_t>(x.rule)], !pattern));
+    // A feed's combination at each of its messages; a delivery's at each delivery.
+    z3::expr when = x.feed ? run_[k] == x.rule : del_[k][static_cast<size_t>(x.rule)];
+    solver_.add(z3::implies(when, !pattern));
   }
 }
 

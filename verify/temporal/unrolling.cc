@@ -5,6 +5,7 @@
 #include <set>
 
 #include "verify/temporal/constraint_expr.h"
+#include "verify/temporal/feed_outcomes.h"
 #include "verify/temporal/own_delivery.h"
 
 namespace arbc::verify::temporal {
@@ -94,6 +95,7 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
         shape.entries.push_back(entry_of(app, c, e, static_cast<int>(owner)));
   }
   add_own_deliveries(app, shape, data);
+  add_feed_outcomes(app, shape, data);
   shape.events.assign(events.begin(), events.end());
   if (!add_port_assumptions(app, shape, err)) return std::nullopt;
   return shape;
@@ -120,6 +122,7 @@ void Unrolling::start_state() {
     forever_[0].push_back(ctx_.bool_val(false));
     expiry_[0].push_back(ctx_.int_val(0));
   }
+  if (start_ == Start::AnyState) constrain_feeds_at_start();
 }
 
 // Step k: its time, connection and accept outcome; the entries it changes; the deliveries.
@@ -189,6 +192,9 @@ void Unrolling::add_entry_step(size_t q, int k) {
   solver_.add(!(set && unset));
   if (must_set && !must_unset) solver_.add(z3::implies(running && acc_[k], set));
   if (must_unset && !must_set) solver_.add(z3::implies(running && acc_[k], unset));
+  // Each message of the source sets it or (without `for D` on a derived event) removes it.
+  if (e.by_message)
+    solver_.add(z3::implies(running, e.predicate && e.lifetime ? !unset : set || unset));
   add_entry_update(q, k);
 }
 

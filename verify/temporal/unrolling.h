@@ -42,7 +42,13 @@ struct Entry {
   // connection (as PortShape::connections), what its delivery can do; empty for any other
   // entry. The owner is the event's feed, which takes no step of its own.
   std::vector<DeliveryOutcome> on_delivery;
-  const model::BodyExpr* predicate = nullptr;  // the event's, over the delivered value
+  // The event's predicate: over the delivered value (own delivery), or over its source's
+  // message (a derived event of a feed; verify/temporal/feed_outcomes.h).
+  const model::BodyExpr* predicate = nullptr;
+  // A feed entry each message of its source decides (verify/temporal/feed_outcomes.h): set when
+  // the predicate holds (a status flag: the flag is in the list), else removed, or kept as it
+  // was for a derived event with `for D`. False: the feed sets and removes it freely.
+  bool by_message = false;
   bool own_delivery() const { return !on_delivery.empty(); }
 };
 
@@ -68,11 +74,18 @@ struct PortShape {
   bool faithful = false;
   // A combination of own delivery events that no delivery of `rule` gives: those `sets` says
   // set, the others not (verify/temporal/own_delivery.cc).
+  // With `feed`, `rule` is a feed and the combination is one that no message of its source
+  // gives (verify/temporal/feed_outcomes.h): excluded at each step the feed runs.
   struct ExcludedOutcome {
     int rule = -1;
     std::vector<std::pair<size_t, bool>> sets;  // entry index, set by the delivery
+    bool feed = false;
   };
   std::vector<ExcludedOutcome> excluded_outcomes;
+  // Presence of a feed's entries without a lifetime that no state has: the last message of
+  // the source set exactly those whose predicate held, and no message any none (k-induction's
+  // any state; verify/temporal/feed_outcomes.h).
+  std::vector<ExcludedOutcome> excluded_at_start;
 };
 
 // The port's shape; nullopt and *err when `port` is not an arbitrated port of `app`. `data`
@@ -170,6 +183,7 @@ class Unrolling {
   void constrain_any_start();          // what any state says of times before t_1 (induction.cc)
   void add_assumptions(int k);         // the environment at step k (assumption.cc)
   void add_faithful(int k);            // PortShape::faithful's constraints at step k (faithful.cc)
+  void constrain_feeds_at_start();     // PortShape::excluded_at_start (feed_outcomes.cc)
 
   const PortShape& shape_;
   z3::context& ctx_;
