@@ -3,6 +3,7 @@
 // times resolved. `arbc test` runs these on the embedded runtime in simulated time.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,11 +48,16 @@ struct Expectation {
     Assert
   };
   Kind kind = Kind::Receives;
-  std::string port;  // Receives, Nothing: "Module.port", an in-port; Exclusive, Assert: arbitrated
-  std::optional<Value> value;                // Receives: none means any value
-  std::string connection;                    // Drops, Delivers, DeliversNothing: the rule
-  std::string reason;                        // Drops: empty means any reason
-  Constraint state;                          // State
+  // Receives, Nothing: "Module.port", an in-port; Exclusive, Assert: arbitrated; State: the
+  // port of `in M.p`, empty for the bare form.
+  std::string port;
+  std::optional<Value> value;  // Receives: none means any value
+  std::string connection;      // Drops, Delivers, DeliversNothing: the rule
+  std::string reason;          // Drops: empty means any reason
+  Constraint state;            // State
+  // State: for each event of `state`, the arbitrated port whose container it is read in (each
+  // port holds its own events: core/event_facts.h). Set by lowering, for every event.
+  std::map<std::string, std::string> containers;
   std::optional<TemporalProperty> property;  // Property (none: sema reported its port)
   std::optional<Assertion> assertion;        // Assert
   // The window, both ends included; without one, the whole test.

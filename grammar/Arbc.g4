@@ -102,7 +102,9 @@ testStep
   // (runtime/decision_watch.h): the port's exclusivity, or an assert over events.
   | 'expect' 'exclusive' portRef ';'                                     # expectExclusive
   | 'expect' assertDecl                                                  # expectAssert
-  | 'expect' expr testWindow ';'                                         # expectState
+  // An event state at an instant, read in the container of the port after `in` (each
+  // arbitrated port holds its own events: docs/design.md#feeds).
+  | 'expect' expr ('in' portRef)? testWindow ';'                        # expectState
   ;
 testWindow : 'at' duration | 'within' duration '..' duration ;
 

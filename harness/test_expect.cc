@@ -130,27 +130,45 @@ std::string check_property(const model::Expectation& e, const TestRun& run) {
   return b ? "but " + b->what : "";
 }
 
-// The events present at t in any container (after the messages of that instant), read off the
-// run report's timelines, which are in seconds (exact for instants under 2^22 s).
-std::set<std::string> present_at(const TestRun& run, Nanos instant) {
+// The (port, event) pairs present at t, each in its port's container (after the messages of
+// that instant), read off the run report's timelines, which are in seconds (exact for instants
+// under 2^22 s).
+std::set<std::pair<std::string, std::string>> present_at(const TestRun& run, Nanos instant) {
   double t = seconds_of(instant);
   report::RunTimeline timeline =
       report::build_run_timeline({}, run.records, std::numeric_limits<double>::infinity());
-  std::set<std::string> out;
+  std::set<std::pair<std::string, std::string>> out;
   for (const report::EventLane& lane : timeline.events) {
     for (const report::Interval& i : lane.present) {
-      if (i.begin <= t && t < i.end) out.insert(lane.event);
+      if (i.begin <= t && t < i.end) out.insert({lane.port, lane.event});
     }
   }
   return out;
 }
 
+// Each event is read in the container lowering chose for it (Expectation::containers): the
+// same name in another port's container is another fact, and reading "any container" made an
+// expectation pass that the port's own rules never saw (issue 38).
 std::string check_state(const model::Expectation& e, const TestRun& run) {
-  std::set<std::string> present = present_at(run, e.from);
-  if (evaluate(e.state, present)) return "";
-  std::string list;
-  for (const std::string& name : present) list += (list.empty() ? "" : ", ") + name;
-  return "but the events present at " + seconds(e.from) + " are: " + (list.empty() ? "none" : list);
+  std::set<std::pair<std::string, std::string>> present = present_at(run, e.from);
+  std::set<std::string> read;
+  for (const auto& [event, port] : e.containers)
+    if (present.count({port, event})) read.insert(event);
+  if (evaluate(e.state, read)) return "";
+  std::string out = "but at " + seconds(e.from);
+  for (const auto& [event, port] : e.containers) {
+    out += (&event == &e.containers.begin()->first ? " " : "; ") + event + " is " +
+           (read.count(event) ? "present in " : "absent from ") + port + "'s container";
+    std::vector<std::string> elsewhere;
+    for (const auto& [p, ev] : present)
+      if (ev == event && p != port) elsewhere.push_back(p);
+    if (!elsewhere.empty() && !read.count(event)) {
+      out += " (present in the container of ";
+      for (const std::string& p : elsewhere) out += (&p == &elsewhere.front() ? "" : ", ") + p;
+      out += ", another fact)";
+    }
+  }
+  return out;
 }
 
 std::string describe(const TraceRecord& r) {

@@ -205,7 +205,8 @@ class Builder {
       if (x.rule_decl)  // Drops, Delivers, DeliversNothing
         ix_.add_occurrence(rule_key(x.rule_decl), name_loc(x.rule_loc, x.rule));
       if (x.kind == ast::TestExpect::Kind::Receives || x.kind == ast::TestExpect::Kind::Nothing ||
-          x.kind == ast::TestExpect::Kind::Exclusive)
+          x.kind == ast::TestExpect::Kind::Exclusive ||
+          (x.kind == ast::TestExpect::Kind::State && !x.port.module.empty()))  // `in M.p`
         port_ref(x.port);
       if (x.property) temporal(*x.property);
       if (x.assertion) assertion(*x.assertion);  // `expect assert M.p: RULE -> EXPR;`

@@ -426,12 +426,12 @@ struct TestExpect {
     Delivers,         // `expect RULE delivers [window];`
     DeliversNothing,  // `expect RULE delivers nothing [window];`
     Property,         // `expect never two take within 1s;` (any property over time): the whole run
-    State,            // `expect CONSTRAINT at D;`
+    State,            // `expect CONSTRAINT [in M.p] at D;`
     Exclusive,        // `expect exclusive M.p;`: no two rules of the port selected at once
     Assert,           // `expect assert M.p: RULE -> EXPR;`: EXPR holds at each delivery of RULE
   };
   Kind kind = Kind::Receives;
-  PortRef port;      // Receives, Nothing, Exclusive
+  PortRef port;      // Receives, Nothing, Exclusive; State: `in M.p` (empty module: none)
   ExprPtr value;     // Receives: null means any value; State: the constraint
   std::string rule;  // Drops, Delivers, DeliversNothing
   Loc rule_loc;

@@ -397,6 +397,7 @@ TestExpect Builder::test_expect(ArbcParser::TestStepContext* step) {
   } else if (auto* c = as<ArbcParser::ExpectStateContext>(step)) {
     e.kind = TestExpect::Kind::State;
     e.value = expr(c->expr(), 0);
+    if (c->portRef()) e.port = port_ref(c->portRef());
     window = c->testWindow();
   }
   if (window) {

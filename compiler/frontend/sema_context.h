@@ -162,6 +162,7 @@ class Sema {
   void check_test_step(const ast::TestDecl& t, ast::TestStep& s);
   void check_test_expect(const ast::TestDecl& t, ast::TestExpect& e);
   void check_test_claim(const ast::TestDecl& t, ast::TestExpect& e);
+  void check_test_state(const ast::TestDecl& t, ast::TestExpect& e);
   void report_expects_nothing(const ast::TestDecl& t);
   void check_reason_possible(const ast::Rule& rule, const ast::TestExpect& e);
   // `at D` or `within A..B` (A <= B); `instant_only` for event states.

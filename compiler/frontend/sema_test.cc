@@ -222,6 +222,32 @@ void Sema::check_test_claim(const TestDecl& t, TestExpect& e) {
   }
 }
 
+// `expect CONSTRAINT [in M.p] at D;`. M.p must own a container: an arbitrated port, and in a
+// test `on RULE` the rule's own, the only one that runs. Which container a bare form reads is
+// decided after lowering, where the feeds are known (compiler/lower/test_containers.h).
+void Sema::check_test_state(const TestDecl& t, TestExpect& e) {
+  e.constraint = check_constraint(*e.value, "an expectation", false);
+  if (!e.window.present) {
+    error(e.loc, "an event state is checked at a time: add `at D`", diag::TestWindow);
+  }
+  if (e.port.module.empty() || !resolve_port(e.port, "destination", "an event state")) return;
+  const ArbitrateDecl* a = nullptr;
+  for (const ArbitrateDecl& d : spec_.arbitrations)
+    if (d.port.qualified() == e.port.qualified()) a = &d;
+  if (!a) {
+    error(e.port.loc,
+          e.port.qualified() +
+              " has no `arbitrate` block, so no event container: events live in the containers "
+              "of arbitrated ports (docs/design.md#feeds)",
+          diag::NotArbitrated);
+  } else if (t.on_rule && a != t.on_rule->port) {
+    error(e.port.loc,
+          "test \"" + t.name + "\" runs rule '" + t.on + "' alone: only the container of " +
+              t.on_rule->port->port.qualified() + " is there",
+          diag::TestPort);
+  }
+}
+
 void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
   switch (e.kind) {
     case TestExpect::Kind::Receives:
@@ -269,10 +295,7 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       check_test_claim(t, e);
       break;
     case TestExpect::Kind::State:
-      e.constraint = check_constraint(*e.value, "an expectation", false);
-      if (!e.window.present) {
-        error(e.loc, "an event state is checked at a time: add `at D`", diag::TestWindow);
-      }
+      check_test_state(t, e);
       break;
   }
   check_test_window(e.window, e.kind == TestExpect::Kind::State);

@@ -11,6 +11,7 @@
 #include "compiler/lower/lower_body.h"
 #include "compiler/lower/temporal.h"
 #include "compiler/lower/test_cases.h"
+#include "compiler/lower/test_containers.h"
 #include "core/check_ids.h"
 #include "core/effective_guard.h"
 
@@ -392,6 +393,7 @@ LowerResult lower_spec(std::shared_ptr<const ast::Spec> spec, const LowerOptions
   auto lowered = std::make_shared<LoweredApp>();
   Lowerer(*spec, options, *lowered, result.diagnostics).run();
   lowered->tests = lower_tests(*spec);
+  resolve_test_containers(lowered->app, lowered->tests, result.diagnostics);
   result.ok = true;
   for (const Diagnostic& d : result.diagnostics)
     if (d.severity == Severity::Error) result.ok = false;

@@ -72,6 +72,7 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
     case ast::TestExpect::Kind::State:
       out.kind = model::Expectation::Kind::State;
       out.state = e.constraint;
+      if (!e.port.module.empty()) out.port = e.port.qualified();
       break;
     case ast::TestExpect::Kind::Exclusive:
       out.kind = model::Expectation::Kind::Exclusive;
