@@ -252,7 +252,7 @@ void note_memory(const model::App& app, const RunOptions& options) {
 // mediator's memory (--state).
 // `stop`: not null, the run to end at the first breach (set once the runtime exists).
 void watch_claims(ClaimWatch& claims, RunOptions& options, Runtime** stop) {
-  options.trace_watch = [&claims, stop](const TraceRecord& r, Trace& trace) {
+  options.trace_watch = [&claims, stop](const TraceLine& r, Trace& trace) {
     size_t before = claims.violations().size();
     claims.watch(r, trace);
     if (stop && *stop && before == 0 && !claims.violations().empty())

@@ -158,7 +158,7 @@ bool run_test_trace(const model::App& app, const std::string& app_dir, const mod
   ClaimWatch claims(run_app, {.test = true});
   if (watch && !claims.load_claims(app_dir, err)) return false;
   if (watch && !claims.empty()) {
-    options.trace_watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+    options.trace_watch = [&claims](const TraceLine& r, Trace& trace) { claims.watch(r, trace); };
     options.on_start = [&claims](Nanos t) { claims.start(t); };
   }
   std::unique_ptr<Runtime> rt = Runtime::create(run_app, app_dir, options, err, registry);

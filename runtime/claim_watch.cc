@@ -66,6 +66,7 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
   std::set<std::string> mediated;
   for (const model::ArbitratedPort& p : app.arbitrated_ports)
     if (here(p.port)) boxes_[p.port], decides_ = true, mediated.insert(p.port);
+  for (auto& [port, box] : boxes_) box_of_port_[port] = &box;
   assumptions_over_events(app, mediated);
   for (const model::TemporalProperty& p : app.temporal) {
     if (!here(p.port)) continue;
@@ -186,7 +187,7 @@ void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, b
   violations_.push_back({t, claim, std::move(what), assumption});
 }
 
-void ClaimWatch::watch(const TraceRecord& r, Trace& trace) {
+void ClaimWatch::watch(const TraceLine& r, Trace& trace) {
   size_t known = violations_.size();
   observe(r);
   breach_lines(known, r.t, trace);
@@ -202,7 +203,7 @@ void ClaimWatch::breach_lines(size_t from, Nanos t, Trace& trace) const {
   }
 }
 
-void ClaimWatch::observe(const TraceRecord& r) {
+void ClaimWatch::observe(const TraceLine& r) {
   rate_gaps(r.t);
   delivered_->before(r);
   const std::string* port = nullptr;  // the arbitrated port the record is about, if any
@@ -215,11 +216,11 @@ void ClaimWatch::observe(const TraceRecord& r) {
       rate.last = r.t, rate.awaiting_first = false;
     }
   } else if (r.kind == TraceKind::Event) {
-    auto box = boxes_.find(r.port);
-    if (box != boxes_.end()) {
+    auto box = box_of_port_.find(r.port);
+    if (box != box_of_port_.end()) {
       if (auto props = properties_of_port_.find(r.port); props != properties_of_port_.end())
         for (size_t i : props->second) properties_[i]->before_event(r);
-      box->second.apply(r), port = &box->first;
+      box->second->apply(r), port = &box->first;
       delivered_->after(r, box->first);
       if (r.op == "set")
         for (Assumed& s : assumed_)
@@ -248,7 +249,7 @@ void ClaimWatch::observe(const TraceRecord& r) {
   }
 }
 
-void ClaimWatch::delivered(const TraceRecord& r, const std::string& port) {
+void ClaimWatch::delivered(const TraceLine& r, const std::string& port) {
   std::vector<DeliveryWatch::Breach> breaches;
   delivered_->delivered(r, port, &breaches);
   for (DeliveryWatch::Breach& b : breaches) violated(b.claim, r.t, std::move(b.what), false);
@@ -291,7 +292,7 @@ void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::
 
 // `assume E only after A [until U]` and `assume not E for D after A`, at each decision into the
 // port, as docs/language.md#environment-assumptions states them.
-void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceRecord& r,
+void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceLine& r,
                             const std::set<std::string>& state) {
   if (state.count(s.a->event) > 0) present(s, port, r.t, "");
   if (r.kind != TraceKind::Deliver) return;
@@ -304,13 +305,13 @@ void ClaimWatch::assumption(Assumed& s, const std::string& port, const TraceReco
 // the state before the event lapses (the proof constrains the state after every step too,
 // verify/temporal/assumption.cc): a response to the event is otherwise owed from a report the
 // proof ruled out (drt seed 12001 spec 118).
-void ClaimWatch::reported(Assumed& s, const TraceRecord& r) {
-  present(s, r.port, r.t, " (reported by " + r.owner + ")");
+void ClaimWatch::reported(Assumed& s, const TraceLine& r) {
+  present(s, r.port, r.t, " (reported by " + std::string(r.owner) + ")");
 }
 
-void ClaimWatch::present(Assumed& s, const std::string& port, Nanos t, const std::string& how) {
+void ClaimWatch::present(Assumed& s, std::string_view port, Nanos t, const std::string& how) {
   const model::Assumption& a = *s.a;
-  std::string at = " in " + port + " at " + duration_literal(t) + how;
+  std::string at = " in " + std::string(port) + " at " + duration_literal(t) + how;
   if (a.absent_for) {
     if (s.last_after && t < later(*s.last_after, *a.absent_for))
       violated(model::assumption_text(a), t,

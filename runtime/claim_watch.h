@@ -33,9 +33,11 @@
 #include "runtime/data_claims.h"
 #include "runtime/decision_watch.h"
 #include "runtime/delivery_watch.h"
+#include "runtime/name_map.h"
 #include "runtime/property_watch.h"
 #include "runtime/trace.h"
 #include "runtime/trace_container.h"
+#include "runtime/trace_format.h"
 #include "runtime/trace_record.h"
 #include "runtime/transport.h"
 
@@ -79,9 +81,10 @@ class ClaimWatch {
   const std::vector<std::string>& unwatched() const { return unwatched_; }
   // The run's time starts at `t` (after a transport's wait for peers): rates count from there.
   void start(Nanos t);
-  void observe(const TraceRecord& r);
+  void observe(const TraceLine& r);
+  void observe(const TraceRecord& r) { observe(trace_line_of(r)); }
   // observe(r), and a breach line in `trace` for each claim r showed broken (Trace::Watch).
-  void watch(const TraceRecord& r, Trace& trace);
+  void watch(const TraceLine& r, Trace& trace);
   // The run ended at `end` (response windows and rates up to there are judged); once: a second
   // call changes nothing. With `trace`, a breach line for each claim only the end showed broken.
   void finish(Nanos end, Trace* trace = nullptr);
@@ -121,17 +124,17 @@ class ClaimWatch {
 
   void assumptions_over_events(const model::App& app, const std::set<std::string>& mediated);
   void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
-  void assumption(Assumed& s, const std::string& port, const TraceRecord& r,
+  void assumption(Assumed& s, const std::string& port, const TraceLine& r,
                   const std::set<std::string>& state);
-  void reported(Assumed& s, const TraceRecord& r);
+  void reported(Assumed& s, const TraceLine& r);
   // The assumed event present in `port` at `t`: a breach unless the assumption allows it.
-  void present(Assumed& s, const std::string& port, Nanos t, const std::string& how);
+  void present(Assumed& s, std::string_view port, Nanos t, const std::string& how);
   void rate_gaps(Nanos t);
   void judge_end(Nanos end);
   void breach_lines(size_t from, Nanos t, Trace& trace) const;
   void rate_broken(Rate& rate, Nanos deadline, Nanos t);
   void property_breached(size_t i);
-  void delivered(const TraceRecord& r, const std::string& port);
+  void delivered(const TraceLine& r, const std::string& port);
   void violated(const std::string& claim, Nanos t, std::string what, bool assumption);
 
   const model::App& app_;
@@ -145,12 +148,13 @@ class ClaimWatch {
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;
   std::vector<bool> property_broken_;  // reported: that property is no longer observed
-  std::unordered_map<std::string, std::vector<size_t>> properties_of_port_;  // port -> its own
+  NameMap<std::vector<size_t>> properties_of_port_;  // port -> its own
   std::vector<Assumed> assumed_;
   std::vector<Rate> rates_;
   // Looked up on every record: hashed.
-  std::unordered_map<std::string, std::string> rule_port_;  // rule -> its arbitrated port
-  std::unordered_map<std::string, TraceContainer> boxes_;   // arbitrated port -> its container
+  NameMap<std::string> rule_port_;                         // rule -> its arbitrated port
+  std::unordered_map<std::string, TraceContainer> boxes_;  // arbitrated port -> its container
+  NameMap<TraceContainer*> box_of_port_;                   // the same, found by a record's port
   std::set<std::string> reported_;
   std::vector<ClaimViolation> violations_;
   nlohmann::json loaded_;  // load()'s, until resume()

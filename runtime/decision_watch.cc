@@ -61,7 +61,7 @@ std::string DecisionWatch::exclusivity_claim(const model::ArbitratedPort& p) {
   return p.port + ": rules " + join(p.rules, ", ") + " are never selected together";
 }
 
-void DecisionWatch::decision(const TraceRecord& r, const std::set<std::string>& state) {
+void DecisionWatch::decision(const TraceLine& r, const std::set<std::string>& state) {
   auto it = rule_index_.find(r.connection);
   if (it == rule_index_.end()) return;
   Rule& c = rules_[it->second];

@@ -23,7 +23,8 @@
 
 #include "core/app_model.h"
 #include "core/instant.h"
-#include "runtime/trace_record.h"
+#include "runtime/name_map.h"
+#include "runtime/trace_format.h"
 
 namespace arbc {
 
@@ -41,7 +42,10 @@ class DecisionWatch {
   // A port's exclusivity as breaches name it (an assert: model::assertion_text).
   static std::string exclusivity_claim(const model::ArbitratedPort& p);
   // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
-  void decision(const TraceRecord& r, const std::set<std::string>& state);
+  void decision(const TraceLine& r, const std::set<std::string>& state);
+  void decision(const TraceRecord& r, const std::set<std::string>& state) {
+    decision(trace_line_of(r), state);
+  }
 
  private:
   struct Rule {
@@ -59,7 +63,7 @@ class DecisionWatch {
   };
   void delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state);
   std::vector<Rule> rules_;
-  std::unordered_map<std::string, size_t> rule_index_;       // rule name -> rules_
+  NameMap<size_t> rule_index_;                               // rule name -> rules_
   std::unordered_map<std::string, std::string> port_claim_;  // port -> its claim's text
   std::set<std::string> ports_;
   std::vector<Assert> asserts_;

@@ -60,19 +60,21 @@ std::vector<std::string> DeliveryWatch::watched() const {
 
 // The records right after a delivery at its instant are its effects (its delivery events, a
 // `by priority` activity event): the state the delivery left is known at the first other one.
-void DeliveryWatch::before(const TraceRecord& r) {
+void DeliveryWatch::before(const TraceLine& r) {
   for (Watched& w : resources_)
     if (w.last && !w.last->settled && !(r.kind == TraceKind::Event && r.t == w.last->t))
       settle(w, w.last->t);
-  if (r.kind == TraceKind::Event && watches_port(r.port)) was_present_ = present(r, r.port);
+  if (r.kind != TraceKind::Event) return;
+  auto port = resource_ports_.find(r.port);
+  if (port != resource_ports_.end()) was_present_ = present(r, *port);
 }
 
-bool DeliveryWatch::present(const TraceRecord& r, const std::string& port) const {
+bool DeliveryWatch::present(const TraceLine& r, const std::string& port) const {
   auto it = boxes_.find(port);
   return it != boxes_.end() && it->second.present_at(r.event, r.t);
 }
 
-void DeliveryWatch::after(const TraceRecord& r, const std::string& port) {
+void DeliveryWatch::after(const TraceLine& r, const std::string& port) {
   if (r.kind != TraceKind::Event || !watches_port(port)) return;
   if (present(r, port) == was_present_) return;  // a refresh, or an expiry's late record
   for (Watched& w : resources_)
@@ -104,7 +106,7 @@ bool DeliveryWatch::uses(const Watched& w, const Value* v) {
   return claims_->evaluate(*w.uses, *v, &why) == DataClaims::Outcome::Holds;
 }
 
-void DeliveryWatch::delivered(const TraceRecord& r, const std::string& port,
+void DeliveryWatch::delivered(const TraceLine& r, const std::string& port,
                               std::vector<Breach>* out) {
   // Texts only for a breach: this runs on every delivery (bench/figures/runtime_checks.sh).
   auto at = [&] { return " into " + port + " at " + duration_literal(r.t); };
@@ -121,13 +123,14 @@ void DeliveryWatch::delivered(const TraceRecord& r, const std::string& port,
     if (std::find(w.r->ports.begin(), w.r->ports.end(), port) == w.r->ports.end()) continue;
     if (!uses(w, r.value)) continue;
     if (w.last && w.last->port != port && same_state(w, r.t))
-      out->push_back(
-          {"resource " + w.r->name,
-           "'" + w.last->rule + "' into " + w.last->port + " at " + duration_literal(w.last->t) +
-               " and '" + r.connection + "'" + at() + " both delivered a command that uses it (" +
-               value_text(w.last->value ? &*w.last->value : nullptr) + ", " + value_text(r.value) +
-               ") in one event state, which no event of its " + "ports changed in between"});
-    w.last = Use{port, r.connection, std::nullopt, r.t, false, 0, {}};
+      out->push_back({"resource " + w.r->name,
+                      "'" + w.last->rule + "' into " + w.last->port + " at " +
+                          duration_literal(w.last->t) + " and '" + std::string(r.connection) + "'" +
+                          at() + " both delivered a command that uses it (" +
+                          value_text(w.last->value ? &*w.last->value : nullptr) + ", " +
+                          value_text(r.value) + ") in one event state, which no event of its " +
+                          "ports changed in between"});
+    w.last = Use{port, std::string(r.connection), std::nullopt, r.t, false, 0, {}};
     if (r.value) w.last->value = *r.value;
   }
 }

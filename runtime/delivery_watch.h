@@ -21,7 +21,7 @@
 #include "core/app_model.h"
 #include "runtime/data_claims.h"
 #include "runtime/trace_container.h"
-#include "runtime/trace_record.h"
+#include "runtime/trace_format.h"
 
 namespace arbc {
 
@@ -39,11 +39,14 @@ class DeliveryWatch {
   std::vector<std::string> watched() const;
   // Whether a record about `port`'s events may change what the resources see: call before()
   // and after() around applying it.
-  bool watches_port(const std::string& port) const { return resource_ports_.count(port) > 0; }
-  void before(const TraceRecord& r);
-  void after(const TraceRecord& r, const std::string& port);
+  bool watches_port(std::string_view port) const { return resource_ports_.count(port) > 0; }
+  void before(const TraceLine& r);
+  void after(const TraceLine& r, const std::string& port);
   // A delivery of `rule` into its arbitrated port `port`: what it broke, into *out.
-  void delivered(const TraceRecord& r, const std::string& port, std::vector<Breach>* out);
+  void delivered(const TraceLine& r, const std::string& port, std::vector<Breach>* out);
+  void delivered(const TraceRecord& r, const std::string& port, std::vector<Breach>* out) {
+    delivered(trace_line_of(r), port, out);
+  }
 
  private:
   struct Assert {
@@ -73,8 +76,8 @@ class DeliveryWatch {
   const std::unordered_map<std::string, TraceContainer>& boxes_;
   std::vector<Assert> asserts_;
   std::vector<Watched> resources_;
-  std::set<std::string> resource_ports_;
-  bool present(const TraceRecord& r, const std::string& port) const;  // r's event, in port
+  std::set<std::string, std::less<>> resource_ports_;
+  bool present(const TraceLine& r, const std::string& port) const;  // r's event, in port
   bool was_present_ = false;  // before(): the record's event, before it
 };
 

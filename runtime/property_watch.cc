@@ -23,9 +23,9 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
 
 PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules,
                              const TraceContainer* shared)
-    : p_(std::move(p)), rules_(std::move(port_rules)), shared_(shared) {}
+    : p_(std::move(p)), rules_(port_rules.begin(), port_rules.end()), shared_(shared) {}
 
-void PropertyWatch::before_event(const TraceRecord& r) {
+void PropertyWatch::before_event(const TraceLine& r) {
   if (p_.kind == Kind::Response && !p_.event.empty() && r.event == p_.event)
     was_present_ = box().present_at(p_.event, r.t);
 }
@@ -34,7 +34,7 @@ void PropertyWatch::broken(Nanos from, Nanos t, std::string what) {
   if (!breach_) breach_ = PropertyBreach{from, t, std::move(what)};
 }
 
-void PropertyWatch::observe(const TraceRecord& r) {
+void PropertyWatch::observe(const TraceLine& r) {
   if (breach_) return;
   if (r.kind == TraceKind::Event && r.port == p_.port) {
     container(r);
@@ -45,7 +45,7 @@ void PropertyWatch::observe(const TraceRecord& r) {
 }
 
 // An event record of the port; for a response triggered by an event, its becoming present.
-void PropertyWatch::container(const TraceRecord& r) {
+void PropertyWatch::container(const TraceLine& r) {
   if (!shared_) before_event(r), own_.apply(r);
   if (p_.kind != Kind::Response || p_.event.empty() || r.event != p_.event) return;
   close_windows_before(r.t);
@@ -53,7 +53,7 @@ void PropertyWatch::container(const TraceRecord& r) {
     pending_.push_back({r.t, later(r.t, p_.window)});
 }
 
-void PropertyWatch::decision(const TraceRecord& r) {
+void PropertyWatch::decision(const TraceLine& r) {
   if (p_.kind == Kind::Response) {
     close_windows_before(r.t);
     if (breach_) return;
@@ -66,26 +66,27 @@ void PropertyWatch::decision(const TraceRecord& r) {
 }
 
 // Spacing, absence, precedence and stability read the port's deliveries.
-void PropertyWatch::delivery(const TraceRecord& r) {
-  const std::string& who = r.connection;
+void PropertyWatch::delivery(const TraceLine& r) {
+  std::string_view who = r.connection;
+  auto named = [&] { return "'" + std::string(who) + "'"; };  // in a breach's text
   Nanos t = r.t;
   if (p_.kind == Kind::Spacing && who == p_.rule) {
     const std::string& before = p_.other.empty() ? p_.rule : p_.other;
     auto it = last_.find(before);
     if (it != last_.end() && t < later(it->second, p_.window)) {
       broken(it->second, t,
-             p_.other.empty() ? "'" + who + "' delivered at " + at(it->second) + " and at " + at(t)
-                              : "'" + who + "' delivered at " + at(t) + ", '" + before + "' at " +
-                                    at(it->second));
+             p_.other.empty()
+                 ? named() + " delivered at " + at(it->second) + " and at " + at(t)
+                 : named() + " delivered at " + at(t) + ", '" + before + "' at " + at(it->second));
     }
   }
   if (p_.kind == Kind::Absence && who == p_.rule && box().present(t).count(p_.event))
-    broken(t, t, "'" + who + "' delivered at " + at(t) + " with " + p_.event + " present");
+    broken(t, t, named() + " delivered at " + at(t) + " with " + p_.event + " present");
   if (p_.kind == Kind::Precedence && who == p_.other) armed_ = true;
   if (p_.kind == Kind::Precedence && who == p_.rule) {
     if (!armed_)
       broken(t, t,
-             "'" + who + "' delivered at " + at(t) + " with no delivery of '" + p_.other +
+             named() + " delivered at " + at(t) + " with no delivery of '" + p_.other +
                  "' since its last");
     armed_ = false;
   }
@@ -95,15 +96,19 @@ void PropertyWatch::delivery(const TraceRecord& r) {
              "the deliverer switched at " + at(*last_switch_) + " and at " + at(t));
     last_switch_ = t;
   }
-  last_rule_ = who;
-  last_[who] = t;
+  // Assigned only when they change: this runs on every delivery (no string copy then).
+  if (!last_rule_ || *last_rule_ != who) last_rule_ = std::string(who);
+  if (auto it = last_.find(who); it != last_.end())
+    it->second = t;
+  else
+    last_.emplace(who, t);
 }
 
 // A decision in a pending trigger's window: a delivery of the rule (of any rule of the port,
 // when the port answers) answers it; with `stops`, OTHER delivering again releases it; so does
 // the `while` condition false at a decision of the rule.
-void PropertyWatch::respond(const TraceRecord& r, const std::set<std::string>& state) {
-  const std::string& who = r.connection;
+void PropertyWatch::respond(const TraceLine& r, const std::set<std::string>& state) {
+  std::string_view who = r.connection;
   bool deliver = r.kind == TraceKind::Deliver;
   if (p_.stops && deliver && who == p_.other) {
     pending_.clear();

@@ -20,6 +20,7 @@
 #include "core/app_model.h"
 #include "core/instant.h"
 #include "runtime/trace_container.h"
+#include "runtime/trace_format.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
@@ -41,10 +42,11 @@ class PropertyWatch {
                 const TraceContainer* shared = nullptr);
 
   // With a shared container: an event record of the port, before the caller applies it.
-  void before_event(const TraceRecord& r);
+  void before_event(const TraceLine& r);
 
   // One record of the run, in order. Once broken, later records change nothing.
-  void observe(const TraceRecord& r);
+  void observe(const TraceLine& r);
+  void observe(const TraceRecord& r) { observe(trace_line_of(r)); }
   // The run was observed up to `end`: a response trigger whose window closed by then and got no
   // answer breaks the property; one whose window ends later is not judged.
   void finish(Nanos end);
@@ -66,22 +68,22 @@ class PropertyWatch {
     Nanos horizon;
   };
 
-  void container(const TraceRecord& r);
-  void decision(const TraceRecord& r);
-  void delivery(const TraceRecord& r);
-  void respond(const TraceRecord& r, const std::set<std::string>& state);
+  void container(const TraceLine& r);
+  void decision(const TraceLine& r);
+  void delivery(const TraceLine& r);
+  void respond(const TraceLine& r, const std::set<std::string>& state);
   void close_windows_before(Nanos t);
   void broken(Nanos from, Nanos t, std::string what);
 
   model::TemporalProperty p_;
-  std::set<std::string> rules_;
+  std::set<std::string, std::less<>> rules_;  // found by the records' string_views
   const TraceContainer& box() const { return shared_ ? *shared_ : own_; }
   TraceContainer own_;  // the port's container, unless shared
   const TraceContainer* shared_ = nullptr;
-  bool was_present_ = false;              // before_event(): a response's event, before it
-  std::map<std::string, Nanos> last_;     // rule -> its last delivery
-  bool armed_ = false;                    // precedence
-  std::optional<std::string> last_rule_;  // stability
+  bool was_present_ = false;                        // before_event(): a response's event, before it
+  std::map<std::string, Nanos, std::less<>> last_;  // rule -> its last delivery
+  bool armed_ = false;                              // precedence
+  std::optional<std::string> last_rule_;            // stability
   std::optional<Nanos> last_switch_;
   std::vector<Trigger> pending_;  // response triggers not yet answered
   std::optional<PropertyBreach> breach_;

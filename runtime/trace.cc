@@ -35,10 +35,7 @@ void Trace::emit(const TraceLine& line) {
   // A feed's drop says only that the feed consumed its message (its event records say what it
   // did), and feeds are most of the records: the watch does without them.
   if (line.kind == TraceKind::Drop && line.reason == DropReason::Feed) return;
-  // The watch reads the record and keeps nothing of it: one record, its strings' storage reused
-  // from line to line (the runtime checks' cost is measured in bench/figures/runtime_checks.sh).
-  fill_trace_record(line, &watched_);
-  watch_(watched_, *this);
+  watch_(line, *this);
 }
 
 void Trace::publish(Nanos t, std::string_view port, const Value& v) {

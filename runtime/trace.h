@@ -28,8 +28,11 @@ class Trace {
   // The caller keeps *records alive while the trace is written.
   void record_to(std::vector<TraceRecord>* records) { records_ = records; }
   // Also gives every record but a feed's drop, once written, to `watch` (the runtime checks,
-  // runtime/claim_watch.h), which may write breach lines in turn; empty: stop.
-  using Watch = std::function<void(const TraceRecord&, Trace&)>;
+  // runtime/claim_watch.h), which may write breach lines in turn; empty: stop. The watch sees
+  // the line itself, its fields valid only during the call: it runs on every message, and
+  // copying the fields into a TraceRecord cost more than the checks' own work
+  // (bench/figures/runtime_checks.sh).
+  using Watch = std::function<void(const TraceLine&, Trace&)>;
   void watch_with(Watch watch) { watch_ = std::move(watch); }
   bool enabled() const { return file_ != nullptr || records_ != nullptr || watch_ != nullptr; }
 
@@ -60,7 +63,6 @@ class Trace {
   std::FILE* file_ = nullptr;
   std::vector<TraceRecord>* records_ = nullptr;
   Watch watch_;
-  TraceRecord watched_;  // what watch_ is given, refilled in place
   std::string line_;
 };
 

@@ -2,7 +2,7 @@
 
 namespace arbc {
 
-void TraceContainer::apply(const TraceRecord& r) {
+void TraceContainer::apply(const TraceLine& r) {
   if (r.op == "set") {
     auto event = entries_.find(r.event);
     if (event == entries_.end()) event = entries_.emplace(r.event, Owners{}).first;
@@ -13,7 +13,10 @@ void TraceContainer::apply(const TraceRecord& r) {
       owner->second = r.expiry;
   } else if (r.op == "unset") {
     auto event = entries_.find(r.event);
-    if (event != entries_.end()) event->second.erase(r.owner);
+    if (event == entries_.end()) return;
+    auto owner = event->second.find(r.owner);
+    if (owner == event->second.end()) return;
+    event->second.erase(owner);
   } else {
     return;  // "expire" changes nothing: the expiry instant already did
   }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/instant.h"
+#include "runtime/trace_format.h"
 #include "runtime/trace_record.h"
 
 namespace arbc {
@@ -18,7 +19,8 @@ class TraceContainer {
  public:
   // An event record ("set", "unset"; an "expire" record comes late, when the runtime next reads
   // the container, so presence is judged by the expiry instants themselves).
-  void apply(const TraceRecord& r);
+  void apply(const TraceLine& r);
+  void apply(const TraceRecord& r) { apply(trace_line_of(r)); }
   // The events present at t; valid until the next apply() or present() call.
   const std::set<std::string>& present(Nanos t) const;
   // Whether `event` alone is present at t (no set built: cheap on every record).

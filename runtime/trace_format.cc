@@ -210,6 +210,14 @@ TraceRecord to_trace_record(const TraceLine& line) {
   return r;
 }
 
+TraceLine trace_line_of(const TraceRecord& r) {
+  TraceLine l{r.t, r.kind};
+  l.connection = r.connection, l.port = r.port, l.op = r.op, l.event = r.event;
+  l.owner = r.owner, l.text = r.text, l.callback = r.callback;
+  l.reason = r.reason, l.expiry = r.expiry, l.count = r.count, l.value = r.value;
+  return l;
+}
+
 bool read_trace_line(const nlohmann::json& j, TraceRecord* record, nlohmann::json* value) {
   if (!j.is_object() || !j.contains("t") || !j["t"].is_number()) return false;
   auto type = j.find("type");

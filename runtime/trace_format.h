@@ -39,6 +39,9 @@ void append_trace_line(std::string& out, const TraceLine& line);
 
 // The line as a record (what --report and --diff keep in memory).
 TraceRecord to_trace_record(const TraceLine& line);
+// A record seen as a line (its fields viewed, not copied; valid while `r` lives): what the
+// runtime checks read, from the runtime (Trace::Watch) or from records kept in memory.
+TraceLine trace_line_of(const TraceRecord& r);
 // The same into *r, reusing its strings' storage.
 void fill_trace_record(const TraceLine& line, TraceRecord* r);
 

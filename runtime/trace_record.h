@@ -43,8 +43,9 @@ struct TraceRecord {
   std::string text;      // Drop: detail; Error, Quarantine, Log, PluginError: message
   std::string callback;  // PluginError: the callback that threw, e.g. "tick"
   uint64_t count = 0;    // Pending: messages left queued
-  // Deliver, Publish: the value, only while a Trace::Watch reads the record (the runtime
-  // checks' claims over delivered values); null in records kept after that.
+  // Deliver, Publish: the value, for the runtime checks' claims over delivered values while
+  // they read the record (trace_line_of); null in the records a Trace keeps, since the value
+  // lives only as long as its line.
   const Value* value = nullptr;
 };
 

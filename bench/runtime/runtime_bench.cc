@@ -218,7 +218,7 @@ void delivery(benchmark::State& state, bool monitored, InstructionWindow& window
   model::App app = face_model(monitored);
   ClaimWatch claims(app);
   Trace::Watch watch;
-  if (checked) watch = [&claims](const TraceRecord& r, Trace& trace) { claims.watch(r, trace); };
+  if (checked) watch = [&claims](const TraceLine& r, Trace& trace) { claims.watch(r, trace); };
   auto rt = face_app(app, std::move(watch), registry, &error);
   if (!rt) {
     state.SkipWithError(error.c_str());
