@@ -29,6 +29,9 @@ std::shared_ptr<const Analysis> analyze(const std::string& text, int version,
       lower::LowerOptions options;
       if (!script_dir.empty()) options.script_dir = script_dir;
       lower::LowerResult lowered = lower::lower_spec(spec, options);
+      // Lowering's own errors (a test's event state over several containers) are `arbc
+      // check`'s too (lower::compile_spec): the editor shows what the command line says.
+      for (Diagnostic& d : lowered.diagnostics) a->diagnostics.push_back(std::move(d));
       if (lowered.ok) {
         a->lowered = std::move(lowered.lowered);
         a->lowered_current = true;

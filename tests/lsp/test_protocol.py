@@ -126,6 +126,20 @@ class Diagnostics(Session):
         self.assertEqual(d["relatedInformation"][0]["message"], "did you mean 'e_taken'?")
         self.assertEqual(d["source"], "arbc")
 
+    def test_a_test_expectation_over_two_containers_is_shown(self):
+        # Lowering's error (compiler/lower/test_containers.h) is `arbc check`'s and the editor's:
+        # e_taken is fed into two ports, so a bare event state over it must name one.
+        self.open_spec()
+        named = "expect not e_taken in PickAndPlace.cmd at 500ms;"
+        start = position_of(self.text, named, 0, len("expect not e_taken"))
+        end = dict(start, character=start["character"] + len(" in PickAndPlace.cmd"))
+        self.c.change(self.uri, 2, [{"range": {"start": start, "end": end}, "text": ""}])
+        diags = self.c.wait_diagnostics(self.uri, version=2)
+        broken = self.text.replace(named, "expect not e_taken at 500ms;", 1)
+        self.assertEqual([(d["code"], d["message"]) for d in diags],
+                         [(d["id"], d["message"]) for d in check_json(broken)])
+        self.assertIn("test-container", [d["code"] for d in diags])
+
     def test_a_syntax_error_and_its_repair(self):
         self.open_spec()
         end = position_of(self.text, "module Speak")
