@@ -56,38 +56,71 @@ ClaimWatch::ClaimWatch(const model::App& app, const Scope& scope) : app_(app) {
   auto module = [](const std::string& port) {  // of "Module.port"
     return std::string_view(port).substr(0, port.find('.'));
   };
-  auto here = [&](const std::string& port) { return scope.mediated.contains(module(port)); };
+  std::function<bool(const std::string&)> here = [&](const std::string& port) {
+    return scope.mediated.contains(module(port));
+  };
   std::set<std::string> read_here;  // sources of connections into ports mediated here
-  for (const model::Connection& c : app.connections) {
-    if (!here(c.destination)) continue;
-    read_here.insert(c.source);
-    if (c.kind == model::ConnectionKind::Rule) rule_port_[c.name] = c.destination;
-  }
+  for (const model::Connection& c : app.connections)
+    if (here(c.destination)) read_here.insert(c.source);
   std::set<std::string> mediated;
   for (const model::ArbitratedPort& p : app.arbitrated_ports)
     if (here(p.port)) boxes_[p.port], decides_ = true, mediated.insert(p.port);
-  for (auto& [port, box] : boxes_) box_of_port_[port] = &box;
+  decisions_.emplace(app, here, scope.states_known,
+                     [this](const std::string& claim, Nanos t, const std::string& what) {
+                       violated(claim, t, what, false);
+                     });
+  number_names(app, here);
   assumptions_over_events(app, mediated);
   for (const model::TemporalProperty& p : app.temporal) {
     if (!here(p.port)) continue;
-    properties_of_port_[p.port].push_back(properties_.size());
+    // Observed where a record is about its port (a rule's or an arbitrated port's).
+    if (size_t slot = port_index_.find(p.port); slot != NameIndex::npos)
+      slots_[slot].properties.push_back(properties_.size());
     auto box = boxes_.find(p.port);  // the same container for the checks and the properties
     properties_.push_back(std::make_unique<PropertyWatch>(
         p, rules_into(app, p.port), box == boxes_.end() ? nullptr : &box->second));
     property_text_.push_back(model::temporal_property_text(p));
     property_broken_.push_back(false);
   }
-  for (const model::Assumption& a : app.assumptions)
-    if (here(a.port)) assumed_.push_back({&a, false, std::nullopt});
-  for (const model::SourceRate& r : app.rates)
-    if (read_here.count(r.port))
-      rates_.push_back(
-          {&r, Nanos{0}, false, scope.test || !scope.hosted.contains(module(r.port)), scope.test});
-  decisions_.emplace(app, here, scope.states_known,
-                     [this](const std::string& claim, Nanos t, const std::string& what) {
-                       violated(claim, t, what, false);
-                     });
+  for (const model::Assumption& a : app.assumptions) {
+    if (!here(a.port)) continue;
+    if (size_t slot = port_index_.find(a.port); slot != NameIndex::npos)
+      slots_[slot].assumed.push_back(assumed_.size());
+    assumed_.push_back({&a, false, std::nullopt});
+  }
+  for (const model::SourceRate& r : app.rates) {
+    if (!read_here.count(r.port)) continue;
+    size_t source = source_index_.add(r.port);
+    if (source == rates_of_source_.size()) rates_of_source_.emplace_back();
+    rates_of_source_[source].push_back(rates_.size());
+    rates_.push_back(
+        {&r, Nanos{0}, false, scope.test || !scope.hosted.contains(module(r.port)), scope.test});
+  }
+  rates_changed();
   delivered_ = std::make_unique<DeliveryWatch>(app, nullptr, boxes_);
+}
+
+// Numbers the ports and rules mediated here: a record then finds what it is about with one
+// search, and the checks read lists by number (observe() runs on every message).
+void ClaimWatch::number_names(const model::App& app,
+                              const std::function<bool(const std::string&)>& here) {
+  for (const model::ArbitratedPort& p : app.arbitrated_ports) {
+    if (!here(p.port)) continue;
+    if (port_index_.add(p.port) < slots_.size()) continue;
+    slots_.emplace_back();
+    slots_.back().box = &boxes_.at(p.port);
+  }
+  for (const model::Connection& c : app.connections) {
+    if (!here(c.destination) || c.kind != model::ConnectionKind::Rule) continue;
+    size_t port = port_index_.add(c.destination);
+    if (port == slots_.size()) slots_.emplace_back();  // not arbitrated: its box comes later
+    RuleSlot rule{port, decisions_->rule_of(c.name)};
+    size_t i = rule_index_.add(c.name);
+    if (i == rules_.size())
+      rules_.push_back(rule);
+    else
+      rules_[i] = rule;  // a second connection of the name: the last one counts
+  }
 }
 
 bool ClaimWatch::load_claims(const std::string& app_dir, std::string* err) {
@@ -147,7 +180,7 @@ void ClaimWatch::assumptions_over_events(const model::App& app,
       anywhere = true;
       if (!mediated.count(port)) continue;
       here = true;
-      guards_[port].push_back({&inv, std::move(unfed)});
+      slots_[port_index_.find(port)].guards.push_back({&inv, std::move(unfed)});
     }
     std::string text = "assumption invariant " + inv.formula.to_string();
     if (here) invariants_watched_.push_back(text);
@@ -158,6 +191,7 @@ void ClaimWatch::assumptions_over_events(const model::App& app,
 void ClaimWatch::start(Nanos t) {
   start_ = t;
   for (Rate& rate : rates_) rate.last = std::max(rate.last, t);
+  rates_changed();
 }
 
 // An app whose only assumptions cannot be watched still has that to say.
@@ -190,7 +224,7 @@ void ClaimWatch::violated(const std::string& claim, Nanos t, std::string what, b
 void ClaimWatch::watch(const TraceLine& r, Trace& trace) {
   size_t known = violations_.size();
   observe(r);
-  breach_lines(known, r.t, trace);
+  if (violations_.size() > known) breach_lines(known, r.t, trace);
 }
 
 // A trace line for each violation from the `from`-th on, written at `t` (after the record, or
@@ -205,48 +239,68 @@ void ClaimWatch::breach_lines(size_t from, Nanos t, Trace& trace) const {
 
 void ClaimWatch::observe(const TraceLine& r) {
   rate_gaps(r.t);
-  delivered_->before(r);
-  const std::string* port = nullptr;  // the arbitrated port the record is about, if any
+  // Asserts over data and resources: most apps have none, and then nothing of a record matters.
+  if (!delivered_->empty()) delivered_->before(r);
+  PortSlot* slot = nullptr;  // the port the record is about, if any
   if (r.kind == TraceKind::Publish) {
-    for (Rate& rate : rates_) {
-      if (rate.r->port != r.port) continue;
-      Nanos deadline = later(rate.last, rate.r->period);
-      if (rate.window && !rate.awaiting_first && !rate.broken && r.t > deadline)
-        rate_broken(rate, deadline, r.t);
-      rate.last = r.t, rate.awaiting_first = false;
-    }
+    published(r);
   } else if (r.kind == TraceKind::Event) {
-    auto box = box_of_port_.find(r.port);
-    if (box != box_of_port_.end()) {
-      if (auto props = properties_of_port_.find(r.port); props != properties_of_port_.end())
-        for (size_t i : props->second) properties_[i]->before_event(r);
-      box->second->apply(r), port = &box->first;
-      delivered_->after(r, box->first);
-      if (r.op == "set")
-        for (Assumed& s : assumed_)
-          if (s.a->port == r.port && s.a->event == r.event) reported(s, r);
-    }
+    slot = event_record(r);
   } else if (r.kind == TraceKind::Deliver ||
              (r.kind == TraceKind::Drop && r.reason != DropReason::Feed)) {  // feeds: no rule
-    auto rule = rule_port_.find(r.connection);
-    if (rule != rule_port_.end()) {
-      port = &rule->second;
-      const std::set<std::string>& state = boxes_[rule->second].present(r.t);
-      decision(rule->second, r.t, state);
-      decisions_->decision(r, state);
-      for (Assumed& s : assumed_)
-        if (s.a->port == rule->second) assumption(s, rule->second, r, state);
-      if (r.kind == TraceKind::Deliver) delivered(r, rule->second);
-    }
+    slot = decided(r);
   }
   // A property reads only its port's events, deliveries and drops (runtime/property_watch.h).
-  auto props = port ? properties_of_port_.find(*port) : properties_of_port_.end();
-  if (props == properties_of_port_.end()) return;
-  for (size_t i : props->second) {
+  if (!slot) return;
+  for (size_t i : slot->properties) {
     if (property_broken_[i]) continue;
     properties_[i]->observe(r);
     property_breached(i);
   }
+}
+
+void ClaimWatch::published(const TraceLine& r) {
+  size_t source = source_index_.find(r.port);
+  if (source == NameIndex::npos) return;
+  for (size_t i : rates_of_source_[source]) {
+    Rate& rate = rates_[i];
+    Nanos deadline = later(rate.last, rate.r->period);
+    if (rate.window && !rate.awaiting_first && !rate.broken && r.t > deadline)
+      rate_broken(rate, deadline, r.t);
+    rate.last = r.t, rate.awaiting_first = false;
+  }
+  rates_changed();
+}
+
+ClaimWatch::PortSlot* ClaimWatch::event_record(const TraceLine& r) {
+  size_t port = port_index_.find(r.port);
+  if (port == NameIndex::npos || !slots_[port].box) return nullptr;
+  PortSlot& slot = slots_[port];
+  for (size_t i : slot.properties) properties_[i]->before_event(r);
+  slot.box->apply(r);
+  if (!delivered_->empty()) delivered_->after(r, port_index_.name(port));
+  if (r.op == "set")
+    for (size_t i : slot.assumed)
+      if (assumed_[i].a->event == r.event) reported(assumed_[i], r);
+  return &slot;
+}
+
+// A decision (a delivery, or a drop that is not a feed's) of a rule into a port mediated here.
+ClaimWatch::PortSlot* ClaimWatch::decided(const TraceLine& r) {
+  size_t i = rule_index_.find(r.connection);
+  if (i == NameIndex::npos) return nullptr;
+  const RuleSlot& rule = rules_[i];
+  PortSlot& slot = slots_[rule.port];
+  const std::string& port = port_index_.name(rule.port);
+  if (!slot.box) slot.box = &boxes_[port];
+  const std::set<std::string>& state = slot.box->present(r.t);
+  uint64_t version = slot.box->version();
+  if (version != slot.judged_version) decision(slot, port, r.t, state);
+  slot.judged_version = version;
+  if (rule.decision != NameIndex::npos) decisions_->decision(rule.decision, r, state, version);
+  for (size_t a : slot.assumed) assumption(assumed_[a], port, r, state);
+  if (r.kind == TraceKind::Deliver && !delivered_->empty()) delivered(r, port);
+  return &slot;
 }
 
 void ClaimWatch::delivered(const TraceLine& r, const std::string& port) {
@@ -264,20 +318,21 @@ void ClaimWatch::property_breached(size_t i) {
 
 // The assumptions over the state of the port at a rule's decision: exclusive groups and the
 // invariants watched there (the proof reads every state as satisfying them).
-void ClaimWatch::decision(const std::string& port, Nanos t, const std::set<std::string>& state) {
+void ClaimWatch::decision(const PortSlot& slot, const std::string& port, Nanos t,
+                          const std::set<std::string>& state) {
   for (const model::ExclusiveGroup& g : app_.exclusive_groups) {
+    size_t n = 0;  // counted first: the text only for a breach (this runs at every decision)
+    for (const std::string& e : g.events) n += state.count(e);
+    if (n < 2) continue;
     std::vector<std::string> both;
     for (const std::string& e : g.events)
       if (state.count(e)) both.push_back(e);
-    if (both.size() > 1)
-      violated(
-          group_text(g), t,
-          join(both, ", ", " and ") + " present together in " + port + " at " + duration_literal(t),
-          true);
+    violated(
+        group_text(g), t,
+        join(both, ", ", " and ") + " present together in " + port + " at " + duration_literal(t),
+        true);
   }
-  auto guards = guards_.find(port);
-  if (guards == guards_.end()) return;
-  for (const Guard& g : guards->second) {
+  for (const Guard& g : slot.guards) {
     if (holds_for_some(g.inv->formula, state, g.unfed)) continue;
     violated("invariant " + g.inv->formula.to_string(), t,
              "false in " + port + " at " + duration_literal(t) +
@@ -328,6 +383,7 @@ void ClaimWatch::present(Assumed& s, std::string_view port, Nanos t, const std::
 
 // `given M.p every D`: nothing from M.p for more than D (from the start) breaks it.
 void ClaimWatch::rate_gaps(Nanos t) {
+  if (t <= next_gap_) return;  // every rate still has time (most records: the common case)
   for (Rate& rate : rates_) {
     Nanos deadline = later(rate.last, rate.r->period);
     // A test's source: judged only by its next message (window_gap), since it is not owed
@@ -335,6 +391,15 @@ void ClaimWatch::rate_gaps(Nanos t) {
     if (t <= deadline || rate.broken || rate.awaiting_first || rate.window) continue;
     rate_broken(rate, deadline, t);
   }
+  rates_changed();
+}
+
+// The earliest instant past which rate_gaps() may find a gap, after a rate changed.
+void ClaimWatch::rates_changed() {
+  next_gap_ = kNever;
+  for (const Rate& rate : rates_)
+    if (!rate.broken && !rate.awaiting_first && !rate.window)
+      next_gap_ = std::min(next_gap_, later(rate.last, rate.r->period));
 }
 
 void ClaimWatch::rate_broken(Rate& rate, Nanos deadline, Nanos t) {

@@ -21,6 +21,7 @@
 // a rate is watched where a mediated port reads its source.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -121,15 +122,38 @@ class ClaimWatch {
     bool awaiting_first = false;
     bool window = false;  // Scope::test: not owed before the first message nor after the last
   };
+  // What a port mediated here has watched in it, found by its number (port_index_): a record's
+  // port or rule is looked up once, and the checks then read these lists.
+  struct PortSlot {
+    // Its container; null for a rule's port that is not arbitrated until the rule first
+    // decides (its events are not watched before).
+    TraceContainer* box = nullptr;
+    std::vector<Guard> guards;       // the invariants watched there
+    std::vector<size_t> properties;  // into properties_: its own
+    std::vector<size_t> assumed;     // into assumed_: the assumptions over its events
+    // The state the groups and guards were last judged in (TraceContainer::version()): they
+    // read it alone, so a port that decides again in it has the same verdict, reported once.
+    uint64_t judged_version = 0;
+  };
+  struct RuleSlot {
+    size_t port;      // into slots_: the port it delivers into
+    size_t decision;  // DecisionWatch::rule_of it (NameIndex::npos: none)
+  };
 
+  void number_names(const model::App& app, const std::function<bool(const std::string&)>& here);
   void assumptions_over_events(const model::App& app, const std::set<std::string>& mediated);
-  void decision(const std::string& port, Nanos t, const std::set<std::string>& state);
+  void published(const TraceLine& r);
+  PortSlot* event_record(const TraceLine& r);
+  PortSlot* decided(const TraceLine& r);
+  void decision(const PortSlot& slot, const std::string& port, Nanos t,
+                const std::set<std::string>& state);
   void assumption(Assumed& s, const std::string& port, const TraceLine& r,
                   const std::set<std::string>& state);
   void reported(Assumed& s, const TraceLine& r);
   // The assumed event present in `port` at `t`: a breach unless the assumption allows it.
   void present(Assumed& s, std::string_view port, Nanos t, const std::string& how);
   void rate_gaps(Nanos t);
+  void rates_changed();
   void judge_end(Nanos end);
   void breach_lines(size_t from, Nanos t, Trace& trace) const;
   void rate_broken(Rate& rate, Nanos deadline, Nanos t);
@@ -143,18 +167,19 @@ class ClaimWatch {
   std::unique_ptr<DeliveryWatch> delivered_;  // asserts over data, resources
   bool decides_ = false;                      // some arbitrated port is mediated here
   std::vector<std::string> groups_watched_, invariants_watched_;  // here, as watched() names them
-  std::unordered_map<std::string, std::vector<Guard>> guards_;    // port -> invariants there
   std::vector<std::string> unwatched_;
   std::vector<std::unique_ptr<PropertyWatch>> properties_;
   std::vector<std::string> property_text_;
   std::vector<bool> property_broken_;  // reported: that property is no longer observed
-  NameMap<std::vector<size_t>> properties_of_port_;  // port -> its own
   std::vector<Assumed> assumed_;
   std::vector<Rate> rates_;
-  // Looked up on every record: hashed.
-  NameMap<std::string> rule_port_;                         // rule -> its arbitrated port
+  Nanos next_gap_ = kNever;  // no rate is judged broken at or before it (rates_changed())
   std::unordered_map<std::string, TraceContainer> boxes_;  // arbitrated port -> its container
-  NameMap<TraceContainer*> box_of_port_;                   // the same, found by a record's port
+  // Looked up on every record (runtime/name_map.h): ports, rules and sources by number.
+  NameIndex port_index_, rule_index_, source_index_;
+  std::vector<PortSlot> slots_;                       // by port_index_
+  std::vector<RuleSlot> rules_;                       // by rule_index_
+  std::vector<std::vector<size_t>> rates_of_source_;  // by source_index_: into rates_
   std::set<std::string> reported_;
   std::vector<ClaimViolation> violations_;
   nlohmann::json loaded_;  // load()'s, until resume()

@@ -42,6 +42,7 @@ DecisionWatch::DecisionWatch(const model::App& app,
     if (p.by_priority || rules_.size() - first < 2) continue;
     ports_.insert(p.port);
     port_claim_[p.port] = exclusivity_claim(p);
+    for (size_t i = first; i < rules_.size(); ++i) rules_[i].exclusive = true;
     for (size_t i = first; i < rules_.size(); ++i)
       for (size_t j = first; j < rules_.size(); ++j)
         if (i != j)
@@ -62,27 +63,37 @@ std::string DecisionWatch::exclusivity_claim(const model::ArbitratedPort& p) {
 }
 
 void DecisionWatch::decision(const TraceLine& r, const std::set<std::string>& state) {
-  auto it = rule_index_.find(r.connection);
-  if (it == rule_index_.end()) return;
-  Rule& c = rules_[it->second];
+  size_t rule = rule_of(r.connection);
+  if (rule != NameIndex::npos) decision(rule, r, state, 0);
+}
+
+void DecisionWatch::decision(size_t rule, const TraceLine& r, const std::set<std::string>& state,
+                             uint64_t version) {
+  Rule& c = rules_[rule];
   uint64_t n = ++c.decided;  // the n-th message of c's source since the start
-  if (r.kind == TraceKind::Deliver) delivered(c, n, r.t, state);
+  if (r.kind == TraceKind::Deliver) {
+    bool judged = version != 0 && c.judged == &state && c.judged_version == version;
+    c.judged = &state, c.judged_version = version;
+    if (!judged || c.exclusive) delivered(c, n, r.t, state, judged);
+  }
+  if (c.same_source.empty()) return;
   // A message number no sibling of the same source can still decide is not needed any more.
   uint64_t oldest = n;
   for (size_t j : c.same_source) oldest = std::min(oldest, rules_[j].decided);
   c.delivered.erase(c.delivered.begin(), c.delivered.lower_bound(oldest));
 }
 
-void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state) {
+void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state,
+                              bool judged) {
   for (size_t k : c.asserts) {
     const Assert& a = asserts_[k];
-    if (!evaluate(a.a->property, state))
+    if (!judged && !evaluate(a.a->property, state))
       broken_(a.text, t,
               "'" + c.name + "' delivered at " + duration_literal(t) + " with " +
                   a.a->property.to_string() + " false in " + c.port +
                   " (events present: " + state_text(state) + ")");
   }
-  if (!ports_.count(c.port)) return;
+  if (!c.exclusive) return;
   for (size_t j : c.same_source) {
     const Rule& d = rules_[j];
     if (d.decided >= n && d.delivered.count(n))
@@ -90,8 +101,8 @@ void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::
               "one message from " + c.source + " delivered by both '" + d.name + "' and '" +
                   c.name + "' at " + duration_literal(t));
   }
-  c.delivered.insert(n);
-  if (!states_known_) return;
+  if (!c.same_source.empty()) c.delivered.insert(n);
+  if (!states_known_ || judged) return;
   for (size_t j : c.other_source) {
     const Rule& d = rules_[j];
     if (evaluate(d.guard, state))

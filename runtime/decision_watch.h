@@ -43,6 +43,17 @@ class DecisionWatch {
   static std::string exclusivity_claim(const model::ArbitratedPort& p);
   // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
   void decision(const TraceLine& r, const std::set<std::string>& state);
+  // The same, for the rule numbered `rule` (rule_of(r.connection), found once by the caller);
+  // `version`: the TraceContainer::version() `state` came with (0: unknown). What reads the
+  // state alone is judged once per rule and state: the verdict is the same, and a breach was
+  // reported the first time (each claim is reported once).
+  void decision(size_t rule, const TraceLine& r, const std::set<std::string>& state,
+                uint64_t version);
+  // The number of the rule named `name`; NameIndex::npos when it is not watched.
+  size_t rule_of(std::string_view name) const {
+    auto it = rule_index_.find(name);
+    return it == rule_index_.end() ? NameIndex::npos : it->second;
+  }
   void decision(const TraceRecord& r, const std::set<std::string>& state) {
     decision(trace_line_of(r), state);
   }
@@ -50,9 +61,14 @@ class DecisionWatch {
  private:
   struct Rule {
     std::string name, port, source;
-    Constraint guard;              // the decision guard: what the runtime evaluates at its decision
-    uint64_t decided = 0;          // its Deliver and Drop records so far
-    std::set<uint64_t> delivered;  // message numbers delivered, not yet past every sibling
+    Constraint guard;        // the decision guard: what the runtime evaluates at its decision
+    uint64_t decided = 0;    // its Deliver and Drop records so far
+    bool exclusive = false;  // its port's exclusivity is watched (ports_)
+    const std::set<std::string>* judged = nullptr;  // the state it was last judged in, and
+    uint64_t judged_version = 0;                    // its version (decision())
+    // Message numbers delivered, not yet past every sibling of the same source (only those read
+    // it: empty without them).
+    std::set<uint64_t> delivered;
     std::vector<size_t> same_source;   // other rules of the port reading the same source
     std::vector<size_t> other_source;  // other rules of the port reading other sources
     std::vector<size_t> asserts;       // into asserts_
@@ -61,7 +77,8 @@ class DecisionWatch {
     const model::Assertion* a;
     std::string text;
   };
-  void delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state);
+  // `judged`: c was judged in this state already (decision()): only the same-message check.
+  void delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::string>& state, bool judged);
   std::vector<Rule> rules_;
   NameMap<size_t> rule_index_;                               // rule name -> rules_
   std::unordered_map<std::string, std::string> port_claim_;  // port -> its claim's text

@@ -3,6 +3,7 @@
 #include "core/constraint.h"
 #include "core/duration_literal.h"
 #include "core/instant.h"
+#include "runtime/same_name.h"
 
 namespace arbc {
 
@@ -23,7 +24,20 @@ std::set<std::string> rules_into(const model::App& app, const std::string& port)
 
 PropertyWatch::PropertyWatch(model::TemporalProperty p, std::set<std::string> port_rules,
                              const TraceContainer* shared)
-    : p_(std::move(p)), rules_(port_rules.begin(), port_rules.end()), shared_(shared) {}
+    : p_(std::move(p)), shared_(shared) {
+  for (const std::string& rule : port_rules) names_.add(rule);
+  rule_.assign(names_.size(), true);
+  last_.resize(names_.size());
+  named_rule_ = number(p_.rule);
+  named_other_ = number(p_.other);
+}
+
+size_t PropertyWatch::add_name(std::string_view name) {
+  size_t i = names_.add(name);
+  rule_.resize(names_.size(), false);
+  last_.resize(names_.size());
+  return i;
+}
 
 void PropertyWatch::before_event(const TraceLine& r) {
   if (p_.kind == Kind::Response && !p_.event.empty() && r.event == p_.event)
@@ -36,10 +50,10 @@ void PropertyWatch::broken(Nanos from, Nanos t, std::string what) {
 
 void PropertyWatch::observe(const TraceLine& r) {
   if (breach_) return;
-  if (r.kind == TraceKind::Event && r.port == p_.port) {
+  if (r.kind == TraceKind::Event && same_name(r.port, p_.port)) {
     container(r);
-  } else if ((r.kind == TraceKind::Deliver && r.port == p_.port) ||
-             (r.kind == TraceKind::Drop && rules_.count(r.connection))) {
+  } else if ((r.kind == TraceKind::Deliver && same_name(r.port, p_.port)) ||
+             (r.kind == TraceKind::Drop && is_rule(r.connection))) {
     decision(r);
   }
 }
@@ -67,23 +81,23 @@ void PropertyWatch::decision(const TraceLine& r) {
 
 // Spacing, absence, precedence and stability read the port's deliveries.
 void PropertyWatch::delivery(const TraceLine& r) {
-  std::string_view who = r.connection;
-  auto named = [&] { return "'" + std::string(who) + "'"; };  // in a breach's text
+  size_t who = number(r.connection);
+  auto named = [&] { return "'" + std::string(r.connection) + "'"; };  // in a breach's text
   Nanos t = r.t;
-  if (p_.kind == Kind::Spacing && who == p_.rule) {
-    const std::string& before = p_.other.empty() ? p_.rule : p_.other;
-    auto it = last_.find(before);
-    if (it != last_.end() && t < later(it->second, p_.window)) {
-      broken(it->second, t,
+  if (p_.kind == Kind::Spacing && who == named_rule_) {
+    size_t before = p_.other.empty() ? named_rule_ : named_other_;
+    const std::optional<Nanos>& last = last_[before];
+    if (last && t < later(*last, p_.window)) {
+      broken(*last, t,
              p_.other.empty()
-                 ? named() + " delivered at " + at(it->second) + " and at " + at(t)
-                 : named() + " delivered at " + at(t) + ", '" + before + "' at " + at(it->second));
+                 ? named() + " delivered at " + at(*last) + " and at " + at(t)
+                 : named() + " delivered at " + at(t) + ", '" + p_.other + "' at " + at(*last));
     }
   }
-  if (p_.kind == Kind::Absence && who == p_.rule && box().present(t).count(p_.event))
+  if (p_.kind == Kind::Absence && who == named_rule_ && box().present(t).count(p_.event))
     broken(t, t, named() + " delivered at " + at(t) + " with " + p_.event + " present");
-  if (p_.kind == Kind::Precedence && who == p_.other) armed_ = true;
-  if (p_.kind == Kind::Precedence && who == p_.rule) {
+  if (p_.kind == Kind::Precedence && who == named_other_) armed_ = true;
+  if (p_.kind == Kind::Precedence && who == named_rule_) {
     if (!armed_)
       broken(t, t,
              named() + " delivered at " + at(t) + " with no delivery of '" + p_.other +
@@ -96,12 +110,13 @@ void PropertyWatch::delivery(const TraceLine& r) {
              "the deliverer switched at " + at(*last_switch_) + " and at " + at(t));
     last_switch_ = t;
   }
-  // Assigned only when they change: this runs on every delivery (no string copy then).
-  if (!last_rule_ || *last_rule_ != who) last_rule_ = std::string(who);
-  if (auto it = last_.find(who); it != last_.end())
-    it->second = t;
-  else
-    last_.emplace(who, t);
+  last_rule_ = who;
+  last_[who] = t;
+}
+
+bool PropertyWatch::is_rule(std::string_view name) const {
+  size_t i = names_.find(name);
+  return i != NameIndex::npos && rule_[i];
 }
 
 // A decision in a pending trigger's window: a delivery of the rule (of any rule of the port,
@@ -114,7 +129,7 @@ void PropertyWatch::respond(const TraceLine& r, const std::set<std::string>& sta
     pending_.clear();
     return;
   }
-  bool answers = p_.rule.empty() ? rules_.count(who) > 0 : who == p_.rule;
+  bool answers = p_.rule.empty() ? is_rule(who) : who == p_.rule;
   if (!answers) return;
   if (deliver || !evaluate(p_.condition, state)) pending_.clear();
 }
@@ -132,18 +147,19 @@ void PropertyWatch::close_windows_before(Nanos t) {
 
 nlohmann::json PropertyWatch::save() const {
   nlohmann::json last = nlohmann::json::object();
-  for (const auto& [rule, t] : last_) last[rule] = t.count();
+  for (size_t i = 0; i < names_.size(); ++i)
+    if (last_[i]) last[names_.name(i)] = last_[i]->count();
   nlohmann::json out = {{"last", last}, {"armed", armed_}};
-  if (last_rule_) out["last_rule"] = *last_rule_;
+  if (last_rule_) out["last_rule"] = names_.name(*last_rule_);
   if (last_switch_) out["last_switch"] = last_switch_->count();
   return out;
 }
 
 void PropertyWatch::restore(const nlohmann::json& saved, Nanos shift) {
   for (const auto& [rule, t] : saved.at("last").items())
-    last_[rule] = Nanos(t.get<int64_t>()) + shift;
+    last_[number(rule)] = Nanos(t.get<int64_t>()) + shift;
   armed_ = saved.at("armed").get<bool>();
-  if (saved.contains("last_rule")) last_rule_ = saved.at("last_rule").get<std::string>();
+  if (saved.contains("last_rule")) last_rule_ = number(saved.at("last_rule").get<std::string>());
   if (saved.contains("last_switch"))
     last_switch_ = Nanos(saved.at("last_switch").get<int64_t>()) + shift;
 }

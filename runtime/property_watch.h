@@ -19,6 +19,7 @@
 
 #include "core/app_model.h"
 #include "core/instant.h"
+#include "runtime/name_map.h"
 #include "runtime/trace_container.h"
 #include "runtime/trace_format.h"
 #include "runtime/trace_record.h"
@@ -75,15 +76,27 @@ class PropertyWatch {
   void close_windows_before(Nanos t);
   void broken(Nanos from, Nanos t, std::string what);
 
+  // The number of a deliverer's name (names_), added when new.
+  size_t number(std::string_view name) {
+    size_t i = names_.find(name);
+    return i != NameIndex::npos ? i : add_name(name);
+  }
+  size_t add_name(std::string_view name);
+  bool is_rule(std::string_view name) const;  // one of the port's rules
+
   model::TemporalProperty p_;
-  std::set<std::string, std::less<>> rules_;  // found by the records' string_views
+  // The rules and deliverers it reads, numbered (runtime/name_map.h): each record's name is
+  // found once and then compared as a number (it runs on every delivery into the port).
+  NameIndex names_;         // the port's rules, p_.rule, p_.other, then any other deliverer
+  std::vector<bool> rule_;  // by names_: one of the port's rules
+  std::vector<std::optional<Nanos>> last_;  // by names_: its last delivery
+  size_t named_rule_, named_other_;         // p_.rule, p_.other
   const TraceContainer& box() const { return shared_ ? *shared_ : own_; }
   TraceContainer own_;  // the port's container, unless shared
   const TraceContainer* shared_ = nullptr;
-  bool was_present_ = false;                        // before_event(): a response's event, before it
-  std::map<std::string, Nanos, std::less<>> last_;  // rule -> its last delivery
-  bool armed_ = false;                              // precedence
-  std::optional<std::string> last_rule_;            // stability
+  bool was_present_ = false;         // before_event(): a response's event, before it
+  bool armed_ = false;               // precedence
+  std::optional<size_t> last_rule_;  // stability: by names_
   std::optional<Nanos> last_switch_;
   std::vector<Trigger> pending_;  // response triggers not yet answered
   std::optional<PropertyBreach> breach_;

@@ -33,6 +33,7 @@ bool TraceContainer::present_at(std::string_view event, Nanos t) const {
 
 const std::set<std::string>& TraceContainer::present(Nanos t) const {
   if (cached_ && t >= cached_from_ && t < cached_until_) return present_;
+  ++version_;
   present_.clear();
   cached_from_ = t;
   cached_until_ = kNever;

@@ -4,6 +4,7 @@
 // proof does (docs/design.md#events-and-lifetimes).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <set>
@@ -23,6 +24,10 @@ class TraceContainer {
   void apply(const TraceRecord& r) { apply(trace_line_of(r)); }
   // The events present at t; valid until the next apply() or present() call.
   const std::set<std::string>& present(Nanos t) const;
+  // Which answer present() last gave: another number whenever the set may differ, so that a
+  // check that only reads the set may keep its verdict while the number stays (a port decides
+  // many times between two changes of its events). Never 0.
+  uint64_t version() const { return version_; }
   // Whether `event` alone is present at t (no set built: cheap on every record).
   bool present_at(std::string_view event, Nanos t) const;
 
@@ -34,6 +39,7 @@ class TraceContainer {
   mutable std::set<std::string> present_;
   mutable bool cached_ = false;
   mutable Nanos cached_from_{0}, cached_until_{0};
+  mutable uint64_t version_ = 1;
 };
 
 }  // namespace arbc
