@@ -10,8 +10,8 @@ TEST(BodyText, StatementsRoundTrip) {
   const char* texts[] = {
       "(accept 33 (<= (field dist (local obj)) 0.4))",
       "(let 32 obj (call min_by msg (lambda o (field dist (param o)))))",
-      "(if 44 (<= (field dist (local obj)) 0.4) ((emit 44 (record pos (field pos (local obj)) "
-      "verb \"cancel\"))) ((emit 45 (record verb \"pull\"))))",
+      ("(if 44 (<= (field dist (local obj)) 0.4) ((emit 44 (record pos (field pos (local obj)) "
+       "verb \"cancel\"))) ((emit 45 (record verb \"pull\"))))"),
       "(var 3 n 0)",
       "(assign 4 n (+ (local n) 1))",
       "(every 5 ((set 5 e_x) (unset 6 e_y)))",

@@ -227,7 +227,9 @@ std::string DdsTransport::peer_hint(const std::vector<std::string>& alone) const
     for (const std::string& topic : alone) {
       if (qos_mismatched_.count(topic)) qos.push_back(topic);
     }
-    for (const auto& [topic, type] : seen_remote_) {
+    for (const auto& seen : seen_remote_) {
+      // Named, not bound: clang 14 cannot capture a structured binding in a lambda.
+      const std::string &topic = seen.first, &type = seen.second;
       bool like = std::any_of(alone.begin(), alone.end(), [&](const std::string& ours) {
         return type_of_topic_.at(ours) == type || last_name(ours) == last_name(topic);
       });

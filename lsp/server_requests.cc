@@ -54,7 +54,10 @@ std::vector<Document> Server::tests_files_of(const Document& app) {
     open.insert(std::filesystem::path(d.path).lexically_normal().string());
     if (names_app(d)) out.push_back(std::move(d));
   }
-  for (auto& [path, text] : tests_files_on_disk(app_path)) {
+  for (auto& file : tests_files_on_disk(app_path)) {
+    // Named, not bound: clang 14 cannot capture a structured binding in a lambda.
+    const std::string& path = file.first;
+    std::string& text = file.second;
     if (open.count(path)) continue;  // the editor's text, not the disk's
     Document d;
     d.uri = path_to_uri(path);

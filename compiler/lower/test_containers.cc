@@ -80,7 +80,10 @@ Diagnostic ambiguous(const model::Expectation& e,
                      const std::map<std::string, std::vector<std::string>>& where) {
   std::string what;
   std::vector<std::string> common = where.begin()->second;  // a port to suggest: one in all
-  for (const auto& [event, ports] : where) {
+  for (const auto& entry : where) {
+    // Named, not bound: clang 14 cannot capture a structured binding in a lambda.
+    const std::string& event = entry.first;
+    const std::vector<std::string>& ports = entry.second;
     what += (what.empty() ? "'" : "; '") + event + "' lives in " + std::to_string(ports.size()) +
             " event containers (" + joined(ports) + ")";
     std::erase_if(common, [&](const std::string& p) {

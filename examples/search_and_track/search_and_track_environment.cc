@@ -51,7 +51,7 @@ class SearchAndTrackEnvironment : public WorldEnvironment {
     if (r.first_face_target() >= 0) {
       add("face found %.2f s after the person appeared", r.first_face_target() - kAppear);
     } else {
-      add("face never found");
+      add("face %s", "never found");
     }
     if (resume_gap_ >= 0) add("search resumed %.2f s after the last face target", resume_gap_);
     add("conflicts: %d", world_->conflicts().total());

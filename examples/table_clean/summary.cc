@@ -32,11 +32,11 @@ std::string summarize(World& world, const std::string& scenario, uint64_t seed, 
   for (const auto& [name, count] : world.conflicts().by_name())
     add("  %s: %d", name.c_str(), count);
   if (run_succeeded(world)) {
-    add("result: table clean, no conflict");
+    add("result: %s", "table clean, no conflict");
   } else if (!world.table_clean()) {
     add("result: FAILED, %d object(s) left", world.objects_total() - world.objects_in_bucket());
   } else {
-    add("result: FAILED, table clean but with conflicts");
+    add("result: %s", "FAILED, table clean but with conflicts");
   }
   return out;
 }
