@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "compiler/frontend/literal_value.h"
@@ -17,10 +18,16 @@ bool is_number(const TypePtr& t) {
   return t && (t->kind == Type::Kind::Int || t->kind == Type::Kind::Float);
 }
 
-// The nearest float32 to v, printed to read back as that float32 ("0.100000001").
+// The nearest float32 to v, in the fewest digits that read back as exactly that value: a
+// literal is read as a double, so nine digits ("0.100000001", enough for strtof) are not enough
+// for the check above, which would refuse what this note suggests ("0.10000000149011612").
 std::string nearest_float32(double v) {
+  const double f = static_cast<float>(v);
   char text[40];
-  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(static_cast<float>(v)));
+  for (int digits = 9; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, f);
+    if (std::strtod(text, nullptr) == f) break;
+  }
   return text;
 }
 
