@@ -504,7 +504,12 @@ TEST(DataDifferential, MessagesFoundOnUnknownsReplay) {
       for (const z3::expr& x : e.side) s.add(x);
       for (const AcceptTracker& t : e.trackers) s.add(t.literal);
       s.add(accept ? e.accepts : !e.accepts);
-      if (s.check() != z3::sat) continue;  // a rule that accepts everything, or nothing
+      z3::check_result cr = s.check();
+      // A rule whose accepting messages the solver cannot find within the timeout (long float
+      // products) has had its rejecting ones unknown too, at the same cost (16 queries of 20 s
+      // in 2026-11-30's timing of this test): the pair is skipped.
+      if (cr == z3::unknown) break;
+      if (cr != z3::sat) continue;  // a rule that accepts everything, or nothing
       z3::model model = s.get_model();
       Value msg = concrete(model, m);
       Encoded lua = run_lua(*rule, msg);
