@@ -172,6 +172,12 @@ std::string LuaExprTranslator::binary(const BodyExpr& e) {
   if (op == "%")
     return helper("arbc_fmod") + "(" + arith_operand(l, false) + ", " + arith_operand(r, false) +
            ")";
+  // Lua 5.4 compiles `x - K`, K an integer constant of one byte (after folding: `0`, `-0`,
+  // `1 - 1`), as x + -K (lcode.c, finishbinexpneg). For a float x that differs from the
+  // subtraction the spec means in one case: x = -0.0 and K = 0 give +0.0, where IEEE (and the
+  // proof) give -0.0. So an int subtracted from a float is written as the float Lua would make
+  // of it (the ToFloat node, explicit), which Lua subtracts as written.
+  if (op == "-" && r.op == Op::ToFloat) return arith_operand(l, true) + " - " + to_float(r);
   if (op == "+" || op == "-" || op == "*" || op == "/")
     return arith_operand(l, true) + " " + op + " " + arith_operand(r, true);
   // A uint64 is held as its bit pattern (core/type.h): its orderings compare unsigned. The
