@@ -479,8 +479,9 @@ TEST(DataDifferential, SubtractingAnIntegerZeroKeepsMinusZero) {
     ASSERT_TRUE(lua.accepted && enc.accepted) << v;
     EXPECT_TRUE(same_values(enc.emitted, lua.emitted))
         << v << ": Z3 " << spec_value_text(enc.emitted) << ", Lua " << spec_value_text(lua.emitted);
-    if (std::string(v) != "m.a - 3")
+    if (std::string(v) != "m.a - 3") {
       EXPECT_TRUE(std::signbit(lua.emitted["v"].as_float())) << v << " lost the sign of -0.0";
+    }
   }
 }
 
