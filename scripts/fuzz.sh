@@ -13,11 +13,8 @@ seconds=${1:-30}
 shift || true
 build=${ARBC_FUZZ_BUILD:-$root/build-fuzz}
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
-# -O1 with line tables only, as scripts/sanitize.sh builds: about half the compile time of -O2 -g.
-sanitized_flags="-O1 -g1 -DNDEBUG"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DARBC_FUZZ=ON -DARBC_TESTS=OFF -DARBC_BENCH=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$sanitized_flags" \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$sanitized_flags" -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   mapfile -t targets < <(cmake --build "$build" --target help | sed -n 's/^\.\.\. \(.*fuzz\)$/\1/p' | sort)

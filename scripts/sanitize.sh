@@ -7,14 +7,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 
-# -O1 with line tables only (-g1), as the sanitizers' manuals advise: compiling is CI's dearest
-# step, and this takes about half the compile time of -O2 -g with the same sanitizers
-# (docs/benchmarks.md#ci-build-cost); the stack traces keep file and line. GCC, as the plain build:
-# built by clang 14 the suite finds other things (docs/benchmarks.md#ci-build-cost says which).
-sanitized_flags="-O1 -g1 -DNDEBUG"
-ARBC_BUILD_DIR=$root/build-asan "$root/scripts/build.sh" -DARBC_SANITIZE=ON \
-  -DARBC_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$sanitized_flags" \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$sanitized_flags"
+# Built at -O1 -g1 (CMakeLists.txt, for every sanitized build). GCC, as the plain build: built by
+# clang 14 the suite finds other things (docs/benchmarks.md#ci-build-cost says which).
+ARBC_BUILD_DIR=$root/build-asan "$root/scripts/build.sh" -DARBC_SANITIZE=ON -DARBC_BENCH=OFF
 # The DDS tests (label dds) run apart: under ASan every Fast-DDS process aborts on a new/delete
 # size mismatch inside Fast-DDS 2.9 itself (the fastddsgen-built interop_pub, which has no arbc
 # code, aborts the same way), so that one check is off for them; and of the split runs only the
@@ -29,9 +24,8 @@ ARBC_BUILD_DIR=$root/build-asan "$root/scripts/build.sh" -DARBC_SANITIZE=ON \
   ctest --output-on-failure -j"$jobs" -L dds -R "dds_interop|dds_split_signals" --no-tests=error)
 
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
-cmake -S "$root" -B "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DARBC_TSAN=ON -DARBC_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$sanitized_flags" \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$sanitized_flags" -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
+cmake -S "$root" -B "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBC_TSAN=ON \
+  -DARBC_BENCH=OFF -DARBC_WERROR=${ARBC_WERROR:-OFF} >/dev/null
 cmake --build "$root/build-tsan" -j"$jobs" --target runtime_test
 (cd "$root/build-tsan" &&
   TSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure -j"$jobs" -R Realtime --no-tests=error)
