@@ -97,8 +97,12 @@ z3::expr sized_int_const(z3::context& ctx, const std::string& name, const Type& 
 z3::expr sized_float_const(z3::context& ctx, const std::string& name, const Type& t) {
   if (t.bits >= 64) return float_const(ctx, name);
   z3::expr single = ctx.fpa_const(name.c_str(), 8, 24);
-  // Widening a binary32 to binary64 is exact: the rounding mode never applies.
-  return z3::expr(ctx, Z3_mk_fpa_to_fp_float(ctx, Z3_mk_fpa_rne(ctx), single, float_sort(ctx)));
+  // Widening a binary32 to binary64 is exact: the rounding mode never applies. The mode and the
+  // sort are held before the call: a raw term is freed at Z3's next call, and C++ may evaluate
+  // arguments in any order (tests/code_shape/z3_raw_terms.py).
+  z3::expr mode = rne(ctx);
+  z3::sort wide = float_sort(ctx);
+  return wrap(ctx, Z3_mk_fpa_to_fp_float(ctx, mode, single, wide));
 }
 
 z3::expr to_float(const SymValue& v) {
