@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/run_verdict.h"
 #include "core/duration_literal.h"
-#include "core/join.h"
 #include "core/time_format.h"
 #include "report/run_report.h"
 
@@ -44,7 +44,7 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
     for (const std::string& claim : end.claims->watched())
       input.checks.push_back({claim, false, 0, {}});
     for (const ClaimViolation& v : end.claims->violations()) {
-      std::string claim = (v.assumption ? "assumption " : "") + v.claim;
+      std::string claim = broken_claim_name(v);
       auto row = std::find_if(input.checks.begin(), input.checks.end(),
                               [&](const report::CheckRow& c) { return c.claim == claim; });
       if (row == input.checks.end())
@@ -53,30 +53,6 @@ report::RunReportInput report_input(const RunEnd& end, bool success, const std::
     }
   }
   return input;
-}
-
-// A run without an environment has no world to say whether it went well. It is judged by what
-// the runtime can tell is broken: a quarantined connection (its monitor kept failing), and a
-// message that could not be read as its port's type (a module, or a program across the
-// transport, does not keep the port's contract; a DDS sample that does not decode is one). Such
-// messages are dropped and counted; the verdict names them, so that `success` never stands over
-// a run whose messages all went unread. *success receives the verdict.
-std::string judge_without_environment(const Runtime& runtime, bool* success) {
-  std::vector<std::string> broken;
-  for (const ConnectionStats& s : runtime.stats()) {
-    if (s.quarantined) broken.push_back(s.name + " quarantined");
-    if (uint64_t n = s.drops(DropReason::BadType))
-      broken.push_back(std::to_string(n) + " bad-type into " + s.name);
-  }
-  for (const InputStats& s : runtime.input_stats()) {
-    if (uint64_t n = s.drops(DropReason::BadType))
-      broken.push_back(std::to_string(n) + " bad-type into " + s.port);
-  }
-  *success = broken.empty();
-  std::string verdict = std::string(*success ? "success" : "failure") +
-                        " (no environment; judged by quarantined connections and messages of the "
-                        "wrong type";
-  return verdict + (broken.empty() ? "" : ": " + join(broken, ", ")) + ")";
 }
 
 void print_run_line(const RunEnd& end, const std::string& stop_reason) {
@@ -118,9 +94,9 @@ void excluded_values(const RunEnd& end) {
       static_cast<unsigned long long>(n), n == 1 ? "message" : "messages");
 }
 
-// The runtime checks' lines; a violation makes the run a failure, named in the verdict (what
-// the proof no longer covers, and from when).
-void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
+// The runtime checks' lines; with --runtime-checks fail a violation makes the run a failure,
+// named in the verdict (what the proof no longer covers, and from when).
+void judge_claims(const RunEnd& end, RunVerdict* verdict) {
   if (!end.claims) return;
   end.claims->finish(end.runtime.now());
   const std::vector<ClaimViolation>& broken = end.claims->violations();
@@ -138,17 +114,11 @@ void judge_claims(const RunEnd& end, bool* success, std::string* verdict) {
   std::printf("runtime checks: %zu of %zu broken; the proof does not cover the run from %s%s:\n",
               broken.size(), end.claims->size(), duration_literal(broken.front().t).c_str(),
               end.claims_fail ? "" : " (--runtime-checks fail makes this a failure)");
-  std::vector<std::string> names;
-  for (const ClaimViolation& v : broken) {
-    std::string claim = (v.assumption ? "assumption " : "") + v.claim;
-    std::printf("  %s  %s: %s\n", duration_literal(v.t).c_str(), claim.c_str(), v.what.c_str());
-    names.push_back(claim + " at " + duration_literal(v.t));
-  }
+  for (const ClaimViolation& v : broken)
+    std::printf("  %s  %s: %s\n", duration_literal(v.t).c_str(), broken_claim_name(v).c_str(),
+                v.what.c_str());
   unwatched();
-  if (!end.claims_fail) return;
-  *success = false;
-  *verdict = "failure (runtime checks: " + join(names, "; ") + " broken" +
-             (verdict->rfind("success", 0) == 0 ? "" : "; " + *verdict) + ")";
+  *verdict = with_broken_claims(*verdict, broken, end.claims_fail);
 }
 
 }  // namespace
@@ -160,18 +130,17 @@ int finish_run(const RunEnd& end, const std::string& signal) {
   std::string stop = end.runtime.stop_reason();
   if (!signal.empty() && stop == "interrupted") stop += " by " + signal;
   print_run_line(end, stop);
-  bool success = true;
-  std::string verdict, summary;
+  RunVerdict verdict;
+  std::string summary;
   if (Environment* env = end.runtime.environment()) {
     summary = env->summary();
     if (!summary.empty()) {
       std::fputs(summary.c_str(), stdout);
       if (summary.back() != '\n') std::fputc('\n', stdout);
     }
-    success = env->success();
-    verdict = success ? "success" : "failure";
+    verdict = judge_by_environment(env->success());
   } else {
-    verdict = judge_without_environment(end.runtime, &success);
+    verdict = judge_without_environment(end.runtime.stats(), end.runtime.input_stats());
   }
   if (end.stand_ins) {
     std::string received = end.stand_ins();
@@ -179,12 +148,12 @@ int finish_run(const RunEnd& end, const std::string& signal) {
     summary += (summary.empty() || summary.back() == '\n' ? "" : "\n") + received;
   }
   excluded_values(end);
-  judge_claims(end, &success, &verdict);
-  std::printf("result: %s\n", verdict.c_str());
-  report::RunReportInput input = report_input(end, success, verdict, summary);
+  judge_claims(end, &verdict);
+  std::printf("result: %s\n", verdict.text.c_str());
+  report::RunReportInput input = report_input(end, verdict.success, verdict.text, summary);
   input.header.stop_reason = stop;
   if (!write_report(end, input)) return 3;
-  return success ? 0 : 3;
+  return verdict.success ? 0 : 3;
 }
 
 void give_up_stuck_run(const RunEnd& end, const std::string& signal, double waited) {

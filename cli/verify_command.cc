@@ -5,13 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/counterexample_files.h"
 #include "cli/duration_option.h"
 #include "cli/parse_error.h"
 #include "core/diagnostic.h"
@@ -21,9 +20,7 @@
 #include "harness/test_replayer.h"
 #include "import/yarp/yarp_directory.h"
 #include "import/yarp/yarp_verify.h"
-#include "verify/claim_test.h"
 #include "verify/report_format.h"
-#include "verify/temporal/counterexample.h"
 #include "verify/verify.h"
 
 namespace arbc::cli {
@@ -120,89 +117,6 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
     return exit_for_parse_error(cli, e);
   }
   return std::nullopt;
-}
-
-// Writes `text` to `path`; false (after saying why on stderr) when it cannot.
-bool write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) std::fprintf(stderr, "arbc verify: cannot write %s\n", path.string().c_str());
-  return static_cast<bool>(out);
-}
-
-// "M.p" as a file name part: "M_p".
-std::string file_part(std::string name) {
-  for (char& c : name) c = c == '.' ? '_' : c;
-  return name;
-}
-
-// Each replayed counterexample over time as DIR/APP.RULE[.KIND].test.spec.
-bool write_temporal(const verify::InputReport& r, const std::filesystem::path& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  for (const verify::TemporalResult& t : r.report.temporal) {
-    if (!t.replayed) continue;
-    fs::path spec = fs::proximate(fs::absolute(t.property.loc.file.str()), fs::absolute(dir), ec);
-    // APP.RULE.test.spec for spacing (APP.RULE.after_OTHER.test.spec after another rule);
-    // APP.RULE.KIND.test.spec for the others (a stability, which names no rule:
-    // APP.M_p.stability.test.spec).
-    std::string kind = std::string(".") + model::temporal_kind_name(t.property.kind);
-    if (t.property.kind == model::TemporalProperty::Kind::Spacing)
-      kind = t.property.other.empty() ? "" : ".after_" + t.property.other;
-    std::string who = t.property.rule.empty() ? file_part(t.property.port) : t.property.rule;
-    if (!write_file(
-            dir / (r.report.app + "." + who + kind + ".test.spec"),
-            verify::temporal::test_file_text(*t.replay_test, t.property, spec.generic_string())))
-      return false;
-  }
-  return true;
-}
-
-// A counterexample to a claim about single decisions (a port's exclusivity, an assert, a
-// resource) as DIR/APP.M_p.RULE[.RULE].KIND.test.spec (APP.NAME.RULE.RULE.resource for a resource):
-// a test that states the claim (verify/claim_test.h). One that cannot be replayed as a test is
-// written as a .txt file that says why and what the counterexample is, so that nothing is left out
-// silently. `where`: the port, or the resource, the claim is about.
-bool write_finding(const verify::InputReport& r, const verify::Finding& f, const std::string& where,
-                   const std::filesystem::path& dir, std::set<std::string>& used) {
-  namespace fs = std::filesystem;
-  if (!f.replay_test && f.not_replayable.empty()) return true;
-  std::string stem = r.report.app + "." + file_part(where);
-  for (const std::string& rule : f.rules) stem += "." + rule;
-  stem += "." + f.check;
-  std::string unique = stem;
-  for (int n = 2; !used.insert(unique).second; ++n) unique = stem + std::to_string(n);
-  if (!f.replay_test) {
-    std::string text = "Not written as a test: " + f.not_replayable + ".\n\n" + f.message + "\n";
-    for (const verify::Note& n : f.notes) text += "note: " + n.message + "\n";
-    return write_file(dir / (unique + ".txt"), text);
-  }
-  std::error_code ec;
-  fs::path spec = fs::proximate(fs::absolute(f.loc.file.str()), fs::absolute(dir), ec);
-  return write_file(
-      dir / (unique + ".test.spec"),
-      verify::counterexample_file_text(*f.replay_test, f.replay_test->expectations.at(0).text,
-                                       spec.generic_string(), verify::kDecisionTestHeader));
-}
-
-// Each counterexample the reports hold, as a tests file whose `tests for` names the spec
-// relative to DIR (docs/cli.md, --counterexamples). False (after saying why on stderr) when one
-// cannot be written.
-bool write_counterexamples(const std::vector<verify::InputReport>& reports,
-                           const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  std::set<std::string> used;  // file names written, so that none is overwritten
-  for (const verify::InputReport& r : reports) {
-    if (!write_temporal(r, dir)) return false;
-    for (const verify::PortResult& p : r.report.ports)
-      for (const verify::Finding& f : p.findings)
-        if (!write_finding(r, f, p.port, dir, used)) return false;
-    for (const verify::ResourceResult& res : r.report.resources)
-      for (const verify::Finding& f : res.findings)
-        if (!write_finding(r, f, res.name, dir, used)) return false;
-  }
-  return true;
 }
 
 // A disagreement between Z3 and the runtime is a bug: say so on stderr whatever the format.
