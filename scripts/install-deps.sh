@@ -46,6 +46,24 @@ npm_packages() {
     echo "install-deps: npm ci failed; the VS Code grammar test will be skipped" >&2
   fi
 }
+# The official SARIF 2.1.0 JSON schema for tests/artifacts/sarif_official.py: the npm registry
+# carries it inside @microsoft/jest-sarif; only the schema is kept, checked by its SHA-256.
+# Without the registry that test is skipped, not failed.
+sarif_schema() {
+  local dir=$root/tests/artifacts/official file=sarif-2.1.0-rtm.5.json tmp
+  local sum=2d99159ae54a3eea97f81781cff48780548657c35949f4b7f25e99a2ba4de4f8
+  [[ -f $dir/$file ]] && echo "$sum  $dir/$file" | sha256sum -c --status && return 0
+  echo "install-deps: the official SARIF schema (npm: @microsoft/jest-sarif)"
+  tmp=$(mktemp -d)
+  if (cd "$tmp" && npm pack --silent @microsoft/jest-sarif@1.0.0-beta.0 >/dev/null &&
+    tar xzf ./*.tgz "package/lib/schemas/$file") &&
+    echo "$sum  $tmp/package/lib/schemas/$file" | sha256sum -c --status; then
+    mkdir -p "$dir" && cp "$tmp/package/lib/schemas/$file" "$dir/"
+  else
+    echo "install-deps: could not fetch the official SARIF schema; its test will be skipped" >&2
+  fi
+  rm -rf "$tmp"
+}
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 missing=()
@@ -64,4 +82,5 @@ else
 fi
 if [[ "${1:-}" == "--test" ]]; then
   npm_packages
+  sarif_schema
 fi

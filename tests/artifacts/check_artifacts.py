@@ -17,7 +17,8 @@ read by the reader for its kind:
   app.json                   docs/app.schema.json (python3-jsonschema)
   other .json, .sarif        Python's JSON parser, strict: no NaN, no key twice
   .sarif                     sarif-2.1.0-subset.schema.json (this folder; why a subset: there),
-                             and every artifactLocation.uri an RFC 3986 URI reference
+                             and every artifactLocation.uri an RFC 3986 URI reference (the
+                             official schema: sarif_official.py, over the verify goldens)
   .lua                       luac5.4 -p
   .dot                       Graphviz's dot
   .md                        every relative link names a file that was written
