@@ -17,9 +17,8 @@ import re
 import signal
 import subprocess
 import sys
-import tempfile
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 
 def fail(message, *outputs):
@@ -32,7 +31,7 @@ def main():
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-bumper-")
+    out_dir = scratch_folder("arbc-dds-bumper-")
     interop = os.path.join(here, "interop")
     built = subprocess.run([arbc, "build", os.path.join(interop, "bumper.spec"), "-o", out_dir],
                            capture_output=True, text=True)

@@ -14,10 +14,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import time
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 RUN_SECONDS = 1.2  # each mediator's life: past the event's 500 ms lifetime since its start
 LAST_RUN_SECONDS = 6.0  # the last one's, whose counters are judged
@@ -34,7 +33,7 @@ def main():
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-bumper-restart-")
+    out_dir = scratch_folder("arbc-dds-bumper-restart-")
     interop = os.path.join(here, "interop")
     built = subprocess.run([arbc, "build", os.path.join(interop, "bumper.spec"), "-o", out_dir],
                            capture_output=True, text=True)

@@ -9,10 +9,13 @@ domain left behind (killed processes leave theirs): arbc takes a participant id 
 none (dds/shm_participant_id.h), so leftovers would push ids past the four that discovery by
 initial peers on 127.0.0.1 reaches.
 """
+import atexit
 import fcntl
 import glob
 import os
 import random
+import shutil
+import tempfile
 
 # Fast-DDS puts domain d on UDP ports from 7400 + 250 d (RTPS's default mapping: multicast
 # discovery there, each participant p's unicast ports at +10 + 2p and +11 + 2p). From domain
@@ -60,3 +63,11 @@ def remove_port_segments(domain):
 def environment(profile):
     """The environment of a DDS process of the tests: the loopback profile."""
     return dict(os.environ, FASTRTPS_DEFAULT_PROFILES_FILE=profile)
+
+
+def scratch_folder(prefix):
+    """A new folder under /tmp for one test's files, removed when the test's process ends
+    (hundreds were left behind otherwise); what a failure needs is printed before that."""
+    path = tempfile.mkdtemp(prefix=prefix)
+    atexit.register(shutil.rmtree, path, True)
+    return path

@@ -9,10 +9,10 @@ usage: dds_domain_range.py TESTS_DDS_DIR
 import os
 import random
 import sys
-import tempfile
 
 sys.path.insert(0, sys.argv[1])
 import dds_domain  # noqa: E402
+from dds_domain import scratch_folder
 
 PARTICIPANTS = 8  # more than any test runs in one domain
 
@@ -32,7 +32,7 @@ def ephemeral_low():
 
 
 def main():
-    locks = tempfile.mkdtemp(prefix="arbc-dds-domain-range-")
+    locks = scratch_folder("arbc-dds-domain-range-")
     real_open = open
     dds_domain.open = lambda path, mode: real_open(
         os.path.join(locks, os.path.basename(path)), mode)

@@ -21,10 +21,9 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 
 def fail(message, *outputs):
@@ -38,7 +37,7 @@ def main():
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-foreign-layout-")
+    out_dir = scratch_folder("arbc-dds-foreign-layout-")
     spec = os.path.join(out_dir, "teleop.spec")
     text = open(os.path.join(here, "interop", "teleop.spec")).read()
     twist = "type Twist = { linear: vec3, angular: vec3 };"

@@ -16,9 +16,8 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 
 def fail(message, *outputs):
@@ -30,7 +29,7 @@ def run(arbc, stream, sub, bumper, here, spec_text, bumper_args):
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
     domain = str(held.id)
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-checks-")
+    out_dir = scratch_folder("arbc-dds-checks-")
     spec = os.path.join(out_dir, "bumper_grips.spec")
     with open(spec, "w", encoding="utf-8") as f:
         f.write(spec_text)

@@ -20,10 +20,9 @@ import socket
 import struct
 import subprocess
 import sys
-import tempfile
 import time
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 
 def fail(message, *outputs):
@@ -86,7 +85,7 @@ def stop(proc):
 
 def main():
     arbc, spec, here = sys.argv[1:4]
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-profile-")
+    out_dir = scratch_folder("arbc-dds-profile-")
     built = subprocess.run([arbc, "build", spec, "-o", out_dir], capture_output=True, text=True)
     if built.returncode != 0:
         fail("arbc build", built.stdout + built.stderr)

@@ -30,10 +30,9 @@ import re
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from proc_signals import wait_until_caught  # noqa: E402
@@ -49,7 +48,7 @@ def fail(message):
 class Split:
     def __init__(self, arbc, plugin, spec, profile):
         self.arbc, self.plugin, self.profile = arbc, plugin, profile
-        self.dir = tempfile.mkdtemp(prefix="arbc-dds-split-")
+        self.dir = scratch_folder("arbc-dds-split-")
         built = subprocess.run([arbc, "build", spec, "-o", self.dir], capture_output=True, text=True)
         if built.returncode != 0:
             fail("arbc build: " + built.stdout + built.stderr)

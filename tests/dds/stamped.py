@@ -21,9 +21,8 @@ import signal
 import struct
 import subprocess
 import sys
-import tempfile
 
-from dds_domain import Domain, environment
+from dds_domain import Domain, environment, scratch_folder
 
 # Per message: the topic stamped_pub writes, the one stamped_sub reads, the DDS type, and the
 # connection of stamped.spec between them (a `connect`, and an arbitrated port's one rule).
@@ -173,7 +172,7 @@ def check_mediator(mediated, returncode, sent):
 
 def run(arbc, pub, sub, here, domain, env):
     """Builds the app, runs subscriber, mediator and publisher; their outputs."""
-    out_dir = tempfile.mkdtemp(prefix="arbc-dds-sized-types-")
+    out_dir = scratch_folder("arbc-dds-sized-types-")
     interop = os.path.join(here, "interop")
     built = subprocess.run([arbc, "build", os.path.join(interop, "stamped.spec"), "-o", out_dir],
                            capture_output=True, text=True)

@@ -2,13 +2,13 @@
 import os
 import subprocess
 import sys
-import tempfile
+from dds_domain import scratch_folder
 
 
 def build_teleop(arbc, here, prefix):
     """`arbc build` of interop/teleop.spec into a new temporary folder (named after `prefix`),
     returned; a failed build ends the test with its output."""
-    out_dir = tempfile.mkdtemp(prefix=prefix)
+    out_dir = scratch_folder(prefix)
     built = subprocess.run([arbc, "build", os.path.join(here, "interop", "teleop.spec"), "-o",
                             out_dir], capture_output=True, text=True)
     if built.returncode != 0:
