@@ -339,6 +339,8 @@ DataQuery::PredicateRange DataQuery::predicate_range(const model::Connection& c,
                                                      const model::BodyExpr& p) {
   PredicateRange range;
   if (!predicate_opaque_reason(c, p).empty()) return range;
+  auto known = ranges_.find({&c, &p});
+  if (known != ranges_.end()) return known->second;
   auto found = derived_.find(&p);
   if (found == derived_.end()) {
     model::BodyExpr negated;
@@ -354,12 +356,18 @@ DataQuery::PredicateRange DataQuery::predicate_range(const model::Connection& c,
   }
   // `accept p` passes when p has a value and is true; `accept not p`, a value and false; and
   // `p or not p` fails to pass only when p has no value (Lua evaluates p first either way).
+  bool unknown = false;
   auto can = [&](const model::BodyExpr& q, bool negate) {
-    return ask({{&c, &q, negate}}, nullptr, nullptr) != Answer::Unsat;
+    Answer a = ask({{&c, &q, negate}}, nullptr, nullptr);
+    unknown = unknown || a == Answer::Unknown;
+    return a != Answer::Unsat;
   };
   range.can_true = can(p, false);
   range.can_false = can(found->second.negated, false);
   range.can_fail = can(found->second.total, true);
+  // Kept only when the solver answered each: an answer the deadline cut short says "can",
+  // which a later query (with its own time) may sharpen.
+  if (!unknown) ranges_.emplace(std::make_pair(&c, &p), range);
   return range;
 }
 
