@@ -107,7 +107,9 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "exclusivity (APP.M_p.RULE.RULE.exclusive.test.spec), an assert over events "
                  "or over `emitted` (APP.M_p.RULE.assert.test.spec); `arbc test` of it fails until "
                  "the app is fixed. One a test cannot replay (a resource's) is written as a .txt "
-                 "that says why");
+                 "that says why. A second counterexample with the same name (two spacings of one "
+                 "rule) gets `2`, `3`, ... appended (APP.RULE2.test.spec), never overwriting the "
+                 "first");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");
   cli.add_option("--yarp-path", a.yarp_paths,
                  "a folder to search for the Lua monitors an APP.xml's carriers name (repeatable)");
