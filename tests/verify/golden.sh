@@ -74,6 +74,8 @@ golden findings.txt repo 1 tests/verify/findings.spec
 golden resource_name_fact.txt repo 1 tests/verify/resource_name_fact.spec
 golden resource_when_opaque.txt repo 1 tests/verify/resource_when_opaque.spec
 golden resource_one_order.txt repo 1 tests/verify/resource_one_order.spec
+# Kept apart only by a delivery event that some deliveries do not set: refuted by such a delivery.
+golden resource_some_deliveries.txt repo 1 tests/verify/resource_some_deliveries.spec
 # Lists of any length (issue 38 item 3): a rule that needs five elements, read through `len`
 # only, is refuted by a 5-element message (it was "proved" for lists of at most 4); bodies that
 # read `len` and constant indexes are proved for every length. A proof that rests on lists of
@@ -170,12 +172,16 @@ golden data_assert.json repo 1 --format json tests/verify/data_assert.spec
 golden data_assert.sarif repo 1 --format sarif tests/verify/data_assert.spec
 # An assert over data on a `script` rule: not proved, says why.
 golden data_assert_script.txt repo 1 tests/verify/data_assert_script.spec
+# An assert refuted only through monitor state (a `var`): printed with that state, not replayed
+# on a fresh monitor that lacks it (never an internal error).
+golden data_assert_state.txt repo 1 tests/verify/data_assert_state.spec
 # A script that sets an event under a computed name: it may set any event of its port, so an
 # unset elsewhere proves nothing and the property over time is unknown, not "holds".
 golden script_computed_event.txt repo 1 tests/verify/script_computed_event.spec
 # A body and its Lua monitor that disagree (an arbc bug, simulated): `internal`, also on stderr.
 golden internal_resource.txt repo 1 tests/verify/internal_resource/app.json
 golden internal_assert.txt repo 1 tests/verify/internal_assert/app.json
+golden internal_exclusive.txt repo 1 tests/verify/internal_exclusive/app.json
 # No arguments: specs/*.spec of the current directory (what the pre-commit hook runs).
 golden no_args_no_specs.txt empty 2
 golden no_args.txt specs 1

@@ -107,5 +107,36 @@ TEST(Confirm, HoldingPropertiesAreNotReplayed) {
   EXPECT_EQ(r.outcome, Outcome::HoldsToBound);
 }
 
+// e_x is present from 0s, then 'take' delivers at 0s and 0.999s: the spacing is broken, but so
+// is the assumption `assume e_x only after put` (nothing delivered 'put'): the replay is a run
+// the spec excludes, so it shows nothing (the mutant confirm-ignores-assumptions of
+// scripts/mutation_sites.txt).
+class AssumptionBreakingReplayer : public TestReplayer {
+ public:
+  std::optional<std::vector<ReplayRecord>> replay(const model::TestCase&, const std::string&,
+                                                  std::string*) const override {
+    return std::vector<ReplayRecord>{
+        {ReplayRecord::Kind::Set, Nanos(0), "feed", "e_x", kNever},
+        {ReplayRecord::Kind::Deliver, Nanos(0), "take", "", kNever},
+        {ReplayRecord::Kind::Deliver, nanos_from_seconds(0.999), "take", "", kNever}};
+  }
+};
+
+TEST(Confirm, AReplayThatBreaksAnAssumptionDoesNotConfirm) {
+  TemporalResult r = violated();
+  model::Assumption a;
+  a.event = "e_x";
+  a.port = "PickAndPlace.cmd";
+  a.after = "put";
+  r.assumptions = {a};
+  std::vector<Finding> findings;
+  AssumptionBreakingReplayer replayer;
+  std::string seen;
+  EXPECT_EQ(confirm_violation(&replayer, r, findings, &seen), Confirmation::NotShown);
+  EXPECT_FALSE(r.replayed);
+  EXPECT_TRUE(findings.empty());
+  EXPECT_NE(seen.find("breaks the assumption"), std::string::npos) << seen;
+}
+
 }  // namespace
 }  // namespace arbc::verify::temporal

@@ -106,5 +106,47 @@ TEST(FeedOutcomes, ALastingEventIsSetByMessagesOnly) {
   EXPECT_GE(messages, 2);  // one that sets e_pos, one that sets e_neg
 }
 
+// `e_pos = S.s : s.v > 0.0` and `e_rest = S.s : not (s.v > 0.0)`: every message of S.s sets
+// exactly one, so "both absent" is a combination no message gives, but it is the state before
+// S.s's first message. `go when not e_pos and not e_rest and e_b` delivers there once C.c has set
+// e_b: `never go while e_b` is violated by two messages. Bounded to one, k-induction's any state
+// must keep "both absent" (exclude()'s `start`), or the one-message step is unsat and the
+// property is "proved" (the mutant feed-start-excludes-no-message of scripts/mutation_sites.txt).
+model::App before_the_first_message_app() {
+  model::App app = feed_app(std::nullopt);
+  app.modules.push_back(
+      {"C", "", {{"c", model::Direction::Out, parse_type("{v: float}"), {}}}, {}});
+  app.events = {derived("e_pos", "(> (field v msg) 0.0)", std::nullopt),
+                derived("e_rest", "(not (> (field v msg) 0.0))", std::nullopt),
+                derived("e_b", "(> (field v msg) 0.0)", std::nullopt)};
+  app.events[2].source = "C.c";
+  app.connections[0].constraint = testing::parse("not e_pos and not e_rest and e_b");
+  app.connections[1].sets = app.connections[1].unsets = {"e_pos", "e_rest"};
+  model::Connection feed_c = app.connections[1];
+  feed_c.name = "feed_C_c";
+  feed_c.source = "C.c";
+  feed_c.sets = feed_c.unsets = {"e_b"};
+  app.connections.push_back(feed_c);
+  return app;
+}
+
+TEST(FeedOutcomes, AnyStateKeepsTheStateBeforeTheFirstMessage) {
+  model::App app = before_the_first_message_app();
+  model::TemporalProperty p{
+      model::TemporalProperty::Kind::Absence, "P.p", "go", 0s, {}, "e_b", "", false, {}};
+  for (int bound : {1, 2}) {
+    z3::context ctx;
+    DataQuery data(app, ctx, 4, std::chrono::steady_clock::now() + std::chrono::seconds(60));
+    std::string error;
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    std::optional<TemporalResult> r = check_absence(app, p, bound, ctx, &data, deadline, &error);
+    ASSERT_TRUE(r) << error;
+    if (bound == 1)
+      EXPECT_EQ(r->outcome, Outcome::HoldsToBound) << "bound 1: " << r->proof;
+    else
+      EXPECT_EQ(r->outcome, Outcome::Violated) << "bound 2";
+  }
+}
+
 }  // namespace
 }  // namespace arbc::verify::temporal
