@@ -105,9 +105,10 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
                  "a folder to write each counterexample into, as a tests file that states the "
                  "claim it breaks: a property over time (APP.RULE.test.spec), a port's "
                  "exclusivity (APP.M_p.RULE.RULE.exclusive.test.spec), an assert over events "
-                 "or over `emitted` (APP.M_p.RULE.assert.test.spec); `arbc test` of it fails until "
-                 "the app is fixed. One a test cannot replay (a resource's) is written as a .txt "
-                 "that says why. A second counterexample with the same name (two spacings of one "
+                 "or over `emitted` (APP.M_p.RULE.assert.test.spec), a resource "
+                 "(APP.NAME.RULE.RULE.resource.test.spec); `arbc test` of it fails until the app "
+                 "is fixed. One a test cannot replay is written as a .txt that says why. A second "
+                 "counterexample with the same name (two spacings of one "
                  "rule) gets `2`, `3`, ... appended (APP.RULE2.test.spec), never overwriting the "
                  "first");
   cli.add_flag("--stats", a.stats, "add timings and solver query counts");

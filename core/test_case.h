@@ -35,7 +35,8 @@ struct Expectation {
   // run are not judged).
   // Exclusive, Assert: a claim about single decisions (the port's exclusivity, an assert over
   // events) holds at every decision of the run, judged as the runtime checks judge it
-  // (runtime/decision_watch.h).
+  // (runtime/decision_watch.h). Resource: no two of the resource's ports receive a command that
+  // uses it in one event state (runtime/delivery_watch.h).
   enum class Kind {
     Receives,
     Nothing,
@@ -45,7 +46,8 @@ struct Expectation {
     Property,
     State,
     Exclusive,
-    Assert
+    Assert,
+    Resource
   };
   Kind kind = Kind::Receives;
   // Receives, Nothing: "Module.port", an in-port; Exclusive, Assert: arbitrated; State: the
@@ -60,6 +62,7 @@ struct Expectation {
   std::map<std::string, std::string> containers;
   std::optional<TemporalProperty> property;  // Property (none: sema reported its port)
   std::optional<Assertion> assertion;        // Assert
+  std::string resource;                      // Resource: its name
   // The window, both ends included; without one, the whole test.
   Nanos from{0}, to = kNever;
   std::string text;  // the expectation as written, for failure messages

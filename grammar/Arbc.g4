@@ -102,6 +102,9 @@ testStep
   // (runtime/decision_watch.h): the port's exclusivity, or an assert over events.
   | 'expect' 'exclusive' portRef ';'                                     # expectExclusive
   | 'expect' assertDecl                                                  # expectAssert
+  // A resource's claim (docs/checks.md#resource), judged as the runtime checks judge it
+  // (runtime/delivery_watch.h): no two of its ports receive a command that uses it in one state.
+  | 'expect' 'resource' ID ';'                                           # expectResource
   // An event state at an instant, read in the container of the port after `in` (each
   // arbitrated port holds its own events: docs/design.md#feeds).
   | 'expect' expr ('in' portRef)? testWindow ';'                        # expectState

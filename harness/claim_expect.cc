@@ -40,9 +40,72 @@ std::optional<ClaimBreach> data_assert_breach(model::App app, const model::Expec
   return std::nullopt;
 }
 
+// The value each delivery of the run carried, in order: the stand-ins received them (a trace
+// keeps no values). A delivery without its value is judged as the runtime judges one.
+class DeliveredValues {
+ public:
+  explicit DeliveredValues(const std::vector<Received>& received) : received_(received) {}
+  const Value* of(const TraceRecord& r) {
+    for (size_t i = next_; i < received_.size(); ++i) {
+      const Received& got = received_[i];
+      if (got.t > r.t) break;
+      if (got.t == r.t && got.port == r.port && got.connection == r.connection) {
+        next_ = i + 1;
+        return &got.value;
+      }
+    }
+    return nullptr;
+  }
+
+ private:
+  const std::vector<Received>& received_;
+  size_t next_ = 0;
+};
+
+// `expect resource R;` on `app`, which keeps only R: judged by the runtime's own check
+// (runtime/delivery_watch.h) over the containers of R's ports, rebuilt from the event records,
+// and each delivery into them with the value its stand-in received.
+std::optional<ClaimBreach> resource_breach(model::App app, const model::Expectation& e,
+                                           const TestRun& run) {
+  std::erase_if(app.resources, [&](const model::Resource& r) { return r.name != e.resource; });
+  if (app.resources.empty()) return std::nullopt;  // sema said so
+  for (model::ArbitratedPort& p : app.arbitrated_ports) p.asserts.clear();
+  lower::LoweredApp low;
+  low.app = std::move(app);
+  std::unique_ptr<DataClaims> claims;
+  if (low.app.resources[0].uses) {
+    std::optional<std::string> script = codegen::write_claims(low);
+    std::string err = "no claim";
+    if (script) claims = DataClaims::load(low.app, *script, codegen::kClaimsScript, &err);
+    if (!claims) return ClaimBreach{Nanos{0}, "the resource cannot be judged: " + err};
+  }
+  std::unordered_map<std::string, TraceContainer> boxes;
+  for (const std::string& port : low.app.resources[0].ports) boxes[port];
+  DeliveryWatch watch(low.app, claims.get(), boxes);
+  DeliveredValues values(run.received);
+  for (const TraceRecord& r : run.records) {
+    TraceLine line = trace_line_of(r);
+    watch.before(line);
+    auto box = boxes.find(r.port);
+    if (box == boxes.end()) continue;
+    if (r.kind == TraceKind::Event) {
+      box->second.apply(r);
+      watch.after(line, r.port);
+    } else if (r.kind == TraceKind::Deliver) {
+      line.value = values.of(r);
+      std::vector<DeliveryWatch::Breach> broke;
+      watch.delivered(line, r.port, &broke);
+      if (!broke.empty()) return ClaimBreach{r.t, broke[0].what};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<ClaimBreach> claim_breach(const model::Expectation& e, const TestRun& run) {
+  if (e.kind == model::Expectation::Kind::Resource && run.app)
+    return resource_breach(*run.app, e, run);
   if (!run.app || !run.app->find_arbitrated(e.port)) return std::nullopt;  // sema said so
   // The app with only the claim the test states: the watch judges that, not the asserts the
   // app declares (a kept counterexample still states its assert once the app drops it).

@@ -239,7 +239,8 @@ std::pair<Nanos, Nanos> failure_window(const model::Expectation& e, const TestRu
   if (e.kind == model::Expectation::Kind::Property) {
     if (std::optional<PropertyBreach> b = property_breach(e, run)) return {b->from, b->t};
   }
-  if (e.kind == model::Expectation::Kind::Exclusive || e.kind == model::Expectation::Kind::Assert) {
+  if (e.kind == model::Expectation::Kind::Exclusive || e.kind == model::Expectation::Kind::Assert ||
+      e.kind == model::Expectation::Kind::Resource) {
     if (std::optional<ClaimBreach> b = claim_breach(e, run)) return {b->t, b->t};
   }
   return {e.from, e.to};
@@ -261,6 +262,7 @@ std::string check_expectation(const model::Expectation& e, const TestRun& run) {
       return check_state(e, run);
     case model::Expectation::Kind::Exclusive:
     case model::Expectation::Kind::Assert:
+    case model::Expectation::Kind::Resource:
       if (std::optional<ClaimBreach> b = claim_breach(e, run)) return "but " + b->what;
       return "";
   }

@@ -81,7 +81,7 @@ std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery&
     const model::Connection& c = *r.rules[i];
     bool shared = false;
     for (const std::string& s : sources) shared |= s == c.source;
-    if (shared) continue;
+    if (shared && !r.message_per_rule) continue;
     std::optional<Value> message = r.messages[i];
     if (!message) message = witness(c, data, why_not);
     if (!message) return std::nullopt;
@@ -102,6 +102,14 @@ model::Expectation exclusive_claim(const std::string& port) {
   e.kind = model::Expectation::Kind::Exclusive;
   e.port = port;
   e.text = "exclusive " + port;
+  return e;
+}
+
+model::Expectation resource_claim(const std::string& name) {
+  model::Expectation e;
+  e.kind = model::Expectation::Kind::Resource;
+  e.resource = name;
+  e.text = "resource " + name;
   return e;
 }
 

@@ -30,7 +30,10 @@ struct DecisionReplay {
   EventState state;
   std::vector<const model::Connection*> rules;
   std::vector<std::optional<Value>> messages;  // parallel to rules
-  model::Expectation claim;                    // Kind::Exclusive or Kind::Assert, with its text
+  model::Expectation claim;  // Kind::Exclusive, Kind::Assert or Kind::Resource, with its text
+  // Each rule its own message, in order, even two of one source (a resource's two decisions one
+  // after the other); else rules of one source share the first one's.
+  bool message_per_rule = false;
 };
 
 // The solver that finds the messages of these tests, made at its first question, in a Z3
@@ -62,8 +65,10 @@ class ReplayData {
 std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery& data,
                                              const TestReplayer* replayer, std::string* why_not);
 
-// The expectation `expect exclusive PORT;`, and `expect assert PORT: RULE -> EXPR;`.
+// The expectations `expect exclusive PORT;`, `expect assert PORT: RULE -> EXPR;` and
+// `expect resource NAME;`.
 model::Expectation exclusive_claim(const std::string& port);
+model::Expectation resource_claim(const std::string& name);
 model::Expectation assert_claim(const std::string& port, const model::Assertion& a);
 
 // A replayed counterexample as the text of a tests file for the spec at `spec_path` (relative to

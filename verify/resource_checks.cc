@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/join.h"
+#include "verify/claim_test.h"
 #include "verify/data_pair.h"
 #include "verify/delivery_effects.h"
 #include "verify/joint_scope.h"
@@ -113,6 +114,8 @@ class ResourceChecker {
   void refuted(const Order& o, const DataWitness w[2]);
   bool replay(const Order& o, const std::vector<Value>& messages, MessageExample& ex,
               std::string* why);
+  std::optional<model::TestCase> resource_test(const Order& o, const std::vector<Value>& messages,
+                                               std::string* why_not);
 
   const model::App& app_;
   const std::vector<PortScope>& scopes_;
@@ -303,6 +306,47 @@ bool ResourceChecker::replay(const Order& o, const std::vector<Value>& messages,
   return true;
 }
 
+// The counterexample as a test (verify/claim_test.h): the state before the first decision, set
+// by name (a test's `set` reaches every container fed the event: where the state has an event
+// in one port only, the replay decides whether the test still breaks the claim), then each
+// rule's message in order, and `expect resource R;`.
+std::optional<model::TestCase> ResourceChecker::resource_test(const Order& o,
+                                                              const std::vector<Value>& messages,
+                                                              std::string* why_not) {
+  DecisionReplay d;
+  d.name = "counterexample: '" + o.first->connection->name + "' then '" +
+           o.second->connection->name + "' deliver commands that use " + res_.name;
+  std::set<std::string> present;
+  for (const std::string& e : o.state) present.insert(e.substr(0, e.find(' ')));  // "e in M.p"
+  // Events present in one port's copy, where the other port reads its own copy, absent.
+  std::vector<std::string> one_port;
+  for (const ResourceRule* r : {o.first, o.second}) {
+    const ResourceRule* other = r == o.first ? o.second : o.first;
+    const std::string& here = res_.ports[r->port];
+    const std::string& there = res_.ports[other->port];
+    for (const std::string& e : present) {
+      auto has = [&](const std::string& copy) {
+        return std::find(o.state.begin(), o.state.end(), copy) != o.state.end();
+      };
+      const std::vector<std::string>& read = other->scope->events;
+      if (has(e + " in " + here) && !has(e + " in " + there) &&
+          std::find(read.begin(), read.end(), e) != read.end())
+        one_port.push_back(e + " in " + here);
+    }
+  }
+  d.state.present.assign(present.begin(), present.end());
+  d.rules = {o.first->connection, o.second->connection};
+  d.messages = {messages[0], messages[1]};
+  d.claim = resource_claim(res_.name);
+  d.message_per_rule = true;
+  std::optional<model::TestCase> test = decision_test(d, data_, options_.test_replayer, why_not);
+  if (!test && !one_port.empty() && why_not->find("keeps the claim") != std::string::npos)
+    *why_not = "its state has " + join(one_port) +
+               " present, not in the other port, and a test's `set` reaches every port's "
+               "container fed the event: replayed that way, the app keeps the claim";
+  return test;
+}
+
 // `w[0]` is the first rule's witness, `w[1]` the second's.
 void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
   const ResourceRule& a = *o.first;
@@ -313,10 +357,6 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
   f.rule_locs = {a.connection->loc, b.connection->loc};
   f.message = pair_name(a, b) + " can both deliver a command that uses resource '" + res_.name +
               "' (two messages, one decision after the other in one event state)";
-  f.not_replayable =
-      "a test cannot hold two ports' event states still between the two decisions; a run "
-      "that delivers both in one state is reported by its runtime checks "
-      "(docs/runtime.md#runtime-checks)";
   f.notes.push_back({"in the event state (fewest events present): present: " +
                          (o.state.empty() ? std::string("none") : join(o.state)),
                      {}});
@@ -345,6 +385,7 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
                            " (abstracted: any value earlier messages could leave), so not "
                            "replayed",
                        {}});
+    f.not_replayable = "it needs monitor state that earlier messages would have to leave";
   } else if (options_.runner) {
     MessageExample ex;
     std::string why;
@@ -358,8 +399,10 @@ void ResourceChecker::refuted(const Order& o, const DataWitness w[2]) {
     }
     f.messages.back().replay = ex.replay;
     f.notes.push_back({"replayed through the Lua monitors: " + join(ex.replay, "; "), {}});
+    f.replay_test = resource_test(o, messages, &f.not_replayable);
   } else {
     f.notes.push_back({"not replayed (no monitor runner)", {}});
+    f.not_replayable = "it was not replayed";
   }
   f.notes.push_back(
       {"keep '" + b.connection->name + "' out after '" + a.connection->name +

@@ -429,11 +429,12 @@ struct TestExpect {
     State,            // `expect CONSTRAINT [in M.p] at D;`
     Exclusive,        // `expect exclusive M.p;`: no two rules of the port selected at once
     Assert,           // `expect assert M.p: RULE -> EXPR;`: EXPR holds at each delivery of RULE
+    Resource,         // `expect resource R;`: no two of R's ports receive a command using it
   };
   Kind kind = Kind::Receives;
   PortRef port;      // Receives, Nothing, Exclusive; State: `in M.p` (empty module: none)
   ExprPtr value;     // Receives: null means any value; State: the constraint
-  std::string rule;  // Drops, Delivers, DeliversNothing
+  std::string rule;  // Drops, Delivers, DeliversNothing; Resource: the resource
   Loc rule_loc;
   std::string reason;  // Drops: empty means any reason
   Loc reason_loc;

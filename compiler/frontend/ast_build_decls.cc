@@ -394,6 +394,10 @@ TestExpect Builder::test_expect(ArbcParser::TestStepContext* step) {
   } else if (auto* c = as<ArbcParser::ExpectAssertContext>(step)) {
     e.kind = TestExpect::Kind::Assert;
     e.assertion = std::make_shared<AssertDecl>(assert_decl(c->assertDecl()));
+  } else if (auto* c = as<ArbcParser::ExpectResourceContext>(step)) {
+    e.kind = TestExpect::Kind::Resource;
+    e.rule = tx(c->ID());
+    e.rule_loc = loc(c->ID());
   } else if (auto* c = as<ArbcParser::ExpectStateContext>(step)) {
     e.kind = TestExpect::Kind::State;
     e.value = expr(c->expr(), 0);

@@ -206,6 +206,25 @@ void Sema::check_test_claim(const TestDecl& t, TestExpect& e) {
     check_assert(*e.assertion);  // over events, or over `emitted` (each delivery of the rule)
     return;
   }
+  if (e.kind == TestExpect::Kind::Resource) {
+    std::vector<std::string> all;
+    for (const ResourceDecl& r : spec_.resources) {
+      all.push_back(r.name);
+      if (r.name != e.rule) continue;
+      if (t.on_rule)
+        error(e.loc,
+              "test \"" + t.name + "\" runs rule '" + t.on +
+                  "' alone: a resource is about rules of two of its ports; remove `on " + t.on +
+                  "`",
+              diag::TestPort);
+      return;
+    }
+    unknown(e.rule_loc,
+            "no resource is named '" + e.rule + "': `expect resource` states the claim of a " +
+                "declared `resource` (docs/checks.md#resource)",
+            diag::TestClaim, e.rule, all);
+    return;
+  }
   const ArbitrateDecl* a = arbitrated_port(e.port, "`expect exclusive`");
   if (!a) return;
   if (a->by_priority) {
@@ -292,6 +311,7 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
       break;
     case TestExpect::Kind::Exclusive:
     case TestExpect::Kind::Assert:
+    case TestExpect::Kind::Resource:
       check_test_claim(t, e);
       break;
     case TestExpect::Kind::State:

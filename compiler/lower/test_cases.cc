@@ -78,6 +78,10 @@ model::Expectation lower_expect(const ast::TestExpect& e) {
       out.kind = model::Expectation::Kind::Exclusive;
       out.port = e.port.qualified();
       break;
+    case ast::TestExpect::Kind::Resource:
+      out.kind = model::Expectation::Kind::Resource;
+      out.resource = e.rule;
+      break;
     case ast::TestExpect::Kind::Assert:
       out.kind = model::Expectation::Kind::Assert;
       out.port = e.assertion->port.qualified();
