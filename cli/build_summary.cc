@@ -74,7 +74,8 @@ std::string yarp_build_summary(const model::App& app, const std::string& spec,
   std::vector<std::string> unchecked = codegen::yarp_unchecked(app);
   if (checked)
     out += "  runtime checks in the monitors: " + count_of(checked, "check", "checks") +
-           " (asserts over `emitted`, list bounds), said on the receiving process's stderr\n";
+           " (asserts over `emitted`, list bounds, spacings of one rule, source rates), said on "
+           "the receiving process's stderr\n";
   if (!unchecked.empty())
     out += "  not checked at run time on YARP (its monitors cannot read a port's events): " +
            join(unchecked) + "; docs/yarp.md#runtime-checks\n";

@@ -297,6 +297,8 @@ std::string YarpMonitorWriter::callbacks() const {
   std::string guard_every = every ? "  pcall(arbc_every_due)\n" : "";
   std::string out = create();
   out += "PortMonitor.accept = function(thing)\n" + guard_every;
+  if (link_.delivering && !yarp_checked_rates(app_, app_.connections[*link_.delivering]).empty())
+    out += "  pcall(arbc_check_rates)  -- runtime checks: each message of the source\n";
   if (link_.delivering) {
     out += "  local ok, selected = pcall(arbc_accept, thing)\n";
     out += "  return ok and selected == true\nend\n\n";
@@ -315,6 +317,8 @@ std::string YarpMonitorWriter::callbacks() const {
     if (d.throttle) out += "  arbc_last_delivery = yarp.now()\n";
     if (!yarp_checked_asserts(app_, d).empty())
       out += "  pcall(arbc_check_claims, arbc_out_value, arbc_out)  -- runtime checks\n";
+    if (!yarp_checked_spacings(app_, d).empty())
+      out += "  pcall(arbc_check_spacings)  -- runtime checks\n";
     out +=
         "  pcall(function()\n    local b = thing:asBottle()\n    b:clear()\n"
         "    b:append(arbc_out)\n  end)\n  return thing\nend\n\n";

@@ -284,6 +284,52 @@ TEST_F(YarpTargetTest, RuntimeChecksSayABrokenAssertOverEmitted) {
   EXPECT_TRUE(receiver_alive());
 }
 
+// The checks of time (tests/yarp_real/timing.spec): the app without its throttle, built with
+// --no-verify, delivers messages less than 1 s apart (each send takes about 0.2 s, less than
+// the 500 ms rate), and the monitor says which property that breaks, once.
+TEST_F(YarpTargetTest, RuntimeChecksSayTwoDeliveriesCloserThanTheProofSays) {
+  std::string text = slurp(source_dir("tests/yarp_real/timing.spec"));
+  const std::string keep = "    throttle 1s;\n";
+  ASSERT_NE(text.find(keep), std::string::npos);
+  text.erase(text.find(keep), keep.size());
+  fs::path broken = dir_ / "broken.spec";
+  std::ofstream(broken) << text;
+  ASSERT_NO_FATAL_FAILURE(build_yarp(broken.string(), "yarp_timing", "--no-verify"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/Sensor/v:o", "1.0");
+  send("/Sensor/v:o", "2.0");
+  send("/Sensor/v:o", "3.0");
+  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("1.0", "2.0", "3.0"));
+  std::string log = receiver_log();
+  std::string said =
+      "arbc monitor Motor_cmd__pass (/Sensor/v:o -> /Motor/cmd:i): runtime check: never two pass "
+      "within 1s broken: 'pass' delivered twice 0.";
+  size_t at = log.find(said);
+  ASSERT_NE(at, std::string::npos) << log;
+  EXPECT_EQ(log.find(said, at + 1), std::string::npos) << log;  // later breaches are counted
+  EXPECT_EQ(log.find("given Sensor.v"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
+}
+
+// The app as proved: its throttle keeps the spacing (nothing said of it), and a silence of the
+// source longer than the `given` rate is said when the next message comes.
+TEST_F(YarpTargetTest, RuntimeChecksSayASourceSilentLongerThanItsRate) {
+  ASSERT_NO_FATAL_FAILURE(build_yarp("tests/yarp_real/timing.spec", "yarp_timing"));
+  ASSERT_NO_FATAL_FAILURE(wire());
+  send("/Sensor/v:o", "1.0");
+  send("/Sensor/v:o", "2.0");  // throttled
+  EXPECT_THAT(received("/Motor/cmd:i", 1.2), ::testing::ElementsAre("1.0"));
+  send("/Sensor/v:o", "3.0");
+  EXPECT_THAT(received("/Motor/cmd:i"), ::testing::ElementsAre("3.0"));
+  std::string log = receiver_log();
+  std::string said =
+      "arbc monitor Motor_cmd__pass (/Sensor/v:o -> /Motor/cmd:i): runtime check: assumption "
+      "given Sensor.v every 500ms broken: nothing from Sensor.v for ";
+  EXPECT_NE(log.find(said), std::string::npos) << log;
+  EXPECT_EQ(log.find("never two pass"), std::string::npos) << log;
+  EXPECT_TRUE(receiver_alive());
+}
+
 // Sized numbers (tests/yarp_real/sized.spec): a Bottle whose int8 holds 300 or whose float32
 // holds a float64 that would round is dropped as without the layout; 2^64 - 1, sent as the int64
 // -1, is greater than 5 for the uint64 comparison (math.ult), so it is delivered; 3 is not.

@@ -178,6 +178,32 @@ arbc_part_1.update = function(gaze)
 end
 end
 
+-- ---- Runtime checks (docs/yarp.md#runtime-checks)
+-- The rate the proof assumed of the source, judged at each message it sends: a
+-- breach is said the first time and counted when the connection goes.
+local arbc_rates = {
+  { text = "given LookAround.gaze every 200ms", port = "LookAround.gaze", period = 0.2, broken = 0 },
+}
+local arbc_last_heard = nil
+local function arbc_check_rates()
+  local now = yarp.now()
+  for _, r in ipairs(arbc_rates) do
+    if arbc_last_heard ~= nil and now > arbc_last_heard + r.period then
+      r.broken = r.broken + 1
+      if r.broken == 1 then
+        io.stderr:write("arbc monitor HeadControl_gaze__search (/LookAround/gaze:o -> /HeadControl/gaze:i): runtime check: assumption " .. r.text .. " broken: nothing from " .. r.port .. " for " .. string.format("%.3f", now - arbc_last_heard) .. "s (later breaches are counted)\n")
+      end
+    end
+  end
+  arbc_last_heard = now
+end
+
+local function arbc_checks_destroy()
+  for _, c in ipairs(arbc_rates) do
+    if c.broken > 0 then io.stderr:write("arbc monitor HeadControl_gaze__search (/LookAround/gaze:o -> /HeadControl/gaze:i): runtime check: assumption " .. c.text .. " broken by " .. c.broken .. " gaps\n") end
+  end
+end
+
 -- The embedded runtime's message path (docs/design.md#the-message-path), in accept:
 -- the parts run in the spec's order, each under pcall; a feed never delivers.
 local arbc_out = nil  -- the Bottle update() delivers, made by accept
@@ -216,6 +242,7 @@ PortMonitor.create = function(options)
 end
 
 PortMonitor.accept = function(thing)
+  pcall(arbc_check_rates)  -- runtime checks: each message of the source
   local ok, selected = pcall(arbc_accept, thing)
   return ok and selected == true
 end
@@ -232,4 +259,5 @@ end
 
 -- YARP keeps a monitor's events after its connection is gone: unset them.
 PortMonitor.destroy = function()
+  pcall(arbc_checks_destroy)
 end

@@ -217,6 +217,32 @@ arbc_part_1.update = function(objects)
 end
 end
 
+-- ---- Runtime checks (docs/yarp.md#runtime-checks)
+-- Properties over time of 'take' alone, judged at each of its deliveries: a breach is
+-- said the first time and counted when the connection goes.
+local arbc_spacings = {
+  { text = "never two take within 1s", window = 1.0, broken = 0 },
+}
+local arbc_last_delivered = nil
+local function arbc_check_spacings()
+  local now = yarp.now()
+  for _, s in ipairs(arbc_spacings) do
+    if arbc_last_delivered ~= nil and now < arbc_last_delivered + s.window then
+      s.broken = s.broken + 1
+      if s.broken == 1 then
+        io.stderr:write("arbc monitor PickAndPlace_cmd__take (/ObjectDetector/objects:o -> /PickAndPlace/cmd:i): runtime check: " .. s.text .. " broken: 'take' delivered twice " .. string.format("%.3f", now - arbc_last_delivered) .. "s apart (later breaches are counted)\n")
+      end
+    end
+  end
+  arbc_last_delivered = now
+end
+
+local function arbc_checks_destroy()
+  for _, c in ipairs(arbc_spacings) do
+    if c.broken > 0 then io.stderr:write("arbc monitor PickAndPlace_cmd__take (/ObjectDetector/objects:o -> /PickAndPlace/cmd:i): runtime check: " .. c.text .. " broken by " .. c.broken .. " deliveries\n") end
+  end
+end
+
 -- The embedded runtime's message path (docs/design.md#the-message-path), in accept:
 -- the parts run in the spec's order, each under pcall; a feed never delivers.
 local arbc_out = nil  -- the Bottle update() delivers, made by accept
@@ -261,6 +287,7 @@ end
 
 -- Runs on what the constraint selected: the delivery.
 PortMonitor.update = function(thing)
+  pcall(arbc_check_spacings)  -- runtime checks
   pcall(function()
     local b = thing:asBottle()
     b:clear()
@@ -271,4 +298,5 @@ end
 
 -- YARP keeps a monitor's events after its connection is gone: unset them.
 PortMonitor.destroy = function()
+  pcall(arbc_checks_destroy)
 end

@@ -205,6 +205,32 @@ arbc_part_2.accept = function(face)
 end
 end
 
+-- ---- Runtime checks (docs/yarp.md#runtime-checks)
+-- Properties over time of 'ask' alone, judged at each of its deliveries: a breach is
+-- said the first time and counted when the connection goes.
+local arbc_spacings = {
+  { text = "never two ask within 5s", window = 5.0, broken = 0 },
+}
+local arbc_last_delivered = nil
+local function arbc_check_spacings()
+  local now = yarp.now()
+  for _, s in ipairs(arbc_spacings) do
+    if arbc_last_delivered ~= nil and now < arbc_last_delivered + s.window then
+      s.broken = s.broken + 1
+      if s.broken == 1 then
+        io.stderr:write("arbc monitor Speak_text__ask (/FaceDetector/face:o -> /Speak/text:i): runtime check: " .. s.text .. " broken: 'ask' delivered twice " .. string.format("%.3f", now - arbc_last_delivered) .. "s apart (later breaches are counted)\n")
+      end
+    end
+  end
+  arbc_last_delivered = now
+end
+
+local function arbc_checks_destroy()
+  for _, c in ipairs(arbc_spacings) do
+    if c.broken > 0 then io.stderr:write("arbc monitor Speak_text__ask (/FaceDetector/face:o -> /Speak/text:i): runtime check: " .. c.text .. " broken by " .. c.broken .. " deliveries\n") end
+  end
+end
+
 -- The embedded runtime's message path (docs/design.md#the-message-path), in accept:
 -- the parts run in the spec's order, each under pcall; a feed never delivers.
 local arbc_out = nil  -- the Bottle update() delivers, made by accept
@@ -253,6 +279,7 @@ end
 -- Runs on what the constraint selected: the delivery.
 PortMonitor.update = function(thing)
   arbc_last_delivery = yarp.now()
+  pcall(arbc_check_spacings)  -- runtime checks
   pcall(function()
     local b = thing:asBottle()
     b:clear()
@@ -263,5 +290,6 @@ end
 
 -- YARP keeps a monitor's events after its connection is gone: unset them.
 PortMonitor.destroy = function()
+  pcall(arbc_checks_destroy)
   PortMonitor.unsetEvent("E10_speak_text__e_face_detected")
 end
