@@ -24,7 +24,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "lsp"))
 from lsp_client import LspClient, file_uri, position_of  # noqa: E402
 
-WORD, TYPO = "e_arm_idle and e_pull_idle {", "e_arm_idel and e_pull_idle {"
+WORD, TYPO = "e_arm_idle and e_pull_idle hold 1s {", "e_arm_idel and e_pull_idle hold 1s {"
 
 
 def ms(seconds):
