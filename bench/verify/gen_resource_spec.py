@@ -4,10 +4,13 @@
 usage: gen_resource_spec.py RULES PORTS OUT.spec [--no-resource]
 
 Every rule reads the same source and is selected in the same event state (`when e_idle`), so
-only message data keeps rules apart: rule k accepts a reading whose `d` lies in its own band
-[k/10, (k+1)/10) and emits a command that moves the arm. Every pair of rules (the ports'
-own and the resource's) is exclusive by data, so `arbc verify` proves the spec. With
---no-resource the resource is left out: the per-port proofs alone (the baseline).
+only message data keeps the rules of one port apart: rule k accepts a reading whose `d` lies in
+its own band [k/10, (k+1)/10) and emits a command that moves the arm. A resource is proved over
+two decisions in a row (docs/checks.md#resource), and the next message may be another, so data
+alone does not keep two ports apart: each port's delivery sets a delivery event (`e_busyP`, what
+the arm was told, unless it is "stop") that every other port's rules exclude, as
+docs/checks.md's fix says. `arbc verify` proves the spec. With --no-resource the resource is
+left out (the events stay): the per-port proofs alone (the baseline).
 """
 import sys
 
@@ -26,9 +29,12 @@ def main():
     for p in range(ports):
         lines.append(f"module Arm{p} {{ in cmd: Cmd; }}")
     for p in range(ports):
+        lines.append(f'event e_busy{p} = Arm{p}.cmd : cmd.verb != "stop" for 1s;')
+    for p in range(ports):
+        others = "".join(f" and not e_busy{q}" for q in range(ports) if q != p)
         lines.append(f"arbitrate Arm{p}.cmd {{")
         for k in range(p, rules, ports):
-            lines.append(f"  r{k}: from Sensor.reading when e_idle {{")
+            lines.append(f"  r{k}: from Sensor.reading when e_idle{others} {{")
             lines.append(f"    accept reading.d >= {k / 10:.1f} and reading.d < {(k + 1) / 10:.1f};")
             lines.append(f'    if reading.zone > {k % 7} {{ emit {{ verb: "move", speed: reading.d * 2.0 }}; }}')
             lines.append(f'    else {{ emit {{ verb: "slow", speed: reading.d }}; }}')
