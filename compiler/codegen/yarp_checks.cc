@@ -12,6 +12,15 @@ namespace arbc::codegen {
 
 namespace {
 
+// The body of a check's `if` when it is broken: count the breach in `var`.broken and say the
+// first one on stderr (`said`: a Lua expression), indented for a check inside a `for` loop.
+void count_breach(const std::string& var, const std::string& said, LuaWriter& out) {
+  out.line("      " + var + ".broken = " + var + ".broken + 1");
+  out.line("      if " + var + ".broken == 1 then");
+  out.line("        io.stderr:write(" + said + ")");
+  out.line("      end");
+}
+
 // The list bound: the longest list anywhere in the message, as the embedded runtime measures it
 // (runtime/message_path.cc), read through the message's type descriptor.
 void bound_lua(const model::Connection& rule, const std::string& who, LuaWriter& out) {
@@ -85,13 +94,12 @@ void claims_lua(const std::vector<const model::Assertion*>& asserts, const model
   out.line("  for _, c in ipairs(arbc_claims) do");
   out.line("    local ok, holds = pcall(c.holds, value)");
   out.line("    if not ok or holds ~= true then");
-  out.line("      c.broken = c.broken + 1");
-  out.line("      if c.broken == 1 then");
-  out.line("        io.stderr:write(" + lua_string(who + ": runtime check: ") + " .. c.text .. " +
-           lua_string(" broken: '" + rule.name + "' delivered `") +
-           " .. bottle:toString() .. \"`, for which it is \" .. (ok and \"false\" or "
-           "\"undefined\") .. \" (later breaches are counted)\\n\")");
-  out.line("      end");
+  count_breach("c",
+               lua_string(who + ": runtime check: ") + " .. c.text .. " +
+                   lua_string(" broken: '" + rule.name + "' delivered `") +
+                   " .. bottle:toString() .. \"`, for which it is \" .. (ok and \"false\" or "
+                   "\"undefined\") .. \" (later breaches are counted)\\n\"",
+               out);
   out.line("    end");
   out.line("  end");
   out.line("end");
@@ -117,13 +125,12 @@ void spacings_lua(const std::vector<const model::TemporalProperty*>& spacings,
   out.line("  local now = yarp.now()");
   out.line("  for _, s in ipairs(arbc_spacings) do");
   out.line("    if arbc_last_delivered ~= nil and now < arbc_last_delivered + s.window then");
-  out.line("      s.broken = s.broken + 1");
-  out.line("      if s.broken == 1 then");
-  out.line("        io.stderr:write(" + lua_string(who + ": runtime check: ") + " .. s.text .. " +
-           lua_string(" broken: '" + rule.name + "' delivered twice ") +
-           " .. string.format(\"%.3f\", now - arbc_last_delivered) .. " +
-           lua_string("s apart (later breaches are counted)\n") + ")");
-  out.line("      end");
+  count_breach("s",
+               lua_string(who + ": runtime check: ") + " .. s.text .. " +
+                   lua_string(" broken: '" + rule.name + "' delivered twice ") +
+                   " .. string.format(\"%.3f\", now - arbc_last_delivered) .. " +
+                   lua_string("s apart (later breaches are counted)\n"),
+               out);
   out.line("    end");
   out.line("  end");
   out.line("  arbc_last_delivered = now");
@@ -151,13 +158,12 @@ void rates_lua(const std::vector<const model::SourceRate*>& rates, const std::st
   out.line("  local now = yarp.now()");
   out.line("  for _, r in ipairs(arbc_rates) do");
   out.line("    if arbc_last_heard ~= nil and now > arbc_last_heard + r.period then");
-  out.line("      r.broken = r.broken + 1");
-  out.line("      if r.broken == 1 then");
-  out.line("        io.stderr:write(" + lua_string(who + ": runtime check: assumption ") +
-           " .. r.text .. \" broken: nothing from \" .. r.port .. \" for \" .. "
-           "string.format(\"%.3f\", now - arbc_last_heard) .. " +
-           lua_string("s (later breaches are counted)\n") + ")");
-  out.line("      end");
+  count_breach("r",
+               lua_string(who + ": runtime check: assumption ") +
+                   " .. r.text .. \" broken: nothing from \" .. r.port .. \" for \" .. "
+                   "string.format(\"%.3f\", now - arbc_last_heard) .. " +
+                   lua_string("s (later breaches are counted)\n"),
+               out);
   out.line("    end");
   out.line("  end");
   out.line("  arbc_last_heard = now");
@@ -207,15 +213,16 @@ std::vector<const model::SourceRate*> yarp_checked_rates(const model::App& app,
                                                          const model::Connection& rule) {
   std::vector<const model::SourceRate*> out;
   if (rule.kind != model::ConnectionKind::Rule) return out;
+  for (const model::SourceRate& r : app.rates)
+    if (r.port == rule.source) out.push_back(&r);
+  if (out.empty()) return out;  // most rules: no scan of the connections
   // The first rule of the source watches (one report per breach); the first connection of a
   // (source, destination) pair that is not a feed is the one that delivers (yarp_names.h).
   for (const model::Connection& c : app.connections) {
     if (c.source != rule.source || c.kind == model::ConnectionKind::Feed) continue;
-    if (&c != &rule) return out;
+    if (&c != &rule) out.clear();
     break;
   }
-  for (const model::SourceRate& r : app.rates)
-    if (r.port == rule.source) out.push_back(&r);
   return out;
 }
 
