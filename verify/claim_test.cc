@@ -33,16 +33,20 @@ std::optional<Value> witness(const model::Connection& c, DataQuery& data, std::s
 }
 
 // Runs the test: it must break its claim on the app it came from.
-bool breaks_claim(const model::TestCase& test, const TestReplayer* replayer, std::string* why_not) {
+bool breaks_claim(const model::TestCase& test, const TestReplayer* replayer,
+                  const std::string& kept_because, std::string* why_not) {
   if (!replayer) return true;
   std::string err;
   std::optional<std::string> failure = replayer->judge(test, &err);
   if (!failure)
     *why_not = "its replay on the runtime could not be run (" + err + ")";
   else if (failure->empty())
-    *why_not =
-        "its replay on the runtime keeps the claim (a monitor of the same source may change the "
-        "events before the decision), so the test would pass on this app";
+    *why_not = "its replay on the runtime keeps the claim (" +
+               (kept_because.empty()
+                    ? std::string("a monitor of the same source may change the events before "
+                                  "the decision")
+                    : kept_because) +
+               "), so the test would pass on this app";
   return failure && !failure->empty();
 }
 
@@ -93,7 +97,7 @@ std::optional<model::TestCase> decision_test(const DecisionReplay& r, DataQuery&
     sources.push_back(c.source);
   }
   test.expectations.push_back(r.claim);
-  if (!breaks_claim(test, replayer, why_not)) return std::nullopt;
+  if (!breaks_claim(test, replayer, r.kept_because, why_not)) return std::nullopt;
   return test;
 }
 

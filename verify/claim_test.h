@@ -34,6 +34,9 @@ struct DecisionReplay {
   // Each rule its own message, in order, even two of one source (a resource's two decisions one
   // after the other); else rules of one source share the first one's.
   bool message_per_rule = false;
+  // Why a replay may keep the claim, said when it does; empty: a monitor of the same source may
+  // change the events before the decision.
+  std::string kept_because = {};
 };
 
 // The solver that finds the messages of these tests, made at its first question, in a Z3

@@ -339,12 +339,11 @@ std::optional<model::TestCase> ResourceChecker::resource_test(const Order& o,
   d.messages = {messages[0], messages[1]};
   d.claim = resource_claim(res_.name);
   d.message_per_rule = true;
-  std::optional<model::TestCase> test = decision_test(d, data_, options_.test_replayer, why_not);
-  if (!test && !one_port.empty() && why_not->find("keeps the claim") != std::string::npos)
-    *why_not = "its state has " + join(one_port) +
-               " present, not in the other port, and a test's `set` reaches every port's "
-               "container fed the event: replayed that way, the app keeps the claim";
-  return test;
+  if (!one_port.empty())
+    d.kept_because = "its state has " + join(one_port) +
+                     " present, not in the other port, and a test's `set` reaches every port's "
+                     "container fed the event";
+  return decision_test(d, data_, options_.test_replayer, why_not);
 }
 
 // `w[0]` is the first rule's witness, `w[1]` the second's.
