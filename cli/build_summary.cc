@@ -70,12 +70,11 @@ std::string yarp_build_summary(const model::App& app, const std::string& spec,
          count_of(app.connections.size(), "connection", "connections") +
          " (connections that share a source and a destination are one YARP connection)\n";
   // What the monitors check at run time of the proof, and what no YARP monitor can.
-  size_t checked = codegen::yarp_checked_count(app);
+  std::vector<std::string> checked = codegen::yarp_checked(app);
   std::vector<std::string> unchecked = codegen::yarp_unchecked(app);
-  if (checked)
-    out += "  runtime checks in the monitors: " + count_of(checked, "check", "checks") +
-           " (asserts over `emitted`, list bounds, spacings of one rule, source rates), said on "
-           "the receiving process's stderr\n";
+  if (!checked.empty())
+    out += "  runtime checks in the monitors: " + join(checked) +
+           ", said on the receiving process's stderr\n";
   if (!unchecked.empty())
     out += "  not checked at run time on YARP (its monitors cannot read a port's events): " +
            join(unchecked) + "; docs/yarp.md#runtime-checks\n";

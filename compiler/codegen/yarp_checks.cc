@@ -277,14 +277,24 @@ std::vector<std::string> yarp_unchecked(const model::App& app) {
   return out;
 }
 
-size_t yarp_checked_count(const model::App& app) {
-  size_t n = 0;
+std::vector<std::string> yarp_checked(const model::App& app) {
+  size_t asserts = 0, bounds = 0, spacings = 0, rates = 0;
   for (const model::Connection& c : app.connections) {
     if (c.kind != model::ConnectionKind::Rule) continue;
-    n += yarp_checked_asserts(app, c).size() + (c.list_bound > 0 ? 1 : 0) +
-         yarp_checked_spacings(app, c).size() + yarp_checked_rates(app, c).size();
+    asserts += yarp_checked_asserts(app, c).size();
+    bounds += c.list_bound > 0 ? 1 : 0;
+    spacings += yarp_checked_spacings(app, c).size();
+    rates += yarp_checked_rates(app, c).size();
   }
-  return n;
+  std::vector<std::string> out;
+  auto add = [&](size_t n, const char* one, const char* many) {
+    if (n) out.push_back(count_of(n, one, many));
+  };
+  add(asserts, "assert over `emitted`", "asserts over `emitted`");
+  add(bounds, "list bound", "list bounds");
+  add(spacings, "spacing of one rule", "spacings of one rule");
+  add(rates, "source rate", "source rates");
+  return out;
 }
 
 }  // namespace arbc::codegen

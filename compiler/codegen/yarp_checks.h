@@ -49,8 +49,8 @@ std::string yarp_checks_lua(const model::App& app, const model::Connection& rule
 // ("exclusivity of 2 ports"); empty when every one is checked.
 std::vector<std::string> yarp_unchecked(const model::App& app);
 
-// How many checks the YARP monitors of `app` carry (asserts over `emitted`, list bounds,
-// spacings, rates).
-size_t yarp_checked_count(const model::App& app);
+// The checks the YARP monitors of `app` carry, one phrase per kind with its count ("2 list
+// bounds", "1 source rate"); empty when they carry none.
+std::vector<std::string> yarp_checked(const model::App& app);
 
 }  // namespace arbc::codegen
