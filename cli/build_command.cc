@@ -15,6 +15,7 @@
 #include "cli/build_summary.h"
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
@@ -45,6 +46,8 @@ std::optional<int> parse_args(std::span<char*> args, BuildRequest& a) {
       "Nothing is written when the proof fails (exit 1) or the spec has errors (exit 2).",
       "arbc build"};
   cli.add_option("SPEC", a.spec, "the spec file, e.g. specs/table_clean.spec")->required();
+  std::vector<std::string> msg_path;
+  add_msg_path_option(cli, &msg_path);
   cli.add_option("-o,--output", a.out_dir, "directory to write DIR/<app>/ into")
       ->default_val("out");
   cli.add_option("--target", a.target_name, "code-generation target: " + target_list())

@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/left_at_exit.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "compiler/frontend/frontend.h"
 #include "compiler/lower/compile_spec.h"
@@ -48,6 +49,8 @@ int check_command(std::span<char*> args) {
   std::string format = "text";
   bool list_ids = false;
   app.add_option("SPEC", specs, "spec files to check")->type_name("FILE");
+  std::vector<std::string> msg_path;
+  add_msg_path_option(app, &msg_path);
   app.add_option("--format", format, "text (compiler style, on stderr) or json (on stdout)")
       ->check(CLI::IsMember({"text", "json"}));
   app.add_flag("--list-ids", list_ids,

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "cli/commands.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "compiler/docs/graph_docs.h"
 #include "compiler/docs/markdown_docs.h"
@@ -52,6 +53,8 @@ int docs_command(std::span<char*> args) {
   std::string input;
   std::string out_dir = "docs-out";
   cli.add_option("SPEC", input, "the spec (or a built app.json, or its directory)")->required();
+  std::vector<std::string> msg_path;
+  add_msg_path_option(cli, &msg_path);
   cli.add_option("-o,--output", out_dir, "directory to write into (default: docs-out)");
   try {
     cli.parse(static_cast<int>(args.size()), args.data());

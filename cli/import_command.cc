@@ -1,5 +1,6 @@
 // `arbc import yarp APP.xml -o app.spec`: a yarpmanager application as a spec whose rules run
-// the original Lua monitors (docs/yarp.md#moving-to-a-spec).
+// the original Lua monitors (docs/yarp.md#moving-to-a-spec). `arbc import ros2-msg FILE.msg|DIR
+// -o types.spec`: ROS 2 message definitions as `type` declarations (docs/language.md).
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/parse_error.h"
 #include "core/diagnostic.h"
+#include "import/ros2/msg_import.h"
 #include "import/yarp/spec_writer.h"
 #include "import/yarp/yarp_import.h"
 
@@ -21,7 +23,35 @@ constexpr const char* kDescription =
     "Write a spec equivalent to an application written for another middleware. `yarp`: a\n"
     "yarpmanager application XML and its Lua port monitors; rules become `script` rules that\n"
     "run the original monitors (docs/yarp.md). YARP hazards are reported as warnings.\n"
+    "`ros2-msg`: ROS 2 .msg files (one, a package's or a folder of packages') as `type`\n"
+    "declarations, the records `use ros2` declares (docs/language.md).\n"
     "Exit codes: 0 written, 2 bad input.";
+
+// Writes `text` to `output`; false (said on stderr) when it cannot.
+bool write_output(const std::string& output, const std::string& text) {
+  errno = 0;
+  std::ofstream out(output, std::ios::binary);
+  out << text;
+  if (out.flush()) return true;
+  // Say why (most often: -o names a folder that does not exist), as `arbc run --report` does.
+  std::fprintf(stderr, "arbc import: cannot write %s: %s\n", output.c_str(),
+               errno ? std::strerror(errno) : "write failed");
+  return false;
+}
+
+int import_ros2_msg(const std::string& input, const std::string& output) {
+  ros2_import::MsgImport im = ros2_import::import_ros2_messages(input);
+  SourceCache sources;
+  for (const Diagnostic& d : im.diagnostics) std::fputs(render(d, &sources).c_str(), stderr);
+  if (!im.ok) {
+    std::fprintf(stderr, "arbc import: %s: nothing written (fix the errors above)\n",
+                 input.c_str());
+    return kExitBadInput;
+  }
+  if (!write_output(output, im.spec)) return kExitBadInput;
+  std::fprintf(stderr, "arbc import: wrote %s\n", output.c_str());
+  return kExitOk;
+}
 
 }  // namespace
 
@@ -29,8 +59,12 @@ int import_command(std::span<char*> args) {
   CLI::App cli(kDescription, "arbc import");
   std::string kind, input, output;
   std::vector<std::string> search_paths;
-  cli.add_option("kind", kind, "what to import: yarp")->required()->check(CLI::IsMember({"yarp"}));
-  cli.add_option("input", input, "the yarpmanager application XML")->required();
+  cli.add_option("kind", kind, "what to import: yarp or ros2-msg")
+      ->required()
+      ->check(CLI::IsMember({"yarp", "ros2-msg"}));
+  cli.add_option("input", input,
+                 "yarp: the yarpmanager application XML; ros2-msg: a .msg file or a folder")
+      ->required();
   cli.add_option("-o,--output", output, "the spec to write")->required();
   cli.add_option("--yarp-path", search_paths,
                  "a folder to search for the Lua monitors the carriers name (repeatable)");
@@ -39,6 +73,7 @@ int import_command(std::span<char*> args) {
   } catch (const CLI::ParseError& e) {
     return exit_for_parse_error(cli, e);
   }
+  if (kind == "ros2-msg") return import_ros2_msg(input, output);
   yarp::YarpImport im = yarp::import_yarp(input, {search_paths});
   SourceCache sources;
   for (Diagnostic d : im.diagnostics) {
@@ -53,15 +88,7 @@ int import_command(std::span<char*> args) {
   std::vector<Diagnostic> renamed;
   std::string spec = yarp::write_spec(im, output, renamed);
   for (const Diagnostic& d : renamed) std::fputs(render(d, &sources).c_str(), stderr);
-  errno = 0;
-  std::ofstream out(output, std::ios::binary);
-  out << spec;
-  if (!out.flush()) {
-    // Say why (most often: -o names a folder that does not exist), as `arbc run --report` does.
-    std::fprintf(stderr, "arbc import: cannot write %s: %s\n", output.c_str(),
-                 errno ? std::strerror(errno) : "write failed");
-    return kExitBadInput;
-  }
+  if (!write_output(output, spec)) return kExitBadInput;
   size_t n = im.app.connections.size();
   std::fprintf(stderr, "arbc import: wrote %s (%zu connection%s)\n", output.c_str(), n,
                n == 1 ? "" : "s");

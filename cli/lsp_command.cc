@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/duration_option.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "harness/monitor_runner.h"
 #include "harness/test_replayer.h"
@@ -31,6 +32,8 @@ int lsp_command(std::span<char*> args) {
                "talk over stdin/stdout (the default; accepted for clients "
                "that pass it)");
   app.add_flag("--no-verify", no_verify, "do not prove documents on open and save");
+  std::vector<std::string> msg_path;
+  add_msg_path_option(app, &msg_path);
   app.add_option("--timeout", options.verify_timeout_seconds,
                  "seconds the proof of one document may take (or a time with its unit: 2min)")
       ->transform(seconds_option(false))

@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/dds_plugin.h"
 #include "cli/duration_option.h"
+#include "cli/msg_path_option.h"
 #include "core/diagnostic.h"
 #include "core/suggest.h"
 #include "dds/deployment.h"
@@ -112,7 +113,6 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   if (!flags.deploy.empty()) {
     std::vector<Diagnostic> problems;
     bool read = dds::read_deployment(flags.deploy, &dds.deployment, &problems);
-    dds.deployment.msg_path = flags.msg_path;
     if (!read || !dds::check_deployment(dds.deployment, app, &problems)) {
       // As a compiler reports a spec: file:line:col: error: ..., the line quoted.
       SourceCache sources;
@@ -160,10 +160,8 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "dds: the modules whose incoming connections run here (default: the hosted)");
   cli.add_option("--deploy", flags->deploy,
                  "dds: a deployment file (domain, ros2, topics, types, qos; docs/distributed.md)");
-  cli.add_option("--msg-path", flags->msg_path,
-                 "dds: a folder of PKG/msg/NAME.msg files (repeatable; then ARBC_MSG_PATH and "
-                 "AMENT_PREFIX_PATH) that the deployment's types are checked against")
-      ->type_name("DIR");
+  add_msg_path_option(cli,
+                      &flags->msg_path);  // also what the deployment's types are checked against
   cli.add_option("--domain", flags->domain,
                  "dds: the DDS domain (default: the deployment's, else "
                  "ROS_DOMAIN_ID, else 0)");

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "cli/commands.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "cli/verify_gate.h"
 #include "compiler/codegen/target.h"
@@ -161,6 +162,8 @@ std::optional<int> parse_args(std::span<char*> args, TestArgs& a) {
   CLI::App cli{"Run the `test` declarations of specs on the embedded runtime, in simulated time",
                "arbc test"};
   cli.add_option("SPEC", a.specs, "spec files with tests")->required();
+  std::vector<std::string> msg_path;
+  add_msg_path_option(cli, &msg_path);
   cli.add_option("--filter", a.filter, "run only the tests whose name matches GLOB (default *)")
       ->type_name("GLOB");
   cli.add_option("--junit", a.junit, "write JUnit XML of the results to FILE");

@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/counterexample_files.h"
 #include "cli/duration_option.h"
+#include "cli/msg_path_option.h"
 #include "cli/parse_error.h"
 #include "core/diagnostic.h"
 #include "core/monitor_digests.h"
@@ -65,6 +66,7 @@ struct VerifyArgs {
   bool stats = false;
   std::vector<std::string> yarp_paths;  // --yarp-path: where an APP.xml's monitors are
   std::string counterexamples;          // --counterexamples: where replayed tests are written
+  std::vector<std::string> msg_path;    // --msg-path: folders of PKG/msg/NAME.msg (ARBC_MSG_PATH)
 };
 
 // Parses `arbc verify`'s arguments into `a`; an exit code when the command ends here (--help,
@@ -74,6 +76,7 @@ std::optional<int> parse_args(std::span<char*> args, VerifyArgs& a) {
   cli.add_option("inputs", a.inputs,
                  "specs (*.spec), app.json files, `arbc build` directories, or yarpmanager "
                  "application XMLs (*.xml)");
+  add_msg_path_option(cli, &a.msg_path);
   cli.add_option("--format", a.format, "output format")
       ->check(CLI::IsMember({"text", "json", "sarif"}))
       ->capture_default_str();

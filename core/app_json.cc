@@ -256,7 +256,7 @@ bool read_header(const Json& root, const std::string& r, App* app, std::string* 
 // A named type of the spec (its name names the type on a DDS wire: dds/wire_types.h).
 bool read_named_type(const Json& j, const std::string& p, NamedType* t, std::string* err) {
   return get_string(j, p, "name", &t->name, err) && read_type(j, p, &t->type, err) &&
-         read_location(j, p, &t->loc, err);
+         opt_string(j, p, "ros2", &t->ros2, err) && read_location(j, p, &t->loc, err);
 }
 
 bool read_port(const Json& j, const std::string& p, Port* port, std::string* err) {

@@ -241,6 +241,7 @@ std::string to_app_json(const App& app) {
     w.begin_object();
     w.member("name", t.name);
     w.member("type", t.type ? t.type->to_string() : "");
+    if (!t.ros2.empty()) w.member("ros2", t.ros2);
     write_location(w, t.loc);
     w.end_object();
   }

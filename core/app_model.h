@@ -44,6 +44,9 @@ struct NamedType {
   std::string name;
   TypePtr type;
   SourceLocation loc;
+  // The ROS 2 message a `use ros2` declared it from ("geometry_msgs/msg/Twist"): its name on the
+  // wire (dds/wire_types.cc) when the deployment file does not map it. Empty for a `type`.
+  std::string ros2 = {};
 };
 
 struct Module {

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "core/json_diagnostic.h"
+#include "core/ros2_known_messages.h"
 #include "core/suggest.h"
-#include "dds/known_messages.h"
 #include "dds/msg_layout.h"
 
 namespace arbc::dds {
@@ -286,7 +286,7 @@ bool check_deployment(const Deployment& d, const model::App& app, std::vector<Di
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
   for (const model::NamedType& t : app.types) known.insert(t.name);
   // Each message's definition: its .msg file on the message path, else a built-in one.
-  ros2::MsgLibrary library(ros2::message_path(d.msg_path), known_message_texts());
+  ros2::MsgLibrary library(ros2::message_path(d.msg_path), ros2::known_message_texts());
   for (const auto& [name, wire] : d.types) {
     TypePtr type = name == "vec3" ? Type::scalar(Type::Kind::Vec3) : nullptr;
     for (const model::NamedType& t : app.types) {

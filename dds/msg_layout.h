@@ -4,7 +4,7 @@
 // field left out, or two fields of one type in another order, decode into other values or not
 // at all, and every rule reads them. The message's definition is its `.msg` file on the
 // message path (core/ros2_msg_path.h), else the built-in definitions of common messages
-// (known_messages.h); a message found in neither is not checked.
+// (core/ros2_known_messages.h); a message found in neither is not checked.
 #pragma once
 
 #include <string>

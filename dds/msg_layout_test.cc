@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dds/known_messages.h"
+#include "core/ros2_known_messages.h"
 
 namespace arbc::dds {
 namespace {
@@ -19,7 +19,7 @@ TypePtr real() { return Type::scalar(Type::Kind::Float); }
 TypePtr integer() { return Type::scalar(Type::Kind::Int); }
 TypePtr text() { return Type::scalar(Type::Kind::String); }
 
-ros2::MsgLibrary builtin() { return ros2::MsgLibrary({}, known_message_texts()); }
+ros2::MsgLibrary builtin() { return ros2::MsgLibrary({}, ros2::known_message_texts()); }
 
 TEST(MsgLayoutTest, ATwistInAnotherOrderIsNamed) {
   ros2::MsgLibrary lib = builtin();
@@ -111,7 +111,7 @@ TEST_F(MsgPathTest, TheFileOnThePathIsTheDefinition) {
         "# a scan\nstd_msgs/Header header  # its stamp\nfloat64[] ranges\nfloat64[3] origin\n"
         "int64 MAX_RANGES=1080\n");
   write("std_msgs/msg/Header.msg", "string frame_id\n");  // not ROS 2's: the path wins
-  ros2::MsgLibrary lib({dir_.string()}, known_message_texts());
+  ros2::MsgLibrary lib({dir_.string()}, ros2::known_message_texts());
   TypePtr ok = Type::record({{"header", Type::record({{"frame_id", text()}})},
                              {"ranges", Type::list(real())},
                              {"origin", Type::list(real())}});

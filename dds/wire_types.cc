@@ -115,7 +115,8 @@ std::string WireNaming::spec_name(const Type& t) const {
 }
 
 // A spec name `Cmd` is `<app>::msg::dds_::Cmd_` with ros2 (as if the app were a ROS package),
-// `<app>::Cmd` without; the deployment's "types" overrides either.
+// `<app>::Cmd` without; a type `use ros2` declared is its message's name; the deployment's
+// "types" overrides any of them.
 std::string WireNaming::struct_name(const Type& t, const std::string& anonymous) const {
   if (t.kind == Type::Kind::Vec3) {
     auto it = deployment_.types.find("vec3");
@@ -125,6 +126,9 @@ std::string WireNaming::struct_name(const Type& t, const std::string& anonymous)
   std::string name = spec_name(t);
   auto it = name.empty() ? deployment_.types.end() : deployment_.types.find(name);
   if (it != deployment_.types.end()) return mangle(it->second);
+  for (const model::NamedType& n : app_.types) {
+    if (!name.empty() && n.name == name && !n.ros2.empty()) return mangle(n.ros2);
+  }
   std::string local = name.empty() ? anonymous : name;
   return deployment_.ros2 ? mangle(app_.name + "/msg/" + local) : app_.name + "::" + local;
 }

@@ -17,6 +17,7 @@ declOnly : decl EOF ;
 
 decl
   : appDecl
+  | useDecl
   | typeDecl
   | constDecl
   | moduleDecl
@@ -40,6 +41,10 @@ decl
   ;
 
 appDecl          : 'app' ID STRING? ';' ;
+// A message type read from its definition (docs/language.md#ros-2-messages):
+// `use ros2 geometry_msgs/msg/TwistStamped;` (sema checks the word `ros2`; `pkg/Name` also).
+useDecl          : 'use' ID msgName ';' ;
+msgName          : ID '/' ID ('/' ID)? ;
 typeDecl         : 'type' ID '=' typeExpr ';' ;
 constDecl        : 'const' ID '=' expr ';' ;
 moduleDecl       : 'module' ID STRING? '{' portDecl* '}' ;

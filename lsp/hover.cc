@@ -140,6 +140,10 @@ void describe(const Document& doc, const SymbolIndex& ix, const Symbol& s,
       break;
     case SymbolKind::Type:
       out << "**type** " << code(type_text(ix, s.type));
+      if (s.type_decl && !s.type_decl->ros2.empty())  // declared by `use ros2`: from where
+        out << "\n\nROS 2 message " << code(s.type_decl->ros2) << ", "
+            << (s.type_decl->msg_file.empty() ? "arbc's built-in definition"
+                                              : "read from " + code(s.type_decl->msg_file));
       break;
     case SymbolKind::Const:
       out << "**const** " << code(s.name) << ": " << code(type_text(ix, s.type));

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -176,7 +177,21 @@ struct AppDecl {
 struct TypeDecl {
   std::string name;
   TypeExpr type;
-  Loc loc;  // the name
+  Loc loc;  // the name; for a type `use` declared, the message's name in the `use`
+  // Declared by `use ros2` (ros2_uses.h): the message it is ("geometry_msgs/msg/Twist") and the
+  // .msg file it was read from ("" for a built-in definition). Empty for a `type` declaration.
+  std::string ros2;
+  std::string msg_file;
+};
+
+// `use ros2 geometry_msgs/msg/Twist;`: the message's type, read from its .msg file.
+struct UseDecl {
+  std::string system;   // the word after `use`: `ros2` is the only one
+  Loc system_loc;       //
+  std::string written;  // the name as written: "geometry_msgs/msg/Twist" or "pkg/Name"
+  std::string package, name;
+  Loc loc;       // the whole name
+  Loc name_loc;  // its last part: the type it declares
 };
 
 struct ConstDecl {
@@ -469,7 +484,11 @@ struct TestsFor {
 struct Spec {
   std::string file;
   std::optional<AppDecl> app;
-  std::vector<TypeDecl> types;
+  std::vector<UseDecl> uses;
+  // The names of types a `use` could not declare (reported there): a port or field of such a
+  // type is not reported again as an unknown type (ros2_uses.h).
+  std::set<std::string> failed_uses;
+  std::vector<TypeDecl> types;  // after the `type` declarations, those `uses` declare
   std::vector<ConstDecl> consts;
   std::vector<ModuleDecl> modules;
   std::vector<EventDecl> events;

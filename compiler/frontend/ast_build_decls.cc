@@ -23,6 +23,8 @@ void Builder::add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
   reported_depth_ = false;
   if (auto* c = ctx->appDecl()) {
     add_app(spec, c);
+  } else if (auto* c = ctx->useDecl()) {
+    spec.uses.push_back(use_decl(c));
   } else if (auto* c = ctx->typeDecl()) {
     spec.types.push_back(type_decl(c));
   } else if (auto* c = ctx->constDecl()) {
@@ -80,6 +82,22 @@ void Builder::add_app(Spec& spec, ArbcParser::AppDeclContext* c) {
     return;
   }
   spec.app = std::move(app);
+}
+
+// useDecl : 'use' ID msgName ';' ;   msgName : ID '/' ID ('/' ID)? ;
+UseDecl Builder::use_decl(ArbcParser::UseDeclContext* c) {
+  UseDecl u;
+  u.system = tx(c->ID());
+  u.system_loc = loc(c->ID());
+  auto* name = c->msgName();
+  u.loc = loc(name);
+  std::vector<antlr4::tree::TerminalNode*> parts = name->ID();
+  for (antlr4::tree::TerminalNode* part : parts)
+    u.written += (u.written.empty() ? "" : "/") + tx(part);
+  u.package = tx(parts.front());
+  u.name = tx(parts.back());
+  u.name_loc = loc(parts.back());
+  return u;
 }
 
 // typeDecl : 'type' ID '=' typeExpr ';' ;

@@ -92,6 +92,7 @@ class Builder {
   ast::PortRef port_ref(ArbcParser::PortRefContext* ctx);  // portRef : ID '.' ID ;
   void add_decl(ast::Spec& spec, ArbcParser::DeclContext* ctx);
   void add_app(ast::Spec& spec, ArbcParser::AppDeclContext* c);
+  ast::UseDecl use_decl(ArbcParser::UseDeclContext* c);
   ast::TypeDecl type_decl(ArbcParser::TypeDeclContext* c);
   ast::ConstDecl const_decl(ArbcParser::ConstDeclContext* c);
   ast::ModuleDecl module_decl(ArbcParser::ModuleDeclContext* c);

@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "compiler/frontend/parse.h"
+#include "compiler/frontend/ros2_uses.h"
 #include "compiler/frontend/sema.h"
 #include "compiler/frontend/tests_file.h"
 
@@ -49,6 +50,7 @@ CheckResult check_text(std::string_view text, const std::string& file,
     if (!parsed.spec) result.app_file.clear();
   }
   if (parsed.spec) {
+    declare_ros2_uses(*parsed.spec, result.diagnostics);
     // The app's scripts are relative to the app's spec, wherever its tests live.
     check_spec(*parsed.spec, result.diagnostics, result.app_file.empty() ? script_dir : "");
     result.spec = std::move(parsed.spec);

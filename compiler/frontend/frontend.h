@@ -49,6 +49,14 @@ CheckResult check_file(const std::string& path);
 inline constexpr size_t kMaxSpecBytes = 64u << 20;  // 64 MiB
 inline constexpr size_t kMaxReportedErrors = 50;
 
+// `arbc import ros2-msg` (docs/cli.md): the `type` declarations `use ros2` makes for `messages`
+// ("pkg/msg/Name", each with every message it uses), as spec text: each after the messages it
+// uses, under a comment naming its message. `first`: folders searched before the message path;
+// `file` names the input in diagnostics (id "ros2-message"), which go to `diagnostics`.
+std::string ros2_types_text(const std::vector<std::string>& messages,
+                            const std::vector<std::string>& first, const std::string& file,
+                            std::vector<Diagnostic>* diagnostics);
+
 // Renders diagnostics like a compiler, quoting source lines from `sources` (may be null). After
 // `cap` errors the rest are counted in one final line instead of printed.
 std::string render_diagnostics(const std::vector<Diagnostic>& diagnostics, SourceCache* sources,

@@ -28,9 +28,9 @@ using arbc_grammar::ArbcParser;
 namespace {
 
 const std::set<std::string> kDeclStarts = {
-    "app",       "type",      "const",     "module",  "event",  "events",
-    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
-    "resource",  "never",     "only",      "assume",  "given",  "stable"};
+    "app",       "use",       "type",      "const",   "module", "events", "event",
+    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",   "resource",
+    "never",     "only",      "assume",    "given",   "stable"};
 // What a declared name follows: a declaration word, or a comma at depth 0 (`event a, b;`).
 const std::set<std::string> kNamingWords = {"app", "type", "const", "module", "event", ","};
 

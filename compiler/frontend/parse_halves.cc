@@ -17,10 +17,10 @@ namespace {
 
 // Keywords that start a declaration and nothing else. (`after` and `only` also appear inside
 // declarations; a cut before one there would only make parse_halves give up.)
-constexpr std::array<std::string_view, 17> kStarts = {
-    "app",       "type",      "const",     "module",  "event",  "events",
-    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",
-    "tests",     "resource",  "never",     "assume",  "stable"};
+constexpr std::array<std::string_view, 18> kStarts = {
+    "app",    "use",       "type",      "const",     "module",  "event",
+    "events", "exclusive", "invariant", "arbitrate", "connect", "assert",
+    "test",   "tests",     "resource",  "never",     "assume",  "stable"};
 
 bool starts_declaration(std::string_view line) {
   for (std::string_view k : kStarts) {

@@ -87,6 +87,7 @@ TypePtr Sema::resolve_type_decl(TypeDecl& decl) {
 
 TypePtr Sema::resolve_named_type(TypeExpr& t) {
   auto it = types_.find(t.name);
+  if (it == types_.end() && spec_.failed_uses.count(t.name)) return nullptr;  // said at the use
   if (it == types_.end()) {
     // The number types by any spelling (core/number_types.def): `int32`, `byte`, `float64`.
     if (TypePtr number = Type::number(t.name)) return number;

@@ -96,9 +96,9 @@ antlr4::ParserRuleContext* enclosing(antlr4::ParserRuleContext* ctx, size_t rule
 }
 
 extern const std::set<std::string> kDeclKeywords = {
-    "app",       "type",      "const",   "module", "event", "events", "exclusive",
-    "invariant", "arbitrate", "connect", "assert", "test",  "tests",  "resource",
-    "never",     "only",      "assume",  "given",  "stable"};
+    "app",       "use",       "type",      "const",   "module", "event", "events",
+    "exclusive", "invariant", "arbitrate", "connect", "assert", "test",  "tests",
+    "resource",  "never",     "only",      "assume",  "given",  "stable"};
 
 // A token type as the user would name it.
 std::string token_name(const antlr4::dfa::Vocabulary& vocabulary, size_t type) {

@@ -32,6 +32,7 @@ Diagnostic error_at(const ast::Loc& loc, std::string message, DiagId id) {
 std::optional<std::pair<ast::Loc, std::string>> first_non_test(const ast::Spec& s) {
   std::vector<std::pair<ast::Loc, std::string>> found;
   if (s.app) found.push_back({s.app->loc, "an app"});
+  if (!s.uses.empty()) found.push_back({s.uses[0].loc, "a `use`"});
   if (!s.types.empty()) found.push_back({s.types[0].loc, "a type"});
   if (!s.consts.empty()) found.push_back({s.consts[0].loc, "a constant"});
   if (!s.modules.empty()) found.push_back({s.modules[0].loc, "a module"});

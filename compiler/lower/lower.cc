@@ -111,7 +111,7 @@ class Lowerer {
  private:
   void lower_modules() {
     for (const ast::TypeDecl& t : spec_.types)
-      out_.app.types.push_back({t.name, t.type.resolved, t.loc});
+      out_.app.types.push_back({t.name, t.type.resolved, t.loc, t.ros2});
     for (const ast::ModuleDecl& m : spec_.modules) {
       model::Module mm;
       mm.name = m.name;

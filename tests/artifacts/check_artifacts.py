@@ -231,6 +231,9 @@ def write_artifacts(arbc, plugin, inputs, out, cwd):
     # A YARP monitor with runtime checks (an assert over `emitted`, a list bound).
     run([arbc, "build", os.path.join(inputs, "checks.spec"), "--target", "yarp", "-o",
          os.path.join(out, "yarp")], cwd)
+    # Types declared by `use ros2` from a .msg file: app.json names each one's message.
+    run([arbc, "build", os.path.join(inputs, "use_ros2_ok.spec"), "--msg-path",
+         os.path.join(inputs, "msg"), "-o", os.path.join(out, "ros2")], cwd)
     run([arbc, "docs", spec, "-o", os.path.join(out, "docs")], cwd)
     run([arbc, "run", os.path.join(out, "build", "table_clean"), "--plugin", plugin,
          "--scenario", "mixed", "--seed", "1", "--duration", "60s",
@@ -250,8 +253,9 @@ def write_artifacts(arbc, plugin, inputs, out, cwd):
 def copy_inputs(inputs):
     for rel in ("specs/table_clean.spec", "specs/table_clean_yarp.spec", "specs/testing/gaze.spec",
                 "specs/testing/gaze.test.spec", "tests/verify/table_clean_take_mutant.spec",
-                "tests/yarp_real/checks.spec"):
+                "tests/yarp_real/checks.spec", "tests/check/use_ros2_ok/use_ros2_ok.spec"):
         shutil.copy(os.path.join(ROOT, rel), inputs)
+    shutil.copytree(os.path.join(ROOT, "tests/check/use_ros2_ok/msg"), os.path.join(inputs, "msg"))
     with open(os.path.join(inputs, "gaze.test.spec"), encoding="utf-8") as f:
         text = f.read()
     wrong = text.replace("receives vec3(1.0, 0.0, 0.0) at 1.2s", "receives vec3(1.0, 0.0, 0.0) at 1.1s")

@@ -4,7 +4,9 @@
 usage: run_golden.py ARBC [--update] [CASE...]
 
 For each case, runs `arbc check <case>.spec` inside the case's folder and compares what it
-prints on stderr with <case>.err, byte for byte. The expected exit code is 0 when <case>.err
+prints on stderr with <case>.err, byte for byte. The message path of `use ros2` is the case's
+`msg` folder when it has one, else empty (ARBC_MSG_PATH and AMENT_PREFIX_PATH of the caller are
+not passed on: what a case prints does not depend on the machine). The expected exit code is 0 when <case>.err
 is empty and 2 otherwise; a signal is always a failure. Without CASEs, every case runs.
 --update rewrites the .err files (review them by eye). ctest runs each case as its own test
 (check_golden.CASE). That every diagnostic id has a golden case is check_ids_covered.py's job.
@@ -18,8 +20,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 def run_case(arbc, name):
     folder = os.path.join(HERE, name)
+    env = {k: v for k, v in os.environ.items() if k not in ("ARBC_MSG_PATH", "AMENT_PREFIX_PATH")}
+    if os.path.isdir(os.path.join(folder, "msg")):
+        env["ARBC_MSG_PATH"] = "msg"
     proc = subprocess.run([arbc, "check", name + ".spec"], cwd=folder, capture_output=True,
-                          timeout=60)
+                          timeout=60, env=env)
     return proc.returncode, proc.stderr.decode("utf-8", "replace"), proc.stdout
 
 

@@ -335,6 +335,101 @@ def case_dds_stamp_of_ints(arbc, plugin):
            f"exit {code}: the .msg file on --msg-path was not read", out, err)
 
 
+RANGE_MSG = """# sensor_msgs/msg/Range
+uint8 ULTRASOUND=0
+std_msgs/Header header
+uint8 radiation_type
+float32 field_of_view
+float32 min_range
+float32 max_range
+float32 range
+"""
+
+RANGE_SPEC = """app sonar;
+use ros2 sensor_msgs/msg/Range;
+module Sonar { out range: Range; }
+module Base { in range: Range; }
+arbitrate Base.range { near: from Sonar.range { accept range.range < 0.5; } }
+"""
+
+
+def msg_folder(folder):
+    """A folder of packages holding sensor_msgs/msg/Range.msg."""
+    msgs = os.path.join(folder, "msgs")
+    os.makedirs(os.path.join(msgs, "sensor_msgs", "msg"))
+    open(os.path.join(msgs, "sensor_msgs", "msg", "Range.msg"), "w").write(RANGE_MSG)
+    return msgs
+
+
+def case_use_ros2_msg_path(arbc, plugin):
+    """Issue 41: `use ros2` finds a message on --msg-path, on every command that reads a spec;
+    without the folder, the error says where it looked and how to add one."""
+    folder = tempfile.mkdtemp(prefix="arbc-use-ros2-")
+    spec = os.path.join(folder, "sonar.spec")
+    open(spec, "w").write(RANGE_SPEC)
+    msgs = msg_folder(folder)
+    env_backup = {k: os.environ.pop(k) for k in ("ARBC_MSG_PATH", "AMENT_PREFIX_PATH")
+                  if k in os.environ}
+    try:
+        code, out, err = run(arbc, "check", spec)
+        expect(code == 2 and "sonar.spec:2:10: error: no definition of sensor_msgs/msg/Range on "
+               "the message path; the message path is empty: give the folder that holds "
+               "sensor_msgs/msg/ with --msg-path DIR" in err, f"exit {code}, or not said", out, err)
+        expect(err.count("error:") == 1, "the ports of the type are errors too", out, err)
+        for command in (["check"], ["verify"], ["docs", "-o", os.path.join(folder, "docs")]):
+            code, out, err = run(arbc, *command, spec, "--msg-path", msgs)
+            expect(code == 0, f"arbc {command[0]} --msg-path: exit {code}", out, err)
+        out_dir = os.path.join(folder, "out")
+        code, out, err = run(arbc, "build", spec, "--msg-path", msgs, "-o", out_dir)
+        expect(code == 0, f"arbc build --msg-path: exit {code}", out, err)
+        types = {t["name"]: t for t in json.load(open(os.path.join(out_dir, "sonar", "app.json")))
+                 ["types"]}
+        expect(types["Range"].get("ros2") == "sensor_msgs/msg/Range" and
+               types["Header"].get("ros2") == "std_msgs/msg/Header" and
+               types["Range"]["type"].startswith("{header: {stamp: {sec: int32, nanosec: uint32}"),
+               f"app.json's types do not name their messages: {types}", out, err)
+        os.environ["ARBC_MSG_PATH"] = msgs  # the environment alone does as well
+        code, out, err = run(arbc, "check", spec)
+        expect(code == 0, f"arbc check with ARBC_MSG_PATH: exit {code}", out, err)
+    finally:
+        os.environ.pop("ARBC_MSG_PATH", None)
+        os.environ.update(env_backup)
+        shutil.rmtree(folder)
+
+
+def case_import_ros2_msg(arbc, plugin):
+    """Issue 41: `arbc import ros2-msg` writes the records `use ros2` declares, which check as a
+    spec; a folder with no .msg file, or a .msg file that does not parse, writes nothing."""
+    folder = tempfile.mkdtemp(prefix="arbc-import-ros2-")
+    msgs = msg_folder(folder)
+    types = os.path.join(folder, "types.spec")
+    for given in (msgs, os.path.join(msgs, "sensor_msgs"),
+                  os.path.join(msgs, "sensor_msgs", "msg", "Range.msg")):
+        code, out, err = run(arbc, "import", "ros2-msg", given, "-o", types)
+        expect(code == 0, f"arbc import ros2-msg {given}: exit {code}", out, err)
+        text = open(types).read()
+        for line in ("type Time = { sec: int32, nanosec: uint32 };",
+                     "type Header = { stamp: Time, frame_id: string };",
+                     "type Range = { header: Header, radiation_type: uint8, field_of_view: float32, "
+                     "min_range: float32, max_range: float32, range: float32 };"):
+            expect(line in text, f"the import of {given} lacks {line!r}", text, err)
+        expect(text.index("type Time") < text.index("type Header") < text.index("type Range"),
+               "a message comes before one it uses", text, err)
+        expect(folder not in text, "the written spec holds a path of this machine", text, err)
+    spec = os.path.join(folder, "sonar.spec")
+    open(spec, "w").write(RANGE_SPEC.replace("use ros2 sensor_msgs/msg/Range;\n", text))
+    code, out, err = run(arbc, "check", spec)
+    expect(code == 0, f"the imported types do not check: exit {code}", out, err)
+    os.remove(types)
+    expect_bad_input(run(arbc, "import", "ros2-msg", folder + "/nothing", "-o", types),
+                     "no such file or folder", "nothing written")
+    open(os.path.join(msgs, "sensor_msgs", "msg", "Bad.msg"), "w").write("float64 x\nint32\n")
+    expect_bad_input(run(arbc, "import", "ros2-msg", msgs, "-o", types),
+                     "sensor_msgs/msg/Bad cannot be read (", "Bad.msg:2", "nothing written")
+    expect(not os.path.exists(types), "a failed import wrote its output")
+    shutil.rmtree(folder)
+
+
 def case_misspelt_command(arbc, plugin):
     # `arbc verfy`: the command meant, then the usage; a word close to none gets the usage alone.
     code, out, err = run(arbc, "verfy", "specs/table_clean.spec")

@@ -12,7 +12,11 @@ extra fails, naming the sample and the field. The mediator's connection table mu
 sample delivered, none dropped, and its verdict must be success. The spec's Widths is checked
 against interop/msg/arbc_test/msg/Widths.msg (--msg-path) before the run.
 
-usage: stamped.py ARBC STAMPED_PUB STAMPED_SUB TESTS_DDS_DIR
+With SPEC and DEPLOY (in interop/), the same run for another spec of the same app: stamped_use.spec
+declares both messages with `use ros2` from their .msg files (TwistStamped from arbc's built-in
+definitions) and its deployment file maps no type: the wire names come from the definitions.
+
+usage: stamped.py ARBC STAMPED_PUB STAMPED_SUB TESTS_DDS_DIR [SPEC DEPLOY]
 """
 import difflib
 import math
@@ -170,11 +174,12 @@ def check_mediator(mediated, returncode, sent):
         fail("the mediator's verdict is not success", mediated)
 
 
-def run(arbc, pub, sub, here, domain, env):
+def run(arbc, pub, sub, here, domain, env, spec, deploy):
     """Builds the app, runs subscriber, mediator and publisher; their outputs."""
     out_dir = scratch_folder("arbc-dds-sized-types-")
     interop = os.path.join(here, "interop")
-    built = subprocess.run([arbc, "build", os.path.join(interop, "stamped.spec"), "-o", out_dir],
+    msg_path = ["--msg-path", os.path.join(interop, "msg")]
+    built = subprocess.run([arbc, "build", os.path.join(interop, spec), "-o", out_dir] + msg_path,
                            capture_output=True, text=True)
     if built.returncode != 0:
         fail("arbc build", built.stdout + built.stderr)
@@ -182,8 +187,8 @@ def run(arbc, pub, sub, here, domain, env):
                                 stderr=subprocess.PIPE, text=True, env=env)
     mediator = subprocess.Popen(
         [arbc, "run", os.path.join(out_dir, "stamped"), "--transport", "dds", "--host", "none",
-         "--mediate", "all", "--deploy", os.path.join(interop, "stamped.deploy.json"),
-         "--msg-path", os.path.join(interop, "msg"), "--domain", domain,
+         "--mediate", "all", "--deploy", os.path.join(interop, deploy)] + msg_path +
+        ["--domain", domain,
          "--duration", "100000s", "--wait-peers", "30"],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     sender = subprocess.run([pub, domain], capture_output=True, text=True, env=env, timeout=90)
@@ -199,9 +204,11 @@ def run(arbc, pub, sub, here, domain, env):
 
 def main():
     arbc, pub, sub, here = sys.argv[1:5]
+    spec, deploy = sys.argv[5:7] if len(sys.argv) > 5 else ("stamped.spec", "stamped.deploy.json")
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()  # the lock on the domain lasts as long as this object
-    sent_text, received_text, mediated, returncode = run(arbc, pub, sub, here, str(held.id), env)
+    sent_text, received_text, mediated, returncode = run(arbc, pub, sub, here, str(held.id), env,
+                                                         spec, deploy)
     sent, received = by_kind(sent_text), by_kind(received_text)
     if not all(sent.values()):
         fail("stamped_pub printed no sample of some topic", sent_text)

@@ -452,6 +452,35 @@ class RenameReachesTestsFiles(Session):
                       "with it)" % self.paths["app"], e.exception.args[1])
 
 
+ROS2_SPEC = """app teleop;
+use ros2 geometry_msgs/msg/TwistStamped;
+module Nav { out cmd_vel: TwistStamped; }
+module Base { in cmd_vel: TwistStamped; }
+arbitrate Base.cmd_vel { nav: from Nav.cmd_vel { accept cmd_vel.header.stamp.sec >= 0; } }
+"""
+
+
+class Ros2Types(Session):
+    """Types declared by `use ros2` (issue 41): hover says which message and where it was read;
+    a `use` that cannot be read is a diagnostic at the `use`."""
+
+    def test_hover_names_the_message(self):
+        self.text = ROS2_SPEC
+        self.assertEqual(self.open_spec(), [])
+        h = self.c.request("textDocument/hover", self.at("TwistStamped; }", 0))
+        self.assertIn("ROS 2 message `geometry_msgs/msg/TwistStamped`, arbc's built-in definition",
+                      h["contents"]["value"])
+        h = self.c.request("textDocument/hover", self.at("stamp.sec", 0, len("stamp.")))
+        self.assertIn("`int32`", h["contents"]["value"])
+
+    def test_a_message_not_found_is_an_error_at_the_use(self):
+        self.text = ROS2_SPEC.replace("geometry_msgs/msg/TwistStamped", "nav_msgs/msg/Nothing")
+        diagnostics = self.open_spec()
+        self.assertIn("ros2-message", [d.get("code") for d in diagnostics])
+        first = next(d for d in diagnostics if d.get("code") == "ros2-message")
+        self.assertEqual(first["range"]["start"], position_of(self.text, "nav_msgs/msg/Nothing"))
+
+
 class Hover(Session):
     def setUp(self):
         super().setUp()

@@ -1,6 +1,6 @@
-#include "dds/known_messages.h"
+#include "core/ros2_known_messages.h"
 
-namespace arbc::dds {
+namespace arbc::ros2 {
 
 const std::map<std::string, std::string>& known_message_texts() {
   static const std::map<std::string, std::string> texts = {
@@ -30,4 +30,4 @@ const std::map<std::string, std::string>& known_message_texts() {
   return texts;
 }
 
-}  // namespace arbc::dds
+}  // namespace arbc::ros2

@@ -1,0 +1,146 @@
+// `use ros2`: the types it declares are the messages' definitions, field for field and width for
+// width, under the names ros2_uses.h gives; what it cannot declare is an error at the `use`.
+#include "compiler/frontend/ros2_uses.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "compiler/frontend/frontend.h"
+
+namespace arbc::frontend {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A message path of the test's own: ARBC_MSG_PATH is that folder alone while it lives.
+class Ros2UsesTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("arbc-ros2-uses-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    setenv("ARBC_MSG_PATH", dir_.c_str(), 1);
+    unsetenv("AMENT_PREFIX_PATH");
+  }
+  void TearDown() override {
+    unsetenv("ARBC_MSG_PATH");
+    fs::remove_all(dir_);
+  }
+  void write(const std::string& full, const std::string& text) {
+    fs::path p = dir_ / full;
+    p += ".msg";
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+  }
+  static const ast::TypeDecl* type(const CheckResult& r, const std::string& name) {
+    for (const ast::TypeDecl& t : r.spec->types)
+      if (t.name == name) return &t;
+    return nullptr;
+  }
+  static std::string errors(const CheckResult& r) {
+    std::string s;
+    for (const Diagnostic& d : r.diagnostics) s += d.id + ": " + d.message + "\n";
+    return s;
+  }
+  fs::path dir_;
+};
+
+constexpr const char* kHead = "app a;\nmodule M { out o: Scan; }\n";
+
+TEST_F(Ros2UsesTest, DeclaresTheMessageAndWhatItUsesAtTheirWidths) {
+  write("sensor_msgs/msg/Scan",
+        "uint8 KIND=3\nstd_msgs/Header header\nfloat32[] ranges\nuint16[<=4] flags\n"
+        "string<=8 label\nbool ok\nbyte b\nchar c\nint8 d\n");
+  CheckResult r = check_text(std::string(kHead) + "use ros2 sensor_msgs/msg/Scan;\n", "a.spec");
+  ASSERT_TRUE(r.ok()) << errors(r);
+  const ast::TypeDecl* scan = type(r, "Scan");
+  ASSERT_TRUE(scan);
+  EXPECT_EQ(scan->ros2, "sensor_msgs/msg/Scan");
+  EXPECT_EQ(scan->msg_file, (dir_ / "sensor_msgs/msg/Scan.msg").string());
+  // Bounded sequences and strings are lists and strings; byte and char are uint8 (rosidl).
+  EXPECT_EQ(scan->type.resolved->to_string(),
+            "{header: {stamp: {sec: int32, nanosec: uint32}, frame_id: string}, "
+            "ranges: list<float32>, flags: list<uint16>, label: string, ok: bool, b: uint8, "
+            "c: uint8, d: int8}");
+  // What it uses is declared too, from arbc's built-in definitions (no file on the path).
+  ASSERT_TRUE(type(r, "Header"));
+  EXPECT_EQ(type(r, "Header")->ros2, "std_msgs/msg/Header");
+  EXPECT_EQ(type(r, "Header")->msg_file, "");
+  ASSERT_TRUE(type(r, "Time"));
+  EXPECT_EQ(type(r, "Time")->ros2, "builtin_interfaces/msg/Time");
+}
+
+TEST_F(Ros2UsesTest, AFileOnThePathWinsOverTheBuiltInDefinition) {
+  write("geometry_msgs/msg/Twist", "float32 speed\n");
+  CheckResult r = check_text("app a;\nuse ros2 geometry_msgs/Twist;\n", "a.spec");
+  ASSERT_TRUE(r.ok()) << errors(r);
+  EXPECT_EQ(type(r, "Twist")->type.resolved->to_string(), "{speed: float32}");
+}
+
+TEST_F(Ros2UsesTest, AUsedMessageTakesANameTheSpecDoesNotHave) {
+  CheckResult r = check_text(
+      "app a;\ntype Time = {t: int};\nuse ros2 geometry_msgs/msg/TwistStamped;\n"
+      "module M { out o: TwistStamped; out t: Time; }\n",
+      "a.spec");
+  ASSERT_TRUE(r.ok()) << errors(r);
+  EXPECT_EQ(type(r, "Time")->ros2, "");  // the spec's own
+  const ast::TypeDecl* stamp = type(r, "builtin_interfaces_Time");
+  ASSERT_TRUE(stamp);
+  EXPECT_EQ(stamp->ros2, "builtin_interfaces/msg/Time");
+  // Used twice (itself, and by TwistStamped): declared once.
+  r = check_text(
+      "app a;\nuse ros2 geometry_msgs/msg/Twist;\nuse ros2 geometry_msgs/msg/Vector3;\n"
+      "use ros2 geometry_msgs/msg/TwistStamped;\n",
+      "a.spec");
+  ASSERT_TRUE(r.ok()) << errors(r);
+  int vectors = 0;
+  for (const ast::TypeDecl& t : r.spec->types) vectors += t.ros2 == "geometry_msgs/msg/Vector3";
+  EXPECT_EQ(vectors, 1);
+}
+
+TEST_F(Ros2UsesTest, AUsedMessageNamedLikeASpecTypeIsADuplicate) {
+  CheckResult r =
+      check_text("app a;\ntype Twist = {v: int};\nuse ros2 geometry_msgs/msg/Twist;\n", "a.spec");
+  EXPECT_NE(errors(r).find("duplicate: type 'Twist' is already defined at line 2"),
+            std::string::npos)
+      << errors(r);
+}
+
+TEST_F(Ros2UsesTest, WhatCannotBeDeclaredIsAnErrorAtTheUse) {
+  write("bad_msgs/msg/Broken", "float64 x\nint32\n");
+  write("bad_msgs/msg/Fixed", "float64[9] covariance\n");
+  write("bad_msgs/msg/Outer", "Fixed inner\nint32 n\n");
+  struct Case {
+    const char* use;
+    const char* says;
+  } cases[] = {
+      {"use ros2 nav_msgs/msg/Missing;",
+       "no definition of nav_msgs/msg/Missing on the message "
+       "path; looked in '"},
+      {"use ros2 bad_msgs/msg/Broken;", "bad_msgs/msg/Broken cannot be read ("},
+      {"use ros2 bad_msgs/msg/Fixed;", "field 'covariance'"},
+      {"use ros2 bad_msgs/msg/Outer;", "field 'covariance'"},  // reported once, for Fixed
+      {"use ros2 bad_msgs/srv/Trigger;", "'bad_msgs/srv/Trigger' is not a message"},
+      {"use rust std/msg/Vec;", "`use rust`: arbc reads ROS 2 message definitions only"},
+  };
+  for (const Case& c : cases) {
+    CheckResult r = check_text(std::string("app a;\n") + c.use + "\n", "a.spec");
+    ASSERT_EQ(r.diagnostics.size(), 1u) << c.use << "\n" << errors(r);
+    const Diagnostic& d = r.diagnostics[0];
+    EXPECT_EQ(d.id, "ros2-message");
+    EXPECT_EQ(d.loc.line, 2) << c.use;
+    EXPECT_NE(d.message.find(c.says), std::string::npos) << c.use << "\n" << d.message;
+  }
+  // A .msg file's error notes the file's line.
+  CheckResult r = check_text("app a;\nuse ros2 bad_msgs/msg/Broken;\n", "a.spec");
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  ASSERT_EQ(r.diagnostics[0].notes.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].notes[0].loc.file.str(), (dir_ / "bad_msgs/msg/Broken.msg").string());
+  EXPECT_EQ(r.diagnostics[0].notes[0].loc.line, 2);
+}
+
+}  // namespace
+}  // namespace arbc::frontend
