@@ -165,6 +165,7 @@ TypePtr Typer::call(BodyExpr& e) {
     case Builtin::Dist:
     case Builtin::Norm:
     case Builtin::Now:
+    case Builtin::Age:
       return scalar(Type::Kind::Float);
     case Builtin::Abs:
       return args.size() == 1 ? promoted(args[0]) : nullptr;

@@ -95,7 +95,7 @@ TEST(Builtins, TheTableIsConsistent) {
   }
   EXPECT_EQ(find_builtin("length"), nullptr);
   EXPECT_EQ(builtin_info(Builtin::None), nullptr);
-  EXPECT_EQ(builtin_names_text(), "len, min_by, max_by, dist, norm, abs, min, max, now, vec3");
+  EXPECT_EQ(builtin_names_text(), "len, min_by, max_by, dist, norm, abs, min, max, now, age, vec3");
 }
 
 }  // namespace

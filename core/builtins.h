@@ -29,6 +29,7 @@ enum class Builtin : unsigned char {
   Min,
   Max,
   Now,
+  Age,
   Vec3
 };
 
@@ -60,6 +61,10 @@ inline constexpr BuiltinInfo kBuiltins[] = {
      "The largest argument; a float if any argument is one.", "max"},
     {Builtin::Now, "now", 0, 0, "now() -> float (seconds)",
      "The runtime's clock in seconds (simulated time in a simulated run).", "now"},
+    {Builtin::Age, "age", 1, 1, "age({sec, nanosec}) -> duration",
+     "How long ago a ROS 2 stamp was, on the run's clock read as ROS 2 time (the simulated "
+     "clock in simulation).",
+     "age"},
     {Builtin::Vec3, "vec3", 3, 3, "vec3(x, y, z) -> vec3", "A vector of three floats.", "vec3"},
 };
 
@@ -69,7 +74,7 @@ const BuiltinInfo* find_builtin(std::string_view name);
 // The row of `id`; null for Builtin::None.
 const BuiltinInfo* builtin_info(Builtin id);
 
-// "len, min_by, max_by, dist, norm, abs, min, max, now, vec3": the names in table order.
+// "len, min_by, max_by, dist, norm, abs, min, max, now, age, vec3": the names in table order.
 std::string builtin_names_text();
 
 }  // namespace arbc

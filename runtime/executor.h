@@ -25,6 +25,9 @@ class Executor {
   using TaskId = TaskQueue::TaskId;
   virtual ~Executor() = default;
   virtual Nanos now() const = 0;
+  // What now() is as ROS 2 time (age(), MonitorHost::stamp_now): stamp_origin() + now(). A
+  // simulated clock is its own ROS 2 time (0: a test gives stamps as instants of the run).
+  virtual Nanos stamp_origin() const { return Nanos{0}; }
   // Runs fn at time `at` (not before now()). Returns an id for cancel().
   virtual TaskId post(Nanos at, Task task) = 0;
   // The same for a plain function that is never cancelled (no id): the cheaper way, for the
@@ -68,8 +71,13 @@ class SimulatedExecutor : public Executor {
 class RealtimeExecutor : public Executor {
  public:
   explicit RealtimeExecutor(double scale = 1)
-      : start_(std::chrono::steady_clock::now()), scale_(scale) {}
+      : start_(std::chrono::steady_clock::now()),
+        epoch_at_start_(
+            std::chrono::duration_cast<Nanos>(std::chrono::system_clock::now().time_since_epoch())),
+        scale_(scale) {}
   Nanos now() const override;
+  // The wall clock at construction, since the epoch: a ROS 2 node's stamps are read against it.
+  Nanos stamp_origin() const override { return epoch_at_start_; }
   TaskId post(Nanos at, Task task) override;
   void post_plain(Nanos at, void (*fn)(void*), void* argument) override;
   void cancel(TaskId id) override;
@@ -79,6 +87,7 @@ class RealtimeExecutor : public Executor {
 
  private:
   std::chrono::steady_clock::time_point start_;
+  Nanos epoch_at_start_;
   double scale_ = 1;
   mutable std::mutex mutex_;
   std::condition_variable wake_;

@@ -94,6 +94,11 @@ int api_now(lua_State* L) {
   return 1;
 }
 
+int api_stamp_now(lua_State* L) {
+  lua_pushnumber(L, seconds_of(host_of(L)->stamp_now()));
+  return 1;
+}
+
 int api_novalue(lua_State* L) {
   LuaSandbox::push_novalue_marker(L);
   return lua_error(L);
@@ -116,6 +121,7 @@ int install(lua_State* L) {
       {"getConstraint", api_get_constraint},
       {"setTrigInterval", api_set_trig_interval},
       {"now", api_now},
+      {"stamp_now", api_stamp_now},
       {"novalue", api_novalue},
       {nullptr, nullptr},
   };

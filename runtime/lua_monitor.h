@@ -34,6 +34,9 @@ class MonitorHost {
  public:
   virtual ~MonitorHost() = default;
   virtual Nanos now() = 0;
+  // The run's clock read as ROS 2 time, what age() measures stamps against: the wall clock's
+  // time since the epoch in a real-time run (Executor::stamp_origin), now() in simulation.
+  virtual Nanos stamp_now() { return now(); }
   virtual void set_event(std::string_view name, std::optional<Nanos> lifetime) = 0;
   virtual void unset_event(std::string_view name) = 0;
   virtual bool has_event(std::string_view name) = 0;

@@ -381,6 +381,10 @@ void Runtime::schedule_trig(Connection& c, bool restart) {
 
 Nanos Runtime::Connection::now() { return runtime->now(); }
 
+Nanos Runtime::Connection::stamp_now() {
+  return runtime->executor().stamp_origin() + runtime->now();
+}
+
 // Without a lifetime, the one app.json declares for the event (none: until unset).
 void Runtime::Connection::set_event(std::string_view event, std::optional<Nanos> lifetime) {
   if (!lifetime) lifetime = runtime->declared_lifetime(event);

@@ -64,6 +64,7 @@ struct Runtime::OutPort {
 };
 
 struct Runtime::Connection : MonitorHost {
+  Nanos stamp_now() override;
   Runtime* runtime = nullptr;
   int index = 0;  // owner id in event containers
   std::string name;

@@ -4,92 +4,14 @@
 #include <cmath>
 #include <map>
 
+#include "verify/body_encoder.h"
 #include "verify/lua_number.h"
 
+// The body encoder (body_encoder.h): expressions and statements; calls of builtins are in
+// builtin_calls.cc.
 namespace arbc::verify {
 
-namespace {
-
-using model::BodyExpr;
-using model::BodyStmt;
-using K = SymValue::Kind;
-
-// A value and the condition under which computing it raises nothing (the generated Lua
-// drops the message `no-value` otherwise).
-struct Ev {
-  SymValue v;
-  z3::expr ok;
-  // bad(): the value could not be encoded and `v` is a Bool placeholder. Every expression
-  // over it is unread too, without touching Z3: the placeholder's sort and shape are not the
-  // operand's, and Z3 crashes on mismatched sorts (tests/drt: Real * Bool, a norm of a Bool).
-  bool unread = false;
-};
-
-// An int as a float (BodyExpr::Op::ToFloat, Lua's conversion); an unread operand stays unread.
-Ev to_float(const Ev& a) {
-  return a.unread || a.v.kind != K::Int ? a : Ev{{K::Float, lua::to_float(a.v)}, a.ok};
-}
-
-class Encoder {
- public:
-  Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out,
-          bool abstract_lengths)
-      : ctx_(ctx),
-        msg_(msg),
-        prefix_(std::move(prefix)),
-        out_(out),
-        abstract_lengths_(abstract_lengths) {}
-
-  void run(const model::Body& body) {
-    z3::expr alive = ctx_.bool_val(true);
-    SymValue emitted = msg_;  // without `emit`, the input unchanged
-    exec(body, alive, emitted);
-    if (!out_.opaque.empty()) return;
-    out_.accepts = alive;
-    out_.emitted = emitted;
-  }
-
- private:
-  void opaque(const std::string& why) {
-    if (out_.opaque.empty()) out_.opaque = why;
-  }
-  Ev bad(const std::string& why) {
-    opaque(why);
-    return {SymValue(ctx_), ctx_.bool_val(false), true};
-  }
-  // An expression over an unread operand: the reason is given already.
-  Ev unread() { return {SymValue(ctx_), ctx_.bool_val(false), true}; }
-  std::string fresh_name(const std::string& what) {
-    return prefix_ + "." + what + "#" + std::to_string(counter_++);
-  }
-
-  Ev eval(const BodyExpr& e);
-  Ev binary(const BodyExpr& e);
-  Ev record(const BodyExpr& e);
-  Ev list(const BodyExpr& e);
-  Ev arith(const std::string& op, const Ev& a, const Ev& b);
-  Ev compare(const std::string& op, const Ev& a, const Ev& b, bool unsigned_order);
-  Ev call(const BodyExpr& e);
-  Ev best_by(const BodyExpr& e, bool min);
-  Ev min_max(const BodyExpr& e, bool min);
-  Ev index(const Ev& list, const Ev& i);
-  std::vector<std::pair<const SymValue*, z3::expr>> scanned(const SymValue& list);
-  Ev vec_op(const std::string& op, const Ev& a, const Ev& b);
-  Ev length(bool dist, const std::vector<Ev>& args, const z3::expr& ok);
-
-  void exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue& emitted);
-  void exec_if(const BodyStmt& s, z3::expr& alive, SymValue& emitted);
-  void exec_var(const BodyStmt& s, z3::expr& alive);
-
-  z3::context& ctx_;
-  const SymValue& msg_;
-  std::string prefix_;
-  EncodedBody& out_;
-  bool abstract_lengths_;
-  std::map<std::string, SymValue> locals_;
-  std::map<std::string, SymValue> params_;
-  int counter_ = 0;
-};
+namespace body {
 
 Ev Encoder::eval(const BodyExpr& e) {
   switch (e.op) {
@@ -325,168 +247,6 @@ Ev Encoder::vec_op(const std::string& op, const Ev& a, const Ev& b) {
   return {v, ok};
 }
 
-// Dispatch on the builtin's id (core/builtins.h): a builtin added to the table without a case
-// here does not compile (-Wswitch), and verify's builtin_encoding_test encodes each one.
-Ev Encoder::call(const BodyExpr& e) {
-  const std::string& f = e.text;
-  switch (e.builtin) {
-    case Builtin::MinBy:
-    case Builtin::MaxBy:
-      return best_by(e, e.builtin == Builtin::MinBy);
-    case Builtin::Now: {
-      // PortMonitor.now(): the runtime's clock in seconds, a finite time that is not negative.
-      SymValue t(K::Float, lua::float_const(ctx_, fresh_name("now")));
-      out_.side.push_back(lua::less_equal({K::Float, lua::float_val(ctx_, 0.0)}, t) &&
-                          lua::less(t, {K::Float, lua::float_val(ctx_, HUGE_VAL)}));
-      out_.abstracted.push_back("now()");
-      out_.state.emplace_back("now()", t);
-      return {t, ctx_.bool_val(true)};
-    }
-    case Builtin::Min:
-    case Builtin::Max:
-      return min_max(e, e.builtin == Builtin::Min);
-    case Builtin::None:
-      return bad("the call " + f + "()");
-    case Builtin::Len:
-    case Builtin::Abs:
-    case Builtin::Vec3:
-    case Builtin::Norm:
-    case Builtin::Dist:
-      break;  // of their evaluated arguments, below
-  }
-  std::vector<Ev> args;
-  z3::expr ok = ctx_.bool_val(true);
-  for (const BodyExpr& a : e.args) {
-    args.push_back(eval(a));
-    if (args.back().unread) return unread();
-    ok = ok && args.back().ok;
-  }
-  if (e.builtin == Builtin::Len) {
-    if (args.size() != 1 || args[0].v.kind != K::List)
-      return bad("len of a string (byte length is not encoded)");
-    return {{K::Int, args[0].v.scalar}, ok};
-  }
-  if (e.builtin == Builtin::Abs && args.size() == 1 && args[0].v.numeric())
-    return {lua::abs(args[0].v), ok};
-  if (e.builtin == Builtin::Vec3 && args.size() == 3) {
-    SymValue v(K::Vec3, ctx_.bool_val(true));
-    for (const Ev& a : args) v.items.push_back(a.v);
-    return {v, ok};
-  }
-  bool dist = e.builtin == Builtin::Dist;
-  if ((e.builtin == Builtin::Norm && args.size() == 1) || (dist && args.size() == 2)) {
-    for (const Ev& a : args)
-      if (a.v.kind != K::Vec3) return bad(f + " of a value that is not a vec3");
-    return length(dist, args, ok);
-  }
-  return bad("the call " + f + "()");
-}
-
-// norm(v) and dist(a, b) in the prelude's order: math.sqrt(x * x + y * y + z * z), the sum from
-// the left, each operation rounded; dist first takes the differences a.x - b.x, ...
-Ev Encoder::length(bool dist, const std::vector<Ev>& args, const z3::expr& ok) {
-  std::vector<SymValue> d;
-  for (size_t k = 0; k < 3; ++k) {
-    d.push_back(args[0].v.items[k]);
-    if (dist) d.back() = lua::arith('-', d.back(), args[1].v.items[k]);
-  }
-  SymValue exact = lua::norm(d[0], d[1], d[2]);
-  bool floats =
-      std::all_of(d.begin(), d.end(), [](const SymValue& c) { return c.kind == K::Float; });
-  if (!abstract_lengths_ || !floats) return {exact, ok};
-  z3::sort f = lua::float_sort(ctx_);
-  z3::func_decl norm = ctx_.function("arbc_norm", f, f, f, f);
-  z3::expr r = norm(d[0].scalar, d[1].scalar, d[2].scalar);
-  out_.side.push_back(lua::norm_facts(r, d[0].scalar, d[1].scalar, d[2].scalar));
-  out_.lengths.push_back({r, exact.scalar, {d[0].scalar, d[1].scalar, d[2].scalar}});
-  return {{K::Float, r}, ok};
-}
-
-// min_by / max_by: arbc_best_by, the first element whose key is better than every earlier
-// best key (`k < best` or `k > best` as Lua compares: a NaN key never wins, and a NaN first
-// key is never beaten); none of an empty list.
-Ev Encoder::best_by(const BodyExpr& e, bool min) {
-  if (e.args.size() != 2 || e.args[1].op != BodyExpr::Op::Lambda)
-    return bad(e.text + " without a lambda");
-  Ev list = eval(e.args[0]);
-  if (list.unread) return unread();
-  if (list.v.kind != K::List || list.v.items.empty()) return bad(e.text + " of an empty literal");
-  const BodyExpr& lambda = e.args[1];
-  z3::expr ok = list.ok && list.v.scalar > 0;
-  std::optional<SymValue> best, best_key;
-  for (const auto& [item, in] : scanned(list.v)) {
-    std::optional<SymValue> saved;
-    if (auto it = params_.find(lambda.text); it != params_.end()) saved = it->second;
-    params_.insert_or_assign(lambda.text, *item);
-    Ev key = eval(lambda.args[0]);
-    if (key.unread) return unread();
-    if (saved)
-      params_.insert_or_assign(lambda.text, *saved);
-    else
-      params_.erase(lambda.text);
-    if (!key.v.numeric()) return bad(e.text + " with a key that is not a number");
-    ok = ok && z3::implies(in, key.ok);
-    if (!best) {
-      best = *item;
-      best_key = key.v;
-      continue;
-    }
-    z3::expr better = in && (min ? lua::less(key.v, *best_key) : lua::less(*best_key, key.v));
-    best = merge(better, *item, *best);
-    if (!best) return bad("a list whose elements differ in shape");
-    best_key = merge(better, key.v, *best_key);
-  }
-  return {*best, ok};
-}
-
-// The elements a read of every element visits, each with when it is one: the items, then
-// the stand-ins past the capacity of an open list (SymValue::tail), one of the reads they
-// allow (EncodedBody::tail_reads). An open list without them is read exactly only up to the
-// capacity (EncodedBody::bounded).
-std::vector<std::pair<const SymValue*, z3::expr>> Encoder::scanned(const SymValue& list) {
-  std::vector<std::pair<const SymValue*, z3::expr>> out;
-  for (size_t k = 0; k < list.items.size(); ++k)
-    out.emplace_back(&list.items[k], list.scalar > static_cast<int>(k));
-  if (list.scalar.simplify().is_numeral()) return out;  // a literal's length
-  if (list.tail.empty() || exact_prefix(list) < list.items.size()) {
-    out_.bounded = true;
-    return out;
-  }
-  for (size_t j = 0; j < list.tail.size(); ++j)
-    out.emplace_back(&list.tail[j], list.scalar > static_cast<int>(list.items.size() + j));
-  ++out_.tail_reads;
-  return out;
-}
-
-// min / max of numbers, or of one list (none of an empty list): math.min keeps the first
-// argument and takes a later one only if it is less than the kept one (math.max: greater), so
-// with NaNs the result depends on their order, as in Lua.
-Ev Encoder::min_max(const BodyExpr& e, bool min) {
-  std::vector<std::pair<SymValue, z3::expr>> xs;  // each with when it is one
-  z3::expr ok = ctx_.bool_val(true);
-  for (const BodyExpr& a : e.args) {
-    Ev x = eval(a);
-    if (x.unread) return unread();
-    ok = ok && x.ok;
-    if (x.v.kind == K::List && e.args.size() == 1) {
-      ok = ok && x.v.scalar > 0;
-      for (const auto& [item, in] : scanned(x.v)) xs.emplace_back(*item, in);
-    } else {
-      xs.emplace_back(x.v, ctx_.bool_val(true));
-    }
-  }
-  if (xs.empty()) return bad(e.text + " of an empty literal");
-  for (const auto& x : xs)
-    if (!x.first.numeric()) return bad(e.text + " of values that are not numbers");
-  SymValue best = xs[0].first;
-  for (size_t k = 1; k < xs.size(); ++k) {
-    const SymValue& x = xs[k].first;
-    z3::expr better = xs[k].second && (min ? lua::less(x, best) : lua::less(best, x));
-    best = *merge(better, x, best);  // numbers always merge
-  }
-  return {best, ok};
-}
-
 void Encoder::exec_var(const BodyStmt& s, z3::expr& alive) {
   Ev init = eval(s.expr);
   (void)alive;  // the initialiser runs on the first message only: its failure is not assumed
@@ -574,13 +334,13 @@ void Encoder::exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue
   }
 }
 
-}  // namespace
+}  // namespace body
 
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
                         const std::string& prefix, bool abstract_lengths) {
   EncodedBody out(ctx);
   try {
-    Encoder(ctx, msg, prefix, out, abstract_lengths).run(body);
+    body::Encoder(ctx, msg, prefix, out, abstract_lengths).run(body);
   } catch (const z3::exception& e) {
     out.opaque = std::string("the solver rejected the encoding: ") + e.msg();
   }

@@ -73,6 +73,11 @@ end
 --@ helper now
 -- now(): the runtime clock in seconds (virtual in simulation).
 local function now() return PortMonitor.now() end
+--@ helper age
+-- age(t): how long ago the stamp t ({sec, nanosec}) was, in seconds, on the run's clock read as
+-- ROS 2 time (PortMonitor.stamp_now(): the simulated clock in simulation).
+local function age(t) return PortMonitor.stamp_now() - (t.sec + t.nanosec * 1e-9) end
+
 --@ helper vec3
 -- vec3(x, y, z): a vector, as the runtime passes them: a table with x, y and z.
 local function vec3(x, y, z) return { x = x, y = y, z = z } end

@@ -44,6 +44,15 @@ bool is_numeric(const TypePtr& t) {
 
 bool is_kind(const TypePtr& t, Type::Kind kind) { return t && t->kind == kind; }
 
+bool is_stamp(const TypePtr& t) {
+  if (!is_kind(t, Type::Kind::Record)) return false;
+  for (const char* name : {"sec", "nanosec"}) {
+    const Field* f = t->field(name);
+    if (!f || !is_kind(f->type, Type::Kind::Int) || is_uint64(*f->type)) return false;
+  }
+  return true;
+}
+
 std::string type_name(const TypePtr& t) {
   if (!t) return "?";
   switch (t->kind) {

@@ -18,6 +18,9 @@ bool assignable(const Type& from, const Type& to);
 
 bool is_numeric(const TypePtr& t);
 bool is_kind(const TypePtr& t, Type::Kind kind);
+// A stamp age() reads: a record with integer fields `sec` and `nanosec` (builtin_interfaces/msg/
+// Time, `int32 sec, uint32 nanosec`), neither a uint64 (whose values Lua's integers do not hold).
+bool is_stamp(const TypePtr& t);
 
 // "list<{pos: vec3, dist: float}>"; "list<?>" for the empty list literal; "?" for null.
 std::string type_name(const TypePtr& t);

@@ -121,6 +121,7 @@ LuaMonitorHarness::LuaMonitorHarness(const std::string& source, const std::strin
                           {"getConstraint", HarnessAccess::get_constraint},
                           {"setTrigInterval", HarnessAccess::set_trig_interval},
                           {"now", HarnessAccess::now},
+                          {"stamp_now", HarnessAccess::now},  // simulated: its own ROS 2 time
                           {"novalue", HarnessAccess::novalue},
                           {nullptr, nullptr}};
   lua_pushlightuserdata(L_, this);

@@ -1,0 +1,86 @@
+// A navigation stack as a plain Fast-DDS program (no arbc in it) that stamps its ROS 2
+// TwistStampeds with the wall clock, as a ROS 2 node does, some of them stale: it writes COUNT
+// samples on rt/in/stamped, 50 ms apart, sample i (from 1) with linear.x = i, stamped now for
+// odd i and STALE_MS milliseconds ago for even i. It prints each sample it wrote as one line of
+// stamped_format.h's text, then `fresh i` or `stale i`, for tests/dds/ages.py.
+// usage: stamped_ages DOMAIN COUNT STALE_MS
+#include <chrono>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <thread>
+
+#include "StampedPubSubTypes.h"
+#include "interop_participant.h"
+#include "stamped_format.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+namespace fdds = eprosima::fastdds::dds;
+using eprosima::fastrtps::types::ReturnCode_t;
+using geometry_msgs::msg::dds_::TwistStamped_;
+
+// A ROS 2 stamp of the wall clock `ago` before now: seconds and nanoseconds since the epoch.
+TwistStamped_ stamped_now(std::chrono::milliseconds ago, double x) {
+  auto since_epoch = std::chrono::system_clock::now().time_since_epoch() - ago;
+  auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(since_epoch).count();
+  TwistStamped_ m;
+  m.header().stamp().sec(static_cast<int32_t>(ns / 1000000000));
+  m.header().stamp().nanosec(static_cast<uint32_t>(ns % 1000000000));
+  m.header().frame_id("base_link");
+  m.twist().linear().x(x);
+  return m;
+}
+
+bool matched(fdds::DataWriter* w) {
+  for (int i = 0; i < 1500; ++i) {
+    fdds::PublicationMatchedStatus status;
+    w->get_publication_matched_status(status);
+    if (status.current_count > 0) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: stamped_ages DOMAIN COUNT STALE_MS\n");
+    return 2;
+  }
+  int count = std::atoi(argv[2]);
+  std::chrono::milliseconds stale(std::atoi(argv[3]));
+  fdds::DomainParticipant* p = interop::plain_participant(std::atoi(argv[1]), "stamped_ages");
+  fdds::TypeSupport(new geometry_msgs::msg::dds_::TwistStamped_PubSubType()).register_type(p);
+  fdds::Publisher* pub = p->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  fdds::DataWriterQos qos = pub->get_default_datawriter_qos();
+  interop::reliable(qos);
+  fdds::DataWriter* w = pub->create_datawriter(
+      p->create_topic("rt/in/stamped", "geometry_msgs::msg::dds_::TwistStamped_",
+                      fdds::TOPIC_QOS_DEFAULT),
+      qos);
+  if (!matched(w)) {
+    std::fprintf(stderr, "stamped_ages: no reader on rt/in/stamped in 30 s\n");
+    return 3;
+  }
+  std::this_thread::sleep_for(1s);  // the mediator matches the subscriber too
+  for (int i = 1; i <= count; ++i) {
+    bool fresh = i % 2 == 1;
+    TwistStamped_ m = stamped_now(fresh ? 0ms : stale, i);
+    if (!w->write(&m)) {
+      std::fprintf(stderr, "stamped_ages: Fast-DDS refused a sample\n");
+      return 3;
+    }
+    std::printf("%s\n%s %d\n", stamped::line(m).c_str(), fresh ? "fresh" : "stale", i);
+    std::fflush(stdout);
+    std::this_thread::sleep_for(50ms);
+  }
+  bool acked = w->wait_for_acknowledgments(eprosima::fastrtps::Duration_t(10, 0)) ==
+               ReturnCode_t::RETCODE_OK;
+  p->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(p);
+  return acked ? 0 : 3;
+}
