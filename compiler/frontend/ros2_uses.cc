@@ -72,6 +72,7 @@ class Declarer {
       if (!fresh) continue;  // the same message used twice: declared once
       taken_.insert(def->name);
       used.push_back({&u, def});
+      uses_[def->full_name()] = &u;
     }
     // Pass 2: declare them, each message they use first.
     for (const auto& [use, def] : used) declare(*def, *use);
@@ -114,9 +115,11 @@ class Declarer {
     return nullptr;
   }
 
-  // Declares `def` (and, first, each message it uses) as a record type; the name it got.
-  std::string declare(const ros2::MsgDefinition& def, const UseDecl& use) {
+  // Declares `def` (and, first, each message it uses) as a record type; the name it got. Its
+  // place is its own `use`, else that of the used message that needs it (`by`).
+  std::string declare(const ros2::MsgDefinition& def, const UseDecl& by) {
     std::string full = def.full_name();
+    const UseDecl& use = uses_.count(full) ? *uses_.at(full) : by;
     if (declared_.count(full)) return names_.at(full);
     declared_.insert(full);
     std::string name = names_.count(full) ? names_.at(full) : own_name(def);
@@ -205,9 +208,10 @@ class Declarer {
   std::vector<Diagnostic>& out_;
   std::set<std::string>& failed_;  // spec_.failed_uses
   ros2::MsgLibrary library_;
-  std::set<std::string> taken_;               // type names already given
-  std::map<std::string, std::string> names_;  // "pkg/msg/Name" -> its type's name
-  std::set<std::string> declared_;            // full names declare() has started
+  std::set<std::string> taken_;                 // type names already given
+  std::map<std::string, std::string> names_;    // "pkg/msg/Name" -> its type's name
+  std::set<std::string> declared_;              // full names declare() has started
+  std::map<std::string, const UseDecl*> uses_;  // "pkg/msg/Name" -> the `use` naming it
 };
 
 // A type as a spec writes it: `{ linear: Vector3, angular: Vector3 }`.

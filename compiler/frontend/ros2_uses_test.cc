@@ -99,6 +99,9 @@ TEST_F(Ros2UsesTest, AUsedMessageTakesANameTheSpecDoesNotHave) {
   int vectors = 0;
   for (const ast::TypeDecl& t : r.spec->types) vectors += t.ros2 == "geometry_msgs/msg/Vector3";
   EXPECT_EQ(vectors, 1);
+  // Each at its own `use` (go to definition leads there), not at the first that needed it.
+  EXPECT_EQ(type(r, "Vector3")->loc.line, 3);
+  EXPECT_EQ(type(r, "Header")->loc.line, 4);  // needed by TwistStamped only
 }
 
 TEST_F(Ros2UsesTest, AUsedMessageNamedLikeASpecTypeIsADuplicate) {
