@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "TwistPaddedPubSubTypes.h"
+#include "interop_participant.h"
 
 namespace fdds = eprosima::fastdds::dds;
 using namespace std::chrono_literals;
@@ -48,13 +49,7 @@ int main(int argc, char** argv) {
   qos.resource_limits().max_samples_per_instance = count + 1;
   fdds::DataWriter* w = pub->create_datawriter(topic, qos);
   if (!w) return 3;
-  for (int i = 0;; ++i) {
-    fdds::PublicationMatchedStatus status;
-    w->get_publication_matched_status(status);
-    if (status.current_count > 0) break;
-    if (i == 1500) return 4;  // 30 s without a reader
-    std::this_thread::sleep_for(20ms);
-  }
+  if (!interop::matched(w)) return 4;  // 30 s without a reader
   for (int k = 0; k < count; ++k) {
     geometry_msgs::msg::dds_::Twist_ t;
     t.linear().x(static_cast<double>(k + 1));

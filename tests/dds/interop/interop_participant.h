@@ -3,11 +3,14 @@
 // generated types, which define structs of the same names (Twist.idl, Stamped.idl).
 #pragma once
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
 #include <string>
+#include <thread>
 
 namespace interop {
 
@@ -55,6 +58,17 @@ void qos_from_args(Qos& qos, int argc, char** argv, int first) {
       std::exit(2);
     }
   }
+}
+
+// Waits (at most 30 s) until some reader listens on w's topic.
+inline bool matched(fdds::DataWriter* w) {
+  for (int i = 0; i < 1500; ++i) {
+    fdds::PublicationMatchedStatus status;
+    w->get_publication_matched_status(status);
+    if (status.current_count > 0) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
 }
 
 }  // namespace interop

@@ -32,17 +32,6 @@ void send(fdds::DataWriter* w, double x) {
   w->write(&t);
 }
 
-// Waits (at most 30 s) until some reader listens on w's topic.
-bool matched(fdds::DataWriter* w) {
-  for (int i = 0; i < 1500; ++i) {
-    fdds::PublicationMatchedStatus status;
-    w->get_publication_matched_status(status);
-    if (status.current_count > 0) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,7 +43,7 @@ int main(int argc, char** argv) {
   fdds::Publisher* pub = p->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   fdds::DataWriter* joy = writer(p, pub, "rt/joy/cmd_vel");
   fdds::DataWriter* nav = writer(p, pub, "rt/nav/cmd_vel");
-  if (!matched(joy) || !matched(nav)) {
+  if (!interop::matched(joy) || !interop::matched(nav)) {
     std::fprintf(stderr, "interop_pub: no reader on rt/joy/cmd_vel or rt/nav/cmd_vel in 30 s\n");
     return 3;
   }

@@ -34,16 +34,6 @@ TwistStamped_ stamped_now(std::chrono::milliseconds ago, double x) {
   return m;
 }
 
-bool matched(fdds::DataWriter* w) {
-  for (int i = 0; i < 1500; ++i) {
-    fdds::PublicationMatchedStatus status;
-    w->get_publication_matched_status(status);
-    if (status.current_count > 0) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -62,7 +52,7 @@ int main(int argc, char** argv) {
       p->create_topic("rt/in/stamped", "geometry_msgs::msg::dds_::TwistStamped_",
                       fdds::TOPIC_QOS_DEFAULT),
       qos);
-  if (!matched(w)) {
+  if (!interop::matched(w)) {
     std::fprintf(stderr, "stamped_ages: no reader on rt/in/stamped in 30 s\n");
     return 3;
   }

@@ -198,17 +198,6 @@ fdds::DataWriter* writer(fdds::DomainParticipant* p, fdds::Publisher* pub, const
   return pub->create_datawriter(p->create_topic(topic, type, fdds::TOPIC_QOS_DEFAULT), qos);
 }
 
-// Waits (at most 30 s) until some reader listens on w's topic.
-bool matched(fdds::DataWriter* w) {
-  for (int i = 0; i < 1500; ++i) {
-    fdds::PublicationMatchedStatus status;
-    w->get_publication_matched_status(status);
-    if (status.current_count > 0) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
-}
-
 // Writes each sample and prints its line; false when Fast-DDS refuses one.
 template <class T>
 bool send(fdds::DataWriter* w, std::vector<T> samples) {
@@ -234,7 +223,7 @@ int main(int argc, char** argv) {
   fdds::Publisher* pub = p->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   fdds::DataWriter* st = writer(p, pub, "rt/in/stamped", "geometry_msgs::msg::dds_::TwistStamped_");
   fdds::DataWriter* wi = writer(p, pub, "rt/in/widths", "arbc_test::msg::dds_::Widths_");
-  if (!matched(st) || !matched(wi)) {
+  if (!interop::matched(st) || !interop::matched(wi)) {
     std::fprintf(stderr, "stamped_pub: no reader on rt/in/stamped or rt/in/widths in 30 s\n");
     return 3;
   }
