@@ -472,6 +472,10 @@ class Ros2Types(Session):
                       h["contents"]["value"])
         h = self.c.request("textDocument/hover", self.at("stamp.sec", 0, len("stamp.")))
         self.assertIn("`int32`", h["contents"]["value"])
+        # From arbc's built-in definitions, it has no file: its definition is its `use`.
+        loc = self.c.request("textDocument/definition", self.at("TwistStamped; }", 0))
+        self.assertEqual(loc["uri"], self.uri)
+        self.assertEqual(loc["range"]["start"], position_of(self.text, "TwistStamped;"))
 
     def test_a_message_not_found_is_an_error_at_the_use(self):
         self.text = ROS2_SPEC.replace("geometry_msgs/msg/TwistStamped", "nav_msgs/msg/Nothing")
@@ -479,6 +483,36 @@ class Ros2Types(Session):
         self.assertIn("ros2-message", [d.get("code") for d in diagnostics])
         first = next(d for d in diagnostics if d.get("code") == "ros2-message")
         self.assertEqual(first["range"]["start"], position_of(self.text, "nav_msgs/msg/Nothing"))
+
+
+class Ros2TypesFromFiles(Session):
+    """A type `use ros2` read from a .msg file (given with --msg-path): go to definition opens
+    the file, hover says where it was read."""
+
+    def setUp(self):
+        self.msgs = tempfile.mkdtemp(prefix=SCRATCH_PREFIX)
+        os.makedirs(os.path.join(self.msgs, "sensor_msgs", "msg"))
+        self.msg = os.path.join(self.msgs, "sensor_msgs", "msg", "Range.msg")
+        with open(self.msg, "w") as f:
+            f.write("std_msgs/Header header\nfloat32 range\n")
+        self.c = LspClient([ARBC, "lsp", "--no-verify", "--msg-path", self.msgs])
+        self.init = self.c.initialize(ROOT)
+        self.text = ("app sonar;\nuse ros2 sensor_msgs/msg/Range;\n"
+                     "module Sonar { out range: Range; }\nmodule Base { in range: Range; }\n"
+                     "arbitrate Base.range { near: from Sonar.range; }\n")
+        self.uri = file_uri(os.path.join(ROOT, "sonar.spec"))
+
+    def tearDown(self):
+        super().tearDown()
+        shutil.rmtree(self.msgs)
+
+    def test_definition_opens_the_msg_file(self):
+        self.assertEqual(self.open_spec(), [])
+        loc = self.c.request("textDocument/definition", self.at("Range; }", 0))
+        self.assertEqual(loc["uri"], file_uri(self.msg))
+        self.assertEqual(loc["range"]["start"], {"line": 0, "character": 0})
+        h = self.c.request("textDocument/hover", self.at("Range; }", 1))
+        self.assertIn("read from `%s`" % self.msg, h["contents"]["value"])
 
 
 class Hover(Session):
