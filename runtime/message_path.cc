@@ -66,6 +66,7 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value&& v) {
 void Runtime::from_source(OutPort& out, const Value& v, uint64_t answered) {
   if (!out.hosted && trace_.enabled()) trace_.publish(now(), out.qualified, v);
   ++arrivals_;
+  arrival_at_ = now();
   for (Connection* c : out.connections) enqueue(*c, v, answered);
 }
 
@@ -145,6 +146,7 @@ void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   queued.value = v;
   queued.answered = answered;
   queued.message = arrivals_;
+  queued.arrived = arrival_at_;
   if (!c.drain_posted) post_drain(c);
 }
 
@@ -167,7 +169,9 @@ void Runtime::drain(Connection& c) {
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
   } else {
+    c.judging_since = queued.arrived;
     process(c, queued.value);
+    c.judging_since.reset();
   }
   if (!c.queue.empty() && !c.drain_posted) post_drain(c);
 }
@@ -381,8 +385,10 @@ void Runtime::schedule_trig(Connection& c, bool restart) {
 
 Nanos Runtime::Connection::now() { return runtime->now(); }
 
+// While a message is judged, the instant it arrived, for every connection it feeds (one clock
+// for the rules that judge it, as the proof assumes: verify/builtin_calls.cc); otherwise now.
 Nanos Runtime::Connection::stamp_now() {
-  return runtime->executor().stamp_origin() + runtime->now();
+  return runtime->executor().stamp_origin() + judging_since.value_or(runtime->now());
 }
 
 // Without a lifetime, the one app.json declares for the event (none: until unset).

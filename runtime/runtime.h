@@ -299,7 +299,10 @@ class Runtime {
   std::map<std::string, InPort*, std::less<>> inputs_by_name_;
   std::map<std::string, OutPort*, std::less<>> outputs_by_name_;
   std::map<std::string, RemoteModule, std::less<>> remote_modules_;  // by name; stable addresses
-  uint64_t arrivals_ = 0;      // messages from sources so far (each from_source call)
+  uint64_t arrivals_ = 0;  // messages from sources so far (each from_source call)
+  // When the message from_source is enqueueing arrived: every connection it feeds reads this
+  // instant as its stamp clock (age()), so the rules that judge it read one clock.
+  Nanos arrival_at_{0};
   uint64_t remote_sent_ = 0;   // deliveries into modules hosted elsewhere so far
   Nanos longest_lifetime_{0};  // of app.json's events: how long delivery times matter
   ModuleSet host_, mediate_;

@@ -41,12 +41,13 @@ inline Ev to_float(const Ev& a) {
 class Encoder {
  public:
   Encoder(z3::context& ctx, const SymValue& msg, std::string prefix, EncodedBody& out,
-          bool abstract_lengths)
+          bool abstract_lengths, std::string clock)
       : ctx_(ctx),
         msg_(msg),
         prefix_(std::move(prefix)),
         out_(out),
-        abstract_lengths_(abstract_lengths) {}
+        abstract_lengths_(abstract_lengths),
+        clock_(std::move(clock)) {}
 
   void run(const model::Body& body) {
     z3::expr alive = ctx_.bool_val(true);
@@ -87,6 +88,8 @@ class Encoder {
   // A reading of the run's clock the proof does not know (now(), age()): finite, and not
   // negative unless `signed_`; abstracted, and named `text` in the state of a counterexample.
   SymValue clock_value(const std::string& what, const std::string& text, bool signed_);
+  // age(t) as the prelude computes it: stamp_now() - (t.sec + t.nanosec * 1e-9).
+  Ev age(const Ev& stamp);
 
   void exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue& emitted);
   void exec_if(const BodyStmt& s, z3::expr& alive, SymValue& emitted);
@@ -97,6 +100,7 @@ class Encoder {
   std::string prefix_;
   EncodedBody& out_;
   bool abstract_lengths_;
+  std::string clock_;  // encode_body's: the name of the clock age() reads, or "" (its own)
   std::map<std::string, SymValue> locals_;
   std::map<std::string, SymValue> params_;
   int counter_ = 0;

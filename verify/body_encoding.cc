@@ -337,10 +337,11 @@ void Encoder::exec(const std::vector<BodyStmt>& block, z3::expr& alive, SymValue
 }  // namespace body
 
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
-                        const std::string& prefix, bool abstract_lengths) {
+                        const std::string& prefix, bool abstract_lengths,
+                        const std::string& clock) {
   EncodedBody out(ctx);
   try {
-    body::Encoder(ctx, msg, prefix, out, abstract_lengths).run(body);
+    body::Encoder(ctx, msg, prefix, out, abstract_lengths, clock).run(body);
   } catch (const z3::exception& e) {
     out.opaque = std::string("the solver rejected the encoding: ") + e.msg();
   }

@@ -70,8 +70,11 @@ struct EncodedBody {
 // Encodes `body` on the message `msg`; fresh constants are named after `prefix` (unique per
 // rule and message). With `abstract_lengths`, the norm of floats is left abstract (`lengths`):
 // the encoding then over-approximates the body (an unsat answer holds for the machine, a
-// model holds only once every length in it agrees with its `exact`).
+// model holds only once every length in it agrees with its `exact`). `clock` names the run's
+// clock (as ROS 2 time) that age() reads: encodings given one name read one clock, as the rules
+// that judge one message do at its one instant; "" gives each call a clock of its own.
 EncodedBody encode_body(z3::context& ctx, const model::Body& body, const SymValue& msg,
-                        const std::string& prefix, bool abstract_lengths = false);
+                        const std::string& prefix, bool abstract_lengths = false,
+                        const std::string& clock = "");
 
 }  // namespace arbc::verify

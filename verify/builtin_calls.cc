@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/body_spec_text.h"
 #include "verify/body_encoder.h"
 
 namespace arbc::verify::body {
@@ -45,10 +44,7 @@ Ev Encoder::call(const BodyExpr& e) {
   }
   if (e.builtin == Builtin::Abs && args.size() == 1 && args[0].v.numeric())
     return {lua::abs(args[0].v), ok};
-  // The clock minus a stamp of integer seconds: any finite duration, its argument evaluated for
-  // what can leave it without a value.
-  if (e.builtin == Builtin::Age && args.size() == 1)
-    return {clock_value("age", model::body_expr_spec_text(e, "msg"), true), ok};
+  if (e.builtin == Builtin::Age && args.size() == 1) return age(args[0]);
   if (e.builtin == Builtin::Vec3 && args.size() == 3) {
     SymValue v(K::Vec3, ctx_.bool_val(true));
     for (const Ev& a : args) v.items.push_back(a.v);
@@ -61,6 +57,34 @@ Ev Encoder::call(const BodyExpr& e) {
     return length(dist, args, ok);
   }
   return bad("the call " + f + "()");
+}
+
+// The clock is stamp_now(): not negative, finite, and unknown, so the verdict assumes nothing of
+// it (abstracted; a counterexample that needs it is not replayed). One Z3 constant per clock
+// name: the rules of one message read the same clock, hence the same age of the same stamp.
+// The age is a function of the clock and the stamp, left uninterpreted but finite: the double
+// arithmetic itself made a query with two overlapping age rules time out, and what a decision
+// needs is only that equal clocks and stamps give equal ages (the monitor's Lua is
+// deterministic), and that the age is a number.
+Ev Encoder::age(const Ev& stamp) {
+  const SymValue* sec = stamp.v.field("sec");
+  const SymValue* nanosec = stamp.v.field("nanosec");
+  if (stamp.v.kind != K::Record || !sec || !nanosec) return bad("age of a value that is no stamp");
+  SymValue clock = clock_.empty() ? clock_value("stamp_now", "stamp_now()", false)
+                                  : SymValue(K::Float, lua::float_const(ctx_, clock_));
+  if (!clock_.empty()) {
+    out_.side.push_back(lua::less_equal({K::Float, lua::float_val(ctx_, 0.0)}, clock) &&
+                        lua::less(clock, {K::Float, lua::float_val(ctx_, HUGE_VAL)}));
+    out_.abstracted.push_back("stamp_now()");
+    out_.state.emplace_back("stamp_now()", clock);
+  }
+  z3::sort f = lua::float_sort(ctx_);
+  z3::func_decl fn =
+      ctx_.function("arbc_age", f, sec->scalar.get_sort(), nanosec->scalar.get_sort(), f);
+  SymValue a(K::Float, fn(clock.scalar, sec->scalar, nanosec->scalar));
+  out_.side.push_back(lua::less({K::Float, lua::float_val(ctx_, -HUGE_VAL)}, a) &&
+                      lua::less(a, {K::Float, lua::float_val(ctx_, HUGE_VAL)}));
+  return {a, stamp.ok};
 }
 
 SymValue Encoder::clock_value(const std::string& what, const std::string& text, bool signed_) {

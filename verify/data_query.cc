@@ -85,8 +85,9 @@ const SymValue& DataQuery::message(const std::string& source) {
 const DataQuery::Encoded& DataQuery::encoded(const model::Connection& c) {
   auto it = rules_.find(&c);
   if (it != rules_.end()) return *it->second;
+  // One clock per source: the rules that read its message judge it at one instant (age()).
   EncodedBody b = encode_body(ctx_, *c.body, message(c.source), c.destination + "/" + c.name,
-                              /*abstract_lengths=*/true);
+                              /*abstract_lengths=*/true, "clock@" + c.source);
   z3::expr lit = ctx_.bool_const(("accepts!" + c.destination + "/" + c.name).c_str());
   spend_tail_reads(c.source, b);
   if (b.opaque.empty()) {
@@ -114,7 +115,7 @@ z3::expr DataQuery::predicate_literal(const model::Connection& c, const model::B
   EncodedBody pe =
       encode_body(ctx_, predicate_body(p), *e.body.emitted,
                   c.destination + "/" + c.name + ".emitted#" + std::to_string(predicates_.size()),
-                  /*abstract_lengths=*/true);
+                  /*abstract_lengths=*/true, "clock@" + c.source);
   spend_tail_reads(c.source, pe);
   // A predicate that cannot be encoded constrains nothing: the literal stays free, so it may
   // hold on any delivery (sound; sema types it on the port, so a checked spec never gets here).

@@ -53,6 +53,39 @@ bool no_delivery_events(const model::App& app, std::vector<Diagnostic>& out) {
   return ok;
 }
 
+bool calls_age(const model::BodyExpr& e) {
+  if (e.op == model::BodyExpr::Op::Call && e.builtin == Builtin::Age) return true;
+  for (const model::BodyExpr& a : e.args)
+    if (calls_age(a)) return true;
+  return false;
+}
+
+bool calls_age(const model::Body& body) {
+  for (const model::BodyStmt& s : body)
+    if (calls_age(s.expr) || calls_age(s.then_body) || calls_age(s.else_body)) return true;
+  return false;
+}
+
+// age() (docs/language.md#message-age): the proof has the rules that judge one message read one
+// clock, the instant it arrived, which the embedded runtime gives them; on YARP each monitor
+// reads yarp.now() when it runs, in its own module's process, so two rules could read two.
+bool no_ages(const model::App& app, std::vector<Diagnostic>& out) {
+  bool ok = true;
+  for (const model::Connection& c : app.connections) {
+    if (!c.body || !calls_age(*c.body)) continue;
+    Diagnostic d;
+    d.loc = c.loc;
+    d.id = diag::Codegen.text();
+    d.message = "'" + c.name +
+                "' calls age(), which cannot be built for YARP: the proof has the "
+                "rules that judge one message read one clock, and each YARP monitor reads its "
+                "own; build for the embedded runtime or DDS";
+    out.push_back(std::move(d));
+    ok = false;
+  }
+  return ok;
+}
+
 }  // namespace
 
 bool YarpTarget::configure(const TargetOptions& options, std::string*) {
@@ -69,7 +102,7 @@ CodegenResult YarpTarget::generate(const lower::LoweredApp& lowered) const {
     result.diagnostics.push_back(clash);
     result.bad_input = true;
   }
-  if (!no_delivery_events(app, result.diagnostics)) {
+  if (!no_delivery_events(app, result.diagnostics) || !no_ages(app, result.diagnostics)) {
     result.bad_input = true;
     return result;
   }

@@ -565,6 +565,26 @@ def case_age_rejects_stale_commands(arbc, tmp):
     code, out, err = run(arbc, "test", strict)
     expect(code == 1 and "1 failed" in out and "expected Base.cmd_vel receives" in out + err,
            f"with a 50 ms limit, exit {code}: the stale first command was not caught", out, err)
+    # Complementary ages in two rules of one port: one clock per message, so exclusive by data.
+    pair = os.path.join(tmp, "pair.spec")
+    with open(pair, "w", encoding="utf-8") as f:
+        f.write(text.replace("    accept age(cmd_vel.header.stamp) < MAX_AGE;\n  }\n}",
+                             "    accept age(cmd_vel.header.stamp) < MAX_AGE;\n  }\n"
+                             "  stop: from Nav.cmd_vel {\n"
+                             "    accept age(cmd_vel.header.stamp) >= MAX_AGE;\n  }\n}"))
+    code, out, err = run(arbc, "verify", pair)
+    expect(code == 0 and "exclusive by data: 'nav' and 'stop'" in out,
+           f"complementary ages: exit {code}", out, err)
+    overlapping = open(pair, encoding="utf-8").read().replace(">= MAX_AGE", ">= 100ms")
+    with open(pair, "w", encoding="utf-8") as f:
+        f.write(overlapping)
+    code, out, err = run(arbc, "verify", pair)
+    expect(code == 1 and "can both be selected" in out + err,
+           f"overlapping ages (under 200 ms, from 100 ms): exit {code}", out, err)
+    # YARP monitors each read their own clock: refused there, saying why.
+    code, out, err = run(arbc, "build", spec, "--target", "yarp", "-o", os.path.join(tmp, "y"))
+    expect(code == 2 and "calls age(), which cannot be built for YARP" in out + err,
+           f"--target yarp: exit {code}", out, err)
 
 
 def main():
