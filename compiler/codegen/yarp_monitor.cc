@@ -136,7 +136,6 @@ class YarpMonitorWriter {
         write_monitor(lowered_, lowered_.monitors[link_.parts[k]], lines_, style(k)).text;
     replace_all(text, "PortMonitor.novalue()", "arbc_novalue()");
     replace_all(text, "PortMonitor.now()", "yarp.now()");
-    replace_all(text, "PortMonitor.stamp_now()", "yarp.now()");  // YARP's: since the epoch
     out += "do\n" + text + "end\n\n";
     return out;
   }
