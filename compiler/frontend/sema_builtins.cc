@@ -8,17 +8,6 @@ namespace arbc::frontend {
 
 using namespace ast;
 
-namespace {
-
-const TypePtr kInt = Type::scalar(Type::Kind::Int);
-const TypePtr kFloat = Type::scalar(Type::Kind::Float);
-const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
-
-// The numeric type of combining a and b: int only if both are, uint64 if either is (core/type.h).
-TypePtr numeric_join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
-
-}  // namespace
-
 // ---- builtins -----------------------------------------------------------------------------
 
 void Sema::check_call(Expr& e, Scope& scope) {

@@ -16,15 +16,6 @@ using namespace ast;
 
 namespace {
 
-const TypePtr kBool = Type::scalar(Type::Kind::Bool);
-const TypePtr kInt = Type::scalar(Type::Kind::Int);
-const TypePtr kFloat = Type::scalar(Type::Kind::Float);
-const TypePtr kString = Type::scalar(Type::Kind::String);
-const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
-
-// The numeric type of combining a and b: int only if both are, uint64 if either is (core/type.h).
-TypePtr numeric_join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
-
 const char* const kIntTooBig =
     "this int does not fit in 64 bits (-9223372036854775808 to 9223372036854775807): write it "
     "as a float (with a decimal point) or use a smaller value";

@@ -16,6 +16,16 @@ namespace arbc::frontend {
 // fits any list.
 bool assignable(const Type& from, const Type& to);
 
+// The scalar types sema gives expressions, one object each for the files that check them.
+inline const TypePtr kBool = Type::scalar(Type::Kind::Bool);
+inline const TypePtr kInt = Type::scalar(Type::Kind::Int);
+inline const TypePtr kFloat = Type::scalar(Type::Kind::Float);
+inline const TypePtr kString = Type::scalar(Type::Kind::String);
+inline const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
+
+// The numeric type of combining a and b: int only if both are, uint64 if either is (core/type.h).
+inline TypePtr numeric_join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
+
 bool is_numeric(const TypePtr& t);
 bool is_kind(const TypePtr& t, Type::Kind kind);
 // A stamp age() reads: a record with integer fields `sec` and `nanosec` (builtin_interfaces/msg/
