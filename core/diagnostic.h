@@ -28,6 +28,16 @@ struct Diagnostic {
   std::vector<Diagnostic> notes;  // extra lines: "did you mean", "why each side holds"
 };
 
+// A diagnostic in one expression, without notes.
+inline Diagnostic make_diagnostic(Severity s, model::SourceLocation loc, std::string message,
+                                  std::string id) {
+  return {s, std::move(loc), std::move(message), std::move(id), {}};
+}
+// Adds a note line under `d` (quoting `loc`'s line when it has one).
+inline void add_note(Diagnostic& d, std::string message, model::SourceLocation loc = {}) {
+  d.notes.push_back({Severity::Note, std::move(loc), std::move(message), "", {}});
+}
+
 // Source text by file name, to quote lines under diagnostics. Files are read on demand;
 // a file that cannot be read is quoted as nothing.
 class SourceCache {

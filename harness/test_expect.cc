@@ -15,9 +15,6 @@ namespace arbc::harness {
 
 namespace {
 
-// Times as the spec writes durations, like the expectations the failures quote.
-std::string seconds(Nanos t) { return duration_literal(t); }
-
 // A received value as a spec literal, fields in the order of the port's type, as the
 // expectation it is compared with is written.
 std::string text_of(const Value& v, const std::string& port, const TestRun& run) {
@@ -28,9 +25,10 @@ std::string text_of(const Value& v, const std::string& port, const TestRun& run)
 bool in_window(Nanos t, const model::Expectation& e) { return e.from <= t && t <= e.to; }
 
 std::string window(const model::Expectation& e) {
-  if (e.to == kNever) return e.from == Nanos(0) ? "during the test" : "from " + seconds(e.from);
-  if (e.from == e.to) return "at " + seconds(e.from);
-  return "between " + seconds(e.from) + " and " + seconds(e.to);
+  if (e.to == kNever)
+    return e.from == Nanos(0) ? "during the test" : "from " + duration_literal(e.from);
+  if (e.from == e.to) return "at " + duration_literal(e.from);
+  return "between " + duration_literal(e.from) + " and " + duration_literal(e.to);
 }
 
 // When nothing reached the port in the window: the value it received closest in time outside
@@ -52,9 +50,9 @@ std::string nearest_outside(const model::Expectation& e, const TestRun& run) {
   }
   if (!best) return "";
   if (!e.value || near_equal(*e.value, best->value))
-    return "; it received that value at " + seconds(best->t);
+    return "; it received that value at " + duration_literal(best->t);
   return "; the nearest it received was " + text_of(best->value, e.port, run) + " at " +
-         seconds(best->t);
+         duration_literal(best->t);
 }
 
 std::string check_receives(const model::Expectation& e, const TestRun& run) {
@@ -65,7 +63,7 @@ std::string check_receives(const model::Expectation& e, const TestRun& run) {
   if (e.kind == model::Expectation::Kind::Nothing) {
     if (got.empty()) return "";
     return "but " + e.port + " received " + text_of(got.front()->value, e.port, run) + " at " +
-           seconds(got.front()->t) + " (from " + got.front()->connection + ")";
+           duration_literal(got.front()->t) + " (from " + got.front()->connection + ")";
   }
   for (const Received* r : got) {
     if (!e.value || near_equal(*e.value, r->value)) return "";
@@ -74,7 +72,7 @@ std::string check_receives(const model::Expectation& e, const TestRun& run) {
     return "but nothing reached " + e.port + " " + window(e) + nearest_outside(e, run);
   std::string out = "but " + e.port + " received other values " + window(e) + ":";
   for (size_t i = 0; i < got.size() && i < 5; ++i)
-    out += "\n    " + seconds(got[i]->t) + " " + text_of(got[i]->value, e.port, run);
+    out += "\n    " + duration_literal(got[i]->t) + " " + text_of(got[i]->value, e.port, run);
   return out;
 }
 
@@ -86,9 +84,10 @@ std::string check_drops(const model::Expectation& e, const TestRun& run) {
     if (r.kind == TraceKind::Drop) {
       if (e.reason.empty() || e.reason == drop_reason_name(r.reason)) return "";
       if (count++ < 5)
-        seen += ", dropped (" + std::string(drop_reason_name(r.reason)) + ") at " + seconds(r.t);
+        seen += ", dropped (" + std::string(drop_reason_name(r.reason)) + ") at " +
+                duration_literal(r.t);
     } else if (r.kind == TraceKind::Deliver && count++ < 5) {
-      seen += ", delivered at " + seconds(r.t);
+      seen += ", delivered at " + duration_literal(r.t);
     }
   }
   if (seen.empty()) return "but no message reached " + e.connection + " " + window(e);
@@ -102,7 +101,8 @@ std::string check_delivers(const model::Expectation& e, const TraceRecord* first
                            const TestRun& run) {
   if (e.kind == model::Expectation::Kind::DeliversNothing) {
     if (!first) return "";
-    return "but " + e.connection + " delivered at " + seconds(first->t) + " to " + first->port;
+    return "but " + e.connection + " delivered at " + duration_literal(first->t) + " to " +
+           first->port;
   }
   if (first) return "";
   std::optional<Nanos> nearest;
@@ -113,7 +113,7 @@ std::string check_delivers(const model::Expectation& e, const TraceRecord* first
     if (!nearest || d < gap) nearest = r.t, gap = d;
   }
   std::string out = "but " + e.connection + " delivered nothing " + window(e);
-  if (nearest) out += "; it delivered at " + seconds(*nearest);
+  if (nearest) out += "; it delivered at " + duration_literal(*nearest);
   return out;
 }
 
@@ -155,7 +155,7 @@ std::string check_state(const model::Expectation& e, const TestRun& run) {
   for (const auto& [event, port] : e.containers)
     if (present.count({port, event})) read.insert(event);
   if (evaluate(e.state, read)) return "";
-  std::string out = "but at " + seconds(e.from);
+  std::string out = "but at " + duration_literal(e.from);
   for (const auto& [event, port] : e.containers) {
     out += (&event == &e.containers.begin()->first ? " " : "; ") + event + " is " +
            (read.count(event) ? "present in " : "absent from ") + port + "'s container";
@@ -283,10 +283,10 @@ std::string trace_around(const TestRun& run, Nanos from, Nanos to) {
   size_t shown = std::min<size_t>(window.size(), 20), more = window.size() - shown;
   // The times in a column as wide as the widest (they read "0s", "100ms", "1.2s").
   size_t width = 0;
-  for (size_t i = 0; i < shown; ++i) width = std::max(width, seconds(window[i]->t).size());
+  for (size_t i = 0; i < shown; ++i) width = std::max(width, duration_literal(window[i]->t).size());
   std::string out;
   for (size_t i = 0; i < shown; ++i) {
-    std::string t = seconds(window[i]->t);
+    std::string t = duration_literal(window[i]->t);
     out += "    " + t + std::string(width - t.size() + 2, ' ') + describe(*window[i]) + "\n";
   }
   if (more) out += "    ... " + std::to_string(more) + " more\n";

@@ -64,9 +64,6 @@ std::string events_before(const std::vector<TraceRecord>& records, size_t index,
   return out.empty() ? "(none)" : out;
 }
 
-// As a test writes a time (`at 1.2s`): a diverging record is where a test would pin the run.
-std::string seconds(Nanos t) { return duration_literal(t); }
-
 }  // namespace
 
 bool read_trace_file(const std::string& path, std::vector<TraceRecord>* records, std::string* err) {
@@ -118,12 +115,12 @@ std::string first_difference(const model::App& app, const std::vector<TraceRecor
   std::string port = c ? c->destination : "";
   std::string out = "first difference: connection " + best_name +
                     (port.empty() ? "" : " into " + port) + ", its message " +
-                    std::to_string(best_k + 1) + ", at " + seconds(best_t) + "\n";
+                    std::to_string(best_k + 1) + ", at " + duration_literal(best_t) + "\n";
   auto line = [&](const std::string& who, const std::vector<Decision>& list,
                   const std::vector<TraceRecord>& records) {
     const TraceRecord* r = best_k < list.size() ? list[best_k].record : nullptr;
     out += "  " + who + ": " + describe(r);
-    if (r && r->t != best_t) out += " at " + seconds(r->t);
+    if (r && r->t != best_t) out += " at " + duration_literal(r->t);
     if (r && !port.empty())
       out += "; events at " + port + ": " + events_before(records, list[best_k].index, port, r->t);
     out += "\n";

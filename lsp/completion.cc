@@ -15,7 +15,8 @@ namespace arbc::lsp {
 namespace {
 
 // LSP CompletionItemKind numbers.
-enum Kind {
+namespace item_kind {
+enum : int {
   kField = 5,
   kVariable = 6,
   kModule = 9,
@@ -25,6 +26,7 @@ enum Kind {
   kStruct = 22,
   kEvent = 23
 };
+}  // namespace item_kind
 
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -46,17 +48,17 @@ std::vector<std::string> chain_before(std::string_view line, size_t end) {
 int kind_of(SymbolKind k) {
   switch (k) {
     case SymbolKind::Event:
-      return kEvent;
+      return item_kind::kEvent;
     case SymbolKind::Const:
-      return kConstant;
+      return item_kind::kConstant;
     case SymbolKind::Type:
-      return kStruct;
+      return item_kind::kStruct;
     case SymbolKind::Module:
-      return kModule;
+      return item_kind::kModule;
     case SymbolKind::Rule:
-      return kFunction;
+      return item_kind::kFunction;
     default:
-      return kVariable;
+      return item_kind::kVariable;
   }
 }
 
@@ -77,7 +79,7 @@ void add_members(const SymbolIndex& ix, const std::vector<std::string>& chain, i
     if (const Symbol* m = ix.find("module:" + chain[0])) {
       for (const Symbol& s : ix.symbols)
         if (s.kind == SymbolKind::Port && s.container == m->name)
-          items.push_back({{"label", s.name}, {"kind", kField}});
+          items.push_back({{"label", s.name}, {"kind", item_kind::kField}});
       return;
     }
   const Symbol* root = resolve(ix, chain[0], line);
@@ -90,11 +92,12 @@ void add_members(const SymbolIndex& ix, const std::vector<std::string>& chain, i
   }
   if (t && t->kind == Type::Kind::Vec3)
     for (const char* axis : {"x", "y", "z"})
-      items.push_back({{"label", axis}, {"kind", kField}, {"detail", "float"}});
+      items.push_back({{"label", axis}, {"kind", item_kind::kField}, {"detail", "float"}});
   if (t && t->kind == Type::Kind::Record)
     for (const Field& f : t->fields)
-      items.push_back(
-          {{"label", f.name}, {"kind", kField}, {"detail", f.type ? f.type->to_string() : "?"}});
+      items.push_back({{"label", f.name},
+                       {"kind", item_kind::kField},
+                       {"detail", f.type ? f.type->to_string() : "?"}});
 }
 
 // The rule whose body the cursor is probably in: the last declared above the cursor; its key,
@@ -133,10 +136,10 @@ nlohmann::json completion(const Document& doc, Position p) {
     return {{"isIncomplete", false}, {"items", items}};
   }
   for (const std::string& k : frontend::grammar_keywords())
-    items.push_back({{"label", k}, {"kind", kKeyword}});
+    items.push_back({{"label", k}, {"kind", item_kind::kKeyword}});
   for (const BuiltinInfo& b : kBuiltins)
     items.push_back({{"label", std::string(b.name)},
-                     {"kind", kFunction},
+                     {"kind", item_kind::kFunction},
                      {"detail", std::string(b.signature)},
                      {"documentation", std::string(b.summary)}});
   if (ix) add_names(*ix, p.line + 1, items);

@@ -10,7 +10,8 @@ namespace arbc::lsp {
 namespace {
 
 // LSP SymbolKind numbers.
-enum Kind {
+namespace symbol_kind {
+enum : int {
   kModule = 2,
   kNamespace = 3,
   kPackage = 4,
@@ -23,6 +24,7 @@ enum Kind {
   kStruct = 23,
   kEvent = 24
 };
+}  // namespace symbol_kind
 
 // The smallest location covering both.
 Loc span(Loc a, const Loc& b) {
@@ -64,10 +66,10 @@ void add_modules(const Document& doc, const ast::Spec& spec, nlohmann::json& out
     for (const ast::PortDecl& p : m.ports) {
       Loc pl = span(name_loc(p.loc, p.name), p.type.loc);
       whole = span(whole, pl);
-      children.push_back(item(doc, p.name, kProperty, pl, name_loc(p.loc, p.name),
+      children.push_back(item(doc, p.name, symbol_kind::kProperty, pl, name_loc(p.loc, p.name),
                               p.direction == model::Direction::In ? "in" : "out"));
     }
-    nlohmann::json j = item(doc, m.name, kModule, whole, name, m.doc);
+    nlohmann::json j = item(doc, m.name, symbol_kind::kModule, whole, name, m.doc);
     if (j.is_null()) continue;
     j["children"] = children;
     out.push_back(j);
@@ -82,11 +84,11 @@ void add_arbitrations(const Document& doc, const ast::Spec& spec, nlohmann::json
       Loc rl = span(name_loc(r.loc, r.name), r.source.loc);
       if (r.when) rl = span(rl, r.when->loc);
       whole = span(whole, rl);
-      children.push_back(item(doc, r.name, kFunction, rl, name_loc(r.loc, r.name),
+      children.push_back(item(doc, r.name, symbol_kind::kFunction, rl, name_loc(r.loc, r.name),
                               "from " + r.source.qualified()));
     }
-    nlohmann::json j = item(doc, "arbitrate " + a.port.qualified(), kNamespace, whole, a.port.loc,
-                            a.by_priority ? "by priority" : "");
+    nlohmann::json j = item(doc, "arbitrate " + a.port.qualified(), symbol_kind::kNamespace, whole,
+                            a.port.loc, a.by_priority ? "by priority" : "");
     if (j.is_null()) continue;
     j["children"] = children;
     out.push_back(j);
@@ -100,24 +102,25 @@ nlohmann::json document_symbols(const Document& doc) {
   if (!doc.analysis || !doc.analysis->spec) return out;
   const ast::Spec& spec = *doc.analysis->spec;
   if (spec.app)
-    out.push_back(item(doc, spec.app->name, kPackage, spec.app->loc,
+    out.push_back(item(doc, spec.app->name, symbol_kind::kPackage, spec.app->loc,
                        name_loc(spec.app->loc, spec.app->name), "app"));
   for (const ast::TypeDecl& t : spec.types)
-    out.push_back(item(doc, t.name, kStruct, span(t.loc, t.type.loc), name_loc(t.loc, t.name)));
+    out.push_back(
+        item(doc, t.name, symbol_kind::kStruct, span(t.loc, t.type.loc), name_loc(t.loc, t.name)));
   for (const ast::ConstDecl& c : spec.consts)
-    out.push_back(item(doc, c.name, kConstant, c.loc, name_loc(c.loc, c.name)));
+    out.push_back(item(doc, c.name, symbol_kind::kConstant, c.loc, name_loc(c.loc, c.name)));
   add_modules(doc, spec, out);
   for (const ast::EventSymbol& e : spec.event_symbols)
-    out.push_back(item(doc, e.name, kEvent, e.loc, name_loc(e.loc, e.name), e.source));
+    out.push_back(item(doc, e.name, symbol_kind::kEvent, e.loc, name_loc(e.loc, e.name), e.source));
   add_arbitrations(doc, spec, out);
   for (const ast::ConnectDecl& c : spec.connects)
     out.push_back(item(doc, "connect " + c.source.qualified() + " -> " + c.destination.qualified(),
-                       kOperator, span(c.loc, c.destination.loc), c.source.loc));
+                       symbol_kind::kOperator, span(c.loc, c.destination.loc), c.source.loc));
   for (const ast::AssertDecl& a : spec.asserts)
-    out.push_back(item(doc, "assert " + a.port.qualified() + ": " + a.rule, kBoolean,
+    out.push_back(item(doc, "assert " + a.port.qualified() + ": " + a.rule, symbol_kind::kBoolean,
                        a.property ? span(a.loc, a.property->loc) : a.loc, a.port.loc));
   for (const ast::TestDecl& t : spec.tests)
-    out.push_back(item(doc, "test \"" + t.name + "\"", kMethod, test_span(t), t.loc,
+    out.push_back(item(doc, "test \"" + t.name + "\"", symbol_kind::kMethod, test_span(t), t.loc,
                        t.on.empty() ? "" : "on " + t.on));
   out.erase(std::remove(out.begin(), out.end(), nullptr), out.end());
   return out;

@@ -16,10 +16,6 @@ std::string group_text(const model::ExclusiveGroup& g) {
   return "exclusive { " + join(g.events, ", ") + " }";
 }
 
-std::string state_text(const std::set<std::string>& state) {
-  return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
-}
-
 // The events some connection into `port` can set into its container (feeds, monitors, delivery
 // and activity events); nullopt when a `script` rule may set any.
 std::optional<std::set<std::string>> fed_into(const model::App& app, const std::string& port) {
@@ -336,7 +332,7 @@ void ClaimWatch::decision(const PortSlot& slot, const std::string& port, Nanos t
     if (holds_for_some(g.inv->formula, state, g.unfed)) continue;
     violated("invariant " + g.inv->formula.to_string(), t,
              "false in " + port + " at " + duration_literal(t) +
-                 " (events present: " + state_text(state) +
+                 " (events present: " + DecisionWatch::events_present(state) +
                  (g.unfed.empty() ? ""
                                   : "; whatever " + join(g.unfed, ", ", " and ") +
                                         ", not fed into " + port + ", may be") +

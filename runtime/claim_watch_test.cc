@@ -5,7 +5,7 @@
 namespace arbc {
 namespace {
 
-Nanos ns(double seconds) { return nanos_from_seconds(seconds); }
+Nanos sec(double seconds) { return nanos_from_seconds(seconds); }
 
 // Source S.out feeds rule `r` into D.q, arbitrated; `given S.out every 500ms`; `exclusive { a, b
 // }`.
@@ -22,7 +22,7 @@ model::App app() {
   port.port = "D.q";
   port.rules = {"r"};
   a.arbitrated_ports.push_back(port);
-  a.rates.push_back({"S.out", ns(0.5), {}});
+  a.rates.push_back({"S.out", sec(0.5), {}});
   a.exclusive_groups.push_back({{"a", "b"}, {}});
   return a;
 }
@@ -30,7 +30,7 @@ model::App app() {
 TraceRecord publish(double t) {
   TraceRecord r;
   r.kind = TraceKind::Publish;
-  r.t = ns(t);
+  r.t = sec(t);
   r.port = "S.out";
   return r;
 }
@@ -54,13 +54,13 @@ TEST(ClaimWatchTest, AProcessThatMediatesNothingWatchesNothing) {
 TEST(ClaimWatchTest, ARateCountsFromTheRunsStartAfterTheWaitForPeers) {
   model::App a = app();
   ClaimWatch w(a);
-  w.start(ns(2.0));  // the transport waited two seconds for its peers
+  w.start(sec(2.0));  // the transport waited two seconds for its peers
   w.observe(publish(2.4));
   w.observe(publish(2.9));
-  w.finish(ns(3.2));
+  w.finish(sec(3.2));
   EXPECT_TRUE(w.violations().empty()) << broken(w)[0];
   ClaimWatch late(a);
-  late.start(ns(2.0));
+  late.start(sec(2.0));
   late.observe(publish(2.6));  // its first message 0.6 s after the start
   EXPECT_EQ(broken(late), std::vector<std::string>{"given S.out every 500ms: nothing from S.out "
                                                    "between 2s and 2.6s"});
@@ -69,23 +69,23 @@ TEST(ClaimWatchTest, ARateCountsFromTheRunsStartAfterTheWaitForPeers) {
 TEST(ClaimWatchTest, ASourceInAnotherProcessStartsWhenItFirstSpeaks) {
   model::App a = app();
   ClaimWatch w(a, {ModuleSet::everything(), ModuleSet::none()});
-  w.start(ns(0));
+  w.start(sec(0));
   w.observe(publish(3.0));  // a program started three seconds after the mediator
   w.observe(publish(3.5));
   w.observe(publish(4.1));  // a gap of 0.6 s once it runs
   EXPECT_EQ(broken(w), std::vector<std::string>{"given S.out every 500ms: nothing from S.out "
                                                 "between 3.5s and 4.1s"});
-  EXPECT_EQ(w.violations()[0].t, ns(4.0));  // at the deadline it missed
+  EXPECT_EQ(w.violations()[0].t, sec(4.0));  // at the deadline it missed
   // One that never speaks is said at the end.
   ClaimWatch silent(a, {ModuleSet::everything(), ModuleSet::none()});
-  silent.start(ns(1));
-  silent.finish(ns(10));
+  silent.start(sec(1));
+  silent.finish(sec(10));
   EXPECT_EQ(broken(silent),
             std::vector<std::string>{"given S.out every 500ms: nothing from S.out from the start "
                                      "(1s) to the end of the run (10s): it never published"});
   // A source hosted here is owed from the start.
   ClaimWatch hosted(a);
-  hosted.start(ns(1));
+  hosted.start(sec(1));
   hosted.observe(publish(3.0));
   EXPECT_EQ(hosted.violations().size(), 1u);
 }
@@ -119,7 +119,7 @@ TraceRecord decided(double t, const std::string& rule, bool delivered) {
   TraceRecord r;
   r.kind = delivered ? TraceKind::Deliver : TraceKind::Drop;
   r.reason = DropReason::NotSelected;
-  r.t = ns(t);
+  r.t = sec(t);
   r.connection = rule;
   r.port = "D.q";
   return r;
@@ -128,7 +128,7 @@ TraceRecord decided(double t, const std::string& rule, bool delivered) {
 TraceRecord set_event(double t, const std::string& name) {
   TraceRecord r;
   r.kind = TraceKind::Event;
-  r.t = ns(t);
+  r.t = sec(t);
   r.op = "set";
   r.event = name;
   r.owner = "feed";
@@ -188,15 +188,15 @@ TEST(ClaimWatchTest, AnAssertIsJudgedInThePortsStateAtEachDeliveryOfItsRule) {
 TEST(ClaimWatchTest, InATestARateIsJudgedBetweenASourcesFirstAndLastMessages) {
   model::App a = app();
   ClaimWatch w(a, {.test = true});
-  w.start(ns(0));
+  w.start(sec(0));
   w.observe(publish(2.0));  // silent before: the test starts the source when it says
   w.observe(publish(2.5));
   w.observe(publish(9.0));  // other sources' records in between would not break it either
-  w.finish(ns(20));         // nor the silence after its last message
+  w.finish(sec(20));        // nor the silence after its last message
   EXPECT_EQ(broken(w), std::vector<std::string>{"given S.out every 500ms: nothing from S.out "
                                                 "between 2.5s and 9s"});
   ClaimWatch quiet(a, {.test = true});
-  quiet.finish(ns(20));
+  quiet.finish(sec(20));
   EXPECT_TRUE(quiet.violations().empty());
 }
 

@@ -8,15 +8,10 @@ namespace arbc {
 
 namespace {
 
-int api_novalue(lua_State* L) {
-  LuaSandbox::push_novalue_marker(L);
-  return lua_error(L);
-}
-
 // The script's view of its host: PortMonitor.novalue() only (the prelude's "no value").
-int install(lua_State* L) {
+int install_claims_api(lua_State* L) {
   lua_newtable(L);
-  lua_pushcfunction(L, api_novalue);
+  lua_pushcfunction(L, LuaSandbox::raise_novalue);
   lua_setfield(L, -2, "novalue");
   lua_setglobal(L, "PortMonitor");
   prepare_lua_values(L);
@@ -60,7 +55,7 @@ std::unique_ptr<DataClaims> DataClaims::load(const model::App& app, const std::s
     *err = file + ": cannot create a Lua state within the memory cap";
     return nullptr;
   }
-  LuaCall installed = d->sandbox_->protected_call(install, nullptr);
+  LuaCall installed = d->sandbox_->protected_call(install_claims_api, nullptr);
   LuaCall ran = installed.ok() ? d->sandbox_->run_chunk(text, file) : installed;
   Count count;
   if (ran.ok()) ran = d->sandbox_->protected_call(count_claims, &count);

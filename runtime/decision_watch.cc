@@ -9,13 +9,9 @@
 
 namespace arbc {
 
-namespace {
-
-std::string state_text(const std::set<std::string>& state) {
-  return state.empty() ? "none" : join(std::vector<std::string>(state.begin(), state.end()), ", ");
+std::string DecisionWatch::events_present(const std::set<std::string>& state) {
+  return state.empty() ? "none" : join(state);
 }
-
-}  // namespace
 
 DecisionWatch::DecisionWatch(const model::App& app,
                              const std::function<bool(const std::string&)>& here, bool states_known,
@@ -91,7 +87,7 @@ void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::
       broken_(a.text, t,
               "'" + c.name + "' delivered at " + duration_literal(t) + " with " +
                   a.a->property.to_string() + " false in " + c.port +
-                  " (events present: " + state_text(state) + ")");
+                  " (events present: " + events_present(state) + ")");
   }
   if (!c.exclusive) return;
   for (size_t j : c.same_source) {
@@ -108,7 +104,7 @@ void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::
     if (evaluate(d.guard, state))
       broken_(port_claim_[c.port], t,
               "'" + c.name + "' delivered at " + duration_literal(t) + " in a state where '" +
-                  d.name + "' is selected too (events present: " + state_text(state) + ")");
+                  d.name + "' is selected too (events present: " + events_present(state) + ")");
   }
 }
 

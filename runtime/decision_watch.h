@@ -41,6 +41,8 @@ class DecisionWatch {
   std::vector<std::string> claims() const;
   // A port's exclusivity as breaches name it (an assert: model::assertion_text).
   static std::string exclusivity_claim(const model::ArbitratedPort& p);
+  // A port's events as breaches list them: "a, b", or "none".
+  static std::string events_present(const std::set<std::string>& state);
   // A Deliver or Drop record of a rule connection of a watched port, with the port's state.
   void decision(const TraceLine& r, const std::set<std::string>& state);
   // The same, for the rule numbered `rule` (rule_of(r.connection), found once by the caller);

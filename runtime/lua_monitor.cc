@@ -99,18 +99,13 @@ int api_stamp_now(lua_State* L) {
   return 1;
 }
 
-int api_novalue(lua_State* L) {
-  LuaSandbox::push_novalue_marker(L);
-  return lua_error(L);
-}
-
-// What install() needs and returns.
+// What install_host_api() needs and returns.
 struct Install {
   MonitorHost* host = nullptr;
   int staged_ref = LUA_NOREF;  // out: the registry slot of the message between accept and update
 };
 
-int install(lua_State* L) {
+int install_host_api(lua_State* L) {
   auto* in = static_cast<Install*>(lua_touserdata(L, 1));
   void* host = in->host;
   static const luaL_Reg api[] = {
@@ -122,7 +117,7 @@ int install(lua_State* L) {
       {"setTrigInterval", api_set_trig_interval},
       {"now", api_now},
       {"stamp_now", api_stamp_now},
-      {"novalue", api_novalue},
+      {"novalue", LuaSandbox::raise_novalue},
       {nullptr, nullptr},
   };
   lua_newtable(L);
@@ -218,7 +213,7 @@ std::unique_ptr<LuaMonitor> LuaMonitor::load(const std::string& script, const st
   // The sandbox's print, into the host's log.
   m->sandbox_->set_print([host](const std::string& line) { host->print(line); });
   Install in{host};
-  LuaCall installed = m->sandbox_->protected_call(install, &in);
+  LuaCall installed = m->sandbox_->protected_call(install_host_api, &in);
   if (!installed.ok()) {
     *error = file + ": " + installed.error;
     return nullptr;

@@ -196,7 +196,10 @@ LuaSandbox::~LuaSandbox() {
   lua_close(L_);
 }
 
-void LuaSandbox::push_novalue_marker(lua_State* L) { lua_pushlightuserdata(L, &novalue_key); }
+int LuaSandbox::raise_novalue(lua_State* L) {
+  lua_pushlightuserdata(L, &novalue_key);
+  return lua_error(L);
+}
 
 LuaCall LuaSandbox::finish_call(int rc) {
   lua_sethook(L_, nullptr, 0, 0);

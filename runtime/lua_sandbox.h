@@ -75,8 +75,9 @@ class LuaSandbox {
   // Inside a protected call, before the next of several callbacks: fresh budgets for it.
   void rearm() { arm(); }
 
-  // The error raised by PortMonitor.novalue(): the call ends with Status::NoValue.
-  static void push_novalue_marker(lua_State* L);
+  // PortMonitor.novalue() (a lua_CFunction): raises the error that ends the call with
+  // Status::NoValue.
+  static int raise_novalue(lua_State* L);
 
   // For library functions that do work the instruction hook cannot see (sandbox_strings.cc):
   // charges `steps` of `function`'s work to the running callback. False when the callback must

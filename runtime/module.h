@@ -197,11 +197,11 @@ bool load_plugin(const std::string& path, std::string* err);
 #define ARBC_CONCAT_(a, b) ARBC_CONCAT_INNER_(a, b)
 
 // ARBC_REGISTER_MODULE(ClassName, "Name"): at load time, registers ClassName under "Name".
-#define ARBC_REGISTER_MODULE(Class, Name)                                              \
-  [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_module_registered_, __LINE__) = \
+#define ARBC_REGISTER_MODULE(Class, Name)                                                 \
+  [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_module_registered_, __COUNTER__) = \
       ::arbc::Registry::global().add_module(Name, [] { return std::make_unique<Class>(); })
 
 // ARBC_REGISTER_ENVIRONMENT(ClassName, "app_name"): registers an environment.
-#define ARBC_REGISTER_ENVIRONMENT(Class, Name)                                      \
-  [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_env_registered_, __LINE__) = \
+#define ARBC_REGISTER_ENVIRONMENT(Class, Name)                                         \
+  [[maybe_unused]] static const bool ARBC_CONCAT_(arbc_env_registered_, __COUNTER__) = \
       ::arbc::Registry::global().add_environment(Name, [] { return std::make_unique<Class>(); })

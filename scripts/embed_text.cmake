@@ -15,12 +15,12 @@ file(WRITE "${OUTPUT}.tmp"
 namespace arbc::embedded {
 
 namespace {
-const char kBytes[${size} + 1] = {
+const char ${SYMBOL}Bytes[${size} + 1] = {
     ${bytes}'\\0'};
 }  // namespace
 
 extern const std::string_view ${SYMBOL};
-const std::string_view ${SYMBOL}(kBytes, ${size});
+const std::string_view ${SYMBOL}(${SYMBOL}Bytes, ${size});
 
 }  // namespace arbc::embedded
 ")

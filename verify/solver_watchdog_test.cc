@@ -97,7 +97,7 @@ TEST(SolverWatchdogDeathTest, AQueryThatIgnoresTheInterruptEndsThroughOnStuck) {
         QueryInFlight in_flight(ctx);
         std::_Exit(s.check() == z3::unknown ? 7 : 9);
       },
-      testing::ExitedWithCode(7), "");
+      ::testing::ExitedWithCode(7), "");
 }
 
 }  // namespace

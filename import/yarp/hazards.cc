@@ -6,32 +6,25 @@
 #include <map>
 #include <set>
 
+#include "core/join.h"
+
 namespace arbc::yarp {
 namespace {
 
 constexpr const char* kKeywords[] = {"and", "or", "not", "true", "false"};
 
-Diagnostic make(Severity s, const model::SourceLocation& loc, std::string message, const char* id) {
-  Diagnostic d;
-  d.severity = s;
-  d.loc = loc;
-  d.message = std::move(message);
-  d.id = id;
-  return d;
-}
-
-void add_note(Diagnostic& d, std::string message, model::SourceLocation loc = {}) {
-  d.notes.push_back(make(Severity::Note, loc, std::move(message), ""));
-}
-
 model::SourceLocation call_loc(const MonitorAnalysis& m, const MonitorCall& c) {
   return locate(m.path, m.text, c.line, c.function);
 }
 
-std::string list(const std::vector<std::string>& v) {
-  std::string out;
-  for (const std::string& s : v) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
+// Event names joined, "none" when there are none; an empty name (a sample bottle may make a
+// script call setEvent("")) is left out.
+template <class Names>
+std::string names_text(const Names& names) {
+  std::vector<std::string> shown;
+  for (const std::string& n : names)
+    if (!n.empty()) shown.push_back(n);
+  return shown.empty() ? "none" : join(shown);
 }
 
 std::string verdict_text(const YarpVerdict& v) {
@@ -101,10 +94,10 @@ void constraint_hazard(const ImportedConnection& ic, const model::Connection& c,
   const ConstraintMeaning& m = ic.meaning;
   const model::SourceLocation& loc = ic.monitor ? ic.monitor->constraint_loc : ic.xml.protocol_loc;
   if (!m.parsed) {
-    Diagnostic d = make(Severity::Error, loc,
-                        "the constraint `" + m.text + "` of " + conn_text(ic, c) +
-                            " does not parse: " + m.parse_error,
-                        kIdConstraintSyntax);
+    Diagnostic d = make_diagnostic(Severity::Error, loc,
+                                   "the constraint `" + m.text + "` of " + conn_text(ic, c) +
+                                       " does not parse: " + m.parse_error,
+                                   kIdConstraintSyntax);
     if (m.simulated) {
       add_note(d, "YARP runs it as Lua after replacing event names: it " +
                       (m.yarp == Constraint::constant(false)
@@ -119,12 +112,13 @@ void constraint_hazard(const ImportedConnection& ic, const model::Connection& c,
   if (!certain && (m.simulated || !names_collide(m))) return;
   auto [id, why] = collision(m);
   std::string head = "YARP evaluates the constraint `" + m.text + "` of " + conn_text(ic, c);
-  Diagnostic d = make(Severity::Error, loc,
-                      certain ? head + " wrongly: with " + list(m.witness) + " present it gives " +
-                                    verdict_text(m.witness_verdict) + ", but the constraint is " +
-                                    (m.written_at_witness ? "true" : "false")
-                              : head + " with too many names to try every state; it may be wrong",
-                      id);
+  Diagnostic d = make_diagnostic(
+      Severity::Error, loc,
+      certain ? head + " wrongly: with " + names_text(m.witness) + " present it gives " +
+                    verdict_text(m.witness_verdict) + ", but the constraint is " +
+                    (m.written_at_witness ? "true" : "false")
+              : head + " with too many names to try every state; it may be wrong",
+      id);
   add_note(d, why);
   if (certain) {
     add_note(d, "YARP runs: return " + m.witness_verdict.text);
@@ -145,10 +139,10 @@ void script_call_hazards(const ImportedConnection& ic, std::vector<Diagnostic>& 
     if (event && c.text) {
       for (const char* k : kKeywords) {
         if (*c.text != k) continue;
-        Diagnostic d = make(Severity::Error, call_loc(m, c),
-                            "YARP ignores PortMonitor." + c.function + "(\"" + *c.text +
-                                "\"): an event named like a keyword is never set",
-                            kIdKeyword);
+        Diagnostic d = make_diagnostic(Severity::Error, call_loc(m, c),
+                                       "YARP ignores PortMonitor." + c.function + "(\"" + *c.text +
+                                           "\"): an event named like a keyword is never set",
+                                       kIdKeyword);
         add_note(d, "rename the event (for example e_" + *c.text + ")");
         out.push_back(std::move(d));
       }
@@ -157,7 +151,8 @@ void script_call_hazards(const ImportedConnection& ic, std::vector<Diagnostic>& 
     std::string arg = c.number ? number_text(*c.number) : "x";
     std::string period =
         c.number ? std::to_string(static_cast<long>(*c.number * 1000)) + " s" : "1000 x s";
-    Diagnostic d = make(Severity::Warning, call_loc(m, c),
+    Diagnostic d =
+        make_diagnostic(Severity::Warning, call_loc(m, c),
                         "PortMonitor.setTrigInterval(" + arg + ") makes YARP call trig every " +
                             period + ", not every " + arg + " s",
                         kIdTrigInterval);
@@ -182,7 +177,8 @@ void forever_hazards(const YarpImport& im, size_t i, std::vector<Diagnostic>& ou
     bool forever =
         c.function == "setEvent" && c.text && (!c.has_second || (c.number && *c.number < 0));
     if (!forever || unset_here.count(*c.text) || !reported.insert(*c.text).second) continue;
-    Diagnostic d = make(Severity::Warning, call_loc(m, c),
+    Diagnostic d =
+        make_diagnostic(Severity::Warning, call_loc(m, c),
                         "event '" + *c.text + "' is set without a lifetime and " +
                             conn_text(im.connections[i], im.app.connections[i]) +
                             " never unsets it: once set, it stays until the receiving process "
@@ -210,15 +206,14 @@ void opaque_hazard(const ImportedConnection& ic, const model::Connection& c,
   model::SourceLocation loc =
       m.facts.opaque_line > 0 ? locate(m.path, m.text, m.facts.opaque_line, m.facts.opaque_token)
                               : model::SourceLocation{m.path, 0, 0, 0, 0};
-  Diagnostic d =
-      make(Severity::Warning, loc,
-           "arbc cannot know every event " + conn_text(ic, c) + " sets: " + m.facts.opaque_reason +
-               "; the proof takes it as possibly setting any "
-               "event",
-           kIdOpaque);
+  Diagnostic d = make_diagnostic(Severity::Warning, loc,
+                                 "arbc cannot know every event " + conn_text(ic, c) +
+                                     " sets: " + m.facts.opaque_reason +
+                                     "; the proof takes it as possibly setting any "
+                                     "event",
+                                 kIdOpaque);
   if (!m.observed_sets.empty()) {
-    add_note(d, "on sample bottles it set: " +
-                    list(std::vector<std::string>(m.observed_sets.begin(), m.observed_sets.end())));
+    add_note(d, "on sample bottles it set: " + names_text(m.observed_sets));
   }
   add_note(d, "pass event names to PortMonitor.setEvent / unsetEvent as string literals");
   out.push_back(std::move(d));

@@ -11,11 +11,16 @@
 #include <map>
 #include <set>
 
+#include "core/join.h"
 #include "core/suggest.h"
 #include "import/yarp/hazards.h"
 
 namespace arbc::yarp {
 namespace {
+
+Diagnostic port_warning(model::SourceLocation loc, std::string message) {
+  return make_diagnostic(Severity::Warning, std::move(loc), std::move(message), kIdPortName);
+}
 
 std::set<std::string> read_by(const model::Connection& c) {
   std::set<std::string> read;
@@ -31,12 +36,6 @@ std::vector<std::string> common(const std::set<std::string>& read,
   return out;
 }
 
-std::string list(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
-  return s;
-}
-
 std::string lines_text(const YarpImport& im, const std::vector<size_t>& conns) {
   std::string s;
   for (size_t k = 0; k < conns.size(); ++k) {
@@ -44,19 +43,6 @@ std::string lines_text(const YarpImport& im, const std::vector<size_t>& conns) {
     s += std::to_string(im.connections[conns[k]].xml.loc.line);
   }
   return s;
-}
-
-Diagnostic warning(const model::SourceLocation& loc, std::string message) {
-  Diagnostic d;
-  d.severity = Severity::Warning;
-  d.loc = loc;
-  d.id = kIdPortName;
-  d.message = std::move(message);
-  return d;
-}
-
-void add_note(Diagnostic& d, std::string message, model::SourceLocation loc = {}) {
-  d.notes.push_back({Severity::Note, std::move(loc), std::move(message), "", {}});
 }
 
 // Why connection i (the only one into its port) belongs to the connections `into` another port:
@@ -74,11 +60,9 @@ std::string event_link(const YarpImport& im, size_t i, const std::vector<size_t>
     for (const std::string& e : common(read, o.sets)) wanted.insert(e);
   }
   if (!fed.empty())
-    return "its monitor sets " + list({fed.begin(), fed.end()}) + ", which the rules into " + port +
-           " read";
+    return "its monitor sets " + join(fed) + ", which the rules into " + port + " read";
   if (!wanted.empty())
-    return "its constraint reads " + list({wanted.begin(), wanted.end()}) +
-           ", which the monitors into " + port + " set";
+    return "its constraint reads " + join(wanted) + ", which the monitors into " + port + " set";
   return "";
 }
 
@@ -97,8 +81,8 @@ void misspelt_destinations(const YarpImport& im, std::vector<Diagnostic>& out,
     if (!likely) continue;
     std::string why = event_link(im, i, into[*likely], *likely);
     if (why.empty()) continue;
-    Diagnostic d = warning(x.to_loc, "this is the only connection into " + x.to + ", and " + why +
-                                         ": did you mean " + *likely + "?");
+    Diagnostic d = port_warning(x.to_loc, "this is the only connection into " + x.to + ", and " +
+                                              why + ": did you mean " + *likely + "?");
     const std::vector<size_t>& there = into[*likely];
     add_note(d, "the connections at lines " + lines_text(im, there) + " go into " + *likely,
              im.connections[there[0]].xml.to_loc);
@@ -141,9 +125,9 @@ void misspelt_modules(const YarpImport& im, std::vector<Diagnostic>& out,
       if (!likely) continue;
       std::string meant = "/" + *likely + port.substr(port.find_last_of('/'));
       Diagnostic d =
-          warning(loc, "no <module> is named '" + module + "' (the module of " + port +
-                           "), and <module> '" + *likely +
-                           "' has no port in any connection: did you mean " + meant + "?");
+          port_warning(loc, "no <module> is named '" + module + "' (the module of " + port +
+                                "), and <module> '" + *likely +
+                                "' has no port in any connection: did you mean " + meant + "?");
       for (const XmlModule& m : im.xml.modules)
         if (m.name == *likely) add_note(d, "module '" + *likely + "' is declared here", m.loc);
       out.push_back(std::move(d));

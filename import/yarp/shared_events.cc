@@ -10,27 +10,14 @@
 namespace arbc::yarp {
 namespace {
 
+Diagnostic shared_warning(model::SourceLocation loc, std::string message) {
+  return make_diagnostic(Severity::Warning, std::move(loc), std::move(message), kIdShared);
+}
+
 struct Setter {
   size_t connection;
   model::SourceLocation loc;
 };
-
-Diagnostic warning(const model::SourceLocation& loc, std::string message) {
-  Diagnostic d;
-  d.severity = Severity::Warning;
-  d.loc = loc;
-  d.message = std::move(message);
-  d.id = kIdShared;
-  return d;
-}
-
-void add_note(Diagnostic& d, std::string message, model::SourceLocation loc = {}) {
-  Diagnostic n;
-  n.severity = Severity::Note;
-  n.loc = std::move(loc);
-  n.message = std::move(message);
-  d.notes.push_back(std::move(n));
-}
 
 // event -> destination port -> the first setEvent of it by a monitor into that port.
 std::map<std::string, std::map<std::string, Setter>> setters(const YarpImport& im) {
@@ -77,10 +64,10 @@ void several_setters(const YarpImport& im,
     }
     if (sites.size() < 2 || !lifetime) continue;
     Diagnostic d =
-        warning(sites[0], "event '" + event + "' is set by " + std::to_string(sites.size()) +
-                              " monitors, with a lifetime: when one's entry expires, "
-                              "YARP's next lookup of '" +
-                              event + "' can answer absent although another's is live");
+        shared_warning(sites[0], "event '" + event + "' is set by " + std::to_string(sites.size()) +
+                                     " monitors, with a lifetime: when one's entry expires, "
+                                     "YARP's next lookup of '" +
+                                     event + "' can answer absent although another's is live");
     for (size_t i = 1; i < sites.size(); ++i) add_note(d, "also set here", sites[i]);
     add_note(d,
              "give each event one monitor that sets it (and unsets it: a monitor unsets only "
@@ -95,11 +82,12 @@ void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out) {
   auto set_by = setters(im);
   for (const auto& [event, by_port] : set_by) {
     if (by_port.size() < 2) continue;
-    Diagnostic d = warning(by_port.begin()->second.loc,
-                           "event '" + event + "' is set by monitors on connections into " +
-                               std::to_string(by_port.size()) + " ports (" + ports_text(by_port) +
-                               "): YARP keeps events per process, so these ports share it if "
-                               "they are in one process, and do not if not");
+    Diagnostic d =
+        shared_warning(by_port.begin()->second.loc,
+                       "event '" + event + "' is set by monitors on connections into " +
+                           std::to_string(by_port.size()) + " ports (" + ports_text(by_port) +
+                           "): YARP keeps events per process, so these ports share it if "
+                           "they are in one process, and do not if not");
     for (auto it = std::next(by_port.begin()); it != by_port.end(); ++it)
       add_note(d, "also set for " + it->first, it->second.loc);
     add_note(d, "give each port's events their own names (for example prefix them with the port)");
@@ -119,13 +107,13 @@ void shared_event_hazards(const YarpImport& im, std::vector<Diagnostic>& out) {
       if (it == set_by.end() || it->second.count(c.destination) ||
           !reported.insert({c.destination, e}).second)
         continue;
-      Diagnostic d = warning(ic.monitor->constraint_loc,
-                             "the constraint of '" + c.name + "' reads '" + e +
-                                 "', which only "
-                                 "monitors on connections into " +
-                                 ports_text(it->second) + " set: this works only if " +
-                                 ports_text(it->second) + " and " + c.destination +
-                                 " are ports of one process");
+      Diagnostic d = shared_warning(ic.monitor->constraint_loc,
+                                    "the constraint of '" + c.name + "' reads '" + e +
+                                        "', which only "
+                                        "monitors on connections into " +
+                                        ports_text(it->second) + " set: this works only if " +
+                                        ports_text(it->second) + " and " + c.destination +
+                                        " are ports of one process");
       add_note(d, "set here", it->second.begin()->second.loc);
       add_note(d,
                "YARP keeps events per process; put the monitor that sets it on a connection "

@@ -16,8 +16,8 @@ namespace {
 
 using Outcome = TemporalResult::Outcome;
 
-TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
-                     const std::string& event, int bound = 6) {
+TemporalResult absence(const model::App& app, const std::string& port, const std::string& rule,
+                       const std::string& event, int bound = 6) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
@@ -30,7 +30,8 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
 }
 
 TEST(Absence, APriorityHoldIsProvedAtEveryDecision) {
-  TemporalResult r = check(testing::table_clean_model(), "HeadControl.gaze", "search", "act_track");
+  TemporalResult r =
+      absence(testing::table_clean_model(), "HeadControl.gaze", "search", "act_track");
   EXPECT_EQ(r.outcome, Outcome::Proved);
   EXPECT_NE(r.proof.find("false whenever act_track is present"), std::string::npos) << r.proof;
   EXPECT_EQ(r.bound, 6);  // the search ran to the bound as well
@@ -40,7 +41,7 @@ TEST(Absence, WithoutTheHoldsTermSearchDeliversInsideTracksHold) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "search").constraint =
       testing::parse("e_unreachable and e_arm_idle and e_pull_idle");
-  TemporalResult r = check(app, "HeadControl.gaze", "search", "act_track");
+  TemporalResult r = absence(app, "HeadControl.gaze", "search", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   // Three feeds make both rules' events present, track delivers, search delivers.
   ASSERT_EQ(r.bound, 5);
@@ -56,13 +57,13 @@ TEST(Absence, WithoutTheHoldsTermSearchDeliversInsideTracksHold) {
 
 TEST(Absence, AGuardThatNeedsTheEventIsRefutedInTwoMessages) {
   // put needs e_taken: the status feed sets it (with e_arm_idle), and put delivers.
-  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "put", "e_taken");
+  TemporalResult r = absence(testing::table_clean_model(), "PickAndPlace.cmd", "put", "e_taken");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);
   EXPECT_TRUE(r.trace[0].feed);
   EXPECT_EQ(r.trace[1].connection, "put");
   // take's `not e_taken` excludes it at every decision.
-  EXPECT_EQ(check(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_taken").outcome,
+  EXPECT_EQ(absence(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_taken").outcome,
             Outcome::Proved);
 }
 
@@ -70,7 +71,7 @@ TEST(Absence, AnEventNothingSetsIntoThePortIsVacuousNotProved) {
   // e_face_detected is fed into Speak.text only: PickAndPlace.cmd's container never holds it,
   // so the property is true of every run and says nothing (docs/checks.md#vacuous).
   TemporalResult r =
-      check(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_face_detected");
+      absence(testing::table_clean_model(), "PickAndPlace.cmd", "take", "e_face_detected");
   EXPECT_EQ(r.outcome, Outcome::Vacuous);
   std::optional<Finding> f = vacuous_finding(testing::table_clean_model(), r, false);
   ASSERT_TRUE(f);
@@ -83,7 +84,7 @@ TEST(Absence, AnEventNothingSetsIntoThePortIsVacuousNotProved) {
   // A `script` rule into the port might set it: no proof then, only the bound.
   model::App app = testing::table_clean_model();
   testing::connection(app, "put").opaque = true;
-  EXPECT_EQ(check(app, "PickAndPlace.cmd", "take", "e_face_detected").outcome,
+  EXPECT_EQ(absence(app, "PickAndPlace.cmd", "take", "e_face_detected").outcome,
             Outcome::HoldsToBound);
 }
 
@@ -97,12 +98,12 @@ TEST(Absence, WhatOnlyTimeKeepsIsProvedByKInductionNotAtOneDecision) {
   // messages to refresh them than the bound gives).
   testing::connection(app, "track").constraint = testing::parse("true");
   testing::connection(app, "track").throttle = 1s;
-  TemporalResult proved = check(app, "HeadControl.gaze", "track", "act_track");
+  TemporalResult proved = absence(app, "HeadControl.gaze", "track", "act_track");
   EXPECT_EQ(proved.outcome, Outcome::Proved);
   EXPECT_EQ(proved.induction_k, 1);
   EXPECT_NE(proved.proof.find("k-induction with k = 1"), std::string::npos) << proved.proof;
   testing::connection(app, "track").throttle = 500ms;
-  TemporalResult r = check(app, "HeadControl.gaze", "track", "act_track");
+  TemporalResult r = absence(app, "HeadControl.gaze", "track", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);  // track, then track again 0.5 s later, inside the hold
   EXPECT_GE(r.trace[1].time - r.trace[0].time, 500ms);
@@ -110,7 +111,7 @@ TEST(Absence, WhatOnlyTimeKeepsIsProvedByKInductionNotAtOneDecision) {
   // A throttle one nanosecond short of the hold: the second track at its hold's last
   // nanosecond (core/instant.h), still inside it.
   testing::connection(app, "track").throttle = 1s - 1ns;
-  r = check(app, "HeadControl.gaze", "track", "act_track");
+  r = absence(app, "HeadControl.gaze", "track", "act_track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);
   EXPECT_EQ(r.trace[1].time - r.trace[0].time, 1s - 1ns);

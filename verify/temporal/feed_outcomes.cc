@@ -10,7 +10,7 @@ namespace {
 
 // At most this many derived events of one feed are asked about together (2^n questions);
 // with more, each pair is (a pair no value gives is excluded all the same).
-constexpr size_t kMostJoint = 4;
+constexpr size_t kMostJointFeedEvents = 4;
 
 // Whether every message of `source` has a value for `p` that the encoding answers for exactly.
 bool decided(DataQuery& data, const std::string& source, const model::BodyExpr& p) {
@@ -59,7 +59,7 @@ void exclude(PortShape& shape, int f, const std::vector<size_t>& qs, DataQuery& 
 void exclude_joint(PortShape& shape, int f, const std::vector<size_t>& qs, DataQuery& data,
                    std::vector<PortShape::ExcludedOutcome>& out, bool start) {
   if (qs.size() < 2) return;
-  if (qs.size() <= kMostJoint) {
+  if (qs.size() <= kMostJointFeedEvents) {
     exclude(shape, f, qs, data, out, start);
     return;
   }

@@ -5,26 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include "verify/temporal/replay_records_for_tests.h"
+
 namespace arbc::verify::temporal {
 namespace {
 
 using namespace std::chrono_literals;
 
-using K = ReplayRecord::Kind;
 using P = model::TemporalProperty;
 
-// Records at times in seconds (to the nanosecond, core/instant.h); an expiry below 0: none.
-Nanos at(double t) { return nanos_from_seconds(t); }
-Nanos until(double t) { return t < 0 ? kNever : nanos_from_seconds(t); }
-ReplayRecord deliver(double t, const std::string& rule) {
-  return {K::Deliver, at(t), rule, "", kNever};
-}
-ReplayRecord set(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Set, at(t), owner, e, until(expiry)};
-}
-ReplayRecord remove(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Remove, at(t), owner, e, until(expiry)};
-}
+using namespace records;  // at, deliver, set, remove: records written in seconds
 
 P absence() {
   P p{P::Kind::Absence, "HeadControl.gaze", "search", 0s, {}, "", "", false, {}};

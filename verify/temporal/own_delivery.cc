@@ -136,7 +136,7 @@ DeliveryOutcome outcome(const model::App& app, const model::Connection& rule, co
 
 // At most this many events a rule's delivery may or may not set are asked about together
 // (2^n questions per rule); more stay independent (more behaviours: sound).
-constexpr size_t kMostJoint = 4;
+constexpr size_t kMostJointOwnEvents = 4;
 
 // The delivered value decides all of a rule's own delivery events at once: where the data
 // encoding is exact and the feed cannot fail, a delivery sets exactly the events whose
@@ -154,7 +154,7 @@ void exclude_joint_outcomes(const model::App& app, PortShape& shape, DataQuery& 
       if (o.can_set && (o.can_unset || o.can_keep) && data_exact(app, rule, *e.predicate))
         free.push_back(q);
     }
-    if (free.size() < 2 || free.size() > kMostJoint) continue;
+    if (free.size() < 2 || free.size() > kMostJointOwnEvents) continue;
     for (unsigned mask = 0; mask < (1u << free.size()); ++mask) {
       std::vector<DataSide> sides;
       for (size_t i = 0; i < free.size(); ++i)

@@ -19,8 +19,8 @@ using namespace std::chrono_literals;
 
 using Outcome = TemporalResult::Outcome;
 
-TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
-                     const std::string& other, int bound = 6) {
+TemporalResult precedence(const model::App& app, const std::string& port, const std::string& rule,
+                          const std::string& other, int bound = 6) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
@@ -32,31 +32,31 @@ TemporalResult check(const model::App& app, const std::string& port, const std::
   return r ? *r : TemporalResult{};
 }
 
-int deliveries(const std::vector<TraceStep>& trace, const std::string& rule) {
+int delivery_count(const std::vector<TraceStep>& trace, const std::string& rule) {
   int n = 0;
   for (const TraceStep& s : trace) n += s.delivered && s.connection == rule;
   return n;
 }
 
 TEST(Precedence, TheStatusFeedMayReportTakenBeforeAnyTake) {
-  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "put", "take");
+  TemporalResult r = precedence(testing::table_clean_model(), "PickAndPlace.cmd", "put", "take");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);
   EXPECT_TRUE(r.trace[0].feed);
   EXPECT_NE(std::find(r.trace[0].set.begin(), r.trace[0].set.end(), "e_taken"),
             r.trace[0].set.end());
   EXPECT_EQ(r.trace[1].connection, "put");
-  EXPECT_EQ(deliveries(r.trace, "take"), 0);
+  EXPECT_EQ(delivery_count(r.trace, "take"), 0);
 }
 
 TEST(Precedence, PutWithoutETakenIsRefutedWithoutTheFeedReportingIt) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "put").constraint = testing::parse("e_arm_idle");
-  TemporalResult r = check(app, "PickAndPlace.cmd", "put", "take");
+  TemporalResult r = precedence(app, "PickAndPlace.cmd", "put", "take");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 2u);
   EXPECT_EQ(r.trace[1].connection, "put");
-  EXPECT_EQ(deliveries(r.trace, "take"), 0);
+  EXPECT_EQ(delivery_count(r.trace, "take"), 0);
 }
 
 // HeadControl.gaze edited so that track needs nothing, search needs track's hold (act_track
@@ -71,7 +71,7 @@ model::App search_after_track(std::optional<Nanos> throttle) {
 }
 
 TEST(Precedence, HoldsToTheBoundWhereTimeLinksTheRules) {
-  TemporalResult r = check(search_after_track(1s), "HeadControl.gaze", "search", "track");
+  TemporalResult r = precedence(search_after_track(1s), "HeadControl.gaze", "search", "track");
   // Not proved: k-induction's any state does not link the monitor to the hold's timing (a
   // state "search delivered after the last track, inside its hold" is not reachable with the
   // throttle, but the step case cannot see that), so the verdict stays bounded.
@@ -82,11 +82,12 @@ TEST(Precedence, HoldsToTheBoundWhereTimeLinksTheRules) {
 }
 
 TEST(Precedence, TwoSearchesInsideOneHoldAreTheShortestViolation) {
-  TemporalResult r = check(search_after_track(std::nullopt), "HeadControl.gaze", "search", "track");
+  TemporalResult r =
+      precedence(search_after_track(std::nullopt), "HeadControl.gaze", "search", "track");
   ASSERT_EQ(r.outcome, Outcome::Violated);
   ASSERT_EQ(r.trace.size(), 3u);  // track, search, search
-  EXPECT_EQ(deliveries(r.trace, "track"), 1);
-  EXPECT_EQ(deliveries(r.trace, "search"), 2);
+  EXPECT_EQ(delivery_count(r.trace, "track"), 1);
+  EXPECT_EQ(delivery_count(r.trace, "search"), 2);
   EXPECT_EQ(r.trace[0].connection, "track");
 }
 
@@ -98,7 +99,7 @@ model::App with_assumption(const std::string& until) {
 
 TEST(Precedence, AnAssumptionAboutTheFeedMakesItProvedByKInduction) {
   // put needs e_taken, which the arm reports only after a take and withdraws after a put.
-  TemporalResult r = check(with_assumption("put"), "PickAndPlace.cmd", "put", "take");
+  TemporalResult r = precedence(with_assumption("put"), "PickAndPlace.cmd", "put", "take");
   ASSERT_EQ(r.outcome, Outcome::Proved);
   EXPECT_EQ(r.induction_k, 1);
   ASSERT_EQ(r.assumptions.size(), 1u);  // printed with the verdict
@@ -109,10 +110,10 @@ TEST(Precedence, AnAssumptionAboutTheFeedMakesItProvedByKInduction) {
 TEST(Precedence, WithoutUntilTheArmMayKeepReportingTakenAfterAPut) {
   // `assume e_taken only after take;`: after one take the flag may stay, so two puts follow one
   // take; the trace keeps the assumption (no e_taken before the take delivers).
-  TemporalResult r = check(with_assumption(""), "PickAndPlace.cmd", "put", "take");
+  TemporalResult r = precedence(with_assumption(""), "PickAndPlace.cmd", "put", "take");
   ASSERT_EQ(r.outcome, Outcome::Violated);
-  EXPECT_EQ(deliveries(r.trace, "take"), 1);
-  EXPECT_EQ(deliveries(r.trace, "put"), 2);
+  EXPECT_EQ(delivery_count(r.trace, "take"), 1);
+  EXPECT_EQ(delivery_count(r.trace, "put"), 2);
   bool taken = false;
   for (const TraceStep& s : r.trace) {
     bool sets = std::find(s.set.begin(), s.set.end(), "e_taken") != s.set.end();

@@ -11,6 +11,7 @@
 
 #include "verify/temporal/judge.h"
 #include "verify/temporal/rates.h"
+#include "verify/temporal/replay_records_for_tests.h"
 #include "verify/temporal/short_bound.h"
 #include "verify/temporal/stability.h"
 #include "verify/test_models.h"
@@ -262,18 +263,7 @@ TEST(Rates, OnlyRulesThatCannotFailAcceptEveryMessage) {
   EXPECT_FALSE(accepts_every_message(c));
 }
 
-// Records at times in seconds (to the nanosecond); an expiry below 0: none.
-using K = ReplayRecord::Kind;
-Nanos at(double t) { return nanos_from_seconds(t); }
-Nanos until(double t) { return t < 0 ? kNever : nanos_from_seconds(t); }
-ReplayRecord deliver(double t, const std::string& rule) {
-  return {K::Deliver, at(t), rule, "", kNever};
-}
-ReplayRecord set(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Set, at(t), owner, e, until(expiry)};
-}
-
-ReplayRecord drop(double t, const std::string& rule) { return {K::Drop, at(t), rule, "", kNever}; }
+using namespace records;  // at, deliver, set, drop: records written in seconds
 
 TEST(JudgeResponse, AnUnansweredTriggerViolatesAndADeliveryAtTheWindowsEndAnswers) {
   P p{P::Kind::Response, "HeadControl.gaze", "search", 1s, {}, "", "track", true, {}};
@@ -309,7 +299,7 @@ TEST(JudgeResponse, TheConditionFalseWhenTheRuleDecidesDischargesTheWindow) {
 }
 
 ReplayRecord lapse(double t, const std::string& owner, const std::string& e, double expiry) {
-  return {K::Remove, at(t), owner, e, until(expiry)};
+  return records::remove(t, owner, e, expiry);
 }
 
 TEST(JudgeResponse, AnEventsOnsetOpensAWindowThatAnyRuleOfThePortAnswers) {

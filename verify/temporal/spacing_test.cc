@@ -15,8 +15,8 @@ namespace {
 
 using Outcome = TemporalResult::Outcome;
 
-TemporalResult check(const model::App& app, const std::string& port, const std::string& rule,
-                     Nanos window, int bound = 6) {
+TemporalResult spacing(const model::App& app, const std::string& port, const std::string& rule,
+                       Nanos window, int bound = 6) {
   z3::context ctx;
   std::string error;
   model::TemporalProperty p{
@@ -36,7 +36,7 @@ std::vector<Nanos> deliveries(const std::vector<TraceStep>& trace, const std::st
 }
 
 TEST(Spacing, TakeWithoutThrottleIsRefutedByTheShortestTrace) {
-  TemporalResult r = check(testing::table_clean_model(), "PickAndPlace.cmd", "take", 1s);
+  TemporalResult r = spacing(testing::table_clean_model(), "PickAndPlace.cmd", "take", 1s);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   // The two status feeds make the arm and the rake idle, then two objects arrive.
   ASSERT_EQ(r.bound, 4);
@@ -56,7 +56,7 @@ TEST(Spacing, ThrottleAtLeastTheWindowIsProvedAfterTheSearchFindsNothing) {
   ASSERT_TRUE(testing::connection(app, "ask").throttle);
   Nanos period = *testing::connection(app, "ask").throttle;
   for (Nanos window : {period, period / 2, period - 1ns}) {
-    TemporalResult r = check(app, "Speak.text", "ask", window);
+    TemporalResult r = spacing(app, "Speak.text", "ask", window);
     EXPECT_EQ(r.outcome, Outcome::Proved) << window.count();
     EXPECT_NE(r.proof.find("`throttle 5s;`"), std::string::npos) << r.proof;
     EXPECT_EQ(r.bound, 6);  // the search ran to the bound as well
@@ -67,7 +67,7 @@ TEST(Spacing, ThrottleAtLeastTheWindowIsProvedAfterTheSearchFindsNothing) {
 TEST(Spacing, AWindowLongerThanTheThrottleIsRefutedAtThePeriod) {
   model::App app = testing::table_clean_model();
   Nanos period = *testing::connection(app, "ask").throttle;
-  TemporalResult r = check(app, "Speak.text", "ask", period + 500ms);
+  TemporalResult r = spacing(app, "Speak.text", "ask", period + 500ms);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   std::vector<Nanos> asks = deliveries(r.trace, "ask");
   ASSERT_EQ(asks.size(), 2u);
@@ -81,7 +81,7 @@ TEST(Spacing, AWindowLongerThanTheThrottleIsRefutedAtThePeriod) {
 TEST(Spacing, AWindowOneNanosecondLongerThanTheThrottleIsRefutedExactlyAtThePeriod) {
   model::App app = testing::table_clean_model();
   Nanos period = *testing::connection(app, "ask").throttle;
-  TemporalResult r = check(app, "Speak.text", "ask", period + 1ns);
+  TemporalResult r = spacing(app, "Speak.text", "ask", period + 1ns);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   std::vector<Nanos> asks = deliveries(r.trace, "ask");
   ASSERT_EQ(asks.size(), 2u);
@@ -92,7 +92,7 @@ TEST(Spacing, RemovingTheThrottleRefutesIt) {
   model::App app = testing::table_clean_model();
   Nanos period = *testing::connection(app, "ask").throttle;
   testing::connection(app, "ask").throttle.reset();
-  EXPECT_EQ(check(app, "Speak.text", "ask", period).outcome, Outcome::Violated);
+  EXPECT_EQ(spacing(app, "Speak.text", "ask", period).outcome, Outcome::Violated);
 }
 
 TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
@@ -101,23 +101,23 @@ TEST(Spacing, AnActivityEventLapsesAtTheEndOfTheHold) {
   model::App app = testing::table_clean_model();
   testing::connection(app, "track").constraint = testing::parse("not act_track");
   // Not a throttle: k-induction proves it (any state's hold ends one hold after the last track).
-  TemporalResult proved = check(app, "HeadControl.gaze", "track", 1s);
+  TemporalResult proved = spacing(app, "HeadControl.gaze", "track", 1s);
   EXPECT_EQ(proved.outcome, Outcome::Proved);
   EXPECT_EQ(proved.induction_k, 1);
-  TemporalResult r = check(app, "HeadControl.gaze", "track", 1250ms);
+  TemporalResult r = spacing(app, "HeadControl.gaze", "track", 1250ms);
   ASSERT_EQ(r.outcome, Outcome::Violated);
   std::vector<Nanos> tracks = deliveries(r.trace, "track");
   ASSERT_EQ(tracks.size(), 2u);
   EXPECT_GE(tracks[1] - tracks[0], 1s);
   // A window a nanosecond past the hold: two tracks exactly the hold apart.
-  TemporalResult edge = check(app, "HeadControl.gaze", "track", 1s + 1ns);
+  TemporalResult edge = spacing(app, "HeadControl.gaze", "track", 1s + 1ns);
   ASSERT_EQ(edge.outcome, Outcome::Violated);
   tracks = deliveries(edge.trace, "track");
   ASSERT_EQ(tracks.size(), 2u);
   EXPECT_EQ(tracks[1] - tracks[0], 1s);
   // Without the hold's effect (the rule reads nothing), two deliveries may share an instant.
   testing::connection(app, "track").constraint = testing::parse("true");
-  EXPECT_EQ(check(app, "HeadControl.gaze", "track", 1s).outcome, Outcome::Violated);
+  EXPECT_EQ(spacing(app, "HeadControl.gaze", "track", 1s).outcome, Outcome::Violated);
 }
 
 TemporalResult check_after(const model::App& app, const std::string& rule, const std::string& other,
