@@ -7,6 +7,7 @@ namespace {
 constexpr std::string_view Check = "check";
 constexpr std::string_view Verify = "verify";
 constexpr std::string_view Yarp = "yarp";
+constexpr std::string_view Import = "import";
 constexpr std::string_view Internal = "internal";
 
 constexpr CheckId kIds[] = {

@@ -43,7 +43,7 @@ struct CheckId {
   std::string_view id;
   // "check": the front end, in every command that reads a spec; "verify": `arbc verify` (loading
   // a model, the proof); "yarp": reading a YARP application (`arbc verify APP.xml`, `arbc
-  // import yarp`); "internal": a bug in arbc.
+  // import yarp`); "import": `arbc import twist_mux`; "internal": a bug in arbc.
   std::string_view stage;
   std::string_view meaning;
 };

@@ -13,6 +13,7 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyxml2-dev                            # arbc verify APP.xml: yarpmanager applications
+  libyaml-cpp-dev                            # arbc import twist_mux: its parameter files
   graphviz                                   # arbc docs: app.svg
   libfastrtps-dev libfastcdr-dev fastddsgen  # arbc_dds: the distributed runtime (Fast-DDS 2.9)
 )

@@ -1,29 +1,13 @@
 #include "import/yarp/spec_names.h"
 
-#include <cctype>
 #include <map>
 #include <optional>
 
+#include "core/spec_identifier.h"
 #include "import/yarp/name_scope.h"
 
 namespace arbc::yarp {
 namespace {
-
-constexpr const char* kSpecKeywords[] = {
-    "app",    "type",     "const",     "module", "in",        "out",       "event",
-    "events", "from",     "lifetime",  "for",    "exclusive", "invariant", "arbitrate",
-    "by",     "priority", "complete",  "when",   "hold",      "connect",   "assert",
-    "let",    "var",      "accept",    "set",    "unset",     "if",        "else",
-    "emit",   "throttle", "every",     "script", "not",       "and",       "or",
-    "true",   "false",    "otherwise", "never",  "two",       "within",    "while",
-    "only",   "after",    "assume",    "until",  "stops",     "given",     "stable"};
-
-bool is_keyword(const std::string& s) {
-  for (const char* k : kSpecKeywords) {
-    if (s == k) return true;
-  }
-  return false;
-}
 
 // Where a connection's rule name comes from, for the warning: its id, or the name arbc made.
 std::string origin(const XmlConnection& x, const std::string& model_name) {
@@ -56,15 +40,7 @@ Diagnostic renamed_warning(const YarpImport& im, size_t first, size_t later,
 
 }  // namespace
 
-std::string identifier(const std::string& text) {
-  std::string out;
-  for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  while (!out.empty() && out.front() == '_') out.erase(out.begin());
-  while (!out.empty() && out.back() == '_') out.pop_back();
-  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "p_" + out;
-  if (is_keyword(out)) out += "_";
-  return out;
-}
+std::string identifier(const std::string& text) { return spec_identifier(text); }
 
 std::vector<std::string> spec_rule_names(const YarpImport& im, std::vector<Diagnostic>& renamed) {
   const std::vector<model::Connection>& conns = im.app.connections;

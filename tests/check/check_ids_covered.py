@@ -6,7 +6,8 @@ usage: check_ids_covered.py ARBC REPO_ROOT
 `arbc check --list-ids` prints `id stage meaning` per id. An id of stage "check" must appear as
 `[id]` at the end of a line of some tests/check/<case>/<case>.err; one of stage "verify" as
 `[id]`, `"check": "id"` or `"ruleId": "id"` in some tests/verify/golden/ file; one of stage
-"yarp" as `[id]` in some tests/yarp_verify/<case>/<case>.out. Ids of stage "internal" name bugs in arbc that no input should reach, so they have no golden case. The other
+"yarp" as `[id]` in some tests/yarp_verify/<case>/<case>.out; one of stage "import" (`arbc
+import twist_mux`) in some tests/twist_mux/<case>/<case>.out. Ids of stage "internal" name bugs in arbc that no input should reach, so they have no golden case. The other
 way round, every id a golden file shows must be registered.
 """
 import pathlib
@@ -32,7 +33,10 @@ def main():
                           for p in (root / "tests/verify/golden").iterdir())
     yarp_text = "".join(p.read_text(encoding="utf-8", errors="replace")
                         for p in (root / "tests/yarp_verify").glob("*/*.out"))
+    import_text = "".join(p.read_text(encoding="utf-8", errors="replace")
+                          for p in (root / "tests/twist_mux").glob("*/*.out"))
     shown = {
+        "import": set(re.findall(r"\[([a-z0-9-]+)\]$", import_text, re.M)),
         "yarp": set(re.findall(r"\[([a-z0-9-]+)\]$", yarp_text, re.M)),
         "check": set(re.findall(r"\[([a-z0-9-]+)\]$", check_text, re.M)),
         "verify": set(re.findall(r"\[([a-z0-9-]+)\]$", verify_text, re.M))
@@ -46,7 +50,7 @@ def main():
             failures.append(f"[{id_}] has an unknown stage {st!r}")
         elif id_ not in shown[st]:
             where = {"check": "tests/check/", "verify": "tests/verify/golden/",
-                     "yarp": "tests/yarp_verify/"}[st]
+                     "yarp": "tests/yarp_verify/", "import": "tests/twist_mux/"}[st]
             failures.append(f"diagnostic id [{id_}] ({st}) has no golden case in {where}")
     for st, ids in shown.items():
         for id_ in sorted(ids - set(stage)):
