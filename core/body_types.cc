@@ -128,7 +128,9 @@ TypePtr Typer::binary(BodyExpr& e) {
     return scalar(Type::Kind::Bool);
   if (numeric(a) && numeric(b)) return op == "/" ? scalar(Type::Kind::Float) : join(a, b);
   if (is(a, Type::Kind::Vec3) || is(b, Type::Kind::Vec3)) return scalar(Type::Kind::Vec3);
-  if (op == "+" && (is(a, Type::Kind::String) || is(a, Type::Kind::List))) return a;
+  // A concatenation's length is not its operand's: it has no bound.
+  if (op == "+" && is(a, Type::Kind::String)) return scalar(Type::Kind::String);
+  if (op == "+" && is(a, Type::Kind::List)) return Type::list(a->element);
   return nullptr;
 }
 

@@ -95,6 +95,22 @@ TypePtr Type::list(TypePtr element) {
   return t;
 }
 
+TypePtr Type::sized_list(TypePtr element, int bound, bool fixed) {
+  auto t = std::make_shared<Type>();
+  t->kind = Kind::List;
+  t->element = std::move(element);
+  t->size = bound;
+  t->fixed = fixed;
+  return t;
+}
+
+TypePtr Type::bounded_string(int bound) {
+  auto t = std::make_shared<Type>();
+  t->kind = Kind::String;
+  t->size = bound;
+  return t;
+}
+
 TypePtr Type::record(std::vector<Field> fields) {
   auto t = std::make_shared<Type>();
   t->kind = Kind::Record;
@@ -123,10 +139,12 @@ std::string Type::to_string() const {
     case Kind::Float:
       return number_text(*this);
     case Kind::String:
-      return "string";
+      return size > 0 ? "string<" + std::to_string(size) + ">" : "string";
     case Kind::Vec3:
       return "vec3";
     case Kind::List:
+      if (fixed) return element->to_string() + "[" + std::to_string(size) + "]";
+      if (size > 0) return "list<" + element->to_string() + ", " + std::to_string(size) + ">";
       return "list<" + element->to_string() + ">";
     case Kind::Record: {
       std::string s = "{";
@@ -159,6 +177,7 @@ bool same_type(const Type& a, const Type& b) {
   if (a.kind != b.kind) return false;
   if (a.kind == Type::Kind::Int || a.kind == Type::Kind::Float)
     return a.bits == b.bits && a.is_unsigned == b.is_unsigned;
+  if (a.size != b.size || a.fixed != b.fixed) return false;
   if (a.kind == Type::Kind::List) return same_type(*a.element, *b.element);
   if (a.kind != Type::Kind::Record) return true;
   if (a.fields.size() != b.fields.size()) return false;
@@ -172,8 +191,8 @@ bool same_type(const Type& a, const Type& b) {
 
 namespace {
 
-// Recursive descent over: type := scalar (number types by any spelling) | 'list' '<' type '>' | '{'
-// (name ':' type),* '}'
+// Recursive descent over: type := base ('[' N ']')* ; base := scalar (number types by any
+// spelling) | 'string' ('<' N '>')? | 'list' '<' type (',' N)? '>' | '{' (name ':' type),* '}'
 class TypeParser {
  public:
   explicit TypeParser(std::string_view text) : text_(text) {}
@@ -219,9 +238,18 @@ class TypeParser {
         result = Type::scalar(Type::Kind::Bool);
       else if (TypePtr number = Type::number(word))
         result = number;
-      else if (word == "string")
-        result = Type::scalar(Type::Kind::String);
-      else if (word == "vec3")
+      else if (word == "string") {
+        skip_space();
+        if (!eat('<')) {
+          result = Type::scalar(Type::Kind::String);
+        } else {
+          int n = bound();
+          if (n == 0) return nullptr;
+          skip_space();
+          if (!eat('>')) return fail("expected '>'");
+          result = Type::bounded_string(n);
+        }
+      } else if (word == "vec3")
         result = Type::scalar(Type::Kind::Vec3);
       else if (word == "list") {
         skip_space();
@@ -229,14 +257,39 @@ class TypeParser {
         TypePtr el = parse();
         if (!el) return nullptr;
         skip_space();
+        int n = 0;
+        if (eat(',') && (n = bound()) == 0) return nullptr;
+        skip_space();
         if (!eat('>')) return fail("expected '>'");
-        result = Type::list(el);
+        result = Type::sized_list(el, n, false);
       } else {
         return fail("unknown type '" + word + "'");
       }
     }
+    for (skip_space(); eat('['); skip_space()) {
+      int n = bound();
+      if (n == 0) return nullptr;
+      skip_space();
+      if (!eat(']')) return fail("expected ']'");
+      result = Type::sized_list(result, n, true);
+    }
     --depth_;
     return result;
+  }
+
+  // N of string<N>, list<T, N>, T[N]: 1 to Type::kMaxSize; 0 after a failure.
+  int bound() {
+    skip_space();
+    size_t start = pos_;
+    long long n = 0;
+    while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_])) &&
+           n <= Type::kMaxSize)
+      n = n * 10 + (text_[pos_++] - '0');
+    if (pos_ == start || n < 1 || n > Type::kMaxSize) {
+      fail("expected a size from 1 to " + std::to_string(Type::kMaxSize));
+      return 0;
+    }
+    return static_cast<int>(n);
   }
 
   std::string identifier() {

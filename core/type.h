@@ -1,6 +1,10 @@
 // Data types of ports and values: bool, the number types of core/number_types.def (int8 to
-// uint64, float32, float64; `int` and `float` are int64 and float64), string, vec3, list<T> and
-// records. Shared by the compiler (type checking), app.json and the runtime (port type matching).
+// uint64, float32, float64; `int` and `float` are int64 and float64), string, vec3, lists and
+// records. A list is unbounded (`list<T>`), bounded (`list<T, N>`: at most N elements, ROS 2's
+// `T[<=N]`) or fixed (`T[N]`: exactly N, ROS 2's `T[N]`); a string may be bounded (`string<N>`:
+// at most N bytes). The bound is part of the type: the proof assumes it, so every value the
+// runtime takes in is checked against it (conforms()). Shared by the compiler (type checking),
+// app.json and the runtime (port type matching).
 //
 // Every integer type is held as a 64-bit integer (a Lua 5.4 integer, an int64_t Value) whose
 // value is in the type's range; a uint64 is held as its bit pattern, so one above 2^63 - 1 reads
@@ -31,10 +35,15 @@ struct Type {
   int bits = 64;              // Kind::Int: 8, 16, 32 or 64; Kind::Float: 32 or 64
   bool is_unsigned = false;   // Kind::Int
   TypePtr element;            // Kind::List
+  int size = 0;               // Kind::List, Kind::String: the bound N; 0: unbounded
+  bool fixed = false;         // Kind::List: exactly `size` elements (T[N]), not at most
   std::vector<Field> fields;  // Kind::Record, in declaration order
 
   static TypePtr scalar(Kind kind);
   static TypePtr list(TypePtr element);
+  // list<element, bound> (fixed: element[bound]); string<bound>.
+  static TypePtr sized_list(TypePtr element, int bound, bool fixed);
+  static TypePtr bounded_string(int bound);
   static TypePtr record(std::vector<Field> fields);
   // The number type a spec spells `name` ("int32", "byte", "float"); null for any other word.
   static TypePtr number(std::string_view name);
@@ -54,7 +63,12 @@ struct Type {
   // "-128 to 127", "0 to 18446744073709551615": an integer type's range, for messages.
   std::string range_text() const;
 
-  // Canonical text: "list<{pos: vec3, dist: float}>". Fields keep declaration order.
+  // The largest N of T[N], list<T, N> and string<N>: a counterexample holds every element of a
+  // fixed list, and its messages stay of a size a test can read.
+  static constexpr int kMaxSize = 4096;
+
+  // Canonical text: "list<{pos: vec3, dist: float}>", "float[9]", "list<int, 8>", "string<16>".
+  // Fields keep declaration order.
   std::string to_string() const;
   // The record field called `name`; null when there is none (or this is not a record).
   const Field* field(std::string_view name) const;

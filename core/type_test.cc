@@ -81,6 +81,31 @@ TEST(TypeTest, ArithmeticPromotesTheSizedTypes) {
   EXPECT_EQ(arithmetic_type(*parse_type("float32"), *parse_type("int8"))->to_string(), "float");
 }
 
+// Sizes are part of the type and of its text: T[N], list<T, N>, string<N>, nested anywhere.
+TEST(TypeTest, SizedListsAndStringsRoundTrip) {
+  for (const char* text : {"float[9]", "list<int, 8>", "string<16>", "{a: uint8}[2]",
+                           "list<string<4>, 3>[2]", "{cov: float32[36], names: list<string>}"}) {
+    std::string error;
+    TypePtr t = parse_type(text, &error);
+    ASSERT_TRUE(t) << text << ": " << error;
+    EXPECT_EQ(t->to_string(), text);
+    EXPECT_TRUE(same_type(*t, *parse_type(t->to_string())));
+  }
+  TypePtr fixed = parse_type("float[9]");
+  EXPECT_TRUE(fixed->fixed);
+  EXPECT_EQ(fixed->size, 9);
+  EXPECT_FALSE(same_type(*fixed, *parse_type("list<float>")));
+  EXPECT_FALSE(same_type(*fixed, *parse_type("list<float, 9>")));
+  EXPECT_FALSE(same_type(*fixed, *parse_type("float[8]")));
+  EXPECT_FALSE(same_type(*parse_type("string<3>"), *parse_type("string")));
+  std::string error;
+  for (const char* bad :
+       {"float[0]", "list<int, 0>", "string<4097>", "int[99999999999]", "string<>", "int[3"}) {
+    EXPECT_FALSE(parse_type(bad, &error)) << bad;
+  }
+  EXPECT_TRUE(parse_type("int[4096]"));
+}
+
 TEST(TypeTest, RejectsMalformedText) {
   std::string error;
   EXPECT_FALSE(parse_type("list<", &error));

@@ -252,12 +252,22 @@ bool conforms(const Value& v, const Type& t, std::string* why) {
         return fail(v.to_json() + " is not a " + t.to_string() + " value (it would round)");
       return true;
     case Type::Kind::String:
-      return v.is_string() || mismatch();
+      if (!v.is_string()) return mismatch();
+      if (t.size > 0 && v.as_string().size() > static_cast<size_t>(t.size))
+        return fail("a string of " + std::to_string(v.as_string().size()) + " bytes is not a " +
+                    t.to_string() + " (at most " + std::to_string(t.size) + " bytes)");
+      return true;
     case Type::Kind::Vec3:
       return v.is_vec3() || mismatch();
     case Type::Kind::List: {
       if (!v.is_list()) return mismatch();
       const ValueList& items = v.as_list();
+      // T[N] holds exactly N elements, list<T, N> at most N: what the proof assumed of it.
+      size_t n = static_cast<size_t>(t.size);
+      if (t.size > 0 && (t.fixed ? items.size() != n : items.size() > n))
+        return fail("a list of " + std::to_string(items.size()) + " elements is not a " +
+                    t.to_string() + (t.fixed ? " (exactly " : " (at most ") +
+                    std::to_string(t.size) + ")");
       for (size_t i = 0; i < items.size(); ++i) {
         std::string inner;
         if (!conforms(items[i], *t.element, why ? &inner : nullptr)) {

@@ -123,12 +123,24 @@ std::optional<Value> convert(const nlohmann::json& j, const Type& t, const std::
       return Value(*d);
     }
     case Type::Kind::String:
-      if (!j.is_string()) return fail(path, "string", j, err), std::nullopt;
+      if (!j.is_string()) return fail(path, t.to_string(), j, err), std::nullopt;
+      if (t.size > 0 && j.get_ref<const std::string&>().size() > static_cast<size_t>(t.size)) {
+        *err = at(path) + "a string of " + std::to_string(j.get_ref<const std::string&>().size()) +
+               " bytes where " + t.to_string() + " holds at most " + std::to_string(t.size);
+        return std::nullopt;
+      }
       return Value(j.get<std::string>());
     case Type::Kind::Vec3:
       return convert_vec3(j, path, err);
     case Type::Kind::List: {
       if (!j.is_array()) return fail(path, t.to_string(), j, err), std::nullopt;
+      if (t.size > 0 && (t.fixed ? j.size() != static_cast<size_t>(t.size)
+                                 : j.size() > static_cast<size_t>(t.size))) {
+        *err = at(path) + "a list of " + std::to_string(j.size()) + " elements where " +
+               t.to_string() + (t.fixed ? " has exactly " : " holds at most ") +
+               std::to_string(t.size);
+        return std::nullopt;
+      }
       Value out = Value::list();
       for (size_t i = 0; i < j.size(); ++i) {
         std::string item = (path.empty() ? "item " : path + " item ") + std::to_string(i);

@@ -65,5 +65,23 @@ TEST(ValueTest, ConformsChecksTheRangeOfSizedTypes) {
   EXPECT_FALSE(conforms(Value(int64_t{16777217}), *parse_type("float32"), &why));
 }
 
+// T[N] has exactly N elements, list<T, N> and string<N> at most N: the proof assumed it, so
+// the runtime drops any other value as bad-type with this reason.
+TEST(ValueTest, ConformsChecksSizes) {
+  std::string why;
+  Value three = Value::list({Value(1.0), Value(2.0), Value(3.0)});
+  EXPECT_TRUE(conforms(three, *parse_type("float[3]")));
+  EXPECT_FALSE(conforms(three, *parse_type("float[4]"), &why));
+  EXPECT_EQ(why, "a list of 3 elements is not a float[4] (exactly 4)");
+  EXPECT_TRUE(conforms(three, *parse_type("list<float, 3>")));
+  EXPECT_FALSE(conforms(three, *parse_type("list<float, 2>"), &why));
+  EXPECT_EQ(why, "a list of 3 elements is not a list<float, 2> (at most 2)");
+  EXPECT_TRUE(conforms(Value("abc"), *parse_type("string<3>")));
+  EXPECT_FALSE(conforms(Value("abcd"), *parse_type("string<3>"), &why));
+  EXPECT_EQ(why, "a string of 4 bytes is not a string<3> (at most 3 bytes)");
+  EXPECT_FALSE(conforms(Value::record({{"v", three}}), *parse_type("{v: float[2]}"), &why));
+  EXPECT_EQ(why, "field v: a list of 3 elements is not a float[2] (exactly 2)");
+}
+
 }  // namespace
 }  // namespace arbc

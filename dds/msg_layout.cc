@@ -65,15 +65,24 @@ class Comparer {
   std::string field(const Type& t, const MsgType& m, const std::string& where) {
     if (m.array != MsgType::Array::None) {
       if (t.kind != Type::Kind::List) return differ(where, spec_text(t), "an array, " + m.text());
-      if (m.array == MsgType::Array::Fixed)
-        return where + " is a list in the spec and " + m.text() +
-               " in the message, a fixed array, which has no length on the wire where a list "
-               "has one";
+      bool fixed = m.array == MsgType::Array::Fixed;
+      if (fixed && (!t.fixed || t.size != m.array_size))
+        return where + " is " + t.to_string() + " in the spec and " + m.text() +
+               " in the message, a fixed array of " + std::to_string(m.array_size) +
+               ", which has no length on the wire where a list has one: declare it " +
+               t.element->to_string() + "[" + std::to_string(m.array_size) + "]";
+      if (!fixed && t.fixed)
+        return where + " is " + t.to_string() + " in the spec and " + m.text() +
+               " in the message, a sequence, which has its length on the wire where a fixed "
+               "array has none: declare it list<" +
+               t.element->to_string() + ">";
       MsgType element = m;
       element.array = MsgType::Array::None;
       return field(*t.element, element, where + "[]");
     }
     if (m.primitive) {
+      // A bound is not on the wire: string<N> and string lay out alike (the runtime checks N).
+      if (m.name == "string" && t.kind == Type::Kind::String) return "";
       TypePtr want = spec_type_of(m);
       if (want && same_type(t, *want)) return "";
       return differ(where, spec_text(t), msg_text(m)) +

@@ -105,7 +105,7 @@ class MsgPathTest : public ::testing::Test {
 };
 
 // A .msg file on the path is the definition, before the built-in one; the messages it uses are
-// found there too, and a list is a sequence, never a fixed array.
+// found there too, and a list is a sequence, never a fixed array: T[N] is, at its size.
 TEST_F(MsgPathTest, TheFileOnThePathIsTheDefinition) {
   write("my_msgs/msg/Scan.msg",
         "# a scan\nstd_msgs/Header header  # its stamp\nfloat64[] ranges\nfloat64[3] origin\n"
@@ -116,10 +116,35 @@ TEST_F(MsgPathTest, TheFileOnThePathIsTheDefinition) {
                              {"ranges", Type::list(real())},
                              {"origin", Type::list(real())}});
   std::string why = layout_problem("Scan", *ok, "my_msgs/msg/Scan", lib);
-  EXPECT_NE(why.find("origin is a list in the spec and float64[3] in the message, a fixed array"),
+  EXPECT_NE(why.find("origin is list<float> in the spec and float64[3] in the message, a fixed "
+                     "array of 3, which has no length on the wire where a list has one: declare "
+                     "it float[3]"),
             std::string::npos)
       << why;
   EXPECT_NE(why.find((dir_ / "my_msgs/msg/Scan.msg").string()), std::string::npos) << why;
+  auto scan = [&](TypePtr ranges, TypePtr origin) {
+    return Type::record({{"header", Type::record({{"frame_id", text()}})},
+                         {"ranges", std::move(ranges)},
+                         {"origin", std::move(origin)}});
+  };
+  EXPECT_EQ(layout_problem("Scan", *scan(Type::list(real()), Type::sized_list(real(), 3, true)),
+                           "my_msgs/msg/Scan", lib),
+            "");
+  EXPECT_NE(layout_problem("Scan", *scan(Type::list(real()), Type::sized_list(real(), 4, true)),
+                           "my_msgs/msg/Scan", lib),
+            "");
+  why = layout_problem("Scan",
+                       *scan(Type::sized_list(real(), 3, true), Type::sized_list(real(), 3, true)),
+                       "my_msgs/msg/Scan", lib);
+  EXPECT_NE(why.find("ranges is float[3] in the spec and float64[] in the message, a sequence"),
+            std::string::npos)
+      << why;
+  // A bound is not on the wire: list<float, 8> lays out as float64[].
+  EXPECT_EQ(
+      layout_problem("Scan",
+                     *scan(Type::sized_list(real(), 8, false), Type::sized_list(real(), 3, true)),
+                     "my_msgs/msg/Scan", lib),
+      "");
 }
 
 TEST_F(MsgPathTest, MalformedCyclicAndMissingDefinitionsAreSaidWithTheirPlace) {

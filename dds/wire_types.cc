@@ -64,7 +64,7 @@ ft::DynamicType_ptr scalar(const Type& t) {
     case Type::Kind::Float:
       return number(t);
     default:
-      return f->create_string_type(kUnbounded);
+      return f->create_string_type(t.size > 0 ? static_cast<uint32_t>(t.size) : kUnbounded);
   }
 }
 
@@ -175,7 +175,11 @@ ft::DynamicType_ptr WireNaming::build(const Type& t, const std::string& anonymou
   if (t.kind == Type::Kind::List) {
     ft::DynamicType_ptr element = build(*t.element, anonymous, error);
     if (!element) return {};
-    ft::DynamicTypeBuilder_ptr b(f->create_sequence_builder(element, kUnbounded));
+    if (t.fixed) return fixed_list(t, element, anonymous, error);
+    // list<T, N> is a bounded sequence: the same bytes as a sequence (the bound is not on the
+    // wire; wire_values.cc checks it).
+    uint32_t n = static_cast<uint32_t>(t.size);
+    ft::DynamicTypeBuilder_ptr b(f->create_sequence_builder(element, n ? n : kUnbounded));
     return b->build();
   }
   std::vector<std::pair<std::string, ft::DynamicType_ptr>> members;
@@ -191,6 +195,16 @@ ft::DynamicType_ptr WireNaming::build(const Type& t, const std::string& anonymou
     members.push_back({field.name, m});
   }
   return build_struct(struct_name(t, anonymous), t.to_string(), members, error);
+}
+
+// T[N] as a struct of N members e0 ... eN-1: the bytes of an IDL array T[N] (the elements, each
+// at its alignment, no length). Not Fast-DDS 2.9's array type, whose DynamicData keeps an
+// element equal to the default as no element, so a -0.0 went out as 0.0 (tests/dds/matrix).
+ft::DynamicType_ptr WireNaming::fixed_list(const Type& t, const ft::DynamicType_ptr& element,
+                                           const std::string& anonymous, std::string* error) {
+  std::vector<std::pair<std::string, ft::DynamicType_ptr>> members;
+  for (int i = 0; i < t.size; ++i) members.push_back({"e" + std::to_string(i), element});
+  return build_struct("arbc::array::" + anonymous, t.to_string(), members, error);
 }
 
 // Builds (or reuses) the struct `name` whose spec structure is `structure`. Two different

@@ -59,6 +59,9 @@ class WireNaming {
   std::string wrapper_name(const Type& t, const std::string& anonymous) const;
   eprosima::fastrtps::types::DynamicType_ptr build(const Type& t, const std::string& anonymous,
                                                    std::string* error);
+  eprosima::fastrtps::types::DynamicType_ptr fixed_list(
+      const Type& t, const eprosima::fastrtps::types::DynamicType_ptr& element,
+      const std::string& anonymous, std::string* error);
   eprosima::fastrtps::types::DynamicType_ptr build_struct(
       const std::string& name, const std::string& signature,
       const std::vector<std::pair<std::string, eprosima::fastrtps::types::DynamicType_ptr>>&

@@ -236,5 +236,84 @@ TEST(WireValuesTest, UndecodableBytesAreMarkedBadAndSamplesReuseCleanly) {
   codec.deleteData(in);
 }
 
+// T[N] is an IDL array, list<T, N> a bounded sequence, string<N> a bounded string: the values
+// come back, and an array has no length on the wire (the bytes a fastddsgen `double c[3]` has).
+TEST(WireValuesTest, SizedListsAndStringsSurviveTheWire) {
+  model::App app = table_app();
+  Deployment d;
+  WireNaming n(app, d);
+  Value three = Value::list({Value(1.5), Value(-0.0), Value(3e300)});
+  struct Case {
+    const char* type;
+    Value value;
+  } cases[] = {
+      {"float[3]", three},
+      {"{cov: float32[4], n: int8}",
+       Value::record({{"cov", Value::list({Value(0.5), Value(1.0), Value(-2.0), Value(0.25)})},
+                      {"n", Value(int64_t{-3})}})},
+      {"list<int, 4>", Value::list({1, 2})},
+      {"list<int, 4>", Value::list({})},
+      {"string<8>", Value("eightchr")},
+      {"{a: vec3}[2]", Value::list({Value::record({{"a", Value::vec3(1, 2, 3)}}),
+                                    Value::record({{"a", Value::vec3(4, 5, 6)}})})},
+      {"list<string<3>, 2>", Value::list({"abc", ""})},
+      {"string<4>[2]", Value::list({"ab", "cdef"})},
+      {"list<int>[2]", Value::list({Value::list({1}), Value::list({})})},
+  };
+  for (const Case& c : cases) {
+    auto wire = port_type(n, c.type, "s" + std::to_string(&c - cases));
+    EXPECT_EQ(round_trip(wire, c.value), c.value) << c.type;
+  }
+  // {c: int32[2]}: the encapsulation (4 bytes) and two int32, no length before them.
+  auto wire = port_type(n, "{c: int32[2]}", "bytes");
+  WireTopicType codec(wire);
+  auto* out = static_cast<WireSample*>(codec.createData());
+  std::string error;
+  ASSERT_TRUE(to_wire(*wire, Value::record({{"c", Value::list({7, 8})}}), out->data, &error))
+      << error;
+  eprosima::fastrtps::rtps::SerializedPayload_t payload(64);
+  ASSERT_TRUE(codec.serialize(out, &payload));
+  EXPECT_EQ(payload.length, 12u);
+  EXPECT_EQ(payload.data[4], 7);
+  EXPECT_EQ(payload.data[8], 8);
+  // A value of another size is refused before it reaches the wire.
+  EXPECT_FALSE(to_wire(*wire, Value::record({{"c", Value::list({7})}}), out->data, &error));
+  codec.deleteData(out);
+}
+
+// A sample whose bounded sequence or string is longer than the bound (a publisher whose type
+// has another bound, or none) is no value of the port's type: it does not decode.
+TEST(WireValuesTest, ASequenceLongerThanItsBoundDoesNotDecode) {
+  model::App app = table_app();
+  Deployment d;
+  struct Case {
+    const char* wide;
+    const char* narrow;
+    Value value;
+  } cases[] = {
+      {"list<int>", "list<int, 2>", Value::list({1, 2, 3})},
+      {"string", "string<2>", Value("abc")},
+  };
+  for (const Case& c : cases) {
+    WireNaming n(app, d), other(app, d);  // both wrap as arbc::String: one naming each
+    auto wide = port_type(n, c.wide, "w" + std::to_string(&c - cases));
+    auto narrow = port_type(other, c.narrow, "n" + std::to_string(&c - cases));
+    ASSERT_TRUE(wide && narrow);
+    WireTopicType wide_codec(wide), narrow_codec(narrow);
+    auto* out = static_cast<WireSample*>(wide_codec.createData());
+    auto* in = static_cast<WireSample*>(narrow_codec.createData());
+    std::string error;
+    ASSERT_TRUE(to_wire(*wide, c.value, out->data, &error)) << error;
+    eprosima::fastrtps::rtps::SerializedPayload_t payload(256);
+    ASSERT_TRUE(wide_codec.serialize(out, &payload));
+    EXPECT_TRUE(narrow_codec.deserialize(&payload, in));
+    Value back;
+    EXPECT_TRUE(in->bad || !from_wire(*narrow, in->data, &back, &error))
+        << c.narrow << " decoded " << back.to_json();
+    wide_codec.deleteData(out);
+    narrow_codec.deleteData(in);
+  }
+}
+
 }  // namespace
 }  // namespace arbc::dds

@@ -146,6 +146,15 @@ bool fill_struct(ft::DynamicData* s, const Type& t, const Value& v) {
   return true;
 }
 
+// A fixed list (T[N]: a struct of N members, wire_types.cc): element i is member i.
+bool fill_array(ft::DynamicData* array, const Type& t, const Value& v) {
+  const ValueList& items = v.as_list();
+  if (items.size() != static_cast<size_t>(t.size)) return false;  // conforms() said so earlier
+  for (size_t i = 0; i < items.size(); ++i)
+    if (!put(array, static_cast<ft::MemberId>(i), *t.element, items[i])) return false;
+  return true;
+}
+
 bool fill_sequence(ft::DynamicData* seq, const Type& element, const Value& v) {
   if (!ok(seq->clear_data())) return false;
   for (const Value& item : v.as_list()) {
@@ -185,8 +194,9 @@ bool put(ft::DynamicData* parent, ft::MemberId id, const Type& t, const Value& v
   }
   ft::DynamicData* child = parent->loan_value(id);
   if (!child) return false;
-  bool done =
-      t.kind == Type::Kind::List ? fill_sequence(child, *t.element, v) : fill_struct(child, t, v);
+  bool done = t.kind != Type::Kind::List ? fill_struct(child, t, v)
+              : t.fixed                  ? fill_array(child, t, v)
+                                         : fill_sequence(child, *t.element, v);
   parent->return_loaned_value(child);
   return done;
 }
@@ -212,9 +222,13 @@ bool read_struct(ft::DynamicData* s, const Type& t, Value* out) {
   return true;
 }
 
-bool read_sequence(ft::DynamicData* seq, const Type& element, Value* out) {
+// A list from a sequence, or from a fixed list's struct (t.fixed: its N members).
+// A bounded sequence longer than its bound is no value of its type: the proof assumed the bound.
+bool read_sequence(ft::DynamicData* seq, const Type& t, Value* out) {
+  const Type& element = *t.element;
   ValueList items;
-  uint32_t n = seq->get_item_count();
+  uint32_t n = t.fixed ? static_cast<uint32_t>(t.size) : seq->get_item_count();
+  if (t.size > 0 && n > static_cast<uint32_t>(t.size)) return false;
   items.reserve(n);
   for (uint32_t i = 0; i < n; ++i) {
     Value item;
@@ -240,6 +254,7 @@ bool get(ft::DynamicData* parent, ft::MemberId id, const Type& t, Value* out) {
     case Type::Kind::String: {
       std::string s;
       if (!ok(parent->get_string_value(s, id))) return false;
+      if (t.size > 0 && s.size() > static_cast<size_t>(t.size)) return false;  // string<N>
       *out = Value(std::move(s));
       return true;
     }
@@ -248,8 +263,8 @@ bool get(ft::DynamicData* parent, ft::MemberId id, const Type& t, Value* out) {
   }
   ft::DynamicData* child = parent->loan_value(id);
   if (!child) return false;
-  bool done = t.kind == Type::Kind::List ? read_sequence(child, *t.element, out)
-                                         : read_struct(child, t, out);
+  bool done =
+      t.kind == Type::Kind::List ? read_sequence(child, t, out) : read_struct(child, t, out);
   parent->return_loaned_value(child);
   return done;
 }

@@ -119,10 +119,12 @@ testWindow : 'at' duration | 'within' duration '..' duration ;
 portRef  : ID '.' ID ;
 duration : DURATION | NUMBER | ID ;
 
+// `list<T>`, `list<T, N>` (at most N), `string<N>` (at most N bytes), `T[N]` (exactly N).
 typeExpr
-  : ID ('<' typeExpr '>')?                                        # namedType
-  | '{' (fieldType (',' fieldType)* ','?)? '}'                    # recordType
+  : ID ('<' (typeExpr | size=NUMBER) (',' bound=NUMBER)? '>')? arraySize?   # namedType
+  | '{' (fieldType (',' fieldType)* ','?)? '}' arraySize?                   # recordType
   ;
+arraySize : '[' NUMBER ']' ;
 fieldType : ID ':' typeExpr ;
 
 block : '{' stmt* '}' ;

@@ -205,6 +205,11 @@ std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::str
       if (lua_type(L, index) != LUA_TSTRING) return mismatch();
       size_t len = 0;
       const char* s = lua_tolstring(L, index, &len);
+      if (t.size > 0 && len > static_cast<size_t>(t.size)) {
+        *why = "a string of " + std::to_string(len) + " bytes where " + t.to_string() +
+               " holds at most " + std::to_string(t.size);
+        return std::nullopt;
+      }
       return Value(std::string(s, len));
     }
     case Type::Kind::Vec3:
@@ -214,6 +219,11 @@ std::optional<Value> read_value(lua_State* L, int index, const Type& t, std::str
       if (!lua_istable(L, index)) return mismatch();
       if (!lua_checkstack(L, 4)) return too_deep(why);
       lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+      if (t.size > 0 && (t.fixed ? n != t.size : n > t.size)) {
+        *why = "a list of " + std::to_string(n) + " elements where " + t.to_string() +
+               (t.fixed ? " has exactly " : " holds at most ") + std::to_string(t.size);
+        return std::nullopt;
+      }
       ValueList items;
       items.reserve(static_cast<size_t>(n));
       for (lua_Integer i = 1; i <= n; ++i) {

@@ -105,14 +105,19 @@ void Runtime::lost(bool input, int index, DropReason reason, uint64_t count,
 
 namespace {
 
-// The number of elements of the longest list in v, at any depth (0: none).
-size_t longest_list(const Value& v) {
+// The number of elements of the longest list in v, at any depth (0: none), but for a fixed list
+// (T[N], type `t` when known): the proof holds each of its N elements, so it sets no bound.
+size_t longest_list(const Value& v, const Type* t) {
   size_t n = 0;
   if (v.is_list()) {
-    n = v.as_list().size();
-    for (const Value& e : v.as_list()) n = std::max(n, longest_list(e));
+    const Type* element = t && t->kind == Type::Kind::List ? t->element.get() : nullptr;
+    if (!t || !t->fixed) n = v.as_list().size();
+    for (const Value& e : v.as_list()) n = std::max(n, longest_list(e, element));
   } else if (v.is_record()) {
-    for (const auto& [name, f] : v.as_record()) n = std::max(n, longest_list(f));
+    for (const auto& [name, f] : v.as_record()) {
+      const Field* field = t ? t->field(name) : nullptr;
+      n = std::max(n, longest_list(f, field ? field->type.get() : nullptr));
+    }
   }
   return n;
 }
@@ -130,7 +135,7 @@ void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   // The proof of this rule covers lists of at most list_bound elements (app.json): a longer
   // one is not delivered under a proof that excluded it.
   if (c.list_bound > 0) {
-    size_t n = longest_list(v);
+    size_t n = longest_list(v, c.source ? c.source->type.get() : nullptr);
     if (n > static_cast<size_t>(c.list_bound)) {
       drop(c, DropReason::BadValue,
            "a list of " + std::to_string(n) + " elements; the proof covers at most " +

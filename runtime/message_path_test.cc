@@ -407,5 +407,30 @@ TEST(MessagePathTest, ListsOfAnyLengthPassWithoutABound) {
   EXPECT_EQ(rt->stats_table().find("bad-value"), std::string::npos);
 }
 
+// T[N]: the proof holds all N elements, so the list bound does not apply to it (its lists inside
+// still count); a published value of another size is no value of the type: bad-type.
+TEST(MessagePathTest, FixedListsPassTheBoundAndOtherSizesAreBadType) {
+  TestApp t;
+  t.module("Src", {"out x: {cov: float[6], tags: list<int>}"});
+  t.module("Sink", {"in x: {cov: float[6], tags: list<int>}"});
+  t.connect("c", "Src.x", "Sink.x", "true", "PortMonitor.accept = function(m) return true end\n");
+  t.app.connections.back().list_bound = 2;
+  auto rt = t.start();
+  auto floats = [](size_t n) { return Value(ValueList(n, Value(0.5))); };
+  auto ints = [](size_t n) { return Value(ValueList(n, Value(int64_t{1}))); };
+  auto msg = [](Value cov, Value tags) {
+    return Value::record({{"cov", std::move(cov)}, {"tags", std::move(tags)}});
+  };
+  TestApp::publish_at(*rt, 1.0, "Src", "x", msg(floats(6), ints(2)));  // delivered
+  TestApp::publish_at(*rt, 2.0, "Src", "x", msg(floats(6), ints(3)));  // bad-value: tags
+  TestApp::publish_at(*rt, 3.0, "Src", "x", msg(floats(5), ints(0)));  // bad-type: cov
+  rt->advance(5s);
+  EXPECT_EQ(TestApp::sink(*rt).got.size(), 1u);
+  auto s = TestApp::stats_of(rt->stats(), "c");
+  EXPECT_EQ(s.arrived, 3u);
+  EXPECT_EQ(s.drops(DropReason::BadValue), 1u);
+  EXPECT_EQ(s.drops(DropReason::BadType), 1u);
+}
+
 }  // namespace
 }  // namespace arbc

@@ -65,8 +65,9 @@ std::string field_part(const std::string& part, const std::string& field) {
 Value draw_list(const Type& t, std::mt19937_64& rng, const SamplePlan& plan,
                 const std::string& part) {
   Value out = Value::list();
-  if (part.empty() && !plan.flags.empty() && t.element->kind == Type::Kind::String) {
+  if (part.empty() && !plan.flags.empty() && t.element->kind == Type::Kind::String && !t.fixed) {
     for (const std::string& f : plan.flags) {
+      if (t.size > 0 && out.size() >= static_cast<size_t>(t.size)) break;  // list<string, N>
       if (rng() % 2 == 0) out.push_back(Value(f));  // each flag holds half of the time
     }
     return out;
@@ -74,6 +75,8 @@ Value draw_list(const Type& t, std::mt19937_64& rng, const SamplePlan& plan,
   const model::ComparedValues* lengths = compared(plan, "len(" + part + ")");
   int64_t n = lengths ? int_around(lengths->numbers, rng, 0, kMaxSampleListLength)
                       : 1 + static_cast<int64_t>(rng() % 3);
+  if (t.fixed) n = t.size;                           // T[N]: always N
+  if (t.size > 0) n = std::min<int64_t>(n, t.size);  // list<T, N>: at most N
   for (int64_t i = 0; i < n; ++i) out.push_back(draw(*t.element, rng, plan, part + "[]"));
   return out;
 }
@@ -113,8 +116,12 @@ Value draw(const Type& t, std::mt19937_64& rng, const SamplePlan& plan, const st
       constexpr double kMax = std::numeric_limits<float>::max();
       return Value(static_cast<double>(static_cast<float>(std::clamp(x, -kMax, kMax))));
     }
-    case Type::Kind::String:
-      return draw_string(rng, plan, part);
+    case Type::Kind::String: {
+      Value s = draw_string(rng, plan, part);
+      if (t.size > 0 && s.as_string().size() > static_cast<size_t>(t.size))
+        return Value(s.as_string().substr(0, static_cast<size_t>(t.size)));  // string<N>
+      return s;
+    }
     case Type::Kind::Vec3: {
       double x = draw_float(rng, plan, field_part(part, "x"), -1, 1);
       double y = draw_float(rng, plan, field_part(part, "y"), -1, 1);

@@ -24,11 +24,14 @@ struct Encoded {
 
 // `accept PREDICATE` over a message of type list<{ d: float }> with capacity kCapacity and
 // `slots` stand-ins past it (SymValue::tail).
-void encode(Encoded& out, const std::string& predicate, int slots = 0) {
+// With `type`, a message of that type (canonical text) instead.
+void encode(Encoded& out, const std::string& predicate, int slots = 0,
+            const std::string& type = "list<{d: float}>") {
   std::string err;
   std::optional<model::BodyStmt> s = model::parse_body_stmt("(accept 1 " + predicate + ")", &err);
   ASSERT_TRUE(s) << err;
-  TypePtr t = Type::list(Type::record({{"d", Type::scalar(Type::Kind::Float)}}));
+  TypePtr t = parse_type(type, &err);
+  ASSERT_TRUE(t) << err;
   out.msg = fresh_value(out.ctx, *t, "m", kCapacity, out.domain, out.within, slots);
   out.body = encode_body(out.ctx, {*s}, *out.msg, "r");
   ASSERT_EQ(out.body->opaque, "");
@@ -158,6 +161,50 @@ TEST(ListLength, LiteralListsNeedNoBound) {
   EXPECT_FALSE(e.body->bounded);
   EXPECT_EQ(accepts_with_length(e, 8), z3::sat);
   EXPECT_EQ(accepts_with_length(e, 7), z3::unsat);
+}
+
+// T[N]: every element is encoded, past the capacity too, and the length is N: reading any
+// index is exact and needs no bound (the runtime checks each value has N elements).
+TEST(ListLength, FixedListsAreWholeAtAnySize) {
+  for (const char* p :
+       {"(< (field d (index msg 5)) 1.0)", "(< (field d (index msg (- (call len msg) 1))) 1.0)",
+        "(< (field d (call min_by msg (lambda o (field d (param o))))) 1.0)"}) {
+    Encoded e;
+    encode(e, p, 0, "{d: float}[6]");
+    EXPECT_FALSE(e.body->bounded) << p;
+    EXPECT_EQ(e.msg->items.size(), 6u) << p;
+    EXPECT_EQ(accepts_with_length(e, 6), z3::sat) << p;
+    EXPECT_EQ(accepts_with_length(e, 5), z3::unsat) << p;  // no value of the type has 5
+  }
+  // The smallest may be the sixth, beyond the capacity of 4, with no stand-in.
+  Encoded e;
+  encode(e, std::string("(and ") + kMinBelowZero + " " + kItemsNotNegative + ")", 0,
+         "{d: float}[6]");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 6), z3::sat);
+}
+
+// list<T, N>: at most N elements, whatever the body reads; no value has more.
+TEST(ListLength, BoundedListsHaveNoLongerValue) {
+  Encoded e;
+  encode(e, "(>= (call len msg) 2)", 0, "list<{d: float}, 3>");
+  EXPECT_FALSE(e.body->bounded);
+  EXPECT_EQ(accepts_with_length(e, 3), z3::sat);
+  EXPECT_EQ(accepts_with_length(e, 4), z3::unsat);
+}
+
+// string<N>: at most N bytes; no value is longer, whatever the body compares it with.
+TEST(ListLength, BoundedStringsHaveNoLongerValue) {
+  for (auto [text, fits] : {std::pair{"abc", true}, std::pair{"abcd", false}}) {
+    Encoded e;
+    encode(e, std::string("(== msg \"") + text + "\")", 0, "string<3>");
+    z3::solver s(e.ctx);
+    for (const z3::expr& d : e.domain) s.add(d);
+    for (const z3::expr& x : e.body->side) s.add(x);
+    for (const AcceptTracker& t : e.body->trackers) s.add(t.literal);
+    s.add(e.body->accepts);
+    EXPECT_EQ(s.check(), fits ? z3::sat : z3::unsat) << text;
+  }
 }
 
 }  // namespace

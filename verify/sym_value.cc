@@ -25,8 +25,12 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
       return {K::Int, lua::sized_int_const(ctx, prefix, t)};
     case Type::Kind::Float:
       return {K::Float, lua::sized_float_const(ctx, prefix, t)};
-    case Type::Kind::String:
-      return {K::String, ctx.constant(prefix.c_str(), ctx.string_sort())};
+    case Type::Kind::String: {
+      z3::expr s = ctx.constant(prefix.c_str(), ctx.string_sort());
+      // string<N>: at most N bytes, one character each (byte_string), as the runtime checks.
+      if (t.size > 0) domain.push_back(s.length() <= ctx.int_val(t.size));
+      return {K::String, s};
+    }
     case Type::Kind::Vec3: {
       SymValue v(K::Vec3, ctx.bool_val(true));
       for (const char* c : {"x", "y", "z"})
@@ -34,7 +38,16 @@ SymValue fresh_value(z3::context& ctx, const Type& t, const std::string& prefix,
       return v;
     }
     case Type::Kind::List: {
+      if (t.fixed) {
+        // T[N]: every value has exactly N elements, each one encoded; no list bound applies.
+        SymValue v(K::List, lua::int_val(ctx, t.size));
+        for (int i = 0; i < t.size; ++i)
+          v.items.push_back(fresh_value(ctx, *t.element, prefix + "[" + std::to_string(i) + "]",
+                                        bound, domain, within_bound, tail_slots));
+        return v;
+      }
       z3::expr len = lua::int_const(ctx, prefix + ".len");
+      if (t.size > 0) domain.push_back(len <= lua::int_val(ctx, t.size));  // list<T, N>
       domain.push_back(len >= 0);
       within_bound.push_back(len <= bound);
       SymValue v(K::List, len);

@@ -25,11 +25,14 @@ std::string yarp_type_descriptor(const Type& t) {
              (t.is_unsigned ? ", unsigned = true" : "") + " }";
     }
     case Type::Kind::String:
+      if (t.size > 0) return "{ kind = \"string\", size = " + std::to_string(t.size) + " }";
       return "{ kind = \"string\" }";
     case Type::Kind::Vec3:
       return "{ kind = \"vec3\" }";
     case Type::Kind::List:
-      return "{ kind = \"list\", element = " + yarp_type_descriptor(*t.element) + " }";
+      return "{ kind = \"list\", element = " + yarp_type_descriptor(*t.element) +
+             (t.size > 0 ? ", size = " + std::to_string(t.size) : "") +
+             (t.fixed ? ", fixed = true" : "") + " }";
     case Type::Kind::Record: {
       std::string fields, order;
       for (const Field& f : t.fields) {

@@ -46,6 +46,8 @@ struct TypeExpr {
   std::unique_ptr<TypeExpr> element;                                      // Kind::List
   std::vector<std::pair<std::string, std::unique_ptr<TypeExpr>>> fields;  // Kind::Record
   std::vector<Loc> field_locs;  // Kind::Record, parallel to fields
+  int size = 0;                 // Kind::List, Kind::String: N of list<T, N>, T[N], string<N>
+  bool fixed = false;           // Kind::List: T[N], exactly N elements
   Loc loc;
   TypePtr resolved;  // sema: the structural type (named types expanded); null on error
 };

@@ -69,6 +69,8 @@ class Builder {
   std::string decode_string(antlr4::tree::TerminalNode* node);
   static double seconds_of_duration(const std::string& text);
   ast::TypeExpr type_expr(ArbcParser::TypeExprContext* ctx, int depth = 0);
+  ast::TypeExpr named_type(ArbcParser::NamedTypeContext* named, int depth);
+  int type_size(antlr4::Token* token);
 
   // ast_build_expr.cc
   ast::ExprPtr make(ast::Expr::Kind kind, ast::Loc where);

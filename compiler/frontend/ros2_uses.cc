@@ -5,6 +5,7 @@
 #include <string>
 
 #include "compiler/frontend/frontend.h"
+#include "compiler/frontend/ros2_constants.h"
 #include "core/check_ids.h"
 #include "core/join.h"
 #include "core/ros2_known_messages.h"
@@ -143,7 +144,31 @@ class Declarer {
     }
     if (ok) spec_.types.push_back(std::move(t));
     if (!ok) failed_.insert(name);
+    if (ok) declare_constants(def, name, use);
     return name;
+  }
+
+  // `uint8 ULTRASOUND=0` of Range as the constant `Range.ULTRASOUND` (ros2_constants.h).
+  void declare_constants(const ros2::MsgDefinition& def, const std::string& type_name,
+                         const UseDecl& use) {
+    for (const ros2::MsgConstant& c : def.constants) {
+      std::string why;
+      std::optional<ExprPtr> value = msg_constant_literal(c, use.loc, &why);
+      if (!value) {
+        std::string where = def.file.empty() ? "arbc's built-in " + def.full_name()
+                                             : def.file + ":" + std::to_string(c.line);
+        Diagnostic& d = add_error(out_, use.loc,
+                                  def.full_name() + ": constant '" + c.name + "' (" + where +
+                                      ") cannot be read: " + why + "; fix its definition");
+        note_at_file(d, def.file, c.line, c.column, "constant '" + c.name + "' is here");
+        continue;
+      }
+      ConstDecl k;
+      k.name = msg_constant_name(type_name, c.name);
+      k.value = std::move(*value);
+      k.loc = use.name_loc;
+      spec_.consts.push_back(std::move(k));
+    }
   }
 
   // A message a used one uses: its name unless the spec has that name, then PKG_NAME (then
@@ -166,10 +191,6 @@ class Declarer {
       note_at_file(d, def.file, f.line, f.column, "field '" + f.name + "' is here");
       return nullptr;
     };
-    if (f.type.array == ros2::MsgType::Array::Fixed)
-      return refuse("is a fixed-size array (" + f.type.text() +
-                    "), which arbc does not hold yet: a message with one (sensor_msgs/Imu, "
-                    "nav_msgs/Odometry) cannot be used");
     auto element = std::make_unique<TypeExpr>();
     element->loc = use.loc;
     if (!f.type.primitive) {
@@ -183,6 +204,7 @@ class Declarer {
       element->kind = TypeExpr::Kind::Bool;
     } else if (f.type.name == "string") {
       element->kind = TypeExpr::Kind::String;
+      if (f.type.string_bound <= Type::kMaxSize) element->size = f.type.string_bound;
     } else if (f.type.name == "wstring") {
       return refuse("is a wstring, which arbc does not hold: use string");
     } else {
@@ -194,6 +216,14 @@ class Declarer {
     list->kind = TypeExpr::Kind::List;
     list->loc = use.loc;
     list->element = std::move(element);
+    // T[N] holds exactly N, T[<=N] at most N; a bound above Type::kMaxSize is refused by sema.
+    list->fixed = f.type.array == ros2::MsgType::Array::Fixed;
+    if (list->fixed && f.type.array_size > Type::kMaxSize)
+      return refuse("is a fixed-size array of " + std::to_string(f.type.array_size) +
+                    " elements; arbc holds T[N] up to N = " + std::to_string(Type::kMaxSize));
+    // A bound above that is dropped: at most N is then unchecked, which every proof allows.
+    if (f.type.array != ros2::MsgType::Array::Sequence && f.type.array_size <= Type::kMaxSize)
+      list->size = f.type.array_size;
     return list;
   }
 
@@ -220,8 +250,10 @@ std::string type_text(const ast::TypeExpr& t) {
     case ast::TypeExpr::Kind::Bool:
       return "bool";
     case ast::TypeExpr::Kind::String:
-      return "string";
+      return t.size > 0 ? "string<" + std::to_string(t.size) + ">" : "string";
     case ast::TypeExpr::Kind::List:
+      if (t.fixed) return type_text(*t.element) + "[" + std::to_string(t.size) + "]";
+      if (t.size > 0) return "list<" + type_text(*t.element) + ", " + std::to_string(t.size) + ">";
       return "list<" + type_text(*t.element) + ">";
     case ast::TypeExpr::Kind::Record: {
       std::string out = "{ ";

@@ -53,18 +53,20 @@ constexpr const char* kHead = "app a;\nmodule M { out o: Scan; }\n";
 TEST_F(Ros2UsesTest, DeclaresTheMessageAndWhatItUsesAtTheirWidths) {
   write("sensor_msgs/msg/Scan",
         "uint8 KIND=3\nstd_msgs/Header header\nfloat32[] ranges\nuint16[<=4] flags\n"
-        "string<=8 label\nbool ok\nbyte b\nchar c\nint8 d\n");
+        "string<=8 label\nbool ok\nbyte b\nchar c\nint8 d\nfloat64[9] cov\n"
+        "string<=4[2] tags\n");
   CheckResult r = check_text(std::string(kHead) + "use ros2 sensor_msgs/msg/Scan;\n", "a.spec");
   ASSERT_TRUE(r.ok()) << errors(r);
   const ast::TypeDecl* scan = type(r, "Scan");
   ASSERT_TRUE(scan);
   EXPECT_EQ(scan->ros2, "sensor_msgs/msg/Scan");
   EXPECT_EQ(scan->msg_file, (dir_ / "sensor_msgs/msg/Scan.msg").string());
-  // Bounded sequences and strings are lists and strings; byte and char are uint8 (rosidl).
+  // Bounded sequences and strings keep their bound, fixed arrays their size; byte and char are
+  // uint8 (rosidl).
   EXPECT_EQ(scan->type.resolved->to_string(),
             "{header: {stamp: {sec: int32, nanosec: uint32}, frame_id: string}, "
-            "ranges: list<float32>, flags: list<uint16>, label: string, ok: bool, b: uint8, "
-            "c: uint8, d: int8}");
+            "ranges: list<float32>, flags: list<uint16, 4>, label: string<8>, ok: bool, "
+            "b: uint8, c: uint8, d: int8, cov: float[9], tags: string<4>[2]}");
   // What it uses is declared too, from arbc's built-in definitions (no file on the path).
   ASSERT_TRUE(type(r, "Header"));
   EXPECT_EQ(type(r, "Header")->ros2, "std_msgs/msg/Header");
@@ -114,7 +116,7 @@ TEST_F(Ros2UsesTest, AUsedMessageNamedLikeASpecTypeIsADuplicate) {
 
 TEST_F(Ros2UsesTest, WhatCannotBeDeclaredIsAnErrorAtTheUse) {
   write("bad_msgs/msg/Broken", "float64 x\nint32\n");
-  write("bad_msgs/msg/Fixed", "float64[9] covariance\n");
+  write("bad_msgs/msg/Fixed", "float64[4097] covariance\n");
   write("bad_msgs/msg/Outer", "Fixed inner\nint32 n\n");
   struct Case {
     const char* use;
@@ -143,6 +145,37 @@ TEST_F(Ros2UsesTest, WhatCannotBeDeclaredIsAnErrorAtTheUse) {
   ASSERT_EQ(r.diagnostics[0].notes.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].notes[0].loc.file.str(), (dir_ / "bad_msgs/msg/Broken.msg").string());
   EXPECT_EQ(r.diagnostics[0].notes[0].loc.line, 2);
+}
+
+// A message's constants are the spec's `Type.NAME`, of the type's kind; one that is no value of
+// its declared type is an error at the `use`, with a note at its line.
+TEST_F(Ros2UsesTest, ConstantsAreReadAsTypeDotName) {
+  write("sensor_msgs/msg/Range",
+        "uint8 ULTRASOUND=0\nuint8 INFRARED=1\nfloat32 HALF=0.5\nstring FRAME=\"base\"\n"
+        "bool ON=true\nuint8 radiation_type\nfloat32 range\n");
+  std::string spec =
+      "app a;\nuse ros2 sensor_msgs/msg/Range;\nmodule S { out r: Range; }\n"
+      "module B { in r: Range; }\n"
+      "connect S.r -> B.r { accept r.radiation_type == Range.INFRARED and r.range > Range.HALF "
+      "and Range.FRAME == \"base\" and Range.ON; }\n";
+  CheckResult r = check_text(spec, "a.spec");
+  ASSERT_TRUE(r.ok()) << errors(r);
+  // Not a constant of the message: an unknown name, as any.
+  CheckResult miss = check_text(
+      "app a;\nuse ros2 sensor_msgs/msg/Range;\nmodule S { out r: Range; }\n"
+      "module B { in r: Range; }\nconnect S.r -> B.r { accept r.radiation_type == Range.SONAR; }\n",
+      "a.spec");
+  EXPECT_FALSE(miss.ok());
+  write("bad_msgs/msg/Consts", "uint8 BIG=300\nfloat32 TENTH=0.1\nint32 n\n");
+  CheckResult bad = check_text("app a;\nuse ros2 bad_msgs/msg/Consts;\n", "a.spec");
+  ASSERT_EQ(bad.diagnostics.size(), 2u) << errors(bad);
+  EXPECT_NE(bad.diagnostics[0].message.find("constant 'BIG'"), std::string::npos);
+  EXPECT_NE(bad.diagnostics[0].message.find("'300' is not a uint8 (0 to 255)"), std::string::npos)
+      << bad.diagnostics[0].message;
+  EXPECT_EQ(bad.diagnostics[0].loc.line, 2);
+  ASSERT_EQ(bad.diagnostics[0].notes.size(), 1u);
+  EXPECT_EQ(bad.diagnostics[0].notes[0].loc.line, 1);
+  EXPECT_NE(bad.diagnostics[1].message.find("'0.1' is not a float32 value"), std::string::npos);
 }
 
 }  // namespace

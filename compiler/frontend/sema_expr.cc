@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "compiler/frontend/builtin_aliases.h"
+#include "compiler/frontend/ros2_constants.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/type_rules.h"
 #include "core/join.h"
@@ -206,6 +207,16 @@ void note_length_function(Diagnostic& d, const Expr& e, const TypePtr& base) {
 // `base.field` of a record or a vec3.
 void Sema::check_field(Expr& e, Scope& scope) {
   Expr& base = *e.args[0];
+  // `Range.ULTRASOUND`: a constant of a message `use ros2` declared (ros2_constants.h), when
+  // `Range` names no value here.
+  if (base.kind == Expr::Kind::Name && !scope.find(base.text) && !consts_.count(base.text) &&
+      consts_.count(msg_constant_name(base.text, e.text))) {
+    e.kind = Expr::Kind::Name;
+    e.text = msg_constant_name(base.text, e.text);
+    e.args.clear();
+    check_name(e, scope);
+    return;
+  }
   check_expr(base, scope);
   if (!base.type) return;
   if (base.type->kind == Type::Kind::Vec3) {
@@ -310,7 +321,7 @@ void Sema::check_binary(Expr& e, Scope& scope) {
     e.type = kBool;
   } else if (op == "==" || op == "!=") {
     bool ok = (is_numeric(a.type) && is_numeric(b.type)) ||
-              (assignable(*a.type, *b.type) && assignable(*b.type, *a.type));
+              (assignable(*a.type, *b.type, false) && assignable(*b.type, *a.type, false));
     if (!ok) return mismatch();
     e.type = kBool;
   } else if (op == "<" || op == "<=" || op == ">" || op == ">=") {
@@ -374,7 +385,11 @@ void Sema::check_list(Expr& e, Scope& scope) {
         continue;
       }
       element = numeric_join(element, item->type);
-    } else if (!assignable(*item->type, *element)) {
+    } else if (assignable(*item->type, *element)) {
+      continue;
+    } else if (TypePtr joined = item_join(element, item->type)) {
+      element = joined;  // [{x: 0}, {x: 0.5}]: the items' records together
+    } else {
       error(item->loc,
             "list items must have one type: this is " + describe(item->type) +
                 ", earlier items are " + describe(element),

@@ -8,6 +8,7 @@
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/stray_field.h"
 #include "compiler/frontend/type_rules.h"
+#include "compiler/frontend/value_fit.h"
 #include "core/suggest.h"
 
 namespace arbc::frontend {
@@ -119,14 +120,16 @@ Diagnostic& Sema::value_type_error(const Expr& value, const TypePtr& want, std::
           message + "; field '" + field->field + "' (" + describe(field->want) + ") is missing",
           std::move(id));
     }
+    std::optional<std::string> size = size_miss(*field->value, field->want);
     Diagnostic& d =
         error(field->value->loc,
               message + "; field '" + field->field + "' is " + describe(field->value->type) +
-                  " where " + describe(field->want) + " is expected",
+                  " where " + describe(field->want) + " is expected" + (size ? ": " + *size : ""),
               std::move(id));
     narrowing_note(d, field->value->type, field->want);
     return d;
   }
+  if (std::optional<std::string> size = size_miss(value, want)) message += ": " + *size;
   Diagnostic& d = error(value.loc, std::move(message), std::move(id));
   narrowing_note(d, value.type, want);
   return d;

@@ -28,13 +28,15 @@ TypePtr Sema::resolve_type(TypeExpr& t) {
     case TypeExpr::Kind::Bool:
     case TypeExpr::Kind::Int:
     case TypeExpr::Kind::Float:
-    case TypeExpr::Kind::String:
     case TypeExpr::Kind::Vec3:
       t.resolved = scalar_type(t.kind);
       break;
+    case TypeExpr::Kind::String:
+      t.resolved = t.size > 0 ? Type::bounded_string(t.size) : scalar_type(t.kind);
+      break;
     case TypeExpr::Kind::List: {
       TypePtr element = resolve_type(*t.element);
-      if (element) t.resolved = Type::list(element);
+      if (element) t.resolved = Type::sized_list(element, t.size, t.fixed);
       break;
     }
     case TypeExpr::Kind::Record: {
@@ -97,8 +99,8 @@ TypePtr Sema::resolve_named_type(TypeExpr& t) {
     unknown(t.loc,
             "unknown type '" + t.name +
                 "': the types are bool, int, float, the sized numbers (int8 to int64, uint8 to "
-                "uint64, float32, float64, byte, char), string, vec3, list<T>, records and "
-                "declared type names",
+                "uint64, float32, float64, byte, char), string, string<N>, vec3, list<T>, "
+                "list<T, N>, T[N], records and declared type names",
             diag::UnknownType, t.name, names);
     return nullptr;
   }

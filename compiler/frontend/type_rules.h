@@ -13,8 +13,12 @@ namespace arbc::frontend {
 // expected one all holds (int8 into int32, uint16 into float32; any int into float64, except
 // uint64), element- and field-wise for lists and records. A constant may go into narrower types
 // (value_fit.h). An empty list literal (null element)
-// fits any list.
-bool assignable(const Type& from, const Type& to);
+// fits any list. With `sizes`, a bounded or fixed list or string also needs size_fits();
+// without, only the shapes are compared (what `==` between a float[9] and a list<float> needs).
+bool assignable(const Type& from, const Type& to, bool sizes = true);
+// Whether every length a `from` list or string can have is one `to` allows: anything into an
+// unbounded one, T[N] only from T[N], list<T, N> from a bounded or fixed one of at most N.
+bool size_fits(const Type& from, const Type& to);
 
 // The scalar types sema gives expressions, one object each for the files that check them.
 inline const TypePtr kBool = Type::scalar(Type::Kind::Bool);
@@ -25,6 +29,12 @@ inline const TypePtr kVec3 = Type::scalar(Type::Kind::Vec3);
 
 // The numeric type of combining a and b: int only if both are, uint64 if either is (core/type.h).
 inline TypePtr numeric_join(const TypePtr& a, const TypePtr& b) { return arithmetic_type(*a, *b); }
+
+// The element type of a list literal whose items have types a and b: numbers joined as
+// numeric_join joins them, at every depth of records and lists alike (`[{x: 0}, {x: nan}]` is
+// a list<{x: float}>, whichever comes first); null when their shapes differ, or a uint64 meets
+// another number inside one (a top-level uint64 item: sema_numbers.cc).
+TypePtr item_join(const TypePtr& a, const TypePtr& b);
 
 bool is_numeric(const TypePtr& t);
 bool is_kind(const TypePtr& t, Type::Kind kind);

@@ -50,6 +50,21 @@ std::optional<RangeMiss> number_miss(const Expr& value, const Type& want) {
   return std::nullopt;
 }
 
+// The length in bytes of a constant string (a literal, a named constant); nullopt for any other.
+std::optional<size_t> string_constant_size(const Expr& value) {
+  if (!is_kind(value.type, Type::Kind::String)) return std::nullopt;
+  std::string err;
+  std::optional<Value> s = literal_value(value, *value.type, &err);
+  if (!s || !s->is_string()) return std::nullopt;
+  return s->as_string().size();
+}
+
+// A literal of n elements (a list) or bytes (a string) where `want` is expected.
+bool literal_size_fits(size_t n, const Type& want) {
+  if (want.size == 0) return true;
+  return want.fixed ? n == static_cast<size_t>(want.size) : n <= static_cast<size_t>(want.size);
+}
+
 }  // namespace
 
 std::optional<Value> constant_number(const Expr& e) {
@@ -73,11 +88,36 @@ bool value_fits(const Expr& value, const TypePtr& want) {
     return true;
   }
   if (value.kind == Expr::Kind::List && want->kind == Type::Kind::List) {
+    if (!literal_size_fits(value.args.size(), *want)) return false;
     for (const ast::ExprPtr& item : value.args)
       if (!value_fits(*item, want->element)) return false;
     return true;
   }
+  if (want->kind == Type::Kind::String && want->size > 0)
+    if (std::optional<size_t> n = string_constant_size(value)) return literal_size_fits(*n, *want);
   return assignable(*value.type, *want);
+}
+
+std::optional<std::string> size_miss(const Expr& value, const TypePtr& want) {
+  if (!value.type || !want ||
+      !(is_kind(want, Type::Kind::List) || is_kind(want, Type::Kind::String)))
+    return std::nullopt;
+  if (want->size == 0 || value.type->kind != want->kind) return std::nullopt;
+  size_t n = 0;
+  if (value.kind == Expr::Kind::List) {
+    n = value.args.size();
+  } else if (std::optional<size_t> bytes = string_constant_size(value)) {
+    n = *bytes;
+  } else {
+    if (size_fits(*value.type, *want)) return std::nullopt;
+    return "a " + type_name(value.type) + " may not fit in " + type_name(want) +
+           (want->fixed ? ", which has exactly " : ", which holds at most ") +
+           std::to_string(want->size) + (want->kind == Type::Kind::String ? " bytes" : " elements");
+  }
+  if (literal_size_fits(n, *want)) return std::nullopt;
+  std::string unit = want->kind == Type::Kind::String ? " bytes" : " elements";
+  return "this has " + std::to_string(n) + unit + "; " + type_name(want) +
+         (want->fixed ? " has exactly " : " holds at most ") + std::to_string(want->size) + unit;
 }
 
 std::optional<RangeMiss> range_miss(const Expr& value, const TypePtr& want) {

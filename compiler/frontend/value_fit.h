@@ -28,6 +28,12 @@ struct RangeMiss {
 // value of the sized number type it goes into; nullopt when there is none.
 std::optional<RangeMiss> range_miss(const ast::Expr& value, const TypePtr& want);
 
+// Why `value` (a list or string) may not have a length `want` allows: a literal's count against
+// a fixed or bounded type ("this has 3 elements; float[9] has exactly 9 elements"), or a bounded
+// or fixed type whose lengths `want` does not all allow. nullopt when it fits, or is no list or
+// string. A hint for check_value_fits's message, whose check is value_fits.
+std::optional<std::string> size_miss(const ast::Expr& value, const TypePtr& want);
+
 // The constant value of a number expression, when it is one.
 std::optional<Value> constant_number(const ast::Expr& e);
 

@@ -89,6 +89,9 @@ golden list_bound_index.json repo 0 --format json tests/verify/list_bound_index.
 golden list_bound_index.sarif repo 0 --format sarif tests/verify/list_bound_index.spec
 golden list_bound_raised.txt repo 1 --list-bound 6 tests/verify/list_bound_index.spec
 golden list_bound_many_scans.txt repo 0 tests/verify/list_bound_many_scans.spec
+# A fixed list (T[N]) is encoded whole: refuted by a 6-element message past the bound of 4,
+# with no list-bound assumption, and the counterexample replays.
+golden list_fixed.txt repo 1 tests/verify/list_fixed.spec
 # Properties over time whose free-model counterexample the runtime does not show (issue 38
 # item 7, found by tests/drt): decided among the runs a replay makes, never an internal error.
 golden temporal_set_for.txt repo 0 tests/verify/temporal_set_for.spec

@@ -23,6 +23,10 @@ local function arbc_read_contents(b, t)
     if x == nil or y == nil or z == nil then return nil end
     return { x = x, y = y, z = z }
   elseif t.kind == "list" then
+    -- T[N] has exactly N elements, list<T, N> at most N: what the proof assumed.
+    if t.size ~= nil and (b:size() > t.size or (t.fixed and b:size() ~= t.size)) then
+      return nil
+    end
     local out = {}
     for i = 0, b:size() - 1 do
       local x = arbc_read_item(b:get(i), t.element)
@@ -95,7 +99,7 @@ arbc_read_item = function(v, t)
     return x ~= 0
   end
   if t.kind == "string" then
-    if v:isString() then return v:asString() end
+    if v:isString() and (t.size == nil or #v:asString() <= t.size) then return v:asString() end
     return nil
   end
   if v:isList() then return arbc_read_contents(v:asList(), t) end
