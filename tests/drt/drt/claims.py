@@ -129,7 +129,8 @@ def exclusive_by_data(run, pairs, port, needs_of):
             if a in conns and b in conns:
                 v = run.message(msg)
                 out.append(Breach("exclusive-data", f"{port}: '{a}' and '{b}' exclusive by data",
-                                  f"both accepted message {msg[1]} of {msg[0]}: {v!r}", needs_of(v)))
+                                  f"both accepted message {msg[1]} of {msg[0]}: {v!r}",
+                                  needs_of(v, run.message_type(msg))))
     return out
 
 
@@ -170,7 +171,8 @@ def data_assert(run, model, port, rule, pred, what, needs_of, consts):
             ok = False
         if not ok:
             out.append(Breach("assert-data", what, f"'{rule}' delivered {d['value']!r} at {d['t']} s "
-                              f"(message {run.message(d['msg'])!r})", needs_of(run.message(d["msg"]))))
+                              f"(message {run.message(d['msg'])!r})",
+                              needs_of(run.message(d["msg"]), run.message_type(d["msg"]))))
     return out, unjudged
 
 
@@ -224,8 +226,8 @@ def resource(run, model, res, pairs, needs_of, consts):
                 why = resource_pair_breach(run, da, db, how)
                 if why:
                     out.append(Breach("resource", f"resource {res['name']}: '{a}' and '{b}' ({how})",
-                                      why, needs_of(run.message(da["msg"])) or
-                                      needs_of(run.message(db["msg"]))))
+                                      why, needs_of(run.message(da["msg"]), run.message_type(da["msg"]))
+                                      or needs_of(run.message(db["msg"]), run.message_type(db["msg"]))))
                     break
             else:
                 continue

@@ -110,7 +110,7 @@ def script_lua(rng, msg_type, events):
         cond = rng.choice(["msg > 2", "msg <= 0.5", "msg ~= msg", "true"])
     elif msg_type == BOOL:
         cond = rng.choice(["msg", "not msg"])
-    elif msg_type == STRING:
+    elif msg_type[0] == "string":
         cond = rng.choice(['#msg > 0', 'msg == "take"'])
     lines = ["-- A hand-written monitor of the differential test (tests/drt).",
              "PortMonitor.accept = function(msg)"]

@@ -2,9 +2,15 @@
 operator and builtin, literals at the edges (0, -0.0, 2^63 - 1, 1e308, empty and non-ASCII
 strings), lists, records and lambdas of min_by / max_by; sized numbers (docs/language.md,
 "Sized numbers") read where an int or a float is wanted (they promote), put only where they fit
-(a narrower type, a constant in range), and uint64 in + - * and comparisons with its partners."""
+(a narrower type, a constant in range), and uint64 in + - * and comparisons with its partners.
+Lists and strings with sizes (docs/language.md, "Lists and strings with sizes"): literals of
+exactly N items for a T[N], at most N for a list<T, N>, string constants of at most N bytes for
+a string<N>; a T[N] indexed at its last element, one past it and past --list-bound's 4."""
+import copy
+
 from .spec import (BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, Expr, lit, name, fits,
-                   is_sized, is_numeric, int_like, assignable, literal_type)
+                   is_sized, is_numeric, int_like, assignable, literal_type, size_of, is_fixed)
+from .values import literal
 
 INT_LITS = ["0", "1", "2", "3", "5", "7", "10", "100", "9223372036854775807", "4611686018427387904"]
 FLOAT_LITS = ["0.0", "0.5", "0.1", "0.3333333333333333", "1.5", "2.0", "1e308", "1e-300", "3.75",
@@ -71,6 +77,8 @@ class ExprGen:
             return lit(FLOAT, self.rng.choice(pool))
         if ty == STRING:
             return lit(STRING, self.rng.choice(STRING_LITS))
+        if ty[0] == "string":
+            return self.bounded_string(size_of(ty))
         if ty == VEC3:
             return Expr("call", VEC3, [self.leaf(FLOAT, env, True) for _ in range(3)], "vec3")
         if is_sized(ty):
@@ -82,8 +90,28 @@ class ExprGen:
                 n = self.rng.choice(names)
                 return name(env.get(n, self.consts.get(n)), n)
             return list_lit([exact(self.leaf(ty[1], env, True), ty[1])
-                             for _ in range(self.rng.randint(1, 2))])
+                             for _ in range(self.list_count(ty, 2))], size_of(ty))
         return None
+
+    def bounded_string(self, n):
+        """A constant a string<n> takes: a literal or a named constant of at most n bytes, or
+        one of exactly n bytes (ASCII, or two-byte characters)."""
+        consts = [k for k, b in getattr(self.consts, "string_bytes", {}).items() if b <= n]
+        if consts and self.chance(0.2):
+            return name(STRING, self.rng.choice(consts))
+        pool = [t for t in STRING_LITS if string_bytes(t) <= n]
+        pool += ['"' + "z" * n + '"', '"' + "é" * (n // 2) + "a" * (n % 2) + '"']
+        return lit(STRING, self.rng.choice(pool))
+
+    def list_count(self, ty, most):
+        """How many items a list literal of type `ty` has: N of a T[N], 1 to N of a list<T, N>
+        (N itself often), 1 to `most` of a list<T>."""
+        n = size_of(ty)
+        if is_fixed(ty):
+            return n
+        if n:
+            return self.rng.choice([n, self.rng.randint(1, n)])
+        return self.rng.randint(1, most)
 
     def sized_const(self, ty):
         """A constant the sized type holds: its edges, 0, -1, and a random one in its range."""
@@ -109,7 +137,7 @@ class ExprGen:
                   lambda: Expr("bin", BOOL, [g(BOOL, env, d, pure), g(BOOL, env, d, pure)],
                                self.rng.choice(["and", "or"])),
                   lambda: self.compare(env, d, pure), lambda: self.compare(env, d, pure),
-                  lambda: self.equality(env, d, pure)]
+                  lambda: self.equality(env, d, pure), lambda: self.list_equality(env)]
         elif ty == INT:
             m += [lambda: self.int_arith(env, d, pure),
                   lambda: Expr("neg", INT, [g(INT, env, d, pure)]),
@@ -144,8 +172,7 @@ class ExprGen:
         elif ty[0] == "record":
             m += [lambda: record_lit(ty, [exact(g(t, env, d, pure), t) for _, t in ty[1]])]
         elif ty[0] == "list":
-            m += [lambda: list_lit([exact(g(ty[1], env, d, pure), ty[1])
-                                    for _ in range(self.rng.randint(1, 3))])]
+            m += [lambda: self.list_of(ty, env, d, pure)]
         if ty == BOOL and "sized" not in self.avoid:
             m += [lambda: self.u64_compare(env, d, pure)]
         return m
@@ -269,19 +296,48 @@ class ExprGen:
         a, b = self.gen(ty, env, d, pure), self.gen(ty, env, d, pure)
         # Two records or lists compare only when each type takes the other's values: a literal
         # `{ f: 1 }` is a record of an int, not of the port's int8.
+        # Sizes do not matter to `==` (a float[3] compares with a list<float>).
         if not (is_numeric(a.ty) and is_numeric(b.ty)) and \
-                not (assignable(a.ty, b.ty) and assignable(b.ty, a.ty)):
+                not (assignable(a.ty, b.ty, False) and assignable(b.ty, a.ty, False)):
             b = a
         return Expr("bin", BOOL, [a, b], self.rng.choice(["==", "!="]))
 
     def length(self, env, d):
-        lists = [n for n, t in env.items() if t[0] == "list" or (t == STRING and "string-len" not in self.avoid)]
+        lists = self.lists_in(env) + [name(t, n) for n, t in env.items()
+                                      if t[0] == "string" and "string-len" not in self.avoid]
         if not lists:
             return None if "string-len" in self.avoid else Expr("call", INT, [self.gen(STRING, env, d)], "len")
         if self.chance(0.2) and "string-len" not in self.avoid:
             return Expr("call", INT, [self.gen(STRING, env, d)], "len")
-        n = self.rng.choice(lists)
-        return Expr("call", INT, [name(env[n], n)], "len")
+        return Expr("call", INT, [self.rng.choice(lists)], "len")
+
+    def lists_in(self, env, kind="list"):
+        """The lists (strings) in scope: names, and fields of records in scope (`m.cov` of a
+        float[3])."""
+        out = [name(t, n) for n, t in env.items() if t[0] == kind]
+        return out + [Expr("field", ft, [name(t, n)], f) for n, t in env.items() if t[0] == "record"
+                      for f, ft in t[1] if ft[0] == kind]
+
+    def size_pair(self, env):
+        """Two accepts over one list or string with a size that its size keeps apart or lets
+        overlap: its length against N, N - 1, N + 1, 0, 4 and 5 (`len(m.s) > 7` of a
+        string<8>), or an element of a T[N] of numbers at its end, one past it or at 5 against a
+        constant; None if none is in scope."""
+        opts = [x for x in self.lists_in(env) + self.lists_in(env, "string") if size_of(x.ty)]
+        if not opts:
+            return None
+        x = self.rng.choice(opts)
+        n = size_of(x.ty)
+        ops = ["<", "<=", ">", ">=", "==", "!="]
+
+        def one():
+            if is_fixed(x.ty) and is_numeric(x.ty[1]) and self.chance(0.4):
+                at = Expr("index", x.ty[1], [copy.deepcopy(x), lit(INT, str(self.rng.choice([n - 1, n, 5])))])
+                return Expr("bin", BOOL, [at, lit(INT, self.rng.choice(["0", "1"]))], self.rng.choice(ops))
+            k = self.rng.choice([0, n - 1, n, n, n + 1, 4, 5])
+            return Expr("bin", BOOL, [Expr("call", INT, [copy.deepcopy(x)], "len"), lit(INT, str(k))],
+                        self.rng.choice(ops))
+        return one(), one()
 
     def field_of(self, ty, env, d, want=None):
         """`r.f` of a record in scope whose field f may stand for ty (`want`: which types)."""
@@ -294,25 +350,66 @@ class ExprGen:
 
     def index_of(self, ty, env, d, want=None):
         want = want or (lambda t: fits(t, ty))
-        opts = [n for n, t in env.items() if t[0] == "list" and want(t[1])]
+        opts = [x for x in self.lists_in(env) if want(x.ty[1])]
         if not opts:
             return None
-        n = self.rng.choice(opts)
-        i = self.gen(INT, env, d) if self.chance(0.3) else lit(INT, self.rng.choice(["0", "1", "4", "5"]))
-        return Expr("index", env[n][1], [name(env[n], n), i])
+        xs = self.rng.choice(opts)
+        return Expr("index", xs.ty[1], [xs, self.index(xs, env, d)])
+
+    def index(self, xs, env, d):
+        """An index into `xs`: computed or constant; of a T[N] also its last (constant, or
+        `len(xs) - 1`), N (one past it) and 4 and 5 (past --list-bound's 4)."""
+        n = size_of(xs.ty) if is_fixed(xs.ty) else 0
+        roll = self.rng.random()
+        if n and roll < 0.3:
+            return lit(INT, str(self.rng.choice([0, n - 1, n - 1, n, 4, 5, n // 2])))
+        if n and roll < 0.45:
+            length = Expr("call", INT, [copy.deepcopy(xs)], "len")
+            if self.chance(0.5) or "int-mod" in self.avoid:
+                return Expr("bin", INT, [length, lit(INT, "1")], "-")
+            return Expr("bin", INT, [self.gen(INT, env, min(d, 1)), length], "%")
+        if self.chance(0.3):
+            return self.gen(INT, env, d)
+        return lit(INT, self.rng.choice(["0", "1", "4", "5"]))
 
     def best_of(self, ty, env, d):
         """min_by / max_by(list, x => key) of a list in scope whose elements may stand for ty."""
-        opts = [n for n, t in env.items() if t[0] == "list" and fits(t[1], ty)]
+        opts = [x for x in self.lists_in(env) if fits(x.ty[1], ty)]
         if not opts:
             return None
-        n = self.rng.choice(opts)
-        element = env[n][1]
+        xs = self.rng.choice(opts)
+        element = xs.ty[1]
         self.lambda_count += 1
         var = f"o{self.lambda_count}"
         key = self.gen(self.num(), {**env, var: element}, min(d, 2), pure=True)
-        return Expr("call", element, [name(env[n], n), Expr("lambda", key.ty, [key], var)],
+        return Expr("call", element, [xs, Expr("lambda", key.ty, [key], var)],
                     self.rng.choice(["min_by", "max_by"]))
+
+    def list_of(self, ty, env, d, pure):
+        """A list literal of type `ty` (its count as list_count says; items past the third are
+        leaves, so that a float[8] stays short)."""
+        items = [self.gen(ty[1], env, d, pure) if i < 3 else self.leaf(ty[1], env, True)
+                 for i in range(self.list_count(ty, 3))]
+        return list_lit([exact(e, ty[1]) for e in items], size_of(ty))
+
+    def list_equality(self, env):
+        """A list in scope `==` or `!=` a literal of its size, or one more or fewer (sizes are not
+        part of `==`); items the list's elements do not compare with (a literal `1` for an int8)
+        are its own elements read back (`m.a == [m.a[1], m.a[0]]`)."""
+        opts = self.lists_in(env)
+        if not opts:
+            return None
+        xs = self.rng.choice(opts)
+        n = size_of(xs.ty) or self.rng.randint(1, 3)
+        count = max(1, self.rng.choice([n, n, n - 1, n + 1]))
+        other = list_lit([exact(self.leaf(xs.ty[1], env, True), xs.ty[1]) for _ in range(count)], count)
+        if not (assignable(other.ty, xs.ty, False) and assignable(xs.ty, other.ty, False)):
+            other = list_lit([Expr("index", xs.ty[1], [copy.deepcopy(xs), lit(INT, str(self.rng.randrange(n)))])
+                              for _ in range(count)], count)
+            if not (assignable(other.ty, xs.ty, False) and assignable(xs.ty, other.ty, False)):
+                return None  # [m.a[0], m.a[1]] of an int8 list is a list<int>: sized items join
+        pair = [xs, other] if self.chance(0.7) else [other, xs]
+        return Expr("bin", BOOL, pair, self.rng.choice(["==", "==", "!="]))
 
 
 def retype(e):
@@ -351,10 +448,20 @@ def record_lit(ty, args):
     return Expr("record", literal_type("record", [(f, a.ty) for f, a in zip(names, args)]), args, names)
 
 
-def list_lit(items):
+def list_lit(items, count=0):
     """A list literal, typed as arbc types it. Items of a record or list type must each fit the
-    first's type; when a sized field makes them differ ({ f: 1 } and { f: m.a }), one is kept."""
+    first's type; when a sized field makes them differ ({ f: 1 } and { f: m.a }), one is kept,
+    or with `count` (a literal for a T[N] or a list<T, N>) the first one that many times."""
     first = items[0].ty
     if not is_numeric(first) and not all(assignable(i.ty, first) for i in items[1:]):
-        items = items[:1]
+        items = [items[0]] * len(items) if count else items[:1]
+    u64 = [i for i in items if i.ty == U64]
+    if u64 and any(not i.ty[0].startswith("u") for i in items):
+        # A uint64 shares a list only with unsigned items (an int constant 7 is no uint64).
+        items = [i if i.ty[0].startswith("u") else u64[0] for i in items]
     return Expr("list", literal_type("list", [i.ty for i in items]), items)
+
+
+def string_bytes(text):
+    """The bytes of a string literal's value (`"é"` is 2)."""
+    return len(literal(lit(STRING, text)).encode())

@@ -4,9 +4,12 @@ delivery events over an arbitrated port (read by its own rules or another port's
 arbitrated ports with and without `by priority`, `otherwise`, bodies (gen_body.py), `connect`,
 `exclusive` / `invariant`, and the claims the proof makes (gen_claims.py). Sized numbers
 (docs/language.md, "Sized numbers"; `--avoid sized` leaves them out) as ports, record fields and
-list elements, each spelled as the spec chooses (`byte`, `int64`)."""
+list elements, each spelled as the spec chooses (`byte`, `int64`). Lists and strings with
+sizes (docs/language.md, "Lists and strings with sizes"; `--avoid sized-lists` leaves them out):
+`T[N]`, `list<T, N>` and `string<N>` as ports, record fields and list elements."""
 from .spec import (BOOL, INT, FLOAT, STRING, VEC3, U64, F32, SIZED, SPELLINGS, list_of, Spec,
-                   Module, Decl, Arbitrate, Rule, Connect, Stmt, Expr, lit, name, fits, has_sized)
+                   Module, Decl, Arbitrate, Rule, Connect, Stmt, Expr, lit, name, fits, has_sized,
+                   fixed_of, bounded_of, string_of, Consts, has_size)
 from .gen_body import BodyGen, DURATIONS, script_lua, guarded_emit
 from .gen_claims import add_claims
 
@@ -20,7 +23,7 @@ class SpecGen:
         self.index = index
         self.counter = {}
         self.spec = Spec(app=f"drt{index}")
-        self.consts = {}      # name -> type
+        self.consts = Consts()  # name -> type (and the bytes of the string ones)
         self.sources = []     # out ports rules read: "M.p"
         self.dests = []       # in ports: "M.p"
         self.statuses = {}    # status port -> {event: flag}
@@ -53,18 +56,43 @@ class SpecGen:
     def make_types(self):
         r = self.rng
         sized = self.sized_types()
+        with_sizes = "sized-lists" not in self.avoid and self.chance(0.35)
         self.types = list(SIMPLE) + sized
+        pool = SIMPLE + [list_of(FLOAT)] + sized * 2
+        if with_sizes:
+            pool += [fixed_of(FLOAT, 3), fixed_of(INT, 6), bounded_of(INT, 2),
+                     string_of(r.choice([1, 4, 8]))]
+        records = []
         for i in range(r.randint(0, 2)):
-            fields = [(f"f{j}", r.choice(SIMPLE + [list_of(FLOAT)] + sized * 2))
-                      for j in range(r.randint(1, 3))]
+            fields = [(f"f{j}", r.choice(pool)) for j in range(r.randint(1, 3))]
             rec = ("record", tuple(fields))
             if self.chance(0.6):
                 self.spec.aliases[f"R{i + 1}"] = rec
             self.types.append(rec)
+            records.append(rec)
             if self.chance(0.5):
                 self.types.append(list_of(rec))
         if self.chance(0.5):
             self.types.append(list_of(self.rng.choice([INT, FLOAT, STRING, VEC3] + sized)))
+        if with_sizes:
+            self.types += self.sized_lists(sized, records)
+
+    def sized_lists(self, sized, records):
+        """One to three types with sizes: T[N] (N often past --list-bound's 4, which does not
+        apply to it), list<T, N> (N below and above it) and string<N>, of numbers, strings,
+        vec3s and the spec's records (`{ d: float }[6]`)."""
+        r = self.rng
+        elements = [FLOAT, INT, STRING, VEC3, string_of(4)] + sized + records * 2
+        out = []
+        for _ in range(r.randint(1, 3)):
+            kind = r.choice(["fixed", "fixed", "bounded", "string"])
+            if kind == "fixed":
+                out.append(fixed_of(r.choice(elements), r.choice([1, 2, 3, 5, 6, 6, 8])))
+            elif kind == "bounded":
+                out.append(bounded_of(r.choice(elements), r.choice([1, 2, 4, 6])))
+            else:
+                out.append(string_of(r.choice([1, 2, 4, 8, 16])))
+        return out
 
     def sized_types(self):
         """The sized number types of this spec (uint64 and float32, the ones with their own
@@ -94,6 +122,7 @@ class SpecGen:
                                                                 ["1e308", "0.3333333333333333"])))
             else:
                 e = lit(STRING, self.rng.choice(['"take"', '""', '"é"']))
+                self.consts.string_bytes[n] = len(e.val[1:-1].encode())
             self.spec.consts.append((n, e))
             self.consts[n] = kind
 
@@ -174,6 +203,8 @@ class SpecGen:
         r = self.rng
         dst = self.spec.port_type(port)
         pair = self.data_pair(port) if "sized" not in self.avoid and self.chance(0.15) else None
+        if pair is None and "sized-lists" not in self.avoid and self.chance(0.2):
+            pair = self.data_pair(port, sizes=True)
         if pair:
             return pair
         by_priority = self.chance(0.4)
@@ -206,20 +237,22 @@ class SpecGen:
         self.guards(a, sorted(owned))
         return a
 
-    def data_pair(self, port):
+    def data_pair(self, port, sizes=False):
         """A port of two rules of one source that only their data can keep apart: no `when`,
         and accepts comparing one sized number of the message with an edge of its type, the
         second rule the opposite or an overlapping comparison (`m.level > 126` and
         `m.level < 127` of an int8; a uint64 compared unsigned): the proof's exclusive_by_data
-        pairs, which a message both rules accept breaks."""
-        srcs = [s for s in self.sources if has_sized(self.spec.port_type(s))]
+        pairs, which a message both rules accept breaks. With `sizes`, comparing the length of
+        a list or string with a size, or an element at the end of a T[N] (ExprGen.size_pair)."""
+        has = has_size if sizes else has_sized
+        srcs = [s for s in self.sources if has(self.spec.port_type(s))]
         if not srcs:
             return None
         src = self.rng.choice(srcs)
         src_type, dst = self.spec.port_type(src), self.spec.port_type(port)
         msg = src.split(".")[1]
         bodies = BodyGen(self.rng, self.consts, self.counter, self.avoid)
-        accepts = bodies.exprs.edge_pair({msg: src_type})
+        accepts = (bodies.exprs.size_pair if sizes else bodies.exprs.edge_pair)({msg: src_type})
         if accepts is None:
             return None
         a = Arbitrate(port)

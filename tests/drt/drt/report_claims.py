@@ -5,6 +5,7 @@ properties over time that are proved or hold up to the bound."""
 import re
 
 from . import claims as C
+from .spec import is_fixed
 
 PAIR = re.compile(r"^'([^']+)' (?:\(into [^)]*\) )?and '([^']+)'(?: \(into [^)]*\))?"
                   r"(?: \((one message|two messages)\))?")
@@ -74,17 +75,22 @@ class Claims:
             pairs = [pair(s)[:2] + ("events",) for s in r.get("exclusive_by_events", []) if pair(s)]
             pairs += [pair(s) for s in r.get("exclusive_by_data", []) if pair(s)]
             self.resources.append((specs[r["name"]], pairs, bool(r.get("list_bound"))))
+        # A bounded verdict whose runs are all too short for its window to close at the rates
+        # given (window_bound above bound: verify's temporal-bound warning, "the search shows
+        # nothing about it") claims nothing.
         self.temporal = [t for t in inp.get("temporal", [])
-                         if t["outcome"] in ("proved", "holds-up-to-bound")]
+                         if t["outcome"] == "proved" or t["outcome"] == "holds-up-to-bound" and
+                         not (t.get("window_bound") or 0) > t["bound"]]
         for t in self.temporal:
             t["_rules"] = model.ports.get(t["port"], {}).get("rules", [])
         self.triggered = {c.destination for c in model.connections.values()
                           if model.json["connections"] and trig(model, c.name)}
 
-    def needs(self, value):
-        """The data assumption of the report a message breaks, if any (a label, not a filter)."""
+    def needs(self, value, ty=None):
+        """The data assumption of the report a message (of type `ty`, when known) breaks, if any
+        (a label, not a filter)."""
         out = []
-        walk(value, self.list_bound, out)
+        walk(value, ty, self.list_bound, out)
         return "; ".join(sorted(set(out)))
 
     def beyond_bound(self, found, bounded, res):
@@ -205,15 +211,18 @@ def trig(model, name):
     return False
 
 
-def walk(v, bound, out):
+def walk(v, ty, bound, out):
+    """The data assumptions value `v` of type `ty` (None: unknown) breaks. No list bound applies
+    to a fixed list (T[N]): the proof encodes all N elements."""
     if isinstance(v, list):
-        if len(v) > bound:
+        if len(v) > bound and not (ty and is_fixed(ty)):
             out.append(f"a list of {len(v)} elements (--list-bound {bound})")
         for x in v:
-            walk(x, bound, out)
+            walk(x, ty[1] if ty and ty[0] == "list" else None, bound, out)
     elif isinstance(v, dict):
-        for x in v.values():
-            walk(x, bound, out)
+        fields = dict(ty[1]) if ty and ty[0] == "record" else {}
+        for k, x in v.items():
+            walk(x, fields.get(k), bound, out)
     elif isinstance(v, bool):
         return
     elif isinstance(v, int) and abs(v) >= INT_EDGE:

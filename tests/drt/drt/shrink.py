@@ -8,7 +8,7 @@ import os
 import random
 import time
 
-from .spec import Expr, Arbitrate, Connect, Decl, lit, BOOL, INT, FLOAT, STRING, SIZED, F32
+from .spec import Expr, Arbitrate, Connect, Decl, lit, BOOL, INT, FLOAT, STRING, SIZED, F32, is_fixed
 
 LEAVES = {BOOL: ["true", "false"], INT: ["0", "1"], FLOAT: ["0.0", "1.0"], STRING: ['""'],
           **{t: (["0.0", "1.0"] if t == F32 else ["0", "1"]) for t in SIZED}}
@@ -219,8 +219,8 @@ def value_steps(spec, inputs):
     for i, m in enumerate(msgs):
         v = m["value"]
         simpler = []
-        if isinstance(v, list) and v:
-            simpler = [v[:len(v) // 2], v[1:]]
+        if isinstance(v, list) and v and not is_fixed(spec.port_type(m["port"]) or ("",)):
+            simpler = [v[:len(v) // 2], v[1:]]  # a T[N]'s value keeps its N elements
         elif isinstance(v, (int, float)) and not isinstance(v, bool) and v not in (0, 1):
             simpler = [type(v)(0), type(v)(1)]
         elif isinstance(v, str) and v:

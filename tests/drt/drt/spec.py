@@ -4,6 +4,10 @@ make one and the shrinker can take it apart.
 Types are tuples: ("bool",), ("int",), ("float",), ("string",), ("vec3",), ("list", T),
 ("record", ((field, T), ...)), and the sized numbers by their canonical names (docs/language.md,
 "Sized numbers"): ("int8",) ... ("uint64",), ("float32",); `int` is int64 and `float` float64.
+Lists and strings with sizes (docs/language.md, "Lists and strings with sizes") carry them:
+("list", T, N, True) is `T[N]` (exactly N), ("list", T, N, False) `list<T, N>` (at most N),
+("string", N) `string<N>` (at most N bytes); whatever reads a list (`t[0] == "list"`, `t[1]`)
+reads them alike.
 Expressions are `Expr` trees; every compound expression prints in parentheses, so the printer
 never depends on operator precedence.
 """
@@ -24,6 +28,71 @@ SPELLINGS = {"int": ["int", "int64"], "float": ["float", "float64"], "uint8": ["
 
 def list_of(t):
     return ("list", t)
+
+
+def fixed_of(t, n):
+    return ("list", t, n, True)
+
+
+def bounded_of(t, n):
+    return ("list", t, n, False)
+
+
+def string_of(n):
+    return ("string", n)
+
+
+def is_string(t):
+    return t[0] == "string"
+
+
+def size_of(t):
+    """N of T[N], list<T, N> and string<N>; 0 for an unbounded list or string (or any other)."""
+    if t[0] == "list":
+        return t[2] if len(t) > 2 else 0
+    if t[0] == "string":
+        return t[1] if len(t) > 1 else 0
+    return 0
+
+
+def is_fixed(t):
+    return t[0] == "list" and len(t) > 3 and t[3]
+
+
+def size_fits(frm, to):
+    """arbc's size_fits(): every length a `frm` list or string can have is one `to` allows."""
+    n = size_of(to)
+    if n == 0:
+        return True
+    if is_fixed(to):
+        return is_fixed(frm) and size_of(frm) == n
+    return 0 < size_of(frm) <= n
+
+
+def count_fits(count, to):
+    """Whether a literal of `count` items (a list) or bytes (a string constant) goes into `to`."""
+    n = size_of(to)
+    return n == 0 or (count == n if is_fixed(to) else count <= n)
+
+
+def unsized(t):
+    """The type with every size dropped: its shape."""
+    if t[0] == "list":
+        return ("list", unsized(t[1]))
+    if t[0] == "string":
+        return STRING
+    if t[0] == "record":
+        return ("record", tuple((f, unsized(ft)) for f, ft in t[1]))
+    return t
+
+
+class Consts(dict):
+    """A spec's constants, name -> type, and the bytes of each string constant's value: a
+    string<N> takes a named constant of at most N bytes (docs/language.md)."""
+
+    def __init__(self):
+        super().__init__()
+        self.string_bytes = {}
 
 
 def is_number(t):
@@ -69,17 +138,20 @@ def number_assignable(frm, to):
     return INT_RANGES[to[0]][0] <= lo and hi <= INT_RANGES[to[0]][1]
 
 
-def assignable(frm, to):
-    """arbc's assignable(): what may be stored or delivered where `to` is expected."""
+def assignable(frm, to, sizes=True):
+    """arbc's assignable(): what may be stored or delivered where `to` is expected; without
+    `sizes` only the shapes (what `==` of a float[9] and a list<float> asks)."""
     if is_numeric(frm) and is_numeric(to):
         return number_assignable(frm, to)
     if frm[0] != to[0]:
         return False
+    if sizes and not size_fits(frm, to):
+        return False
     if frm[0] == "list":
-        return assignable(frm[1], to[1])
+        return assignable(frm[1], to[1], sizes)
     if frm[0] == "record":
         fields = dict(to[1])
-        return len(frm[1]) == len(fields) and all(f in fields and assignable(t, fields[f])
+        return len(frm[1]) == len(fields) and all(f in fields and assignable(t, fields[f], sizes)
                                                    for f, t in frm[1])
     return True
 
@@ -90,6 +162,11 @@ def has_sized(t):
     if t[0] == "record":
         return any(has_sized(ft) for _, ft in t[1])
     return is_sized(t)
+
+
+def has_size(t):
+    """Whether a list or string with a size is the type or one of its record's fields."""
+    return bool(size_of(t)) or t[0] == "record" and any(size_of(ft) for _, ft in t[1])
 
 
 def arithmetic_type(a, b):
@@ -120,7 +197,12 @@ def type_text(t, aliases=None, spellings=None):
             if aliased == t:
                 return name
     if t[0] == "list":
-        return f"list<{type_text(t[1], aliases, spellings)}>"
+        element = type_text(t[1], aliases, spellings)
+        if is_fixed(t):
+            return f"{element}[{t[2]}]"
+        return f"list<{element}, {t[2]}>" if size_of(t) else f"list<{element}>"
+    if t[0] == "string" and size_of(t):
+        return f"string<{t[1]}>"
     if t[0] == "record":
         return "{ " + ", ".join(f"{f}: {type_text(ft, aliases, spellings)}" for f, ft in t[1]) + " }"
     return (spellings or {}).get(t[0], t[0])
@@ -129,7 +211,8 @@ def type_text(t, aliases=None, spellings=None):
 def fits(value_type, expected):
     """Whether an expression of `value_type` may stand where the generator wants `expected`: the
     same type; for an int any integer that promotes to one; for a float also any float; for a
-    sized number a type whose every value it holds (a uint64 stands only for itself)."""
+    sized number a type whose every value it holds (a uint64 stands only for itself); for a
+    list, string or record one of its shape whose sizes fit (a string<4> for a string<8>)."""
     if value_type == expected:
         return True
     if expected == INT:
@@ -138,6 +221,8 @@ def fits(value_type, expected):
         return int_like(value_type) or value_type == F32
     if is_sized(expected) and is_numeric(value_type):
         return number_assignable(value_type, expected)
+    if expected[0] in ("list", "string", "record") and unsized(value_type) == unsized(expected):
+        return assignable(value_type, expected)  # a float[3] for a list<float>, not the reverse
     return False
 
 

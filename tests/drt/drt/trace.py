@@ -137,6 +137,10 @@ class Run:
         values = self.publishes.get(port, [])
         return values[k] if k < len(values) else None
 
+    def message_type(self, msg):
+        """The type of a message's source port (spec.py's tuples), None if unknown."""
+        return self.port_type(msg[0])
+
     def port_records(self, port):
         """The deliveries, drops and event records of one port, in order."""
         conns = {c.name for c in self.model.connections.values() if c.destination == port}

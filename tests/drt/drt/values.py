@@ -6,12 +6,15 @@ value (`assert ... -> P(emitted)`, a resource's `when`).
 A value here is Python's: bool, int, float, str, dict (vec3 {"x","y","z"}, records), list. A
 sized number is an int or a float in its type's range (a float32 is a double that a float32
 holds exactly); a uint64 is its 64-bit pattern, as Lua, traces and the inputs file hold it: its
-orderings compare unsigned, its + - * wrap as every int's do.
+orderings compare unsigned, its + - * wrap as every int's do. A list or string with a size is
+always of a size its type allows (`arbc run --inputs` refuses any other): a T[N] of exactly N,
+a list<T, N> or string<N> of 0 to N, N itself and 0 often (a string of N bytes in two-byte
+characters too).
 """
 import math
 import struct
 
-from .spec import BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, is_sized
+from .spec import BOOL, INT, FLOAT, STRING, VEC3, U64, F32, INT_RANGES, is_sized, size_of, is_fixed
 
 INT64_MAX = 2**63 - 1
 INT64_MIN = -2**63
@@ -98,10 +101,13 @@ class ValueGen:
             return self.float_value()
         if ty == STRING:
             return r.choice(EDGE_STRINGS + self.strings + list(flags))
+        if ty[0] == "string":
+            return self.bounded_string(size_of(ty), flags)
         if ty == VEC3:
             return {"x": self.float_value(), "y": self.float_value(), "z": self.float_value()}
         if ty[0] == "list":
-            return [self.value(ty[1], flags) for _ in range(self.length())]
+            n = self.sized_length(ty) if size_of(ty) else self.length()
+            return [self.value(ty[1], flags) for _ in range(n)]
         if ty[0] == "record":
             return {f: self.value(ft, flags) for f, ft in ty[1]}
         if ty == F32:
@@ -166,6 +172,23 @@ class ValueGen:
         if r < 0.8 or "long-lists" in self.avoid:
             return self.rng.randint(1, self.list_bound)
         return self.rng.randint(self.list_bound + 1, self.list_bound + 3)
+
+    def sized_length(self, ty):
+        """N of a T[N]; of a list<T, N> 0, N, or one between."""
+        n = size_of(ty)
+        if is_fixed(ty):
+            return n
+        roll = self.rng.random()
+        return 0 if roll < 0.2 else n if roll < 0.5 else self.rng.randint(1, n)
+
+    def bounded_string(self, n, flags):
+        """A string of at most n bytes: the edge strings and the spec's that fit, and strings of
+        exactly n bytes (ASCII; two-byte characters, an ASCII one last if n is odd)."""
+        r = self.rng
+        pool = [s for s in EDGE_STRINGS + self.strings + list(flags) if len(s.encode()) <= n]
+        if r.random() < 0.35:
+            return r.choice(["z" * n, "é" * (n // 2) + "a" * (n % 2), "a" * (n % 2) + "é" * (n // 2)])
+        return r.choice(pool)
 
     def status(self, flags):
         """A status message: some of the feed's flags, sometimes an unknown or repeated one."""
