@@ -71,4 +71,24 @@ inline bool matched(fdds::DataWriter* w) {
   return false;
 }
 
+// Calls `take` (true when it took a sample) until nothing has come for `linger` seconds after
+// the last sample, or for `timeout` seconds when none came at all: how the plain subscribers
+// know the run is over.
+template <class Take>
+void take_until_quiet(Take take, double linger, double timeout) {
+  using Clock = std::chrono::steady_clock;
+  auto last = Clock::now();
+  bool any = false;
+  for (;;) {
+    if (take()) {
+      any = true;
+      last = Clock::now();
+      continue;
+    }
+    double quiet = std::chrono::duration<double>(Clock::now() - last).count();
+    if (quiet > (any ? linger : timeout)) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
 }  // namespace interop

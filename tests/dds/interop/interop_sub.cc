@@ -27,24 +27,19 @@ int main(int argc, char** argv) {
   fdds::DataReader* reader = sub->create_datareader(interop::topic(p, "rt/cmd_vel"), qos);
   std::printf("interop_sub: listening\n");
   std::fflush(stdout);
-  using Clock = std::chrono::steady_clock;
-  auto last = Clock::now();
-  bool any = false;
-  for (;;) {
-    geometry_msgs::msg::dds_::Twist_ t;
-    fdds::SampleInfo info;
-    if (reader->take_next_sample(&t, &info) == ReturnCode_t::RETCODE_OK) {
-      if (!info.valid_data) continue;
-      std::printf("%g\n", t.linear().x());
-      std::fflush(stdout);
-      any = true;
-      last = Clock::now();
-      continue;
-    }
-    double quiet = std::chrono::duration<double>(Clock::now() - last).count();
-    if (quiet > (any ? linger : timeout)) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  interop::take_until_quiet(
+      [&] {
+        geometry_msgs::msg::dds_::Twist_ t;
+        fdds::SampleInfo info;
+        while (reader->take_next_sample(&t, &info) == ReturnCode_t::RETCODE_OK) {
+          if (!info.valid_data) continue;  // a writer gone: no sample, no activity
+          std::printf("%g\n", t.linear().x());
+          std::fflush(stdout);
+          return true;
+        }
+        return false;
+      },
+      linger, timeout);
   p->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(p);
   return 0;

@@ -13,6 +13,7 @@
 
 #include "StampedPubSubTypes.h"
 #include "interop_participant.h"
+#include "stamped_clock.h"
 #include "stamped_format.h"
 
 namespace {
@@ -21,18 +22,6 @@ using namespace std::chrono_literals;
 namespace fdds = eprosima::fastdds::dds;
 using eprosima::fastrtps::types::ReturnCode_t;
 using geometry_msgs::msg::dds_::TwistStamped_;
-
-// A ROS 2 stamp of the wall clock `ago` before now: seconds and nanoseconds since the epoch.
-TwistStamped_ stamped_now(std::chrono::milliseconds ago, double x) {
-  auto since_epoch = std::chrono::system_clock::now().time_since_epoch() - ago;
-  auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(since_epoch).count();
-  TwistStamped_ m;
-  m.header().stamp().sec(static_cast<int32_t>(ns / 1000000000));
-  m.header().stamp().nanosec(static_cast<uint32_t>(ns % 1000000000));
-  m.header().frame_id("base_link");
-  m.twist().linear().x(x);
-  return m;
-}
 
 }  // namespace
 
@@ -59,7 +48,7 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(1s);  // the mediator matches the subscriber too
   for (int i = 1; i <= count; ++i) {
     bool fresh = i % 2 == 1;
-    TwistStamped_ m = stamped_now(fresh ? 0ms : stale, i);
+    TwistStamped_ m = stamped::stamped_now(fresh ? 0ms : stale, i);
     if (!w->write(&m)) {
       std::fprintf(stderr, "stamped_ages: Fast-DDS refused a sample\n");
       return 3;

@@ -56,20 +56,12 @@ int main(int argc, char** argv) {
       reader(p, sub, "rt/out/stamped", "geometry_msgs::msg::dds_::TwistStamped_");
   fdds::DataReader* wi = reader(p, sub, "rt/out/widths", "arbc_test::msg::dds_::Widths_");
   std::fprintf(stderr, "stamped_sub: listening\n");
-  using Clock = std::chrono::steady_clock;
-  auto last = Clock::now();
-  bool any = false;
-  for (;;) {
-    if (take<geometry_msgs::msg::dds_::TwistStamped_>(st) ||
-        take<arbc_test::msg::dds_::Widths_>(wi)) {
-      any = true;
-      last = Clock::now();
-      continue;
-    }
-    double quiet = std::chrono::duration<double>(Clock::now() - last).count();
-    if (quiet > (any ? linger : timeout)) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  interop::take_until_quiet(
+      [&] {
+        return take<geometry_msgs::msg::dds_::TwistStamped_>(st) ||
+               take<arbc_test::msg::dds_::Widths_>(wi);
+      },
+      linger, timeout);
   p->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(p);
   return 0;
