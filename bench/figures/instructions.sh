@@ -2,9 +2,8 @@
 # Instructions per message of the per-message paths (issue 21): monitored_delivery,
 # bare_delivery, monitored_delivery_checked (the runtime checks on: issue 39 bounds their cost
 # at 10%) and the Lua floors of bench/runtime/runtime_bench.cc, each counted by
-# callgrind over a window of 10,000 messages after 2,000 of warm-up (InstructionWindow there).
-# A count does not move with what else the shared machine runs, so two builds compare exactly
-# where their times only compare by interleaved medians. Needs valgrind (installed by bench/run).
+# callgrind over a window of 10,000 messages after 2,000 of warm-up (bench/callgrind_window.sh).
+# Needs valgrind (installed by bench/run).
 set -euo pipefail
 build=${ARBC_BENCH_BUILD:-${ARBC_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}/build-bench}
 bench=$build/bench/runtime/runtime_bench
@@ -18,21 +17,8 @@ if ! command -v valgrind >/dev/null; then
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-count() {  # count BENCHMARK: instructions per message of its window
-  local out=$work/$1
-  # Long enough a run that one of the benchmark's runs reaches the end of the window.
-  valgrind --tool=callgrind --collect-atstart=yes --callgrind-out-file="$out" \
-    "$bench" --benchmark_filter="^$1\$" --benchmark_min_time=3 >/dev/null 2>&1
-  python3 - "$out.1" <<'PY'
-import sys
-try:
-    lines = open(sys.argv[1]).read().splitlines()
-except OSError:
-    sys.exit("instructions.sh: no window was dumped (the benchmark ran fewer than 12,000 messages)")
-totals = [l for l in lines if l.startswith("totals:") or l.startswith("summary:")]
-print(int(totals[0].split()[1]) / 10000)
-PY
-}
+source "$(dirname "$0")/../callgrind_window.sh"
+count() { callgrind_window "$bench" "$1" "$work"; }
 monitored=$(count BM_MonitoredDelivery)
 bare=$(count BM_BareDelivery)
 tables=$(count BM_LuaFloorTables)

@@ -24,16 +24,10 @@
 #include <lua.hpp>
 #include <string_view>
 
+#include "bench/instruction_window.h"
 #include "runtime/claim_watch.h"
 #include "runtime/event_container.h"
 #include "runtime/runtime.h"
-
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-#else
-#define CALLGRIND_ZERO_STATS
-#define CALLGRIND_DUMP_STATS_AT(name) (void)(name)
-#endif
 
 namespace {
 
@@ -41,31 +35,7 @@ using namespace std::chrono_literals;
 
 using namespace arbc;
 
-// Instructions per message, a figure the other jobs on the shared machine cannot disturb. Run
-// under `valgrind --tool=callgrind --collect-atstart=yes`, the first run of a benchmark that
-// reaches kWarmup + kCounted iterations zeroes the counts after kWarmup messages (the runtime
-// or state is built, caches and the collector have settled) and dumps them after kCounted
-// more: the dump holds those messages and nothing else. Natively the client requests are a
-// few no-op instructions, twice per benchmark run.
-class InstructionWindow {
- public:
-  static constexpr uint64_t kWarmup = 2000;
-  static constexpr uint64_t kCounted = 10000;
-  explicit InstructionWindow(const char* name) : name_(name) {}
-  void after(uint64_t messages) {
-    if (done_) return;
-    if (messages == kWarmup) {
-      CALLGRIND_ZERO_STATS;
-    } else if (messages == kWarmup + kCounted) {
-      CALLGRIND_DUMP_STATS_AT(name_);
-      done_ = true;
-    }
-  }
-
- private:
-  const char* name_;
-  bool done_ = false;
-};
+using bench::InstructionWindow;
 
 // The table-cleaning app's `track` guard, and its container after the feeds ran.
 const char* kConstraint = "e_unreachable and e_arm_idle and e_pull_idle and not e_taken";
