@@ -133,6 +133,7 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
     return false;
   }
   dds.wait_peers = flags.wait_peers.value_or(0);
+  dds.use_sim_time = flags.use_sim_time;
   options->realtime = true;
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
@@ -170,6 +171,9 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "every connected topic before starting (default 0: start at once)")
       ->transform(seconds_option(true))
       ->type_name("DURATION");
+  cli.add_flag("--use-sim-time", flags->use_sim_time,
+               "dds: age() measures stamps against ROS 2 simulated time, the last sample of "
+               "/clock (rosgraph_msgs/msg/Clock), as a node with use_sim_time does");
   cli.add_option("--time-scale", flags->time_scale,
                  "wall-clock runs: time runs K times as fast as the wall clock (default 1)");
 }
@@ -182,6 +186,7 @@ int apply_transport(const TransportFlags& flags, const model::App& app, RunOptio
                         : !flags.deploy.empty()  ? "--deploy"
                         : flags.domain           ? "--domain"
                         : flags.wait_peers       ? "--wait-peers"
+                        : flags.use_sim_time     ? "--use-sim-time"
                                                  : nullptr;
     if (needs) {
       print_error(std::string(needs) +

@@ -24,6 +24,7 @@ struct TransportFlags {
   std::optional<int> domain;
   std::optional<double> time_scale;
   std::optional<double> wait_peers;
+  bool use_sim_time = false;  // dds: age() reads /clock (dds/sim_clock.h)
 };
 
 void add_transport_options(CLI::App& cli, TransportFlags* flags);

@@ -52,6 +52,10 @@ bool DdsTransport::open(const TransportPlan& plan, TransportSink* sink, std::str
   for (const Endpoint& e : endpoints) {
     if (!(e.reads ? add_reader(e, error) : add_writer(e, error))) return false;
   }
+  if (options_.use_sim_time) {
+    sim_clock_ = std::make_unique<SimClock>();
+    if (!sim_clock_->open(participant_, subscriber_, error)) return false;
+  }
   return true;
 }
 
@@ -212,6 +216,7 @@ void DdsTransport::close() {
   if (!participant_) return;
   for (auto& r : readers_) r->reader->set_listener(nullptr);
   for (auto& w : writers_) w->writer->set_listener(nullptr);
+  if (sim_clock_) sim_clock_->close();
   participant_->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
   participant_ = nullptr;
@@ -272,6 +277,7 @@ std::string DdsTransport::summary() const {
   }
   if (!never.empty()) out += "  never heard a peer: " + never + "\n";
   for (const std::string& m : status.notes) out += "  " + m + "\n";
+  if (sim_clock_) out += "  " + sim_clock_->summary() + "\n";
   return out;
 }
 

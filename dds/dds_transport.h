@@ -43,6 +43,9 @@ struct DdsOptions {
   // (dds/no_peer_reports.h); 0: never. `arbc run` takes it from ARBC_DDS_NO_PEER_AFTER when
   // set, so that tests need not wait 10 s.
   double unmatched_after = 10;
+  // --use-sim-time: age() measures stamps against the last sample of /clock (dds/sim_clock.h),
+  // as a ROS 2 node with use_sim_time does, not against the wall clock.
+  bool use_sim_time = false;
 };
 
 // A transport for `app` (its named types name the wire types). Nothing is created on the

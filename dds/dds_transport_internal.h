@@ -27,6 +27,7 @@
 #include "dds/dds_transport.h"
 #include "dds/inbox.h"
 #include "dds/shm_port_owners.h"
+#include "dds/sim_clock.h"
 #include "dds/topic_type.h"
 #include "dds/wire_types.h"
 
@@ -174,6 +175,9 @@ class DdsTransport : public Transport {
   void close() override;
   std::string summary() const override;
   TransportStatus status() const override;
+  std::optional<Nanos> ros_time() const override {
+    return sim_clock_ ? std::optional<Nanos>(sim_clock_->now()) : std::nullopt;
+  }
 
   // For the endpoints and the discovery listener.
   TransportSink& sink() { return *sink_; }
@@ -259,6 +263,7 @@ class DdsTransport : public Transport {
   fdds::DomainParticipant* participant_ = nullptr;
   fdds::Publisher* publisher_ = nullptr;
   fdds::Subscriber* subscriber_ = nullptr;
+  std::unique_ptr<SimClock> sim_clock_;             // --use-sim-time: /clock, what age() reads
   std::map<std::string, fdds::TypeSupport> types_;  // registered, by DDS type name
   std::map<std::string, fdds::Topic*> topics_;      // by topic name
   std::map<std::string, std::string> type_of_topic_, port_of_topic_;

@@ -159,6 +159,8 @@ class Runtime {
   void publish(std::string_view module, std::string_view port, Value v);
 
   Nanos now() const { return executor_->now(); }
+  // The run's clock as ROS 2 time, what age() measures stamps against (message_path.cc).
+  Nanos stamp_clock() const;
   Executor& executor() { return *executor_; }
   Module* module(std::string_view name);
   Environment* environment() { return environment_.get(); }
@@ -302,9 +304,9 @@ class Runtime {
   uint64_t arrivals_ = 0;  // messages from sources so far (each from_source call)
   // When the message from_source is enqueueing arrived: every connection it feeds reads this
   // instant as its stamp clock (age()), so the rules that judge it read one clock.
-  Nanos arrival_at_{0};
-  uint64_t remote_sent_ = 0;   // deliveries into modules hosted elsewhere so far
-  Nanos longest_lifetime_{0};  // of app.json's events: how long delivery times matter
+  Nanos arrival_stamp_clock_{0};  // stamp_clock() at the last arrival
+  uint64_t remote_sent_ = 0;      // deliveries into modules hosted elsewhere so far
+  Nanos longest_lifetime_{0};     // of app.json's events: how long delivery times matter
   ModuleSet host_, mediate_;
   std::unique_ptr<TransportLink> link_;
   std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor

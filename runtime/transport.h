@@ -15,11 +15,13 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/instant.h"
 #include "core/type.h"
 #include "core/value.h"
 #include "runtime/drop_reason.h"
@@ -112,6 +114,10 @@ class Transport {
   // deliver(in, d) exactly sink->to_module(in, d), on the caller's thread (the in-process
   // transport): the runtime then makes those calls itself, two indirect calls fewer per hop.
   virtual bool loops_back() const { return false; }
+  // ROS 2 time read from the network, when the run takes its time from there (DDS with
+  // --use-sim-time: the last /clock sample), for age(); nullopt: the executor's clock
+  // (Executor::stamp_origin). Called from the runtime's thread, while a message is judged.
+  virtual std::optional<Nanos> ros_time() const { return std::nullopt; }
 };
 
 // Today's behaviour: every module hosted and mediated in this one process; publish and deliver

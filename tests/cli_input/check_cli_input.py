@@ -265,6 +265,10 @@ def case_dds_placement_mistakes(arbc, plugin):
                      "arbc run: error: this process hosts no module and mediates none, so it "
                      "would do nothing; give --mediate all (or the modules whose connections "
                      "run here) for a mediator, or --host the modules it runs")
+    # Simulated time is read from /clock, which only a DDS run has.
+    expect_bad_input(run(arbc, "run", spec, "--use-sim-time", "--duration", "1s"),
+                     "--use-sim-time needs --transport dds (the in-process transport runs "
+                     "every module here)")
 
 
 def case_dds_field_order(arbc, plugin):

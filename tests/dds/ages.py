@@ -10,9 +10,15 @@ those whose `age(cmd_vel.header.stamp)` is under 500 ms (interop/ages.spec, decl
 receives. Every fresh command must reach the base, bit for bit and in order, and no stale one;
 the mediator must count each stale one `rejected`.
 
-usage: ages.py ARBC STAMPED_AGES STAMPED_SUB TESTS_DDS_DIR
+With `sim`, the same under ROS 2 simulated time: stamped_ages also publishes /clock from 100 s
+on (rosgraph_msgs/msg/Clock) and stamps with it, and the mediator runs with --use-sim-time. On
+the wall clock every such stamp is decades old, so a fresh command passes only if age() reads
+/clock.
+
+usage: ages.py ARBC STAMPED_AGES STAMPED_SUB TESTS_DDS_DIR [sim]
 """
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -25,6 +31,7 @@ COUNT = 20
 
 def main():
     arbc, ages, sub, here = sys.argv[1:5]
+    sim = sys.argv[5:] == ["sim"]
     env = environment(os.path.join(here, "loopback_profile.xml"))
     held = Domain()
     domain = str(held.id)
@@ -39,10 +46,11 @@ def main():
     mediator = subprocess.Popen(
         [arbc, "run", os.path.join(out_dir, "ages"), "--transport", "dds", "--host", "none",
          "--mediate", "all", "--deploy", os.path.join(interop, "ages.deploy.json"),
-         "--domain", domain, "--duration", "100000s", "--wait-peers", "30"],
+         "--domain", domain, "--duration", "100000s", "--wait-peers", "30"] +
+        (["--use-sim-time"] if sim else []),
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
-    sender = subprocess.run([ages, domain, str(COUNT), "2000"], capture_output=True, text=True,
-                            env=env, timeout=90)
+    sender = subprocess.run([ages, domain, str(COUNT), "2000"] + (["100"] if sim else []),
+                            capture_output=True, text=True, env=env, timeout=90)
     received, receiver_errors = receiver.communicate(timeout=90)
     mediator.send_signal(signal.SIGTERM)
     mediated, _ = mediator.communicate(timeout=30)
@@ -67,6 +75,10 @@ def main():
              f"{len(fresh)} delivered, {len(stale)} rejected", mediated)
     if "result: success" not in mediated:
         fail("the mediator's verdict is not success", mediated)
+    # Keep-last 1, best effort (as rclcpp reads /clock): ticks that come together count once.
+    clock = re.search(r"clock: \d+ samples on rt/clock, the last at ([0-9.]+)s", mediated)
+    if sim and not (clock and float(clock.group(1)) >= 100 + (COUNT - 1) * 0.05):
+        fail("the mediator did not read /clock up to the last sample's time", mediated)
     print(f"ok: {len(fresh)} fresh commands reached the base bit for bit, {len(stale)} stale ones "
           f"were rejected\n" + mediated)
 
