@@ -28,18 +28,28 @@ std::string unquoted(const std::string& text) {
 
 std::optional<ExprPtr> integer(const std::string& text, const Type& t, const ast::Loc& at,
                                std::string* why) {
+  const char* last = text.data() + text.size();
   int64_t v = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  bool whole = ec == std::errc() && end == text.data() + text.size();
-  if (!whole || (!is_uint64(t) && !t.holds(v)) || (is_uint64(t) && v < 0)) {
-    *why = "'" + text + "' is not a " + t.to_string() + " (" + t.range_text() + ")";
-    // A uint64 above 2^63 - 1 is one, but no spec constant holds it (core/type.h).
-    if (is_uint64(t) && ec == std::errc::result_out_of_range && text[0] != '-')
-      *why = "'" + text + "' is above 9223372036854775807, the largest constant a spec holds";
-    return std::nullopt;
-  }
+  auto [end, ec] = std::from_chars(text.data(), last, v);
   ExprPtr e = literal(Expr::Kind::Number, at);
   e->is_int = true;
+  if (is_uint64(t) && ec == std::errc::result_out_of_range) {
+    // 2^63 to 2^64 - 1: the literal a spec writes with those digits, a uint64 constant (sema's
+    // uint64_literal reads e->text).
+    uint64_t u = 0;
+    auto [uend, uec] = std::from_chars(text.data(), last, u);
+    if (uec == std::errc() && uend == last) {
+      e->int_too_big = true;
+      e->text = text;
+      e->number = static_cast<double>(u);
+      return e;
+    }
+  }
+  if (ec != std::errc() || end != last || (!is_uint64(t) && !t.holds(v)) ||
+      (is_uint64(t) && v < 0)) {
+    *why = "'" + text + "' is not a " + t.to_string() + " (" + t.range_text() + ")";
+    return std::nullopt;
+  }
   e->integer = v;
   e->number = static_cast<double>(v);
   return e;

@@ -152,12 +152,13 @@ TEST_F(Ros2UsesTest, WhatCannotBeDeclaredIsAnErrorAtTheUse) {
 TEST_F(Ros2UsesTest, ConstantsAreReadAsTypeDotName) {
   write("sensor_msgs/msg/Range",
         "uint8 ULTRASOUND=0\nuint8 INFRARED=1\nfloat32 HALF=0.5\nstring FRAME=\"base\"\n"
-        "bool ON=true\nuint8 radiation_type\nfloat32 range\n");
+        "bool ON=true\nuint64 ALL=18446744073709551615\nuint8 radiation_type\nfloat32 range\n"
+        "uint64 seq\n");
   std::string spec =
       "app a;\nuse ros2 sensor_msgs/msg/Range;\nmodule S { out r: Range; }\n"
       "module B { in r: Range; }\n"
       "connect S.r -> B.r { accept r.radiation_type == Range.INFRARED and r.range > Range.HALF "
-      "and Range.FRAME == \"base\" and Range.ON; }\n";
+      "and Range.FRAME == \"base\" and Range.ON and r.seq < Range.ALL; }\n";
   CheckResult r = check_text(spec, "a.spec");
   ASSERT_TRUE(r.ok()) << errors(r);
   // Not a constant of the message: an unknown name, as any.
@@ -166,9 +167,10 @@ TEST_F(Ros2UsesTest, ConstantsAreReadAsTypeDotName) {
       "module B { in r: Range; }\nconnect S.r -> B.r { accept r.radiation_type == Range.SONAR; }\n",
       "a.spec");
   EXPECT_FALSE(miss.ok());
-  write("bad_msgs/msg/Consts", "uint8 BIG=300\nfloat32 TENTH=0.1\nint32 n\n");
+  write("bad_msgs/msg/Consts",
+        "uint8 BIG=300\nfloat32 TENTH=0.1\nuint64 HUGE=18446744073709551616\nint32 n\n");
   CheckResult bad = check_text("app a;\nuse ros2 bad_msgs/msg/Consts;\n", "a.spec");
-  ASSERT_EQ(bad.diagnostics.size(), 2u) << errors(bad);
+  ASSERT_EQ(bad.diagnostics.size(), 3u) << errors(bad);
   EXPECT_NE(bad.diagnostics[0].message.find("constant 'BIG'"), std::string::npos);
   EXPECT_NE(bad.diagnostics[0].message.find("'300' is not a uint8 (0 to 255)"), std::string::npos)
       << bad.diagnostics[0].message;
@@ -176,6 +178,9 @@ TEST_F(Ros2UsesTest, ConstantsAreReadAsTypeDotName) {
   ASSERT_EQ(bad.diagnostics[0].notes.size(), 1u);
   EXPECT_EQ(bad.diagnostics[0].notes[0].loc.line, 1);
   EXPECT_NE(bad.diagnostics[1].message.find("'0.1' is not a float32 value"), std::string::npos);
+  EXPECT_NE(bad.diagnostics[2].message.find("'18446744073709551616' is not a uint64"),
+            std::string::npos)
+      << bad.diagnostics[2].message;
 }
 
 }  // namespace
