@@ -4,7 +4,6 @@
 
 #include "core/type.h"
 #include "dds/topic_type.h"
-#include "dds/wire_values.h"
 
 namespace arbc::dds {
 
@@ -46,8 +45,7 @@ bool SimClock::open(fdds::DomainParticipant* participant, fdds::Subscriber* subs
              kClockName + "): leave /clock out of the app, or run without --use-sim-time";
     return false;
   }
-  codec_ = new WireTopicType(clock_wire_type());
-  type_ = fdds::TypeSupport(codec_);
+  type_ = fdds::TypeSupport(new WireTopicType(clock_wire_type()));
   if (type_.register_type(participant) != ReturnCode_t::RETCODE_OK) {
     *error = std::string("DDS: cannot register type ") + kClockName + " for --use-sim-time";
     return false;
@@ -76,11 +74,8 @@ void SimClock::on_data_available(fdds::DataReader* reader) {
   auto* sample = static_cast<WireSample*>(type_.create_data());
   fdds::SampleInfo info;
   while (reader->take_next_sample(sample, &info) == ReturnCode_t::RETCODE_OK) {
-    Value v;
-    std::string error;
-    if (!info.valid_data || sample->bad || !from_wire(codec_->wire(), sample->data, &v, &error))
-      continue;
-    const Value& t = v["clock"];
+    if (!info.valid_data || sample->bad) continue;
+    const Value& t = sample->value["clock"];
     ns_.store(t["sec"].as_int() * 1000000000 + t["nanosec"].as_int(), std::memory_order_release);
     samples_.fetch_add(1, std::memory_order_relaxed);
   }

@@ -17,8 +17,6 @@
 
 namespace arbc::dds {
 
-class WireTopicType;
-
 class SimClock : public eprosima::fastdds::dds::DataReaderListener {
  public:
   // Registers the Clock type and reads rt/clock from now on. False with *error when the app's
@@ -36,7 +34,6 @@ class SimClock : public eprosima::fastdds::dds::DataReaderListener {
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
 
   eprosima::fastdds::dds::TypeSupport type_;
-  WireTopicType* codec_ = nullptr;  // type_'s, which owns it
   eprosima::fastdds::dds::DataReader* reader_ = nullptr;
   std::atomic<int64_t> ns_{0};
   std::atomic<uint64_t> samples_{0};

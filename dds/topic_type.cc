@@ -2,6 +2,8 @@
 
 #include <fastrtps/types/DynamicDataFactory.h>
 
+#include "dds/cdr_read.h"
+
 namespace arbc::dds {
 
 namespace ft = eprosima::fastrtps::types;
@@ -26,23 +28,19 @@ bool WireTopicType::serialize(void* data, eprosima::fastrtps::rtps::SerializedPa
   }
 }
 
+// Reads the bytes into sample->value (dds/cdr_read.h), not into the dynamic data, which cost a
+// LaserScan a hundred times more (docs/benchmarks.md "ROS 2 messages").
 bool WireTopicType::deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload,
                                 void* data) {
   auto* sample = static_cast<WireSample*>(data);
   sample->extra_bytes = 0;
-  try {
-    if (wire_->has_sequence) sample->data->clear_all_values();  // WireType says why
-    uint32_t length = payload->length;
-    sample->bad = !codec_.deserialize(payload, sample->data);
-    // A struct with more fields than the spec's decodes as its first fields and the rest is
-    // ignored: the mediator would pass on a shorter message, which the program's subscribers
-    // drop without a trace. Up to 3 bytes are the padding a writer may add to a multiple of 4.
-    uint32_t used = sample->bad ? length : codec_.getSerializedSizeProvider(sample->data)();
-    if (length > used + 3) {
-      sample->extra_bytes = length - used;
-      sample->bad = true;
-    }
-  } catch (...) {
+  CdrRead r = cdr_read(*wire_, payload->data, payload->length, &sample->value);
+  sample->bad = !r.ok;
+  // A struct with more fields than the spec's decodes as its first fields and the rest is
+  // ignored: the mediator would pass on a shorter message, which the program's subscribers
+  // drop without a trace. Up to 3 bytes are the padding a writer may add to a multiple of 4.
+  if (r.ok && payload->length > r.used + 3) {
+    sample->extra_bytes = payload->length - r.used;
     sample->bad = true;
   }
   return true;

@@ -1,7 +1,8 @@
 // The type support Fast-DDS sees for one wire type: samples are WireSample objects holding
-// Fast-DDS dynamic data. Unlike Fast-DDS's own DynamicPubSubType it never fails a sample that
-// does not decode (Fast-DDS would drop it without a trace, or an exception would escape into
-// its threads): the sample arrives marked `bad`, so the transport counts it as a `bad-type` drop.
+// Fast-DDS dynamic data to write, and the value read from a received sample's bytes. Unlike
+// Fast-DDS's own DynamicPubSubType it never fails a sample that does not decode (Fast-DDS would
+// drop it without a trace, or an exception would escape into its threads): the sample arrives
+// marked `bad`, so the transport counts it as a `bad-type` drop.
 #pragma once
 
 #include <fastrtps/types/DynamicData.h>
@@ -11,12 +12,16 @@
 #include <memory>
 #include <string>
 
+#include "core/value.h"
 #include "dds/wire_types.h"
 
 namespace arbc::dds {
 
 struct WireSample {
-  eprosima::fastrtps::types::DynamicData* data = nullptr;  // owned (DynamicDataFactory)
+  // What a writer fills (to_wire) and Fast-DDS serializes; owned (DynamicDataFactory).
+  eprosima::fastrtps::types::DynamicData* data = nullptr;
+  // What the last deserialize read, straight from the bytes (dds/cdr_read.h); not `data`.
+  Value value;
   bool bad = false;  // the last deserialize could not decode the bytes
   // Bytes the last sample had beyond what its decoded value takes (a program whose type has
   // the spec's fields and more); `bad` is set with it.

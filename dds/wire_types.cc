@@ -73,14 +73,6 @@ bool is_scalar(Type::Kind k) {
          k == Type::Kind::String;
 }
 
-// Whether a list occurs anywhere in t (WireType::has_sequence says why it matters).
-bool contains_list(const Type& t) {
-  if (t.kind == Type::Kind::List) return true;
-  for (const auto& f : t.fields)
-    if (contains_list(*f.type)) return true;
-  return false;
-}
-
 }  // namespace
 
 WireNaming::WireNaming(const model::App& app, const Deployment& deployment)
@@ -146,7 +138,6 @@ std::shared_ptr<const WireType> WireNaming::port_type(const std::string& module,
                                                       std::string* error) {
   auto wire = std::make_shared<WireType>();
   wire->type = type;
-  wire->has_sequence = contains_list(*type);
   std::string anonymous = module + "_" + port;
   if (type->kind == Type::Kind::Record || type->kind == Type::Kind::Vec3) {
     wire->dynamic = build(*type, anonymous, error);

@@ -26,10 +26,6 @@ struct WireType {
   eprosima::fastrtps::types::DynamicType_ptr dynamic;
   TypePtr type;          // the port's spec type
   bool wrapped = false;  // the value is the struct's one field `data`
-  // A list anywhere inside: Fast-DDS appends a sequence's elements to those a reused sample
-  // holds, so such a sample must be cleared before it is read into again. (Clearing costs
-  // more than reading a small message; types without lists skip it.)
-  bool has_sequence = false;
   // The structure as text, to tell two types apart under one name: "Name{data: list<string>}".
   std::string signature;
 };

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "dds/float32_bits.h"
+
 namespace arbc::dds {
 
 namespace ft = eprosima::fastrtps::types;
@@ -14,25 +16,6 @@ namespace {
 bool ok(const ft::ReturnCode_t& rc) { return rc == ft::ReturnCode_t::RETCODE_OK; }
 
 bool put(ft::DynamicData* parent, ft::MemberId id, const Type& t, const Value& v);
-
-// A float32 widened to a double and narrowed back with a NaN's sign and payload moved by hand:
-// the hardware's conversions are IEEE operations, which set a signalling NaN's quiet bit
-// (0x7f800001 came back 0x7fc00001). The payload's 23 bits are the double's top 23.
-double widen(float f) {
-  if (!std::isnan(f)) return f;
-  uint32_t b = std::bit_cast<uint32_t>(f);
-  return std::bit_cast<double>(uint64_t{b >> 31} << 63 | uint64_t{0x7ff} << 52 |
-                               uint64_t{b & 0x7fffffu} << 29);
-}
-
-float narrow(double x) {
-  if (!std::isnan(x)) return static_cast<float>(x);
-  uint64_t d = std::bit_cast<uint64_t>(x);
-  uint32_t payload = static_cast<uint32_t>(d >> 29) & 0x7fffffu;
-  // A double NaN whose payload is all in its low 29 bits: quiet, as the hardware makes it.
-  if (payload == 0) payload = 0x400000u;
-  return std::bit_cast<float>(static_cast<uint32_t>(d >> 63) << 31 | 0x7f800000u | payload);
-}
 
 // A number of type t into member `id`, at its width (wire_types.cc). The value is in t's range:
 // the runtime refuses a message that is not (core/value.h conforms), and a uint64 is held as its
