@@ -66,7 +66,7 @@ void Runtime::publish_from(ModuleSlot& m, std::string_view port, Value&& v) {
 void Runtime::from_source(OutPort& out, const Value& v, uint64_t answered) {
   if (!out.hosted && trace_.enabled()) trace_.publish(now(), out.qualified, v);
   ++arrivals_;
-  arrival_stamp_clock_ = stamp_clock();
+  arrival_at_ = transport_clock_ ? *transport_->ros_time() : now();
   for (Connection* c : out.connections) enqueue(*c, v, answered);
 }
 
@@ -151,7 +151,7 @@ void Runtime::enqueue(Connection& c, const Value& v, uint64_t answered) {
   queued.value = v;
   queued.answered = answered;
   queued.message = arrivals_;
-  queued.stamp_clock = arrival_stamp_clock_;
+  queued.arrived = arrival_at_;
   if (!c.drain_posted) post_drain(c);
 }
 
@@ -174,9 +174,9 @@ void Runtime::drain(Connection& c) {
   if (c.quarantined) {
     drop(c, DropReason::Quarantined);
   } else {
-    c.judging_stamp_clock = queued.stamp_clock;
+    c.judging_since = queued.arrived;
     process(c, queued.value);
-    c.judging_stamp_clock.reset();
+    c.judging_since.reset();
   }
   if (!c.queue.empty() && !c.drain_posted) post_drain(c);
 }
@@ -394,13 +394,15 @@ Nanos Runtime::Connection::now() { return runtime->now(); }
 // arrival, the same for every connection it feeds (one clock for the rules that judge it, as
 // the proof assumes: verify/builtin_calls.cc); otherwise the time now.
 Nanos Runtime::Connection::stamp_now() {
-  return judging_stamp_clock.value_or(runtime->stamp_clock());
+  if (!judging_since) return runtime->stamp_clock();
+  return runtime->transport_clock_ ? *judging_since
+                                   : runtime->executor().stamp_origin() + *judging_since;
 }
 
 // The run's clock as ROS 2 time: the transport's (the last /clock sample with DDS and
 // --use-sim-time), else the executor's (Executor::stamp_origin).
 Nanos Runtime::stamp_clock() const {
-  if (std::optional<Nanos> t = transport_->ros_time()) return *t;
+  if (transport_clock_) return *transport_->ros_time();
   return executor_->stamp_origin() + now();
 }
 

@@ -304,7 +304,10 @@ class Runtime {
   uint64_t arrivals_ = 0;  // messages from sources so far (each from_source call)
   // When the message from_source is enqueueing arrived: every connection it feeds reads this
   // instant as its stamp clock (age()), so the rules that judge it read one clock.
-  Nanos arrival_stamp_clock_{0};  // stamp_clock() at the last arrival
+  // The last arrival's instant; with transport_clock_, the transport's ROS 2 time then (the
+  // per-message path pays a virtual call only where /clock is read).
+  Nanos arrival_at_{0};
+  bool transport_clock_ = false;  // the transport has a ROS 2 time of its own (Transport::ros_time)
   uint64_t remote_sent_ = 0;      // deliveries into modules hosted elsewhere so far
   Nanos longest_lifetime_{0};     // of app.json's events: how long delivery times matter
   ModuleSet host_, mediate_;

@@ -355,7 +355,9 @@ bool Runtime::open_transport(std::string* error) {
     }
   }
   link_ = std::make_unique<TransportLink>(this);
-  return transport_->open(plan, link_.get(), error);
+  if (!transport_->open(plan, link_.get(), error)) return false;
+  transport_clock_ = transport_->ros_time().has_value();
+  return true;
 }
 
 // Each monitor's create runs at load, so that a setConstraint that would replace the

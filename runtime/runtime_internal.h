@@ -90,7 +90,7 @@ struct Runtime::Connection : MonitorHost {
     Value value;
     uint64_t answered = 0;  // TransportSink::from_source's
     uint64_t message = 0;   // its arrival's number (Runtime::arrivals_)
-    Nanos stamp_clock{0};   // the ROS 2 time at its arrival (Runtime::stamp_clock)
+    Nanos arrived{0};       // Runtime::arrival_at_: its arrival's instant (or ROS 2 time)
   };
   RingQueue<Queued> queue;
   bool drain_posted = false;
@@ -122,9 +122,9 @@ struct Runtime::Connection : MonitorHost {
   // How many deliveries into modules hosted elsewhere the messages processed answer: the most
   // of any message so far (a feed), and the message being processed.
   uint64_t answered = 0, incoming_answered = 0;
-  Nanos last_fed_at = -kNever;               // a feed's last accepted message (-kNever: none)
-  uint64_t message = 0;                      // the arrival number of the message being processed
-  std::optional<Nanos> judging_stamp_clock;  // its Queued::stamp_clock, while it is processed
+  Nanos last_fed_at = -kNever;         // a feed's last accepted message (-kNever: none)
+  uint64_t message = 0;                // the arrival number of the message being processed
+  std::optional<Nanos> judging_since;  // its Queued::arrived, while it is processed
   bool fed = false;
   Nanos last_arrival = -kNever;            // none yet
   std::set<std::string> silence_reported;  // events reported lapsed since the last arrival
