@@ -6,19 +6,8 @@
 # messages (bench/callgrind_window.sh: 100 LaserScans after 20, 10,000 three-field messages after
 # 2,000). Needs valgrind (installed by bench/run).
 set -euo pipefail
-build=${ARBC_BENCH_BUILD:-${ARBC_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}/build-bench}
-bench=$build/bench/dds/decode_bench
-if [ ! -x "$bench" ]; then
-  echo "decode.sh: $bench is missing; build the Release tree first (bench/run does)" >&2
-  exit 2
-fi
-if ! command -v valgrind >/dev/null; then
-  echo "decode.sh: valgrind is missing (apt-get install valgrind)" >&2
-  exit 2
-fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source "$(dirname "$0")/../callgrind_window.sh"
+callgrind_bench decode.sh bench/dds/decode_bench
 scan=$(callgrind_window "$bench" BM_DecodeLaserScan "$work" 100)
 three=$(callgrind_window "$bench" BM_DecodeThreeFields "$work")
 python3 - "$scan" "$three" <<'PY'

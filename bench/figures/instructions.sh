@@ -5,19 +5,8 @@
 # callgrind over a window of 10,000 messages after 2,000 of warm-up (bench/callgrind_window.sh).
 # Needs valgrind (installed by bench/run).
 set -euo pipefail
-build=${ARBC_BENCH_BUILD:-${ARBC_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}/build-bench}
-bench=$build/bench/runtime/runtime_bench
-if [ ! -x "$bench" ]; then
-  echo "instructions.sh: $bench is missing; build the Release tree first (bench/run does)" >&2
-  exit 2
-fi
-if ! command -v valgrind >/dev/null; then
-  echo "instructions.sh: valgrind is missing (apt-get install valgrind)" >&2
-  exit 2
-fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source "$(dirname "$0")/../callgrind_window.sh"
+callgrind_bench instructions.sh bench/runtime/runtime_bench
 count() { callgrind_window "$bench" "$1" "$work"; }
 monitored=$(count BM_MonitoredDelivery)
 bare=$(count BM_BareDelivery)
