@@ -169,7 +169,8 @@ void give_up_stuck_run(const RunEnd& end, const std::string& signal, double wait
     std::string budget =
         busy.kind == "monitor"
             ? ", past its wall-clock budget of " + duration_literal(end.options.limits.wall_seconds)
-            : " (plugin code cannot be stopped)";
+        : busy.kind == "transport" ? " (closing its endpoints)"
+                                   : " (plugin code cannot be stopped)";
     why = who + " is still running " + waited_text + " after the interrupt" + budget;
   }
   std::fprintf(stderr, "arbc run: interrupted (%s), but %s; ending the run without it\n",

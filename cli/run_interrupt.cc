@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -68,8 +69,10 @@ const char* RunInterrupt::signal_name() const {
   }
 }
 
-void RunInterrupt::watch(double grace, std::function<void()> give_up) {
+void RunInterrupt::watch(double grace, std::function<double()> patience,
+                         std::function<void(double)> give_up) {
   if (pipe_[0] < 0 || thread_.joinable()) return;
+  patience_ = std::move(patience);
   give_up_ = std::move(give_up);
   thread_ = std::thread([this, grace] { watchdog(grace); });
 }
@@ -88,13 +91,17 @@ void RunInterrupt::watchdog(double grace) {
   }
   if (byte != 's') return;  // 'q': the run is over
   std::unique_lock<std::mutex> lock(mutex_);
-  auto deadline = std::chrono::steady_clock::now() +
-                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                      std::chrono::duration<double>(grace));
-  if (returned_cv_.wait_until(lock, deadline, [this] { return returned_; })) return;
+  auto signalled = std::chrono::steady_clock::now();
+  auto after = [&](double seconds) {
+    return signalled + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(seconds));
+  };
+  if (returned_cv_.wait_until(lock, after(grace), [this] { return returned_; })) return;
+  double waited = grace + std::max(0.0, patience_ ? patience_() : 0.0);
+  if (returned_cv_.wait_until(lock, after(waited), [this] { return returned_; })) return;
   giving_up_ = true;
   lock.unlock();
-  give_up_();
+  give_up_(waited);
   std::fflush(stdout);
   std::fflush(stderr);
   _exit(3);  // the executor thread is stuck: no destructor may wait for it

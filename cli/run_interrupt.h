@@ -7,7 +7,8 @@
 // seconds after the signal (a callback stuck where no check runs: plugin code, or a C function
 // of a monitor the sandbox does not bound), a watchdog thread runs `give_up` (which names the
 // stuck callback and writes what it can) and ends the process with exit code 3, so a signal
-// always ends the run within about a second.
+// always ends the run within about a second. A phase known to be slow but bounded (closing the
+// DDS entities, longer on a loaded or sanitized machine) may ask for more time: `patience`.
 #pragma once
 
 #include <atomic>
@@ -28,8 +29,10 @@ class RunInterrupt {
   const std::atomic<bool>* flag() const;
   // "SIGINT" or "SIGTERM" once a signal came; "" before.
   const char* signal_name() const;
-  // Starts the watchdog; `give_up` runs on its thread if the run outlives a signal by `grace`.
-  void watch(double grace, std::function<void()> give_up);
+  // Starts the watchdog; `give_up(waited)` runs on its thread if the run outlives a signal by
+  // `grace` plus what `patience()`, asked once the grace is over, allows (seconds; 0: none).
+  void watch(double grace, std::function<double()> patience,
+             std::function<void(double waited)> give_up);
   // The run returned: the watchdog stands down. False when it is already giving up: the caller
   // must then not touch the run (the process is about to exit) and should wait.
   bool run_returned();
@@ -39,7 +42,8 @@ class RunInterrupt {
 
   int pipe_[2] = {-1, -1};
   std::thread thread_;
-  std::function<void()> give_up_;
+  std::function<double()> patience_;
+  std::function<void(double)> give_up_;
   std::mutex mutex_;
   std::condition_variable returned_cv_;
   bool returned_ = false, giving_up_ = false;

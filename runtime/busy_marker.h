@@ -12,7 +12,8 @@ namespace arbc {
 
 class BusyMarker {
  public:
-  // kind: "monitor", "module" or "environment"; `name` must outlive the callback.
+  // kind: "monitor", "module", "environment" or "transport" (closing); `name` must outlive the
+  // callback.
   // A seqlock without fences (ThreadSanitizer does not model them): the serial goes odd before the
   // fields change and even after; the fields are stored with release, so a reader that sees a
   // new field also sees the odd serial when it checks again.

@@ -175,9 +175,10 @@ void Runtime::run() {
 
 std::string Runtime::describe(const BusyMarker::Snapshot& b) {
   if (b.kind.empty()) return "";
-  std::string who = b.kind == "monitor"  ? "the monitor of connection '" + b.name + "'"
-                    : b.kind == "module" ? "module '" + b.name + "'"
-                                         : "the environment";
+  std::string who = b.kind == "monitor"     ? "the monitor of connection '" + b.name + "'"
+                    : b.kind == "module"    ? "module '" + b.name + "'"
+                    : b.kind == "transport" ? "the transport '" + b.name + "'"
+                                            : "the environment";
   return who + ", in " + b.callback;
 }
 
@@ -190,7 +191,13 @@ void Runtime::shutdown() {
   if (shut_down_) return;
   shut_down_ = true;
   for (auto& m : modules_) m->guarded("stop", [&] { m->module->stop(); });
-  transport_->close();  // nothing arrives from other processes after the modules stopped
+  {
+    // Marked busy: closing DDS entities takes a while (and longer sanitized); the interrupt's
+    // watchdog gives it more time than a stuck callback, and names it if it still hangs.
+    transport_name_ = transport_->name();
+    BusyScope busy(busy_, "transport", transport_name_, "close");
+    transport_->close();  // nothing arrives from other processes after the modules stopped
+  }
   for (auto& cp : connections_) {
     Connection& c = *cp;
     if (c.monitor && !c.quarantined) {

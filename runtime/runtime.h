@@ -313,6 +313,7 @@ class Runtime {
   ModuleSet host_, mediate_;
   std::unique_ptr<TransportLink> link_;
   std::shared_ptr<Transport> transport_;  // closed by shutdown() or the destructor
+  std::string transport_name_;            // transport_->name(), named by busy_ while it closes
   bool loops_back_ = false;               // transport_->loops_back()
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
