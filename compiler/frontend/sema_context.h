@@ -157,8 +157,13 @@ class Sema {
   const ast::Rule* find_test_rule(const std::string& name, const ast::Loc& loc);
   // A test time: a duration >= 0 (`at 0s` is the start).
   void check_test_time(ast::Duration& d, const std::string& what);
-  // A message literal: a constant value of the port's type.
-  void check_test_value(ast::Expr& e, const ast::PortRef& port);
+  // A message literal: a constant value of the port's type; `at` is the step's instant (none
+  // for an expected value: `now()` is then an error).
+  void check_test_value(ast::Expr& e, const ast::PortRef& port, std::optional<Nanos> at);
+  // Stamps written as instants (`now() - 150ms`) become `{sec, nanosec}` records
+  // (sema_test_stamps.cc); false when one was reported.
+  bool desugar_test_stamps(ast::Expr& e, const TypePtr& want, std::optional<Nanos> at);
+  std::optional<Nanos> stamp_instant(ast::Expr& e, std::optional<Nanos> at, bool* reported);
   void check_test_step(const ast::TestDecl& t, ast::TestStep& s);
   void check_test_expect(const ast::TestDecl& t, ast::TestExpect& e);
   void check_test_claim(const ast::TestDecl& t, ast::TestExpect& e);

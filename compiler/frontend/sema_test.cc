@@ -132,10 +132,11 @@ void Sema::check_test_time(Duration& d, const std::string& what) {
   }
 }
 
-void Sema::check_test_value(Expr& e, const PortRef& port) {
+void Sema::check_test_value(Expr& e, const PortRef& port, std::optional<Nanos> at) {
   Scope empty;
-  check_expr(e, empty);
   TypePtr want = port.port_decl ? port.port_decl->type.resolved : nullptr;
+  if (!desugar_test_stamps(e, want, at)) return;
+  check_expr(e, empty);
   if (!e.type || !want) return;
   if (!check_value_fits(e, want,
                         "the value is " + describe(e.type) + ", but " + port.qualified() +
@@ -163,7 +164,7 @@ void Sema::check_test_step(const TestDecl& t, TestStep& s) {
               " would not reach it",
           diag::TestPort);
   }
-  check_test_value(*s.value, s.port);
+  check_test_value(*s.value, s.port, s.at.nanos);
 }
 
 void Sema::check_test_window(TestWindow& w, bool instant_only) {
@@ -278,7 +279,7 @@ void Sema::check_test_expect(const TestDecl& t, TestExpect& e) {
                   t.on_rule->port->port.qualified(),
               diag::TestPort);
       }
-      if (e.value) check_test_value(*e.value, e.port);
+      if (e.value) check_test_value(*e.value, e.port, std::nullopt);
       break;
     case TestExpect::Kind::Drops:
       e.rule_decl = find_test_rule(e.rule, e.rule_loc);

@@ -551,11 +551,13 @@ def case_sized_numbers_run(arbc, tmp):
 def case_age_rejects_stale_commands(arbc, tmp):
     """age() in simulation (issue 41, docs/language.md#message-age): the run's clock is the
     simulated one, so stamps are instants of the run; a command 100 ms old passes, one 300 ms
-    old is rejected, one stamped ahead passes. The proof leaves the clock free: proved. With a
-    limit of 50 ms the first command is stale too, and the test says so."""
+    old is rejected, one stamped ahead passes; the second test writes stamps relative to each
+    step (`now() - 150ms`, docs/testing.md#stamps), across a second boundary and at exactly the
+    limit. The proof leaves the clock free: proved. With a limit of 50 ms the first command of
+    each test is stale too, and both tests say so."""
     spec = "tests/arbc_test/stale_commands.spec"
     code, out, err = run(arbc, "test", spec)
-    expect(code == 0 and "1 passed" in out, f"exit {code}", out, err)
+    expect(code == 0 and "2 passed" in out, f"exit {code}", out, err)
     code, out, err = run(arbc, "verify", spec)
     expect(code == 0, f"arbc verify: exit {code}", out, err)
     strict = os.path.join(tmp, "strict.spec")
@@ -563,7 +565,7 @@ def case_age_rejects_stale_commands(arbc, tmp):
     with open(strict, "w", encoding="utf-8") as f:
         f.write(text.replace("const MAX_AGE = 200ms;", "const MAX_AGE = 50ms;"))
     code, out, err = run(arbc, "test", strict)
-    expect(code == 1 and "1 failed" in out and "expected Base.cmd_vel receives" in out + err,
+    expect(code == 1 and "2 failed" in out and "expected Base.cmd_vel receives" in out + err,
            f"with a 50 ms limit, exit {code}: the stale first command was not caught", out, err)
     # Complementary ages in two rules of one port: one clock per message, so exclusive by data.
     pair = os.path.join(tmp, "pair.spec")
