@@ -9,6 +9,7 @@
 #include "verify/claim_test.h"
 #include "verify/data_assert.h"
 #include "verify/data_pair.h"
+#include "verify/dead_rule.h"
 #include "verify/replay.h"
 
 namespace arbc::verify {
@@ -137,16 +138,28 @@ class PortChecker {
   }
 
   void check_dead() {
+    std::vector<std::string> dead;
+    size_t delivering = 0;
     for (size_t i = 0; i < scope_.rules.size(); ++i) {
+      const ScopedRule& r = scope_.rules[i];
+      bool feed = feeds_events(*r.connection);
+      delivering += !feed;
       Known known = shortcut_.can_hold(static_cast<int>(i));
       if (known == Known::Yes) continue;
       Answer a = known == Known::No ? Answer::Unsat : solver_.can_hold(static_cast<int>(i));
       if (a == Answer::Unknown)
-        return unknown("whether rule '" + rule_name(scope_.rules[i]) + "' can be selected");
+        return unknown("whether rule '" + rule_name(r) + "' can be selected");
       if (a == Answer::Sat) continue;
-      const ScopedRule& r = scope_.rules[i];
-      result_.findings.push_back(feeds_events(*r.connection) ? feed_note(r) : dead_rule(r));
+      if (feed) {
+        result_.findings.push_back(feed_note(r));
+        continue;
+      }
+      dead.push_back(rule_name(r));
+      result_.findings.push_back(
+          dead_rule_finding(r, scope_.port->port, !scope_.domain.empty(), options_.strict));
     }
+    if (std::optional<Finding> f = dead_port_finding(scope_, dead, delivering, options_.strict))
+      result_.findings.push_back(std::move(*f));
   }
 
   // A verdict about rule `r` rests on its message data. Where its body reads list elements at
@@ -179,23 +192,6 @@ class PortChecker {
          "`accept`s if it should accept short lists too",
          {}});
     result_.findings.push_back(std::move(f));
-  }
-
-  Finding dead_rule(const ScopedRule& r) const {
-    Finding f;
-    f.check = kCheckDead;
-    f.severity = options_.strict ? Severity::Error : Severity::Warning;
-    f.strict = options_.strict;
-    f.port = scope_.port->port;
-    f.rules = {rule_name(r)};
-    f.loc = r.connection->loc;
-    f.message =
-        "rule '" + rule_name(r) + "' of " + scope_.port->port +
-        " can never be selected: its effective guard `" + r.effective_guard.to_string() +
-        "` is unsatisfiable" +
-        (scope_.domain.empty() ? "" : " under the declared invariants and exclusive groups");
-    f.notes.push_back({"fix the `when` of '" + rule_name(r) + "', or remove the rule", {}});
-    return f;
   }
 
   // A rule that says it never delivers and does something to the container is there for that

@@ -49,6 +49,8 @@ golden refuted.sarif repo 1 --format sarif tests/verify/table_clean_take_mutant.
 golden warnings.txt repo 0 tests/verify/table_clean_warnings.app.json
 golden sized_numbers.txt repo 1 tests/verify/sized_numbers.spec
 golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app.json
+# A rule whose own body sets what its `when` excludes, and a port all of whose rules are dead.
+golden dead_self.txt repo 0 tests/verify/dead_self.spec
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 golden missing.txt repo 2 tests/verify/no_such_app.json
 golden bad_format.txt specs 2 --format xml tests/verify/table_clean.app.json
