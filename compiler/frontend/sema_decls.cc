@@ -3,6 +3,7 @@
 #include <set>
 
 #include "compiler/frontend/field_mismatch.h"
+#include "compiler/frontend/lapsing_permission.h"
 #include "compiler/frontend/sema.h"
 #include "compiler/frontend/sema_context.h"
 #include "compiler/frontend/stray_field.h"
@@ -414,6 +415,7 @@ void check_spec(Spec& spec, std::vector<Diagnostic>& out, const std::string& scr
   Sema sema(spec, out, script_dir);
   sema.run();
   check_activity_names(spec, out);
+  warn_lapsing_permissions(spec, out);
 }
 
 }  // namespace arbc::frontend

@@ -548,6 +548,29 @@ def case_sized_numbers_run(arbc, tmp):
     expect('(pass): {"level":1,"range":0.5,"seq":-1}' in out,
            "the uint64 2^64 - 1 (bits -1) was not delivered", out, err)
 
+def case_estop_stops_at_once(arbc, tmp):
+    """The e-stop written as `lapsing-permission` advises stops nav at the first engaged
+    message and closes 200 ms after the publisher falls silent; written the obvious way (one
+    `for` event whose predicate is `not engaged`), `arbc test` warns and nav delivers 10 ms
+    after the stop (issue 42, docs/language.md#a-stop-that-must-act-at-once)."""
+    spec = "tests/arbc_test/estop_stops_at_once.spec"
+    code, out, err = run(arbc, "test", spec)
+    expect(code == 0 and "1 passed" in out and "lapsing-permission" not in out + err,
+           f"the advised e-stop: exit {code}", out, err)
+    naive = os.path.join(tmp, "naive.spec")
+    text = open(spec, encoding="utf-8").read()
+    text = text.replace("event e_stop = EStop.state : state.engaged;",
+                        "event e_ok = EStop.state : not state.engaged for 200ms;")
+    text = text.replace("event e_stop_heard = EStop.state : true for 200ms;", "")
+    text = text.replace("when e_stop_heard and not e_stop", "when e_ok")
+    with open(naive, "w", encoding="utf-8") as f:
+        f.write(text)
+    code, out, err = run(arbc, "test", naive)
+    expect(code == 1 and "[lapsing-permission]" in out + err
+           and "expected nav drops \"not-selected\" at 110ms" in out + err,
+           f"the naive e-stop: exit {code}, no warning or no late delivery", out, err)
+
+
 def case_age_rejects_stale_commands(arbc, tmp):
     """age() in simulation (issue 41, docs/language.md#message-age): the run's clock is the
     simulated one, so stamps are instants of the run; a command 100 ms old passes, one 300 ms

@@ -6,8 +6,8 @@ usage: run_golden.py ARBC [--update] [CASE...]
 For each case, runs `arbc check <case>.spec` inside the case's folder and compares what it
 prints on stderr with <case>.err, byte for byte. The message path of `use ros2` is the case's
 `msg` folder when it has one, else empty (ARBC_MSG_PATH and AMENT_PREFIX_PATH of the caller are
-not passed on: what a case prints does not depend on the machine). The expected exit code is 0 when <case>.err
-is empty and 2 otherwise; a signal is always a failure. Without CASEs, every case runs.
+not passed on: what a case prints does not depend on the machine). The expected exit code is 2 when <case>.err
+holds an error and 0 otherwise (empty, or warnings only); a signal is always a failure. Without CASEs, every case runs.
 --update rewrites the .err files (review them by eye). ctest runs each case as its own test
 (check_golden.CASE). That every diagnostic id has a golden case is check_ids_covered.py's job.
 """
@@ -50,7 +50,7 @@ def main():
             with open(err_path, "w", encoding="utf-8") as f:
                 f.write(err)
         expected = open(err_path, encoding="utf-8").read() if os.path.exists(err_path) else None
-        want_code = 0 if expected == "" else 2
+        want_code = 2 if expected and ": error: " in expected else 0
         if code < 0:
             failures.append(f"{name}: killed by signal {-code}")
         elif expected is None:
