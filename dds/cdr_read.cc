@@ -144,7 +144,7 @@ bool read(Body& b, const Type& t, Value* out) {
 
 }  // namespace
 
-CdrRead cdr_read(const WireType& w, const uint8_t* payload, uint32_t length, Value* out) {
+CdrRead cdr_read(const Type& type, const uint8_t* payload, uint32_t length, Value* out) {
   CdrRead r;
   // The encapsulation: 0x0000 plain CDR big endian, 0x0001 little endian, then two bytes of
   // options (a writer's padding count).
@@ -156,8 +156,9 @@ CdrRead cdr_read(const WireType& w, const uint8_t* payload, uint32_t length, Val
   const uint16_t probe = 1;
   bool host_little = *reinterpret_cast<const uint8_t*>(&probe) == 1;
   Body b(payload + 4, length - 4, little != host_little);
-  // A port whose type is no struct travels as a struct whose one member is its value.
-  r.ok = read(b, *w.type, out);
+  // A port whose type is no struct travels as a struct whose one member is its value: the same
+  // bytes as the value alone.
+  r.ok = read(b, type, out);
   if (!r.ok) r.why = "the bytes end early or hold no value of the type";
   r.used = static_cast<uint32_t>(b.used()) + 4;
   return r;

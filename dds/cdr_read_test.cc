@@ -199,7 +199,7 @@ TEST(CdrReadTest, ReadsBigEndianAndRefusesWhatIsNoValue) {
   std::vector<uint8_t> be = {0, 0, 0, 0, 0xff, 0xfe, 0, 0, 0, 0, 0,   0,   0x3f, 0xf8,
                              0, 0, 0, 0, 0,    0,    0, 0, 0, 3, 'o', 'k', 0};
   Value v;
-  CdrRead r = cdr_read(*wire, be.data(), static_cast<uint32_t>(be.size()), &v);
+  CdrRead r = cdr_read(*wire->type, be.data(), static_cast<uint32_t>(be.size()), &v);
   ASSERT_TRUE(r.ok) << r.why;
   EXPECT_EQ(v, Value::record({{"a", Value(-2)}, {"b", Value(1.5)}, {"c", Value("ok")}}));
   EXPECT_EQ(r.used, be.size());
@@ -208,19 +208,19 @@ TEST(CdrReadTest, ReadsBigEndianAndRefusesWhatIsNoValue) {
   long_string[23] = 5;
   long_string.insert(long_string.end() - 1, {'a', 'y'});
   EXPECT_FALSE(
-      cdr_read(*wire, long_string.data(), static_cast<uint32_t>(long_string.size()), &v).ok);
+      cdr_read(*wire->type, long_string.data(), static_cast<uint32_t>(long_string.size()), &v).ok);
   for (uint32_t cut = 0; cut < be.size() - 1; ++cut)
-    EXPECT_FALSE(cdr_read(*wire, be.data(), cut, &v).ok) << cut;
+    EXPECT_FALSE(cdr_read(*wire->type, be.data(), cut, &v).ok) << cut;
   std::vector<uint8_t> pl = be;
   pl[1] = 3;  // PL_CDR_LE: a mutable type's parameter list
-  EXPECT_FALSE(cdr_read(*wire, pl.data(), static_cast<uint32_t>(pl.size()), &v).ok);
+  EXPECT_FALSE(cdr_read(*wire->type, pl.data(), static_cast<uint32_t>(pl.size()), &v).ok);
   // A bool is 0 or 1; a sequence's length cannot exceed the bytes left.
   auto flags = naming.port_type("M", "q", parse_type("list<bool>"), &error);
   ASSERT_TRUE(flags) << error;
   std::vector<uint8_t> two = {0, 1, 0, 0, 1, 0, 0, 0, 2};
-  EXPECT_FALSE(cdr_read(*flags, two.data(), static_cast<uint32_t>(two.size()), &v).ok);
+  EXPECT_FALSE(cdr_read(*flags->type, two.data(), static_cast<uint32_t>(two.size()), &v).ok);
   std::vector<uint8_t> huge = {0, 1, 0, 0, 0xff, 0xff, 0xff, 0x7f, 1};
-  EXPECT_FALSE(cdr_read(*flags, huge.data(), static_cast<uint32_t>(huge.size()), &v).ok);
+  EXPECT_FALSE(cdr_read(*flags->type, huge.data(), static_cast<uint32_t>(huge.size()), &v).ok);
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ bool WireTopicType::deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* p
                                 void* data) {
   auto* sample = static_cast<WireSample*>(data);
   sample->extra_bytes = 0;
-  CdrRead r = cdr_read(*wire_, payload->data, payload->length, &sample->value);
+  CdrRead r = cdr_read(*wire_->type, payload->data, payload->length, &sample->value);
   sample->bad = !r.ok;
   // A struct with more fields than the spec's decodes as its first fields and the rest is
   // ignored: the mediator would pass on a shorter message, which the program's subscribers

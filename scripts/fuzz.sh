@@ -5,8 +5,8 @@
 # Ordinary builds replay the seed corpora without clang: the fuzz_corpus_* ctests.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 # Without TARGETs: every target whose name ends in "fuzz" (fuzz/CMakeLists.txt): app_json_fuzz,
-# constraint_fuzz, lua_value_fuzz, spec_frontend_fuzz, spec_halves_fuzz. docs/reliability.md
-# records their runs.
+# cdr_read_fuzz, constraint_fuzz, lua_value_fuzz, spec_frontend_fuzz, spec_halves_fuzz.
+# docs/reliability.md records their runs.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-30}
