@@ -3,6 +3,7 @@
 #include <fastrtps/types/DynamicDataFactory.h>
 
 #include "core/join.h"
+#include "dds/cdr_write.h"
 #include "dds/dds_transport_internal.h"
 #include "dds/wire_values.h"
 #include "runtime/executor.h"
@@ -291,7 +292,7 @@ TopicWriter::~TopicWriter() { delete_sample(sample_); }
 
 bool TopicWriter::write(const Value& v, eprosima::fastrtps::rtps::WriteParams& params) {
   std::string error;
-  if (to_wire(*wire, v, sample_->data, &error) && writer->write(sample_, params)) {
+  if (cdr_write(*wire->type, v, &sample_->bytes, &error) && writer->write(sample_, params)) {
     ++written;
     if (subscribers.load() == 0) wrote_to_nobody();
     return true;

@@ -2,6 +2,8 @@
 
 #include <fastrtps/types/DynamicDataFactory.h>
 
+#include <cstring>
+
 #include "dds/cdr_read.h"
 
 namespace arbc::dds {
@@ -21,8 +23,17 @@ WireTopicType::WireTopicType(std::shared_ptr<const WireType> wire)
 }
 
 bool WireTopicType::serialize(void* data, eprosima::fastrtps::rtps::SerializedPayload_t* payload) {
+  auto* sample = static_cast<WireSample*>(data);
+  if (!sample->bytes.empty()) {
+    // The size provider reserved this much; a payload from a pool may be larger.
+    if (payload->max_size < sample->bytes.size()) return false;
+    std::memcpy(payload->data, sample->bytes.data(), sample->bytes.size());
+    payload->length = static_cast<uint32_t>(sample->bytes.size());
+    payload->encapsulation = sample->bytes[1] == 1 ? CDR_LE : CDR_BE;
+    return true;
+  }
   try {
-    return codec_.serialize(static_cast<WireSample*>(data)->data, payload);
+    return codec_.serialize(sample->data, payload);
   } catch (...) {  // Fast-DDS throws ReturnCode values and fastcdr exceptions
     return false;
   }
@@ -47,7 +58,12 @@ bool WireTopicType::deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* p
 }
 
 std::function<uint32_t()> WireTopicType::getSerializedSizeProvider(void* data) {
-  return codec_.getSerializedSizeProvider(static_cast<WireSample*>(data)->data);
+  auto* sample = static_cast<WireSample*>(data);
+  if (!sample->bytes.empty()) {
+    uint32_t size = static_cast<uint32_t>(sample->bytes.size());
+    return [size] { return size; };
+  }
+  return codec_.getSerializedSizeProvider(sample->data);
 }
 
 void* WireTopicType::createData() {

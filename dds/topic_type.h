@@ -1,5 +1,5 @@
-// The type support Fast-DDS sees for one wire type: samples are WireSample objects holding
-// Fast-DDS dynamic data to write, and the value read from a received sample's bytes. Unlike
+// The type support Fast-DDS sees for one wire type: samples are WireSample objects holding the
+// bytes to write (dds/cdr_write.h), and the value read from a received sample's bytes. Unlike
 // Fast-DDS's own DynamicPubSubType it never fails a sample that does not decode (Fast-DDS would
 // drop it without a trace, or an exception would escape into its threads): the sample arrives
 // marked `bad`, so the transport counts it as a `bad-type` drop.
@@ -11,6 +11,7 @@
 #include <fastdds/dds/topic/TopicDataType.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/value.h"
 #include "dds/wire_types.h"
@@ -18,7 +19,11 @@
 namespace arbc::dds {
 
 struct WireSample {
-  // What a writer fills (to_wire) and Fast-DDS serializes; owned (DynamicDataFactory).
+  // What a writer sends: the sample's bytes, encapsulation included (dds/cdr_write.h). The
+  // mediator fills it; Fast-DDS copies it into its payload.
+  std::vector<uint8_t> bytes;
+  // Without bytes, Fast-DDS's own encoding of this dynamic data is sent instead: the tests'
+  // reference for the bytes above (to_wire fills it). Owned (DynamicDataFactory).
   eprosima::fastrtps::types::DynamicData* data = nullptr;
   // What the last deserialize read, straight from the bytes (dds/cdr_read.h); not `data`.
   Value value;

@@ -1,4 +1,6 @@
-// Values <-> Fast-DDS dynamic data of a port's wire type (dds/wire_types.h).
+// Values <-> Fast-DDS dynamic data of a port's wire type (dds/wire_types.h). The mediator reads
+// and writes samples' bytes itself (dds/cdr_read.h, dds/cdr_write.h); these are Fast-DDS's own
+// path, which the tests hold those to.
 #pragma once
 
 #include <fastrtps/types/DynamicData.h>
