@@ -26,21 +26,32 @@ bool reads_positively(const Constraint& c, const std::string& event, bool positi
   }
 }
 
-// The flag a predicate says is off: `not X` or `X == false` (X a bool read from the message);
-// null for any other predicate (a threshold, a comparison of numbers), whose lapsing is usually
-// what the spec means (`face.certainty >= 0.8 for 1s` keeps tracking a second).
+// The flag a predicate says is off: `not X` or `X == false` (X a bool field of the message),
+// alone or as one side of an `and` (`not engaged and age(stamp) < 100ms`: the flag turning on
+// makes the predicate false all the same); null for any other predicate (a threshold, a
+// comparison of numbers), whose lapsing is usually what the spec means (`face.certainty >= 0.8
+// for 1s` keeps tracking a second).
+bool is_flag(const ast::Expr& x) {
+  return x.kind == ast::Expr::Kind::Name || x.kind == ast::Expr::Kind::Field;
+}
+
 const ast::Expr* flag_said_off(const ast::Expr& p) {
-  if (p.kind == ast::Expr::Kind::Unary && p.op == "not") return p.args[0].get();
-  if (p.kind == ast::Expr::Kind::Binary && p.op == "==" &&
+  if (p.kind == ast::Expr::Kind::Unary && p.op == "not" && is_flag(*p.args[0]))
+    return p.args[0].get();
+  if (p.kind == ast::Expr::Kind::Binary && p.op == "==" && is_flag(*p.args[0]) &&
       p.args[1]->kind == ast::Expr::Kind::Bool && !p.args[1]->boolean)
     return p.args[0].get();
+  if (p.kind == ast::Expr::Kind::Binary && p.op == "and") {
+    const ast::Expr* left = flag_said_off(*p.args[0]);
+    return left ? left : flag_said_off(*p.args[1]);
+  }
   return nullptr;
 }
 
 std::string flag_text(const ast::Expr& x) {
   if (x.kind == ast::Expr::Kind::Name) return x.text;
   if (x.kind == ast::Expr::Kind::Field) return flag_text(*x.args[0]) + "." + x.text;
-  return "the flag";
+  return "the flag";  // under an index (`state.flags[0].on`): said generically
 }
 
 Diagnostic lapsing(const ast::DerivedEventDecl& e, const ast::ArbitrateDecl& port,
