@@ -62,7 +62,7 @@ Diagnostic lapsing(const ast::DerivedEventDecl& e, const ast::ArbitrateDecl& por
   d.id = diag::LapsingPermission.text();
   d.loc = e.lifetime->expr->loc;
   d.message = "event '" + e.name + "' stays present for up to " + lifetime + " after a " +
-              e.source.qualified() + " message with " + flag +
+              "message on " + e.source.qualified() + " with " + flag +
               " true (a message on which the predicate is false does not clear an event with "
               "`for`; it lapses), so " +
               (rules.size() == 1 ? "rule '" + rules[0] + "'" : "rules " + join(rules)) + " of " +
