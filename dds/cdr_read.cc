@@ -1,5 +1,6 @@
 #include "dds/cdr_read.h"
 
+#include <bit>
 #include <cstring>
 
 #include "dds/float32_bits.h"
@@ -153,9 +154,7 @@ CdrRead cdr_read(const Type& type, const uint8_t* payload, uint32_t length, Valu
     return r;
   }
   bool little = payload[1] == 1;
-  const uint16_t probe = 1;
-  bool host_little = *reinterpret_cast<const uint8_t*>(&probe) == 1;
-  Body b(payload + 4, length - 4, little != host_little);
+  Body b(payload + 4, length - 4, little != (std::endian::native == std::endian::little));
   // A port whose type is no struct travels as a struct whose one member is its value: the same
   // bytes as the value alone.
   r.ok = read(b, type, out);

@@ -1,5 +1,6 @@
 #include "dds/cdr_write.h"
 
+#include <bit>
 #include <cstring>
 
 #include "dds/float32_bits.h"
@@ -47,7 +48,7 @@ struct Writer {
   // At its width; a uint64 is held as its bits, which the cast keeps (core/type.h).
   bool number(const Type& t, const Value& v) {
     if (t.kind == Type::Kind::Float) {
-      if (!v.is_number()) return fail("a " + type_name_of(t) + " that is no number");
+      if (!v.is_number()) return fail("a float field holds " + v.to_json());
       if (t.bits == 32)
         sink.put(narrow(v.as_float()));  // a signalling NaN stays one (float32_bits.h)
       else
@@ -130,15 +131,12 @@ struct Writer {
     }
     return fail("a value of no known type");
   }
-
-  static std::string type_name_of(const Type& t) { return t.bits == 32 ? "float32" : "float"; }
 };
 
 }  // namespace
 
 bool cdr_write(const Type& type, const Value& v, std::vector<uint8_t>* out, std::string* error) {
-  const uint16_t probe = 1;
-  bool little = *reinterpret_cast<const uint8_t*>(&probe) == 1;
+  bool little = std::endian::native == std::endian::little;
   out->assign({0, static_cast<uint8_t>(little ? 1 : 0), 0, 0});
   Writer w{Sink(out), error};
   return w.write(type, v);
