@@ -23,6 +23,7 @@ int docs_command(std::span<char*> args);
 int import_command(std::span<char*> args);
 int lsp_command(std::span<char*> args);
 int test_command(std::span<char*> args);
+int status_command(std::span<char*> args);
 
 // What `arbc build` is asked (its options, docs/cli.md#arbc-build).
 struct BuildRequest {

@@ -47,17 +47,15 @@ void* open_plugin(std::string* err) {
   return nullptr;
 }
 
-}  // namespace
-
-std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOptions options,
-                                              std::string* err) {
+// The plugin, loaded once and checked to come from this build; nullptr and *err otherwise.
+void* checked_plugin(std::string* err) {
   static void* handle = nullptr;
-  if (!handle && !(handle = open_plugin(err))) return nullptr;
+  if (handle) return handle;
+  void* opened = open_plugin(err);
+  if (!opened) return nullptr;
   using SignatureFn = const char* (*)();
-  using MakeFn = Transport* (*)(const model::App*, dds::DdsOptions*);
-  auto signature = reinterpret_cast<SignatureFn>(dlsym(handle, "arbc_dds_plugin_signature"));
-  auto make = reinterpret_cast<MakeFn>(dlsym(handle, "arbc_dds_plugin_make_transport"));
-  if (!signature || !make) {
+  auto signature = reinterpret_cast<SignatureFn>(dlsym(opened, "arbc_dds_plugin_signature"));
+  if (!signature) {
     *err = "the DDS transport " ARBC_DDS_PLUGIN_FILE " lacks its entry points (not an arbc plugin)";
     return nullptr;
   }
@@ -67,7 +65,36 @@ std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOpt
            "): install both from one build";
     return nullptr;
   }
+  return handle = opened;
+}
+
+// An entry point of the checked plugin; nullptr and *err when it lacks it.
+template <class Fn>
+Fn entry(const char* name, std::string* err) {
+  void* handle = checked_plugin(err);
+  if (!handle) return nullptr;
+  auto fn = reinterpret_cast<Fn>(dlsym(handle, name));
+  if (!fn)
+    *err = "the DDS transport " ARBC_DDS_PLUGIN_FILE " lacks its entry point " + std::string(name) +
+           " (not an arbc plugin of this build)";
+  return fn;
+}
+
+}  // namespace
+
+std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOptions options,
+                                              std::string* err) {
+  using MakeFn = Transport* (*)(const model::App*, dds::DdsOptions*);
+  auto make = entry<MakeFn>("arbc_dds_plugin_make_transport", err);
+  if (!make) return nullptr;
   return std::unique_ptr<Transport>(make(&app, &options));
+}
+
+bool read_dds_status(int domain, const std::string& topic, double wait,
+                     std::vector<Value>* statuses, std::string* err) {
+  using ReadFn = bool (*)(int, const std::string*, double, std::vector<Value>*, std::string*);
+  auto read = entry<ReadFn>("arbc_dds_plugin_read_status", err);
+  return read && read(domain, &topic, wait, statuses, err);
 }
 
 }  // namespace arbc::cli

@@ -16,4 +16,10 @@ namespace arbc::cli {
 std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOptions options,
                                               std::string* err);
 
+// dds::read_status (dds/status_reader.h) through the same plugin: the statuses the mediators of
+// `domain` write on `topic` within `wait` wall seconds. False and *err when the plugin cannot be
+// loaded or DDS cannot be set up.
+bool read_dds_status(int domain, const std::string& topic, double wait,
+                     std::vector<Value>* statuses, std::string* err);
+
 }  // namespace arbc::cli

@@ -22,6 +22,7 @@ constexpr const char* kUsage =
     "                                (by priority: a rule's delivery holds the rules below off)\n"
     "  build  SPEC [-o DIR]          verify, then write app.json and the Lua monitors\n"
     "  run    DIR|SPEC [options]     run the application on the embedded runtime\n"
+    "  status [--domain N]           what the DDS mediators on a domain say of their ports\n"
     "  test   SPEC... [options]      run the specs' `test` declarations in simulated time\n"
     "  docs   SPEC [-o DIR]          Markdown, Graphviz DOT and SVG, Mermaid\n"
     "  import yarp APP.xml -o SPEC   a yarpmanager application and its Lua monitors as a spec\n"
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
     if (command == "docs") return docs_command(args);
     if (command == "import") return import_command(args);
     if (command == "lsp") return lsp_command(args);
+    if (command == "status") return status_command(args);
   } catch (const std::exception& e) {
     // A bug, not a user error: say so plainly rather than dying on a signal.
     std::fprintf(stderr, "arbc: internal error: %s\n", e.what());
@@ -71,7 +73,7 @@ int main(int argc, char** argv) {
   // A misspelt command (`verfy`) is named with the one meant, above the usage.
   std::string hint;
   if (auto meant = arbc::closest_name(
-          command, {"check", "verify", "build", "run", "test", "docs", "import", "lsp"}))
+          command, {"check", "verify", "build", "run", "status", "test", "docs", "import", "lsp"}))
     hint = ": did you mean '" + *meant + "'?";
   std::fprintf(stderr, "arbc: unknown command '%s'%s\n\n%s", argv[1], hint.c_str(), kUsage);
   return kExitBadInput;

@@ -30,6 +30,7 @@
 #include "cli/run_interrupt.h"
 #include "cli/run_options.h"
 #include "cli/run_stand_ins.h"
+#include "cli/run_status.h"
 #include "cli/run_transport.h"
 #include "cli/verify_gate.h"
 #include "core/diagnostic.h"
@@ -149,6 +150,7 @@ struct RunArgs {
   RunOptions options;
   std::string report_path;
   std::string runtime_checks = "fail";  // --runtime-checks: stop, fail, warn or off
+  bool status = false;                  // --status: the live view on standard error
   TransportFlags transport;             // --transport, --host, --mediate, ... (cli/run_transport.h)
   RunStandIns stand_ins;                // --inputs, --stub, --stub-rate, --diff
 };
@@ -184,6 +186,9 @@ std::optional<int> parse_args(std::span<char*> args, RunArgs& a) {
       ->type_name("FILE");
   cli.add_option("--report", a.report_path,
                  "write a self-contained HTML report of the run to FILE");
+  cli.add_flag("--status", a.status,
+               "show each arbitrated port's selected rule, why the others are not selected, and "
+               "its counters on standard error, redrawn every 250ms of run time");
   add_transport_options(cli, &a.transport);
   a.stand_ins.add_options(cli);  // --inputs, --stub, --stub-rate, --diff
   try {
@@ -269,6 +274,15 @@ void watch_claims(ClaimWatch& claims, RunOptions& options, Runtime** stop) {
       [&claims](Nanos shift) { claims.resume(shift); }};
 }
 
+// Opens --report's file before the run (a path that cannot be written is bad input, said before
+// anything runs); false after saying why. No --report: nothing to open.
+bool open_report(const std::string& path, report::ReportFile* file) {
+  std::string error;
+  if (path.empty() || file->open(path, &error)) return true;
+  print_errors({error});
+  return false;
+}
+
 }  // namespace
 
 // The app of `dir`; nullopt after printing why it does not load (an error in app.json's text
@@ -338,6 +352,8 @@ int run_command(std::span<char*> args) {
   Runtime* stop_on_breach = nullptr;  // --runtime-checks stop: the runtime, once created
   if (watching)
     watch_claims(claims, options, a.runtime_checks == "stop" ? &stop_on_breach : nullptr);
+  StatusBoard board = StatusBoard::for_stderr();
+  if (a.status) board.attach(options);
   RunInterrupt interrupt;  // from here on Ctrl-C and SIGTERM end the run, not the process
   options.interrupt = interrupt.flag();
   // Errors about app.json's content name it; the others (a plugin, a monitor, the trace file,
@@ -351,13 +367,7 @@ int run_command(std::span<char*> args) {
   }
   stop_on_breach = runtime.get();
   report::ReportFile report_file;
-  if (!a.report_path.empty()) {
-    std::string open_error;
-    if (!report_file.open(a.report_path, &open_error)) {
-      print_errors({open_error});
-      return kExitBadInput;
-    }
-  }
+  if (!open_report(a.report_path, &report_file)) return kExitBadInput;
 
   RunEnd end{app,           *runtime,    options, records,
              a.report_path, report_file, proof,   describe_transport(a.transport, options)};

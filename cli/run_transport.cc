@@ -63,30 +63,12 @@ std::string describe_set(const ModuleSet& s) {
   return out;
 }
 
-// The domain: --domain, else the deployment's, else ROS 2's ROS_DOMAIN_ID, else 0. A
-// ROS_DOMAIN_ID that is not a domain is refused, not read as 0 (atoi's answer): a mediator in
-// another domain than its programs would hear nothing and say nothing.
+// The domain (choose_domain), or false after saying why not.
 bool pick_domain(const TransportFlags& flags, const dds::Deployment& d, int* domain) {
-  std::string source;
-  if (flags.domain) {
-    *domain = *flags.domain;
-    source = "--domain " + std::to_string(*domain);
-  } else if (d.domain) {
-    *domain = *d.domain;  // the file's reader checked its range
-  } else if (const char* ros = std::getenv("ROS_DOMAIN_ID"); ros && *ros) {
-    std::string_view text(ros);
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *domain);
-    source = "ROS_DOMAIN_ID='" + std::string(text) + "'";
-    if (ec != std::errc() || end != text.data() + text.size()) *domain = -1;
-  } else {
-    *domain = 0;
-  }
-  if (*domain < 0 || *domain > 232) {
-    print_error(source + " is not a DDS domain, a whole number from 0 to 232" +
-                (flags.domain ? "" : " (give --domain N, or unset ROS_DOMAIN_ID for domain 0)"));
-    return false;
-  }
-  return true;
+  std::string error;
+  if (choose_domain(flags.domain, d.domain, domain, &error)) return true;
+  print_error(error);
+  return false;
 }
 
 // ARBC_DDS_NO_PEER_AFTER=S: the first report of topics without a peer S wall seconds in
@@ -134,6 +116,7 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
   }
   dds.wait_peers = flags.wait_peers.value_or(0);
   dds.use_sim_time = flags.use_sim_time;
+  dds.status = !flags.no_status_topics;
   options->realtime = true;
   options->unknown_until_fed = true;
   options->report_silent_lapses = true;
@@ -150,6 +133,28 @@ bool apply_dds(const TransportFlags& flags, const model::App& app, RunOptions* o
 
 }  // namespace
 
+bool choose_domain(std::optional<int> flag, std::optional<int> file, int* domain,
+                   std::string* error) {
+  std::string source;
+  if (flag) {
+    *domain = *flag;
+    source = "--domain " + std::to_string(*domain);
+  } else if (file) {
+    *domain = *file;  // the file's reader checked its range
+  } else if (const char* ros = std::getenv("ROS_DOMAIN_ID"); ros && *ros) {
+    std::string_view text(ros);
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *domain);
+    source = "ROS_DOMAIN_ID='" + std::string(text) + "'";
+    if (ec != std::errc() || end != text.data() + text.size()) *domain = -1;
+  } else {
+    *domain = 0;
+  }
+  if (*domain >= 0 && *domain <= 232) return true;
+  *error = source + " is not a DDS domain, a whole number from 0 to 232" +
+           (flag ? "" : " (give --domain N, or unset ROS_DOMAIN_ID for domain 0)");
+  return false;
+}
+
 void add_transport_options(CLI::App& cli, TransportFlags* flags) {
   cli.add_option("--transport", flags->transport,
                  "inproc (default: the whole app in this process) or dds (ports to other "
@@ -159,8 +164,9 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
                  "dds: the modules this process runs: M1,M2, all (default) or none");
   cli.add_option("--mediate", flags->mediate,
                  "dds: the modules whose incoming connections run here (default: the hosted)");
-  cli.add_option("--deploy", flags->deploy,
-                 "dds: a deployment file (domain, ros2, topics, types, qos; docs/distributed.md)");
+  cli.add_option(
+      "--deploy", flags->deploy,
+      "dds: a deployment file (domain, ros2, topics, types, qos, status; docs/distributed.md)");
   add_msg_path_option(cli,
                       &flags->msg_path);  // also what the deployment's types are checked against
   cli.add_option("--domain", flags->domain,
@@ -174,6 +180,9 @@ void add_transport_options(CLI::App& cli, TransportFlags* flags) {
   cli.add_flag("--use-sim-time", flags->use_sim_time,
                "dds: age() measures stamps against ROS 2 simulated time, the last sample of "
                "/clock (rosgraph_msgs/msg/Clock), as a node with use_sim_time does");
+  cli.add_flag("--no-status-topics", flags->no_status_topics,
+               "dds: write no live status (each arbitrated port's latched status topic and "
+               "/diagnostics; docs/distributed.md#live-status)");
   cli.add_option("--time-scale", flags->time_scale,
                  "wall-clock runs: time runs K times as fast as the wall clock (default 1)");
 }
@@ -187,6 +196,7 @@ int apply_transport(const TransportFlags& flags, const model::App& app, RunOptio
                         : flags.domain           ? "--domain"
                         : flags.wait_peers       ? "--wait-peers"
                         : flags.use_sim_time     ? "--use-sim-time"
+                        : flags.no_status_topics ? "--no-status-topics"
                                                  : nullptr;
     if (needs) {
       print_error(std::string(needs) +

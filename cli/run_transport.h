@@ -24,10 +24,18 @@ struct TransportFlags {
   std::optional<int> domain;
   std::optional<double> time_scale;
   std::optional<double> wait_peers;
-  bool use_sim_time = false;  // dds: age() reads /clock (dds/sim_clock.h)
+  bool use_sim_time = false;      // dds: age() reads /clock (dds/sim_clock.h)
+  bool no_status_topics = false;  // dds: no live status topics (dds/status_types.h)
 };
 
 void add_transport_options(CLI::App& cli, TransportFlags* flags);
+
+// The DDS domain: --domain (`flag`), else the deployment file's, else ROS 2's ROS_DOMAIN_ID,
+// else 0. A ROS_DOMAIN_ID that is not a domain is refused, not read as 0 (atoi's answer): a
+// mediator in another domain than its programs would hear nothing and say nothing. False with
+// *error (what is wrong, what to do) when it is not a domain.
+bool choose_domain(std::optional<int> flag, std::optional<int> file, int* domain,
+                   std::string* error);
 
 // Checks the flags against the app and sets options' placement, clock and transport (a DDS
 // transport for `dds`). Returns an exit code (kExitOk, or kExitBadInput after printing what

@@ -279,25 +279,7 @@ std::optional<Constraint> parse_constraint(std::string_view text, std::string* e
 }
 
 bool evaluate(const Constraint& c, const std::set<std::string>& present) {
-  switch (c.op) {
-    case Constraint::Op::True:
-      return true;
-    case Constraint::Op::False:
-      return false;
-    case Constraint::Op::Event:
-      return present.count(c.event) > 0;
-    case Constraint::Op::Not:
-      return !evaluate(c.args[0], present);
-    case Constraint::Op::And:
-      for (const Constraint& a : c.args)
-        if (!evaluate(a, present)) return false;
-      return true;
-    case Constraint::Op::Or:
-      for (const Constraint& a : c.args)
-        if (evaluate(a, present)) return true;
-      return false;
-  }
-  return false;
+  return evaluate_with(c, [&present](const std::string& e) { return present.count(e) > 0; });
 }
 
 }  // namespace arbc

@@ -58,4 +58,29 @@ ConstraintParse parse_constraint(std::string_view text);
 // and tools. The message path uses CompiledConstraint.
 bool evaluate(const Constraint& c, const std::set<std::string>& present);
 
+// The same with presence asked of `present(name)` (a container, the live status): the one
+// definition of a constraint's meaning over events, inlined for each way of asking.
+template <class Present>
+bool evaluate_with(const Constraint& c, const Present& present) {
+  switch (c.op) {
+    case Constraint::Op::True:
+      return true;
+    case Constraint::Op::False:
+      return false;
+    case Constraint::Op::Event:
+      return present(c.event);
+    case Constraint::Op::Not:
+      return !evaluate_with(c.args[0], present);
+    case Constraint::Op::And:
+      for (const Constraint& a : c.args)
+        if (!evaluate_with(a, present)) return false;
+      return true;
+    case Constraint::Op::Or:
+      for (const Constraint& a : c.args)
+        if (evaluate_with(a, present)) return true;
+      return false;
+  }
+  return false;
+}
+
 }  // namespace arbc

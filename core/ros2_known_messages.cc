@@ -8,6 +8,13 @@ const std::map<std::string, std::string>& known_message_texts() {
       {"builtin_interfaces/msg/Duration", "int32 sec\nuint32 nanosec\n"},
       {"std_msgs/msg/Header", "builtin_interfaces/Time stamp\nstring frame_id\n"},
       {"std_msgs/msg/Bool", "bool data\n"},
+      // What the DDS mediator's live status writes (dds/status_types.h).
+      {"diagnostic_msgs/msg/KeyValue", "string key\nstring value\n"},
+      {"diagnostic_msgs/msg/DiagnosticStatus",
+       "byte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\nbyte level\nstring name\n"
+       "string message\nstring hardware_id\nKeyValue[] values\n"},
+      {"diagnostic_msgs/msg/DiagnosticArray",
+       "std_msgs/Header header\nDiagnosticStatus[] status\n"},
       {"std_msgs/msg/Int32", "int32 data\n"},
       {"std_msgs/msg/Int64", "int64 data\n"},
       {"std_msgs/msg/Float32", "float32 data\n"},

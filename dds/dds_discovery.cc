@@ -79,7 +79,7 @@ void DiscoveryListener::on_subscriber_discovery(
 // creates every endpoint before returning, and is not called again), so it is read unlocked.
 void DdsTransport::check_remote(const std::string& topic, const std::string& type,
                                 const std::string& user_data, const char* what) {
-  if (closing_) return;
+  if (closing_ || user_data == kStatusUserData) return;
   auto it = type_of_topic_.find(topic);
   if (it == type_of_topic_.end()) {
     std::lock_guard<std::mutex> lock(mismatch_mutex_);

@@ -56,6 +56,7 @@ bool DdsTransport::open(const TransportPlan& plan, TransportSink* sink, std::str
     sim_clock_ = std::make_unique<SimClock>();
     if (!sim_clock_->open(participant_, subscriber_, error)) return false;
   }
+  if (options_.status && options_.deployment.status && !open_status(plan, error)) return false;
   return true;
 }
 

@@ -46,6 +46,9 @@ struct DdsOptions {
   // --use-sim-time: age() measures stamps against the last sample of /clock (dds/sim_clock.h),
   // as a ROS 2 node with use_sim_time does, not against the wall clock.
   bool use_sim_time = false;
+  // The live status topics (docs/distributed.md#live-status): written unless the deployment
+  // says "status": false or `arbc run --no-status-topics` this.
+  bool status = true;
 };
 
 // A transport for `app` (its named types name the wire types). Nothing is created on the

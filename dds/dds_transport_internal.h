@@ -40,6 +40,11 @@ using WireTime = eprosima::fastrtps::rtps::Time_t;
 
 class DdsTransport;
 
+// What the live status's writers announce in their USER_DATA (dds_status.cc): another arbc
+// process leaves those topics out of what it has "seen in this domain" when it looks for the
+// topic a user meant (a status topic of Base/cmd_vel is not a misspelt cmd_vel).
+inline constexpr const char* kStatusUserData = "arbc-status";
+
 // One topic this process reads: a source of connections mediated here (an output of a module
 // hosted elsewhere) or the input of a hosted module that another process mediates.
 class TopicReader : public fdds::DataReaderListener {
@@ -178,6 +183,8 @@ class DdsTransport : public Transport {
   std::optional<Nanos> ros_time() const override {
     return sim_clock_ ? std::optional<Nanos>(sim_clock_->now()) : std::nullopt;
   }
+  bool carries_status() const override { return diagnostics_ != nullptr; }
+  void publish_status(Nanos t, Nanos stamp, const std::vector<PortStatus>& ports) override;
 
   // For the endpoints and the discovery listener.
   TransportSink& sink() { return *sink_; }
@@ -254,6 +261,13 @@ class DdsTransport : public Transport {
   double wall_seconds_since_start() const;
   bool wire_of(const TransportPort& port, std::string* topic, std::shared_ptr<const WireType>* wire,
                std::string* error);
+  // The live status (dds_status.cc): a latched DiagnosticStatus topic per arbitrated port
+  // mediated here and the DiagnosticArray of /diagnostics; false with *error when they cannot
+  // be made.
+  bool open_status(const TransportPlan& plan, std::string* error);
+  fdds::DataWriter* status_writer(const std::string& topic,
+                                  const std::shared_ptr<const WireType>& wire, bool latched,
+                                  std::string* error);
 
   model::App app_;
   DdsOptions options_;
@@ -305,6 +319,23 @@ class DdsTransport : public Transport {
   std::map<std::string, std::string> seen_remote_;
   // topics remote processes publish on -> whether one of them is arbc.
   std::map<std::string, bool> remote_writers_;
+
+  // The live status (dds_status.cc). Its types are named as ROS 2 names them, whatever the
+  // deployment's "ros2" says, so they have a naming of their own.
+  model::App status_app_;
+  Deployment status_deployment_;
+  std::unique_ptr<WireNaming> status_naming_;
+  struct StatusTopic {
+    std::string port, topic;
+    fdds::DataWriter* writer = nullptr;
+    Value last;  // what it last wrote: written again only when it changes
+  };
+  std::vector<StatusTopic> status_topics_;
+  fdds::DataWriter* diagnostics_ = nullptr;
+  Nanos diagnostics_at_ = -kNever;  // run time of the last /diagnostics write
+  WireSample status_sample_;
+  bool status_failed_ = false;  // a write of the status failed (reported once)
+  std::shared_ptr<const WireType> status_wire_, array_wire_;
 };
 
 }  // namespace arbc::dds

@@ -154,6 +154,49 @@ void read_qos(const Json& j, Deployment* out, Problems& problems) {
   }
 }
 
+// "status": false, or {"diagnostics": "/topic", "topics": {"Module.port": "/topic"}}; the
+// ports are checked against the app by check_deployment.
+void read_status(const Json& j, Deployment* out, Problems& problems) {
+  if (j.is_boolean()) {
+    out->status = j.get<bool>();
+    return;
+  }
+  if (!j.is_object()) {
+    problems.value({"status"},
+                   "status: expected false (no status topics) or an object such as "
+                   "{\"diagnostics\": \"/diagnostics\"}");
+    return;
+  }
+  for (const auto& [key, value] : j.items()) {
+    if (key == "diagnostics") {
+      if (value.is_string() && !value.get<std::string>().empty()) {
+        out->diagnostics_topic = value.get<std::string>();
+      } else {
+        problems.value({"status", key}, "status: diagnostics: expected a non-empty topic name");
+      }
+    } else if (key == "topics") {
+      if (!value.is_object()) {
+        problems.value({"status", key},
+                       "status: topics: expected an object of strings, e.g. "
+                       "{\"Base.cmd_vel\": \"/mux/active\"}");
+        continue;
+      }
+      for (const auto& [port, topic] : value.items()) {
+        if (!topic.is_string() || topic.get<std::string>().empty()) {
+          problems.value({"status", key, port},
+                         "status: topics: \"" + port + "\": expected a non-empty string");
+          continue;
+        }
+        out->status_topics[port] = topic.get<std::string>();
+      }
+    } else {
+      problems.key({"status", key}, "status: unknown key \"" + key + "\"" +
+                                        did_you_mean(key, {"diagnostics", "topics"}) +
+                                        " (the status keys are: diagnostics, topics)");
+    }
+  }
+}
+
 // One top-level key of the file.
 void read_key(const std::string& key, const Json& value, Deployment* out, Problems& problems) {
   if (key == "domain") {
@@ -172,11 +215,27 @@ void read_key(const std::string& key, const Json& value, Deployment* out, Proble
     read_string_map(value, key, "{\"Twist\": \"geometry_msgs/msg/Twist\"}", &out->types, problems);
   } else if (key == "qos") {
     read_qos(value, out, problems);
+  } else if (key == "status") {
+    read_status(value, out, problems);
   } else {
-    problems.key({key}, "unknown key \"" + key + "\"" +
-                            did_you_mean(key, {"domain", "ros2", "topics", "types", "qos"}) +
-                            " (the keys are: domain, ros2, topics, types, qos; "
-                            "docs/distributed.md#the-deployment-file)");
+    problems.key({key},
+                 "unknown key \"" + key + "\"" +
+                     did_you_mean(key, {"domain", "ros2", "topics", "types", "qos", "status"}) +
+                     " (the keys are: domain, ros2, topics, types, qos, status; "
+                     "docs/distributed.md#the-deployment-file)");
+  }
+}
+
+// Each "status" "topics" key is an arbitrated port: a status is about a port's rules.
+void check_status_topics(const Deployment& d, const model::App& app, Problems& problems) {
+  std::vector<std::string> arbitrated;
+  for (const model::ArbitratedPort& a : app.arbitrated_ports) arbitrated.push_back(a.port);
+  for (const auto& [port, topic] : d.status_topics) {
+    if (std::find(arbitrated.begin(), arbitrated.end(), port) == arbitrated.end())
+      problems.key({"status", "topics", port},
+                   "status: topics: \"" + port + "\" is not an arbitrated port of app " + app.name +
+                       did_you_mean(port, arbitrated) +
+                       " (a status topic is about the rules of a port's `arbitrate` block)");
   }
 }
 
@@ -198,7 +257,9 @@ bool parse_deployment(std::string_view text, const std::string& path, Deployment
   }
   Problems problems(path, text, errors);
   if (!root.is_object()) {
-    problems.value({}, "expected a JSON object with the keys domain, ros2, topics, types, qos");
+    problems.value({},
+                   "expected a JSON object with the keys domain, ros2, topics, types, qos, "
+                   "status");
     return problems.finish();
   }
   Deployment d;
@@ -283,6 +344,7 @@ bool check_deployment(const Deployment& d, const model::App& app, std::vector<Di
                                                app.name + did_you_mean(port, all_ports) +
                                                " (write Module.port as in the spec)");
   }
+  check_status_topics(d, app, problems);
   std::set<std::string> known(std::begin(kBuiltinTypes), std::end(kBuiltinTypes));
   for (const model::NamedType& t : app.types) known.insert(t.name);
   // Each message's definition: its .msg file on the message path, else a built-in one.

@@ -5,7 +5,8 @@
 //   {"domain": 7, "ros2": true,
 //    "topics": {"Base.cmd_vel": "/cmd_vel"},
 //    "types": {"Twist": "geometry_msgs/msg/Twist", "vec3": "geometry_msgs/msg/Vector3"},
-//    "qos": {"depth": 100, "ports": {"Bumper.state": {"reliability": "best_effort"}}}}
+//    "qos": {"depth": 100, "ports": {"Bumper.state": {"reliability": "best_effort"}}},
+//    "status": {"diagnostics": "/diagnostics", "topics": {"Base.cmd_vel": "/mux/active"}}}
 #pragma once
 
 #include <map>
@@ -44,6 +45,12 @@ struct Deployment {
   // `--msg-path` folders, searched before ARBC_MSG_PATH and AMENT_PREFIX_PATH for the `.msg`
   // files `types` are checked against (core/ros2_msg_path.h).
   std::vector<std::string> msg_path;
+  // The live status (docs/distributed.md#live-status): on unless the file says "status": false;
+  // the topic of the DiagnosticArray and each arbitrated port's status topic, where the file
+  // gives them ("status": {"diagnostics": "/diagnostics", "topics": {"Base.cmd_vel": "/mux"}}).
+  bool status = true;
+  std::string diagnostics_topic = "/diagnostics";
+  std::map<std::string, std::string> status_topics;
 
   PortQos qos_of(const std::string& port) const {
     auto it = port_qos.find(port);

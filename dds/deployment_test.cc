@@ -52,6 +52,27 @@ TEST(DeploymentTest, DefaultsWithoutKeys) {
   EXPECT_FALSE(d.domain);
   EXPECT_FALSE(d.ros2);
   EXPECT_EQ(d.depth, kDefaultDepth);
+  EXPECT_TRUE(d.status);  // the live status is on unless the file says not
+  EXPECT_EQ(d.diagnostics_topic, "/diagnostics");
+}
+
+TEST(DeploymentTest, ReadsTheStatusTopics) {
+  Deployment d;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(parse_deployment(R"({"status": {"diagnostics": "/robot/diagnostics",
+      "topics": {"Base.cmd_vel": "/mux/active"}}})",
+                               "d.json", &d, &errors))
+      << text_of(errors);
+  EXPECT_TRUE(d.status);
+  EXPECT_EQ(d.diagnostics_topic, "/robot/diagnostics");
+  EXPECT_EQ(d.status_topics.at("Base.cmd_vel"), "/mux/active");
+  model::App app = two_port_app();
+  app.arbitrated_ports.push_back({});
+  app.arbitrated_ports.back().port = "Base.cmd_vel";
+  EXPECT_TRUE(check_deployment(d, app, &errors)) << text_of(errors);
+  Deployment off;
+  ASSERT_TRUE(parse_deployment(R"({"status": false})", "d.json", &off, &errors));
+  EXPECT_FALSE(off.status);
 }
 
 // Each bad file names the file, the line and column of the offending key or value (of the
@@ -68,7 +89,13 @@ TEST(DeploymentTest, BadFilesSayWhatIsWrongAndWhere) {
        "double)"},
       {R"({"domian": 7})",
        "d.json:1:2: unknown key \"domian\"; did you mean \"domain\"? (the keys are: domain, "
-       "ros2, topics, types, qos; docs/distributed.md#the-deployment-file)"},
+       "ros2, topics, types, qos, status; docs/distributed.md#the-deployment-file)"},
+      {R"({"status": "off"})", "d.json:1:12: status: expected false (no status topics) or an "},
+      {R"({"status": {"diagnostic": "/d"}})",
+       "d.json:1:13: status: unknown key \"diagnostic\"; did you mean \"diagnostics\"? (the "
+       "status keys are: diagnostics, topics)"},
+      {R"({"status": {"diagnostics": ""}})",
+       "d.json:1:28: status: diagnostics: expected a non-empty topic name"},
       {"{\n  \"ros2\": true,\n  \"domain\": -1\n}",
        "d.json:3:13: domain: expected an integer from 0 to 232"},
       {R"({"domain": 1.5})", "d.json:1:12: domain: expected an integer from 0 to 232"},
@@ -121,7 +148,8 @@ TEST(DeploymentTest, EveryProblemInTheFilesOrder) {
   EXPECT_EQ(text_of(errors),
             "d.json:1:10: ros2: expected true or false\n"
             "d.json:2:12: domain: expected an integer from 0 to 232\n"
-            "d.json:3:2: unknown key \"bogus\" (the keys are: domain, ros2, topics, types, qos; "
+            "d.json:3:2: unknown key \"bogus\" (the keys are: domain, ros2, topics, types, qos, "
+            "status; "
             "docs/distributed.md#the-deployment-file)");
   ASSERT_EQ(errors.size(), 3u);
   EXPECT_EQ(errors[1].loc.end_line, 2);
@@ -158,6 +186,9 @@ TEST(DeploymentTest, KeysMustNameTheAppsPortsAndTypes) {
       {"{\"types\": {\"Twist\": \"a/msg/T\",\n            \"Twst\": \"a/msg/B\"}}",
        "d.json:2:13: types: \"Twst\" is not a type of app demo; did you mean \"Twist\"? (the "
        "types are: Twist, bool, float, int, string, vec3)"},
+      // A status topic is about an arbitrated port's rules.
+      {R"({"status": {"topics": {"Base.odom": "/odom_status"}}})",
+       "d.json:1:24: status: topics: \"Base.odom\" is not an arbitrated port of app demo"},
   };
   for (const Case& c : cases) {
     Deployment d;

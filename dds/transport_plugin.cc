@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "dds/status_reader.h"
+
 extern "C" {
 
 __attribute__((visibility("default"))) const char* arbc_dds_plugin_signature() {
@@ -12,5 +14,11 @@ __attribute__((visibility("default"))) const char* arbc_dds_plugin_signature() {
 __attribute__((visibility("default"))) arbc::Transport* arbc_dds_plugin_make_transport(
     const arbc::model::App* app, arbc::dds::DdsOptions* options) {
   return arbc::dds::make_dds_transport(*app, std::move(*options)).release();
+}
+
+__attribute__((visibility("default"))) bool arbc_dds_plugin_read_status(
+    int domain, const std::string* topic, double wait, std::vector<arbc::Value>* statuses,
+    std::string* error) {
+  return arbc::dds::read_status(domain, *topic, wait, statuses, error);
 }
 }

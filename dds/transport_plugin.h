@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/app_model.h"
 #include "dds/dds_transport.h"
@@ -31,4 +32,7 @@ const char* arbc_dds_plugin_signature();
 // make_dds_transport(*app, std::move(*options)), released to the caller.
 arbc::Transport* arbc_dds_plugin_make_transport(const arbc::model::App* app,
                                                 arbc::dds::DdsOptions* options);
+// dds::read_status (dds/status_reader.h), for `arbc status`.
+bool arbc_dds_plugin_read_status(int domain, const std::string* topic, double wait,
+                                 std::vector<arbc::Value>* statuses, std::string* error);
 }

@@ -113,6 +113,8 @@ void Runtime::start() {
   if (options_.unknown_until_fed) collect_unknown_events();
   collect_feedback_events();
   if (options_.report_silent_lapses) watch_lapses(std::chrono::milliseconds(100));
+  if (options_.on_status || (transport_ && transport_->carries_status()))
+    post_status(now() + options_.status_period);
   if (environment_) {
     environment_slot_ = std::make_unique<EnvironmentSlot>();
     environment_slot_->runtime = this;
@@ -222,6 +224,7 @@ void Runtime::shutdown() {
     if (!cp->queue.empty()) trace_.pending(end, cp->name, cp->queue.size());
   }
   for (auto& in : in_ports_) in->container.present(end);
+  if (options_.on_status && status_at_ != end) options_.on_status(end, port_status());
   if (options_.on_finish) options_.on_finish(end, trace_);
   trace_.close();
 }

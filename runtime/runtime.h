@@ -41,6 +41,7 @@
 #include "runtime/lua_monitor.h"
 #include "runtime/mediator_memory.h"
 #include "runtime/module.h"
+#include "runtime/port_status.h"
 #include "runtime/trace.h"
 #include "runtime/transport.h"
 
@@ -95,6 +96,12 @@ struct RunOptions {
   // Not empty: called once at shutdown, with the instant the run ended, before the trace is
   // closed (the runtime checks judge what only the end shows and write it into the trace).
   std::function<void(Nanos, Trace&)> on_finish;
+  // Not empty: the live view (`arbc run --status`): called on the runtime's thread with each
+  // arbitrated port mediated here (Runtime::port_status), every status_period of run time from
+  // the start, and once more at the end. A transport that carries the status
+  // (Transport::carries_status: DDS's status topics) gets it at the same instants.
+  std::function<void(Nanos, const std::vector<PortStatus>&)> on_status;
+  Nanos status_period = std::chrono::milliseconds(250);
   SandboxLimits limits;
   size_t queue_capacity = 256;  // messages per connection
   int quarantine_after = 5;     // consecutive failing callbacks
@@ -168,6 +175,9 @@ class Runtime {
   const std::string& stop_reason() const { return stop_reason_; }
   bool stopped_early() const { return !stop_reason_.empty(); }
   std::vector<ConnectionStats> stats() const;
+  // Each arbitrated port mediated here: its selected rule, why each other rule is not, its
+  // counters (runtime/port_status.h). On the runtime's thread (RunOptions::on_status).
+  std::vector<PortStatus> port_status();
   // Inputs of hosted modules mediated by another process (empty in a single-process run).
   std::vector<InputStats> input_stats() const;
   // The transport's name ("inproc", "dds") and its end-of-run lines.
@@ -238,6 +248,10 @@ class Runtime {
   // Looks at every mediated container each `period` s, so that lapses are seen (and reported)
   // when they happen even when no message arrives any more.
   void watch_lapses(Nanos period);
+  // The live view (runtime_status.cc): what keeps c from delivering now ("" nothing), and the
+  // periodic call of RunOptions::on_status from `at` on.
+  std::string blocked_now(Connection& c, Nanos t);
+  void post_status(Nanos at);
   void report(const std::string& line);
   // An instant of this run as its reports write it: in the unit of the run's duration, as
   // `arbc run`'s last line and the run report do (core/time_format.h).
@@ -318,7 +332,9 @@ class Runtime {
   std::function<void(const std::string&)> reporter_;
   std::string stop_reason_;
   Nanos start_time_{0};
-  std::set<std::string> failed_open_;  // events taken as absent after their feed's silence
+  std::set<std::string> failed_open_;    // events taken as absent after their feed's silence
+  std::vector<uint64_t> status_losses_;  // each port's losses at the last port_status()
+  Nanos status_at_ = -kNever;            // the instant of the last periodic status
   bool started_ = false, shut_down_ = false;
   BusyMarker busy_;
   std::unique_ptr<SavedMemory> memory_;  // read by create, applied (and dropped) by start

@@ -146,6 +146,12 @@ struct Runtime::Connection : MonitorHost {
   void print(const std::string& line) override;
 };
 
+// One event of Connection::unknown: not known yet at `now` (its feed silent since the run's
+// `start`, and not past its `otherwise absent after`); and how a drop's detail and the live
+// status say so (unknown_events.cc).
+bool still_unknown(const Runtime::Connection::UnknownEvent& u, Nanos now, Nanos start);
+std::string unknown_text(const Runtime::Connection::UnknownEvent& u);
+
 // The runtime's side of the transport seam (runtime/transport.h).
 class Runtime::TransportLink : public TransportSink {
  public:

@@ -26,6 +26,7 @@
 #include "core/value.h"
 #include "runtime/drop_reason.h"
 #include "runtime/module.h"
+#include "runtime/port_status.h"
 #include "runtime/transport_status.h"
 
 namespace arbc {
@@ -118,6 +119,12 @@ class Transport {
   // --use-sim-time: the last /clock sample), for age(); nullopt: the executor's clock
   // (Executor::stamp_origin). Called from the runtime's thread, while a message is judged.
   virtual std::optional<Nanos> ros_time() const { return std::nullopt; }
+  // The live status of the arbitrated ports mediated here (runtime/port_status.h) at run time
+  // `t` (`stamp`: its ROS 2 time), every RunOptions::status_period: a transport that carries it
+  // writes it (DDS: each port's latched status topic and /diagnostics). carries_status: whether
+  // it does (after open), so that the runtime takes the status only then.
+  virtual bool carries_status() const { return false; }
+  virtual void publish_status(Nanos t, Nanos stamp, const std::vector<PortStatus>& ports) {}
 };
 
 // Today's behaviour: every module hosted and mediated in this one process; publish and deliver

@@ -30,12 +30,20 @@ void Runtime::collect_unknown_events() {
   }
 }
 
+bool still_unknown(const Runtime::Connection::UnknownEvent& u, Nanos now, Nanos start) {
+  if (u.feed->fed) return false;
+  // `otherwise absent after D`: the spec lets this feed's silence count as absence.
+  return !u.lifetime || now < later(start, *u.lifetime);
+}
+
+std::string unknown_text(const Runtime::Connection::UnknownEvent& u) {
+  return "unknown since start: " + u.event + " (nothing from " + u.feed->model->source + " yet)";
+}
+
 bool Runtime::knows_events_of(Connection& c, std::string* why) {
   std::erase_if(c.unknown, [&](const Connection::UnknownEvent& u) {
-    if (u.feed->fed) return true;
-    // `otherwise absent after D`: the spec lets this feed's silence count as absence.
-    if (!u.lifetime || now() < later(start_time_, *u.lifetime)) return false;
-    if (failed_open_.insert(u.event).second)
+    if (still_unknown(u, now(), start_time_)) return false;
+    if (!u.feed->fed && failed_open_.insert(u.event).second)
       report("event " + u.event + " taken as absent at " + run_time_text(now()) +
              ": nothing from " + u.feed->model->source +
              " since the start, and the spec lets it fail open after " +
@@ -43,8 +51,7 @@ bool Runtime::knows_events_of(Connection& c, std::string* why) {
     return true;
   });
   if (c.unknown.empty()) return true;
-  const Connection::UnknownEvent& u = c.unknown.front();
-  *why = "unknown since start: " + u.event + " (nothing from " + u.feed->model->source + " yet)";
+  *why = unknown_text(c.unknown.front());
   return false;
 }
 

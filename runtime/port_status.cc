@@ -1,0 +1,121 @@
+#include "runtime/port_status.h"
+
+#include <chrono>
+
+#include "core/duration_literal.h"
+#include "core/join.h"
+
+namespace arbc {
+
+namespace {
+
+using Present = std::function<bool(const std::string&)>;
+using HoldOf = std::function<std::string(const std::string&)>;
+
+// The parts of a false `c` that make it false, each as the state that does: the conjuncts of an
+// `and` that are false, every alternative of an `or` (all false), an event's presence.
+void false_parts(const Constraint& c, const Present& present, const HoldOf& hold_of,
+                 std::vector<std::string>& out) {
+  switch (c.op) {
+    case Constraint::Op::True:
+      return;
+    case Constraint::Op::False:
+      out.push_back("its `when` is false");
+      return;
+    case Constraint::Op::Event:
+      out.push_back(c.event + " absent");
+      return;
+    case Constraint::Op::Not:
+      if (c.args[0].op == Constraint::Op::Event) {
+        std::string rule = hold_of(c.args[0].event);
+        out.push_back(rule.empty() ? c.args[0].event + " present" : "held by " + rule + "'s hold");
+      } else {
+        out.push_back("`" + c.args[0].to_string() + "` holds");
+      }
+      return;
+    case Constraint::Op::And:
+    case Constraint::Op::Or:  // false: each alternative is, and each says why
+      for (const Constraint& a : c.args)
+        if (!evaluate_with(a, present)) false_parts(a, present, hold_of, out);
+      return;
+  }
+}
+
+// A live view's age: to the millisecond (a run's instants are nanoseconds; a terminal updated
+// twice a second has no use for them).
+std::string age_text(Nanos age) {
+  using std::chrono::milliseconds;
+  return duration_literal(Nanos(std::chrono::duration_cast<milliseconds>(age)));
+}
+
+}  // namespace
+
+const char* status_level_name(StatusLevel level) {
+  switch (level) {
+    case StatusLevel::Ok:
+      return "OK";
+    case StatusLevel::Warn:
+      return "WARN";
+    case StatusLevel::Error:
+      return "ERROR";
+  }
+  return "ERROR";
+}
+
+std::string why_false(const Constraint& c, const Present& present, const HoldOf& hold_of) {
+  if (evaluate_with(c, present)) return "";
+  std::vector<std::string> parts;
+  false_parts(c, present, hold_of, parts);
+  return join(parts, ", ");
+}
+
+std::string rule_state_text(const RuleStatus& r, Nanos now) {
+  if (r.selected) return "selected, delivered " + age_text(now - r.last_delivery) + " ago";
+  if (!r.blocked.empty()) return r.blocked;
+  if (r.last_arrival == -kNever) return "may deliver; nothing from " + r.source + " yet";
+  return "may deliver; last message from " + r.source + " " + age_text(now - r.last_arrival) +
+         " ago";
+}
+
+void summarize_port(PortStatus& p, bool losses) {
+  std::vector<std::string> quarantined, ready;
+  for (const RuleStatus& r : p.rules) {
+    if (r.blocked == "quarantined") quarantined.push_back(r.rule);
+    if (r.blocked.empty()) ready.push_back(r.rule);
+  }
+  if (!quarantined.empty()) {
+    p.level = StatusLevel::Error;
+    p.message = join(quarantined, ", ", " and ") + " quarantined";
+  } else if (!p.selected.empty()) {
+    p.level = StatusLevel::Ok;
+    p.message = p.selected + " selected";
+  } else if (!ready.empty()) {
+    p.level = StatusLevel::Ok;
+    p.message = "none selected; " + join(ready, ", ", " or ") + " may deliver";
+  } else {
+    // Every rule blocked: the destination gets nothing (by design under an e-stop, but whoever
+    // watches the robot should see it).
+    p.level = StatusLevel::Warn;
+    p.message = "no rule may deliver";
+  }
+  if (losses && p.level == StatusLevel::Ok) {
+    p.level = StatusLevel::Warn;
+    p.message += "; messages lost since the last status";
+  }
+}
+
+std::string status_lines(const std::vector<PortStatus>& ports, Nanos now) {
+  std::string out;
+  for (const PortStatus& p : ports) {
+    out += p.port + "  " + status_level_name(p.level) + "  " + p.message;
+    for (const RuleStatus& r : p.rules) {
+      if (r.selected) continue;  // the message names it
+      out += " | " + r.rule + ": " + rule_state_text(r, now);
+    }
+    out +=
+        "  [" + std::to_string(p.delivered) + " of " + std::to_string(p.arrived) + " delivered]\n";
+  }
+  return out;
+}
+
+}  // namespace arbc
