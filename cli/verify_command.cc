@@ -266,6 +266,7 @@ int verify_command(std::span<char*> args) {
       continue;
     }
     reports.push_back({input, std::move(*report)});
+    reports.back().warnings = std::move(notes.warnings);
   }
 
   return finish(a, reports, bad_input);

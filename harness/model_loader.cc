@@ -36,6 +36,8 @@ std::optional<model::App> load_spec_model(const std::string& path, LoadNotes* no
     notes->errors = compiled.diagnostics;
     return std::nullopt;
   }
+  for (const Diagnostic& d : compiled.diagnostics)
+    if (d.severity == Severity::Warning) notes->warnings.push_back(d);
   return compiled.lowered->app;
 }
 

@@ -25,6 +25,8 @@ Diagnostic file_error(const std::string& file, std::string message, DiagId id);
 struct LoadNotes {
   std::string rendered;  // a spec's rendered diagnostics (errors and warnings), for stderr
   std::vector<Diagnostic> errors;  // when loading fails: why, for the JSON and SARIF reports
+  // A spec that loads: the front end's warnings (`lapsing-permission`), for those reports too.
+  std::vector<Diagnostic> warnings;
 };
 
 // Reads the model from `path`; nullopt and `err` for the user ("FILE: what is wrong; what to

@@ -19,6 +19,9 @@ struct InputReport {
   // Bad input (a spec with errors, an app.json that does not load): what is wrong. Such an
   // input was not verified (`report` is empty); its verdict is "error", never "proved".
   std::vector<Diagnostic> errors;
+  // A spec that was verified: the front end's warnings about it (`lapsing-permission`), printed
+  // on stderr as it loaded, carried into every format and counted in the summary.
+  std::vector<Diagnostic> warnings;
   bool bad_input() const { return !errors.empty(); }
 };
 

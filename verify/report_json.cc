@@ -239,8 +239,9 @@ std::string format_json(const std::vector<InputReport>& inputs, bool stats) {
       for (const TemporalResult& t : r.temporal) j["temporal"].push_back(temporal_json(t));
     }
     j["diagnostics"] = Json::array();
+    for (const Diagnostic& d : in.warnings) j["diagnostics"].push_back(diagnostic_json(d));
     j["errors"] = r.count(Severity::Error);
-    j["warnings"] = r.count(Severity::Warning);
+    j["warnings"] = r.count(Severity::Warning) + static_cast<int>(in.warnings.size());
     if (stats) j["stats"] = {{"seconds", r.seconds}, {"solver_queries", r.solver_queries}};
     refuted |= r.verdict == Verdict::Refuted;
     unknown |= r.verdict == Verdict::Unknown;

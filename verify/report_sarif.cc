@@ -92,7 +92,9 @@ void add_input_rules(const std::vector<InputReport>& inputs, Json& rules) {
   std::set<std::string> listed;
   for (const CheckDoc& c : kChecks) listed.insert(c.id);
   for (const InputReport& in : inputs) {
-    for (const Diagnostic& d : in.errors) {
+    std::vector<Diagnostic> all = in.errors;
+    all.insert(all.end(), in.warnings.begin(), in.warnings.end());
+    for (const Diagnostic& d : all) {
       if (!listed.insert(d.id).second) continue;
       std::string meaning = "a diagnostic of arbc";
       for (const frontend::CheckId& id : frontend::all_check_ids())
@@ -102,7 +104,8 @@ void add_input_rules(const std::vector<InputReport>& inputs, Json& rules) {
   }
 }
 
-// A bad input's diagnostic as a result: the input was not verified, whatever the level says.
+// A diagnostic of the front end as a result: a bad input's (it was not verified, whatever the
+// level says), or a warning about a spec that was verified (`lapsing-permission`).
 Json diagnostic_result(const Diagnostic& d) {
   Json r;
   r["ruleId"] = d.id;
@@ -233,6 +236,7 @@ std::string format_sarif(const std::vector<InputReport>& inputs, const std::stri
   }
   for (const InputReport& in : inputs) {
     for (const Diagnostic& d : in.errors) results.push_back(diagnostic_result(d));
+    for (const Diagnostic& d : in.warnings) results.push_back(diagnostic_result(d));
     for (const PortResult& p : in.report.ports) {
       for (const Finding& f : p.findings) add(f);
     }

@@ -170,7 +170,7 @@ std::string format_text(const std::vector<InputReport>& inputs, SourceCache* sou
       by_outcome[static_cast<int>(t.outcome)] += 1;
     }
     errors += static_cast<size_t>(r.count(Severity::Error));
-    warnings += static_cast<size_t>(r.count(Severity::Warning));
+    warnings += static_cast<size_t>(r.count(Severity::Warning)) + in.warnings.size();
     refuted |= r.verdict == Verdict::Refuted;
     unknown |= r.verdict == Verdict::Unknown;
     seconds += r.seconds;

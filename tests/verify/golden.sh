@@ -51,6 +51,11 @@ golden sized_numbers.txt repo 1 tests/verify/sized_numbers.spec
 golden warnings_strict.txt repo 1 --strict tests/verify/table_clean_warnings.app.json
 # A rule whose own body sets what its `when` excludes, and a port all of whose rules are dead.
 golden dead_self.txt repo 0 tests/verify/dead_self.spec
+# A warning of the front end (lapsing-permission) about a spec that is proved: counted in the
+# summary and carried into the JSON and SARIF reports, not only printed on stderr.
+golden lapsing.txt repo 0 tests/check/lapsing_permission/lapsing_permission.spec
+golden lapsing.json repo 0 --format json tests/check/lapsing_permission/lapsing_permission.spec
+golden lapsing.sarif repo 0 --format sarif tests/check/lapsing_permission/lapsing_permission.spec
 # Bad input: exit 2 and a message on stderr (pinned: stderr is captured with stdout).
 golden missing.txt repo 2 tests/verify/no_such_app.json
 golden bad_format.txt specs 2 --format xml tests/verify/table_clean.app.json
