@@ -91,10 +91,11 @@ std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOpt
 }
 
 bool read_dds_status(int domain, const std::string& topic, double wait,
-                     std::vector<Value>* statuses, std::string* err) {
-  using ReadFn = bool (*)(int, const std::string*, double, std::vector<Value>*, std::string*);
+                     std::vector<Value>* statuses, std::string* note, std::string* err) {
+  using ReadFn =
+      bool (*)(int, const std::string*, double, std::vector<Value>*, std::string*, std::string*);
   auto read = entry<ReadFn>("arbc_dds_plugin_read_status", err);
-  return read && read(domain, &topic, wait, statuses, err);
+  return read && read(domain, &topic, wait, statuses, note, err);
 }
 
 }  // namespace arbc::cli

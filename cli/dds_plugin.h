@@ -17,9 +17,9 @@ std::unique_ptr<Transport> load_dds_transport(const model::App& app, dds::DdsOpt
                                               std::string* err);
 
 // dds::read_status (dds/status_reader.h) through the same plugin: the statuses the mediators of
-// `domain` write on `topic` within `wait` wall seconds. False and *err when the plugin cannot be
-// loaded or DDS cannot be set up.
+// `domain` write on `topic` within `wait` wall seconds, and a note on the participant's set-up
+// (or empty). False and *err when the plugin cannot be loaded or DDS cannot be set up.
 bool read_dds_status(int domain, const std::string& topic, double wait,
-                     std::vector<Value>* statuses, std::string* err);
+                     std::vector<Value>* statuses, std::string* note, std::string* err);
 
 }  // namespace arbc::cli

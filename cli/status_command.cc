@@ -47,7 +47,10 @@ int status_command(std::span<char*> args) {
     return kExitBadInput;
   }
   std::vector<Value> statuses;
-  if (!read_dds_status(domain, topic, wait, &statuses, &error)) {
+  std::string note;
+  bool read = read_dds_status(domain, topic, wait, &statuses, &note, &error);
+  if (!note.empty()) std::fprintf(stderr, "arbc status: %s\n", note.c_str());
+  if (!read) {
     std::fprintf(stderr, "arbc status: error: %s\n", error.c_str());
     return kExitRuntimeFailure;
   }

@@ -40,4 +40,8 @@ std::string duration_literal(double seconds) {
   return trimmed(micros / 1e6, 6) + "s";
 }
 
+std::string age_literal(Nanos age) {
+  return duration_literal(Nanos(std::chrono::duration_cast<std::chrono::milliseconds>(age)));
+}
+
 }  // namespace arbc

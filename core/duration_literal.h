@@ -19,4 +19,8 @@ std::string duration_literal(Nanos t);
 // to the microsecond, in the same form.
 std::string duration_literal(double seconds);
 
+// An age in a live view (`arbc run --status`, the DDS status): to the millisecond, rounded
+// down; a view refreshed four times a second has no use for a run's nanoseconds.
+std::string age_literal(Nanos age);
+
 }  // namespace arbc

@@ -39,3 +39,17 @@ TEST(DurationLiteral, NanosecondsAreExact) {
 
 }  // namespace
 }  // namespace arbc
+
+namespace arbc {
+namespace {
+
+// A live view's age: milliseconds, rounded down (47.432752 ms is 47ms).
+TEST(DurationLiteral, AgesToTheMillisecond) {
+  using namespace std::chrono_literals;
+  EXPECT_EQ(age_literal(47432752ns), "47ms");
+  EXPECT_EQ(age_literal(11146968094ns), "11.146s");
+  EXPECT_EQ(age_literal(999999ns), "0s");
+}
+
+}  // namespace
+}  // namespace arbc

@@ -43,10 +43,9 @@ bool take_all(fdds::DataReader* reader, WireSample* sample, std::map<std::string
 }  // namespace
 
 bool read_status(int domain, const std::string& topic, double wait, std::vector<Value>* statuses,
-                 std::string* error) {
+                 std::string* note, std::string* error) {
   fdds::DomainParticipantQos qos;
-  std::string note;
-  if (!participant_qos({"arbc status", domain, 3}, &qos, &note, error)) return false;
+  if (!participant_qos({"arbc status", domain, 3}, &qos, note, error)) return false;
   fdds::DomainParticipantFactory* factory = fdds::DomainParticipantFactory::get_instance();
   fdds::DomainParticipant* p = factory->create_participant(domain, qos);
   if (!p) {

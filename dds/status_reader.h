@@ -12,8 +12,9 @@ namespace arbc::dds {
 // Listens to `topic` (a diagnostic_msgs/msg/DiagnosticArray topic as ROS 2 writes it:
 // "/diagnostics") in `domain` for `wait` wall seconds, and returns the last status heard of
 // each name that an arbc mediator wrote (a status whose first key is "selected"), by name.
-// False with *error when DDS cannot be set up.
+// False with *error when DDS cannot be set up. *note: what the participant's set-up has to say
+// (dds/participant_qos.h: an id past the initial peers' reach), or empty.
 bool read_status(int domain, const std::string& topic, double wait, std::vector<Value>* statuses,
-                 std::string* error);
+                 std::string* note, std::string* error);
 
 }  // namespace arbc::dds

@@ -91,10 +91,10 @@ Value diagnostic_array_value(const std::vector<PortStatus>& ports, const std::st
       if (n > 0)
         values.push_back(key_value(std::string("dropped ") + info.name, std::to_string(n)));
     }
-    values.push_back(key_value(
-        "last delivery", p.last_delivery == -kNever
-                             ? "none yet"
-                             : duration_literal(t - p.last_delivery) + " ago by " + p.last_rule));
+    values.push_back(key_value("last delivery",
+                               p.last_delivery == -kNever
+                                   ? "none yet"
+                                   : age_literal(t - p.last_delivery) + " ago by " + p.last_rule));
     statuses.push_back(status_value(p, app, std::move(values)));
   }
   // builtin_interfaces/msg/Time: whole seconds (rounded down) and the nanoseconds past them.

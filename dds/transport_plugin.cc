@@ -18,7 +18,7 @@ __attribute__((visibility("default"))) arbc::Transport* arbc_dds_plugin_make_tra
 
 __attribute__((visibility("default"))) bool arbc_dds_plugin_read_status(
     int domain, const std::string* topic, double wait, std::vector<arbc::Value>* statuses,
-    std::string* error) {
-  return arbc::dds::read_status(domain, *topic, wait, statuses, error);
+    std::string* note, std::string* error) {
+  return arbc::dds::read_status(domain, *topic, wait, statuses, note, error);
 }
 }

@@ -34,5 +34,6 @@ arbc::Transport* arbc_dds_plugin_make_transport(const arbc::model::App* app,
                                                 arbc::dds::DdsOptions* options);
 // dds::read_status (dds/status_reader.h), for `arbc status`.
 bool arbc_dds_plugin_read_status(int domain, const std::string* topic, double wait,
-                                 std::vector<arbc::Value>* statuses, std::string* error);
+                                 std::vector<arbc::Value>* statuses, std::string* note,
+                                 std::string* error);
 }

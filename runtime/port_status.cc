@@ -1,7 +1,5 @@
 #include "runtime/port_status.h"
 
-#include <chrono>
-
 #include "core/duration_literal.h"
 #include "core/join.h"
 
@@ -41,13 +39,6 @@ void false_parts(const Constraint& c, const Present& present, const HoldOf& hold
   }
 }
 
-// A live view's age: to the millisecond (a run's instants are nanoseconds; a terminal updated
-// twice a second has no use for them).
-std::string age_text(Nanos age) {
-  using std::chrono::milliseconds;
-  return duration_literal(Nanos(std::chrono::duration_cast<milliseconds>(age)));
-}
-
 }  // namespace
 
 const char* status_level_name(StatusLevel level) {
@@ -70,10 +61,10 @@ std::string why_false(const Constraint& c, const Present& present, const HoldOf&
 }
 
 std::string rule_state_text(const RuleStatus& r, Nanos now) {
-  if (r.selected) return "selected, delivered " + age_text(now - r.last_delivery) + " ago";
+  if (r.selected) return "selected, delivered " + age_literal(now - r.last_delivery) + " ago";
   if (!r.blocked.empty()) return r.blocked;
   if (r.last_arrival == -kNever) return "may deliver; nothing from " + r.source + " yet";
-  return "may deliver; last message from " + r.source + " " + age_text(now - r.last_arrival) +
+  return "may deliver; last message from " + r.source + " " + age_literal(now - r.last_arrival) +
          " ago";
 }
 

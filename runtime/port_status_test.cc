@@ -156,6 +156,34 @@ TEST(PortStatusTest, AHoldIsNamed) {
   EXPECT_EQ(rule(p, "nav").blocked, "");
 }
 
+// A rule whose accept sets an event its `when` reads (an imported twist_mux input reads its own
+// activity): its next message finds the event present, so the event's absence now blocks
+// nothing and the status does not say it does.
+TEST(PortStatusTest, WhatTheNextMessageSetsIsPresentForIt) {
+  TestApp t;
+  t.module("Src", {"out x: int"});
+  t.module("Sink", {"in x: int"});
+  t.app.events.push_back({"x_active", 500ms, "", {}});
+  model::Connection& r = t.connect("x", "Src.x", "Sink.x", "x_active",
+                                   "PortMonitor.accept = function(m)\n"
+                                   "  PortMonitor.setEvent('x_active', 0.5)\n"
+                                   "  return true\n"
+                                   "end\n");
+  r.sets = r.must_set = {"x_active"};
+  model::ArbitratedPort port;
+  port.port = "Sink.x";
+  port.rules = {"x"};
+  t.app.arbitrated_ports.push_back(port);
+  auto rt = t.start();
+  PortStatus p = status_at(*rt, 100ms);
+  EXPECT_EQ(rule(p, "x").blocked, "");
+  EXPECT_EQ(p.message, "none selected; x may deliver");
+  TestApp::publish_at(*rt, 0.2, "Src", "x", Value(1));
+  p = status_at(*rt, 300ms);
+  EXPECT_EQ(p.selected, "x");  // and its message was delivered, as the status foretold
+  EXPECT_EQ(p.delivered, 1u);
+}
+
 // RunOptions::on_status: every period from the start, and once at the end (unless a period
 // ended there).
 TEST(PortStatusTest, CalledEveryPeriodAndAtTheEnd) {

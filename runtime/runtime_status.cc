@@ -1,6 +1,6 @@
 // The live view's side of the runtime (runtime/port_status.h): each arbitrated port mediated
 // here as the message path would judge its rules now, taken on the runtime's thread.
-#include <numeric>
+#include <algorithm>
 
 #include "core/duration_literal.h"
 #include "runtime/runtime_internal.h"
@@ -28,17 +28,26 @@ std::string Runtime::blocked_now(Connection& c, Nanos t) {
   // decision's to make, at its instant).
   for (const Connection::UnknownEvent& u : c.unknown)
     if (still_unknown(u, t, start_time_)) return unknown_text(u);
-  std::string why;
+  // Its next message is judged on the container as that message's accept leaves it: what
+  // every accepting path sets is present then, what it unsets absent (core/effective_guard.h).
+  // A twist_mux input's rule reads its own activity, which its message sets: "joystick_active
+  // absent" now says nothing about the next joystick command.
   InPort& in = *c.destination;
-  if (!c.constraint.evaluate(in.container.present(t))) {
-    auto present = [&](const std::string& e) { return in.container.has(e, t); };
-    auto hold_of = [&](const std::string& e) -> std::string {
-      for (const auto& other : connections_)
-        if (other->destination == &in && other->model->activity_event == e)
-          return other->model->name;
-      return "";
-    };
-    why = why_false(c.model->constraint, present, hold_of);
+  auto present = [&](const std::string& e) {
+    if (std::find(c.model->must_set.begin(), c.model->must_set.end(), e) != c.model->must_set.end())
+      return true;
+    if (std::find(c.model->must_unset.begin(), c.model->must_unset.end(), e) !=
+        c.model->must_unset.end())
+      return false;
+    return in.container.has(e, t);
+  };
+  auto hold_of = [&](const std::string& e) -> std::string {
+    for (const auto& other : connections_)
+      if (other->destination == &in && other->model->activity_event == e) return other->model->name;
+    return "";
+  };
+  if (!evaluate_with(c.model->constraint, present)) {
+    std::string why = why_false(c.model->constraint, present, hold_of);
     return why.empty() ? "its `when` is false" : why;
   }
   if (c.throttle && t < c.last_delivery + *c.throttle)
