@@ -41,8 +41,9 @@ int status_command(std::span<char*> args) {
   }
   int domain = 0;
   std::string error;
-  if (!choose_domain(domain_flag, std::nullopt, &domain, &error) ||
-      (wait > 3600 && !(error = "--wait must be at most 1h").empty())) {
+  if (topic.empty() || topic == "/") error = "--topic needs a topic name, such as /diagnostics";
+  if (wait > 3600) error = "--wait must be at most 1h";
+  if (!error.empty() || !choose_domain(domain_flag, std::nullopt, &domain, &error)) {
     std::fprintf(stderr, "arbc status: error: %s\n", error.c_str());
     return kExitBadInput;
   }

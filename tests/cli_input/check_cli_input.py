@@ -534,6 +534,17 @@ def case_counterexamples_file(arbc, plugin):
                          f"--counterexamples {f.name}: not a folder")
 
 
+def case_status_bad_input(arbc, plugin):
+    # `arbc status` (issue 42): what is not a domain, a wait or a topic is refused at once, before
+    # listening; an empty topic once reached the DDS reader.
+    expect_bad_input(run(arbc, "status", "--domain", "999"), "--domain 999 is not a DDS domain")
+    expect_bad_input(run(arbc, "status", "--topic", ""), "--topic needs a topic name")
+    expect_bad_input(run(arbc, "status", "--wait", "2h"), "--wait must be at most 1h")
+    expect_bad_input(run(arbc, "status", "--wait", "0"), "is not a positive number of seconds")
+    expect_bad_input(run(arbc, "run", "specs/face_filter.spec", "--no-status-topics"),
+                     "--no-status-topics needs --transport dds")
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 if __name__ == "__main__":
