@@ -23,6 +23,7 @@ decl
   | moduleDecl
   | eventDecl
   | derivedEventDecl
+  | lockEventDecl
   | statusEventsDecl
   | exclusiveDecl
   | invariantDecl
@@ -51,6 +52,10 @@ moduleDecl       : 'module' ID STRING? '{' portDecl* '}' ;
 portDecl         : direction=('in' | 'out') ID ':' typeExpr ';' ;
 eventDecl        : 'event' ID (',' ID)* ('lifetime' duration)? ';' ;
 derivedEventDecl : 'event' ID '=' portRef ':' expr ('for' duration)? failOpen? ';' ;
+// A lock (docs/language.md#locks): `event estop = lock EStop.engaged [: PRED] [timeout D];`.
+// `lock` and `timeout` are read as IDs and checked by the AST builder (no new keyword, so no
+// name users chose becomes one: a port may be called `lock`).
+lockEventDecl    : 'event' ID '=' ID portRef (':' expr)? (ID duration)? failOpen? ';' ;
 statusEventsDecl : 'events' 'from' portRef '{' statusEntry (',' statusEntry)* ','? '}'
                    ('lifetime' duration)? failOpen? ';' ;
 // A feed that may never speak (docs/language.md#a-feed-that-may-fail-open): after a start, its

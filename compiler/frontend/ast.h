@@ -266,6 +266,19 @@ struct DerivedEventDecl {
   Loc loc;  // the name
 };
 
+// `event e = lock M.p [: PRED] [timeout D | otherwise open after D];` (docs/language.md#locks):
+// engaged while its last message says so, and while its publisher has not spoken since the
+// start or (with `timeout`) has been silent that long. desugar_locks.h writes it as two derived
+// events before sema, and the name, where a constraint reads it, as their disjunction.
+struct LockDecl {
+  std::string name;
+  Loc loc;  // the name
+  PortRef source;
+  ExprPtr predicate;  // null: the message itself (a bool port), or its `data` (std_msgs/Bool)
+  std::optional<Duration> timeout;
+  std::optional<FailOpen> open_after;  // `otherwise open after D`: silence opens it
+};
+
 // `exclusive { a, b, c };`
 struct ExclusiveDecl {
   std::vector<EventName> events;
@@ -496,6 +509,7 @@ struct Spec {
   std::vector<EventDecl> events;
   std::vector<StatusEventDecl> status_events;
   std::vector<DerivedEventDecl> derived_events;
+  std::vector<LockDecl> locks;  // gone after desugar_locks (into derived_events)
   std::vector<ExclusiveDecl> exclusives;
   std::vector<InvariantDecl> invariants;
   std::vector<ArbitrateDecl> arbitrations;

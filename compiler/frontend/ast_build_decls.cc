@@ -35,6 +35,8 @@ void Builder::add_decl(Spec& spec, ArbcParser::DeclContext* ctx) {
     spec.events.push_back(event_decl(c));
   } else if (auto* c = ctx->derivedEventDecl()) {
     spec.derived_events.push_back(derived_event_decl(c));
+  } else if (auto* c = ctx->lockEventDecl()) {
+    spec.locks.push_back(lock_event_decl(c));
   } else if (auto* c = ctx->statusEventsDecl()) {
     spec.status_events.push_back(status_events_decl(c));
   } else if (auto* c = ctx->exclusiveDecl()) {
@@ -164,6 +166,32 @@ DerivedEventDecl Builder::derived_event_decl(ArbcParser::DerivedEventDeclContext
   e.lifetime = optional_duration(c->duration());
   e.fail_open = fail_open(c->failOpen());
   return e;
+}
+
+// lockEventDecl : 'event' ID '=' ID portRef (':' expr)? (ID duration)? failOpen? ';' ;
+// The second ID is the word `lock`, the third `timeout`.
+LockDecl Builder::lock_event_decl(ArbcParser::LockEventDeclContext* c) {
+  LockDecl l;
+  l.name = tx(c->ID(0));
+  l.loc = loc(c->ID(0));
+  if (tx(c->ID(1)) != "lock")
+    error(loc(c->ID(1)),
+          "`event " + l.name + " = " + tx(c->ID(1)) +
+              " ...`: after `=` comes a port (`event e = M.p : PREDICATE;`) or `lock` and a port "
+              "(`event e = lock M.p;`, a lock: docs/language.md#locks)",
+          diag::Lock);
+  l.source = port_ref(c->portRef());
+  if (c->expr()) l.predicate = expr(c->expr(), 0);
+  if (c->ID().size() > 2) {
+    if (tx(c->ID(2)) != "timeout")
+      error(loc(c->ID(2)),
+            "`" + tx(c->ID(2)) + "`: a lock's time is `timeout D` (engaged after D of silence), " +
+                "or `otherwise open after D` (silence opens it)",
+            diag::Lock);
+    l.timeout = optional_duration(c->duration());
+  }
+  l.open_after = fail_open(c->failOpen());
+  return l;
 }
 
 // failOpen : 'otherwise' ID 'after' duration ;

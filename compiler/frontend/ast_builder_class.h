@@ -102,6 +102,7 @@ class Builder {
   ast::ResourceDecl resource_decl(ArbcParser::ResourceDeclContext* c);
   std::optional<ast::FailOpen> fail_open(ArbcParser::FailOpenContext* c);
   ast::DerivedEventDecl derived_event_decl(ArbcParser::DerivedEventDeclContext* c);
+  ast::LockDecl lock_event_decl(ArbcParser::LockEventDeclContext* c);
   ast::StatusEventDecl status_events_decl(ArbcParser::StatusEventsDeclContext* c);
   ast::ExclusiveDecl exclusive_decl(ArbcParser::ExclusiveDeclContext* c);
   ast::InvariantDecl invariant_decl(ArbcParser::InvariantDeclContext* c);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "compiler/frontend/desugar_locks.h"
 #include "compiler/frontend/parse.h"
 #include "compiler/frontend/ros2_uses.h"
 #include "compiler/frontend/sema.h"
@@ -51,6 +52,7 @@ CheckResult check_text(std::string_view text, const std::string& file,
   }
   if (parsed.spec) {
     declare_ros2_uses(*parsed.spec, result.diagnostics);
+    desugar_locks(*parsed.spec, result.diagnostics);
     // The app's scripts are relative to the app's spec, wherever its tests live.
     check_spec(*parsed.spec, result.diagnostics, result.app_file.empty() ? script_dir : "");
     result.spec = std::move(parsed.spec);

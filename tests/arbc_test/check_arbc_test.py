@@ -571,6 +571,27 @@ def case_estop_stops_at_once(arbc, tmp):
            f"the naive e-stop: exit {code}, no warning or no late delivery", out, err)
 
 
+def case_lock_stops_at_once_and_fails_closed(arbc, tmp):
+    """A lock (issue 42 item 2, docs/language.md#locks): `event estop = lock EStop.engaged
+    timeout 200ms;` blocks nav before the e-stop's first message, at once when it says engaged,
+    and once it has been silent 200 ms; `never nav while estop;` is proved (its engaged part by
+    absence, its heard part by an assert). Without `timeout` the silence no longer blocks, and
+    the test's last expectation fails."""
+    spec = "tests/arbc_test/estop_lock.spec"
+    code, out, err = run(arbc, "test", spec)
+    expect(code == 0 and "1 passed" in out, f"the lock's test: exit {code}", out, err)
+    code, out, err = run(arbc, "verify", spec)
+    expect(code == 0 and "never nav while estop_engaged" in out and "2 asserts hold" in out
+           and "2 properties over time: 2 proved" in out, f"verify: exit {code}", out, err)
+    no_timeout = os.path.join(tmp, "no_timeout.spec")
+    text = open(spec, encoding="utf-8").read().replace(" timeout 200ms;", ";")
+    with open(no_timeout, "w", encoding="utf-8") as f:
+        f.write(text)
+    code, out, err = run(arbc, "test", no_timeout)
+    expect(code == 1 and "expected nav drops \"not-selected\" at 700ms" in out + err,
+           f"without a timeout: exit {code}, silence should no longer block", out, err)
+
+
 def case_age_rejects_stale_commands(arbc, tmp):
     """age() in simulation (issue 41, docs/language.md#message-age): the run's clock is the
     simulated one, so stamps are instants of the run; a command 100 ms old passes, one 300 ms
