@@ -69,14 +69,14 @@ Diagnostic lapsing(const ast::DerivedEventDecl& e, const ast::ArbitrateDecl& por
               port.port.qualified() + " may deliver for " + lifetime + " after " + flag +
               " turns true";
   std::string who = rules.size() == 1 ? "'" + rules[0] + "'" : "those rules";
-  std::string stop = e.name + "_stop", heard = e.name + "_heard";
+  std::string stop = e.name + "_stop";
   add_note(d, "if " + flag + " must stop " + who +
-                  " at once, let the message clear it and keep the lifetime for silence: `event " +
-                  stop + " = " + e.source.qualified() + " : " + flag +
-                  ";` (no `for`: a message with " + flag + " false unsets it), `event " + heard +
-                  " = " + e.source.qualified() + " : true for " + lifetime + ";`, and `when " +
-                  heard + " and not " + stop +
-                  "`, which also stays closed while the publisher is silent");
+                  " at once, make it a lock (docs/language.md#locks): `event " + stop + " = lock " +
+                  e.source.qualified() + " : " + flag + " timeout " + lifetime +
+                  ";` and `when not " + stop + "`: a message with " + flag +
+                  " false releases it at once, and it stays engaged while the publisher is "
+                  "silent for " +
+                  lifetime + " or has not spoken since the start");
   return d;
 }
 

@@ -7,6 +7,9 @@ the base are plain Fast-DDS programs (tests/dds/interop/bumper.spec), the bumper
 2. With `otherwise absent after 1s` on the event (docs/language.md#a-feed-that-may-fail-open),
    the mediator takes e_bumped as absent once the bumper has been silent for 1 s since its start,
    says so, and from then on the base receives the planner's commands; none before.
+3. Written as a lock, `event e_bumped = lock Bumper.pressed timeout 500ms;`
+   (docs/language.md#locks, issue 42 item 2): a lock whose publisher never starts keeps nav
+   closed, past its timeout too, as in 1.
 
 usage: bumper_silent.py ARBC INTEROP_STREAM INTEROP_SUB TESTS_DDS_DIR
 """
@@ -69,6 +72,24 @@ def run(arbc, app, deploy, stream, sub, domain, env):
     return said, heard, commands
 
 
+def kept_closed(arbc, spec, tmp, deploy, stream, sub, domain, env):
+    """1 and 3: with the bumper never heard, nothing reaches the base and the mediator says so."""
+    said, heard, commands = run(arbc, build(arbc, spec, tmp), deploy, stream, sub, domain, env)
+    if commands:
+        fail(f"the base received {len(commands)} commands with the bumper never heard",
+             said, heard)
+    if "never heard a peer: rt/bumper (Bumper.pressed)" not in said:
+        fail("the mediator does not say it never heard the bumper", said)
+    # How many arrive depends on when discovery matched under load (25 of 150 on a loaded
+    # CI host): some must, and every one that arrived was kept out.
+    navs = re.search(r"read  rt/nav/cmd_vel \([^)]*\): (\d+) received", said)
+    if not navs or int(navs.group(1)) < 5:
+        fail("the mediator did not read the planner's commands (nothing was kept out)", said)
+    row = next((ln.split() for ln in said.splitlines() if ln.startswith("nav ")), None)
+    if not row or row[5] != row[1]:
+        fail("not every command that arrived was kept out (not-selected)", said)
+
+
 def main():
     arbc, stream, sub, here = sys.argv[1:5]
     env = environment(os.path.join(here, "loopback_profile.xml"))
@@ -81,24 +102,11 @@ def main():
     event = "event e_bumped = Bumper.pressed : pressed for 500ms;"
     assert event in closed
     opened = closed.replace(event, event[:-1] + f" otherwise absent after {FAIL_OPEN_AFTER:g}s;")
+    locked = closed.replace(event, "event e_bumped = lock Bumper.pressed timeout 500ms;")
 
     with tempfile.TemporaryDirectory(prefix="arbc-dds-bumper-silent-") as tmp:
-        said, heard, commands = run(arbc, build(arbc, closed, tmp), deploy, stream, sub, domain,
-                                    env)
-        if commands:
-            fail(f"the base received {len(commands)} commands with the bumper never heard",
-                 said, heard)
-        if "never heard a peer: rt/bumper (Bumper.pressed)" not in said:
-            fail("the mediator does not say it never heard the bumper", said)
-        # How many arrive depends on when discovery matched under load (25 of 150 on a loaded
-        # CI host): some must, and every one that arrived was kept out.
-        navs = re.search(r"read  rt/nav/cmd_vel \([^)]*\): (\d+) received", said)
-        if not navs or int(navs.group(1)) < 5:
-            fail("the mediator did not read the planner's commands (nothing was kept out)", said)
-        row = next((ln.split() for ln in said.splitlines() if ln.startswith("nav ")), None)
-        if not row or row[5] != row[1]:
-            fail("not every command that arrived was kept out (not-selected)", said)
-
+        for spec in (closed, locked):
+            kept_closed(arbc, spec, tmp, deploy, stream, sub, domain, env)
         said, heard, commands = run(arbc, build(arbc, opened, tmp), deploy, stream, sub, domain,
                                     env)
         # Said at the first decision after 1 s (the next command from the planner); when is
@@ -121,7 +129,7 @@ def main():
         if first < FAIL_OPEN_AFTER:
             fail(f"a command reached the base {first:.3f} s after the mediator started, before "
                  "the bumper's silence could count as absence", said, heard)
-    print(f"ok: nothing with the bumper unheard and fail closed; {len(commands)} commands "
+    print(f"ok: nothing with the bumper unheard, fail closed and as a lock; {len(commands)} commands "
           f"from {first:.2f} s with `otherwise absent after {FAIL_OPEN_AFTER:g}s`")
 
 
