@@ -153,12 +153,55 @@ void single_event_uses(ast::Spec& spec, const Locks& locks, std::vector<Diagnost
     single_event(a.event, a.event_loc, locks, "an assumption", out);
 }
 
+// Where `name` is declared as an event already (its line), or 0. A lock of that name would
+// shadow the event wherever a constraint reads it.
+int event_line(const ast::Spec& spec, const std::string& name) {
+  for (const ast::EventDecl& e : spec.events)
+    for (const ast::EventName& n : e.names)
+      if (n.name == name) return n.loc.line;
+  for (const ast::DerivedEventDecl& e : spec.derived_events)
+    if (e.name == name) return e.loc.line;
+  for (const ast::StatusEventDecl& e : spec.status_events)
+    for (const ast::StatusEventDecl::Entry& x : e.entries)
+      if (x.event == name) return x.loc.line;
+  return 0;
+}
+
+// A lock reads a module's output (an e-stop's, a pause switch's); a lock that is declared twice,
+// or under an event's name, is refused before it becomes two events (whose duplicates sema would
+// name without the lock). False when `l` is not to be declared.
+bool declarable(const ast::Spec& spec, const ast::LockDecl& l, const Locks& locks,
+                std::vector<Diagnostic>& out) {
+  auto refuse = [&](const Loc& at, std::string message, DiagId id) {
+    out.push_back(make_diagnostic(Severity::Error, at, std::move(message), id.text()));
+    return false;
+  };
+  if (locks.count(l.name))
+    return refuse(l.loc, "lock '" + l.name + "' is declared twice: rename one of them",
+                  diag::Duplicate);
+  if (int line = event_line(spec, l.name))
+    return refuse(l.loc,
+                  "'" + l.name + "' is an event already (line " + std::to_string(line) +
+                      "): a lock needs a name of its own",
+                  diag::Duplicate);
+  for (const ast::ModuleDecl& m : spec.modules) {
+    const ast::PortDecl* p = m.name == l.source.module ? m.find_port(l.source.port) : nullptr;
+    if (p && p->direction == model::Direction::In)
+      return refuse(l.source.loc,
+                    "a lock reads what a module publishes (an e-stop's state, a pause switch): " +
+                        l.source.qualified() + " is an input of " + m.name,
+                    diag::Lock);
+  }
+  return true;
+}
+
 }  // namespace
 
 void desugar_locks(ast::Spec& spec, std::vector<Diagnostic>& out) {
   if (spec.locks.empty()) return;
   Locks locks;
-  for (ast::LockDecl& l : spec.locks) locks[l.name] = declare(spec, l, out);
+  for (ast::LockDecl& l : spec.locks)
+    if (declarable(spec, l, locks, out)) locks[l.name] = declare(spec, l, out);
   spec.locks.clear();
   for (ast::ArbitrateDecl& a : spec.arbitrations)
     for (ast::Rule& r : a.rules) substitute(r.when, locks);

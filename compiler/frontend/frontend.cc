@@ -26,6 +26,13 @@ void sort_by_position(std::vector<Diagnostic>& diagnostics, const std::string& a
   };
   std::stable_sort(diagnostics.begin(), diagnostics.end(),
                    [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
+  // The same words at the same place once: a lock is two events over one port
+  // (desugar_locks.h), and a mistake in that port was said for each.
+  auto same = [](const Diagnostic& a, const Diagnostic& b) {
+    return a.loc.file == b.loc.file && a.loc.line == b.loc.line && a.loc.column == b.loc.column &&
+           a.id == b.id && a.message == b.message;
+  };
+  diagnostics.erase(std::unique(diagnostics.begin(), diagnostics.end(), same), diagnostics.end());
 }
 
 // Editors on Windows may start a UTF-8 file with a byte-order mark: it is not part of the text
