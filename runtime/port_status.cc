@@ -10,6 +10,35 @@ namespace {
 using Present = std::function<bool(const std::string&)>;
 using HoldOf = std::function<std::string(const std::string&)>;
 
+void false_parts(const Constraint& c, const Present& present, const HoldOf& hold_of,
+                 std::vector<std::string>& out);
+
+// The parts of a true `c` that make it true, each as the state that does: every conjunct of an
+// `and`, the alternatives of an `or` that hold, an event's presence ("held by R's hold" for a
+// priority's activity event). A lock's `not (L_engaged or not L_heard)` is false because
+// "L_heard absent", not because "`L_engaged or not L_heard` holds".
+void true_parts(const Constraint& c, const Present& present, const HoldOf& hold_of,
+                std::vector<std::string>& out) {
+  switch (c.op) {
+    case Constraint::Op::True:
+    case Constraint::Op::False:
+      return;
+    case Constraint::Op::Event: {
+      std::string rule = hold_of(c.event);
+      out.push_back(rule.empty() ? c.event + " present" : "held by " + rule + "'s hold");
+      return;
+    }
+    case Constraint::Op::Not:
+      false_parts(c.args[0], present, hold_of, out);
+      return;
+    case Constraint::Op::And:
+    case Constraint::Op::Or:
+      for (const Constraint& a : c.args)
+        if (evaluate_with(a, present)) true_parts(a, present, hold_of, out);
+      return;
+  }
+}
+
 // The parts of a false `c` that make it false, each as the state that does: the conjuncts of an
 // `and` that are false, every alternative of an `or` (all false), an event's presence.
 void false_parts(const Constraint& c, const Present& present, const HoldOf& hold_of,
@@ -23,13 +52,8 @@ void false_parts(const Constraint& c, const Present& present, const HoldOf& hold
     case Constraint::Op::Event:
       out.push_back(c.event + " absent");
       return;
-    case Constraint::Op::Not:
-      if (c.args[0].op == Constraint::Op::Event) {
-        std::string rule = hold_of(c.args[0].event);
-        out.push_back(rule.empty() ? c.args[0].event + " present" : "held by " + rule + "'s hold");
-      } else {
-        out.push_back("`" + c.args[0].to_string() + "` holds");
-      }
+    case Constraint::Op::Not:  // false: its argument holds, and says why
+      true_parts(c.args[0], present, hold_of, out);
       return;
     case Constraint::Op::And:
     case Constraint::Op::Or:  // false: each alternative is, and each says why

@@ -31,7 +31,10 @@ TEST(WhyFalseTest, NamesTheEventsThatMakeItFalse) {
   EXPECT_EQ(why("not e_bumped and e_ok", {"e_ok", "e_bumped"}), "e_bumped present");
   EXPECT_EQ(why("not e_bumped and e_ok", {"e_ok"}), "");  // true: nothing to say
   EXPECT_EQ(why("e_joy or e_teleop", {}), "e_joy absent, e_teleop absent");
-  EXPECT_EQ(why("not (a and b)", {"a", "b"}), "`a and b` holds");
+  EXPECT_EQ(why("not (a and b)", {"a", "b"}), "a present, b present");
+  // A lock (docs/language.md#locks): engaged, or not heard.
+  EXPECT_EQ(why("not (l_engaged or not l_heard)", {}), "l_heard absent");
+  EXPECT_EQ(why("not (l_engaged or not l_heard)", {"l_engaged", "l_heard"}), "l_engaged present");
   EXPECT_EQ(why("false", {}), "its `when` is false");
 }
 
