@@ -71,10 +71,11 @@ TEST(TwistMuxSpec, AnInputIsKeptOutByActiveInputsAndEngagedLocksAboveIt) {
       << s.spec;
   EXPECT_NE(
       s.spec.find("  nav: from Nav.cmd_vel\n      when nav_active\n       and not joy_active\n"
-                  "       and not stop_locked\n       and stop_heard {\n"),
+                  "       and not stop_lock {\n"),
       std::string::npos)
       << s.spec;
-  EXPECT_NE(s.spec.find("event stop_heard = StopLock.lock : true for 200ms;"), std::string::npos);
+  EXPECT_NE(s.spec.find("event stop_lock = lock StopLock.lock timeout 200ms;"), std::string::npos)
+      << s.spec;
   EXPECT_NE(s.deploy.find("\"Base.cmd_vel\": \"/cmd_vel_out\""), std::string::npos) << s.deploy;
 }
 

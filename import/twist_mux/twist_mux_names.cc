@@ -18,6 +18,18 @@ class Taken {
     for (int k = 2; !used_.insert(name).second; ++k) name = want + "_" + std::to_string(k);
     return name;
   }
+  // The same for a name that brings others with it (`NAME + suffix` for each suffix): all free.
+  std::string take_with(const std::string& want, const std::vector<std::string>& suffixes) {
+    for (int k = 1;; ++k) {
+      std::string name = k == 1 ? want : want + "_" + std::to_string(k);
+      bool free = !used_.count(name);
+      for (const std::string& s : suffixes) free &= !used_.count(name + s);
+      if (!free) continue;
+      used_.insert(name);
+      for (const std::string& s : suffixes) used_.insert(name + s);
+      return name;
+    }
+  }
 
  private:
   std::set<std::string> used_;
@@ -62,8 +74,10 @@ MuxNames name_mux(const MuxConfig& config) {
     if (!blocks_some) continue;  // warned about; nothing reads it
     l.rule = spec_identifier(e.name);
     l.module = taken.take(camel(l.rule) + "Lock");
-    l.event = taken.take(l.rule + "_locked");
-    if (e.timeout > 0) l.heard = taken.take(l.rule + "_heard");
+    // A lock declaration (docs/language.md#locks): its name, and the two events the front end
+    // makes of it, none of them another's.
+    l.event = taken.take_with(l.rule + "_lock", {"_engaged", "_heard"});
+    if (e.timeout > 0) l.heard = l.event + "_heard";
     n.locks.push_back(l);
   }
   for (Named& in : n.inputs) {
@@ -83,11 +97,8 @@ std::vector<std::string> blocking_terms(const MuxNames& names, const Named& inpu
       terms.push_back("not " + above.event);
       if (!above.heard.empty()) terms.push_back("not " + above.heard);
     }
-  for (const Named& lock : names.locks) {
-    if (!blocks(lock, input)) continue;
-    terms.push_back("not " + lock.event);
-    if (!lock.heard.empty()) terms.push_back(lock.heard);
-  }
+  for (const Named& lock : names.locks)
+    if (blocks(lock, input)) terms.push_back("not " + lock.event);
   return terms;
 }
 

@@ -14,11 +14,11 @@ struct Named {
   std::string rule;    // an input's rule; a lock's stem
   std::string module;  // the module that publishes it
   // An input: `<rule>_active`, which its body sets for its timeout on each message (twist_mux's
-  // stamp); a lock: `<stem>_locked`.
+  // stamp); a lock: the name of its `lock` declaration, `<stem>_lock`.
   std::string event;
-  // A lock with a timeout: `<stem>_heard`; an input without one that some input is below:
-  // `<rule>_heard`, present from its first message on and unknown (closed) before, as twist_mux
-  // counts such an input active from the start.
+  // A lock with a timeout: its heard event, `<stem>_lock_heard` (the lock fails closed); an input
+  // without one that some input is below: `<rule>_heard`, present from its first message on and
+  // unknown (closed) before, as twist_mux counts such an input active from the start.
   std::string heard;
 };
 
@@ -31,8 +31,7 @@ struct MuxNames {
 MuxNames name_mux(const MuxConfig& config);
 
 // The terms of an input's `when` after its own activity: not active (nor heard, for one
-// without a timeout) for each input above it, and for each lock above it not engaged (and
-// heard, for a lock with a timeout).
+// without a timeout) for each input above it, and `not LOCK` for each lock above it.
 std::vector<std::string> blocking_terms(const MuxNames& names, const Named& input);
 
 // Whether the lock blocks the input (a priority below the lock's).

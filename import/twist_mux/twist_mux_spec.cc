@@ -125,14 +125,12 @@ class Writer {
     }
     if (names_.locks.empty()) return s_.append("\n"), void();
     s_ +=
-        "// A lock is engaged while its last message said true; one with a timeout also while\n"
-        "// it has been silent that long, and until it first speaks (fail closed).\n";
+        "// A lock is engaged while its last message said true (its `data`); one with a timeout\n"
+        "// also while it has been silent that long, and until it first speaks (fail closed).\n";
     for (const Named& n : names_.locks) {
-      s_ += "event " + n.event + " = " + n.module + ".lock : lock.data";
-      s_ += n.heard.empty() ? " otherwise absent after 1ms;\n" : ";\n";
-      if (!n.heard.empty())
-        s_ += "event " + n.heard + " = " + n.module + ".lock : true for " +
-              duration(n.entry->timeout) + ";\n";
+      s_ += "event " + n.event + " = lock " + n.module + ".lock";
+      s_ += n.heard.empty() ? " otherwise open after 1ms;\n"
+                            : " timeout " + duration(n.entry->timeout) + ";\n";
     }
     s_ += "\n";
   }
@@ -160,12 +158,8 @@ class Writer {
         if (above.entry->priority > n.entry->priority)
           s_ += "never " + n.rule + " while " + (above.heard.empty() ? above.event : above.heard) +
                 ";\n";
-      for (const Named& lock : names_.locks) {
-        if (!blocks(lock, n)) continue;
-        s_ += "never " + n.rule + " while " + lock.event + ";\n";
-        if (!lock.heard.empty())
-          s_ += "assert " + names_.base + ".cmd_vel: " + n.rule + " -> " + lock.heard + ";\n";
-      }
+      for (const Named& lock : names_.locks)
+        if (blocks(lock, n)) s_ += "never " + n.rule + " while " + lock.event + ";\n";
     }
     s_ += "\n";
   }
