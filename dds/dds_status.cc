@@ -10,16 +10,6 @@
 
 namespace arbc::dds {
 
-namespace {
-
-// A ROS 2 topic name on the wire ("/diagnostics" -> "rt/diagnostics"), whatever the
-// deployment's "ros2" says: the status is for ROS 2 tools.
-std::string ros2_topic(const std::string& written) {
-  return "rt/" + (written.front() == '/' ? written.substr(1) : written);
-}
-
-}  // namespace
-
 bool DdsTransport::open_status(const TransportPlan& plan, std::string* error) {
   std::vector<std::string> ports;
   for (const model::ArbitratedPort& a : app_.arbitrated_ports) {
@@ -38,15 +28,16 @@ bool DdsTransport::open_status(const TransportPlan& plan, std::string* error) {
     auto given = options_.deployment.status_topics.find(port);
     StatusTopic s;
     s.port = port;
-    s.topic = ros2_topic(given != options_.deployment.status_topics.end()
-                             ? given->second
-                             : default_status_topic(app_.name, port));
+    s.topic = status_wire_topic(given != options_.deployment.status_topics.end()
+                                    ? given->second
+                                    : default_status_topic(app_.name, port));
     s.writer = status_writer(s.topic, status_wire_, /*latched=*/true, error);
     if (!s.writer) return false;
     status_topics_.push_back(std::move(s));
   }
-  diagnostics_ = status_writer(ros2_topic(options_.deployment.diagnostics_topic), array_wire_,
-                               /*latched=*/false, error);
+  diagnostics_ =
+      status_writer(status_wire_topic(options_.deployment.diagnostics_topic), array_wire_,
+                    /*latched=*/false, error);
   return diagnostics_ != nullptr;
 }
 

@@ -64,7 +64,7 @@ bool read_status(int domain, const std::string& topic, double wait, std::vector<
   if (wire) {
     fdds::TypeSupport support(new WireTopicType(wire));
     support.register_type(p);
-    std::string wire_topic = "rt/" + (topic.front() == '/' ? topic.substr(1) : topic);
+    std::string wire_topic = status_wire_topic(topic);
     fdds::Topic* t = p->create_topic(wire_topic, wire->name, fdds::TOPIC_QOS_DEFAULT);
     fdds::Subscriber* sub = p->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
     fdds::DataReaderQos rq = sub->get_default_datareader_qos();

@@ -69,6 +69,10 @@ const StatusTypes& status_types() {
   return types;
 }
 
+std::string status_wire_topic(const std::string& written) {
+  return "rt/" + (!written.empty() && written.front() == '/' ? written.substr(1) : written);
+}
+
 std::string default_status_topic(const std::string& app, const std::string& port) {
   std::string topic = "/arbc/" + app + "/status/" + port;
   topic[topic.rfind('.')] = '/';

@@ -25,6 +25,11 @@ const StatusTypes& status_types();
 // "/arbc/mux/status/Base/cmd_vel"; the deployment's "status" "topics" overrides it.
 std::string default_status_topic(const std::string& app, const std::string& port);
 
+// A status topic as written ("/diagnostics") on the wire as ROS 2 names it ("rt/diagnostics"),
+// whatever the deployment's "ros2" says: the status is for ROS 2 tools. One definition for the
+// mediator that writes it and `arbc status` that reads it.
+std::string status_wire_topic(const std::string& written);
+
 // A port's latched status: level, name "APP: PORT", message (p.message), and one key per rule
 // with its state ("selected", or why it is not selected, or "may deliver"), after the key
 // "selected" (the selected rule, "" when none). Nothing in it changes with time alone, so it is
