@@ -247,6 +247,7 @@ void note_memory(const model::App& app, const RunOptions& options) {
     if (c.kind == model::ConnectionKind::Feed && from && from->direction == model::Direction::In)
       kept.insert(c.sets.begin(), c.sets.end());
     if (!c.activity_event.empty()) kept.insert(c.activity_event);
+    kept.insert(c.delivery_sets.begin(), c.delivery_sets.end());
   }
   if (kept.empty()) return;
   std::fprintf(stderr,

@@ -313,6 +313,8 @@ bool read_connection(const Json& j, const std::string& p, Connection* c, std::st
          string_list(j, p, "must_set", &c->must_set, err) &&
          string_list(j, p, "must_unset", &c->must_unset, err) &&
          opt_string(j, p, "activity_event", &c->activity_event, err) &&
+         string_list(j, p, "delivery_sets", &c->delivery_sets, err) &&
+         string_list(j, p, "delivery_unsets", &c->delivery_unsets, err) &&
          opt_bool(j, p, "opaque", &c->opaque, err) && read_body(j, p, &c->body, err) &&
          opt_duration(j, p, "trig_interval", &c->trig_interval, err) &&
          opt_duration(j, p, "throttle", &c->throttle, err) &&

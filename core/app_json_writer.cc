@@ -92,6 +92,8 @@ void write_connection(JsonWriter& w, const Connection& c) {
   w.member("must_set", c.must_set);
   w.member("must_unset", c.must_unset);
   w.member("activity_event", c.activity_event);
+  if (!c.delivery_sets.empty()) w.member("delivery_sets", c.delivery_sets);
+  if (!c.delivery_unsets.empty()) w.member("delivery_unsets", c.delivery_unsets);
   w.member("opaque", c.opaque);
   if (c.body) {
     w.key("body");

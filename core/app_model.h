@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/body.h"
@@ -108,6 +109,20 @@ struct Connection {
   // so it is not in must_set, but the effective guard includes it (core/effective_guard.h).
   // Also listed in `sets`: the connection owns its entries. Empty: none.
   std::string activity_event;
+  // `then set e` / `then unset e` (docs/language.md#events-set-on-delivery): each time this
+  // rule delivers, the runtime sets its own entry of each event of `delivery_sets` (for the
+  // event's lifetime in `events`) and removes every entry that deliveries set of each event of
+  // `delivery_unsets`, in the task of the delivery, as for `activity_event`. `delivery_sets`
+  // are also in `sets` (the connection owns those entries); neither is in must_set.
+  std::vector<std::string> delivery_sets, delivery_unsets;
+  // Whether the runtime sets `e` as this connection delivers (its activity event or a
+  // `then set`), rather than its monitor as it accepts.
+  bool set_on_delivery(std::string_view e) const {
+    if (e == activity_event) return true;
+    for (const std::string& s : delivery_sets)
+      if (s == e) return true;
+    return false;
+  }
   bool opaque = false;  // a `script` rule: its code is not analysed
   // The generated monitor's body, for proofs over message data (core/body.h). nullopt: not
   // recorded (a script, a feed, an app.json written before bodies were): opaque for data.

@@ -13,8 +13,8 @@ constexpr std::string_view kKeywords[] = {
     "given",    "hold",     "if",       "in",        "invariant", "let",    "lifetime",  "module",
     "never",    "not",      "nothing",  "on",        "only",      "or",     "otherwise", "out",
     "priority", "receives", "resource", "script",    "set",       "stable", "stops",     "test",
-    "tests",    "throttle", "true",     "two",       "type",      "unset",  "until",     "use",
-    "var",      "when",     "while",    "within",
+    "tests",    "then",     "throttle", "true",      "two",       "type",   "unset",     "until",
+    "use",      "var",      "when",     "while",     "within",
 };
 
 }  // namespace

@@ -90,7 +90,11 @@ stableDecl       : 'stable' portRef 'for' duration ';' ;
 // every D from the start), which response properties rely on.
 givenDecl        : 'given' portRef 'every' duration ';' ;
 arbitrateDecl    : 'arbitrate' portRef (byPriority='by' 'priority')? isComplete='complete'? '{' ruleDecl* '}' ;
-ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
+ruleDecl         : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? onDelivery? (block | ';') ;
+// What the runtime does to the port's events each time the rule delivers, after the decision
+// (docs/language.md#events-set-on-delivery): `then set e_owns`, `then unset e_owns`.
+onDelivery       : 'then' deliveryEffect (',' deliveryEffect)* ;
+deliveryEffect   : op=('set' | 'unset') ID ;
 connectDecl      : 'connect' portRef '->' portRef (block | ';') ;
 assertDecl       : 'assert' portRef ':' ID '->' expr ';' ;
 // A resource shared by several ports: at most one of them receives a command that uses it.

@@ -169,6 +169,28 @@ TEST(ClaimWatchTest, ARuleDeliveringWhereARuleOfAnotherSourceIsSelectedBreaksIt)
   EXPECT_TRUE(restarted.violations().empty());
 }
 
+// `then set` (docs/language.md#events-set-on-delivery): b, of S.out, sets g as it delivers and
+// c, of T.out, now reads `not g`: in the state b delivered in c is selected, in the state it
+// left it is not, so b's delivery keeps c out and nothing is broken. Without the effect, the
+// same delivery breaks the claim.
+TEST(ClaimWatchTest, ADeliveryThatKeepsTheOtherRuleOutIsJudgedInTheStateItLeaves) {
+  model::App a = two_sources();
+  for (model::Connection& c : a.connections) {
+    if (c.name == "b") c.delivery_sets = {"g"}, c.sets = {"g"};
+    if (c.name == "c")
+      c.constraint = Constraint::conjunction({Constraint::negate(Constraint::event_ref("e")),
+                                              Constraint::negate(Constraint::event_ref("g"))});
+  }
+  ClaimWatch w(a);
+  w.observe(decided(0.1, "b", true));
+  EXPECT_TRUE(w.violations().empty()) << broken(w)[0];
+  for (model::Connection& c : a.connections)
+    if (c.name == "b") c.delivery_sets.clear();
+  ClaimWatch without(a);
+  without.observe(decided(0.1, "b", true));
+  EXPECT_EQ(broken(without).size(), 1u);
+}
+
 TEST(ClaimWatchTest, AnAssertIsJudgedInThePortsStateAtEachDeliveryOfItsRule) {
   model::App a = two_sources();
   ClaimWatch w(a);

@@ -1,6 +1,7 @@
 #include "runtime/decision_watch.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/constraint.h"
 #include "core/duration_literal.h"
@@ -27,6 +28,7 @@ DecisionWatch::DecisionWatch(const model::App& app,
       Rule rule;
       rule.name = c->name, rule.port = p.port, rule.source = c->source;
       rule.guard = model::decision_guard(into, *c);
+      rule.delivery_sets = c->delivery_sets, rule.delivery_unsets = c->delivery_unsets;
       rules_.push_back(std::move(rule));
     }
     for (const model::Assertion& a : p.asserts) {
@@ -99,9 +101,16 @@ void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::
   }
   if (!c.same_source.empty()) c.delivered.insert(n);
   if (!states_known_ || judged) return;
+  // The state the delivery leaves; copied only for a rule whose delivery changes it.
+  std::optional<std::set<std::string>> after;
+  if (!c.delivery_sets.empty() || !c.delivery_unsets.empty()) {
+    after = state;
+    for (const std::string& e : c.delivery_sets) after->insert(e);
+    for (const std::string& e : c.delivery_unsets) after->erase(e);
+  }
   for (size_t j : c.other_source) {
     const Rule& d = rules_[j];
-    if (evaluate(d.guard, state))
+    if (evaluate(d.guard, state) && (!after || evaluate(d.guard, *after)))
       broken_(port_claim_[c.port], t,
               "'" + c.name + "' delivered at " + duration_literal(t) + " in a state where '" +
                   d.name + "' is selected too (events present: " + events_present(state) + ")");

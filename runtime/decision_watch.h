@@ -9,6 +9,10 @@
 // The state check needs the whole state: on a mediator that starts with events unknown until
 // their feeds speak (runtime.h, unknown_until_fed) an unknown event reads as absent here, so
 // that check is left out there (`states_known` false); the same-message check stays.
+// A rule with `then set` / `then unset` changes the events as it delivers: a rule of another
+// source is then "selected too" only if it is selected both in the state the delivery was
+// decided in and in the state it leaves (verify/delivery_order.h: whichever delivers first keeps
+// the other out).
 // `by priority` ports are left out: a higher rule may deliver right after a lower one in one
 // state by design (docs/design.md#priorities-and-holds), and their hold is the runtime's own.
 // Asserts over delivered data are not checked yet (the trace does not carry the value to it).
@@ -74,6 +78,9 @@ class DecisionWatch {
     std::vector<size_t> same_source;   // other rules of the port reading the same source
     std::vector<size_t> other_source;  // other rules of the port reading other sources
     std::vector<size_t> asserts;       // into asserts_
+    // `then set` / `then unset`: what its delivery does to the port's events before the next
+    // decision (model::Connection::delivery_sets, delivery_unsets).
+    std::vector<std::string> delivery_sets, delivery_unsets;
   };
   struct Assert {
     const model::Assertion* a;

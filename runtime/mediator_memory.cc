@@ -205,7 +205,7 @@ void Runtime::save_memory() {
     in->container.for_each_entry([&](int event, int owner, Nanos expiry) {
       const Connection& c = *connections_[static_cast<size_t>(owner)];
       std::string name(in->container.index().name(event));
-      bool by_delivery = c.delivered_from || name == c.model->activity_event;
+      bool by_delivery = c.delivered_from || c.model->set_on_delivery(name);
       if (by_delivery && expiry > m.time)
         m.entries.push_back({in->qualified, name, c.name, expiry});
     });

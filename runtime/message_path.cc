@@ -295,6 +295,8 @@ void Runtime::deliver(Connection& c, Nanos t, const Value& delivered) {
   // `by priority`: only a delivered message holds the lower rules off, for the event's
   // lifetime in app.json (the rule's hold); docs/design.md#priorities-and-holds.
   if (!c.model->activity_event.empty()) c.set_event(c.model->activity_event, std::nullopt);
+  if (!c.model->delivery_sets.empty() || !c.model->delivery_unsets.empty())
+    apply_delivery_effects(c, t);
   // Delivery events (docs/design.md#delivery-events): their feeds read what was delivered, in
   // this task, so no decision runs between a delivery and the events it sets.
   for (Connection* f : c.destination->delivery_feeds) {
@@ -407,6 +409,25 @@ Nanos Runtime::stamp_clock() const {
 }
 
 // Without a lifetime, the one app.json declares for the event (none: until unset).
+// `then set e` / `then unset e` (docs/language.md#events-set-on-delivery), in the task of the
+// delivery as the activity event: a set is the rule's own entry, for the event's lifetime; an
+// unset removes the entries that deliveries of the port's rules set (no monitor sets such an
+// event: sema refuses it), which is what the proof's unrolling does.
+void Runtime::apply_delivery_effects(Connection& c, Nanos t) {
+  for (const std::string& e : c.model->delivery_sets) c.set_event(e, std::nullopt);
+  EventContainer& box = c.destination->container;
+  for (const std::string& e : c.model->delivery_unsets) {
+    box.present(t);  // lapse expired entries first, so the trace shows expiry before unset
+    int id = box.index().find(e);
+    // The trace names the owner of each entry removed (as a monitor's own unset does), which is
+    // how the run's checks rebuild the container from it; the delivery just before says why.
+    for (const auto& r : connections_)
+      if (r->destination == c.destination && r->model->set_on_delivery(e) &&
+          box.unset(id, r->index))
+        trace_.event(t, c.destination->qualified, "unset", e, r->name, kNever);
+  }
+}
+
 void Runtime::Connection::set_event(std::string_view event, std::optional<Nanos> lifetime) {
   if (!lifetime) lifetime = runtime->declared_lifetime(event);
   Nanos t = runtime->now();

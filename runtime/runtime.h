@@ -261,6 +261,7 @@ class Runtime {
   bool selected(Connection& c, Nanos t, DropReason* reason, std::string* detail);
   void rejected(Connection& c, const std::string& reason);
   void deliver(Connection& c, Nanos t, const Value& delivered);
+  void apply_delivery_effects(Connection& c, Nanos t);
   void enqueue(Connection& c, const Value& v, uint64_t answered = TransportSink::kAnswersAll);
   void drain(Connection& c);
   void post_drain(Connection& c);  // one drain task per message, posted now

@@ -325,7 +325,7 @@ static void describe_reach(const Runtime::OutPort& out, TransportPort& tp) {
   for (const Runtime::Connection* c : out.connections) {
     if (!c->is_feed) tp.connections.push_back(c->name + " into " + c->model->destination);
     for (const std::string& e : c->model->sets)
-      if (e != c->model->activity_event) events.insert(e);
+      if (!c->model->set_on_delivery(e)) events.insert(e);
   }
   tp.events.assign(events.begin(), events.end());
 }

@@ -63,7 +63,7 @@ void Runtime::lapsed(InPort& in, int event, int owner, Nanos expiry) {
   // hold (its activity event) when the rule delivered nothing for the hold: the hold ended as
   // it should, no source is silent then (issue 39: "nothing from Joy.cmd_vel" after a joystick
   // let go).
-  if (!options_.report_silent_lapses || c.delivered_from || name == c.model->activity_event) return;
+  if (!options_.report_silent_lapses || c.delivered_from || c.model->set_on_delivery(name)) return;
   std::optional<Nanos> lifetime = declared_lifetime(name);
   // Silent for the whole lifetime before the expiry, or its source spoke and the entry just ended.
   if (!lifetime || c.last_arrival > expiry - *lifetime) return;

@@ -61,9 +61,9 @@ Finding dead_rule_finding(const ScopedRule& r, const std::string& port, bool und
       {"a body's `set` and `unset` take effect when the monitor accepts the message, before "
        "selection (docs/design.md#effective-guards), as a YARP monitor's do",
        {}});
-  f.notes.push_back({"to take an event only when a rule of " + port +
-                         " delivers, make it a delivery event (`event E = " + port +
-                         " : true for D;`, docs/language.md#delivery-events) and drop the `set`",
+  f.notes.push_back({"to take an event only when " + rule +
+                         " delivers, drop the `set` and write it after the `when`: `... then "
+                         "set E { ... }` (docs/language.md#events-set-on-delivery)",
                      {}});
   return f;
 }

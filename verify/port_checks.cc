@@ -10,6 +10,7 @@
 #include "verify/data_assert.h"
 #include "verify/data_pair.h"
 #include "verify/dead_rule.h"
+#include "verify/delivery_order.h"
 #include "verify/replay.h"
 
 namespace arbc::verify {
@@ -240,6 +241,7 @@ class PortChecker {
         result_.findings.push_back(std::move(f));
       }
     }
+    refine_by_deliveries(pairs);
     std::map<std::pair<int, int>, DataPair> data = refine_by_data(pairs);
     result_.overlapping_pairs = static_cast<int>(pairs.size());
     int last = -1;  // index of the last reported pair's finding
@@ -315,6 +317,26 @@ class PortChecker {
       f.replay_test =
           decision_test(replay, replay_.data(), options_.test_replayer, &f.not_replayable);
     return f;
+  }
+
+  // Drops from `pairs` those whose deliveries keep each other out (verify/delivery_order.h).
+  void refine_by_deliveries(std::vector<std::pair<int, int>>& pairs) {
+    std::vector<std::pair<int, int>> kept;
+    for (const auto& [i, j] : pairs) {
+      std::string text;
+      switch (delivery_order(solver_, scope_, i, j, &text)) {
+        case DeliveryOrder::KeepsOut:
+          result_.exclusive_by_delivery.push_back(text);
+          continue;
+        case DeliveryOrder::Unknown:
+          unknown("whether '" + rule_name(scope_.rules[static_cast<size_t>(i)]) + "' and '" +
+                  rule_name(scope_.rules[static_cast<size_t>(j)]) + "' keep each other out");
+          continue;
+        case DeliveryOrder::Overlap:
+          kept.emplace_back(i, j);
+      }
+    }
+    pairs = std::move(kept);
   }
 
   // Drops from `pairs` those that no one message can select together (same source, both

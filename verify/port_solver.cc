@@ -71,6 +71,22 @@ Answer PortSolver::at_least_two_hold() {
   }
 }
 
+Answer PortSolver::holds_with(int rule, const Constraint& also) {
+  try {
+    solver_.push();
+    solver_.add(encode(also));
+    z3::expr_vector assumptions(ctx_);
+    assumptions.push_back(holds_[rule]);
+    Answer a = run(assumptions);
+    solver_.pop();
+    return a;
+  } catch (const z3::exception& e) {  // as in at_least_two_hold
+    unknown_reason_ =
+        stopped_by_deadline(e.msg()) ? "timeout" : std::string("solver error: ") + e.msg();
+    return last_ = Answer::Unknown;
+  }
+}
+
 Answer PortSolver::can_hold(int rule) {
   z3::expr_vector assumptions(ctx_);
   assumptions.push_back(holds_[rule]);

@@ -33,6 +33,8 @@ class PortSolver {
   Answer at_least_two_hold();
   // Can rule i hold at all?
   Answer can_hold(int rule);
+  // Can rule i hold in a state where `also` (over the scope's events) holds too?
+  Answer holds_with(int rule, const Constraint& also);
   // All pairs (i, j), i < j, of rules that can hold together, in lexicographic order; Unknown
   // when a query gave no answer (the pairs found so far are kept). `known` settles pairs
   // without a query where it can (see CubeShortcut).

@@ -112,6 +112,9 @@ struct PortResult {
   // Pairs that overlap in some event state but never accept the same message, each with why
   // ("'take' and 'put': ...").
   std::vector<std::string> exclusive_by_data;
+  // Pairs that overlap in some event state but whose deliveries keep each other out
+  // (verify/delivery_order.h), each with why.
+  std::vector<std::string> exclusive_by_delivery;
   // A proved verdict that rests on message data with lists, encoded with at most this many
   // elements (--list-bound): the verdict's first line says "for lists of at most N elements".
   // 0: no such claim.

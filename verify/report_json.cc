@@ -100,6 +100,7 @@ Json port_json(const PortResult& p, bool stats) {
   j["reported_pairs"] = p.reported_pairs;
   j["unknown_reason"] = p.unknown_reason.empty() ? Json(nullptr) : Json(p.unknown_reason);
   if (!p.exclusive_by_data.empty()) j["exclusive_by_data"] = p.exclusive_by_data;
+  if (!p.exclusive_by_delivery.empty()) j["exclusive_by_delivery"] = p.exclusive_by_delivery;
   j["list_bound"] = p.list_bound ? Json(p.list_bound) : Json(nullptr);
   j["findings"] = Json::array();
   for (const Finding& f : p.findings) j["findings"].push_back(finding_json(f));

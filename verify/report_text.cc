@@ -85,6 +85,8 @@ std::string port_line(const PortResult& p, bool stats) {
   if (!p.feeds.empty()) line += "\n    event feeds (never deliver): " + listed(p.feeds);
   line += "\n";
   for (const std::string& d : p.exclusive_by_data) line += "    exclusive by data: " + d + "\n";
+  for (const std::string& d : p.exclusive_by_delivery)
+    line += "    exclusive by delivery: " + d + "\n";
   return line;
 }
 

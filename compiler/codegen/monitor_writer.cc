@@ -101,6 +101,10 @@ class MonitorWriter {
         if (!conn_.activity_event.empty())
           w.line("--   each delivery sets " + conn_.activity_event +
                  " (by priority; the runtime does it, for the event's lifetime in app.json)");
+        if (!conn_.delivery_sets.empty() || !conn_.delivery_unsets.empty())
+          w.line("--   each delivery (the runtime does it, not this monitor):" +
+                 (conn_.delivery_sets.empty() ? "" : " sets " + join(conn_.delivery_sets)) +
+                 (conn_.delivery_unsets.empty() ? "" : " unsets " + join(conn_.delivery_unsets)));
         if (plan_.script) w.line("--   hand-written code: " + plan_.script->file);
         break;
       case MonitorPlan::Kind::Connect:

@@ -53,6 +53,34 @@ bool no_delivery_events(const model::App& app, std::vector<Diagnostic>& out) {
   return ok;
 }
 
+// One `codegen` error per connection that `why` gives a message for; false if there is one.
+template <typename Why>
+bool refuse_connections(const model::App& app, std::vector<Diagnostic>& out, Why why) {
+  bool ok = true;
+  for (const model::Connection& c : app.connections) {
+    std::string message = why(c);
+    if (message.empty()) continue;
+    out.push_back(
+        make_diagnostic(Severity::Error, c.loc, std::move(message), diag::Codegen.text()));
+    ok = false;
+  }
+  return ok;
+}
+
+// `then set` / `then unset` (docs/language.md#events-set-on-delivery) change the port's events
+// in the task of the delivery, before any other decision; a YARP arbitrator has no such step
+// (its monitors run as each message is read), and an unset there removes only the caller's
+// own entry, not another rule's.
+bool no_delivery_effects(const model::App& app, std::vector<Diagnostic>& out) {
+  return refuse_connections(app, out, [](const model::Connection& c) -> std::string {
+    if (c.delivery_sets.empty() && c.delivery_unsets.empty()) return "";
+    return "rule '" + c.name +
+           "' sets or unsets events as it delivers (`then ...`), which cannot be built for "
+           "YARP: a YARP arbitrator has no step between a delivery and the next decision; "
+           "build for the embedded runtime or DDS";
+  });
+}
+
 bool calls_age(const model::BodyExpr& e) {
   if (e.op == model::BodyExpr::Op::Call && e.builtin == Builtin::Age) return true;
   for (const model::BodyExpr& a : e.args)
@@ -70,20 +98,13 @@ bool calls_age(const model::Body& body) {
 // clock, the instant it arrived, which the embedded runtime gives them; on YARP each monitor
 // reads yarp.now() when it runs, in its own module's process, so two rules could read two.
 bool no_ages(const model::App& app, std::vector<Diagnostic>& out) {
-  bool ok = true;
-  for (const model::Connection& c : app.connections) {
-    if (!c.body || !calls_age(*c.body)) continue;
-    Diagnostic d;
-    d.loc = c.loc;
-    d.id = diag::Codegen.text();
-    d.message = "'" + c.name +
-                "' calls age(), which cannot be built for YARP: the proof has the "
-                "rules that judge one message read one clock, and each YARP monitor reads its "
-                "own; build for the embedded runtime or DDS";
-    out.push_back(std::move(d));
-    ok = false;
-  }
-  return ok;
+  return refuse_connections(app, out, [](const model::Connection& c) -> std::string {
+    if (!c.body || !calls_age(*c.body)) return "";
+    return "'" + c.name +
+           "' calls age(), which cannot be built for YARP: the proof has the "
+           "rules that judge one message read one clock, and each YARP monitor reads its "
+           "own; build for the embedded runtime or DDS";
+  });
 }
 
 }  // namespace
@@ -102,7 +123,8 @@ CodegenResult YarpTarget::generate(const lower::LoweredApp& lowered) const {
     result.diagnostics.push_back(clash);
     result.bad_input = true;
   }
-  if (!no_delivery_events(app, result.diagnostics) || !no_ages(app, result.diagnostics)) {
+  if (!no_delivery_events(app, result.diagnostics) || !no_ages(app, result.diagnostics) ||
+      !no_delivery_effects(app, result.diagnostics)) {
     result.bad_input = true;
     return result;
   }

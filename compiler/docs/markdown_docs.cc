@@ -1,5 +1,6 @@
 #include "compiler/docs/markdown_docs.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -60,10 +61,12 @@ void connections_section(const model::App& app, std::ostream& out) {
 
 void events_section(const model::App& app, std::ostream& out) {
   std::map<std::string, std::set<std::string>> set_by, read_by;
-  std::set<std::string> activity;  // `by priority`: set by the runtime as the rule delivers
+  std::set<std::string> activity;     // `by priority`: set by the runtime as the rule delivers
+  std::set<std::string> on_delivery;  // `then set`: likewise
   for (const model::Connection& c : app.connections) {
     for (const std::string& e : c.sets) set_by[e].insert(c.destination + " / " + c.name);
     if (!c.activity_event.empty()) activity.insert(c.activity_event);
+    on_delivery.insert(c.delivery_sets.begin(), c.delivery_sets.end());
     std::set<std::string> read;
     c.constraint.collect_events(read);
     for (const std::string& e : read) read_by[e].insert(c.destination + " / " + c.name);
@@ -83,9 +86,10 @@ void events_section(const model::App& app, std::ostream& out) {
   out << "## Events\n\n| event | source | lifetime | set by | read by |\n|---|---|---|---|---|\n";
   for (const model::Event& e : app.events)
     out << "| " << code(e.name) << " | "
-        << (!e.source.empty()        ? cell(e.source)
-            : activity.count(e.name) ? "each delivery (by priority)"
-                                     : "monitor code")
+        << (!e.source.empty()           ? cell(e.source)
+            : activity.count(e.name)    ? "each delivery (by priority)"
+            : on_delivery.count(e.name) ? "each delivery (`then set`)"
+                                        : "monitor code")
         << " | " << cell(event_lifetime_cell(e, app)) << " | " << cells(set_by[e.name]) << " | "
         << cells(read_by[e.name]) << " |\n";
   out << "\n";
@@ -113,6 +117,14 @@ void decision_section(const model::App& app, std::ostream& out) {
       out << "Under `by priority` a rule's activity event is set as it delivers, for its hold:\n"
              "after each delivery no rule below it is selected until the hold ends. Before\n"
              "that, in one state, a lower rule may deliver and a higher one right after it.\n\n";
+    }
+    bool effects = std::any_of(into[p.port].begin(), into[p.port].end(), [](const auto* c) {
+      return !c->delivery_sets.empty() || !c->delivery_unsets.empty();
+    });
+    if (effects) {
+      out << "Rules with `then set` / `then unset` change these events as they deliver, before\n"
+             "the next decision: two rules that hold in one row may still keep each other out\n"
+             "(`arbc verify` lists such pairs as exclusive by delivery).\n\n";
     }
   }
 }

@@ -292,12 +292,20 @@ struct InvariantDecl {
   Constraint constraint;  // sema
 };
 
-// `name: from M.q [when C] [hold D] [{ body }]` or ending in `;`.
+// `then set e` / `then unset e` of a rule: done by the runtime as the rule delivers.
+struct DeliveryEffect {
+  bool set = true;  // false: unset
+  std::string event;
+  Loc loc;  // the event's name
+};
+
+// `name: from M.q [when C] [hold D] [then set e, ...] [{ body }]` or ending in `;`.
 struct Rule {
   std::string name;
   PortRef source;
   ExprPtr when;  // null: no `when` (constraint true)
   std::optional<Duration> hold;
+  std::vector<DeliveryEffect> on_delivery;  // `then ...`, in the order written
   bool has_body = false;
   Block body;
   Loc loc;  // the name

@@ -488,7 +488,7 @@ void Builder::collect_tokens(antlr4::tree::ParseTree* node, std::vector<antlr4::
   for (antlr4::tree::ParseTree* child : node->children) collect_tokens(child, out);
 }
 
-// ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? (block | ';') ;
+// ruleDecl : ID ':' 'from' portRef ('when' expr)? ('hold' duration)? onDelivery? (block | ';') ;
 // The optional parts are found in one pass over the children, not by the generated accessors,
 // each of which dynamic_casts every child: a spec's rules are most of its declarations.
 Rule Builder::rule(ArbcParser::RuleDeclContext* c) {
@@ -507,6 +507,9 @@ Rule Builder::rule(ArbcParser::RuleDeclContext* c) {
       case ArbcParser::RuleDuration:
         r.hold = duration(static_cast<ArbcParser::DurationContext*>(part));
         break;
+      case ArbcParser::RuleOnDelivery:
+        r.on_delivery = on_delivery(static_cast<ArbcParser::OnDeliveryContext*>(part));
+        break;
       case ArbcParser::RuleBlock:
         r.has_body = true;
         r.body = block(static_cast<ArbcParser::BlockContext*>(part), 0);
@@ -516,6 +519,17 @@ Rule Builder::rule(ArbcParser::RuleDeclContext* c) {
     }
   }
   return r;
+}
+
+// onDelivery : 'then' deliveryEffect (',' deliveryEffect)* ;
+// deliveryEffect : op=('set' | 'unset') ID ;
+std::vector<DeliveryEffect> Builder::on_delivery(ArbcParser::OnDeliveryContext* c) {
+  std::vector<DeliveryEffect> out;
+  for (ArbcParser::DeliveryEffectContext* e : c->deliveryEffect()) {
+    if (!e->ID() || !e->op) continue;  // a syntax error, reported by the parser
+    out.push_back({e->op->getText() == "set", tx(e->ID()), loc(e->ID())});
+  }
+  return out;
 }
 
 }  // namespace arbc::frontend

@@ -121,6 +121,7 @@ class Builder {
   std::string spaced_text(antlr4::ParserRuleContext* ctx);
   static void collect_tokens(antlr4::tree::ParseTree* node, std::vector<antlr4::Token*>& out);
   ast::Rule rule(ArbcParser::RuleDeclContext* c);
+  std::vector<ast::DeliveryEffect> on_delivery(ArbcParser::OnDeliveryContext* c);
 
  private:
   model::FileName file_;  // interned once: every location copies it

@@ -16,6 +16,8 @@
 
 namespace arbc::frontend {
 
+struct DeliveryOwner;  // sema_delivery.cc
+
 // One name visible in a monitor body or predicate.
 struct Binding {
   ast::NameKind kind = ast::NameKind::Unresolved;
@@ -110,6 +112,10 @@ class Sema {
   // The body of a rule or connect, and that an input delivered unchanged fits the destination.
   // `owner` names it in body messages ("rule 'take'"), `subject` in the unchanged-input one.
   void check_monitor(const MonitorSite& site, const std::string& owner, const std::string& subject);
+  // `then set e` / `then unset e` on rules (sema_delivery.cc): plain events of one port, set
+  // before unset, touched by no monitor body, read by no rule of another port.
+  void check_delivery_effects();
+  void check_delivery_owners(const std::map<std::string, DeliveryOwner>& owners);
   // A plain connection: into a port nothing else feeds and no `arbitrate` block owns.
   void check_connect(ast::ConnectDecl& c);
   // An assertion names a rule of an arbitrated port; its property is a constraint.

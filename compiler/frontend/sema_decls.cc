@@ -35,6 +35,7 @@ void Sema::run() {
   check_domain();
   for (ArbitrateDecl& a : spec_.arbitrations) check_arbitration(a);
   for (ConnectDecl& c : spec_.connects) check_connect(c);
+  check_delivery_effects();  // sema_delivery.cc
   for (AssertDecl& a : spec_.asserts) check_assert(a);
   for (TemporalDecl& n : spec_.temporal) check_temporal(n);
   for (AssumeDecl& a : spec_.assumptions) check_assume(a);

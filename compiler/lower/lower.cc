@@ -226,6 +226,12 @@ class Lowerer {
       // so not a must-set); the connection owns its entries, so it is among its `sets`.
       if (!w.activity.empty()) w.effects.sets.insert(w.activity);
       c.activity_event = w.activity;
+      // `then set e` / `then unset e`: done by the runtime as the rule delivers, like the
+      // activity event; the entries it sets are the connection's own.
+      for (const ast::DeliveryEffect& x : r.on_delivery) {
+        (x.set ? c.delivery_sets : c.delivery_unsets).push_back(x.event);
+        if (x.set) w.effects.sets.insert(x.event);
+      }
       w.connection = add_connection(std::move(c), std::move(plan));
       ap.rules.push_back(r.name);
       if (!w.activity.empty()) {

@@ -27,7 +27,7 @@ std::vector<std::string> containers_of(const model::App& app, const model::TestC
   if (!test.rule.empty()) {
     for (const model::Connection& c : app.connections) {
       if (c.kind != model::ConnectionKind::Rule || c.name != test.rule) continue;
-      bool sets = c.opaque || c.activity_event == event ||
+      bool sets = c.opaque || c.set_on_delivery(event) ||
                   std::find(c.sets.begin(), c.sets.end(), event) != c.sets.end();
       if (sets || set_by_test) return {c.destination};
     }

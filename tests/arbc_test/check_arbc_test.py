@@ -592,6 +592,64 @@ def case_lock_stops_at_once_and_fails_closed(arbc, tmp):
            f"without a timeout: exit {code}, silence should no longer block", out, err)
 
 
+def case_ownership_taken_on_delivery(arbc, tmp):
+    """Events set on delivery (issue 42 item 3, docs/language.md#events-set-on-delivery): two
+    planners share an arm with `then set a_owns` / `then set b_owns`; the first to command keeps
+    it, and the operator's `then unset` frees it at once. Verify proves the port exclusive by
+    delivery (whichever delivers first keeps the other out). The same spec with the ownership
+    taken in the bodies (`{ set a_owns; }`, run when the message is accepted) lets the planner
+    that merely asked take the arm from the one working, and the test says so; without b's
+    `then set`, a may deliver right after b, and verify says so."""
+    spec = "tests/arbc_test/arm_ownership.spec"
+    code, out, err = run(arbc, "test", spec)
+    expect(code == 0 and "1 passed" in out, f"the ownership test: exit {code}", out, err)
+    code, out, err = run(arbc, "verify", spec)
+    expect(code == 0 and "exclusive by delivery: 'a' and 'b'" in out
+           and "2 properties over time: 2 proved" in out, f"verify: exit {code}", out, err)
+    text = open(spec, encoding="utf-8").read()
+    naive = os.path.join(tmp, "naive.spec")
+    with open(naive, "w", encoding="utf-8") as f:
+        f.write(text.replace(" then set a_owns;", " { set a_owns; }")
+                .replace(" then set b_owns;", " { set b_owns; }")
+                .replace(" then unset a_owns, unset b_owns;", ";"))
+    code, out, err = run(arbc, "test", naive)
+    expect(code == 1 and "expected Arm.cmd receives { x: 1.5 } at 300ms" in out + err,
+           f"ownership taken at accept: exit {code}, the asking planner should take it", out, err)
+    one_sided = os.path.join(tmp, "one_sided.spec")
+    with open(one_sided, "w", encoding="utf-8") as f:
+        f.write(text.replace(" then set b_owns;", ";").replace(", unset b_owns;", ";")
+                .replace("  expect not b_owns at 1150ms;", "  //"))
+    code, out, err = run(arbc, "verify", one_sided)
+    expect(code == 1 and "'a' and 'b' of Arm.cmd can both be selected" in out + err,
+           f"b without `then set`: exit {code}", out, err)
+    code, out, err = run(arbc, "build", spec, "--target", "yarp", "-o", os.path.join(tmp, "y"))
+    expect(code == 2 and "sets or unsets events as it delivers" in out + err,
+           f"--target yarp: exit {code}", out, err)
+
+
+def case_delivery_effects_over_time(arbc, tmp):
+    """`then set` / `then unset` in the proof over time (verify/temporal/unrolling.cc): `a` takes
+    `a_busy` for 1s as it delivers and is kept out while it holds, so `never two a within 1s;`
+    holds; `reset`'s `then unset a_busy` gives it back early, and the counterexample (a reset
+    between two deliveries of `a`) replays on the runtime and is written as a test that fails.
+    Without the unset the same property is proved."""
+    spec = "tests/arbc_test/busy_reset.spec"
+    cx = os.path.join(tmp, "cx")
+    code, out, err = run(arbc, "verify", spec, "--counterexamples", cx)
+    expect(code == 1 and "replayed on the runtime in simulated time, which shows the violation"
+           in out and "reset: accepted, delivered; unsets a_busy" in out,
+           f"with the reset: exit {code}", out, err)
+    written = os.path.join(cx, "busy_reset.a.test.spec")
+    code, out, err = run(arbc, "test", "--no-verify", written)
+    expect(code == 1, f"the counterexample as a test should fail: exit {code}", out, err)
+    no_reset = os.path.join(tmp, "no_reset.spec")
+    with open(no_reset, "w", encoding="utf-8") as f:
+        f.write(open(spec, encoding="utf-8").read().replace(" then unset a_busy;", ";"))
+    code, out, err = run(arbc, "verify", no_reset)
+    expect(code == 0 and "1 property over time: 1 proved" in out,
+           f"without the reset: exit {code}", out, err)
+
+
 def case_age_rejects_stale_commands(arbc, tmp):
     """age() in simulation (issue 41, docs/language.md#message-age): the run's clock is the
     simulated one, so stamps are instants of the run; a command 100 ms old passes, one 300 ms

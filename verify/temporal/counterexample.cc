@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/duration_literal.h"
+#include "core/event_facts.h"
 #include "core/join.h"
 #include "verify/claim_test.h"
 #include "verify/temporal/feed_outcomes.h"
@@ -33,6 +34,14 @@ class Builder {
     bool fed = false;
     for (int j = k; j < end; ++j) {
       const model::Connection& c = connection(j);
+      if (model::is_delivery_feed(data_.app(), c)) {
+        // Its source is an arbitrated `in` port, whose deliveries this port's trace takes as
+        // given: a test cannot publish there, only through that port's rules, which the trace
+        // does not choose (drt seed 38 wrote `at 0s D2.q2 <- 0;`, which `arbc test` refuses).
+        why_not = "events of '" + c.name + "' come from what " + c.source +
+                  " delivers, which a test input cannot give directly";
+        return 0;
+      }
       if (c.kind == model::ConnectionKind::Feed) {
         if (!feed_sides(j, c, sides)) return 0;
         fed = true;

@@ -28,8 +28,9 @@ z3::expr Unrolling::last_delivery_before_start(int c) const {
 }
 
 // Entry q of any state: free, except what every reachable state satisfies. An activity entry
-// is set at each delivery of its rule for the hold and never removed, so it exists exactly when
-// the rule has delivered, and expires a hold after the last delivery. A fixed-lifetime entry
+// is set at each delivery of its rule for the hold and removed only by a `then unset`, so it
+// exists (exactly, without one) when the rule has delivered, and expires a hold after the last
+// delivery. A fixed-lifetime entry
 // never lives forever; an entry without a lifetime always does.
 void Unrolling::add_any_start_entry(size_t q) {
   const Entry& e = shape_.entries[q];
@@ -38,7 +39,9 @@ void Unrolling::add_any_start_entry(size_t q) {
   z3::expr forever = ctx_.bool_const(("forever" + n).c_str());
   z3::expr expiry = ctx_.int_const(("expiry" + n).c_str());
   if (e.activity) {
-    solver_.add(has == delivered_before_start(e.owner));
+    // A `then unset` may have removed it since: then it exists only if the rule delivered.
+    z3::expr delivered = delivered_before_start(e.owner);
+    solver_.add(e.unset_by.empty() ? has == delivered : z3::implies(has, delivered));
     if (e.lifetime) {
       solver_.add(!forever &&
                   expiry == last_delivery_before_start(e.owner) + nanos_term(ctx_, *e.lifetime));

@@ -38,9 +38,9 @@ Entry entry_of(const model::App& app, const model::Connection& c, const std::str
   e.owner = owner;
   const model::Event* declared = app.find_event(event);
   std::optional<Nanos> lifetime = declared ? declared->lifetime : std::nullopt;
-  if (event == c.activity_event) {
+  if (c.set_on_delivery(event)) {
     e.activity = true;
-    e.lifetime = lifetime;  // the rule's hold
+    e.lifetime = lifetime;  // the rule's hold, or the lifetime of `then set`'s event
   } else if (c.kind == model::ConnectionKind::Feed) {
     e.lifetime = lifetime;  // `events from ... lifetime D`, a derived event's `for D`
     if (declared && declared->predicate && declared->predicate->op == model::BodyExpr::Op::Bool)
@@ -93,6 +93,13 @@ std::optional<PortShape> port_shape(const model::App& app, const std::string& po
     for (const std::string& e : events)
       if (!contains(c.sets, e) && e != c.activity_event)
         shape.entries.push_back(entry_of(app, c, e, static_cast<int>(owner)));
+  }
+  // `then unset e`: its delivery removes every entry of e that deliveries set.
+  for (Entry& entry : shape.entries) {
+    if (!entry.activity) continue;
+    for (size_t c = 0; c < shape.connections.size(); ++c)
+      if (contains(shape.connections[c]->delivery_unsets, entry.event))
+        entry.unset_by.push_back(static_cast<int>(c));
   }
   add_own_deliveries(app, shape, data);
   add_feed_outcomes(app, shape, data);
@@ -215,14 +222,22 @@ void Unrolling::add_entry_update(size_t q, int k) {
   }
 }
 
-// A `by priority` activity entry: set for the hold each time its rule delivers, never removed.
+// An entry the runtime sets as its rule delivers (a `by priority` activity event, `then set`):
+// set for its lifetime each time the rule delivers, removed only by a `then unset` delivery.
 void Unrolling::add_activity_step(size_t q, int k) {
   const Entry& e = shape_.entries[q];
   z3::expr d = del_[k][static_cast<size_t>(e.owner)];
   const z3::expr &h0 = has_[k][q], &f0 = forever_[k][q], &x0 = expiry_[k][q];
   const z3::expr &h1 = has_[k + 1][q], &f1 = forever_[k + 1][q], &x1 = expiry_[k + 1][q];
-  solver_.add(set_[k][q] == d && !unset_[k][q]);
-  solver_.add(h1 == (d || h0));
+  if (e.unset_by.empty()) {  // the terms as before `then unset`: the same models, the same goldens
+    solver_.add(set_[k][q] == d && !unset_[k][q]);
+    solver_.add(h1 == (d || h0));
+  } else {
+    z3::expr removed = ctx_.bool_val(false);
+    for (int u : e.unset_by) removed = removed || del_[k][static_cast<size_t>(u)];
+    solver_.add(set_[k][q] == d && unset_[k][q] == (removed && !d));
+    solver_.add(h1 == (d || (h0 && !removed)));
+  }
   solver_.add(z3::implies(!d, f1 == f0 && x1 == x0));
   if (e.lifetime) {
     solver_.add(z3::implies(d, !f1 && x1 == t_[k] + nanos_term(ctx_, *e.lifetime)));
@@ -318,11 +333,15 @@ TraceStep Unrolling::trace_step(const z3::model& m, int k) const {
   for (size_t q = 0; q < shape_.entries.size(); ++q) {
     // An own delivery event changes in the step of the delivery that sets it; its unset is
     // shown only where there was an entry to remove (the runtime traces no other).
+    // A `then unset` removes another rule's entry, likewise shown where there was one.
     const Entry& e = shape_.entries[q];
-    if (e.owner != c && !e.own_delivery()) continue;
+    bool removes = std::find(e.unset_by.begin(), e.unset_by.end(), c) != e.unset_by.end();
+    if (e.owner != c && !e.own_delivery() && !removes) continue;
     if (m.eval(set_[k][q], true).is_true()) step.set.push_back(e.event);
     if (m.eval(unset_[k][q], true).is_true() &&
-        (!e.own_delivery() || m.eval(has_[static_cast<size_t>(k)][q], true).is_true()))
+        ((!e.own_delivery() && !removes) ||
+         m.eval(has_[static_cast<size_t>(k)][q], true).is_true()) &&
+        !contains(step.unset, e.event))
       step.unset.push_back(e.event);
   }
   return step;

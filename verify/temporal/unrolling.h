@@ -32,8 +32,12 @@ struct DeliveryOutcome {
 // One entry of the container: `event` as set by connection `owner`.
 struct Entry {
   std::string event;
-  int owner = 0;                  // index into PortSteps::connections
-  bool activity = false;          // the owner's `by priority` activity event
+  int owner = 0;  // index into PortSteps::connections
+  // Set by the runtime each time the owner delivers (its `by priority` activity event, or a
+  // `then set`), after the decision; removed only by a delivery of a rule in `unset_by`
+  // (`then unset`, indices into PortSteps::connections).
+  bool activity = false;
+  std::vector<int> unset_by;
   std::optional<Nanos> lifetime;  // fixed lifetime; none with !free_lifetime: no expiry
   bool free_lifetime = false;     // `set e for D` in rule code: D is not in the model
   // A feed's derived event whose predicate is the constant true or false (PortShape::faithful).

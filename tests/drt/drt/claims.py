@@ -83,14 +83,16 @@ def selection(run, model):
     return out
 
 
-def exclusive_by_events(run, model, port, data_pairs=()):
+def exclusive_by_events(run, model, port, data_pairs=(), delivery_pairs=()):
     """A port whose report has no `exclusive`, `unknown` or `internal` finding (docs/checks.md:
     "no decision state selects two rules"; other errors, such as a refuted assert or `unfed`,
     leave that claim standing), except pairs exclusive by data (below): at every delivery
     of a rule r, the decision state with r's activity event added (set in the same step,
     docs/design.md#priorities-and-holds) satisfies no other rule's effective guard. Two
     deliveries from one event state of a `by priority` port, a higher rule's after a lower one's
-    at one instant (issue 38 item 5), do not break it: the lower rule's guard reads `not act_h`."""
+    at one instant (issue 38 item 5), do not break it: the lower rule's guard reads `not act_h`.
+    A pair exclusive by delivery (`then set`, verify/delivery_order.h) is judged in the state
+    the delivery leaves: r's `then set` events present, its `then unset` ones absent."""
     out, outside = [], 0
     for d in run.decisions:
         if d["port"] != port or not d["delivered"]:
@@ -101,8 +103,14 @@ def exclusive_by_events(run, model, port, data_pairs=()):
             continue
         if not model.effective_guard(d["conn"], state):
             continue  # a selection breach, reported by selection()
+        c = model.connections[d["conn"]]
+        after = (state | c.delivery_sets) - c.delivery_unsets
+
+        def selected(other):
+            by_delivery = (d["conn"], other) in delivery_pairs or (other, d["conn"]) in delivery_pairs
+            return model.effective_guard(other, after if by_delivery else state)
         both = [r.name for r in model.rules(port)
-                if r.name != d["conn"] and model.effective_guard(r.name, state)
+                if r.name != d["conn"] and selected(r.name)
                 and (d["conn"], r.name) not in data_pairs and (r.name, d["conn"]) not in data_pairs]
         if both:
             out.append(Breach("exclusive-events", f"{port}: rules never selected together",

@@ -234,8 +234,64 @@ class SpecGen:
             if by_priority and i < n_rules - 1:
                 rule.hold = r.choice(DURATIONS[1:] + getattr(self, "durations_extra", []))
             a.rules.append(rule)
+        owners = self.ownership(a)
+        owned |= self.delivery_effects(a) if not owners else set()
         self.guards(a, sorted(owned))
+        for rule, event in owners:  # each rule is kept out while another owns the port
+            others = [f"not {e}" for other, e in owners if other is not rule]
+            if rule.when != "otherwise":
+                rule.when = " and ".join(([f"({rule.when})"] if rule.when else []) + others)
         return a
+
+    def ownership(self, a):
+        """The pattern `then set` exists for (docs/language.md#events-set-on-delivery): each rule
+        sets an event of its own as it delivers, and the others read `not` it, so the port is
+        owned by whichever delivered last; verify proves such pairs exclusive by delivery."""
+        if "on-delivery" in self.avoid or len(a.rules) < 2 or a.by_priority or \
+                not self.chance(0.25):
+            return []
+        out = []
+        for rule in a.rules:
+            self.counter["own"] = self.counter.get("own", 0) + 1
+            name = f"own{self.counter['own']}"
+            life = self.rng.choice(["", "100ms", "300ms", "1s"])
+            self.spec.decls.append(Decl("event", f"event {name}" +
+                                        (f" lifetime {life}" if life else "") + ";",
+                                        {"events": [name], "lifetime": life}))
+            rule.effects.append(("set", name))
+            out.append((rule, name))
+        if self.chance(0.5):  # one rule also gives the port back
+            giver = self.rng.choice(a.rules)
+            giver.effects += [("unset", e) for other, e in out if other is not giver]
+        return out
+
+    def delivery_effects(self, a):
+        """`then set d` / `then unset d` on some rules (docs/language.md#events-set-on-delivery),
+        over events of this port alone, which no body sets: the port's guards may read them
+        (verify proves pairs whose deliveries keep each other out: verify/delivery_order.h)."""
+        r = self.rng
+        if "on-delivery" in self.avoid or not self.chance(0.3):
+            return set()
+        own = []
+        for _ in range(r.randint(1, 2)):
+            self.counter["own"] = self.counter.get("own", 0) + 1
+            name = f"own{self.counter['own']}"
+            life = r.choice(["", "100ms", "300ms", "1s"])
+            own.append(name)
+            self.spec.decls.append(Decl("event", f"event {name}" +
+                                        (f" lifetime {life}" if life else "") + ";",
+                                        {"events": [name], "lifetime": life}))
+        for rule in a.rules:
+            for e in own:
+                roll = r.random()
+                if roll < 0.45:
+                    rule.effects.append(("set", e))
+                elif roll < 0.6:
+                    rule.effects.append(("unset", e))
+        set_somewhere = {e for rule in a.rules for op, e in rule.effects if op == "set"}
+        for rule in a.rules:  # a `then unset` needs a `then set` of the event in the port
+            rule.effects = [(op, e) for op, e in rule.effects if op == "set" or e in set_somewhere]
+        return set_somewhere
 
     def data_pair(self, port, sizes=False):
         """A port of two rules of one source that only their data can keep apart: no `when`,

@@ -86,6 +86,9 @@ class Connection:
         self.must_set = set(j["must_set"])
         self.must_unset = set(j["must_unset"])
         self.activity = j.get("activity_event") or ""
+        # `then set` / `then unset` (docs/language.md#events-set-on-delivery)
+        self.delivery_sets = set(j.get("delivery_sets", []))
+        self.delivery_unsets = set(j.get("delivery_unsets", []))
         self.opaque = j.get("opaque", False)
         self.throttle = j.get("throttle")
 

@@ -41,7 +41,7 @@ class Claims:
         self.consts = const_env(spec)
         self.list_bound = list_bound
         inp = report["inputs"][0]
-        self.ports, self.data_pairs = [], {}
+        self.ports, self.data_pairs, self.delivery_pairs = [], {}, {}
         found_lines = {}
         for p in inp.get("ports", []):
             for f in p.get("findings", []):
@@ -52,6 +52,8 @@ class Claims:
                 self.ports.append(p["port"])
                 self.data_pairs[p["port"]] = [pair(s)[:2] for s in p.get("exclusive_by_data", [])
                                               if pair(s)]
+                self.delivery_pairs[p["port"]] = [
+                    pair(s)[:2] for s in p.get("exclusive_by_delivery", []) if pair(s)]
         known = {p["port"]: p for p in inp.get("ports", [])}
         # A verdict that says "for lists of at most N elements" claims nothing about longer
         # lists (issue 38 item 3 allows that, said in its first line): its breaches by a longer
@@ -108,7 +110,8 @@ class Claims:
         out = C.selection(run, m)
         for port in self.ports:
             pairs = {tuple(p) for p in self.data_pairs.get(port, [])}
-            found, outside = C.exclusive_by_events(run, m, port, pairs)
+            by_delivery = {tuple(p) for p in self.delivery_pairs.get(port, [])}
+            found, outside = C.exclusive_by_events(run, m, port, pairs, by_delivery)
             out += found
             res.outside += outside
             out += self.beyond_bound(C.exclusive_by_data(run, pairs, port, self.needs),

@@ -12,7 +12,7 @@ Expressions are `Expr` trees; every compound expression prints in parentheses, s
 never depends on operator precedence.
 """
 from dataclasses import dataclass, field
-from typing import List, Optional
+from typing import List, Optional, Tuple
 
 BOOL, INT, FLOAT, STRING, VEC3 = ("bool",), ("int",), ("float",), ("string",), ("vec3",)
 
@@ -321,6 +321,8 @@ class Rule:
     hold: str = ""
     body: Optional[List[Stmt]] = None  # None: `;`
     pred: Optional[Expr] = None  # a predicate over `emitted` its body makes true (gen_body.py)
+    # `then set e` / `then unset e` (docs/language.md#events-set-on-delivery): (op, event)
+    effects: List[Tuple[str, str]] = field(default_factory=list)
 
     def lines(self):
         head = f"  {self.name}: from {self.source}"
@@ -328,6 +330,8 @@ class Rule:
             head += f" when {self.when}"
         if self.hold:
             head += f" hold {self.hold}"
+        if self.effects:
+            head += " then " + ", ".join(f"{op} {e}" for op, e in self.effects)
         if self.body is None:
             return [head + ";"]
         return [head + " {"] + block_lines(self.body, 2) + ["  }"]
