@@ -87,6 +87,7 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
     if (describe_keyword_after_declaring_word(parser, offending, d)) return d;
     if (describe_when_after_hold(parser, offending, d)) return d;
     if (describe_negated_absence(parser, offending, d)) return d;
+    if (describe_misplaced_then(parser, offending, d)) return d;
     if (!describe_set_of_a_port(parser, offending, x, d) &&
         !describe_construct(parser, offending, x, d))
       describe_by_position(parser, offending, x, d);
@@ -178,6 +179,30 @@ class SyntaxErrorCollector : public antlr4::BaseErrorListener {
         "`when` goes before `hold` in a rule: write `NAME: from Module.port when CONSTRAINT "
         "hold D`";
     return true;
+  }
+
+  // `then set e for 1s` (the lifetime is the event's) and `{ ... } then set e` (the clause
+  // goes before the body, with the rule's other clauses): docs/language.md#events-set-on-delivery.
+  static bool describe_misplaced_then(antlr4::Parser* parser, const antlr4::Token* offending,
+                                      Diagnostic& d) {
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    antlr4::Token* before = tokens->LT(-1);
+    antlr4::Token* op = tokens->LT(-2);
+    if (offending->getText() == "for" && op && (op->getText() == "set") && before &&
+        enclosing(parser->getContext(), ArbcParser::RuleRuleDecl)) {
+      d.message = "a `then set` lasts for the event's declared lifetime: declare it `event " +
+                  before->getText() + " lifetime D;` and write `then set " + before->getText() +
+                  "`";
+      return true;
+    }
+    if (offending->getText() == "then" && before && before->getText() == "}" &&
+        enclosing(parser->getContext(), ArbcParser::RuleArbitrateDecl)) {
+      d.message =
+          "`then set ...` goes before the rule's body: `NAME: from Module.port when C then set "
+          "E { ... }`";
+      return true;
+    }
+    return false;
   }
 
   // `never nav while not e_ok;`: the absence property reads one event, present; a rule kept
