@@ -105,8 +105,8 @@ void DecisionWatch::delivered(Rule& c, uint64_t n, Nanos t, const std::set<std::
   std::optional<std::set<std::string>> after;
   if (!c.delivery_sets.empty() || !c.delivery_unsets.empty()) {
     after = state;
-    for (const std::string& e : c.delivery_sets) after->insert(e);
     for (const std::string& e : c.delivery_unsets) after->erase(e);
+    for (const std::string& e : c.delivery_sets) after->insert(e);  // a set wins, as it runs last
   }
   for (size_t j : c.other_source) {
     const Rule& d = rules_[j];

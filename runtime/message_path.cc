@@ -414,7 +414,6 @@ Nanos Runtime::stamp_clock() const {
 // unset removes the entries that deliveries of the port's rules set (no monitor sets such an
 // event: sema refuses it), which is what the proof's unrolling does.
 void Runtime::apply_delivery_effects(Connection& c, Nanos t) {
-  for (const std::string& e : c.model->delivery_sets) c.set_event(e, std::nullopt);
   EventContainer& box = c.destination->container;
   for (const std::string& e : c.model->delivery_unsets) {
     box.present(t);  // lapse expired entries first, so the trace shows expiry before unset
@@ -426,6 +425,9 @@ void Runtime::apply_delivery_effects(Connection& c, Nanos t) {
           box.unset(id, r->index))
         trace_.event(t, c.destination->qualified, "unset", e, r->name, kNever);
   }
+  // After the unsets, as the proof's unrolling has it: a rule that both unsets and sets an
+  // event (an app.json written by hand; sema refuses it) leaves it set.
+  for (const std::string& e : c.model->delivery_sets) c.set_event(e, std::nullopt);
 }
 
 void Runtime::Connection::set_event(std::string_view event, std::optional<Nanos> lifetime) {

@@ -104,7 +104,7 @@ def exclusive_by_events(run, model, port, data_pairs=(), delivery_pairs=()):
         if not model.effective_guard(d["conn"], state):
             continue  # a selection breach, reported by selection()
         c = model.connections[d["conn"]]
-        after = (state | c.delivery_sets) - c.delivery_unsets
+        after = (state - c.delivery_unsets) | c.delivery_sets
 
         def selected(other):
             by_delivery = (d["conn"], other) in delivery_pairs or (other, d["conn"]) in delivery_pairs
