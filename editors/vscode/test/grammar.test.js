@@ -51,13 +51,14 @@ test("the golden sample's scopes", async () => {
 test("keywords, names, durations, strings and comments get their scopes", async () => {
   const grammar = await loadGrammar();
   const { tokens } = tokenize(grammar,
-    'arbitrate Speak.text by priority {\n  ask: from Face.face when not e_x hold 1s { emit "hi\\n"; } // c\n}\n/* a\n b */');
+    'arbitrate Speak.text by priority {\n  ask: from Face.face when not e_x hold 1s then set e_y { emit "hi\\n"; } // c\n}\n/* a\n b */');
   const scope = (text) => tokens.find((t) => t.text === text).scopes.slice(1).join(" ");
   assert.strictEqual(scope("arbitrate"), "keyword.declaration.arbc");
   assert.strictEqual(scope("Speak"), "entity.name.type.module.arbc");
   assert.strictEqual(scope("text"), "variable.other.member.port.arbc");
   assert.strictEqual(scope("ask"), "entity.name.function.rule.arbc");
   assert.strictEqual(scope("not"), "keyword.operator.logical.arbc");
+  assert.strictEqual(scope("then"), "keyword.other.arbc");
   assert.strictEqual(scope("1s"), "constant.numeric.duration.arbc");
   assert.strictEqual(scope("\\n"), "string.quoted.double.arbc constant.character.escape.arbc");
   assert.strictEqual(scope("// c"), "comment.line.double-slash.arbc");
