@@ -75,10 +75,12 @@ DeliveryOrder delivery_order(PortSolver& solver, const PortScope& scope, int i, 
     return solver.holds_with(first_index,
                              after_delivery(second.effective_guard, *first.connection, into));
   };
-  for (Answer ans : {after(a, i, b), after(b, j, a)}) {
-    if (ans == Answer::Unknown) return DeliveryOrder::Unknown;
-    if (ans == Answer::Sat) return DeliveryOrder::Overlap;
-  }
+  auto unless_kept_out = [](Answer ans) {
+    return ans == Answer::Sat ? DeliveryOrder::Overlap : DeliveryOrder::Unknown;
+  };
+  // The second order is asked only when the first is kept out: one order overlapping suffices.
+  if (Answer ab = after(a, i, b); ab != Answer::Unsat) return unless_kept_out(ab);
+  if (Answer ba = after(b, j, a); ba != Answer::Unsat) return unless_kept_out(ba);
   *text = "'" + a.connection->name + "' and '" + b.connection->name +
           "': whichever delivers first keeps the other out ('" + a.connection->name + "' " +
           effects_text(*a.connection) + ", '" + b.connection->name + "' " +
